@@ -1,0 +1,78 @@
+#pragma once
+// The Vulkan instance, the chosen physical device, its logical device and one queue.
+// Validation messages are counted so tests can fail on any of them.
+#include <vulkan/vulkan.h>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace candela::render {
+
+enum class ValidationMode {
+    Off,        // no layer
+    IfPresent,  // enable the Khronos layer when it is installed
+    Required,   // fail to start without it (tests)
+};
+
+struct GpuContextOptions {
+    ValidationMode validation = ValidationMode::IfPresent;
+    std::vector<std::string> instanceExtensions;  // e.g. what GLFW needs for a surface
+    bool swapchain = false;                       // enable VK_KHR_swapchain on the device
+    std::string preferredDevice;                  // substring of a device name; empty = best
+    bool echoValidationMessages = true;           // print each message to stderr
+};
+
+class GpuContext {
+public:
+    explicit GpuContext(const GpuContextOptions& options);
+    ~GpuContext();
+    GpuContext(const GpuContext&) = delete;
+    GpuContext& operator=(const GpuContext&) = delete;
+
+    VkInstance instance() const { return instance_; }
+    VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
+    VkDevice device() const { return device_; }
+    VkQueue queue() const { return queue_; }
+    uint32_t queueFamily() const { return queueFamily_; }
+    const std::string& deviceName() const { return deviceName_; }
+    bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+    const VkPhysicalDeviceProperties& properties() const { return properties_; }
+
+    // Warnings and errors reported by the validation layer since start-up.
+    uint32_t validationMessages() const { return validationMessages_.load(); }
+
+    // Push descriptors (VK_KHR_push_descriptor) keep passes free of descriptor pools.
+    PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+
+    uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required) const;
+
+    // Records into a fresh command buffer, submits it and waits: for uploads and readbacks.
+    void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
+
+private:
+    void createInstance(const GpuContextOptions& options);
+    void pickPhysicalDevice(const std::string& preferred);
+    void createDevice(bool swapchain);
+
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memoryProperties_{};
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    uint32_t queueFamily_ = 0;
+    VkCommandPool oneShotPool_ = VK_NULL_HANDLE;
+    std::string deviceName_;
+    bool echoValidationMessages_ = true;
+    std::atomic<uint32_t> validationMessages_{0};
+
+    friend VKAPI_ATTR VkBool32 VKAPI_CALL
+    onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
+                        const VkDebugUtilsMessengerCallbackDataEXT*, void*);
+};
+
+}  // namespace candela::render

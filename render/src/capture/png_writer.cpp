@@ -1,0 +1,45 @@
+#include "capture/png_writer.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+// stb_image_write comes with libstb-dev, which tinygltf already depends on.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wconversion"
+#pragma GCC diagnostic ignored "-Wsign-conversion"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_STATIC
+#include <stb/stb_image_write.h>
+#pragma GCC diagnostic pop
+
+namespace candela::render {
+
+namespace {
+void appendBytes(void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<unsigned char>*>(context);
+    auto* bytes = static_cast<unsigned char*>(data);
+    out->insert(out->end(), bytes, bytes + size);
+}
+}  // namespace
+
+std::string writePngRgba(const std::filesystem::path& path, uint32_t width, uint32_t height,
+                         const uint8_t* rgba) {
+    // Encode to memory first so an encoder failure never leaves a partial file behind, and
+    // so the file error (missing directory, permissions) can be reported with errno.
+    std::vector<unsigned char> encoded;
+    if (!stbi_write_png_to_func(appendBytes, &encoded, int(width), int(height), 4, rgba,
+                                int(width * 4))) {
+        return path.string() + ": PNG encoding failed";
+    }
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) return path.string() + ": cannot open for writing: " + std::strerror(errno);
+    size_t written = std::fwrite(encoded.data(), 1, encoded.size(), file);
+    bool closed = std::fclose(file) == 0;
+    if (written != encoded.size() || !closed) return path.string() + ": write failed";
+    return {};
+}
+
+}  // namespace candela::render

@@ -1,0 +1,65 @@
+#include "candela/render/gpu_buffer.h"
+
+#include <utility>
+
+#include "candela/render/gpu_context.h"
+#include "vk/vk_check.h"
+
+namespace candela::render {
+
+GpuBuffer::GpuBuffer(GpuContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
+                     MemoryLocation location)
+    : device_(context.device()), size_(size) {
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    CANDELA_VK_CHECK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
+
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device_, buffer_, &requirements);
+    // Host-coherent so CPU writes and GPU readbacks need no explicit flush/invalidate.
+    VkMemoryPropertyFlags flags =
+        location == MemoryLocation::HostVisible
+            ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+            : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = requirements.size;
+    alloc.memoryTypeIndex = context.findMemoryType(requirements.memoryTypeBits, flags);
+    CANDELA_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    CANDELA_VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
+    if (location == MemoryLocation::HostVisible) {
+        CANDELA_VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    }
+}
+
+GpuBuffer::~GpuBuffer() {
+    release();
+}
+
+GpuBuffer::GpuBuffer(GpuBuffer&& other) noexcept {
+    *this = std::move(other);
+}
+
+GpuBuffer& GpuBuffer::operator=(GpuBuffer&& other) noexcept {
+    if (this != &other) {
+        release();
+        device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
+        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        size_ = std::exchange(other.size_, 0);
+        mapped_ = std::exchange(other.mapped_, nullptr);
+    }
+    return *this;
+}
+
+void GpuBuffer::release() {
+    if (!device_) return;
+    if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
+    if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
+    buffer_ = VK_NULL_HANDLE;
+    memory_ = VK_NULL_HANDLE;
+    mapped_ = nullptr;
+}
+
+}  // namespace candela::render

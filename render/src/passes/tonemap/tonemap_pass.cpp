@@ -1,0 +1,28 @@
+#include "passes/tonemap/tonemap_pass.h"
+
+#include "candela/render/gpu_image.h"
+#include "shaders/tonemap.comp.spv.h"
+
+namespace candela::render {
+
+TonemapPass::TonemapPass(GpuContext& context) {
+    const DescriptorBinding bindings[] = {
+        {0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+    };
+    pipeline_ = Pipeline::compute(context, tonemap_comp_spv, bindings, sizeof(float));
+}
+
+void TonemapPass::record(VkCommandBuffer cmd, const GpuImage& hdr, const GpuImage& ldr,
+                         float exposure) const {
+    VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo ldrInfo{VK_NULL_HANDLE, ldr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    const VkWriteDescriptorSet writes[] = {storageImageWrite(0, &hdrInfo),
+                                           storageImageWrite(1, &ldrInfo)};
+    pipeline_.bind(cmd);
+    pipeline_.pushDescriptors(cmd, writes);
+    pipeline_.pushConstants(cmd, &exposure, sizeof(exposure));
+    vkCmdDispatch(cmd, (hdr.desc().width + 7) / 8, (hdr.desc().height + 7) / 8, 1);
+}
+
+}  // namespace candela::render

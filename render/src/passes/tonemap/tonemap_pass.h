@@ -1,0 +1,21 @@
+#pragma once
+// Exposure + filmic tonemap + sRGB encode, as a compute pass over the HDR target.
+#include "candela/render/pipeline.h"
+
+namespace candela::render {
+
+class GpuContext;
+class GpuImage;
+
+class TonemapPass {
+public:
+    explicit TonemapPass(GpuContext& context);
+    // hdr must be in GENERAL layout and readable; ldr in GENERAL layout.
+    void record(VkCommandBuffer cmd, const GpuImage& hdr, const GpuImage& ldr,
+                float exposure) const;
+
+private:
+    Pipeline pipeline_;
+};
+
+}  // namespace candela::render

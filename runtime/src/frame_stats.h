@@ -1,0 +1,24 @@
+#pragma once
+// Per-run measurements written by --stats. Field names are a contract: add, never rename.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace candela::runtime {
+
+struct FrameStats {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::string device;
+    std::vector<double> frameMs;  // CPU wall time per frame, including the wait for the GPU
+    uint32_t validationMessages = 0;
+    std::vector<std::string> features;
+
+    double frameMsMedian() const;
+};
+
+// Returns an empty string on success, else a message naming the file.
+std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& stats);
+
+}  // namespace candela::runtime

@@ -1,0 +1,109 @@
+#include "run_options.h"
+
+#include <charconv>
+#include <cstdlib>
+
+namespace candela::runtime {
+
+namespace {
+
+constexpr uint32_t kMaxDimension = 16384;
+
+bool parseUint(const std::string& text, uint32_t& value) {
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    return ec == std::errc() && ptr == end;
+}
+
+// "WxH" with both sides in 1..16384.
+bool parseSize(const std::string& text, uint32_t& width, uint32_t& height) {
+    size_t x = text.find('x');
+    if (x == std::string::npos) return false;
+    return parseUint(text.substr(0, x), width) && parseUint(text.substr(x + 1), height) &&
+           width > 0 && height > 0 && width <= kMaxDimension && height <= kMaxDimension;
+}
+
+render::ValidationMode validationFromEnvironment() {
+    const char* value = std::getenv("CANDELA_VALIDATION");
+    if (!value) return render::ValidationMode::IfPresent;
+    std::string mode = value;
+    if (mode == "require") return render::ValidationMode::Required;
+    if (mode == "off") return render::ValidationMode::Off;
+    return render::ValidationMode::IfPresent;
+}
+
+}  // namespace
+
+std::string runUsage() {
+    return "usage: candela run <scene.json|scene.gltf|scene.glb|builtin:triangle> [--headless]\n"
+           "                   [--size WxH] [--frames N] [--capture FILE.exr|FILE.png]\n"
+           "                   [--stats FILE.json] [--validation off|on|require]\n"
+           "       candela demo [same options]\n";
+}
+
+ParseResult parseRunOptions(const std::vector<std::string>& args) {
+    ParseResult result;
+    RunOptions options;
+    options.validation = validationFromEnvironment();
+    auto fail = [&](std::string message) {
+        result.error = std::move(message);
+        return result;
+    };
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        auto value = [&](std::string& out) {
+            if (i + 1 >= args.size()) return false;
+            out = args[++i];
+            return true;
+        };
+        std::string v;
+        if (arg == "--help" || arg == "-h") {
+            result.helpRequested = true;
+            return result;
+        } else if (arg == "--headless") {
+            options.headless = true;
+        } else if (arg == "--size") {
+            if (!value(v) || !parseSize(v, options.width, options.height)) {
+                return fail("--size needs WxH with both sides between 1 and 16384, got '" + v +
+                            "'");
+            }
+        } else if (arg == "--frames") {
+            if (!value(v) || !parseUint(v, options.frames) || options.frames == 0) {
+                return fail("--frames needs a positive integer, got '" + v + "'");
+            }
+        } else if (arg == "--capture") {
+            if (!value(v)) return fail("--capture needs a file name ending in .exr or .png");
+            options.capture = v;
+        } else if (arg == "--stats") {
+            if (!value(v)) return fail("--stats needs a file name");
+            options.stats = v;
+        } else if (arg == "--validation") {
+            if (!value(v)) return fail("--validation needs off, on or require");
+            if (v == "off")
+                options.validation = render::ValidationMode::Off;
+            else if (v == "on")
+                options.validation = render::ValidationMode::IfPresent;
+            else if (v == "require")
+                options.validation = render::ValidationMode::Required;
+            else
+                return fail("--validation needs off, on or require, got '" + v + "'");
+        } else if (!arg.empty() && arg[0] == '-') {
+            return fail("unknown option '" + arg + "'");
+        } else if (options.scene.empty()) {
+            options.scene = arg;
+        } else {
+            return fail("more than one scene given: '" + options.scene + "' and '" + arg + "'");
+        }
+    }
+    if (options.capture) {
+        std::string ext = options.capture->extension().string();
+        if (ext != ".exr" && ext != ".png") {
+            return fail("--capture file must end in .exr or .png: '" + options.capture->string() +
+                        "'");
+        }
+    }
+    result.options = options;
+    return result;
+}
+
+}  // namespace candela::runtime

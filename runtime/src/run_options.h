@@ -1,0 +1,34 @@
+#pragma once
+// Command-line options of `candela run` and `candela demo`.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "candela/render/gpu_context.h"
+
+namespace candela::runtime {
+
+struct RunOptions {
+    std::string scene;  // engine scene file, .gltf, .glb, or a built-in "builtin:<name>"
+    bool headless = false;
+    uint32_t width = 1280;
+    uint32_t height = 720;
+    uint32_t frames = 0;  // 0: until the window closes (headless: 1)
+    std::optional<std::filesystem::path> capture;
+    std::optional<std::filesystem::path> stats;
+    render::ValidationMode validation = render::ValidationMode::IfPresent;
+};
+
+struct ParseResult {
+    std::optional<RunOptions> options;
+    std::string error;  // set when options is empty and the arguments were wrong
+    bool helpRequested = false;
+};
+
+// args excludes the program name and the subcommand.
+ParseResult parseRunOptions(const std::vector<std::string>& args);
+std::string runUsage();
+
+}  // namespace candela::runtime
