@@ -1,0 +1,34 @@
+#pragma once
+// Test support: render one frame offscreen with validation required, and read it back.
+#include <cstdint>
+
+#include "candela/render/frame_capture.h"
+#include "candela/render/frame_inputs.h"
+#include "candela/render/frame_submitter.h"
+#include "candela/render/gpu_context.h"
+#include "candela/render/renderer.h"
+
+namespace candela::render::test {
+
+inline GpuContextOptions requiredValidation() {
+    GpuContextOptions options;
+    options.validation = ValidationMode::Required;
+    return options;
+}
+
+inline CapturedFrame renderOffscreen(GpuContext& context, const FrameInputs& inputs, uint32_t width,
+                                     uint32_t height, uint32_t frames = 1) {
+    Renderer renderer(context, width, height);
+    FrameSubmitter submitter(context);
+    FrameReadback readback(context, width, height);
+    for (uint32_t i = 0; i < frames; ++i) {
+        VkCommandBuffer cmd = submitter.begin();
+        renderer.recordFrame(cmd, inputs);
+        if (i + 1 == frames) readback.recordCopy(cmd, renderer);
+        submitter.submit();
+    }
+    submitter.waitIdle();
+    return readback.read();
+}
+
+}  // namespace candela::render::test

@@ -1,0 +1,129 @@
+// The candela executable as a user runs it: good runs, determinism, and bad arguments that
+// must give a clear message and a non-zero exit, never a crash.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string output;  // stdout and stderr together
+};
+
+RunResult runCandela(const std::string& args) {
+    std::string command = std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1";
+    RunResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer{};
+    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
+        result.output.append(buffer.data(), n);
+    int status = pclose(pipe);
+    // A crash (signal) leaves exitCode at -1 so tests see it as a failure, not a code.
+    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
+    return result;
+}
+
+std::string readBytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::filesystem::path tempDir() {
+    auto dir = std::filesystem::path(testing::TempDir()) / "candela_cli";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+const std::string kTriangle = "run builtin:triangle --headless --size 64x48 ";
+
+}  // namespace
+
+TEST(Cli, HeadlessRunWritesCaptureAndStats) {
+    auto dir = tempDir();
+    RunResult r = runCandela(kTriangle + "--frames 2 --capture " + (dir / "a.exr").string() +
+                             " --stats " + (dir / "a.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "a.exr"));
+    nlohmann::json stats = nlohmann::json::parse(readBytes(dir / "a.json"));
+    EXPECT_EQ(stats["frames"], 2);
+    EXPECT_EQ(stats["width"], 64);
+    EXPECT_EQ(stats["height"], 48);
+    EXPECT_FALSE(stats["device"].get<std::string>().empty());
+    EXPECT_GT(stats["frame_ms_median"].get<double>(), 0.0);
+    EXPECT_EQ(stats["validation_messages"], 0);
+    EXPECT_TRUE(stats["features"].is_array());
+    EXPECT_FALSE(stats["features"].empty());
+}
+
+TEST(Cli, CapturesAreIdenticalRunAfterRun) {
+    auto dir = tempDir();
+    for (const char* ext : {".exr", ".png"}) {
+        auto first = dir / (std::string("first") + ext);
+        auto second = dir / (std::string("second") + ext);
+        ASSERT_EQ(runCandela(kTriangle + "--frames 3 --capture " + first.string()).exitCode, 0);
+        ASSERT_EQ(runCandela(kTriangle + "--frames 3 --capture " + second.string()).exitCode, 0);
+        std::string a = readBytes(first);
+        EXPECT_FALSE(a.empty());
+        EXPECT_EQ(a, readBytes(second)) << ext;
+    }
+}
+
+TEST(Cli, ZeroSizeIsRejected) {
+    RunResult r = runCandela("run builtin:triangle --headless --size 0x0");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
+}
+
+TEST(Cli, MalformedSizeIsRejected) {
+    for (const char* size : {"abc", "64", "64x", "x64", "-5x10", "99999x10"}) {
+        RunResult r = runCandela(std::string("run builtin:triangle --headless --size ") + size);
+        EXPECT_EQ(r.exitCode, 2) << size;
+        EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
+    }
+}
+
+TEST(Cli, UnwritableCapturePathIsRejectedBeforeRendering) {
+    RunResult r = runCandela(kTriangle + "--capture /nonexistent-candela-dir/out.png");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("/nonexistent-candela-dir/out.png"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("does not exist"), std::string::npos) << r.output;
+}
+
+TEST(Cli, CaptureIntoADirectoryIsRejected) {
+    auto dir = tempDir() / "is_a_dir.png";
+    std::filesystem::create_directories(dir);
+    RunResult r = runCandela(kTriangle + "--capture " + dir.string());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("is a directory"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownCaptureFormatIsRejected) {
+    RunResult r = runCandela(kTriangle + "--capture out.bmp");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find(".exr or .png"), std::string::npos) << r.output;
+}
+
+TEST(Cli, MissingSceneIsRejected) {
+    RunResult r = runCandela("run /no/such/scene.gltf --headless");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("/no/such/scene.gltf"), std::string::npos) << r.output;
+}
+
+TEST(Cli, NoSceneAndUnknownOptionsAreRejected) {
+    EXPECT_EQ(runCandela("run --headless").exitCode, 2);
+    EXPECT_EQ(runCandela("run builtin:triangle --bogus").exitCode, 2);
+    EXPECT_EQ(runCandela("run builtin:nothing --headless").exitCode, 2);
+    EXPECT_EQ(runCandela("explode").exitCode, 2);
+    EXPECT_EQ(runCandela("run builtin:triangle --frames 0").exitCode, 2);
+    EXPECT_EQ(runCandela("run builtin:triangle --frames").exitCode, 2);
+    EXPECT_EQ(runCandela("run --help").exitCode, 0);
+}
