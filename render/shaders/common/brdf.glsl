@@ -1,0 +1,78 @@
+// BRDF terms of seed 000 section 2.1 (UE4 shading model). Shared by the lighting pass, IBL and
+// the stability tests: change a formula here and every user and test sees it.
+#ifndef CANDELA_BRDF_GLSL
+#define CANDELA_BRDF_GLSL
+
+#include "common/math.glsl"
+
+// Roughness is clamped to this before alpha = roughness^2, only for analytic lights: at 0 the
+// GGX lobe of a point light is a Dirac delta (D = inf at NoH = 1). 0.02 keeps
+// D <= 1 / (pi * alpha^2) ~ 2e6, finite in fp32 (not in fp16: see docs/speed-vs-error.md).
+const float kMinRoughness = 0.02;
+
+float alphaFromRoughness(float roughness) {
+    float r = clamp(roughness, kMinRoughness, 1.0);
+    return r * r;
+}
+
+// eq. 1
+vec3 diffuseLambert(vec3 diffuseColor) {
+    return diffuseColor * (1.0 / PI);
+}
+
+// eq. 3: GGX / Trowbridge-Reitz. a2 = alpha^2 > 0, so d >= a2 > 0 and D stays finite.
+float distributionGgx(float a2, float NoH) {
+    float d = (NoH * a2 - NoH) * NoH + 1.0;
+    return a2 / (PI * d * d);
+}
+
+// eq. 4 folded with the 1 / (4 NoL NoV) of eq. 2: Schlick-Smith with k = alpha / 2.
+// Both factors are >= k > 0, so the result is finite for NoV = NoL = 0.
+float visibilitySmithSchlick(float alpha, float NoV, float NoL) {
+    float k = alpha * 0.5;
+    float gv = NoV * (1.0 - k) + k;
+    float gl = NoL * (1.0 - k) + k;
+    return 0.25 / (gv * gl);
+}
+
+// Exact height-correlated Smith GGX visibility, the reference eq. 4 approximates.
+float visibilitySmithGgxCorrelated(float alpha, float NoV, float NoL) {
+    float a2 = alpha * alpha;
+    float lambdaV = NoL * sqrt(NoV * NoV * (1.0 - a2) + a2);
+    float lambdaL = NoV * sqrt(NoL * NoL * (1.0 - a2) + a2);
+    return 0.5 / max(lambdaV + lambdaL, 1e-12);
+}
+
+// eq. 5: Schlick Fresnel with the spherical-Gaussian exponent. A specular colour under 2%
+// reflectance is treated as pre-baked shadowing (saturate(50 * F0.g)), as UE4 does.
+vec3 fresnelSchlickSg(vec3 specularColor, float VoH) {
+    float fc = exp2((-5.55473 * VoH - 6.98316) * VoH);
+    return saturate(50.0 * specularColor.g) * fc + (1.0 - fc) * specularColor;
+}
+
+// Classic pow5 Schlick, the reference eq. 5 approximates.
+vec3 fresnelSchlickPow5(vec3 specularColor, float VoH) {
+    float m = 1.0 - VoH;
+    float fc = (m * m) * (m * m) * m;
+    return saturate(50.0 * specularColor.g) * fc + (1.0 - fc) * specularColor;
+}
+
+// Seed 001: analytic environment BRDF (scale, bias) for mobile, replacing the eq. 8 LUT.
+vec3 envBrdfApprox(vec3 specularColor, float roughness, float NoV) {
+    const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
+    const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
+    vec4 r = roughness * c0 + c1;
+    float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
+    vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+    return specularColor * ab.x + ab.y;
+}
+
+// Seed 001: EnvBRDFApprox(0.04, roughness, NoV) for default non-metals.
+float envBrdfApproxNonmetal(float roughness, float NoV) {
+    const vec2 c0 = vec2(-1.0, -0.0275);
+    const vec2 c1 = vec2(1.0, 0.0425);
+    vec2 r = roughness * c0 + c1;
+    return min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
+}
+
+#endif

@@ -1,0 +1,178 @@
+// Light incidence of seed 000 section 2.4: windowed inverse-square falloff (eq. 9), sphere
+// lights (eq. 10-14) and tube lights (eq. 16-20), all in metres. Every function is finite for
+// any finite input: d -> 0, zero radius or length, R parallel to the tube, huge intensities.
+#ifndef CANDELA_LIGHTS_GLSL
+#define CANDELA_LIGHTS_GLSL
+
+#include "common/math.glsl"
+
+const uint kLightPoint = 0u;
+const uint kLightSpot = 1u;
+const uint kLightDirectional = 2u;
+
+// The "+1" of eq. 9 is 1 cm^2 in UE4's centimetres: 1e-4 m^2 here. Without the conversion a
+// light 2 m away would be 20% too dark.
+const float kFalloffBias = 1e-4;
+
+// One light as a lighting shader sees it (unpacked from the structure-of-arrays buffers).
+struct Light {
+    vec3 position;
+    float invAttenuationRadius;  // 1 / attenuationRadius
+    vec3 intensity;              // colour * candela (lumens / 4 pi); lux for directional
+    float sourceRadius;
+    vec3 direction;              // spot axis, or the direction light travels (directional)
+    float sourceLength;
+    vec3 tubeAxis;               // unit; a tube spans position +- tubeAxis * sourceLength / 2
+    uint type;
+    float spotScale;             // 1 / (cos inner - cos outer)
+    float spotOffset;            // -cos outer * spotScale
+};
+
+// What a light delivers at a surface point, before the BRDF.
+struct LightIncidence {
+    vec3 diffuseL;             // unit direction for diffuse (to the light's centre)
+    vec3 diffuseIlluminance;   // lux: includes NoL, or the sphere/line irradiance
+    vec3 specularL;            // unit direction to the representative point
+    vec3 specularIlluminance;  // lux: incl. NoL at specularL and energy normalisation
+    vec3 incidentIlluminance;  // lux at normal incidence, no cosine (for wrap/transmission)
+};
+
+// eq. 9 numerator: reaches exactly zero at the attenuation radius, so culling by that radius
+// never changes the image.
+float attenuationWindow(float distanceSq, float invRadius) {
+    float ratio2 = distanceSq * invRadius * invRadius;
+    float w = saturate(1.0 - ratio2 * ratio2);
+    return w * w;
+}
+
+// eq. 9 denominator, metres.
+float inverseSquare(float distanceSq) {
+    return 1.0 / (distanceSq + kFalloffBias);
+}
+
+float spotAttenuation(Light light, vec3 L) {
+    float a = saturate(dot(-L, light.direction) * light.spotScale + light.spotOffset);
+    return a * a;
+}
+
+// Exact irradiance factor of a uniformly emitting sphere seen at angle theta from the normal
+// (cosTheta) with angular radius sigma (sinSigmaSq), including the part below the horizon
+// (Snyder 1996). Multiply by the sphere's luminance. Reduces to pi sin^2(sigma) cos(theta)
+// when the sphere is fully above the horizon.
+float sphereIrradianceFactor(float cosTheta, float sinSigmaSq) {
+    sinSigmaSq = min(sinSigmaSq, 1.0);
+    if (cosTheta * cosTheta > sinSigmaSq || sinSigmaSq >= 1.0) {
+        return PI * sinSigmaSq * saturate(cosTheta);
+    }
+    float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+    float x = sqrt(max(1.0 / sinSigmaSq - 1.0, 0.0));
+    float y = clamp(-x * cosTheta / max(sinTheta, 1e-12), -1.0, 1.0);
+    float sinThetaSqrtY = sinTheta * sqrt(max(1.0 - y * y, 0.0));
+    float e = (cosTheta * acos(y) - x * sinThetaSqrtY) * sinSigmaSq +
+              atan(sinThetaSqrtY, max(x, 1e-12));
+    return max(e, 0.0);
+}
+
+// eq. 11: point on the sphere closest to the reflection ray (L: to the centre).
+vec3 sphereRepresentativePoint(vec3 L, vec3 R, float sourceRadius) {
+    vec3 centerToRay = dot(L, R) * R - L;
+    float scale = saturate(sourceRadius * inversesqrt(max(dot(centerToRay, centerToRay), 1e-30)));
+    return L + centerToRay * scale;
+}
+
+// eq. 10 + 14: (alpha / alpha')^2, alpha' widened by the sphere's angular size.
+float sphereEnergyNormalization(float alpha, float sourceRadius, float distance) {
+    float widened = saturate(alpha + sourceRadius / (3.0 * max(distance, 1e-6)));
+    float ratio = alpha / max(widened, 1e-12);
+    return ratio * ratio;
+}
+
+// eq. 16 in metres (the "+2" is 2 cm^2): mean of cos / d^2 along the segment L0..L1, so the
+// tube's intensity spreads uniformly along it. Equals NoL / (d^2 + 1e-4) for L0 == L1.
+float lineIrradiance(vec3 N, vec3 L0, vec3 L1) {
+    float len0 = length(L0);
+    float len1 = length(L1);
+    float cosSum = dot(N, L0) / (2.0 * max(len0, 1e-12)) + dot(N, L1) / (2.0 * max(len1, 1e-12));
+    return 2.0 * saturate(cosSum) / (len0 * len1 + dot(L0, L1) + 2.0 * kFalloffBias);
+}
+
+// eq. 19: parameter of the point on segment L0 + t * Ld closest to the reflection ray R.
+float tubeClosestParameter(vec3 L0, vec3 Ld, vec3 R) {
+    float RoLd = dot(R, Ld);
+    float LdoLd = dot(Ld, Ld);
+    float denominator = LdoLd - RoLd * RoLd;  // |Ld|^2 sin^2: 0 when R is parallel to the tube
+    float t = (dot(R, L0) * RoLd - dot(L0, Ld)) / max(denominator, 1e-30);
+    return saturate(t);
+}
+
+// eq. 20: alpha / alpha', widened along one axis by half the tube's angular length
+// (by analogy with eq. 10, where the widening is a third of the angular radius).
+float tubeEnergyNormalization(float alpha, float sourceLength, float distance) {
+    float widened = saturate(alpha + 0.5 * sourceLength / (3.0 * max(distance, 1e-6)));
+    return alpha / max(widened, 1e-12);
+}
+
+// Full incidence of a punctual (point/spot, sphere, tube) light. alpha is the GGX alpha of
+// the surface (for the energy normalisations), R the reflection vector.
+LightIncidence evaluateLocalLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
+    LightIncidence o;
+    vec3 toCenter = light.position - P;
+    float centerDistSq = dot(toCenter, toCenter);
+    o.diffuseL = safeNormalize(toCenter);
+
+    vec3 closestOnTube = toCenter;
+    float diffuseFactor;  // lux per candela, with cosine
+    float energy = 1.0;
+    vec3 specularPoint = toCenter;
+    if (light.sourceLength > 0.0) {
+        vec3 halfSegment = light.tubeAxis * (0.5 * light.sourceLength);
+        vec3 L0 = toCenter - halfSegment;
+        vec3 L1 = toCenter + halfSegment;
+        vec3 Ld = L1 - L0;
+        // Window distance: to the nearest point of the segment, matching the capsule bound.
+        float tNearest = saturate(-dot(L0, Ld) / max(dot(Ld, Ld), 1e-30));
+        closestOnTube = L0 + tNearest * Ld;
+        diffuseFactor = lineIrradiance(N, L0, L1);
+        specularPoint = L0 + tubeClosestParameter(L0, Ld, R) * Ld;
+        energy *= tubeEnergyNormalization(alpha, light.sourceLength, length(specularPoint));
+    } else if (light.sourceRadius > 0.0) {
+        float sinSigmaSq = light.sourceRadius * light.sourceRadius / max(centerDistSq, 1e-30);
+        // Sphere luminance = I / (pi r^2); irradiance = luminance * factor.
+        diffuseFactor = sphereIrradianceFactor(dot(N, o.diffuseL), sinSigmaSq) /
+                        (PI * light.sourceRadius * light.sourceRadius);
+        // Far away the factor equals NoL / d^2; the +1e-4 bias keeps the point-light limit.
+        diffuseFactor *= centerDistSq / (centerDistSq + kFalloffBias);
+    } else {
+        diffuseFactor = saturate(dot(N, o.diffuseL)) * inverseSquare(centerDistSq);
+    }
+    if (light.sourceRadius > 0.0) {
+        float specularDist = length(specularPoint);
+        specularPoint = sphereRepresentativePoint(specularPoint, R, light.sourceRadius);
+        energy *= sphereEnergyNormalization(alpha, light.sourceRadius, specularDist);
+    }
+
+    float window = attenuationWindow(dot(closestOnTube, closestOnTube), light.invAttenuationRadius);
+    vec3 intensity = light.intensity * window;
+    if (light.type == kLightSpot) intensity *= spotAttenuation(light, o.diffuseL);
+
+    o.specularL = safeNormalize(specularPoint);
+    float specularDistSq = max(dot(specularPoint, specularPoint), 0.0);
+    float NoLs = saturate(dot(N, o.specularL));
+    o.diffuseIlluminance = intensity * diffuseFactor;
+    o.specularIlluminance = intensity * (NoLs * inverseSquare(specularDistSq) * energy);
+    o.incidentIlluminance = intensity * inverseSquare(centerDistSq);
+    return o;
+}
+
+LightIncidence evaluateDirectionalLight(Light light, vec3 N) {
+    LightIncidence o;
+    o.diffuseL = -light.direction;
+    o.specularL = o.diffuseL;
+    float NoL = saturate(dot(N, o.diffuseL));
+    o.diffuseIlluminance = light.intensity * NoL;
+    o.specularIlluminance = o.diffuseIlluminance;
+    o.incidentIlluminance = light.intensity;
+    return o;
+}
+
+#endif

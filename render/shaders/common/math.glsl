@@ -1,0 +1,32 @@
+// Small numeric helpers every shader shares.
+#ifndef CANDELA_MATH_GLSL
+#define CANDELA_MATH_GLSL
+
+const float PI = 3.14159265358979;
+
+float saturate(float x) { return clamp(x, 0.0, 1.0); }
+vec3 saturate(vec3 x) { return clamp(x, vec3(0.0), vec3(1.0)); }
+
+// normalize() of a zero vector is NaN; this returns zero instead, so degenerate geometry
+// (a light at the shaded point, V == -L) contributes nothing rather than poisoning a pixel.
+vec3 safeNormalize(vec3 v) {
+    return v * inversesqrt(max(dot(v, v), 1e-30));
+}
+
+// Octahedral normal encoding into [0, 1]^2 (Meyer et al. 2010), for the G-buffer.
+vec2 octEncode(vec3 n) {
+    n /= abs(n.x) + abs(n.y) + abs(n.z);
+    vec2 p = n.xy;
+    if (n.z < 0.0) p = (1.0 - abs(n.yx)) * vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+    return p * 0.5 + 0.5;
+}
+
+vec3 octDecode(vec2 e) {
+    vec2 f = e * 2.0 - 1.0;
+    vec3 n = vec3(f, 1.0 - abs(f.x) - abs(f.y));
+    float t = saturate(-n.z);
+    n.xy += vec2(n.x >= 0.0 ? -t : t, n.y >= 0.0 ? -t : t);
+    return safeNormalize(n);
+}
+
+#endif

@@ -1,0 +1,82 @@
+// Shading models selected by the G-buffer's shading-model ID (SPEC "Shading"). Each model is one
+// function of (surface, view, light incidence); adding a model means one ID, one function and
+// one case in shadeSurface().
+#ifndef CANDELA_SHADING_MODELS_GLSL
+#define CANDELA_SHADING_MODELS_GLSL
+
+#include "common/brdf.glsl"
+#include "common/lights.glsl"
+
+// Must match render/include/candela/render/shading_model.h.
+const uint kShadingUnlit = 0u;
+const uint kShadingDefaultLit = 1u;
+const uint kShadingSubsurface = 2u;
+const uint kShadingLegacyDiffuseSpecular = 3u;
+
+struct Surface {
+    vec3 baseColor;    // DefaultLit/Subsurface: base colour; Legacy: DiffuseColor
+    float metallic;
+    float roughness;
+    float specular;    // UE4 "Specular", 0.5 -> F0 0.04
+    uint shadingModel;
+    vec4 customData;   // Subsurface: colour + opacity; Legacy: SpecularColor
+};
+
+// Cook-Torrance specular (eq. 2) for the representative direction of the incidence.
+vec3 specularGgx(vec3 specularColor, float roughness, vec3 N, vec3 V, LightIncidence inc) {
+    float alpha = alphaFromRoughness(roughness);
+    vec3 H = safeNormalize(V + inc.specularL);
+    float NoV = saturate(dot(N, V));
+    float NoL = saturate(dot(N, inc.specularL));
+    float NoH = saturate(dot(N, H));
+    float VoH = saturate(dot(V, H));
+    float d = distributionGgx(alpha * alpha, NoH);
+    float vis = visibilitySmithSchlick(alpha, NoV, NoL);
+    return d * vis * fresnelSchlickSg(specularColor, VoH) * inc.specularIlluminance;
+}
+
+vec3 shadeDefaultLit(Surface s, vec3 N, vec3 V, LightIncidence inc) {
+    vec3 diffuseColor = s.baseColor * (1.0 - s.metallic);
+    vec3 specularColor = mix(vec3(0.08 * s.specular), s.baseColor, s.metallic);
+    return diffuseLambert(diffuseColor) * inc.diffuseIlluminance +
+           specularGgx(specularColor, s.roughness, N, V, inc);
+}
+
+// Thin translucent matter: DefaultLit on the lit side plus light that passes through.
+// Transmission = wrapped back-face cosine (wrap grows as opacity falls) plus a forward-scatter
+// lobe toward the viewer when the light is behind the surface; both tinted by the subsurface
+// colour and scaled by (1 - opacity), so an opaque surface reduces to DefaultLit.
+vec3 shadeSubsurface(Surface s, vec3 N, vec3 V, LightIncidence inc) {
+    vec3 subsurfaceColor = s.customData.rgb;
+    float opacity = s.customData.a;
+    float wrap = 1.0 - opacity;
+    float backCos = saturate((dot(-N, inc.diffuseL) + wrap) / (1.0 + wrap));
+    float forwardScatter = pow(saturate(dot(V, -inc.diffuseL)), 12.0) * mix(3.0, 0.1, opacity);
+    vec3 transmitted = subsurfaceColor * (1.0 / PI) * (backCos + forwardScatter) * (1.0 - opacity) *
+                       inc.incidentIlluminance;
+    return shadeDefaultLit(s, N, V, inc) + transmitted;
+}
+
+// Non-photoreal projects: artist DiffuseColor and SpecularColor used as they are, no metallic.
+// At roughness 1 the "fully rough" fold of seed 001 moves the specular into the diffuse
+// (EnvBRDFApprox(SpecularColor, 1, 1) ~ 0.45 * SpecularColor) and skips the GGX lobe.
+vec3 shadeLegacyDiffuseSpecular(Surface s, vec3 N, vec3 V, LightIncidence inc) {
+    vec3 diffuseColor = s.baseColor;
+    vec3 specularColor = s.customData.rgb;
+    if (s.roughness >= 1.0) {
+        return diffuseLambert(diffuseColor + specularColor * 0.45) * inc.diffuseIlluminance;
+    }
+    return diffuseLambert(diffuseColor) * inc.diffuseIlluminance +
+           specularGgx(specularColor, s.roughness, N, V, inc);
+}
+
+vec3 shadeSurface(Surface s, vec3 N, vec3 V, LightIncidence inc) {
+    switch (s.shadingModel) {
+        case kShadingDefaultLit: return shadeDefaultLit(s, N, V, inc);
+        case kShadingSubsurface: return shadeSubsurface(s, N, V, inc);
+        case kShadingLegacyDiffuseSpecular: return shadeLegacyDiffuseSpecular(s, N, V, inc);
+        default: return vec3(0.0);  // Unlit: emissive only, written by the G-buffer pass
+    }
+}
+
+#endif
