@@ -1,0 +1,132 @@
+// KHR_lights_punctual lights -> engine Light components (photometric units, SPEC.md), and
+// glTF cameras -> engine Camera components.
+#include <algorithm>
+#include <numbers>
+
+#include "candela/content/light_units.h"
+#include "gltf_context.h"
+#include "gltf_values.h"
+
+namespace candela::content::gltf {
+namespace {
+
+NamedLight convertLight(Context& context, const tinygltf::Light& source,
+                        const std::string& element) {
+    NamedLight named;
+    named.name = source.name;
+    Light& light = named.light;
+    if (source.type == "directional")
+        light.type = LightType::Directional;
+    else if (source.type == "spot")
+        light.type = LightType::Spot;
+    else if (source.type == "point")
+        light.type = LightType::Point;
+    else
+        context.error(element, "type '" + source.type + "' is unknown; treated as point");
+
+    if (!source.color.empty() && !copyFactors(source.color, light.color)) {
+        context.warning(element, "color is not 3 finite numbers; using white");
+    }
+    for (float& c : light.color)
+        c = std::max(c, 0.0f);
+    float intensity = 1;
+    if (!toFiniteFloat(source.intensity, intensity) || intensity < 0) {
+        context.warning(element, "intensity is negative or not finite; using 1");
+        intensity = 1;
+    }
+    if (light.type == LightType::Directional) {
+        light.lux = intensity;  // glTF: lux for directional lights
+    } else {
+        light.lumens = lumensFromCandela(intensity);  // glTF: candela for point and spot
+    }
+
+    float range = 0;
+    if (toFiniteFloat(source.range, range) && range > 0) {
+        light.attenuationRadius = range;  // glTF's range uses the same window (SPEC.md eq. 9)
+        named.rangeWasGiven = true;
+    } else {
+        const float brightest = std::max({light.color[0], light.color[1], light.color[2]});
+        light.attenuationRadius = attenuationRadiusForIntensity(intensity, brightest);
+    }
+
+    if (light.type == LightType::Spot) {
+        float inner = 0;
+        float outer = std::numbers::pi_v<float> / 4;
+        toFiniteFloat(source.spot.innerConeAngle, inner);
+        toFiniteFloat(source.spot.outerConeAngle, outer);
+        outer = std::clamp(outer, 0.0f, std::numbers::pi_v<float> / 2);
+        inner = std::clamp(inner, 0.0f, outer);
+        light.innerConeAngle = inner;
+        light.outerConeAngle = outer;
+    }
+
+    // Engine extension: sphere and tube lights (tube along the node's local X axis).
+    for (auto [key, field] : {std::pair{"sourceRadius", &light.sourceRadius},
+                              std::pair{"sourceLength", &light.sourceLength}}) {
+        if (!member(source.extras, key)) continue;
+        float v = 0;
+        if (readNumber(source.extras, key, v) && v >= 0) {
+            *field = v;
+        } else {
+            context.warning(element + ".extras",
+                            std::string(key) + " must be a finite number >= 0; ignored");
+        }
+    }
+    return named;
+}
+
+NamedCamera convertCamera(Context& context, const tinygltf::Camera& source,
+                          const std::string& element) {
+    NamedCamera named;
+    named.name = source.name;
+    Camera& camera = named.camera;
+    auto positive = [&](const char* what, double in, float& out) {
+        float v = 0;
+        if (toFiniteFloat(in, v) && v > 0)
+            out = v;
+        else
+            context.warning(element, std::string(what) +
+                                         " must be a finite number > 0; "
+                                         "using the engine default");
+    };
+    if (source.type == "orthographic") {
+        camera.projection = Projection::Orthographic;
+        positive("orthographic.ymag", source.orthographic.ymag, camera.orthographicHalfHeight);
+        float znear = 0;  // orthographic znear may be 0
+        if (toFiniteFloat(source.orthographic.znear, znear) && znear >= 0) camera.nearPlane = znear;
+        positive("orthographic.zfar", source.orthographic.zfar, camera.farPlane);
+    } else {
+        if (source.type != "perspective") {
+            context.warning(element, "type '" + source.type + "' is unknown; using perspective");
+        }
+        positive("perspective.yfov", source.perspective.yfov, camera.verticalFov);
+        camera.verticalFov = std::min(camera.verticalFov, std::numbers::pi_v<float> * 0.999f);
+        positive("perspective.znear", source.perspective.znear, camera.nearPlane);
+        // No zfar means an infinite projection; the engine keeps its default far plane, which
+        // only bounds the clusters under reverse-Z.
+        if (source.perspective.zfar > 0) {
+            positive("perspective.zfar", source.perspective.zfar, camera.farPlane);
+        }
+    }
+    if (camera.farPlane <= camera.nearPlane) {
+        context.warning(element, "zfar is not beyond znear; far plane moved out");
+        camera.farPlane = std::max(camera.nearPlane * 1000.0f, 1.0f);
+    }
+    return named;
+}
+
+}  // namespace
+
+void convertLightsAndCameras(Context& context) {
+    for (std::size_t i = 0; i < context.document.lights.size(); ++i) {
+        context.model.lights.push_back(
+            convertLight(context, context.document.lights[i],
+                         "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]"));
+    }
+    for (std::size_t i = 0; i < context.document.cameras.size(); ++i) {
+        context.model.cameras.push_back(
+            convertCamera(context, context.document.cameras[i], elementName("cameras", i)));
+    }
+}
+
+}  // namespace candela::content::gltf

@@ -1,0 +1,220 @@
+// glTF materials (core, KHR_materials_emissive_strength, KHR_materials_unlit,
+// KHR_materials_specular, KHR_texture_transform) and the engine's `extras` -> Model::materials.
+#include <algorithm>
+
+#include "gltf_context.h"
+#include "gltf_values.h"
+
+namespace candela::content::gltf {
+namespace {
+
+// Reads KHR_texture_transform from a textureInfo's extensions.
+void readTextureTransform(Context& context, const std::string& element,
+                          const tinygltf::ExtensionMap& extensions, TextureRef& ref) {
+    auto it = extensions.find("KHR_texture_transform");
+    if (it == extensions.end()) return;
+    const tinygltf::Value& ext = it->second;
+    TextureTransform& t = ref.transform;
+    if (member(ext, "offset") && !readNumbers(ext, "offset", t.offset)) {
+        context.warning(element, "KHR_texture_transform.offset is not two finite numbers; ignored");
+    }
+    if (member(ext, "scale") && !readNumbers(ext, "scale", t.scale)) {
+        context.warning(element, "KHR_texture_transform.scale is not two finite numbers; ignored");
+    }
+    if (member(ext, "rotation") && !readNumber(ext, "rotation", t.rotation)) {
+        context.warning(element, "KHR_texture_transform.rotation is not a finite number; ignored");
+    }
+    float texCoord = 0;
+    if (readNumber(ext, "texCoord", texCoord)) {
+        ref.texCoord = static_cast<std::uint32_t>(std::clamp(texCoord, 0.0f, 1.0f));
+    }
+}
+
+// Fills `ref` from a texture index and texCoord, checking both. An index that names no
+// texture is replaced by the magenta checker, so the mistake is visible.
+TextureRef makeTextureRef(Context& context, const std::string& element, int index, int texCoord,
+                          const tinygltf::ExtensionMap& extensions, ColorSpace colorSpace) {
+    TextureRef ref;
+    if (index < 0) return ref;
+    ref.colorSpace = colorSpace;
+    if (validIndex(index, context.document.textures)) {
+        ref.texture = index;
+    } else {
+        context.error(element, "texture " + std::to_string(index) +
+                                   " does not exist; using the magenta checker");
+        ref.texture = fallbackTextureIndex(context);
+    }
+    if (texCoord < 0 || texCoord > 1) {
+        context.warning(element, "texCoord " + std::to_string(texCoord) +
+                                     " is not supported (only 0 and 1); using 0");
+        texCoord = 0;
+    }
+    ref.texCoord = static_cast<std::uint32_t>(texCoord);
+    readTextureTransform(context, element, extensions, ref);
+    return ref;
+}
+
+// A textureInfo stored as a raw Value (inside an extension).
+TextureRef makeTextureRef(Context& context, const std::string& element, const tinygltf::Value& info,
+                          ColorSpace colorSpace) {
+    float index = -1;
+    float texCoord = 0;
+    if (!readNumber(info, "index", index)) return {};
+    readNumber(info, "texCoord", texCoord);
+    tinygltf::ExtensionMap extensions;
+    if (const tinygltf::Value* ext = member(info, "extensions"); ext && ext->IsObject()) {
+        for (const std::string& key : ext->Keys())
+            extensions[key] = ext->Get(key);
+    }
+    return makeTextureRef(context, element, static_cast<int>(std::clamp(index, -1.0f, 1e9f)),
+                          static_cast<int>(std::clamp(texCoord, -1.0f, 1e9f)), extensions,
+                          colorSpace);
+}
+
+template <std::size_t N>
+void copyFactorsOrWarn(Context& context, const std::string& element, const char* what,
+                       const std::vector<double>& in, std::array<float, N>& out) {
+    if (!in.empty() && !copyFactors(in, out)) {
+        context.warning(element, std::string(what) + " is not " + std::to_string(N) +
+                                     " finite numbers; using the default");
+    }
+}
+
+void readSpecularExtension(Context& context, const std::string& element, const tinygltf::Value& ext,
+                           Material& material) {
+    float factor = 1;
+    readNumber(ext, "specularFactor", factor);
+    readNumbers(ext, "specularColorFactor", material.specularColorFactor);
+    if (const tinygltf::Value* t = member(ext, "specularTexture")) {
+        material.specularTexture = makeTextureRef(context, element, *t, ColorSpace::Linear);
+    }
+    if (const tinygltf::Value* t = member(ext, "specularColorTexture")) {
+        material.specularColorTexture = makeTextureRef(context, element, *t, ColorSpace::Srgb);
+    }
+    // glTF: dielectric F0 = 0.04 * specularFactor * specularColor (for ior 1.5).
+    // Engine: F0 = 0.08 * specular. The engine has one scalar, so the colour's largest
+    // channel is used; the colour factor itself is kept on the material.
+    const auto& c = material.specularColorFactor;
+    const float mapped = 0.5f * factor * std::max({c[0], c[1], c[2]});
+    material.specular = std::clamp(mapped, 0.0f, 1.0f);
+    if (mapped != material.specular) {
+        context.warning(element,
+                        "KHR_materials_specular gives F0 beyond the engine's range "
+                        "(specular " +
+                            std::to_string(mapped) + " clamped to [0, 1])");
+    }
+}
+
+void readEngineExtras(Context& context, const std::string& element, const tinygltf::Value& extras,
+                      Material& material) {
+    if (!extras.IsObject()) return;
+    if (std::string model; readString(extras, "shadingModel", model)) {
+        if (model == "defaultLit")
+            material.shadingModel = ShadingModel::DefaultLit;
+        else if (model == "subsurface")
+            material.shadingModel = ShadingModel::Subsurface;
+        else if (model == "legacy")
+            material.shadingModel = ShadingModel::Legacy;
+        else if (model == "unlit")
+            material.shadingModel = ShadingModel::Unlit;
+        else
+            context.warning(element, "extras.shadingModel '" + model +
+                                         "' is unknown (defaultLit, subsurface, legacy, unlit)");
+    }
+    auto number = [&](const char* key, float& out, float lo, float hi) {
+        if (!member(extras, key)) return;
+        float v = 0;
+        if (!readNumber(extras, key, v)) {
+            context.warning(element, std::string("extras.") + key + " is not a finite number");
+            return;
+        }
+        out = std::clamp(v, lo, hi);
+    };
+    auto color = [&](const char* key, std::array<float, 3>& out) {
+        if (member(extras, key) && !readNumbers(extras, key, out)) {
+            context.warning(element, std::string("extras.") + key + " is not 3 finite numbers");
+        }
+    };
+    number("specular", material.specular, 0.0f, 1.0f);
+    color("subsurfaceColor", material.subsurfaceColor);
+    number("subsurfaceOpacity", material.subsurfaceOpacity, 0.0f, 1.0f);
+    color("diffuseColor", material.diffuseColor);
+    color("specularColor", material.specularColor);
+}
+
+Material convertMaterial(Context& context, const tinygltf::Material& source,
+                         const std::string& element) {
+    Material material;
+    material.name = source.name;
+    const auto& pbr = source.pbrMetallicRoughness;
+    copyFactorsOrWarn(context, element, "baseColorFactor", pbr.baseColorFactor,
+                      material.baseColorFactor);
+    copyFactorsOrWarn(context, element, "emissiveFactor", source.emissiveFactor,
+                      material.emissiveFactor);
+    auto scalar = [&](const char* what, double in, float& out) {
+        if (!toFiniteFloat(in, out)) context.warning(element, std::string(what) + " is not finite");
+    };
+    scalar("metallicFactor", pbr.metallicFactor, material.metallicFactor);
+    scalar("roughnessFactor", pbr.roughnessFactor, material.roughnessFactor);
+    scalar("normalTexture.scale", source.normalTexture.scale, material.normalScale);
+    scalar("occlusionTexture.strength", source.occlusionTexture.strength,
+           material.occlusionStrength);
+    scalar("alphaCutoff", source.alphaCutoff, material.alphaCutoff);
+    material.metallicFactor = std::clamp(material.metallicFactor, 0.0f, 1.0f);
+    material.roughnessFactor = std::clamp(material.roughnessFactor, 0.0f, 1.0f);
+    material.occlusionStrength = std::clamp(material.occlusionStrength, 0.0f, 1.0f);
+
+    material.baseColorTexture = makeTextureRef(
+        context, element + ".pbrMetallicRoughness.baseColorTexture", pbr.baseColorTexture.index,
+        pbr.baseColorTexture.texCoord, pbr.baseColorTexture.extensions, ColorSpace::Srgb);
+    material.metallicRoughnessTexture =
+        makeTextureRef(context, element + ".pbrMetallicRoughness.metallicRoughnessTexture",
+                       pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                       pbr.metallicRoughnessTexture.extensions, ColorSpace::Linear);
+    material.normalTexture = makeTextureRef(
+        context, element + ".normalTexture", source.normalTexture.index,
+        source.normalTexture.texCoord, source.normalTexture.extensions, ColorSpace::Linear);
+    material.occlusionTexture = makeTextureRef(
+        context, element + ".occlusionTexture", source.occlusionTexture.index,
+        source.occlusionTexture.texCoord, source.occlusionTexture.extensions, ColorSpace::Linear);
+    material.emissiveTexture = makeTextureRef(
+        context, element + ".emissiveTexture", source.emissiveTexture.index,
+        source.emissiveTexture.texCoord, source.emissiveTexture.extensions, ColorSpace::Srgb);
+
+    if (source.alphaMode == "MASK")
+        material.alphaMode = AlphaMode::Mask;
+    else if (source.alphaMode == "BLEND")
+        material.alphaMode = AlphaMode::Blend;
+    else if (!source.alphaMode.empty() && source.alphaMode != "OPAQUE")
+        context.warning(element, "alphaMode '" + source.alphaMode + "' is unknown; using OPAQUE");
+    material.doubleSided = source.doubleSided;
+
+    const auto& extensions = source.extensions;
+    if (auto it = extensions.find("KHR_materials_emissive_strength"); it != extensions.end()) {
+        readNumber(it->second, "emissiveStrength", material.emissiveStrength);
+        material.emissiveStrength = std::max(material.emissiveStrength, 0.0f);
+    }
+    if (extensions.count("KHR_materials_unlit") != 0) {
+        material.shadingModel = ShadingModel::Unlit;
+    }
+    if (auto it = extensions.find("KHR_materials_specular"); it != extensions.end()) {
+        readSpecularExtension(context, element + ".extensions.KHR_materials_specular", it->second,
+                              material);
+    }
+    // Extras come last: an engine-specific value wins over what an extension implied.
+    readEngineExtras(context, element + ".extras", source.extras, material);
+    return material;
+}
+
+}  // namespace
+
+void convertMaterials(Context& context) {
+    const auto& materials = context.document.materials;
+    context.model.materials.reserve(materials.size());
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        context.model.materials.push_back(
+            convertMaterial(context, materials[i], elementName("materials", i)));
+    }
+}
+
+}  // namespace candela::content::gltf

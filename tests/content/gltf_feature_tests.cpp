@@ -1,0 +1,290 @@
+// glTF features beyond the sample models, on generated documents: external and data-URI
+// buffers, GLB, KHR extensions, engine extras, lights, cameras, strips, vertex colours.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+#include "candela/content/gltf_loader.h"
+#include "candela/content/light_units.h"
+#include "gltf_test_documents.h"
+#include "test_paths.h"
+
+namespace candela::content {
+namespace {
+
+using nlohmann::json;
+using testing::bytesOf;
+using testing::quadDocument;
+
+std::optional<Model> loadJson(const json& doc, Diagnostics& diagnostics,
+                              const std::filesystem::path& path = "test.gltf") {
+    return loadGltfFromMemory(bytesOf(doc.dump()), path, diagnostics);
+}
+
+TEST(GltfFeatures, DataUriQuadLoadsWithFlatNormalsAndTangents) {
+    Diagnostics diagnostics;
+    auto m = loadJson(quadDocument(), diagnostics);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
+    const Primitive& p = m->meshes.at(0).primitives.at(0);
+    EXPECT_TRUE(p.normalsGenerated);
+    EXPECT_EQ(p.positions.size(), 6u) << "flat normals unweld the two triangles";
+    for (const Float3& n : p.normals)
+        EXPECT_EQ(n, (Float3{0, 0, 1}));
+    for (const Float4& t : p.tangents) {
+        EXPECT_NEAR(t[0], 1.0f, 1e-6f);
+        EXPECT_EQ(t[3], 1.0f) << "u along +X, v down the image: not mirrored";
+    }
+    EXPECT_EQ(m->nodes.at(0).name, "quad");
+    EXPECT_EQ(m->meshes.at(0).name, "quadMesh");
+}
+
+TEST(GltfFeatures, ExternalBufferAndGlbGiveTheSameGeometry) {
+    json doc = quadDocument();
+    // Move the data-URI buffer into a .bin file beside the .gltf.
+    std::string uri = doc["buffers"][0]["uri"];
+    const std::string payload = uri.substr(uri.find(',') + 1);
+    Diagnostics decodeDiagnostics;
+    auto reference = loadJson(doc, decodeDiagnostics);
+    ASSERT_TRUE(reference);
+
+    // The same bytes the data URI holds, written as a file.
+    testing::BinaryBuffer buffer;
+    buffer.append(std::vector<float>{0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+    buffer.append(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0});
+    buffer.append(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3});
+    ASSERT_EQ(testing::base64(buffer.bytes), payload);
+
+    const auto gltfPath = testing::tempPath("quad.gltf");
+    {
+        std::ofstream bin(gltfPath.parent_path() / "quad.bin", std::ios::binary);
+        bin.write(reinterpret_cast<const char*>(buffer.bytes.data()),
+                  static_cast<std::streamsize>(buffer.bytes.size()));
+        doc["buffers"][0]["uri"] = "quad.bin";
+        std::ofstream(gltfPath) << doc.dump(2);
+    }
+    Diagnostics diagnostics;
+    auto external = loadGltf(gltfPath, diagnostics);
+    ASSERT_TRUE(external) << diagnostics.toString();
+    EXPECT_EQ(external->meshes[0].primitives[0].positions,
+              reference->meshes[0].primitives[0].positions);
+
+    // GLB: JSON chunk + BIN chunk, buffer without uri.
+    json glbDoc = doc;
+    glbDoc["buffers"][0].erase("uri");
+    std::string jsonText = glbDoc.dump();
+    while (jsonText.size() % 4 != 0)
+        jsonText += ' ';
+    std::vector<std::uint8_t> bin = buffer.bytes;
+    while (bin.size() % 4 != 0)
+        bin.push_back(0);
+    std::vector<std::uint8_t> glb;
+    auto u32 = [&](std::uint32_t v) {
+        for (int i = 0; i < 4; ++i)
+            glb.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
+    };
+    u32(0x46546C67);
+    u32(2);
+    u32(static_cast<std::uint32_t>(12 + 8 + jsonText.size() + 8 + bin.size()));
+    u32(static_cast<std::uint32_t>(jsonText.size()));
+    u32(0x4E4F534A);
+    glb.insert(glb.end(), jsonText.begin(), jsonText.end());
+    u32(static_cast<std::uint32_t>(bin.size()));
+    u32(0x004E4942);
+    glb.insert(glb.end(), bin.begin(), bin.end());
+    Diagnostics glbDiagnostics;
+    auto fromGlb = loadGltfFromMemory(std::as_bytes(std::span(glb)), "quad.glb", glbDiagnostics);
+    ASSERT_TRUE(fromGlb) << glbDiagnostics.toString();
+    EXPECT_EQ(fromGlb->meshes[0].primitives[0].positions,
+              reference->meshes[0].primitives[0].positions);
+}
+
+TEST(GltfFeatures, PunctualLightsConvertToPhotometricEngineUnits) {
+    json doc = quadDocument();
+    doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    doc["extensions"]["KHR_lights_punctual"]["lights"] = json::array({
+        {{"type", "point"}, {"intensity", 10.0}, {"range", 7.5}, {"color", {1, 0.5, 0.25}}},
+        {{"type", "spot"},
+         {"intensity", 20.0},
+         {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.6}}}},
+        {{"type", "directional"}, {"intensity", 3.5}},
+        {{"type", "point"},
+         {"intensity", 100.0},
+         {"extras", {{"sourceRadius", 0.25}, {"sourceLength", 2.0}}}},
+    });
+    doc["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 3;
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    ASSERT_EQ(m->lights.size(), 4u);
+    const float fourPi = 4.0f * std::numbers::pi_v<float>;
+
+    const Light& point = m->lights[0].light;
+    EXPECT_EQ(point.type, LightType::Point);
+    EXPECT_FLOAT_EQ(point.lumens, 10.0f * fourPi);
+    EXPECT_FLOAT_EQ(point.attenuationRadius, 7.5f);
+    EXPECT_TRUE(m->lights[0].rangeWasGiven);
+    EXPECT_EQ(point.color, (std::array<float, 3>{1, 0.5f, 0.25f}));
+
+    const Light& spot = m->lights[1].light;
+    EXPECT_EQ(spot.type, LightType::Spot);
+    EXPECT_FLOAT_EQ(spot.lumens, 20.0f * fourPi) << "spot lumens ignore the cone (SPEC.md)";
+    EXPECT_FLOAT_EQ(spot.innerConeAngle, 0.2f);
+    EXPECT_FLOAT_EQ(spot.outerConeAngle, 0.6f);
+    EXPECT_FALSE(m->lights[1].rangeWasGiven);
+    // No range: the radius where 20 cd falls to the threshold illuminance.
+    const float radius = std::sqrt(20.0f / kNoRangeIlluminanceThresholdLux);
+    EXPECT_FLOAT_EQ(spot.attenuationRadius, radius);
+    EXPECT_NEAR(20.0f / (radius * radius), kNoRangeIlluminanceThresholdLux, 1e-6f);
+
+    EXPECT_EQ(m->lights[2].light.type, LightType::Directional);
+    EXPECT_FLOAT_EQ(m->lights[2].light.lux, 3.5f);
+
+    EXPECT_FLOAT_EQ(m->lights[3].light.sourceRadius, 0.25f);
+    EXPECT_FLOAT_EQ(m->lights[3].light.sourceLength, 2.0f);
+    EXPECT_EQ(m->nodes[0].light, 3);
+}
+
+TEST(GltfFeatures, MaterialExtensionsAndEngineExtras) {
+    json doc = quadDocument();
+    doc["extensionsUsed"] = {"KHR_materials_emissive_strength", "KHR_materials_unlit",
+                             "KHR_texture_transform", "KHR_materials_specular"};
+    // A 1x1 PNG would need an encoder; an undecodable image exercises the fallback as well.
+    doc["images"] = json::array({{{"uri", "data:image/png;base64,AAAA"}}});
+    doc["textures"] = json::array({{{"source", 0}}});
+    doc["materials"] = json::array({
+        {{"name", "transformed"},
+         {"emissiveFactor", {1, 0.5, 0}},
+         {"alphaMode", "MASK"},
+         {"alphaCutoff", 0.3},
+         {"doubleSided", true},
+         {"normalTexture", {{"index", 0}, {"scale", 0.5}}},
+         {"occlusionTexture", {{"index", 0}, {"strength", 0.25}}},
+         {"pbrMetallicRoughness",
+          {{"baseColorFactor", {0.1, 0.2, 0.3, 0.4}},
+           {"metallicFactor", 0.6},
+           {"roughnessFactor", 0.7},
+           {"baseColorTexture",
+            {{"index", 0},
+             {"extensions",
+              {{"KHR_texture_transform",
+                {{"offset", {0.5, 0.25}},
+                 {"rotation", 1.5},
+                 {"scale", {2, 3}},
+                 {"texCoord", 1}}}}}}}}},
+         {"extensions",
+          {{"KHR_materials_emissive_strength", {{"emissiveStrength", 5.0}}},
+           {"KHR_materials_specular", {{"specularFactor", 0.5}}}}}},
+        {{"name", "unlit"}, {"extensions", {{"KHR_materials_unlit", json::object()}}}},
+        {{"name", "skin"},
+         {"extras",
+          {{"shadingModel", "subsurface"},
+           {"specular", 0.35},
+           {"subsurfaceColor", {0.9, 0.3, 0.2}},
+           {"subsurfaceOpacity", 0.4}}}},
+        {{"name", "legacy"},
+         {"extras",
+          {{"shadingModel", "legacy"},
+           {"diffuseColor", {0.5, 0.4, 0.3}},
+           {"specularColor", {0.2, 0.2, 0.2}}}}},
+    });
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    ASSERT_EQ(m->materials.size(), 4u);
+
+    const Material& t = m->materials[0];
+    EXPECT_EQ(t.baseColorFactor, (std::array<float, 4>{0.1f, 0.2f, 0.3f, 0.4f}));
+    EXPECT_FLOAT_EQ(t.metallicFactor, 0.6f);
+    EXPECT_FLOAT_EQ(t.roughnessFactor, 0.7f);
+    EXPECT_FLOAT_EQ(t.normalScale, 0.5f);
+    EXPECT_FLOAT_EQ(t.occlusionStrength, 0.25f);
+    EXPECT_FLOAT_EQ(t.emissiveStrength, 5.0f);
+    EXPECT_EQ(t.emissiveFactor, (std::array<float, 3>{1, 0.5f, 0}));
+    EXPECT_EQ(t.alphaMode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(t.alphaCutoff, 0.3f);
+    EXPECT_TRUE(t.doubleSided);
+    EXPECT_FLOAT_EQ(t.specular, 0.25f) << "F0 0.04 * 0.5 = 0.08 * 0.25";
+    EXPECT_EQ(t.baseColorTexture.transform.offset, (std::array<float, 2>{0.5f, 0.25f}));
+    EXPECT_FLOAT_EQ(t.baseColorTexture.transform.rotation, 1.5f);
+    EXPECT_EQ(t.baseColorTexture.transform.scale, (std::array<float, 2>{2, 3}));
+    EXPECT_EQ(t.baseColorTexture.texCoord, 1u) << "KHR_texture_transform overrides texCoord";
+
+    // The undecodable image became the magenta checker, and said so.
+    ASSERT_EQ(m->images.size(), 1u);
+    EXPECT_TRUE(m->images[0].isFallback);
+    EXPECT_TRUE(diagnostics.mentions("images[0]"));
+    EXPECT_EQ(m->images[0].rgba[0], 255);
+    EXPECT_EQ(m->images[0].rgba[1], 0);
+
+    EXPECT_EQ(m->materials[1].shadingModel, ShadingModel::Unlit);
+    const Material& skin = m->materials[2];
+    EXPECT_EQ(skin.shadingModel, ShadingModel::Subsurface);
+    EXPECT_FLOAT_EQ(skin.specular, 0.35f);
+    EXPECT_EQ(skin.subsurfaceColor, (std::array<float, 3>{0.9f, 0.3f, 0.2f}));
+    EXPECT_FLOAT_EQ(skin.subsurfaceOpacity, 0.4f);
+    const Material& legacy = m->materials[3];
+    EXPECT_EQ(legacy.shadingModel, ShadingModel::Legacy);
+    EXPECT_EQ(legacy.diffuseColor, (std::array<float, 3>{0.5f, 0.4f, 0.3f}));
+    EXPECT_EQ(legacy.specularColor, (std::array<float, 3>{0.2f, 0.2f, 0.2f}));
+}
+
+TEST(GltfFeatures, CamerasMatricesStripsU8IndicesAndVertexColours) {
+    json doc = quadDocument();
+    testing::BinaryBuffer buffer;
+    buffer.append(std::vector<float>{0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0});
+    buffer.append(std::vector<std::uint8_t>{0, 1, 2, 3});
+    buffer.append(std::vector<std::uint8_t>{255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255});
+    doc["buffers"].push_back({{"byteLength", buffer.bytes.size()}, {"uri", buffer.dataUri()}});
+    doc["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 0}, {"byteLength", 48}});
+    doc["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 48}, {"byteLength", 4}});
+    doc["bufferViews"].push_back({{"buffer", 1}, {"byteOffset", 52}, {"byteLength", 12}});
+    doc["accessors"].push_back(
+        {{"bufferView", 3}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}});
+    doc["accessors"].push_back(
+        {{"bufferView", 4}, {"componentType", 5121}, {"count", 4}, {"type", "SCALAR"}});
+    doc["accessors"].push_back({{"bufferView", 5},
+                                {"componentType", 5121},
+                                {"normalized", true},
+                                {"count", 4},
+                                {"type", "VEC3"}});
+    doc["meshes"].push_back(
+        {{"primitives",
+          {{{"attributes", {{"POSITION", 3}, {"COLOR_0", 5}}}, {"indices", 4}, {"mode", 5}}}}});
+    doc["cameras"] = json::array(
+        {{{"type", "perspective"},
+          {"perspective", {{"yfov", 0.9}, {"znear", 0.1}, {"zfar", 200.0}}}},
+         {{"type", "orthographic"},
+          {"orthographic", {{"xmag", 2.0}, {"ymag", 1.5}, {"znear", 0.0}, {"zfar", 50.0}}}}});
+    // Column-major: scale 2 along X, then translate (1, 2, 3).
+    doc["nodes"].push_back({{"name", "strip"},
+                            {"mesh", 1},
+                            {"camera", 1},
+                            {"matrix", {2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 1, 2, 3, 1}}});
+    doc["nodes"][0]["children"] = {1};
+    doc["nodes"][0]["camera"] = 0;
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    const Primitive& strip = m->meshes.at(1).primitives.at(0);
+    EXPECT_EQ(strip.indices.size(), 6u);
+    ASSERT_EQ(strip.colors.size(), strip.positions.size());
+    EXPECT_EQ(strip.colors[0], (Float4{1, 0, 0, 1}));
+    const Node& node = m->nodes.at(1);
+    EXPECT_EQ(node.parent, 0);
+    EXPECT_EQ(node.local.translation, (Float3{1, 2, 3}));
+    EXPECT_EQ(node.local.scale, (Float3{2, 1, 1}));
+    EXPECT_EQ(node.local.rotation, (Float4{0, 0, 0, 1}));
+    ASSERT_EQ(m->cameras.size(), 2u);
+    EXPECT_FLOAT_EQ(m->cameras[0].camera.verticalFov, 0.9f);
+    EXPECT_FLOAT_EQ(m->cameras[0].camera.farPlane, 200.0f);
+    EXPECT_EQ(m->cameras[1].camera.projection, Projection::Orthographic);
+    EXPECT_FLOAT_EQ(m->cameras[1].camera.orthographicHalfHeight, 1.5f);
+    EXPECT_EQ(m->nodes[0].camera, 0);
+    EXPECT_EQ(node.camera, 1);
+}
+
+}  // namespace
+}  // namespace candela::content
