@@ -59,7 +59,7 @@ void renderHeadless(Session& s, const LoadedScene& scene, uint32_t frames,
     for (uint32_t i = 0; i < frames; ++i) {
         Clock::time_point start = Clock::now();
         VkCommandBuffer cmd = s.submitter->begin();
-        s.renderer->recordFrame(cmd, scene.frame);
+        s.renderer->recordFrame(cmd, scene.frame, nullptr);
         bool last = i + 1 == frames;
         if (last && readback) readback->recordCopy(cmd, *s.renderer);
         s.submitter->submit();
@@ -91,7 +91,7 @@ void renderWindowed(Session& s, Window& window, render::Swapchain& swapchain,
             continue;
         }
         VkCommandBuffer cmd = s.submitter->begin();
-        s.renderer->recordFrame(cmd, scene.frame);
+        s.renderer->recordFrame(cmd, scene.frame, nullptr);
         bool last = frames != 0 && i + 1 == frames;
         if (last && readback) readback->recordCopy(cmd, *s.renderer);
         swapchain.recordBlit(cmd, s.renderer->ldrTarget(), imageIndex);

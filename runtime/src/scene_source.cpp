@@ -10,9 +10,9 @@ namespace {
 LoadedScene builtinTriangle() {
     LoadedScene scene;
     scene.name = "builtin:triangle";
-    scene.frame.ev100 = 0.0f;
+    scene.frame.scene.camera.ev100 = 0.0f;
     scene.frame.clearRadiance = {0.05f, 0.1f, 0.2f, 1.0f};
-    scene.frame.triangleRadiance = {2.0f, 0.5f, 0.125f, 1.0f};
+    scene.frame.testTriangleRadiance = {2.0f, 0.5f, 0.125f, 1.0f};
     return scene;
 }
 

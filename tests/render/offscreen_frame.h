@@ -7,6 +7,7 @@
 #include "candela/render/frame_submitter.h"
 #include "candela/render/gpu_context.h"
 #include "candela/render/renderer.h"
+#include "candela/render/scene_resources.h"
 
 namespace candela::render::test {
 
@@ -17,13 +18,14 @@ inline GpuContextOptions requiredValidation() {
 }
 
 inline CapturedFrame renderOffscreen(GpuContext& context, const FrameInputs& inputs, uint32_t width,
-                                     uint32_t height, uint32_t frames = 1) {
+                                     uint32_t height, uint32_t frames = 1,
+                                     SceneResources* resources = nullptr) {
     Renderer renderer(context, width, height);
     FrameSubmitter submitter(context);
     FrameReadback readback(context, width, height);
     for (uint32_t i = 0; i < frames; ++i) {
         VkCommandBuffer cmd = submitter.begin();
-        renderer.recordFrame(cmd, inputs);
+        renderer.recordFrame(cmd, inputs, resources);
         if (i + 1 == frames) readback.recordCopy(cmd, renderer);
         submitter.submit();
     }

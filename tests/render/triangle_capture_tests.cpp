@@ -29,9 +29,9 @@ constexpr std::array<std::array<float, 2>, 3> kCorners = {
 
 FrameInputs testScene() {
     FrameInputs inputs;
-    inputs.ev100 = 1.0f;
+    inputs.scene.camera.ev100 = 1.0f;
     inputs.clearRadiance = {0.05f, 0.1f, 0.2f, 1.0f};
-    inputs.triangleRadiance = {2.0f, 0.5f, 0.125f, 1.0f};
+    inputs.testTriangleRadiance = {2.0f, 0.5f, 0.125f, 1.0f};
     return inputs;
 }
 
@@ -87,13 +87,13 @@ TEST(TriangleCapture, HdrAndLdrMatchPixelByPixel) {
             Coverage c = coverage(x, y);
             if (c == Coverage::OnEdge) continue;
             const auto& expected =
-                c == Coverage::Inside ? inputs.triangleRadiance : inputs.clearRadiance;
+                c == Coverage::Inside ? *inputs.testTriangleRadiance : inputs.clearRadiance;
             (c == Coverage::Inside ? inside : outside)++;
             const size_t i = size_t(y) * kWidth + x;
             for (int ch = 0; ch < 3; ++ch) {
                 bool hdrOk = frame.hdrRgb[i * 3 + ch] == expected[ch];
-                int ldrDelta =
-                    int(frame.ldrRgba[i * 4 + ch]) - int(expectedLdr(expected[ch], inputs.ev100));
+                int ldrDelta = int(frame.ldrRgba[i * 4 + ch]) -
+                               int(expectedLdr(expected[ch], inputs.scene.camera.ev100));
                 if (!hdrOk || std::abs(ldrDelta) > 1) ++mismatches;
             }
             if (frame.ldrRgba[i * 4 + 3] != 255) ++mismatches;

@@ -10,6 +10,12 @@ const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;
 const uint kLightDirectional = 2u;
 
+// Light shapes compiled into this shader variant (SPEC "Model only what a scene needs"); the
+// renderer turns off the shapes its scene does not have, and the driver drops their code.
+layout(constant_id = 20) const bool kSphereLightsEnabled = true;
+layout(constant_id = 21) const bool kTubeLightsEnabled = true;
+layout(constant_id = 22) const bool kSpotLightsEnabled = true;
+
 // The "+1" of eq. 9 is 1 cm^2 in UE4's centimetres: 1e-4 m^2 here. Without the conversion a
 // light 2 m away would be 20% too dark.
 const float kFalloffBias = 1e-4;
@@ -124,7 +130,7 @@ LightIncidence evaluateLocalLight(Light light, vec3 P, vec3 N, vec3 R, float alp
     float diffuseFactor;  // lux per candela, with cosine
     float energy = 1.0;
     vec3 specularPoint = toCenter;
-    if (light.sourceLength > 0.0) {
+    if (kTubeLightsEnabled && light.sourceLength > 0.0) {
         vec3 halfSegment = light.tubeAxis * (0.5 * light.sourceLength);
         vec3 L0 = toCenter - halfSegment;
         vec3 L1 = toCenter + halfSegment;
@@ -135,7 +141,7 @@ LightIncidence evaluateLocalLight(Light light, vec3 P, vec3 N, vec3 R, float alp
         diffuseFactor = lineIrradiance(N, L0, L1);
         specularPoint = L0 + tubeClosestParameter(L0, Ld, R) * Ld;
         energy *= tubeEnergyNormalization(alpha, light.sourceLength, length(specularPoint));
-    } else if (light.sourceRadius > 0.0) {
+    } else if (kSphereLightsEnabled && light.sourceRadius > 0.0) {
         float sinSigmaSq = light.sourceRadius * light.sourceRadius / max(centerDistSq, 1e-30);
         // Sphere luminance = I / (pi r^2); irradiance = luminance * factor.
         diffuseFactor = sphereIrradianceFactor(dot(N, o.diffuseL), sinSigmaSq) /
@@ -145,7 +151,7 @@ LightIncidence evaluateLocalLight(Light light, vec3 P, vec3 N, vec3 R, float alp
     } else {
         diffuseFactor = saturate(dot(N, o.diffuseL)) * inverseSquare(centerDistSq);
     }
-    if (light.sourceRadius > 0.0) {
+    if (kSphereLightsEnabled && light.sourceRadius > 0.0) {
         float specularDist = length(specularPoint);
         specularPoint = sphereRepresentativePoint(specularPoint, R, light.sourceRadius);
         energy *= sphereEnergyNormalization(alpha, light.sourceRadius, specularDist);
@@ -153,7 +159,7 @@ LightIncidence evaluateLocalLight(Light light, vec3 P, vec3 N, vec3 R, float alp
 
     float window = attenuationWindow(dot(closestOnTube, closestOnTube), light.invAttenuationRadius);
     vec3 intensity = light.intensity * window;
-    if (light.type == kLightSpot) intensity *= spotAttenuation(light, o.diffuseL);
+    if (kSpotLightsEnabled && light.type == kLightSpot) intensity *= spotAttenuation(light, o.diffuseL);
 
     o.specularL = safeNormalize(specularPoint);
     float specularDistSq = max(dot(specularPoint, specularPoint), 0.0);

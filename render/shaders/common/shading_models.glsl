@@ -13,6 +13,11 @@ const uint kShadingDefaultLit = 1u;
 const uint kShadingSubsurface = 2u;
 const uint kShadingLegacyDiffuseSpecular = 3u;
 
+// Shading models compiled into this shader variant; the renderer turns off those no material
+// in the scene uses. DefaultLit is always present (it is also the fallback).
+layout(constant_id = 10) const bool kSubsurfaceEnabled = true;
+layout(constant_id = 11) const bool kLegacyDiffuseSpecularEnabled = true;
+
 struct Surface {
     vec3 baseColor;    // DefaultLit/Subsurface: base colour; Legacy: DiffuseColor
     float metallic;
@@ -71,12 +76,14 @@ vec3 shadeLegacyDiffuseSpecular(Surface s, vec3 N, vec3 V, LightIncidence inc) {
 }
 
 vec3 shadeSurface(Surface s, vec3 N, vec3 V, LightIncidence inc) {
-    switch (s.shadingModel) {
-        case kShadingDefaultLit: return shadeDefaultLit(s, N, V, inc);
-        case kShadingSubsurface: return shadeSubsurface(s, N, V, inc);
-        case kShadingLegacyDiffuseSpecular: return shadeLegacyDiffuseSpecular(s, N, V, inc);
-        default: return vec3(0.0);  // Unlit: emissive only, written by the G-buffer pass
+    if (s.shadingModel == kShadingUnlit) return vec3(0.0);  // emissive only (G-buffer pass)
+    if (kSubsurfaceEnabled && s.shadingModel == kShadingSubsurface) {
+        return shadeSubsurface(s, N, V, inc);
     }
+    if (kLegacyDiffuseSpecularEnabled && s.shadingModel == kShadingLegacyDiffuseSpecular) {
+        return shadeLegacyDiffuseSpecular(s, N, V, inc);
+    }
+    return shadeDefaultLit(s, N, V, inc);
 }
 
 #endif

@@ -1,14 +1,17 @@
 #pragma once
 // What one frame asks of the renderer. Filled by the runtime from the scene each frame.
 #include <array>
+#include <optional>
+
+#include "candela/render/frame_scene.h"
 
 namespace candela::render {
 
 struct FrameInputs {
-    float ev100 = 0.0f;  // exposure, from the camera (physical or manual)
-    // Foundation test scene: a clear colour and one flat triangle, both HDR radiance (cd/m^2).
-    std::array<float, 4> clearRadiance{0.0f, 0.0f, 0.0f, 1.0f};
-    std::array<float, 4> triangleRadiance{1.0f, 1.0f, 1.0f, 1.0f};
+    std::array<float, 4> clearRadiance{0.0f, 0.0f, 0.0f, 1.0f};  // background, cd/m^2
+    FrameScene scene;  // meshes and lights; its camera also sets the exposure
+    // Foundation test scene: one flat HDR triangle drawn instead of the scene's meshes.
+    std::optional<std::array<float, 4>> testTriangleRadiance;
 };
 
 }  // namespace candela::render

@@ -1,0 +1,41 @@
+#pragma once
+// What one frame draws, extracted from the ECS by the runtime: plain arrays the passes read.
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+
+#include "candela/content/components/light.h"
+
+namespace candela::render {
+
+// Reverse-Z with an infinite far plane: depth = nearPlane / viewDistance, cleared to 0,
+// tested GREATER_OR_EQUAL. Precision is best where it matters, and far needs no choosing.
+struct CameraView {
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::vec3 position{0.0f};
+    float ev100 = 0.0f;
+};
+
+glm::mat4 reverseZPerspective(float verticalFov, float aspect, float nearPlane);
+
+struct DrawItem {
+    uint32_t mesh;      // from SceneResources
+    uint32_t material;  // from SceneResources
+    glm::mat4 world;
+};
+
+struct LightInstance {
+    content::Light light;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot axis / directional travel (node -Z)
+    glm::vec3 tubeAxis{1.0f, 0.0f, 0.0f};    // node +X
+};
+
+struct FrameScene {
+    CameraView camera;
+    std::span<const DrawItem> draws;
+    std::span<const LightInstance> lights;
+};
+
+}  // namespace candela::render

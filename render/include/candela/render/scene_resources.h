@@ -1,0 +1,95 @@
+#pragma once
+// GPU copies of a scene's meshes, materials and textures. A model added twice is uploaded once
+// (keyed by its address); within a model, a texture used by several materials is one image.
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include "candela/content/model.h"
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/gpu_image.h"
+
+namespace candela::render {
+
+class GpuContext;
+
+struct GpuMesh {
+    GpuBuffer vertices;  // interleaved MeshVertex
+    GpuBuffer indices;   // uint32
+    uint32_t indexCount = 0;
+    int32_t defaultMaterial = -1;  // the primitive's material in SceneResources, -1: default
+};
+
+struct GpuTexture {
+    GpuImage image;
+    VkSampler sampler = VK_NULL_HANDLE;  // owned by the sampler cache
+};
+
+// Where a model's pieces landed: mesh index of primitive p of glTF mesh m is
+// firstPrimitiveOfMesh[m] + p.
+struct UploadedModel {
+    std::vector<uint32_t> firstPrimitiveOfMesh;
+    std::vector<uint32_t> primitiveCountOfMesh;
+    uint32_t firstMaterial = 0;
+};
+
+// Texture slots of a material, in binding order of the G-buffer pass.
+enum TextureSlot : uint32_t {
+    kBaseColorSlot,
+    kMetallicRoughnessSlot,
+    kNormalSlot,
+    kOcclusionSlot,
+    kEmissiveSlot,
+    kTextureSlotCount
+};
+
+struct MaterialBinding {
+    uint32_t textures[kTextureSlotCount];  // indices into SceneResources textures
+};
+
+class SceneResources {
+public:
+    explicit SceneResources(GpuContext& context);
+    ~SceneResources();
+    SceneResources(const SceneResources&) = delete;
+    SceneResources& operator=(const SceneResources&) = delete;
+
+    const UploadedModel& addModel(const content::Model& model);
+    uint32_t addMaterial(const content::Material& material);  // with no textures
+
+    const GpuMesh& mesh(uint32_t index) const { return meshes_[index]; }
+    uint32_t meshCount() const { return uint32_t(meshes_.size()); }
+    uint32_t materialCount() const { return uint32_t(materialBindings_.size()); }
+    uint32_t defaultMaterial() const { return 0; }
+    const GpuTexture& texture(uint32_t index) const { return textures_[index]; }
+    const MaterialBinding& materialBinding(uint32_t material) const {
+        return materialBindings_[material];
+    }
+    const content::Material& material(uint32_t index) const { return materials_[index]; }
+    // std430 array of GpuMaterial; rebuilt when materials were added since the last call.
+    const GpuBuffer& materialBuffer();
+
+private:
+    uint32_t uploadTexture(const content::Rgba8Image& image, content::ColorSpace space,
+                           const content::Sampler& sampler);
+    uint32_t addMaterialWithTextures(const content::Material& material,
+                                     const MaterialBinding& binding);
+    VkSampler samplerFor(const content::Sampler& sampler);
+
+    GpuContext& context_;
+    std::vector<GpuMesh> meshes_;
+    std::vector<GpuTexture> textures_;
+    std::vector<content::Material> materials_;
+    std::vector<MaterialBinding> materialBindings_;
+    std::unordered_map<const content::Model*, UploadedModel> models_;
+    std::unordered_map<uint32_t, VkSampler> samplers_;
+    GpuBuffer materialBuffer_;
+    bool materialsDirty_ = true;
+    uint32_t whiteTexture_ = 0;
+    uint32_t flatNormalTexture_ = 0;
+};
+
+}  // namespace candela::render

@@ -1,0 +1,15 @@
+#pragma once
+// std140 camera block (matches render/shaders/common/camera.glsl).
+#include <cstdint>
+#include <glm/glm.hpp>
+
+namespace candela::render {
+
+struct GpuCamera {
+    glm::mat4 viewProjection;
+    glm::mat4 inverseViewProjection;
+    glm::vec4 cameraPosition;
+    glm::uvec4 frameInfo;  // width, height, light count, unused
+};
+
+}  // namespace candela::render

@@ -1,0 +1,68 @@
+#include "gpu_light.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace candela::render {
+
+namespace {
+
+float finiteOr(float value, float fallback) {
+    return std::isfinite(value) ? value : fallback;
+}
+
+void store(float out[3], const glm::vec3& v) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
+
+glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
+    float lengthSq = glm::dot(v, v);
+    if (!std::isfinite(lengthSq) || lengthSq < 1e-20f) return fallback;
+    return v / std::sqrt(lengthSq);
+}
+
+}  // namespace
+
+GpuLight packLight(const LightInstance& instance) {
+    const content::Light& l = instance.light;
+    GpuLight g{};
+    store(g.position, instance.position);
+    float radius = std::max(finiteOr(l.attenuationRadius, 0.0f), 0.0f);
+    g.invAttenuationRadius = 1.0f / std::max(radius, 1e-6f);
+    float photometric = l.type == content::LightType::Directional
+                            ? l.lux
+                            : l.lumens / (4.0f * std::numbers::pi_v<float>);  // lm -> cd
+    photometric = std::max(finiteOr(photometric, 0.0f), 0.0f);
+    // A zero attenuation radius means the light reaches nothing.
+    if (radius == 0.0f && l.type != content::LightType::Directional) photometric = 0.0f;
+    for (int i = 0; i < 3; ++i) {
+        g.intensity[i] = std::max(finiteOr(l.color[i], 0.0f), 0.0f) * photometric;
+    }
+    g.sourceRadius = std::max(finiteOr(l.sourceRadius, 0.0f), 0.0f);
+    g.sourceLength = std::max(finiteOr(l.sourceLength, 0.0f), 0.0f);
+    store(g.direction, unitOr(instance.direction, {0.0f, 0.0f, -1.0f}));
+    store(g.tubeAxis, unitOr(instance.tubeAxis, {1.0f, 0.0f, 0.0f}));
+    switch (l.type) {
+        case content::LightType::Point:
+            g.type = 0;
+            break;
+        case content::LightType::Spot:
+            g.type = 1;
+            break;
+        case content::LightType::Directional:
+            g.type = 2;
+            break;
+    }
+    float outer = std::clamp(finiteOr(l.outerConeAngle, 0.0f), 0.0f, 1.5707963f);
+    float inner = std::clamp(finiteOr(l.innerConeAngle, 0.0f), 0.0f, outer);
+    float cosOuter = std::cos(outer);
+    float cosInner = std::cos(inner);
+    g.spotScale = 1.0f / std::max(cosInner - cosOuter, 1e-4f);
+    g.spotOffset = -cosOuter * g.spotScale;
+    return g;
+}
+
+}  // namespace candela::render

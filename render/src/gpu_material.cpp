@@ -1,0 +1,67 @@
+#include "gpu_material.h"
+
+#include <cmath>
+
+namespace candela::render {
+
+namespace {
+
+GpuTextureTransform packTransform(const content::TextureRef& ref) {
+    GpuTextureTransform t{};
+    const float c = std::cos(ref.transform.rotation);
+    const float s = std::sin(ref.transform.rotation);
+    // KHR_texture_transform: uv' = offset + R(rotation) * (scale * uv), with R rotating
+    // counter-clockwise in UV space: [c s; -s c].
+    t.matrix[0] = c * ref.transform.scale[0];
+    t.matrix[1] = -s * ref.transform.scale[0];
+    t.matrix[2] = s * ref.transform.scale[1];
+    t.matrix[3] = c * ref.transform.scale[1];
+    t.offset[0] = ref.transform.offset[0];
+    t.offset[1] = ref.transform.offset[1];
+    t.texCoord = ref.texCoord;
+    t.present = ref.present() ? 1u : 0u;
+    return t;
+}
+
+}  // namespace
+
+ShadingModelId shadingModelId(content::ShadingModel model) {
+    switch (model) {
+        case content::ShadingModel::Subsurface:
+            return ShadingModelId::Subsurface;
+        case content::ShadingModel::Legacy:
+            return ShadingModelId::LegacyDiffuseSpecular;
+        case content::ShadingModel::Unlit:
+            return ShadingModelId::Unlit;
+        case content::ShadingModel::DefaultLit:
+            break;
+    }
+    return ShadingModelId::DefaultLit;
+}
+
+GpuMaterial packMaterial(const content::Material& m) {
+    GpuMaterial g{};
+    const bool legacy = m.shadingModel == content::ShadingModel::Legacy;
+    for (int i = 0; i < 3; ++i) {
+        g.baseColor[i] = legacy ? m.diffuseColor[i] : m.baseColorFactor[i];
+        g.emissive[i] = m.emissiveFactor[i] * m.emissiveStrength;
+        g.customData[i] = legacy ? m.specularColor[i] : m.subsurfaceColor[i];
+    }
+    g.baseColor[3] = m.baseColorFactor[3];
+    g.customData[3] = legacy ? 0.0f : m.subsurfaceOpacity;
+    g.metallic = legacy ? 0.0f : m.metallicFactor;
+    g.roughness = m.roughnessFactor;
+    g.specular = m.specular;
+    g.normalScale = m.normalScale;
+    g.occlusionStrength = m.occlusionStrength;
+    g.alphaCutoff = m.alphaMode == content::AlphaMode::Mask ? m.alphaCutoff : -1.0f;
+    g.shadingModel = static_cast<uint32_t>(shadingModelId(m.shadingModel));
+    g.transforms[0] = packTransform(m.baseColorTexture);
+    g.transforms[1] = packTransform(m.metallicRoughnessTexture);
+    g.transforms[2] = packTransform(m.normalTexture);
+    g.transforms[3] = packTransform(m.occlusionTexture);
+    g.transforms[4] = packTransform(m.emissiveTexture);
+    return g;
+}
+
+}  // namespace candela::render

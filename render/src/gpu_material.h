@@ -1,0 +1,36 @@
+#pragma once
+// The G-buffer pass's view of a material (std430; matches gbuffer.frag's Material).
+#include <cstdint>
+
+#include "candela/content/material.h"
+#include "candela/render/shading_model.h"
+
+namespace candela::render {
+
+struct GpuTextureTransform {
+    float matrix[4];  // 2x2 rotation*scale, column-major
+    float offset[2];
+    uint32_t texCoord;
+    uint32_t present;  // 0: slot uses the fallback (white / flat normal)
+};
+
+struct GpuMaterial {
+    float baseColor[4];   // DefaultLit/Subsurface base colour; Legacy DiffuseColor; alpha
+    float emissive[4];    // rgb = factor * strength (cd/m^2 per unit texel)
+    float customData[4];  // Subsurface colour + opacity; Legacy SpecularColor
+    float metallic;
+    float roughness;
+    float specular;
+    float normalScale;
+    float occlusionStrength;
+    float alphaCutoff;  // < 0: opaque (no alpha test)
+    uint32_t shadingModel;
+    uint32_t pad;
+    GpuTextureTransform transforms[5];  // TextureSlot order
+};
+static_assert(sizeof(GpuMaterial) % 16 == 0, "std430 array stride");
+
+GpuMaterial packMaterial(const content::Material& material);
+ShadingModelId shadingModelId(content::ShadingModel model);
+
+}  // namespace candela::render

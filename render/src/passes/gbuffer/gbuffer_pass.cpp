@@ -1,0 +1,115 @@
+#include "passes/gbuffer/gbuffer_pass.h"
+
+#include <cstddef>
+
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/scene_resources.h"
+#include "gbuffer_targets.h"
+#include "mesh_vertex.h"
+#include "shaders/gbuffer.frag.spv.h"
+#include "shaders/gbuffer.vert.spv.h"
+
+namespace candela::render {
+
+namespace {
+
+struct DrawPush {
+    glm::mat4 world;
+    uint32_t material;
+};
+
+constexpr uint32_t kFirstTextureBinding = 2;
+
+}  // namespace
+
+GBufferPass::GBufferPass(GpuContext& context) {
+    GraphicsPipelineDesc desc;
+    desc.vertexSpirv = gbuffer_vert_spv;
+    desc.fragmentSpirv = gbuffer_frag_spv;
+    desc.vertexBindings = {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertexAttributes = {
+        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
+        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)},
+        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MeshVertex, tangent)},
+        {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv0)},
+        {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv1)},
+        {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MeshVertex, color)},
+    };
+    desc.colorFormats.assign(GBufferTargets::kColorFormats.begin(),
+                             GBufferTargets::kColorFormats.end());
+    desc.colorFormats.push_back(VK_FORMAT_R32G32B32A32_SFLOAT);  // HDR (emissive)
+    desc.depthFormat = GBufferTargets::kDepthFormat;
+    std::vector<DescriptorBinding> bindings = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    };
+    for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+        bindings.push_back({kFirstTextureBinding + slot, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            VK_SHADER_STAGE_FRAGMENT_BIT});
+    }
+    pipeline_ = Pipeline::graphics(context, desc, bindings, sizeof(DrawPush));
+}
+
+void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, const GpuImage& hdr,
+                         const std::array<float, 4>& clearRadiance, const FrameScene& scene,
+                         SceneResources& resources, const GpuBuffer& cameraBuffer) const {
+    const uint32_t width = hdr.desc().width;
+    const uint32_t height = hdr.desc().height;
+    std::array<VkRenderingAttachmentInfo, 5> colors{};
+    for (size_t i = 0; i < colors.size(); ++i) {
+        colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+        colors[i].imageView = i < 4 ? targets.color[i].view() : hdr.view();
+        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    }
+    // Shading model 0 (Unlit) where nothing is drawn; the HDR target starts as the background.
+    colors[4].clearValue.color = {{clearRadiance[0], clearRadiance[1], clearRadiance[2], 1.0f}};
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = targets.depth.view();
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {0.0f, 0};  // reverse-Z: 0 is infinitely far
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = uint32_t(colors.size());
+    rendering.pColorAttachments = colors.data();
+    rendering.pDepthAttachment = &depth;
+
+    vkCmdBeginRendering(cmd, &rendering);
+    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {width, height}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    pipeline_.bind(cmd);
+
+    const GpuBuffer& materials = resources.materialBuffer();
+    VkDescriptorBufferInfo cameraInfo{cameraBuffer.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo materialInfo{materials.handle(), 0, VK_WHOLE_SIZE};
+    for (const DrawItem& draw : scene.draws) {
+        const GpuMesh& mesh = resources.mesh(draw.mesh);
+        if (mesh.indexCount == 0) continue;
+        const MaterialBinding& binding = resources.materialBinding(draw.material);
+        std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
+        std::vector<VkWriteDescriptorSet> writes = {uniformBufferWrite(0, &cameraInfo),
+                                                    storageBufferWrite(1, &materialInfo)};
+        for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+            const GpuTexture& t = resources.texture(binding.textures[slot]);
+            images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+            writes.push_back(sampledImageWrite(kFirstTextureBinding + slot, &images[slot]));
+        }
+        pipeline_.pushDescriptors(cmd, writes);
+        DrawPush push{draw.world, draw.material};
+        pipeline_.pushConstants(cmd, &push, sizeof(push));
+        VkDeviceSize offset = 0;
+        VkBuffer vertexBuffer = mesh.vertices.handle();
+        vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+        vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+    }
+    vkCmdEndRendering(cmd);
+}
+
+}  // namespace candela::render

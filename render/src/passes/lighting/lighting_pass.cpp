@@ -1,0 +1,90 @@
+#include "passes/lighting/lighting_pass.h"
+
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/gpu_context.h"
+#include "gbuffer_targets.h"
+#include "shaders/lighting.comp.spv.h"
+#include "vk/vk_check.h"
+
+namespace candela::render {
+
+namespace {
+// Specialization constant IDs declared in shading_models.glsl and lights.glsl.
+constexpr uint32_t kSubsurfaceConstant = 10;
+constexpr uint32_t kLegacyConstant = 11;
+constexpr uint32_t kSphereConstant = 20;
+constexpr uint32_t kTubeConstant = 21;
+constexpr uint32_t kSpotConstant = 22;
+}  // namespace
+
+std::vector<std::string> LightingFeatures::names() const {
+    std::vector<std::string> out = {"shading_default_lit", "lights_point"};
+    if (subsurface) out.push_back("shading_subsurface");
+    if (legacyDiffuseSpecular) out.push_back("shading_legacy_diffuse_specular");
+    if (sphereLights) out.push_back("lights_sphere");
+    if (tubeLights) out.push_back("lights_tube");
+    if (spotLights) out.push_back("lights_spot");
+    return out;
+}
+
+LightingPass::LightingPass(GpuContext& context) : context_(context) {
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = VK_FILTER_NEAREST;
+    info.minFilter = VK_FILTER_NEAREST;
+    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    CANDELA_VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &pointSampler_));
+    setFeatures({});
+}
+
+LightingPass::~LightingPass() {
+    vkDestroySampler(context_.device(), pointSampler_, nullptr);
+}
+
+void LightingPass::setFeatures(const LightingFeatures& features) {
+    if (built_ && features == features_) return;
+    features_ = features;
+    SpecializationConstants constants;
+    constants.set(kSubsurfaceConstant, features.subsurface);
+    constants.set(kLegacyConstant, features.legacyDiffuseSpecular);
+    constants.set(kSphereConstant, features.sphereLights);
+    constants.set(kTubeConstant, features.tubeLights);
+    constants.set(kSpotConstant, features.spotLights);
+    const DescriptorBinding bindings[] = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+    };
+    pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, 0, &constants);
+    built_ = true;
+}
+
+void LightingPass::record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const GpuImage& hdr,
+                          const GpuBuffer& cameraBuffer, const GpuBuffer& lightBuffer) const {
+    VkDescriptorBufferInfo cameraInfo{cameraBuffer.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo lightInfo{lightBuffer.handle(), 0, VK_WHOLE_SIZE};
+    std::array<VkDescriptorImageInfo, 5> images{};
+    for (size_t i = 0; i < 4; ++i) {
+        images[i] = {pointSampler_, gbuffer.color[i].view(),
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
+    images[4] = {pointSampler_, gbuffer.depth.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(0, &cameraInfo), storageBufferWrite(1, &lightInfo),
+        sampledImageWrite(2, &images[0]),   sampledImageWrite(3, &images[1]),
+        sampledImageWrite(4, &images[2]),   sampledImageWrite(5, &images[3]),
+        sampledImageWrite(6, &images[4]),   storageImageWrite(7, &hdrInfo),
+    };
+    pipeline_.bind(cmd);
+    pipeline_.pushDescriptors(cmd, writes);
+    vkCmdDispatch(cmd, (hdr.desc().width + 7) / 8, (hdr.desc().height + 7) / 8, 1);
+}
+
+}  // namespace candela::render

@@ -1,0 +1,50 @@
+#pragma once
+// Full-screen compute lighting over the G-buffer (brute force: every light at every pixel).
+#include <string>
+#include <vector>
+
+#include "candela/render/pipeline.h"
+
+namespace candela::render {
+
+class GpuBuffer;
+class GpuContext;
+class GpuImage;
+struct GBufferTargets;
+
+// Which shading models and light shapes the shader variant contains.
+struct LightingFeatures {
+    bool subsurface = false;
+    bool legacyDiffuseSpecular = false;
+    bool sphereLights = false;
+    bool tubeLights = false;
+    bool spotLights = false;
+
+    bool operator==(const LightingFeatures&) const = default;
+    std::vector<std::string> names() const;
+};
+
+class LightingPass {
+public:
+    explicit LightingPass(GpuContext& context);
+    ~LightingPass();
+    LightingPass(const LightingPass&) = delete;
+    LightingPass& operator=(const LightingPass&) = delete;
+
+    // Rebuilds the pipeline when the scene's features change (specialization constants).
+    void setFeatures(const LightingFeatures& features);
+    const LightingFeatures& features() const { return features_; }
+
+    // G-buffer images must be SHADER_READ_ONLY, hdr GENERAL.
+    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const GpuImage& hdr,
+                const GpuBuffer& cameraBuffer, const GpuBuffer& lightBuffer) const;
+
+private:
+    GpuContext& context_;
+    LightingFeatures features_;
+    bool built_ = false;
+    Pipeline pipeline_;
+    VkSampler pointSampler_ = VK_NULL_HANDLE;
+};
+
+}  // namespace candela::render

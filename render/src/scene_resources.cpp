@@ -1,0 +1,271 @@
+#include "candela/render/scene_resources.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "candela/render/gpu_context.h"
+#include "gpu_material.h"
+#include "mesh_vertex.h"
+#include "vk/vk_check.h"
+
+namespace candela::render {
+
+namespace {
+
+GpuBuffer uploadBuffer(GpuContext& context, const void* data, VkDeviceSize bytes,
+                       VkBufferUsageFlags usage) {
+    GpuBuffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                      MemoryLocation::HostVisible);
+    std::memcpy(staging.mapped(), data, bytes);
+    GpuBuffer buffer(context, bytes, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                     MemoryLocation::Device);
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+        VkBufferCopy region{0, 0, bytes};
+        vkCmdCopyBuffer(cmd, staging.handle(), buffer.handle(), 1, &region);
+    });
+    return buffer;
+}
+
+std::vector<MeshVertex> interleave(const content::Primitive& p) {
+    std::vector<MeshVertex> vertices(p.positions.size());
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        MeshVertex& v = vertices[i];
+        std::memcpy(v.position, p.positions[i].data(), sizeof(v.position));
+        if (i < p.normals.size()) std::memcpy(v.normal, p.normals[i].data(), sizeof(v.normal));
+        if (i < p.tangents.size()) std::memcpy(v.tangent, p.tangents[i].data(), sizeof(v.tangent));
+        if (i < p.uv0.size()) std::memcpy(v.uv0, p.uv0[i].data(), sizeof(v.uv0));
+        if (i < p.uv1.size()) std::memcpy(v.uv1, p.uv1[i].data(), sizeof(v.uv1));
+        if (i < p.colors.size()) {
+            std::memcpy(v.color, p.colors[i].data(), sizeof(v.color));
+        } else {
+            std::fill(std::begin(v.color), std::end(v.color), 1.0f);
+        }
+    }
+    return vertices;
+}
+
+uint32_t mipCount(uint32_t width, uint32_t height) {
+    uint32_t levels = 1;
+    while ((std::max(width, height) >> levels) > 0)
+        ++levels;
+    return levels;
+}
+
+VkFilter toVk(content::Filter f) {
+    return f == content::Filter::Nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+}
+
+VkSamplerAddressMode toVk(content::Wrap w) {
+    switch (w) {
+        case content::Wrap::ClampToEdge:
+            return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+        case content::Wrap::MirroredRepeat:
+            return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+        case content::Wrap::Repeat:
+            break;
+    }
+    return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+uint32_t samplerKey(const content::Sampler& s) {
+    return uint32_t(s.magFilter) | uint32_t(s.minFilter) << 2 | uint32_t(s.mipFilter) << 4 |
+           uint32_t(s.useMipmaps) << 6 | uint32_t(s.wrapS) << 8 | uint32_t(s.wrapT) << 10;
+}
+
+content::Rgba8Image solidImage(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
+    content::Rgba8Image image;
+    image.width = 1;
+    image.height = 1;
+    image.rgba = {r, g, b, a};
+    return image;
+}
+
+// Records mip generation by successive linear blits. Blits filter in linear space even for
+// sRGB formats, so colour textures are averaged correctly.
+void recordMipChain(VkCommandBuffer cmd, const GpuImage& image) {
+    const ImageDesc& d = image.desc();
+    auto barrier = [&](uint32_t mip, VkImageLayout from, VkImageLayout to, VkAccessFlags2 src,
+                       VkAccessFlags2 dst, VkPipelineStageFlags2 dstStage) {
+        VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+        b.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
+        b.srcAccessMask = src;
+        b.dstStageMask = dstStage;
+        b.dstAccessMask = dst;
+        b.oldLayout = from;
+        b.newLayout = to;
+        b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = image.handle();
+        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 1, 0, 1};
+        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+        dep.imageMemoryBarrierCount = 1;
+        dep.pImageMemoryBarriers = &b;
+        vkCmdPipelineBarrier2(cmd, &dep);
+    };
+    int32_t w = int32_t(d.width), h = int32_t(d.height);
+    for (uint32_t mip = 1; mip < d.mipLevels; ++mip) {
+        barrier(mip - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                VK_PIPELINE_STAGE_2_TRANSFER_BIT);
+        VkImageBlit blit{};
+        blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip - 1, 0, 1};
+        blit.srcOffsets[1] = {w, h, 1};
+        w = std::max(1, w / 2);
+        h = std::max(1, h / 2);
+        blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, 1};
+        blit.dstOffsets[1] = {w, h, 1};
+        vkCmdBlitImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.handle(),
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
+        barrier(mip - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_2_TRANSFER_READ_BIT,
+                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+    }
+    barrier(d.mipLevels - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
+}
+
+}  // namespace
+
+SceneResources::SceneResources(GpuContext& context) : context_(context) {
+    content::Sampler sampler;
+    whiteTexture_ =
+        uploadTexture(solidImage(255, 255, 255, 255), content::ColorSpace::Linear, sampler);
+    flatNormalTexture_ =
+        uploadTexture(solidImage(128, 128, 255, 255), content::ColorSpace::Linear, sampler);
+    addMaterial(content::Material{});  // index 0: glTF's default material
+}
+
+SceneResources::~SceneResources() {
+    for (auto& [key, sampler] : samplers_)
+        vkDestroySampler(context_.device(), sampler, nullptr);
+}
+
+VkSampler SceneResources::samplerFor(const content::Sampler& s) {
+    uint32_t key = samplerKey(s);
+    if (auto it = samplers_.find(key); it != samplers_.end()) return it->second;
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = toVk(s.magFilter);
+    info.minFilter = toVk(s.minFilter);
+    info.mipmapMode = s.mipFilter == content::Filter::Nearest ? VK_SAMPLER_MIPMAP_MODE_NEAREST
+                                                              : VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    info.addressModeU = toVk(s.wrapS);
+    info.addressModeV = toVk(s.wrapT);
+    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    info.maxLod = s.useMipmaps ? VK_LOD_CLAMP_NONE : 0.0f;
+    VkSampler sampler;
+    CANDELA_VK_CHECK(vkCreateSampler(context_.device(), &info, nullptr, &sampler));
+    samplers_.emplace(key, sampler);
+    return sampler;
+}
+
+uint32_t SceneResources::uploadTexture(const content::Rgba8Image& image, content::ColorSpace space,
+                                       const content::Sampler& sampler) {
+    ImageDesc desc;
+    desc.format =
+        space == content::ColorSpace::Srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+    desc.width = image.width;
+    desc.height = image.height;
+    desc.mipLevels = mipCount(image.width, image.height);
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    GpuTexture texture{GpuImage(context_, desc), samplerFor(sampler)};
+    GpuBuffer staging(context_, image.rgba.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                      MemoryLocation::HostVisible);
+    std::memcpy(staging.mapped(), image.rgba.data(), image.rgba.size());
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+        transitionImage(cmd, texture.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+                        VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {image.width, image.height, 1};
+        vkCmdCopyBufferToImage(cmd, staging.handle(), texture.image.handle(),
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        recordMipChain(cmd, texture.image);
+    });
+    textures_.push_back(std::move(texture));
+    return uint32_t(textures_.size() - 1);
+}
+
+uint32_t SceneResources::addMaterial(const content::Material& material) {
+    MaterialBinding binding{};
+    std::fill(std::begin(binding.textures), std::end(binding.textures), whiteTexture_);
+    binding.textures[kNormalSlot] = flatNormalTexture_;
+    return addMaterialWithTextures(material, binding);
+}
+
+uint32_t SceneResources::addMaterialWithTextures(const content::Material& material,
+                                                 const MaterialBinding& binding) {
+    materials_.push_back(material);
+    materialBindings_.push_back(binding);
+    materialsDirty_ = true;
+    return uint32_t(materials_.size() - 1);
+}
+
+const UploadedModel& SceneResources::addModel(const content::Model& model) {
+    if (auto it = models_.find(&model); it != models_.end()) return it->second;
+    UploadedModel uploaded;
+
+    // One GPU image per (texture, colour space): the same glTF texture may serve an sRGB slot
+    // in one material and a linear slot in another, which needs two formats.
+    std::unordered_map<uint64_t, uint32_t> textureImages;
+    auto textureFor = [&](const content::TextureRef& ref, uint32_t fallback) {
+        if (!ref.present() || ref.texture >= int32_t(model.textures.size())) return fallback;
+        const content::Texture& t = model.textures[ref.texture];
+        if (t.image < 0 || t.image >= int32_t(model.images.size())) return fallback;
+        uint64_t key = uint64_t(ref.texture) << 1 | (ref.colorSpace == content::ColorSpace::Srgb);
+        if (auto it = textureImages.find(key); it != textureImages.end()) return it->second;
+        uint32_t index = uploadTexture(model.images[t.image], ref.colorSpace, t.sampler);
+        textureImages.emplace(key, index);
+        return index;
+    };
+
+    uploaded.firstMaterial = uint32_t(materials_.size());
+    for (const content::Material& m : model.materials) {
+        MaterialBinding binding{};
+        binding.textures[kBaseColorSlot] = textureFor(m.baseColorTexture, whiteTexture_);
+        binding.textures[kMetallicRoughnessSlot] =
+            textureFor(m.metallicRoughnessTexture, whiteTexture_);
+        binding.textures[kNormalSlot] = textureFor(m.normalTexture, flatNormalTexture_);
+        binding.textures[kOcclusionSlot] = textureFor(m.occlusionTexture, whiteTexture_);
+        binding.textures[kEmissiveSlot] = textureFor(m.emissiveTexture, whiteTexture_);
+        addMaterialWithTextures(m, binding);
+    }
+
+    for (const content::Mesh& mesh : model.meshes) {
+        uploaded.firstPrimitiveOfMesh.push_back(uint32_t(meshes_.size()));
+        uploaded.primitiveCountOfMesh.push_back(uint32_t(mesh.primitives.size()));
+        for (const content::Primitive& p : mesh.primitives) {
+            std::vector<MeshVertex> vertices = interleave(p);
+            GpuMesh gpu;
+            gpu.vertices =
+                uploadBuffer(context_, vertices.data(), vertices.size() * sizeof(MeshVertex),
+                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+            gpu.indices =
+                uploadBuffer(context_, p.indices.data(), p.indices.size() * sizeof(uint32_t),
+                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+            gpu.indexCount = uint32_t(p.indices.size());
+            gpu.defaultMaterial = p.material >= 0 && p.material < int32_t(model.materials.size())
+                                      ? int32_t(uploaded.firstMaterial + p.material)
+                                      : int32_t(defaultMaterial());
+            meshes_.push_back(std::move(gpu));
+        }
+    }
+    return models_.emplace(&model, std::move(uploaded)).first->second;
+}
+
+const GpuBuffer& SceneResources::materialBuffer() {
+    if (materialsDirty_) {
+        std::vector<GpuMaterial> packed;
+        packed.reserve(materials_.size());
+        for (const content::Material& m : materials_)
+            packed.push_back(packMaterial(m));
+        materialBuffer_ = uploadBuffer(context_, packed.data(), packed.size() * sizeof(GpuMaterial),
+                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        materialsDirty_ = false;
+    }
+    return materialBuffer_;
+}
+
+}  // namespace candela::render
