@@ -64,7 +64,11 @@ vec3 envBrdfApprox(vec3 specularColor, float roughness, float NoV) {
     vec4 r = roughness * c0 + c1;
     float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
     vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
-    return specularColor * ab.x + ab.y;
+    // max(): toward roughness 1 and NoV 1 the fit's bias goes negative (seed 001:
+    // EnvBRDFApprox(F0, 1, 1) = 0.4524 F0 - 0.0024), i.e. a negative reflectance for any F0
+    // channel under 0.0053 (Specular 0, dark or saturated metals). Found by
+    // tests/render/stability.
+    return max(specularColor * ab.x + ab.y, vec3(0.0));
 }
 
 // Seed 001: EnvBRDFApprox(0.04, roughness, NoV) for default non-metals.

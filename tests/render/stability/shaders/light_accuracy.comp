@@ -1,0 +1,82 @@
+#version 460
+// Evaluates one shared light function (chosen by the push constant) at inputs chosen by the
+// CPU, which compares the results with its double-precision references and numerical
+// integrations (light_reference.h).
+#extension GL_GOOGLE_include_directive : require
+
+#include "common/lights.glsl"
+
+layout(local_size_x = 64) in;
+
+// Must match LightFunction in light_accuracy.h.
+const uint kAttenuationWindow = 0u;          // (a.x distanceSq, a.y invRadius)
+const uint kInverseSquare = 1u;              // (a.x distanceSq)
+const uint kSphereIrradianceFactor = 2u;     // (a.x cosTheta, a.y sinSigmaSq)
+const uint kSphereEnergyNormalization = 3u;  // (a.x alpha, a.y sourceRadius, a.z distance)
+const uint kTubeEnergyNormalization = 4u;    // (a.x alpha, a.y sourceLength, a.z distance)
+const uint kLineIrradiance = 5u;             // (a.xyz N, b.xyz L0, c.xyz L1)
+const uint kTubeClosestParameter = 6u;       // (a.xyz L0, b.xyz Ld, c.xyz R)
+const uint kSphereRepresentativePoint = 7u;  // (a.xyz L, b.xyz R, c.x sourceRadius)
+// evaluateLocalLight at P = 0 with a 1 cd light, infinite attenuation radius:
+// a.xyz position, a.w sourceRadius, b.xyz N, b.w sourceLength, c.xyz tubeAxis, d.xyz R,
+// d.w alpha -> (diffuse, specular, incident illuminance, |specularL|)
+const uint kLocalLight = 8u;
+const uint kProduct = 9u;  // a.x * a.y: tells whether the device keeps denormals
+
+struct LightSample {
+    vec4 a;
+    vec4 b;
+    vec4 c;
+    vec4 d;
+};
+
+layout(std430, binding = 0) readonly buffer Samples {
+    LightSample samples[];
+};
+layout(std430, binding = 1) writeonly buffer Values {
+    vec4 values[];
+};
+
+layout(push_constant) uniform Job {
+    uint function;
+    uint sampleCount;
+};
+
+vec4 evaluate(LightSample s) {
+    switch (function) {
+        case kAttenuationWindow: return vec4(attenuationWindow(s.a.x, s.a.y));
+        case kInverseSquare: return vec4(inverseSquare(s.a.x));
+        case kSphereIrradianceFactor: return vec4(sphereIrradianceFactor(s.a.x, s.a.y));
+        case kSphereEnergyNormalization:
+            return vec4(sphereEnergyNormalization(s.a.x, s.a.y, s.a.z));
+        case kTubeEnergyNormalization: return vec4(tubeEnergyNormalization(s.a.x, s.a.y, s.a.z));
+        case kLineIrradiance: return vec4(lineIrradiance(s.a.xyz, s.b.xyz, s.c.xyz));
+        case kTubeClosestParameter: return vec4(tubeClosestParameter(s.a.xyz, s.b.xyz, s.c.xyz));
+        case kSphereRepresentativePoint:
+            return vec4(sphereRepresentativePoint(s.a.xyz, s.b.xyz, s.c.x), 0.0);
+        case kLocalLight: {
+            Light light;
+            light.position = s.a.xyz;
+            light.invAttenuationRadius = 0.0;
+            light.intensity = vec3(1.0);
+            light.sourceRadius = s.a.w;
+            light.direction = vec3(0.0, 0.0, -1.0);
+            light.sourceLength = s.b.w;
+            light.tubeAxis = s.c.xyz;
+            light.type = kLightPoint;
+            light.spotScale = 0.0;
+            light.spotOffset = 0.0;
+            LightIncidence o = evaluateLocalLight(light, vec3(0.0), s.b.xyz, s.d.xyz, s.d.w);
+            return vec4(o.diffuseIlluminance.x, o.specularIlluminance.x, o.incidentIlluminance.x,
+                        length(o.specularL));
+        }
+        case kProduct: return vec4(s.a.x * s.a.y);
+        default: return vec4(0.0);
+    }
+}
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= sampleCount) return;
+    values[i] = evaluate(samples[i]);
+}
