@@ -8,25 +8,26 @@ Entity EntityPool::allocate() {
     if (!freeList_.empty()) {
         const std::uint32_t index = freeList_.back();
         freeList_.pop_back();
+        slots_[index].state = SlotState::Alive;
         return Entity(index, slots_[index].generation);
     }
     CANDELA_ECS_CHECK(slots_.size() < Entity::kNullIndex, EcsErrorCode::EntityLimitReached,
                       "entity index space exhausted");
     const auto index = static_cast<std::uint32_t>(slots_.size());
-    slots_.emplace_back();
+    slots_.push_back(Slot{0, SlotState::Alive});
     return Entity(index, 0);
 }
 
 void EntityPool::release(std::uint32_t index) {
     Slot& s = slots_[index];
-    s.table = nullptr;
-    s.reserved = false;
     if (s.generation >= maxGeneration_) {
         // Reusing this slot would wrap the generation and revive old handles: retire it.
+        s.state = SlotState::Retired;
         ++retired_;
         return;
     }
     ++s.generation;
+    s.state = SlotState::Free;
     freeList_.push_back(index);
 }
 
@@ -40,7 +41,7 @@ void EntityPool::materialize() {
     if (pending == 0) return;
     CANDELA_ECS_CHECK(slots_.size() + pending < Entity::kNullIndex,
                       EcsErrorCode::EntityLimitReached, "entity index space exhausted");
-    slots_.resize(slots_.size() + pending, Slot{0, 0, nullptr, true});
+    slots_.resize(slots_.size() + pending, Slot{0, SlotState::Reserved});
 }
 
 bool EntityPool::isReserved(Entity e) const noexcept {
@@ -49,7 +50,7 @@ bool EntityPool::isReserved(Entity e) const noexcept {
         return i < slots_.size() + pendingReservations_.load(std::memory_order_relaxed) &&
                e.generation() == 0;
     }
-    return slots_[i].reserved && slots_[i].generation == e.generation();
+    return slots_[i].state == SlotState::Reserved && slots_[i].generation == e.generation();
 }
 
 }  // namespace candela::ecs

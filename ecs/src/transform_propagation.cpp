@@ -2,6 +2,10 @@
 
 #include <algorithm>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <candela/ecs/hierarchy.h>
 #include <candela/ecs/registry.h>
 #include <candela/ecs/transform.h>
@@ -9,93 +13,163 @@
 namespace candela::ecs {
 namespace {
 
-using TransformQuery = TypeList<LocalTransform, WorldTransform>;
-using NoExclusions = Exclude<>;
-
-const detail::QueryCache& transformTables(const Registry& registry) {
-    return registry.query<TransformQuery, NoExclusions>();
+// out = parent * local, where local is affine (last row 0 0 0 1). The hot step of
+// propagation: with SSE2 it is 12 broadcasts, 12 multiplies and 9 adds on whole columns.
+inline void multiplyByAffine(const Mat4& parent, const Mat4& local, Mat4& out) noexcept {
+#if defined(__SSE2__)
+    const __m128 p0 = _mm_loadu_ps(parent.m + 0);
+    const __m128 p1 = _mm_loadu_ps(parent.m + 4);
+    const __m128 p2 = _mm_loadu_ps(parent.m + 8);
+    const __m128 p3 = _mm_loadu_ps(parent.m + 12);
+    for (int c = 0; c < 4; ++c) {
+        const __m128 l = _mm_loadu_ps(local.m + 4 * c);
+        __m128 r =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(p0, _mm_shuffle_ps(l, l, _MM_SHUFFLE(0, 0, 0, 0))),
+                                  _mm_mul_ps(p1, _mm_shuffle_ps(l, l, _MM_SHUFFLE(1, 1, 1, 1)))),
+                       _mm_mul_ps(p2, _mm_shuffle_ps(l, l, _MM_SHUFFLE(2, 2, 2, 2))));
+        if (c == 3) r = _mm_add_ps(r, p3);
+        _mm_storeu_ps(out.m + 4 * c, r);
+    }
+#else
+    for (int c = 0; c < 4; ++c) {
+        const float l0 = local.m[4 * c], l1 = local.m[4 * c + 1], l2 = local.m[4 * c + 2];
+        for (int i = 0; i < 4; ++i) {
+            out.m[4 * c + i] = parent.m[i] * l0 + parent.m[4 + i] * l1 + parent.m[8 + i] * l2 +
+                               (c == 3 ? parent.m[12 + i] : 0.0f);
+        }
+    }
+#endif
 }
 
 }  // namespace
 
-bool TransformPropagation::orderIsCurrent(const Registry& registry) const {
-    if (!built_ || hierarchyVersion_ != hierarchyVersion(registry)) return false;
-    const detail::QueryCache& cache = transformTables(registry);
-    if (cache.tables.size() != tables_.size()) return false;
-    for (std::size_t i = 0; i < tables_.size(); ++i) {
-        if (cache.tables[i] != tables_[i].table ||
-            cache.tables[i]->structureVersion() != tables_[i].version) {
-            return false;
-        }
-    }
-    return true;
+bool TransformPropagation::orderIsCurrent(const Registry& registry, const ComponentPool& local,
+                                          const ComponentPool& world) const {
+    return built_ && local.structureVersion() == localVersion_ &&
+           world.structureVersion() == worldVersion_ &&
+           hierarchyVersion(registry) == hierarchyVersion_;
 }
 
-void TransformPropagation::rebuildOrder(Registry& registry) {
-    const detail::QueryCache& cache = transformTables(registry);
-    tables_.clear();
-    std::size_t count = 0;
-    for (const Archetype* table : cache.tables) {
-        tables_.push_back({table, table->structureVersion()});
-        count += table->size();
-    }
-
-    // Gather (entity, depth, parent) and counting-sort by depth: parents land before children.
+void TransformPropagation::rebuildOrder(Registry& registry, ComponentPool& local,
+                                        ComponentPool& world) {
+    // Gather the entities with both transforms, with their depth and parent.
     struct Entry {
         Entity entity;
         Entity parent;
         std::uint32_t depth;
-        std::uint32_t table;
-        std::uint32_t row;
+        std::uint32_t localIndex;
+        std::uint32_t worldIndex;
     };
     std::vector<Entry> entries;
-    entries.reserve(count);
+    entries.reserve(local.size());
+    const ComponentPool* nodes = registry.pool<HierarchyNode>();
     std::uint32_t maxDepth = 0;
-    for (std::size_t t = 0; t < cache.tables.size(); ++t) {
-        const Archetype& table = *cache.tables[t];
-        for (std::uint32_t row = 0; row < table.size(); ++row) {
-            const Entity e = table.entities()[row];
-            const HierarchyNode* node = registry.tryGet<HierarchyNode>(e);
-            const std::uint32_t depth = node ? node->depth : 0;
-            maxDepth = std::max(maxDepth, depth);
-            entries.push_back(
-                {e, node ? node->parent : kNullEntity, depth, static_cast<std::uint32_t>(t), row});
-        }
+    for (std::uint32_t i = 0; i < local.size(); ++i) {
+        const Entity e = local.entities()[i];
+        const std::uint32_t w = world.indexOf(e);
+        if (w == ComponentPool::kAbsent) continue;
+        const std::uint32_t n = nodes ? nodes->indexOf(e) : ComponentPool::kAbsent;
+        const HierarchyNode* node =
+            n == ComponentPool::kAbsent ? nullptr : nodes->typedData<HierarchyNode>() + n;
+        const std::uint32_t depth = node ? node->depth : 0;
+        maxDepth = std::max(maxDepth, depth);
+        entries.push_back({e, node ? node->parent : kNullEntity, depth, i, w});
     }
+
+    // Counting sort by depth: parents land before children.
     std::vector<std::uint32_t> depthStart(std::size_t{maxDepth} + 2, 0);
     for (const Entry& entry : entries)
         ++depthStart[entry.depth + 1];
     for (std::size_t d = 1; d < depthStart.size(); ++d)
         depthStart[d] += depthStart[d - 1];
-
+    const std::size_t count = entries.size();
+    std::vector<std::uint32_t> order(count);
     std::vector<std::uint32_t> slotOf(registry.entityPool().slotCount(), kNoParent);
-    std::vector<std::uint32_t> order(entries.size());
-    for (std::uint32_t i = 0; i < entries.size(); ++i) {
+    for (std::uint32_t i = 0; i < count; ++i) {
         const std::uint32_t slot = depthStart[entries[i].depth]++;
         order[slot] = i;
         slotOf[entries[i].entity.index()] = slot;
     }
-
-    local_.resize(count);
-    localTick_.resize(count);
-    world_.resize(count);
-    worldTick_.resize(count);
     parent_.resize(count);
-    dirty_.assign(count, 1);
-    for (std::uint32_t slot = 0; slot < count; ++slot) {
-        const Entry& entry = entries[order[slot]];
-        Archetype& table = *cache.tables[entry.table];
-        const std::uint32_t* columns = &cache.columns[entry.table * 2];
-        local_[slot] = table.typedColumn<LocalTransform>(columns[0]) + entry.row;
-        localTick_[slot] = table.column(columns[0]).changeTicks + entry.row;
-        world_[slot] = table.typedColumn<WorldTransform>(columns[1]) + entry.row;
-        worldTick_[slot] = table.column(columns[1]).changeTicks + entry.row;
-        parent_[slot] = entry.parent.isNull() || !registry.valid(entry.parent)
-                            ? kNoParent
-                            : slotOf[entry.parent.index()];
+    for (std::size_t slot = 0; slot < count; ++slot) {
+        const Entity parent = entries[order[slot]].parent;
+        parent_[slot] =
+            parent.isNull() || !registry.valid(parent) ? kNoParent : slotOf[parent.index()];
     }
+    dirty_.assign(count, 1);
+    localMatrix_.resize(count);
+
+    // Sorting the pools reorders their dense arrays, which is a structural change: only when
+    // nothing else is iterating, and not for pools a group keeps in its own order.
+    poolsSorted_ =
+        !registry.structureLocked() && local.group() == nullptr && world.group() == nullptr;
+    if (poolsSorted_) {
+        auto sortPool = [&](ComponentPool& pool, std::uint32_t Entry::*index) {
+            std::vector<std::uint32_t> permutation;
+            permutation.reserve(pool.size());
+            std::vector<std::uint8_t> placed(pool.size(), 0);
+            for (std::uint32_t entry : order) {
+                permutation.push_back(entries[entry].*index);
+                placed[entries[entry].*index] = 1;
+            }
+            // Elements without the other transform go after the ordered ones.
+            for (std::uint32_t i = 0; i < pool.size(); ++i) {
+                if (!placed[i]) permutation.push_back(i);
+            }
+            pool.permute(permutation);
+        };
+        sortPool(local, &Entry::localIndex);
+        sortPool(world, &Entry::worldIndex);
+        localIndex_.clear();
+        worldIndex_.clear();
+    } else {
+        localIndex_.resize(count);
+        worldIndex_.resize(count);
+        for (std::size_t slot = 0; slot < count; ++slot) {
+            localIndex_[slot] = entries[order[slot]].localIndex;
+            worldIndex_[slot] = entries[order[slot]].worldIndex;
+        }
+    }
+    localVersion_ = local.structureVersion();
+    worldVersion_ = world.structureVersion();
     hierarchyVersion_ = hierarchyVersion(registry);
     built_ = true;
+}
+
+template <class LocalIndex, class WorldIndex>
+std::uint32_t TransformPropagation::propagate(ComponentPool& local, ComponentPool& world,
+                                              Tick since, Tick now, bool all, LocalIndex localIndex,
+                                              WorldIndex worldIndex) {
+    const LocalTransform* locals = local.typedData<LocalTransform>();
+    const Tick* localTicks = local.changeTicks();
+    WorldTransform* worlds = world.typedData<WorldTransform>();
+    Tick* worldTicks = world.changeTicks();
+    const std::uint32_t* parents = parent_.data();
+    std::uint8_t* dirty = dirty_.data();
+    Mat4* localMatrix = localMatrix_.data();
+    const std::size_t count = parent_.size();
+    std::uint32_t recomputed = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::uint32_t l = localIndex(i);
+        const bool localChanged = all || localTicks[l] > since;
+        if (localChanged) {
+            const LocalTransform& t = locals[l];
+            localMatrix[i] = Mat4::fromTranslationRotationScale(t.position, t.rotation, t.scale);
+        }
+        const std::uint32_t parent = parents[i];
+        const bool isDirty = localChanged || (parent != kNoParent && dirty[parent] != 0);
+        dirty[i] = isDirty ? 1 : 0;
+        if (!isDirty) continue;
+        const std::uint32_t w = worldIndex(i);
+        if (parent == kNoParent) {
+            worlds[w].matrix = localMatrix[i];
+        } else {
+            multiplyByAffine(worlds[worldIndex(parent)].matrix, localMatrix[i], worlds[w].matrix);
+        }
+        worldTicks[w] = now;
+        ++recomputed;
+    }
+    return recomputed;
 }
 
 TransformPropagation::Stats TransformPropagation::update(Registry& registry) {
@@ -105,47 +179,31 @@ TransformPropagation::Stats TransformPropagation::update(Registry& registry) {
     const Tick since = lastSeen_;
     lastSeen_ = upTo;
 
-    const bool rebuild = !orderIsCurrent(registry);
-    if (rebuild) rebuildOrder(registry);
-    stats.rebuiltOrder = rebuild;
-    stats.entities = static_cast<std::uint32_t>(local_.size());
+    ComponentPool* local = registry.pool<LocalTransform>();
+    ComponentPool* world = registry.pool<WorldTransform>();
+    if (local == nullptr || world == nullptr) return stats;
 
-    const detail::QueryCache& cache = transformTables(registry);
-    if (!rebuild) {
-        bool anyChanged = false;
-        for (std::size_t t = 0; t < cache.tables.size(); ++t) {
-            const Archetype::Column& local = cache.tables[t]->column(cache.columns[t * 2]);
-            anyChanged |= local.latestChange.load(std::memory_order_relaxed) > since;
-        }
-        if (!anyChanged) {
-            stats.skipped = true;
-            return stats;
-        }
+    const bool rebuild = !orderIsCurrent(registry, *local, *world);
+    if (rebuild) rebuildOrder(registry, *local, *world);
+    stats.rebuiltOrder = rebuild;
+    stats.entities = static_cast<std::uint32_t>(parent_.size());
+    if (!rebuild && local->latestChange() <= since) {
+        stats.skipped = true;
+        return stats;
     }
 
     const Tick now = registry.currentTick();
-    const std::size_t count = local_.size();
-    std::uint32_t recomputed = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::uint32_t parent = parent_[i];
-        const bool dirty =
-            rebuild || *localTick_[i] > since || (parent != kNoParent && dirty_[parent]);
-        dirty_[i] = dirty;
-        if (!dirty) continue;
-        const LocalTransform& local = *local_[i];
-        world_[i]->matrix = parent == kNoParent
-                                ? local.matrix()
-                                : composeWithLocal(world_[parent]->matrix, local.position,
-                                                   local.rotation, local.scale);
-        *worldTick_[i] = now;
-        ++recomputed;
+    if (poolsSorted_) {
+        auto identity = [](std::size_t i) { return static_cast<std::uint32_t>(i); };
+        stats.recomputed = propagate(*local, *world, since, now, rebuild, identity, identity);
+    } else {
+        const std::uint32_t* l = localIndex_.data();
+        const std::uint32_t* w = worldIndex_.data();
+        stats.recomputed = propagate(
+            *local, *world, since, now, rebuild, [l](std::size_t i) { return l[i]; },
+            [w](std::size_t i) { return w[i]; });
     }
-    if (recomputed > 0) {
-        for (std::size_t t = 0; t < cache.tables.size(); ++t) {
-            cache.tables[t]->column(cache.columns[t * 2 + 1]).noteChange(now);
-        }
-    }
-    stats.recomputed = recomputed;
+    if (stats.recomputed > 0) world->noteChange(now);
     return stats;
 }
 

@@ -11,8 +11,8 @@ enum class EcsErrorCode {
     StaleEntity,                  // the handle's entity was destroyed (or never existed)
     MissingComponent,             // get<T>() on an entity without T
     StructuralChangeWhileLocked,  // create/destroy/emplace/remove during iteration or a hook
-    ReservedEntityNotCreated,     // a reserved handle used before its command buffer applied
     EntityLimitReached,           // all 2^32-1 slot indices are in use or retired
+    GroupConflict,                // a component pool already belongs to another group
 };
 
 class EcsError : public std::logic_error {

@@ -1,23 +1,21 @@
 #pragma once
-// The registry owns entities, their components (in archetype tables), component hooks,
-// change ticks and resources. It is the one object systems and tools talk to.
+// The registry owns entities, their components (one sparse-set pool per component type, see
+// component_pool.h), groups, component hooks, change ticks and resources. It is the one
+// object systems and tools talk to.
 //
 // Threading: reads and component writes may run in parallel (the scheduler keeps writers of
 // the same component apart). Structural changes (create, destroy, adding or removing
-// components) are single-threaded and are rejected while any iteration or hook is running;
-// record them in a CommandBuffer instead.
-#include <array>
+// components, declaring groups) are single-threaded and are rejected while any iteration or
+// hook is running; record them in a CommandBuffer instead.
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <type_traits>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
-#include <candela/ecs/archetype.h>
+#include <candela/ecs/component_pool.h>
 #include <candela/ecs/component_type.h>
 #include <candela/ecs/entity.h>
 #include <candela/ecs/entity_pool.h>
@@ -39,6 +37,15 @@ struct HookId {
     std::uint32_t serial = 0;  // 0 = no hook
 };
 
+namespace detail {
+// An owning group keeps its pools' first `size` elements equal to the entities that have all
+// of them, in the same order, so iterating the group is a walk over aligned plain arrays.
+struct Group {
+    std::vector<ComponentPool*> pools;
+    std::uint32_t size = 0;
+};
+}  // namespace detail
+
 class Registry {
 public:
     struct Config {
@@ -59,8 +66,10 @@ public:
     bool destroy(Entity e);
     bool valid(Entity e) const noexcept { return pool_.alive(e); }
     std::size_t aliveCount() const noexcept { return alive_; }
-    // Pre-sizes the entity table and the component-less table for `count` more entities.
-    void reserveEntities(std::size_t count);
+    void reserveEntities(std::size_t count) { pool_.reserveCapacity(pool_.slotCount() + count); }
+    // Calls fn(Entity) for every live entity (in slot order).
+    template <class F>
+    void forEachEntity(F&& fn) const;
 
     // Thread-safe: a handle that createReserved() will bring to life (command buffers use it).
     Entity reserve() noexcept { return pool_.reserve(); }
@@ -111,6 +120,13 @@ public:
     template <class... Ts, class... Excluded>
     View<TypeList<Ts...>, Exclude<Excluded...>> view(Exclude<Excluded...> = {});
 
+    // Declares an owning group over Ts (once; later calls just return the view). From then
+    // on the Ts pools keep the entities that have all of Ts packed at their front in the same
+    // order, and any view of exactly Ts iterates them as plain arrays. Costs a few swaps per
+    // add/remove of a Ts component. A pool can be owned by one group only (EcsError).
+    template <Component... Ts>
+    View<TypeList<Ts...>, Exclude<>> group();
+
     // ---- Hooks ---------------------------------------------------------------------------
     // Called once per add (after it) and once per removal (before it, so the value can still
     // be read), including removals by destroy(). Hooks may read and write components but not
@@ -158,33 +174,27 @@ public:
         return structureLocks_.load(std::memory_order_relaxed) != 0;
     }
 
-    // ---- Introspection -------------------------------------------------------------------
-    std::size_t archetypeCount() const noexcept {
-        return archetypeCount_.load(std::memory_order_acquire);
+    // ---- Storage access (views, propagation, tools) --------------------------------------
+    // The pool of T, or null if no T was ever added.
+    template <Component T>
+    ComponentPool* pool() const noexcept {
+        return findPool(componentId<T>());
     }
-    const Archetype& archetype(std::size_t i) const noexcept { return *archetypes_[i]; }
+    ComponentPool* findPool(ComponentId id) const noexcept {
+        return id < components_.size() ? components_[id].pool.get() : nullptr;
+    }
     const EntityPool& entityPool() const noexcept { return pool_; }
     EntityPool& entityPoolForTesting() noexcept { return pool_; }
 
-    // Internal, for View: the refreshed table list of a query.
-    template <class Include, class ExcludeList>
-    detail::QueryCache& query() const;
-
 private:
-    template <class Include, class ExcludeList>
-    friend class View;
-
     struct HookEntry {
         std::uint32_t serial;
         ComponentHook fn;
     };
     struct ComponentRecord {
-        const ComponentOps* ops = nullptr;
+        std::unique_ptr<ComponentPool> pool;
         std::vector<HookEntry> onAdd;
         std::vector<HookEntry> onRemove;
-    };
-    struct SignatureHash {
-        std::size_t operator()(const std::vector<ComponentId>& ids) const noexcept;
     };
 
     void checkStructureUnlocked() const {
@@ -192,58 +202,31 @@ private:
                           "structural change while iterating or inside a hook; use a "
                           "CommandBuffer");
     }
-    EntityPool::Slot& liveSlot(Entity e) {
+    void checkAlive(Entity e) const {
         CANDELA_ECS_CHECK(pool_.alive(e), EcsErrorCode::StaleEntity, "stale entity handle");
-        return pool_.slot(e.index());
     }
-    const EntityPool::Slot& liveSlot(Entity e) const {
-        CANDELA_ECS_CHECK(pool_.alive(e), EcsErrorCode::StaleEntity, "stale entity handle");
-        return pool_.slot(e.index());
-    }
-
     template <Component T>
-    void registerType() {
+    ComponentPool& poolOrCreate() {
         const ComponentId id = componentId<T>();
-        if (id >= components_.size() || components_[id].ops == nullptr) {
-            registerComponent(id, componentOps<T>());
-        }
+        if (ComponentPool* p = findPool(id)) return *p;
+        return createPool(id, componentOps<T>());
     }
-    void registerComponent(ComponentId id, const ComponentOps& ops);
-    Archetype& archetypeWith(Archetype& from, ComponentId added);
-    Archetype& archetypeWithout(Archetype& from, ComponentId removed);
-    Archetype& archetypeFor(std::vector<ComponentId> sortedIds);
-    // Moves e's row to `target`, relocating shared components and destroying the rest.
-    std::uint32_t moveEntity(EntityPool::Slot& slot, Archetype& target);
+    ComponentPool& createPool(ComponentId id, const ComponentOps& ops);
+    ComponentRecord& record(ComponentId id);
+    // Group bookkeeping after e gained / before e loses a component of a grouped pool.
+    void enterGroup(detail::Group& group, Entity e) noexcept;
+    void leaveGroup(detail::Group& group, Entity e) noexcept;
+    detail::Group& declareGroup(std::vector<ComponentPool*> pools);
     void fireHooks(const std::vector<HookEntry>& hooks, Entity e);
     HookId addHook(ComponentId id, bool onAdd, ComponentHook hook);
-    void refreshQuery(detail::QueryCache& cache) const;
-    detail::QueryCache* findQuery(std::uint32_t queryId) const noexcept {
-        const QueryChunk* chunk =
-            queryChunks_[queryId / kQueriesPerChunk].load(std::memory_order_acquire);
-        return chunk ? (*chunk)[queryId % kQueriesPerChunk].load(std::memory_order_acquire)
-                     : nullptr;
-    }
-    detail::QueryCache& createQuery(std::uint32_t queryId, std::vector<ComponentId> include,
-                                    std::vector<ComponentId> exclude) const;
 
     EntityPool pool_;
     std::size_t alive_ = 0;
-    std::vector<std::unique_ptr<Archetype>> archetypes_;
-    std::atomic<std::size_t> archetypeCount_{0};
-    std::unordered_map<std::vector<ComponentId>, Archetype*, SignatureHash> archetypeIndex_;
     std::vector<ComponentRecord> components_;  // by ComponentId
+    std::vector<std::unique_ptr<detail::Group>> groups_;
     std::uint32_t nextHookSerial_ = 1;
     std::atomic<Tick> tick_{1};
     mutable std::atomic<int> structureLocks_{0};
-    // Query caches by query id, in fixed chunks so lookups from parallel systems never see
-    // a container being resized; creation and refresh take queryMutex_.
-    static constexpr std::size_t kQueriesPerChunk = 256;
-    static constexpr std::size_t kQueryChunks = 256;
-    using QueryChunk = std::array<std::atomic<detail::QueryCache*>, kQueriesPerChunk>;
-    mutable std::mutex queryMutex_;
-    mutable std::array<std::atomic<QueryChunk*>, kQueryChunks> queryChunks_{};
-    mutable std::vector<std::unique_ptr<QueryChunk>> ownedQueryChunks_;
-    mutable std::vector<std::unique_ptr<detail::QueryCache>> ownedQueries_;
     Resources resources_;
 };
 
@@ -261,50 +244,66 @@ T makeComponent(Args&&... args) {
 }
 }  // namespace detail
 
+template <class F>
+void Registry::forEachEntity(F&& fn) const {
+    const StructureLock lock(*this);
+    for (std::size_t i = 0; i < pool_.slotCount(); ++i) {
+        const EntityPool::Slot& slot = pool_.slot(static_cast<std::uint32_t>(i));
+        if (slot.state == EntityPool::SlotState::Alive) {
+            fn(Entity(static_cast<std::uint32_t>(i), slot.generation));
+        }
+    }
+}
+
 template <Component T, class... Args>
 T& Registry::emplace(Entity e, Args&&... args) {
-    EntityPool::Slot& slot = liveSlot(e);
+    checkAlive(e);
     const ComponentId id = componentId<T>();
-    const int existing = slot.table->columnIndex(id);
-    if (existing >= 0) {
-        T& ref = slot.table->typedColumn<T>(static_cast<std::size_t>(existing))[slot.row];
-        T value = detail::makeComponent<T>(std::forward<Args>(args)...);
-        ref.~T();
-        ::new (static_cast<void*>(&ref)) T(std::move(value));
-        slot.table->column(static_cast<std::size_t>(existing)).stamp(slot.row, currentTick());
-        return ref;
+    ComponentPool* pool = findPool(id);
+    if (pool != nullptr) {
+        if (const std::uint32_t index = pool->indexOf(e); index != ComponentPool::kAbsent) {
+            T& ref = pool->typedData<T>()[index];
+            T value = detail::makeComponent<T>(std::forward<Args>(args)...);
+            ref.~T();
+            ::new (static_cast<void*>(&ref)) T(std::move(value));
+            pool->stamp(index, currentTick());
+            return ref;
+        }
     }
     checkStructureUnlocked();
     T value = detail::makeComponent<T>(std::forward<Args>(args)...);
-    registerType<T>();
-    Archetype& target = archetypeWith(*slot.table, id);
-    const std::uint32_t row = moveEntity(slot, target);
-    const auto column = static_cast<std::size_t>(target.columnIndex(id));
-    T* component = ::new (target.column(column).at(row)) T(std::move(value));
-    target.column(column).stamp(row, currentTick());
+    if (pool == nullptr) pool = &createPool(id, componentOps<T>());
+    std::uint32_t index = pool->pushBack(e);
+    ::new (static_cast<void*>(pool->at(index))) T(std::move(value));
+    pool->stamp(index, currentTick());
+    if (detail::Group* group = pool->group()) {
+        enterGroup(*group, e);
+        index = pool->indexOf(e);
+    }
     if (!components_[id].onAdd.empty()) fireHooks(components_[id].onAdd, e);
-    return *component;
+    return pool->typedData<T>()[index];
 }
 
 template <Component T>
 bool Registry::remove(Entity e) {
     if (!pool_.alive(e)) return false;
-    EntityPool::Slot& slot = pool_.slot(e.index());
     const ComponentId id = componentId<T>();
-    if (!slot.table->has(id)) return false;
+    ComponentPool* pool = findPool(id);
+    if (pool == nullptr || !pool->contains(e)) return false;
     checkStructureUnlocked();
     if (!components_[id].onRemove.empty()) fireHooks(components_[id].onRemove, e);
-    moveEntity(slot, archetypeWithout(*slot.table, id));
+    if (detail::Group* group = pool->group()) leaveGroup(*group, e);
+    pool->erase(e);
     return true;
 }
 
 template <Component T>
 T* Registry::tryGet(Entity e) noexcept {
     if (!pool_.alive(e)) return nullptr;
-    const EntityPool::Slot& slot = pool_.slot(e.index());
-    const int column = slot.table->columnIndex(componentId<T>());
-    if (column < 0) return nullptr;
-    return slot.table->typedColumn<T>(static_cast<std::size_t>(column)) + slot.row;
+    const ComponentPool* pool = findPool(componentId<T>());
+    if (pool == nullptr) return nullptr;
+    const std::uint32_t index = pool->indexOf(e);
+    return index == ComponentPool::kAbsent ? nullptr : pool->typedData<T>() + index;
 }
 
 template <Component T>
@@ -314,11 +313,12 @@ const T* Registry::tryGet(Entity e) const noexcept {
 
 template <Component T>
 T& Registry::get(Entity e) {
-    const EntityPool::Slot& slot = liveSlot(e);
-    const int column = slot.table->columnIndex(componentId<T>());
-    CANDELA_ECS_CHECK(column >= 0, EcsErrorCode::MissingComponent,
-                      "get<T>() on an entity without T");
-    return slot.table->typedColumn<T>(static_cast<std::size_t>(column))[slot.row];
+    T* component = tryGet<T>(e);
+    if (component == nullptr) [[unlikely]] {
+        checkAlive(e);
+        CANDELA_ECS_CHECK(false, EcsErrorCode::MissingComponent, "get<T>() on an entity without T");
+    }
+    return *component;
 }
 
 template <Component T>
@@ -329,8 +329,8 @@ const T& Registry::get(Entity e) const {
 template <Component... Ts>
 bool Registry::has(Entity e) const noexcept {
     if (!pool_.alive(e)) return false;
-    const Archetype& table = *pool_.slot(e.index()).table;
-    return (table.has(componentId<Ts>()) && ...);
+    auto contains = [&](const ComponentPool* pool) { return pool != nullptr && pool->contains(e); };
+    return (contains(findPool(componentId<Ts>())) && ...);
 }
 
 template <Component T>
@@ -351,53 +351,45 @@ T& Registry::patch(Entity e, F&& edit) {
 
 template <Component T>
 void Registry::markChanged(Entity e) {
-    const EntityPool::Slot& slot = liveSlot(e);
-    const int column = slot.table->columnIndex(componentId<T>());
-    CANDELA_ECS_CHECK(column >= 0, EcsErrorCode::MissingComponent,
+    checkAlive(e);
+    ComponentPool* pool = findPool(componentId<T>());
+    const std::uint32_t index = pool ? pool->indexOf(e) : ComponentPool::kAbsent;
+    CANDELA_ECS_CHECK(index != ComponentPool::kAbsent, EcsErrorCode::MissingComponent,
                       "markChanged<T>() on an entity without T");
-    slot.table->column(static_cast<std::size_t>(column)).stamp(slot.row, currentTick());
+    pool->stamp(index, currentTick());
 }
 
 template <Component T>
 Tick Registry::changeTick(Entity e) const noexcept {
     if (!pool_.alive(e)) return kNeverTick;
-    const EntityPool::Slot& slot = pool_.slot(e.index());
-    const int column = slot.table->columnIndex(componentId<T>());
-    if (column < 0) return kNeverTick;
-    return slot.table->column(static_cast<std::size_t>(column)).changeTicks[slot.row];
+    const ComponentPool* pool = findPool(componentId<T>());
+    const std::uint32_t index = pool ? pool->indexOf(e) : ComponentPool::kAbsent;
+    return index == ComponentPool::kAbsent ? kNeverTick : pool->changeTicks()[index];
 }
 
 template <Component T>
 HookId Registry::onAdd(ComponentHook hook) {
-    registerType<T>();
+    poolOrCreate<T>();
     return addHook(componentId<T>(), true, std::move(hook));
 }
 
 template <Component T>
 HookId Registry::onRemove(ComponentHook hook) {
-    registerType<T>();
+    poolOrCreate<T>();
     return addHook(componentId<T>(), false, std::move(hook));
-}
-
-template <class Include, class ExcludeList>
-detail::QueryCache& Registry::query() const {
-    const std::uint32_t id = detail::queryId<Include, ExcludeList>();
-    detail::QueryCache* cache = findQuery(id);
-    if (cache == nullptr) {
-        auto ids = []<class... Ts>(TypeList<Ts...>) {
-            return std::vector<ComponentId>{componentId<Ts>()...};
-        };
-        cache = &createQuery(id, ids(Include{}), ids(typename ExcludeList::AsTypeList{}));
-    }
-    if (cache->tablesSeen.load(std::memory_order_acquire) != archetypeCount()) {
-        refreshQuery(*cache);
-    }
-    return *cache;
 }
 
 template <class... Ts, class... Excluded>
 View<TypeList<Ts...>, Exclude<Excluded...>> Registry::view(Exclude<Excluded...>) {
     return View<TypeList<Ts...>, Exclude<Excluded...>>(*this);
+}
+
+template <Component... Ts>
+View<TypeList<Ts...>, Exclude<>> Registry::group() {
+    static_assert(sizeof...(Ts) >= 2, "a group packs two or more component types");
+    std::vector<ComponentPool*> pools{&poolOrCreate<Ts>()...};
+    declareGroup(std::move(pools));
+    return View<TypeList<Ts...>, Exclude<>>(*this);
 }
 
 }  // namespace candela::ecs

@@ -4,24 +4,25 @@
 //
 // How it stays cheap:
 //  - The propagation order (entities sorted by hierarchy depth, each with its parent's slot)
-//    and pointers to their components are cached, and rebuilt only when the hierarchy or a
-//    table holding transforms changed structure.
-//  - If no LocalTransform changed since the last run (checked per table, not per entity),
-//    the run returns at once.
-//  - Otherwise one pass over the order recomputes only dirty entities: those whose
-//    LocalTransform changed, and everything below them.
+//    is cached, and rebuilt only when the hierarchy or the transform pools changed structure.
+//    When it may (not inside a parallel stage, pools not owned by a group), the rebuild also
+//    sorts the LocalTransform and WorldTransform pools into that order, so a run is one
+//    sequential pass over both arrays.
+//  - If no LocalTransform changed since the last run (one tick compare for the whole pool),
+//    the run returns at once without visiting the tree.
+//  - Otherwise one pass recomputes only dirty entities: those whose LocalTransform changed,
+//    and everything below them.
 // Entities whose parent has no transforms are treated as roots.
 #include <cstdint>
 #include <vector>
 
 #include <candela/ecs/tick.h>
+#include <candela/ecs/transform_math.h>
 
 namespace candela::ecs {
 
 class Registry;
-class Archetype;
-struct LocalTransform;
-struct WorldTransform;
+class ComponentPool;
 
 class TransformPropagation {
 public:
@@ -37,26 +38,32 @@ public:
     Stats update(Registry& registry);
 
 private:
-    bool orderIsCurrent(const Registry& registry) const;
-    void rebuildOrder(Registry& registry);
+    bool orderIsCurrent(const Registry& registry, const ComponentPool& local,
+                        const ComponentPool& world) const;
+    void rebuildOrder(Registry& registry, ComponentPool& local, ComponentPool& world);
+    template <class LocalIndex, class WorldIndex>
+    std::uint32_t propagate(ComponentPool& local, ComponentPool& world, Tick since, Tick now,
+                            bool all, LocalIndex localIndex, WorldIndex worldIndex);
 
-    struct TableVersion {
-        const Archetype* table;
-        std::uint32_t version;
-    };
-    std::vector<TableVersion> tables_;
-    std::uint64_t hierarchyVersion_ = 0;
+    static constexpr std::uint32_t kNoParent = 0xFFFFFFFFu;
+
     bool built_ = false;
+    std::uint32_t localVersion_ = 0;
+    std::uint32_t worldVersion_ = 0;
+    std::uint64_t hierarchyVersion_ = 0;
     Tick lastSeen_ = kNeverTick;
 
-    // The propagation order, as parallel arrays (parents always at lower slots).
-    static constexpr std::uint32_t kNoParent = 0xFFFFFFFFu;
-    std::vector<const LocalTransform*> local_;
-    std::vector<const Tick*> localTick_;
-    std::vector<WorldTransform*> world_;
-    std::vector<Tick*> worldTick_;
+    // The propagation order: slot i's parent is at a lower slot (or kNoParent). When the pools
+    // were sorted into this order, slot i is dense position i in both and the index arrays
+    // stay empty.
+    bool poolsSorted_ = false;
     std::vector<std::uint32_t> parent_;
+    std::vector<std::uint32_t> localIndex_;
+    std::vector<std::uint32_t> worldIndex_;
     std::vector<std::uint8_t> dirty_;
+    // Each slot's LocalTransform as a matrix, refreshed only when it changes: a child under
+    // a moving parent then costs one matrix product.
+    std::vector<Mat4> localMatrix_;
 };
 
 // Runs the registry's TransformPropagation (kept as a resource, created on first use).

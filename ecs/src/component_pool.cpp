@@ -1,0 +1,121 @@
+#include <candela/ecs/component_pool.h>
+
+#include <algorithm>
+#include <new>
+
+namespace candela::ecs {
+namespace {
+
+constexpr std::size_t kMinAlignment = 64;  // cache line: array starts never share a line
+
+void* allocateArray(std::size_t bytes, std::size_t alignment) {
+    return ::operator new(bytes, std::align_val_t(std::max(alignment, kMinAlignment)));
+}
+
+void freeArray(void* p, std::size_t alignment) noexcept {
+    ::operator delete(p, std::align_val_t(std::max(alignment, kMinAlignment)));
+}
+
+}  // namespace
+
+ComponentPool::ComponentPool(ComponentId id, const ComponentOps& ops)
+    : id_(id), ops_(&ops), elementSize_(ops.size), trivial_(ops.trivial) {}
+
+ComponentPool::~ComponentPool() {
+    if (!trivial_) {
+        for (std::uint32_t i = 0; i < size_; ++i)
+            ops_->destroy(at(i));
+    }
+    freeArray(data_, ops_->alignment);
+    freeArray(ticks_, alignof(Tick));
+    freeArray(entities_, alignof(Entity));
+}
+
+void ComponentPool::addPage(std::uint32_t page) {
+    if (page >= pages_.size()) pages_.resize(page + 1, nullptr);
+    auto entries = std::make_unique<std::uint32_t[]>(kPageSize);
+    std::fill_n(entries.get(), kPageSize, kAbsent);
+    pages_[page] = entries.get();
+    ownedPages_.push_back(std::move(entries));
+}
+
+void ComponentPool::reserve(std::uint32_t capacity) {
+    if (capacity <= capacity_) return;
+    auto* data = static_cast<std::byte*>(allocateArray(elementSize_ * capacity, ops_->alignment));
+    auto* ticks = static_cast<Tick*>(allocateArray(sizeof(Tick) * capacity, alignof(Tick)));
+    auto* entities =
+        static_cast<Entity*>(allocateArray(sizeof(Entity) * capacity, alignof(Entity)));
+    if (size_ > 0) {
+        if (trivial_) {
+            std::memcpy(data, data_, elementSize_ * size_);
+        } else {
+            for (std::uint32_t i = 0; i < size_; ++i)
+                ops_->relocate(data + i * elementSize_, at(i));
+        }
+        std::memcpy(ticks, ticks_, sizeof(Tick) * size_);
+        std::memcpy(static_cast<void*>(entities), entities_, sizeof(Entity) * size_);
+    }
+    freeArray(data_, ops_->alignment);
+    freeArray(ticks_, alignof(Tick));
+    freeArray(entities_, alignof(Entity));
+    data_ = data;
+    ticks_ = ticks;
+    entities_ = entities;
+    capacity_ = capacity;
+    ++structureVersion_;
+}
+
+void ComponentPool::grow() {
+    reserve(capacity_ < 64 ? 64 : capacity_ * 2);
+}
+
+void ComponentPool::swapPositions(std::uint32_t a, std::uint32_t b) noexcept {
+    if (a == b) return;
+    // Swap through a temporary: on the stack for small trivial types, else on the heap.
+    alignas(std::max_align_t) std::byte small[64];
+    std::byte* spare = elementSize_ <= sizeof(small) && trivial_ ? small : nullptr;
+    if (spare != nullptr) {
+        detail::copyComponent(spare, at(a), elementSize_);
+        detail::copyComponent(at(a), at(b), elementSize_);
+        detail::copyComponent(at(b), spare, elementSize_);
+    } else {
+        void* temp = allocateArray(elementSize_, ops_->alignment);
+        ops_->relocate(temp, at(a));
+        ops_->relocate(at(a), at(b));
+        ops_->relocate(at(b), temp);
+        freeArray(temp, ops_->alignment);
+    }
+    std::swap(ticks_[a], ticks_[b]);
+    std::swap(entities_[a], entities_[b]);
+    const Entity ea = entities_[a], eb = entities_[b];
+    pages_[ea.index() >> kPageBits][ea.index() & kPageMask] = a;
+    pages_[eb.index() >> kPageBits][eb.index() & kPageMask] = b;
+    ++structureVersion_;
+}
+
+void ComponentPool::permute(const std::vector<std::uint32_t>& order) {
+    auto* data = static_cast<std::byte*>(allocateArray(elementSize_ * capacity_, ops_->alignment));
+    auto* ticks = static_cast<Tick*>(allocateArray(sizeof(Tick) * capacity_, alignof(Tick)));
+    auto* entities =
+        static_cast<Entity*>(allocateArray(sizeof(Entity) * capacity_, alignof(Entity)));
+    for (std::uint32_t i = 0; i < size_; ++i) {
+        const std::uint32_t from = order[i];
+        if (trivial_) {
+            detail::copyComponent(data + i * elementSize_, at(from), elementSize_);
+        } else {
+            ops_->relocate(data + i * elementSize_, at(from));
+        }
+        ticks[i] = ticks_[from];
+        entities[i] = entities_[from];
+        pages_[entities[i].index() >> kPageBits][entities[i].index() & kPageMask] = i;
+    }
+    freeArray(data_, ops_->alignment);
+    freeArray(ticks_, alignof(Tick));
+    freeArray(entities_, alignof(Entity));
+    data_ = data;
+    ticks_ = ticks;
+    entities_ = entities;
+    ++structureVersion_;
+}
+
+}  // namespace candela::ecs
