@@ -10,13 +10,13 @@ enum class LightType : std::uint8_t { Point, Spot, Directional };
 struct Light {
     LightType type = LightType::Point;
     std::array<float, 3> color{1.0f, 1.0f, 1.0f};  // linear RGB, multiplies the photometric value
-    float lumens = 800.0f;             // point/spot luminous power; intensity = lumens / (4 pi) cd
-    float lux = 10.0f;                 // directional illuminance
-    float attenuationRadius = 10.0f;   // metres; eq. 9 window reaches zero here
-    float sourceRadius = 0.0f;         // metres; > 0 makes a sphere light (eq. 10-14)
-    float sourceLength = 0.0f;         // metres; > 0 makes a tube along local +X (eq. 16-20)
-    float innerConeAngle = 0.0f;       // radians, spot only
-    float outerConeAngle = 0.7853982f; // radians, spot only
+    float lumens = 800.0f;              // point/spot luminous power; intensity = lumens / (4 pi) cd
+    float lux = 10.0f;                  // directional illuminance
+    float attenuationRadius = 10.0f;    // metres; eq. 9 window reaches zero here
+    float sourceRadius = 0.0f;          // metres; > 0 makes a sphere light (eq. 10-14)
+    float sourceLength = 0.0f;          // metres; > 0 makes a tube along local +X (eq. 16-20)
+    float innerConeAngle = 0.0f;        // radians, spot only
+    float outerConeAngle = 0.7853982f;  // radians, spot only
 };
 
 }  // namespace candela::content

@@ -1,0 +1,80 @@
+#pragma once
+// The engine scene file: versioned JSON (nlohmann-json) listing entities and their components.
+// Assets are referenced by paths relative to the scene file. Saving then loading gives back
+// identical data, floats bit for bit. Saving is atomic: a temporary file in the same
+// directory is written, flushed to disk and renamed over the old file, so a crash leaves
+// either the old or the new scene, never a mix.
+//
+//   SceneDocument scene;
+//   SceneEntity& helmet = scene.entities.emplace_back();
+//   helmet.name = "helmet";
+//   helmet.mesh = MeshReference{"models/DamagedHelmet.glb", 0};
+//   if (std::string error = saveSceneFile("level.scene.json", scene); !error.empty()) ...
+//   Diagnostics diagnostics;
+//   std::optional<SceneDocument> loaded = loadSceneFile("level.scene.json", diagnostics);
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "candela/content/components/camera.h"
+#include "candela/content/components/light.h"
+#include "candela/content/components/sky.h"
+#include "candela/content/diagnostics.h"
+#include "candela/content/material.h"
+#include "candela/content/model.h"
+
+namespace candela::content {
+
+inline constexpr int kSceneFileVersion = 1;
+
+struct MeshReference {
+    std::string gltfPath;        // relative to the scene file
+    std::int32_t meshIndex = 0;  // into the glTF's meshes
+
+    bool operator==(const MeshReference&) const = default;
+};
+
+// Replaces the material of one primitive of the referenced mesh. Texture indices inside
+// `material` refer to the textures of the same glTF.
+struct MaterialOverride {
+    std::uint32_t primitive = 0;
+    Material material;
+};
+
+struct SceneEntity {
+    std::string name;
+    Transform transform;             // local, relative to the parent
+    std::int32_t parent = kNoIndex;  // index into SceneDocument::entities
+    std::optional<MeshReference> mesh;
+    std::vector<MaterialOverride> materialOverrides;
+    std::optional<Light> light;
+    std::optional<Camera> camera;
+    std::optional<Sky> sky;
+    // Free-form game data as JSON text; empty when none. Loading gives the canonical form
+    // (compact, object keys sorted), which saving and loading again preserves exactly.
+    std::string gameDataJson;
+};
+
+struct SceneDocument {
+    std::vector<SceneEntity> entities;
+};
+
+// Returns nullopt when the file cannot be read or is not a scene file of a supported
+// version. Otherwise returns the scene; components that were malformed are left out with an
+// error naming the file and the JSON pointer (e.g. "/entities/3/light/lumens").
+std::optional<SceneDocument> loadSceneFile(const std::filesystem::path& path,
+                                           Diagnostics& diagnostics);
+std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
+                                            const std::string& name, Diagnostics& diagnostics);
+
+// Serialises to JSON text (what saveSceneFile writes). Empty string and `error` set when the
+// scene holds values JSON cannot represent (NaN/Inf) or malformed game data.
+std::string sceneToJson(const SceneDocument& scene, std::string& error);
+
+// Returns an empty string on success, else what went wrong (the old file is then untouched).
+std::string saveSceneFile(const std::filesystem::path& path, const SceneDocument& scene);
+
+}  // namespace candela::content

@@ -1,0 +1,44 @@
+#pragma once
+// The spelling of every enum in scene files, shared by the reader and the writer so the two
+// cannot drift apart.
+#include <array>
+#include <string_view>
+#include <utility>
+
+#include "candela/content/components/camera.h"
+#include "candela/content/components/light.h"
+#include "candela/content/material.h"
+
+namespace candela::content::scene {
+
+inline constexpr std::string_view kFormatName = "candela.scene";
+
+template <typename E, std::size_t N>
+using EnumNames = std::array<std::pair<E, std::string_view>, N>;
+
+inline constexpr EnumNames<LightType, 3> kLightTypes{{{LightType::Point, "point"},
+                                                      {LightType::Spot, "spot"},
+                                                      {LightType::Directional, "directional"}}};
+inline constexpr EnumNames<Projection, 2> kProjections{
+    {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}}};
+inline constexpr EnumNames<ExposureMode, 2> kExposureModes{
+    {{ExposureMode::Physical, "physical"}, {ExposureMode::Manual, "manual"}}};
+inline constexpr EnumNames<ShadingModel, 4> kShadingModels{
+    {{ShadingModel::DefaultLit, "defaultLit"},
+     {ShadingModel::Subsurface, "subsurface"},
+     {ShadingModel::Legacy, "legacy"},
+     {ShadingModel::Unlit, "unlit"}}};
+inline constexpr EnumNames<AlphaMode, 3> kAlphaModes{
+    {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}}};
+inline constexpr EnumNames<ColorSpace, 2> kColorSpaces{
+    {{ColorSpace::Srgb, "srgb"}, {ColorSpace::Linear, "linear"}}};
+
+template <typename E, std::size_t N>
+std::string_view nameOf(const EnumNames<E, N>& names, E value) {
+    for (const auto& [v, name] : names) {
+        if (v == value) return name;
+    }
+    return names[0].second;
+}
+
+}  // namespace candela::content::scene

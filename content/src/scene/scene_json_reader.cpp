@@ -1,0 +1,391 @@
+// JSON text -> SceneDocument. Structure errors name the file and the JSON pointer; a
+// malformed component is dropped (the entity stays), a malformed file yields nullopt.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "candela/content/scene_file.h"
+#include "scene_json_names.h"
+
+namespace candela::content {
+namespace {
+
+using nlohmann::json;
+using namespace scene;
+
+// Nesting depth, measured without recursion (game data is free-form and could be deep
+// enough to overflow the stack of a recursive walk, including json::dump()).
+std::size_t nestingDepth(const json& root) {
+    std::size_t deepest = 0;
+    std::vector<std::pair<const json*, std::size_t>> stack{{&root, 1}};
+    while (!stack.empty()) {
+        auto [node, depth] = stack.back();
+        stack.pop_back();
+        deepest = std::max(deepest, depth);
+        if (node->is_structured()) {
+            for (const json& child : *node)
+                stack.push_back({&child, depth + 1});
+        }
+    }
+    return deepest;
+}
+
+class Reader {
+public:
+    Reader(const std::string& file, Diagnostics& diagnostics)
+        : file_(file), diagnostics_(diagnostics) {}
+
+    void error(const std::string& pointer, const std::string& message) {
+        diagnostics_.error(file_, pointer, message);
+        failed_ = true;
+    }
+    void warning(const std::string& pointer, const std::string& message) {
+        diagnostics_.warning(file_, pointer, message);
+    }
+
+    // Each read leaves `out` unchanged when the key is absent and records an error (setting
+    // failed_) when it is present but wrong.
+    void number(const json& object, const std::string& p, const char* key, float& out) {
+        auto it = object.find(key);
+        if (it == object.end()) return;
+        if (!it->is_number()) return error(p + "/" + key, "expected a number");
+        const double v = it->get<double>();
+        if (!std::isfinite(v) || std::fabs(v) > std::numeric_limits<float>::max()) {
+            return error(p + "/" + key, "number out of float range");
+        }
+        out = static_cast<float>(v);
+    }
+    template <std::size_t N>
+    void numbers(const json& object, const std::string& p, const char* key,
+                 std::array<float, N>& out) {
+        auto it = object.find(key);
+        if (it == object.end()) return;
+        if (!it->is_array() || it->size() != N) {
+            return error(p + "/" + key, "expected an array of " + std::to_string(N) + " numbers");
+        }
+        std::array<float, N> values{};
+        for (std::size_t i = 0; i < N; ++i) {
+            const json& e = (*it)[i];
+            if (!e.is_number() || !std::isfinite(e.get<double>()) ||
+                std::fabs(e.get<double>()) > std::numeric_limits<float>::max()) {
+                return error(p + "/" + key + "/" + std::to_string(i), "expected a finite number");
+            }
+            values[i] = static_cast<float>(e.get<double>());
+        }
+        out = values;
+    }
+    template <typename Int>
+    void integer(const json& object, const std::string& p, const char* key, Int& out,
+                 std::int64_t lo, std::int64_t hi) {
+        auto it = object.find(key);
+        if (it == object.end()) return;
+        if (!it->is_number_integer()) return error(p + "/" + key, "expected an integer");
+        const auto v = it->get<std::int64_t>();
+        if (v < lo || v > hi ||
+            (it->is_number_unsigned() && it->get<std::uint64_t>() > std::uint64_t(hi))) {
+            return error(p + "/" + key, "integer out of range [" + std::to_string(lo) + ", " +
+                                            std::to_string(hi) + "]");
+        }
+        out = static_cast<Int>(v);
+    }
+    void string(const json& object, const std::string& p, const char* key, std::string& out) {
+        auto it = object.find(key);
+        if (it == object.end()) return;
+        if (!it->is_string()) return error(p + "/" + key, "expected a string");
+        out = it->get<std::string>();
+    }
+    void boolean(const json& object, const std::string& p, const char* key, bool& out) {
+        auto it = object.find(key);
+        if (it == object.end()) return;
+        if (!it->is_boolean()) return error(p + "/" + key, "expected true or false");
+        out = it->get<bool>();
+    }
+    template <typename E, std::size_t N>
+    void enumeration(const json& object, const std::string& p, const char* key,
+                     const EnumNames<E, N>& names, E& out) {
+        std::string text;
+        auto it = object.find(key);
+        if (it == object.end()) return;
+        string(object, p, key, text);
+        for (const auto& [value, name] : names) {
+            if (name == text) {
+                out = value;
+                return;
+            }
+        }
+        std::string allowed;
+        for (const auto& entry : names)
+            allowed += (allowed.empty() ? "" : ", ") + std::string(entry.second);
+        error(p + "/" + key, "'" + text + "' is not one of: " + allowed);
+    }
+    bool object(const json& parent, const std::string& p, const char* key, const json*& out) {
+        auto it = parent.find(key);
+        if (it == parent.end()) return false;
+        if (!it->is_object()) {
+            error(p + "/" + key, "expected an object");
+            return false;
+        }
+        out = &*it;
+        return true;
+    }
+
+    // Runs `read` and reports whether it recorded no error, restoring the failure flag so
+    // one bad component does not mark the next one bad.
+    template <typename F>
+    bool clean(F&& read) {
+        const bool before = failed_;
+        failed_ = false;
+        read();
+        const bool ok = !failed_;
+        failed_ = before || failed_;
+        return ok;
+    }
+
+    void transform(const json& j, const std::string& p, Transform& t) {
+        numbers(j, p, "translation", t.translation);
+        numbers(j, p, "rotation", t.rotation);
+        numbers(j, p, "scale", t.scale);
+    }
+
+    void textureRef(const json& parent, const std::string& p, const char* key, TextureRef& t) {
+        const json* j = nullptr;
+        if (!object(parent, p, key, j)) return;
+        const std::string q = p + "/" + key;
+        integer(*j, q, "texture", t.texture, -1, std::numeric_limits<std::int32_t>::max());
+        integer(*j, q, "texCoord", t.texCoord, 0, 1);
+        enumeration(*j, q, "colorSpace", kColorSpaces, t.colorSpace);
+        numbers(*j, q, "offset", t.transform.offset);
+        number(*j, q, "rotation", t.transform.rotation);
+        numbers(*j, q, "scale", t.transform.scale);
+    }
+
+    void material(const json& j, const std::string& p, Material& m) {
+        string(j, p, "name", m.name);
+        enumeration(j, p, "shadingModel", kShadingModels, m.shadingModel);
+        numbers(j, p, "baseColorFactor", m.baseColorFactor);
+        textureRef(j, p, "baseColorTexture", m.baseColorTexture);
+        number(j, p, "metallicFactor", m.metallicFactor);
+        number(j, p, "roughnessFactor", m.roughnessFactor);
+        textureRef(j, p, "metallicRoughnessTexture", m.metallicRoughnessTexture);
+        textureRef(j, p, "normalTexture", m.normalTexture);
+        number(j, p, "normalScale", m.normalScale);
+        textureRef(j, p, "occlusionTexture", m.occlusionTexture);
+        number(j, p, "occlusionStrength", m.occlusionStrength);
+        textureRef(j, p, "emissiveTexture", m.emissiveTexture);
+        numbers(j, p, "emissiveFactor", m.emissiveFactor);
+        number(j, p, "emissiveStrength", m.emissiveStrength);
+        enumeration(j, p, "alphaMode", kAlphaModes, m.alphaMode);
+        number(j, p, "alphaCutoff", m.alphaCutoff);
+        boolean(j, p, "doubleSided", m.doubleSided);
+        number(j, p, "specular", m.specular);
+        textureRef(j, p, "specularTexture", m.specularTexture);
+        textureRef(j, p, "specularColorTexture", m.specularColorTexture);
+        numbers(j, p, "specularColorFactor", m.specularColorFactor);
+        numbers(j, p, "subsurfaceColor", m.subsurfaceColor);
+        number(j, p, "subsurfaceOpacity", m.subsurfaceOpacity);
+        numbers(j, p, "diffuseColor", m.diffuseColor);
+        numbers(j, p, "specularColor", m.specularColor);
+    }
+
+    void light(const json& j, const std::string& p, Light& l) {
+        enumeration(j, p, "type", kLightTypes, l.type);
+        numbers(j, p, "color", l.color);
+        number(j, p, "lumens", l.lumens);
+        number(j, p, "lux", l.lux);
+        number(j, p, "attenuationRadius", l.attenuationRadius);
+        number(j, p, "sourceRadius", l.sourceRadius);
+        number(j, p, "sourceLength", l.sourceLength);
+        number(j, p, "innerConeAngle", l.innerConeAngle);
+        number(j, p, "outerConeAngle", l.outerConeAngle);
+        if (l.attenuationRadius <= 0 || l.sourceRadius < 0 || l.sourceLength < 0 || l.lumens < 0 ||
+            l.lux < 0) {
+            error(p, "radii and intensities must not be negative (attenuationRadius > 0)");
+        }
+    }
+
+    void camera(const json& j, const std::string& p, Camera& c) {
+        enumeration(j, p, "projection", kProjections, c.projection);
+        number(j, p, "verticalFov", c.verticalFov);
+        number(j, p, "nearPlane", c.nearPlane);
+        number(j, p, "farPlane", c.farPlane);
+        number(j, p, "orthographicHalfHeight", c.orthographicHalfHeight);
+        enumeration(j, p, "exposureMode", kExposureModes, c.exposureMode);
+        number(j, p, "aperture", c.aperture);
+        number(j, p, "shutterSeconds", c.shutterSeconds);
+        number(j, p, "iso", c.iso);
+        number(j, p, "manualEv100", c.manualEv100);
+        number(j, p, "exposureCompensation", c.exposureCompensation);
+    }
+
+    SceneEntity entity(const json& j, const std::string& p, std::size_t entityCount) {
+        SceneEntity e;
+        if (!j.is_object()) {
+            error(p, "expected an object");
+            return e;
+        }
+        string(j, p, "name", e.name);
+        if (const json* t = nullptr; object(j, p, "transform", t)) {
+            Transform transform;
+            if (clean([&] { this->transform(*t, p + "/transform", transform); })) {
+                e.transform = transform;
+            }
+        }
+        integer(j, p, "parent", e.parent, -1, static_cast<std::int64_t>(entityCount) - 1);
+        if (const json* m = nullptr; object(j, p, "mesh", m)) {
+            MeshReference mesh;
+            if (clean([&] {
+                    string(*m, p + "/mesh", "gltf", mesh.gltfPath);
+                    integer(*m, p + "/mesh", "mesh", mesh.meshIndex, 0,
+                            std::numeric_limits<std::int32_t>::max());
+                    if (mesh.gltfPath.empty()) error(p + "/mesh/gltf", "missing glTF path");
+                })) {
+                e.mesh = mesh;
+            }
+        }
+        if (auto it = j.find("materialOverrides"); it != j.end()) {
+            if (!it->is_array()) error(p + "/materialOverrides", "expected an array");
+            for (std::size_t i = 0; it->is_array() && i < it->size(); ++i) {
+                const std::string q = p + "/materialOverrides/" + std::to_string(i);
+                const json& o = (*it)[i];
+                MaterialOverride entry;
+                const json* m = nullptr;
+                if (clean([&] {
+                        if (!o.is_object()) return error(q, "expected an object");
+                        integer(o, q, "primitive", entry.primitive, 0,
+                                std::numeric_limits<std::int32_t>::max());
+                        if (object(o, q, "material", m))
+                            material(*m, q + "/material", entry.material);
+                    })) {
+                    e.materialOverrides.push_back(std::move(entry));
+                }
+            }
+        }
+        if (const json* l = nullptr; object(j, p, "light", l)) {
+            Light value;
+            if (clean([&] { light(*l, p + "/light", value); })) e.light = value;
+        }
+        if (const json* c = nullptr; object(j, p, "camera", c)) {
+            Camera value;
+            if (clean([&] { camera(*c, p + "/camera", value); })) e.camera = value;
+        }
+        if (const json* s = nullptr; object(j, p, "sky", s)) {
+            Sky value;
+            if (clean([&] {
+                    string(*s, p + "/sky", "exr", value.exrPath);
+                    number(*s, p + "/sky", "intensity", value.intensity);
+                })) {
+                e.sky = value;
+            }
+        }
+        if (auto it = j.find("gameData"); it != j.end()) e.gameDataJson = it->dump();
+        return e;
+    }
+
+private:
+    const std::string& file_;
+    Diagnostics& diagnostics_;
+    bool failed_ = false;
+};
+
+// Parents must name another entity and must not form cycles; offending links are cut.
+void checkParents(SceneDocument& scene, Reader& reader) {
+    const std::size_t count = scene.entities.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        if (scene.entities[i].parent == static_cast<std::int32_t>(i)) {
+            reader.error("/entities/" + std::to_string(i) + "/parent", "entity is its own parent");
+            scene.entities[i].parent = kNoIndex;
+        }
+    }
+    std::vector<std::int32_t> walkOf(count, -1);
+    std::vector<bool> done(count, false);
+    for (std::size_t start = 0; start < count; ++start) {
+        std::int32_t at = static_cast<std::int32_t>(start);
+        while (at != kNoIndex && !done[static_cast<std::size_t>(at)]) {
+            auto i = static_cast<std::size_t>(at);
+            if (walkOf[i] == static_cast<std::int32_t>(start)) {
+                reader.error("/entities/" + std::to_string(i) + "/parent",
+                             "parent links form a cycle; link removed");
+                scene.entities[i].parent = kNoIndex;
+                break;
+            }
+            walkOf[i] = static_cast<std::int32_t>(start);
+            at = scene.entities[i].parent;
+        }
+        for (at = static_cast<std::int32_t>(start);
+             at != kNoIndex && !done[static_cast<std::size_t>(at)];
+             at = scene.entities[static_cast<std::size_t>(at)].parent) {
+            done[static_cast<std::size_t>(at)] = true;
+        }
+    }
+}
+
+std::string lineAndColumn(std::span<const std::byte> bytes, std::size_t byteOffset) {
+    std::size_t line = 1;
+    std::size_t column = 1;
+    for (std::size_t i = 0; i + 1 < byteOffset && i < bytes.size(); ++i) {
+        if (bytes[i] == std::byte{'\n'}) {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+constexpr std::size_t kMaxNestingDepth = 128;
+
+}  // namespace
+
+std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
+                                            const std::string& name, Diagnostics& diagnostics) {
+    json root;
+    try {
+        root = json::parse(reinterpret_cast<const char*>(bytes.data()),
+                           reinterpret_cast<const char*>(bytes.data()) + bytes.size());
+    } catch (const json::parse_error& e) {
+        diagnostics.error(name, "",
+                          "invalid JSON at " + lineAndColumn(bytes, e.byte) + ": " + e.what());
+        return std::nullopt;
+    }
+    Reader reader(name, diagnostics);
+    if (nestingDepth(root) > kMaxNestingDepth) {
+        reader.error("", "JSON nesting deeper than " + std::to_string(kMaxNestingDepth));
+        return std::nullopt;
+    }
+    if (!root.is_object()) {
+        reader.error("", "expected a JSON object at the top level");
+        return std::nullopt;
+    }
+    if (auto format = root.find("format"); format == root.end() || *format != kFormatName) {
+        reader.error("/format", "missing or not \"" + std::string(kFormatName) + "\"");
+        return std::nullopt;
+    }
+    auto version = root.find("version");
+    if (version == root.end() || !version->is_number_integer()) {
+        reader.error("/version", "missing or not an integer");
+        return std::nullopt;
+    }
+    if (version->get<std::int64_t>() > kSceneFileVersion || version->get<std::int64_t>() < 1) {
+        reader.error("/version", "version " + version->dump() +
+                                     " is not supported (this build reads 1 to " +
+                                     std::to_string(kSceneFileVersion) + ")");
+        return std::nullopt;
+    }
+    auto entities = root.find("entities");
+    if (entities == root.end() || !entities->is_array()) {
+        reader.error("/entities", "missing or not an array");
+        return std::nullopt;
+    }
+    SceneDocument scene;
+    scene.entities.reserve(entities->size());
+    for (std::size_t i = 0; i < entities->size(); ++i) {
+        scene.entities.push_back(
+            reader.entity((*entities)[i], "/entities/" + std::to_string(i), entities->size()));
+    }
+    checkParents(scene, reader);
+    return scene;
+}
+
+}  // namespace candela::content

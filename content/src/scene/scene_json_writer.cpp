@@ -1,0 +1,154 @@
+// SceneDocument -> JSON text. Every field is written, so reading it back needs no defaults
+// and round-trips exactly (floats print in shortest form that parses back to the same value).
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+#include "candela/content/scene_file.h"
+#include "scene_json_names.h"
+
+namespace candela::content {
+namespace {
+
+using nlohmann::json;
+using namespace scene;
+
+// Non-finite values have no JSON spelling; they are collected as errors instead of written.
+struct Writer {
+    std::string error;
+
+    json number(float v, const std::string& pointer) {
+        if (!std::isfinite(v) && error.empty()) error = pointer + ": value is NaN or Inf";
+        return v;
+    }
+    template <std::size_t N>
+    json numbers(const std::array<float, N>& values, const std::string& pointer) {
+        json out = json::array();
+        for (float v : values)
+            out.push_back(number(v, pointer));
+        return out;
+    }
+
+    json transform(const Transform& t, const std::string& p) {
+        return {{"translation", numbers(t.translation, p + "/translation")},
+                {"rotation", numbers(t.rotation, p + "/rotation")},
+                {"scale", numbers(t.scale, p + "/scale")}};
+    }
+
+    json textureRef(const TextureRef& t, const std::string& p) {
+        return {{"texture", t.texture},
+                {"texCoord", t.texCoord},
+                {"colorSpace", nameOf(kColorSpaces, t.colorSpace)},
+                {"offset", numbers(t.transform.offset, p + "/offset")},
+                {"rotation", number(t.transform.rotation, p + "/rotation")},
+                {"scale", numbers(t.transform.scale, p + "/scale")}};
+    }
+
+    json material(const Material& m, const std::string& p) {
+        return {
+            {"name", m.name},
+            {"shadingModel", nameOf(kShadingModels, m.shadingModel)},
+            {"baseColorFactor", numbers(m.baseColorFactor, p + "/baseColorFactor")},
+            {"baseColorTexture", textureRef(m.baseColorTexture, p + "/baseColorTexture")},
+            {"metallicFactor", number(m.metallicFactor, p + "/metallicFactor")},
+            {"roughnessFactor", number(m.roughnessFactor, p + "/roughnessFactor")},
+            {"metallicRoughnessTexture",
+             textureRef(m.metallicRoughnessTexture, p + "/metallicRoughnessTexture")},
+            {"normalTexture", textureRef(m.normalTexture, p + "/normalTexture")},
+            {"normalScale", number(m.normalScale, p + "/normalScale")},
+            {"occlusionTexture", textureRef(m.occlusionTexture, p + "/occlusionTexture")},
+            {"occlusionStrength", number(m.occlusionStrength, p + "/occlusionStrength")},
+            {"emissiveTexture", textureRef(m.emissiveTexture, p + "/emissiveTexture")},
+            {"emissiveFactor", numbers(m.emissiveFactor, p + "/emissiveFactor")},
+            {"emissiveStrength", number(m.emissiveStrength, p + "/emissiveStrength")},
+            {"alphaMode", nameOf(kAlphaModes, m.alphaMode)},
+            {"alphaCutoff", number(m.alphaCutoff, p + "/alphaCutoff")},
+            {"doubleSided", m.doubleSided},
+            {"specular", number(m.specular, p + "/specular")},
+            {"specularTexture", textureRef(m.specularTexture, p + "/specularTexture")},
+            {"specularColorTexture",
+             textureRef(m.specularColorTexture, p + "/specularColorTexture")},
+            {"specularColorFactor", numbers(m.specularColorFactor, p + "/specularColorFactor")},
+            {"subsurfaceColor", numbers(m.subsurfaceColor, p + "/subsurfaceColor")},
+            {"subsurfaceOpacity", number(m.subsurfaceOpacity, p + "/subsurfaceOpacity")},
+            {"diffuseColor", numbers(m.diffuseColor, p + "/diffuseColor")},
+            {"specularColor", numbers(m.specularColor, p + "/specularColor")},
+        };
+    }
+
+    json light(const Light& l, const std::string& p) {
+        return {{"type", nameOf(kLightTypes, l.type)},
+                {"color", numbers(l.color, p + "/color")},
+                {"lumens", number(l.lumens, p + "/lumens")},
+                {"lux", number(l.lux, p + "/lux")},
+                {"attenuationRadius", number(l.attenuationRadius, p + "/attenuationRadius")},
+                {"sourceRadius", number(l.sourceRadius, p + "/sourceRadius")},
+                {"sourceLength", number(l.sourceLength, p + "/sourceLength")},
+                {"innerConeAngle", number(l.innerConeAngle, p + "/innerConeAngle")},
+                {"outerConeAngle", number(l.outerConeAngle, p + "/outerConeAngle")}};
+    }
+
+    json camera(const Camera& c, const std::string& p) {
+        return {
+            {"projection", nameOf(kProjections, c.projection)},
+            {"verticalFov", number(c.verticalFov, p + "/verticalFov")},
+            {"nearPlane", number(c.nearPlane, p + "/nearPlane")},
+            {"farPlane", number(c.farPlane, p + "/farPlane")},
+            {"orthographicHalfHeight",
+             number(c.orthographicHalfHeight, p + "/orthographicHalfHeight")},
+            {"exposureMode", nameOf(kExposureModes, c.exposureMode)},
+            {"aperture", number(c.aperture, p + "/aperture")},
+            {"shutterSeconds", number(c.shutterSeconds, p + "/shutterSeconds")},
+            {"iso", number(c.iso, p + "/iso")},
+            {"manualEv100", number(c.manualEv100, p + "/manualEv100")},
+            {"exposureCompensation", number(c.exposureCompensation, p + "/exposureCompensation")}};
+    }
+
+    json entity(const SceneEntity& e, const std::string& p) {
+        json out = {{"name", e.name}, {"transform", transform(e.transform, p + "/transform")}};
+        if (e.parent != kNoIndex) out["parent"] = e.parent;
+        if (e.mesh) out["mesh"] = {{"gltf", e.mesh->gltfPath}, {"mesh", e.mesh->meshIndex}};
+        if (!e.materialOverrides.empty()) {
+            json overrides = json::array();
+            for (std::size_t i = 0; i < e.materialOverrides.size(); ++i) {
+                const MaterialOverride& o = e.materialOverrides[i];
+                overrides.push_back(
+                    {{"primitive", o.primitive},
+                     {"material", material(o.material, p + "/materialOverrides/" +
+                                                           std::to_string(i) + "/material")}});
+            }
+            out["materialOverrides"] = std::move(overrides);
+        }
+        if (e.light) out["light"] = light(*e.light, p + "/light");
+        if (e.camera) out["camera"] = camera(*e.camera, p + "/camera");
+        if (e.sky) {
+            out["sky"] = {{"exr", e.sky->exrPath},
+                          {"intensity", number(e.sky->intensity, p + "/sky/intensity")}};
+        }
+        if (!e.gameDataJson.empty()) {
+            json data = json::parse(e.gameDataJson, nullptr, false);
+            if (data.is_discarded() && error.empty()) {
+                error = p + "/gameData: not valid JSON text";
+            }
+            out["gameData"] = std::move(data);
+        }
+        return out;
+    }
+};
+
+}  // namespace
+
+std::string sceneToJson(const SceneDocument& scene, std::string& error) {
+    Writer writer;
+    json entities = json::array();
+    for (std::size_t i = 0; i < scene.entities.size(); ++i) {
+        entities.push_back(writer.entity(scene.entities[i], "/entities/" + std::to_string(i)));
+    }
+    error = writer.error;
+    if (!error.empty()) return {};
+    const json document = {
+        {"format", kFormatName}, {"version", kSceneFileVersion}, {"entities", std::move(entities)}};
+    return document.dump(2) + "\n";
+}
+
+}  // namespace candela::content

@@ -1,0 +1,232 @@
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+#include "candela/content/scene_file.h"
+#include "test_paths.h"
+
+namespace candela::content {
+namespace {
+
+// Values chosen so a decimal round trip through too few digits would change them.
+SceneDocument exampleScene() {
+    SceneDocument scene;
+    SceneEntity& root = scene.entities.emplace_back();
+    root.name = "root";
+    root.transform.translation = {0.1f, 1.0f / 3.0f, -2.7182817f};
+    root.transform.rotation = {0.0f, 0.38268343f, 0.0f, 0.9238795f};
+    root.transform.scale = {1e-7f, 3.4e38f, 1.17549435e-38f};
+    root.sky = Sky{"env/studio_small_03_1k.exr", 0.75f};
+    root.gameDataJson = R"({"level":3,"spawn":{"x":1.5},"tags":["a","b"]})";  // canonical form
+
+    SceneEntity& helmet = scene.entities.emplace_back();
+    helmet.name = "helmet \"quoted\" ünïcode";
+    helmet.parent = 0;
+    helmet.mesh = MeshReference{"models/DamagedHelmet/DamagedHelmet.glb", 0};
+    MaterialOverride override;
+    override.primitive = 0;
+    override.material.name = "red";
+    override.material.baseColorFactor = {0.9f, 0.1f, 0.1f, 1.0f};
+    override.material.shadingModel = ShadingModel::Subsurface;
+    override.material.alphaMode = AlphaMode::Mask;
+    override.material.normalTexture.texture = 4;
+    override.material.normalTexture.transform.rotation = 0.1f;
+    helmet.materialOverrides.push_back(override);
+
+    SceneEntity& lamp = scene.entities.emplace_back();
+    lamp.name = "lamp";
+    lamp.parent = 1;
+    Light light;
+    light.type = LightType::Spot;
+    light.lumens = 1234.5678f;
+    light.sourceLength = 0.3f;
+    light.color = {1.0f, 0.9f, 0.8f};
+    lamp.light = light;
+
+    SceneEntity& eye = scene.entities.emplace_back();
+    eye.name = "camera";
+    Camera camera;
+    camera.exposureMode = ExposureMode::Manual;
+    camera.manualEv100 = 12.25f;
+    camera.projection = Projection::Orthographic;
+    eye.camera = camera;
+    return scene;
+}
+
+template <std::size_t N>
+bool bitEqual(const std::array<float, N>& a, const std::array<float, N>& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(float) * N) == 0;
+}
+
+// Component-by-component comparison, floats compared bit for bit.
+void expectIdentical(const SceneDocument& a, const SceneDocument& b) {
+    ASSERT_EQ(a.entities.size(), b.entities.size());
+    for (std::size_t i = 0; i < a.entities.size(); ++i) {
+        const SceneEntity& x = a.entities[i];
+        const SceneEntity& y = b.entities[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.parent, y.parent);
+        EXPECT_TRUE(bitEqual(x.transform.translation, y.transform.translation)) << i;
+        EXPECT_TRUE(bitEqual(x.transform.rotation, y.transform.rotation)) << i;
+        EXPECT_TRUE(bitEqual(x.transform.scale, y.transform.scale)) << i;
+        EXPECT_EQ(x.mesh, y.mesh);
+        ASSERT_EQ(x.materialOverrides.size(), y.materialOverrides.size());
+        for (std::size_t m = 0; m < x.materialOverrides.size(); ++m) {
+            const Material& p = x.materialOverrides[m].material;
+            const Material& q = y.materialOverrides[m].material;
+            EXPECT_EQ(p.name, q.name);
+            EXPECT_TRUE(bitEqual(p.baseColorFactor, q.baseColorFactor));
+            EXPECT_EQ(p.shadingModel, q.shadingModel);
+            EXPECT_EQ(p.alphaMode, q.alphaMode);
+            EXPECT_EQ(p.normalTexture.texture, q.normalTexture.texture);
+            EXPECT_EQ(p.normalTexture.transform.rotation, q.normalTexture.transform.rotation);
+            EXPECT_EQ(p.specular, q.specular);
+        }
+        ASSERT_EQ(x.light.has_value(), y.light.has_value());
+        if (x.light) {
+            const Light& l = *x.light;
+            const Light& k = *y.light;
+            EXPECT_EQ(l.type, k.type);
+            EXPECT_TRUE(bitEqual(l.color, k.color));
+            EXPECT_TRUE(bitEqual(std::array{l.lumens, l.lux, l.attenuationRadius, l.sourceRadius,
+                                            l.sourceLength, l.innerConeAngle, l.outerConeAngle},
+                                 std::array{k.lumens, k.lux, k.attenuationRadius, k.sourceRadius,
+                                            k.sourceLength, k.innerConeAngle, k.outerConeAngle}));
+        }
+        ASSERT_EQ(x.camera.has_value(), y.camera.has_value());
+        if (x.camera) {
+            const Camera& c = *x.camera;
+            const Camera& d = *y.camera;
+            EXPECT_EQ(c.projection, d.projection);
+            EXPECT_EQ(c.exposureMode, d.exposureMode);
+            EXPECT_TRUE(bitEqual(std::array{c.verticalFov, c.nearPlane, c.farPlane,
+                                            c.orthographicHalfHeight, c.aperture, c.shutterSeconds,
+                                            c.iso, c.manualEv100, c.exposureCompensation},
+                                 std::array{d.verticalFov, d.nearPlane, d.farPlane,
+                                            d.orthographicHalfHeight, d.aperture, d.shutterSeconds,
+                                            d.iso, d.manualEv100, d.exposureCompensation}));
+        }
+        ASSERT_EQ(x.sky.has_value(), y.sky.has_value());
+        if (x.sky) {
+            EXPECT_EQ(x.sky->exrPath, y.sky->exrPath);
+            EXPECT_EQ(x.sky->intensity, y.sky->intensity);
+        }
+        EXPECT_EQ(x.gameDataJson, y.gameDataJson);
+    }
+}
+
+TEST(SceneFile, SaveLoadSaveRoundTripsBitExactly) {
+    const auto path = testing::tempPath("level.scene.json");
+    const SceneDocument original = exampleScene();
+    ASSERT_EQ(saveSceneFile(path, original), "");
+    Diagnostics diagnostics;
+    auto loaded = loadSceneFile(path, diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
+    expectIdentical(original, *loaded);
+
+    // Saving what was loaded gives the same bytes: nothing drifts across generations.
+    std::string error;
+    EXPECT_EQ(sceneToJson(*loaded, error), sceneToJson(original, error));
+}
+
+TEST(SceneFile, RefusesToSaveNonFiniteValuesAndKeepsTheOldFile) {
+    const auto path = testing::tempPath("level.scene.json");
+    ASSERT_EQ(saveSceneFile(path, exampleScene()), "");
+    SceneDocument bad = exampleScene();
+    bad.entities[2].light->lumens = std::numeric_limits<float>::infinity();
+    const std::string error = saveSceneFile(path, bad);
+    EXPECT_NE(error.find("/entities/2/light/lumens"), std::string::npos) << error;
+    Diagnostics diagnostics;
+    auto loaded = loadSceneFile(path, diagnostics);
+    ASSERT_TRUE(loaded);
+    expectIdentical(exampleScene(), *loaded);
+}
+
+TEST(SceneFile, KilledSaveLeavesAPreviousCompleteFile) {
+    const auto path = testing::tempPath("killed.scene.json");
+    SceneDocument big = exampleScene();
+    for (int i = 0; i < 20000; ++i)
+        big.entities.push_back(big.entities[2]);  // ~ several MB
+    ASSERT_EQ(saveSceneFile(path, exampleScene()), "");
+    for (int attempt = 0; attempt < 5; ++attempt) {
+        const pid_t child = fork();
+        ASSERT_GE(child, 0);
+        if (child == 0) {
+            for (;;)
+                (void)saveSceneFile(path, (attempt % 2) ? big : exampleScene());
+        }
+        usleep(static_cast<useconds_t>(20000 + 15000 * attempt));
+        kill(child, SIGKILL);
+        int status = 0;
+        waitpid(child, &status, 0);
+        Diagnostics diagnostics;
+        auto loaded = loadSceneFile(path, diagnostics);
+        ASSERT_TRUE(loaded) << "attempt " << attempt << ": " << diagnostics.toString();
+        EXPECT_FALSE(diagnostics.hasErrors());
+        EXPECT_TRUE(loaded->entities.size() == 4 || loaded->entities.size() == big.entities.size());
+    }
+}
+
+TEST(SceneFile, BadJsonNamesFileAndPosition) {
+    const std::string text = "{\n  \"format\": \"candela.scene\",\n  \"version\": 1,\n  oops\n}";
+    Diagnostics diagnostics;
+    auto scene = parseSceneJson(std::as_bytes(std::span(text)), "broken.scene.json", diagnostics);
+    EXPECT_FALSE(scene);
+    EXPECT_TRUE(diagnostics.mentions("broken.scene.json")) << diagnostics.toString();
+    EXPECT_TRUE(diagnostics.mentions("line 4")) << diagnostics.toString();
+}
+
+TEST(SceneFile, StructuralErrorsNameTheJsonPointerAndDropOnlyThatComponent) {
+    const std::string text = R"({
+      "format": "candela.scene", "version": 1,
+      "entities": [
+        {"name": "a", "light": {"type": "laser", "lumens": 10}, "camera": {"iso": 200}},
+        {"name": "b", "parent": 7, "transform": {"scale": [1, 2]}},
+        {"name": "c", "parent": 3},
+        {"name": "d", "parent": 2},
+        {"name": "e", "mesh": {"gltf": "x.glb", "mesh": -1}}
+      ]})";
+    Diagnostics diagnostics;
+    auto scene = parseSceneJson(std::as_bytes(std::span(text)), "s.json", diagnostics);
+    ASSERT_TRUE(scene);
+    ASSERT_EQ(scene->entities.size(), 5u);
+    EXPECT_FALSE(scene->entities[0].light) << "bad light dropped";
+    ASSERT_TRUE(scene->entities[0].camera) << "good camera kept";
+    EXPECT_EQ(scene->entities[0].camera->iso, 200.0f);
+    EXPECT_TRUE(diagnostics.mentions("s.json: /entities/0/light/type: error: 'laser'"))
+        << diagnostics.toString();
+    EXPECT_TRUE(diagnostics.mentions("/entities/1/parent"));
+    EXPECT_TRUE(diagnostics.mentions("/entities/1/transform/scale"));
+    EXPECT_TRUE(diagnostics.mentions("cycle"));
+    EXPECT_TRUE(scene->entities[2].parent == kNoIndex || scene->entities[3].parent == kNoIndex);
+    EXPECT_FALSE(scene->entities[4].mesh);
+    EXPECT_TRUE(diagnostics.mentions("/entities/4/mesh/mesh"));
+}
+
+TEST(SceneFile, VersionFormatAndNestingAreChecked) {
+    for (const std::string& text : std::vector<std::string>{
+             R"({"format": "candela.scene", "version": 99, "entities": []})",
+             R"({"format": "other", "version": 1, "entities": []})",
+             R"({"format": "candela.scene", "entities": []})", R"([])",
+             std::string(
+                 R"({"format": "candela.scene", "version": 1, "entities": [{"gameData": )") +
+                 std::string(5000, '[') + std::string(5000, ']') + "}]}"}) {
+        Diagnostics diagnostics;
+        EXPECT_FALSE(parseSceneJson(std::as_bytes(std::span(text)), "v.json", diagnostics))
+            << text.substr(0, 80);
+        EXPECT_TRUE(diagnostics.hasErrors());
+    }
+    Diagnostics missing;
+    EXPECT_FALSE(loadSceneFile("/no/such/scene.json", missing));
+    EXPECT_TRUE(missing.mentions("/no/such/scene.json"));
+}
+
+}  // namespace
+}  // namespace candela::content
