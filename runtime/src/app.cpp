@@ -80,7 +80,7 @@ void renderWindowed(Session& s, Window& window, render::Swapchain& swapchain,
             s.submitter->waitIdle();
             swapchain.recreate(w, h);
             // Without a fixed --size the render follows the window.
-            if (!options.capture) s.renderer->resize(w, h);
+            if (options.captures.empty()) s.renderer->resize(w, h);
         }
         uint32_t imageIndex = 0;
         s.submitter->waitIdle();
@@ -118,9 +118,10 @@ int runScene(const RunOptions& options) {
         std::fprintf(stderr, "candela: %s\n", error.c_str());
         return kExitBadArguments;
     }
-    for (const auto& path : {options.capture, options.stats}) {
-        if (!path) continue;
-        if (std::string e = checkWritable(*path); !e.empty()) {
+    std::vector<std::filesystem::path> outputs = options.captures;
+    if (options.stats) outputs.push_back(*options.stats);
+    for (const std::filesystem::path& path : outputs) {
+        if (std::string e = checkWritable(path); !e.empty()) {
             std::fprintf(stderr, "candela: %s\n", e.c_str());
             return kExitBadArguments;
         }
@@ -153,7 +154,7 @@ int runScene(const RunOptions& options) {
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
         stats.device = s.context->deviceName();
         std::unique_ptr<render::FrameReadback> readbackStorage;
-        if (options.capture) {
+        if (!options.captures.empty()) {
             readbackStorage =
                 std::make_unique<render::FrameReadback>(*s.context, options.width, options.height);
         }
@@ -178,19 +179,22 @@ int runScene(const RunOptions& options) {
     }
 
     int exitCode = kExitOk;
-    if (options.capture) {
-        if (!captured) {
-            std::fprintf(stderr, "candela: window closed before frame %u; nothing captured\n",
-                         frames);
-            exitCode = kExitFailure;
-        } else if (std::string e = render::writeCapture(*options.capture, *captured); !e.empty()) {
+    if (!options.captures.empty() && !captured) {
+        std::fprintf(stderr, "candela: window closed before frame %u; nothing captured\n", frames);
+        exitCode = kExitFailure;
+    }
+    for (const std::filesystem::path& capture : options.captures) {
+        if (!captured) break;
+        if (std::string e = render::writeCapture(capture, *captured); !e.empty()) {
             std::fprintf(stderr, "candela: %s\n", e.c_str());
             exitCode = kExitFailure;
         } else {
-            std::printf("captured %s\n", options.capture->c_str());
-            if (size_t bad = captured->nonFiniteHdrValues()) {
-                std::fprintf(stderr, "candela: warning: capture holds %zu NaN/Inf values\n", bad);
-            }
+            std::printf("captured %s\n", capture.c_str());
+        }
+    }
+    if (captured) {
+        if (size_t bad = captured->nonFiniteHdrValues()) {
+            std::fprintf(stderr, "candela: warning: capture holds %zu NaN/Inf values\n", bad);
         }
     }
     if (options.stats) {

@@ -36,7 +36,7 @@ render::ValidationMode validationFromEnvironment() {
 
 std::string runUsage() {
     return "usage: candela run <scene.json|scene.gltf|scene.glb|builtin:triangle> [--headless]\n"
-           "                   [--size WxH] [--frames N] [--capture FILE.exr|FILE.png]\n"
+           "                   [--size WxH] [--frames N] [--capture FILE.exr|FILE.png]...\n"
            "                   [--stats FILE.json] [--validation off|on|require]\n"
            "       candela demo [same options]\n";
 }
@@ -73,7 +73,7 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
             }
         } else if (arg == "--capture") {
             if (!value(v)) return fail("--capture needs a file name ending in .exr or .png");
-            options.capture = v;
+            options.captures.push_back(v);
         } else if (arg == "--stats") {
             if (!value(v)) return fail("--stats needs a file name");
             options.stats = v;
@@ -95,11 +95,10 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
             return fail("more than one scene given: '" + options.scene + "' and '" + arg + "'");
         }
     }
-    if (options.capture) {
-        std::string ext = options.capture->extension().string();
+    for (const std::filesystem::path& capture : options.captures) {
+        std::string ext = capture.extension().string();
         if (ext != ".exr" && ext != ".png") {
-            return fail("--capture file must end in .exr or .png: '" + options.capture->string() +
-                        "'");
+            return fail("--capture file must end in .exr or .png: '" + capture.string() + "'");
         }
     }
     result.options = options;

@@ -15,8 +15,8 @@ struct RunOptions {
     bool headless = false;
     uint32_t width = 1280;
     uint32_t height = 720;
-    uint32_t frames = 0;  // 0: until the window closes (headless: 1)
-    std::optional<std::filesystem::path> capture;
+    uint32_t frames = 0;                          // 0: until the window closes (headless: 1)
+    std::vector<std::filesystem::path> captures;  // --capture may repeat (one .exr, one .png)
     std::optional<std::filesystem::path> stats;
     render::ValidationMode validation = render::ValidationMode::IfPresent;
 };

@@ -77,6 +77,15 @@ TEST(Cli, CapturesAreIdenticalRunAfterRun) {
     }
 }
 
+TEST(Cli, OneRunCanCaptureBothExrAndPng) {
+    auto dir = tempDir();
+    RunResult r = runCandela(kTriangle + "--capture " + (dir / "both.exr").string() +
+                             " --capture " + (dir / "both.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_GT(std::filesystem::file_size(dir / "both.exr"), 0u);
+    EXPECT_GT(std::filesystem::file_size(dir / "both.png"), 0u);
+}
+
 TEST(Cli, ZeroSizeIsRejected) {
     RunResult r = runCandela("run builtin:triangle --headless --size 0x0");
     EXPECT_EQ(r.exitCode, 2);
