@@ -1,0 +1,64 @@
+#include "candela/content/model_instantiation.h"
+
+#include <candela/ecs/hierarchy.h>
+#include <candela/ecs/registry.h>
+#include <candela/ecs/transform.h>
+
+#include "candela/content/components/mesh_instance.h"
+#include "candela/content/components/name.h"
+
+namespace candela::content {
+
+namespace {
+
+ecs::LocalTransform toLocalTransform(const Transform& t) {
+    ecs::LocalTransform local;
+    local.position = {t.translation[0], t.translation[1], t.translation[2]};
+    local.rotation = {t.rotation[0], t.rotation[1], t.rotation[2], t.rotation[3]};
+    local.scale = {t.scale[0], t.scale[1], t.scale[2]};
+    return local;
+}
+
+}  // namespace
+
+std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& model,
+                                          ecs::Entity parent) {
+    std::vector<ecs::Entity> created;
+    // Depth-first from the shown roots; an explicit stack, because glTF trees can be deep.
+    std::vector<std::pair<std::int32_t, ecs::Entity>> pending;
+    for (auto it = model.rootNodes.rbegin(); it != model.rootNodes.rend(); ++it) {
+        pending.emplace_back(*it, parent);
+    }
+    std::vector<bool> visited(model.nodes.size(), false);
+    while (!pending.empty()) {
+        auto [nodeIndex, parentEntity] = pending.back();
+        pending.pop_back();
+        // The loader validated indices; a node reached twice (shared child) is shown once.
+        if (nodeIndex < 0 || size_t(nodeIndex) >= model.nodes.size() || visited[nodeIndex]) {
+            continue;
+        }
+        visited[nodeIndex] = true;
+        const Node& node = model.nodes[nodeIndex];
+        ecs::Entity e = registry.create();
+        registry.emplace<Name>(e, Name{node.name});
+        registry.emplace<ecs::LocalTransform>(e, toLocalTransform(node.local));
+        registry.emplace<ecs::WorldTransform>(e);
+        if (parentEntity != ecs::kNullEntity) (void)ecs::setParent(registry, e, parentEntity);
+        if (node.mesh >= 0 && size_t(node.mesh) < model.meshes.size()) {
+            registry.emplace<MeshInstance>(e, MeshInstance{&model, node.mesh});
+        }
+        if (node.light >= 0 && size_t(node.light) < model.lights.size()) {
+            registry.emplace<Light>(e, model.lights[node.light].light);
+        }
+        if (node.camera >= 0 && size_t(node.camera) < model.cameras.size()) {
+            registry.emplace<Camera>(e, model.cameras[node.camera].camera);
+        }
+        created.push_back(e);
+        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
+            pending.emplace_back(*it, e);
+        }
+    }
+    return created;
+}
+
+}  // namespace candela::content
