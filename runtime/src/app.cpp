@@ -12,7 +12,9 @@
 #include "candela/render/frame_submitter.h"
 #include "candela/render/gpu_context.h"
 #include "candela/render/renderer.h"
+#include "candela/render/scene_resources.h"
 #include "candela/render/swapchain.h"
+#include "frame_extraction.h"
 #include "frame_stats.h"
 #include "scene_source.h"
 #include "window.h"
@@ -48,18 +50,37 @@ bool displayAvailable() {
     return (display && *display) || (wayland && *wayland);
 }
 
+// Headless runs advance scene time by a fixed step so captures are the same run after run.
+constexpr double kHeadlessSecondsPerFrame = 1.0 / 30.0;
+
 struct Session {
     std::unique_ptr<render::GpuContext> context;
     std::unique_ptr<render::Renderer> renderer;
     std::unique_ptr<render::FrameSubmitter> submitter;
+    std::unique_ptr<render::SceneResources> resources;
+    ExtractedFrame extracted;
 };
 
-void renderHeadless(Session& s, const LoadedScene& scene, uint32_t frames,
+// Animates and reads the scene into the frame's inputs; returns the resources to draw with.
+render::SceneResources* prepareFrame(Session& s, LoadedScene& scene, double seconds) {
+    if (!scene.world) return nullptr;
+    if (scene.animate) scene.animate(*scene.world, seconds);
+    scene.world->updateTransforms();
+    float aspect = float(s.renderer->width()) / float(s.renderer->height());
+    extractFrame(scene.world->registry, *s.resources, aspect, s.extracted);
+    scene.frame.scene.camera = s.extracted.camera;
+    scene.frame.scene.draws = s.extracted.draws;
+    scene.frame.scene.lights = s.extracted.lights;
+    return s.resources.get();
+}
+
+void renderHeadless(Session& s, LoadedScene& scene, uint32_t frames,
                     render::FrameReadback* readback, FrameStats& stats) {
     for (uint32_t i = 0; i < frames; ++i) {
         Clock::time_point start = Clock::now();
         VkCommandBuffer cmd = s.submitter->begin();
-        s.renderer->recordFrame(cmd, scene.frame, nullptr);
+        render::SceneResources* resources = prepareFrame(s, scene, i * kHeadlessSecondsPerFrame);
+        s.renderer->recordFrame(cmd, scene.frame, resources);
         bool last = i + 1 == frames;
         if (last && readback) readback->recordCopy(cmd, *s.renderer);
         s.submitter->submit();
@@ -68,9 +89,10 @@ void renderHeadless(Session& s, const LoadedScene& scene, uint32_t frames,
     }
 }
 
-void renderWindowed(Session& s, Window& window, render::Swapchain& swapchain,
-                    const LoadedScene& scene, uint32_t frames, render::FrameReadback*& readback,
-                    const RunOptions& options, FrameStats& stats) {
+void renderWindowed(Session& s, Window& window, render::Swapchain& swapchain, LoadedScene& scene,
+                    uint32_t frames, render::FrameReadback*& readback, const RunOptions& options,
+                    FrameStats& stats) {
+    const Clock::time_point runStart = Clock::now();
     for (uint32_t i = 0; (frames == 0 || i < frames) && !window.shouldClose(); ++i) {
         Clock::time_point start = Clock::now();
         window.pollEvents();
@@ -91,7 +113,9 @@ void renderWindowed(Session& s, Window& window, render::Swapchain& swapchain,
             continue;
         }
         VkCommandBuffer cmd = s.submitter->begin();
-        s.renderer->recordFrame(cmd, scene.frame, nullptr);
+        render::SceneResources* resources =
+            prepareFrame(s, scene, std::chrono::duration<double>(Clock::now() - runStart).count());
+        s.renderer->recordFrame(cmd, scene.frame, resources);
         bool last = frames != 0 && i + 1 == frames;
         if (last && readback) readback->recordCopy(cmd, *s.renderer);
         swapchain.recordBlit(cmd, s.renderer->ldrTarget(), imageIndex);
@@ -152,6 +176,7 @@ int runScene(const RunOptions& options) {
         s.context = std::make_unique<render::GpuContext>(gpuOptions);
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
+        s.resources = std::make_unique<render::SceneResources>(*s.context);
         stats.device = s.context->deviceName();
         std::unique_ptr<render::FrameReadback> readbackStorage;
         if (!options.captures.empty()) {

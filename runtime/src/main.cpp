@@ -31,6 +31,6 @@ int main(int argc, char** argv) {
         return kExitBadArguments;
     }
     RunOptions options = *parsed.options;
-    if (command == "demo" && options.scene.empty()) options.scene = "builtin:triangle";
+    if (command == "demo" && options.scene.empty()) options.scene = "builtin:demo";
     return runScene(options);
 }

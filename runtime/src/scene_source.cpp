@@ -1,6 +1,9 @@
 #include "scene_source.h"
 
+#include <cstdio>
 #include <filesystem>
+
+#include "demo_scene.h"
 
 namespace candela::runtime {
 
@@ -16,6 +19,15 @@ LoadedScene builtinTriangle() {
     return scene;
 }
 
+// Daylight sky behind glTF scenes, in cd/m^2 (about 0.2 after sunny-16 exposure).
+constexpr std::array<float, 4> kSkyRadiance = {3000.0f, 4500.0f, 7000.0f, 1.0f};
+
+void printDiagnostics(const content::Diagnostics& diagnostics) {
+    for (const content::Diagnostic& d : diagnostics.messages) {
+        std::fprintf(stderr, "candela: %s\n", content::formatDiagnostic(d).c_str());
+    }
+}
+
 }  // namespace
 
 std::optional<LoadedScene> loadScene(const std::string& scene, std::string& error) {
@@ -24,8 +36,20 @@ std::optional<LoadedScene> loadScene(const std::string& scene, std::string& erro
         return std::nullopt;
     }
     if (scene == "builtin:triangle") return builtinTriangle();
+    if (scene == "builtin:demo") {
+        LoadedScene loaded;
+        loaded.name = scene;
+        loaded.world = std::make_unique<SceneWorld>();
+        content::Diagnostics diagnostics;
+        buildDemoScene(*loaded.world, diagnostics);
+        loaded.animate = animateDemoScene;
+        printDiagnostics(diagnostics);
+        loaded.frame.clearRadiance = kDemoBackgroundRadiance;
+        return loaded;
+    }
     if (scene.rfind("builtin:", 0) == 0) {
-        error = "unknown built-in scene '" + scene + "' (available: builtin:triangle)";
+        error =
+            "unknown built-in scene '" + scene + "' (available: builtin:triangle, builtin:demo)";
         return std::nullopt;
     }
     std::error_code ec;
@@ -33,8 +57,24 @@ std::optional<LoadedScene> loadScene(const std::string& scene, std::string& erro
         error = "scene file '" + scene + "' does not exist or is not a file";
         return std::nullopt;
     }
-    error = "scene file '" + scene + "': loading scene files into the renderer is not wired up yet";
-    return std::nullopt;
+    std::string ext = std::filesystem::path(scene).extension().string();
+    if (ext != ".gltf" && ext != ".glb") {
+        error = "scene file '" + scene + "': unsupported type '" + ext + "' (use .gltf or .glb)";
+        return std::nullopt;
+    }
+    LoadedScene loaded;
+    loaded.name = scene;
+    loaded.world = std::make_unique<SceneWorld>();
+    content::Diagnostics diagnostics;
+    bool ok = loaded.world->loadGltf(scene, diagnostics);
+    printDiagnostics(diagnostics);
+    if (!ok) {
+        error = "scene file '" + scene + "' could not be loaded (see the messages above)";
+        return std::nullopt;
+    }
+    loaded.world->addViewingDefaults();
+    loaded.frame.clearRadiance = kSkyRadiance;
+    return loaded;
 }
 
 }  // namespace candela::runtime

@@ -49,21 +49,33 @@ layout(location = 2) out vec4 outSpecularModel;  // specular, shading model / 25
 layout(location = 3) out vec4 outCustomData;
 layout(location = 4) out vec4 outEmissive;  // HDR radiance, cd/m^2
 
-vec2 slotUv(TextureTransform t) {
-    vec2 uv = t.texCoord == 1u ? inUv1 : inUv0;
-    return mat2(t.matrix.xy, t.matrix.zw) * uv + t.offset;
+vec4 uvDx;  // d(uv0, uv1)/dx, set first thing in main()
+vec4 uvDy;
+
+// Samples a material slot with explicit gradients: taken from the interpolated UVs once, in
+// uniform control flow, so the alpha-test discard and the normal-map branch cannot leave
+// implicit derivatives undefined (which showed as sparkles and seams on lavapipe).
+vec4 sampleSlot(sampler2D tex, TextureTransform t) {
+    mat2 m = mat2(t.matrix.xy, t.matrix.zw);
+    bool second = t.texCoord == 1u;
+    vec2 uv = m * (second ? inUv1 : inUv0) + t.offset;
+    vec2 ddx = m * (second ? uvDx.zw : uvDx.xy);
+    vec2 ddy = m * (second ? uvDy.zw : uvDy.xy);
+    return textureGrad(tex, uv, ddx, ddy);
 }
 
 void main() {
+    uvDx = dFdx(vec4(inUv0, inUv1));
+    uvDy = dFdy(vec4(inUv0, inUv1));
     Material m = materials[draw.material];
-    vec4 baseColor = m.baseColor * inColor * texture(baseColorTexture, slotUv(m.transforms[0]));
+    vec4 baseColor = m.baseColor * inColor * sampleSlot(baseColorTexture, m.transforms[0]);
     if (m.alphaCutoff >= 0.0 && baseColor.a < m.alphaCutoff) discard;
 
-    vec4 metalRough = texture(metallicRoughnessTexture, slotUv(m.transforms[1]));
+    vec4 metalRough = sampleSlot(metallicRoughnessTexture, m.transforms[1]);
     float roughness = saturate(m.roughness * metalRough.g);
     float metallic = saturate(m.metallic * metalRough.b);
     float occlusion =
-        1.0 + m.occlusionStrength * (texture(occlusionTexture, slotUv(m.transforms[3])).r - 1.0);
+        1.0 + m.occlusionStrength * (sampleSlot(occlusionTexture, m.transforms[3]).r - 1.0);
 
     vec3 N = safeNormalize(inNormal);
     if (!gl_FrontFacing) N = -N;  // double-sided surfaces light their back side
@@ -71,12 +83,12 @@ void main() {
     if (m.transforms[2].present != 0u && tangentLength > 0.0) {
         vec3 T = safeNormalize(inTangent.xyz - N * dot(N, inTangent.xyz));
         vec3 B = cross(N, T) * (inTangent.w < 0.0 ? -1.0 : 1.0);
-        vec3 n = texture(normalTexture, slotUv(m.transforms[2])).xyz * 2.0 - 1.0;
+        vec3 n = sampleSlot(normalTexture, m.transforms[2]).xyz * 2.0 - 1.0;
         n.xy *= m.normalScale;
         N = safeNormalize(mat3(T, B, N) * n);
     }
 
-    vec3 emissive = m.emissive.rgb * texture(emissiveTexture, slotUv(m.transforms[4])).rgb;
+    vec3 emissive = m.emissive.rgb * sampleSlot(emissiveTexture, m.transforms[4]).rgb;
     outBaseColor = vec4(baseColor.rgb, occlusion);
     outNormalRoughMetal = vec4(octEncode(N), roughness, metallic);
     outSpecularModel = vec4(saturate(m.specular), float(m.shadingModel) / 255.0, 0.0, 0.0);

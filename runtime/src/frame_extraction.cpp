@@ -1,0 +1,92 @@
+#include "frame_extraction.h"
+
+#include <cmath>
+#include <cstring>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "candela/content/components/camera.h"
+#include "candela/content/components/light.h"
+#include "candela/content/components/mesh_instance.h"
+#include "candela/ecs/transform.h"
+#include "candela/render/exposure.h"
+
+namespace candela::runtime {
+
+namespace {
+
+glm::mat4 toGlm(const ecs::Mat4& m) {
+    glm::mat4 out;
+    std::memcpy(&out[0][0], m.m, sizeof(m.m));  // both column-major
+    return out;
+}
+
+glm::vec3 unitColumn(const glm::mat4& m, int column, const glm::vec3& fallback) {
+    glm::vec3 v(m[column]);
+    float length = glm::length(v);
+    return length > 0.0f && std::isfinite(length) ? v / length : fallback;
+}
+
+bool isFinite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            if (!std::isfinite(m[c][r])) return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+void extractFrame(ecs::Registry& registry, render::SceneResources& resources, float aspect,
+                  ExtractedFrame& out) {
+    out.draws.clear();
+    out.lights.clear();
+    out.hasCamera = false;
+
+    registry.view<const ecs::WorldTransform, const content::MeshInstance>().each(
+        [&](const ecs::WorldTransform& transform, const content::MeshInstance& instance) {
+            if (!instance.model) return;
+            glm::mat4 world = toGlm(transform.matrix);
+            if (!isFinite(world)) return;  // a NaN transform hides the mesh, not the frame
+            const render::UploadedModel& uploaded = resources.addModel(*instance.model);
+            if (instance.mesh < 0 ||
+                size_t(instance.mesh) >= uploaded.firstPrimitiveOfMesh.size()) {
+                return;
+            }
+            uint32_t first = uploaded.firstPrimitiveOfMesh[instance.mesh];
+            for (uint32_t p = 0; p < uploaded.primitiveCountOfMesh[instance.mesh]; ++p) {
+                const render::GpuMesh& mesh = resources.mesh(first + p);
+                out.draws.push_back({first + p, uint32_t(mesh.defaultMaterial), world});
+            }
+        });
+
+    registry.view<const ecs::WorldTransform, const content::Light>().each(
+        [&](const ecs::WorldTransform& transform, const content::Light& light) {
+            glm::mat4 world = toGlm(transform.matrix);
+            if (!isFinite(world)) return;
+            render::LightInstance instance;
+            instance.light = light;
+            instance.position = glm::vec3(world[3]);
+            instance.direction = -unitColumn(world, 2, {0.0f, 0.0f, 1.0f});  // node -Z
+            instance.tubeAxis = unitColumn(world, 0, {1.0f, 0.0f, 0.0f});    // node +X
+            out.lights.push_back(instance);
+        });
+
+    registry.view<const ecs::WorldTransform, const content::Camera>().each(
+        [&](const ecs::WorldTransform& transform, const content::Camera& camera) {
+            glm::mat4 world = toGlm(transform.matrix);
+            if (out.hasCamera || !isFinite(world)) return;
+            // The view ignores scale: only the camera's position and orientation count.
+            glm::vec3 position(world[3]);
+            glm::vec3 forward = -unitColumn(world, 2, {0.0f, 0.0f, 1.0f});
+            glm::vec3 up = unitColumn(world, 1, {0.0f, 1.0f, 0.0f});
+            out.camera.view = glm::lookAt(position, position + forward, up);
+            out.camera.projection = render::reverseZPerspective(
+                camera.verticalFov, aspect, camera.nearPlane > 0.0f ? camera.nearPlane : 0.05f);
+            out.camera.position = position;
+            out.camera.ev100 = render::ev100FromCamera(camera);
+            out.hasCamera = true;
+        });
+}
+
+}  // namespace candela::runtime

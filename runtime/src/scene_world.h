@@ -1,0 +1,47 @@
+#pragma once
+// The running scene: the ECS registry, the models its entities draw (kept alive here), and
+// what makes a bare model viewable (a camera framing it, lights when it has none).
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "candela/content/diagnostics.h"
+#include "candela/content/model.h"
+#include "candela/ecs/registry.h"
+
+namespace candela::runtime {
+
+struct SceneBounds {
+    float min[3] = {0, 0, 0};
+    float max[3] = {0, 0, 0};
+    bool empty = true;
+};
+
+class SceneWorld {
+public:
+    ecs::Registry registry;
+
+    // Loads a .gltf/.glb into the registry. False when nothing usable could be read; the
+    // diagnostics name the file and element of every problem either way.
+    // `parent` (optional) becomes the parent of the model's root nodes.
+    bool loadGltf(const std::filesystem::path& path, content::Diagnostics& diagnostics,
+                  ecs::Entity parent = ecs::kNullEntity);
+
+    // Keeps a model alive for the lifetime of the world and returns it.
+    const content::Model& adoptModel(std::unique_ptr<content::Model> model);
+
+    // World-space bounds of everything drawn (after transform propagation).
+    SceneBounds bounds();
+
+    // A scene with no camera gets one looking at its bounds from the front-right, and a scene
+    // with no lights gets a sun and a fill, so any glTF shows up recognisably.
+    void addViewingDefaults();
+
+    void updateTransforms();
+
+private:
+    std::vector<std::unique_ptr<content::Model>> models_;
+};
+
+}  // namespace candela::runtime
