@@ -213,6 +213,16 @@ TEST(GltfBadInput, BadReferencesFallBackAndHierarchyStaysAForest) {
     EXPECT_TRUE(diagnostics.mentions("parent cycle"));
 }
 
+TEST(GltfBadInput, DeeplyNestedExtrasAreRefusedBeforeParsing) {
+    json doc = quadDocument();
+    std::string text = doc.dump();
+    text.insert(text.size() - 1,
+                ",\"extras\":" + std::string(100000, '[') + std::string(100000, ']'));
+    Diagnostics diagnostics;
+    EXPECT_FALSE(loadGltfFromMemory(bytesOf(text), "deep.gltf", diagnostics));
+    EXPECT_TRUE(diagnostics.mentions("nested deeper")) << diagnostics.toString();
+}
+
 TEST(GltfBadInput, DeepHierarchyAndManyNodesDoNotRecurse) {
     json doc = quadDocument();
     doc["nodes"] = json::array();

@@ -17,6 +17,10 @@ std::uint32_t readU32(std::span<const std::byte> bytes, std::uint64_t offset) {
 
 }  // namespace
 
+std::uint64_t glbJsonLength(std::span<const std::byte> bytes) {
+    return readU32(bytes, 12);
+}
+
 bool looksLikeGlb(std::span<const std::byte> bytes) {
     return bytes.size() >= 4 && readU32(bytes, 0) == kMagic;
 }

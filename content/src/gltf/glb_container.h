@@ -14,4 +14,7 @@ bool looksLikeGlb(std::span<const std::byte> bytes);
 // `bytes` and agree with the declared length; `declaredLength` receives that length.
 std::string checkGlbContainer(std::span<const std::byte> bytes, std::uint64_t& declaredLength);
 
+// Length of the JSON chunk (which starts at byte 20); only valid after checkGlbContainer().
+std::uint64_t glbJsonLength(std::span<const std::byte> bytes);
+
 }  // namespace candela::content::gltf

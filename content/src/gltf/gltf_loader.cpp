@@ -9,6 +9,7 @@
 #include "glb_container.h"
 #include "gltf_context.h"
 #include "gltf_image_callback.h"
+#include "json_nesting.h"
 
 namespace candela::content {
 namespace {
@@ -92,12 +93,24 @@ bool parseDocument(std::span<const std::byte> bytes, const std::filesystem::path
     bool parsed = false;
     try {
         const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-        if (gltf::looksLikeGlb(bytes)) {
-            std::uint64_t length = 0;
-            if (std::string problem = gltf::checkGlbContainer(bytes, length); !problem.empty()) {
+        std::string_view jsonText(reinterpret_cast<const char*>(data), bytes.size());
+        std::uint64_t glbLength = 0;
+        const bool isGlb = gltf::looksLikeGlb(bytes);
+        if (isGlb) {
+            if (std::string problem = gltf::checkGlbContainer(bytes, glbLength); !problem.empty()) {
                 diagnostics.error(file, "", problem);
                 return false;
             }
+            jsonText = jsonText.substr(20, gltf::glbJsonLength(bytes));
+        }
+        if (gltf::jsonNestingDepth(jsonText) > gltf::kMaxJsonNesting) {
+            diagnostics.error(
+                file, "",
+                "JSON is nested deeper than " + std::to_string(gltf::kMaxJsonNesting) + " levels");
+            return false;
+        }
+        if (isGlb) {
+            const std::uint64_t length = glbLength;
             parsed = parser.LoadBinaryFromMemory(&document, &error, &warning, data,
                                                  static_cast<unsigned int>(length), baseDir);
         } else {

@@ -21,6 +21,7 @@
 
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
+#include "candela/content/components/scene_components.h"
 #include "candela/content/components/sky.h"
 #include "candela/content/diagnostics.h"
 #include "candela/content/material.h"
@@ -35,13 +36,6 @@ struct MeshReference {
     std::int32_t meshIndex = 0;  // into the glTF's meshes
 
     bool operator==(const MeshReference&) const = default;
-};
-
-// Replaces the material of one primitive of the referenced mesh. Texture indices inside
-// `material` refer to the textures of the same glTF.
-struct MaterialOverride {
-    std::uint32_t primitive = 0;
-    Material material;
 };
 
 struct SceneEntity {

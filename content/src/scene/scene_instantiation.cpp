@@ -1,0 +1,138 @@
+#include "candela/content/scene_instantiation.h"
+
+#include <candela/ecs/hierarchy.h>
+#include <candela/ecs/transform.h>
+#include <candela/ecs/view.h>
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace candela::content {
+namespace {
+
+ecs::LocalTransform toEcs(const Transform& t) {
+    ecs::LocalTransform local;
+    local.position = {t.translation[0], t.translation[1], t.translation[2]};
+    local.rotation = {t.rotation[0], t.rotation[1], t.rotation[2], t.rotation[3]};
+    local.scale = {t.scale[0], t.scale[1], t.scale[2]};
+    return local;
+}
+
+Transform fromEcs(const ecs::LocalTransform& local) {
+    Transform t;
+    t.translation = {local.position.x, local.position.y, local.position.z};
+    t.rotation = {local.rotation.x, local.rotation.y, local.rotation.z, local.rotation.w};
+    t.scale = {local.scale.x, local.scale.y, local.scale.z};
+    return t;
+}
+
+ecs::Entity createWithTransform(ecs::Registry& registry, const std::string& name,
+                                const Transform& transform) {
+    const ecs::Entity e = registry.create();
+    registry.emplace<Name>(e, Name{name});
+    registry.emplace<ecs::LocalTransform>(e, toEcs(transform));
+    registry.emplace<ecs::WorldTransform>(e);
+    return e;
+}
+
+}  // namespace
+
+std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& model,
+                                          const std::string& gltfPath, ecs::Entity parent) {
+    std::vector<ecs::Entity> entities(model.nodes.size(), ecs::kNullEntity);
+    // Explicit stack: node chains in files can be deeper than the call stack allows.
+    std::vector<std::pair<std::int32_t, ecs::Entity>> pending;
+    for (auto it = model.rootNodes.rbegin(); it != model.rootNodes.rend(); ++it) {
+        pending.push_back({*it, parent});
+    }
+    while (!pending.empty()) {
+        const auto [index, parentEntity] = pending.back();
+        pending.pop_back();
+        const Node& node = model.nodes[static_cast<std::size_t>(index)];
+        const ecs::Entity e = createWithTransform(registry, node.name, node.local);
+        entities[static_cast<std::size_t>(index)] = e;
+        if (parentEntity != ecs::kNullEntity) (void)ecs::setParent(registry, e, parentEntity);
+        if (node.mesh != kNoIndex)
+            registry.emplace<MeshInstance>(e, MeshInstance{gltfPath, node.mesh});
+        if (node.light != kNoIndex) {
+            registry.emplace<Light>(e, model.lights[static_cast<std::size_t>(node.light)].light);
+        }
+        if (node.camera != kNoIndex) {
+            registry.emplace<Camera>(e,
+                                     model.cameras[static_cast<std::size_t>(node.camera)].camera);
+        }
+        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
+            pending.push_back({*child, e});
+        }
+    }
+    return entities;
+}
+
+std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDocument& scene) {
+    std::vector<ecs::Entity> entities;
+    entities.reserve(scene.entities.size());
+    for (std::size_t i = 0; i < scene.entities.size(); ++i) {
+        const SceneEntity& source = scene.entities[i];
+        const ecs::Entity e = createWithTransform(registry, source.name, source.transform);
+        registry.emplace<SceneMember>(e, SceneMember{static_cast<std::uint32_t>(i)});
+        if (source.mesh) {
+            registry.emplace<MeshInstance>(
+                e, MeshInstance{source.mesh->gltfPath, source.mesh->meshIndex});
+        }
+        if (!source.materialOverrides.empty()) {
+            registry.emplace<MaterialOverrides>(e, MaterialOverrides{source.materialOverrides});
+        }
+        if (source.light) registry.emplace<Light>(e, *source.light);
+        if (source.camera) registry.emplace<Camera>(e, *source.camera);
+        if (source.sky) registry.emplace<Sky>(e, *source.sky);
+        if (!source.gameDataJson.empty())
+            registry.emplace<GameData>(e, GameData{source.gameDataJson});
+        entities.push_back(e);
+    }
+    // Parents may come later in the file, so links are made once every entity exists.
+    for (std::size_t i = 0; i < scene.entities.size(); ++i) {
+        const std::int32_t p = scene.entities[i].parent;
+        if (p >= 0 && static_cast<std::size_t>(p) < entities.size()) {
+            (void)ecs::setParent(registry, entities[i], entities[static_cast<std::size_t>(p)]);
+        }
+    }
+    return entities;
+}
+
+SceneDocument captureScene(ecs::Registry& registry) {
+    std::vector<std::pair<std::uint32_t, ecs::Entity>> members;
+    registry.view<SceneMember>().each([&](ecs::Entity e, const SceneMember& member) {
+        members.push_back({member.order, e});
+    });
+    std::sort(members.begin(), members.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first < b.first : a.second.bits() < b.second.bits();
+    });
+    std::unordered_map<std::uint64_t, std::int32_t> indexOf;
+    for (std::size_t i = 0; i < members.size(); ++i) {
+        indexOf[members[i].second.bits()] = static_cast<std::int32_t>(i);
+    }
+    SceneDocument scene;
+    scene.entities.reserve(members.size());
+    for (const auto& [order, e] : members) {
+        SceneEntity& out = scene.entities.emplace_back();
+        if (const auto* name = registry.tryGet<Name>(e)) out.name = name->value;
+        if (const auto* local = registry.tryGet<ecs::LocalTransform>(e))
+            out.transform = fromEcs(*local);
+        if (const ecs::Entity p = ecs::parentOf(registry, e); p != ecs::kNullEntity) {
+            if (auto it = indexOf.find(p.bits()); it != indexOf.end()) out.parent = it->second;
+        }
+        if (const auto* mesh = registry.tryGet<MeshInstance>(e)) {
+            out.mesh = MeshReference{mesh->gltfPath, mesh->meshIndex};
+        }
+        if (const auto* overrides = registry.tryGet<MaterialOverrides>(e)) {
+            out.materialOverrides = overrides->overrides;
+        }
+        if (const auto* light = registry.tryGet<Light>(e)) out.light = *light;
+        if (const auto* camera = registry.tryGet<Camera>(e)) out.camera = *camera;
+        if (const auto* sky = registry.tryGet<Sky>(e)) out.sky = *sky;
+        if (const auto* data = registry.tryGet<GameData>(e)) out.gameDataJson = data->json;
+    }
+    return scene;
+}
+
+}  // namespace candela::content

@@ -1,0 +1,73 @@
+#include <gtest/gtest.h>
+
+#include <candela/ecs/hierarchy.h>
+#include <candela/ecs/transform.h>
+#include <candela/ecs/transform_propagation.h>
+
+#include <cstring>
+#include <filesystem>
+
+#include "candela/content/gltf_loader.h"
+#include "candela/content/scene_instantiation.h"
+
+namespace candela::content {
+namespace {
+
+TEST(SceneInstantiation, GltfNodesBecomeEntitiesWithHierarchyAndWorldTransforms) {
+    Diagnostics diagnostics;
+    const auto path = std::filesystem::path(CANDELA_SHARED_ASSETS) / "models/Box/Box.glb";
+    auto model = loadGltf(path, diagnostics);
+    ASSERT_TRUE(model) << diagnostics.toString();
+    ecs::Registry registry;
+    const auto entities = instantiateModel(registry, *model, "models/Box/Box.glb");
+    ASSERT_EQ(entities.size(), 2u);
+    const ecs::Entity root = entities[static_cast<std::size_t>(model->rootNodes[0])];
+    const std::int32_t childNode =
+        model->nodes[static_cast<std::size_t>(model->rootNodes[0])].children[0];
+    const ecs::Entity child = entities[static_cast<std::size_t>(childNode)];
+    EXPECT_EQ(ecs::parentOf(registry, child), root);
+    ASSERT_TRUE(registry.has<MeshInstance>(child));
+    EXPECT_EQ(registry.get<MeshInstance>(child).gltfPath, "models/Box/Box.glb");
+    EXPECT_FALSE(registry.has<MeshInstance>(root));
+    ecs::propagateTransforms(registry);
+    // Box's root node rotates -90 degrees about X (Z-up to Y-up): the child's world matrix
+    // must include it, so its local +Y axis maps to world -Z... or +Z; either way not +Y.
+    const ecs::Mat4 world = registry.get<ecs::WorldTransform>(child).matrix;
+    const ecs::Mat4 local = registry.get<ecs::LocalTransform>(child).matrix();
+    EXPECT_NE(std::memcmp(&world, &local, sizeof(ecs::Mat4)), 0)
+        << "the parent's rotation reached the child";
+}
+
+TEST(SceneInstantiation, SceneToRegistryAndBackIsIdentical) {
+    SceneDocument scene;
+    for (int i = 0; i < 4; ++i) {
+        SceneEntity& e = scene.entities.emplace_back();
+        e.name = "e" + std::to_string(i);
+        e.transform.translation = {0.1f * static_cast<float>(i), 1.0f / 3.0f, 2.0f};
+    }
+    scene.entities[0].parent = 2;  // parent later in the list
+    scene.entities[1].parent = 0;
+    scene.entities[1].mesh = MeshReference{"a.glb", 3};
+    scene.entities[2].light = Light{};
+    scene.entities[2].light->lumens = 321.0f;
+    scene.entities[3].camera = Camera{};
+    scene.entities[3].sky = Sky{"sky.exr", 2.0f};
+    scene.entities[3].gameDataJson = R"({"hp":10})";
+    MaterialOverride override;
+    override.primitive = 1;
+    override.material.roughnessFactor = 0.123f;
+    scene.entities[1].materialOverrides.push_back(override);
+
+    ecs::Registry registry;
+    const auto entities = instantiateScene(registry, scene);
+    ASSERT_EQ(entities.size(), 4u);
+    EXPECT_EQ(ecs::parentOf(registry, entities[0]), entities[2]);
+    const SceneDocument captured = captureScene(registry);
+    std::string a;
+    std::string b;
+    EXPECT_EQ(sceneToJson(captured, a), sceneToJson(scene, b));
+    EXPECT_TRUE(a.empty() && b.empty());
+}
+
+}  // namespace
+}  // namespace candela::content
