@@ -67,7 +67,13 @@ float spotAttenuation(Light light, vec3 L) {
 // when the sphere is fully above the horizon.
 float sphereIrradianceFactor(float cosTheta, float sinSigmaSq) {
     sinSigmaSq = min(sinSigmaSq, 1.0);
-    if (cosTheta * cosTheta > sinSigmaSq || sinSigmaSq >= 1.0) {
+    if (sinSigmaSq >= 1.0) {
+        // On (or in) the sphere it fills the half space toward its centre: pi (1 + cos) / 2,
+        // the limit of the formula below as sin(sigma) -> 1. pi * saturate(cosTheta) here
+        // jumped by up to pi / 2 at the sphere's surface (found by tests/render/stability).
+        return PI * 0.5 * (1.0 + cosTheta);
+    }
+    if (cosTheta * cosTheta > sinSigmaSq) {
         return PI * sinSigmaSq * saturate(cosTheta);
     }
     float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));

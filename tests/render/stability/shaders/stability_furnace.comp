@@ -2,9 +2,10 @@
 // White furnace of the specular lobe, evaluated with the real shared terms: for each
 // (roughness, NoV) cell, the directional albedo  integral of D * Vis * F * NoL over the
 // hemisphere with F0 = 1 (seed 000 eq. 2-5), which energy conservation bounds by 1. Directions
-// come from a fixed Hammersley set, importance-sampled by a GGX density written here (not the
-// shared D), so the shared D is what gets integrated. The same cell also integrates the
-// projected NDF  integral of D * NoH over the hemisphere, which must be exactly 1.
+// come from a fixed Hammersley set through visible-normal sampling (Heitz 2018) with a GGX
+// density written here, not the shared D, so the shared D is what gets integrated; the
+// estimator stays bounded even at NoV = 0. The same cell also integrates the projected NDF
+// integral of D * NoH over the hemisphere, which must be exactly 1.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/brdf.glsl"
@@ -36,6 +37,31 @@ float radicalInverseBase2(uint i) {
     return float(bitfieldReverse(i)) * 2.3283064365386963e-10;  // / 2^32
 }
 
+// sqrt and division are correctly rounded on the devices we test; inversesqrt() is not, and
+// near NoH = 1 one ulp is already a large part of a narrow lobe.
+vec3 accurateNormalize(vec3 v) {
+    return v / sqrt(dot(v, v));
+}
+
+// GGX written from eq. 3 in its tan form, no cancellation near NoH = 1:
+// D = (1 + tan^2)^2 / (pi a2 (1 + tan^2 / a2)^2).
+float ggxFromTanSq(float a2, float tanSq) {
+    float shape = 1.0 + tanSq / a2;
+    return (1.0 + tanSq) * (1.0 + tanSq) / (PI * a2 * shape * shape);
+}
+
+// cos(theta) from tan^2(theta), correct to an ulp even within 1e-7 of 1: forming 1 + tan^2 in
+// fp32 would round away the very part of the lobe near NoH = 1 that a narrow lobe lives in.
+float cosFromTanSq(float tanSq) {
+    float secant = sqrt(1.0 + tanSq);
+    return 1.0 - tanSq / (secant * (secant + 1.0));
+}
+
+// Smith G1 of GGX divided by NoV, finite at NoV = 0 (where it is 2 / alpha).
+float smithG1OverNoV(float alpha, float NoV) {
+    return 2.0 / (NoV + sqrt(alpha * alpha + (1.0 - alpha * alpha) * NoV * NoV));
+}
+
 // Projected NDF normalisation: with w = tan^2(theta_h),
 // integral D NoH dw = pi * integral D(w) / (1 + w)^2 dw = pi * integral D w / (1 + w)^2 dln(w).
 // The midpoint rule in ln(w) around the lobe (w = a2 * e^x, |x| < 18) is exact to ~1e-7.
@@ -44,7 +70,7 @@ float projectedNdfTerm(float a2, uint k) {
     float step = 2.0 * halfRange / float(quadratureCount);
     float x = -halfRange + (float(k) + 0.5) * step;
     float w = a2 * exp(x);
-    float NoH = inversesqrt(1.0 + w);
+    float NoH = cosFromTanSq(w);
     return PI * distributionGgx(a2, NoH) * w / ((1.0 + w) * (1.0 + w)) * step;
 }
 
@@ -62,31 +88,37 @@ void main() {
     Tally t = newTally();
     vec3 sums = vec3(0.0);
     for (uint i = lane; i < sampleCount; i += 64u) {
-        // GGX half-vector sampling with density D(h) NoH, written from eq. 3 in its
-        // tan form so no cancellation near NoH = 1: D = 1 / (pi a2 cos^4 (1 + tan^2 / a2)^2).
-        float u = (float(i) + 0.5) / float(sampleCount);
+        // Visible-normal sampling (Heitz 2018): stretch V, sample the projected hemisphere
+        // disk, unstretch. Density of L: G1(V) D(H) / (4 NoV).
+        float u1 = (float(i) + 0.5) / float(sampleCount);
         float phi = 2.0 * PI * radicalInverseBase2(i);
-        float tanSq = a2 * u / (1.0 - u);
-        float cosTheta = inversesqrt(1.0 + tanSq);
-        float sinTheta = sqrt(tanSq) * cosTheta;
-        vec3 H = vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
-        float cos4 = cosTheta * cosTheta * cosTheta * cosTheta;
-        float shape = 1.0 + tanSq / a2;
-        float pdfH = cosTheta / (PI * a2 * cos4 * shape * shape);
-
-        float VoH = dot(V, H);
-        vec3 L = 2.0 * VoH * H - V;
-        float NoL = L.z;
+        vec3 Vh = accurateNormalize(vec3(alpha * V.x, alpha * V.y, V.z));
+        float lensq = Vh.x * Vh.x + Vh.y * Vh.y;
+        vec3 T1 = lensq > 0.0 ? vec3(-Vh.y, Vh.x, 0.0) / sqrt(lensq) : vec3(1.0, 0.0, 0.0);
+        vec3 T2 = cross(Vh, T1);
+        float radius = sqrt(u1);
+        float t1 = radius * cos(phi);
+        float t2 = radius * sin(phi);
+        float s = 0.5 * (1.0 + Vh.z);
+        t2 = (1.0 - s) * sqrt(max(1.0 - t1 * t1, 0.0)) + s * t2;
+        vec3 Nh = t1 * T1 + t2 * T2 + sqrt(max(1.0 - t1 * t1 - t2 * t2, 0.0)) * Vh;
         float contributionSchlick = 0.0;
         float contributionCorrelated = 0.0;
-        if (NoL > 0.0 && VoH > 0.0) {
-            float pdfL = pdfH / (4.0 * VoH);
-            float NoH = saturate(cosTheta);
-            float f = fresnelSchlickSg(vec3(1.0), VoH).x;
-            float dTimesFNoL = distributionGgx(a2, NoH) * f * NoL;
-            contributionSchlick = dTimesFNoL * visibilitySmithSchlick(alpha, NoV, NoL) / pdfL;
-            contributionCorrelated =
-                dTimesFNoL * visibilitySmithGgxCorrelated(alpha, NoV, NoL) / pdfL;
+        if (Nh.z > 0.0) {
+            vec3 H = accurateNormalize(vec3(alpha * Nh.x, alpha * Nh.y, Nh.z));
+            float tanSq = a2 * (Nh.x * Nh.x + Nh.y * Nh.y) / (Nh.z * Nh.z);
+            float VoH = dot(V, H);
+            vec3 L = 2.0 * VoH * H - V;
+            float NoL = L.z;
+            if (NoL > 0.0 && VoH > 0.0) {
+                float pdfL = smithG1OverNoV(alpha, NoV) * ggxFromTanSq(a2, tanSq) / 4.0;
+                float f = fresnelSchlickSg(vec3(1.0), VoH).x;
+                float NoH = cosFromTanSq(tanSq);
+                float dTimesFNoL = distributionGgx(a2, NoH) * f * NoL;
+                contributionSchlick = dTimesFNoL * visibilitySmithSchlick(alpha, NoV, NoL) / pdfL;
+                contributionCorrelated =
+                    dTimesFNoL * visibilitySmithGgxCorrelated(alpha, NoV, NoL) / pdfL;
+            }
         }
         uint caseIndex = cell * sampleCount + i;
         tally(t, contributionSchlick, 0.0, kNoUpperBound, caseIndex);
