@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,8 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "candela/content/exr_image.h"
 
 namespace {
 
@@ -84,6 +87,64 @@ TEST(Cli, OneRunCanCaptureBothExrAndPng) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_GT(std::filesystem::file_size(dir / "both.exr"), 0u);
     EXPECT_GT(std::filesystem::file_size(dir / "both.png"), 0u);
+}
+
+// Every sample model loads from ../shared/assets and renders with no NaN/Inf and no
+// validation message, lit by the viewing defaults (camera framing it, sun and fill).
+TEST(Cli, SampleModelsRender) {
+    auto dir = tempDir();
+    for (const char* model : {"Box", "BoxTextured", "DamagedHelmet", "MetalRoughSpheresNoTextures",
+                              "TextureSettingsTest", "AlphaBlendModeTest"}) {
+        std::string path =
+            std::string(CANDELA_SHARED_ASSETS) + "/models/" + model + "/" + model + ".glb";
+        auto exr = dir / (std::string(model) + ".exr");
+        RunResult r =
+            runCandela("run " + path + " --headless --size 96x96 --capture " + exr.string());
+        ASSERT_EQ(r.exitCode, 0) << model << ": " << r.output;
+        candela::content::Diagnostics diagnostics;
+        auto image = candela::content::readExrImage(exr, diagnostics);
+        ASSERT_TRUE(image.has_value()) << model;
+        EXPECT_EQ(image->replacedNonFiniteTexels, 0u) << model;
+        // Something was drawn: not every pixel equals the background.
+        const float* first = image->image.texel(0, 0);
+        bool varied = false;
+        for (uint32_t y = 0; y < image->image.height && !varied; ++y) {
+            for (uint32_t x = 0; x < image->image.width && !varied; ++x) {
+                varied = image->image.texel(x, y)[0] != first[0];
+            }
+        }
+        EXPECT_TRUE(varied) << model << " rendered as a flat image";
+    }
+}
+
+TEST(Cli, DemoRendersHeadlessWithEveryFeature) {
+    auto dir = tempDir();
+    RunResult r = runCandela("demo --headless --size 160x90 --frames 2 --stats " +
+                             (dir / "demo.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    nlohmann::json stats = nlohmann::json::parse(readBytes(dir / "demo.json"));
+    auto features = stats["features"].get<std::vector<std::string>>();
+    for (const char* expected : {"shading_subsurface", "shading_legacy_diffuse_specular",
+                                 "lights_sphere", "lights_tube"}) {
+        EXPECT_NE(std::find(features.begin(), features.end(), expected), features.end())
+            << expected;
+    }
+}
+
+TEST(Cli, SceneFileOfUnknownTypeIsRejected) {
+    auto path = tempDir() / "scene.txt";
+    std::ofstream(path) << "not a scene";
+    RunResult r = runCandela("run " + path.string() + " --headless");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("scene.txt"), std::string::npos) << r.output;
+}
+
+TEST(Cli, GarbageGltfGivesAClearErrorNotACrash) {
+    auto path = tempDir() / "garbage.glb";
+    std::ofstream(path, std::ios::binary) << "glTF\x02\x00\x00\x00garbage";
+    RunResult r = runCandela("run " + path.string() + " --headless --size 32x32");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("garbage.glb"), std::string::npos) << r.output;
 }
 
 TEST(Cli, ZeroSizeIsRejected) {
