@@ -107,13 +107,19 @@ TEST(WhiteFurnace, SpecularAlbedoNeverExceedsOne) {
 
 // eq. 3 is normalised so that the projected microfacet area is the macro surface:
 // integral of D(h) (n.h) dh = 1. Evaluated by a 4096-point midpoint rule in ln(tan^2), whose
-// own error is ~1e-7, so what remains is the fp32 behaviour of the shared D.
+// own error is ~1e-7, at NoH correct to an ulp, so what remains is the fp32 behaviour of D.
+// The lobe lives within ~a2 / 2 of NoH = 1, where floats are 2^-24 apart: at kMinRoughness
+// (a2 = 1.6e-7) that is ~1.3 representable NoH values, so no fp32 evaluation of D(NoH) can
+// integrate correctly there (measured: -4.2% at 0.02, -2.6% at 0.03, -0.14% at 0.05; and +41%
+// at 0.02 when NoH is formed as 1 / sqrt(1 + tan^2) in fp32, as a shading dot product would).
+// Held to 1e-3 from roughness 0.075 (~260 NoH values across the lobe), to 5% below.
 TEST(WhiteFurnace, ProjectedGgxIntegratesToOne) {
     std::printf("roughness  alpha      integral of D NoH\n");
     for (size_t r = 0; r < kRoughness.size(); ++r) {
         const FurnaceCell& c = cell(r, 0);
         std::printf("%9.4g  %.3e  %.7f\n", double(kRoughness[r]), double(c.alpha),
                     double(c.projectedNdf));
-        EXPECT_NEAR(c.projectedNdf, 1.0f, 1e-3f) << "roughness " << kRoughness[r];
+        const float tolerance = kRoughness[r] >= 0.075f ? 1e-3f : 0.05f;
+        EXPECT_NEAR(c.projectedNdf, 1.0f, tolerance) << "roughness " << kRoughness[r];
     }
 }
