@@ -183,5 +183,42 @@ TEST(TransformPropagation, ReparentAndDestroyRebuildTheOrder) {
     expectNear(registry.get<WorldTransform>(c).position(), {0, 2, 3});
 }
 
+TEST(TransformPropagation, SortingThePoolsKeepsOtherEntitiesIntact) {
+    Registry registry;
+    // Entities with only one of the two transforms, interleaved with complete ones.
+    std::vector<Entity> partial, complete;
+    for (int i = 0; i < 30; ++i) {
+        const Entity e = registry.create();
+        if (i % 3 == 0) {
+            registry.emplace<LocalTransform>(e, LocalTransform{{float(i), 0, 0}, {}, {1, 1, 1}});
+            partial.push_back(e);
+        } else if (i % 3 == 1) {
+            registry.emplace<WorldTransform>(e,
+                                             WorldTransform{Mat4::translation({0, float(i), 0})});
+            partial.push_back(e);
+        } else {
+            complete.push_back(spawn(registry, {float(i), 0, 0}));
+        }
+    }
+    for (std::size_t i = 1; i < complete.size(); ++i) {
+        ASSERT_EQ(setParent(registry, complete[i], complete[i - 1]), ReparentResult::Ok);
+    }
+    EXPECT_TRUE(propagateTransforms(registry).rebuiltOrder);
+    float x = 0;
+    for (Entity e : complete) {
+        x += registry.get<LocalTransform>(e).position.x;
+        expectNear(registry.get<WorldTransform>(e).position(), {x, 0, 0});
+    }
+    for (std::size_t i = 0; i < partial.size(); ++i) {
+        const Entity e = partial[i];
+        if (const LocalTransform* l = registry.tryGet<LocalTransform>(e)) {
+            EXPECT_FALSE(registry.has<WorldTransform>(e));
+            EXPECT_EQ(std::fmod(l->position.x, 3.0f), 0.0f);
+        } else {
+            EXPECT_EQ(std::fmod(registry.get<WorldTransform>(e).position().y, 3.0f), 1.0f);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace candela::ecs
