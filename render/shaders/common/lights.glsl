@@ -105,7 +105,15 @@ float lineIrradiance(vec3 N, vec3 L0, vec3 L1) {
     float len0 = length(L0);
     float len1 = length(L1);
     float cosSum = dot(N, L0) / (2.0 * max(len0, 1e-12)) + dot(N, L1) / (2.0 * max(len1, 1e-12));
-    return 2.0 * saturate(cosSum) / (len0 * len1 + dot(L0, L1) + 2.0 * kFalloffBias);
+    // |L0||L1| + L0.L1 cancels when the shaded point is near the segment (L0, L1 opposite):
+    // for a 10 km tube 1 m away it came out 0 or negative, giving Inf, NaN or 1e4x too bright
+    // (found by tests/render/stability). There the equal |L0 x L1|^2 / (|L0||L1| - L0.L1) is
+    // used, with L0 x L1 = L0 x (L1 - L0) free of the cancellation.
+    float L0oL1 = dot(L0, L1);
+    vec3 L0xL1 = cross(L0, L1 - L0);
+    float denominator = L0oL1 >= 0.0 ? len0 * len1 + L0oL1
+                                     : dot(L0xL1, L0xL1) / (len0 * len1 - L0oL1);
+    return 2.0 * saturate(cosSum) / (denominator + 2.0 * kFalloffBias);
 }
 
 // eq. 19: parameter of the point on segment L0 + t * Ld closest to the reflection ray R.
@@ -149,11 +157,16 @@ LightIncidence evaluateLocalLight(Light light, vec3 P, vec3 N, vec3 R, float alp
         energy *= tubeEnergyNormalization(alpha, light.sourceLength, length(specularPoint));
     } else if (kSphereLightsEnabled && light.sourceRadius > 0.0) {
         float sinSigmaSq = light.sourceRadius * light.sourceRadius / max(centerDistSq, 1e-30);
-        // Sphere luminance = I / (pi r^2); irradiance = luminance * factor.
-        diffuseFactor = sphereIrradianceFactor(dot(N, o.diffuseL), sinSigmaSq) /
-                        (PI * light.sourceRadius * light.sourceRadius);
+        // Sphere luminance = I / (pi r^2); irradiance = luminance * factor, i.e. per candela
+        // factor / (pi sin^2 sigma) / d^2. A sphere whose sin^2 sigma underflows (radius under
+        // ~1e-15 of the distance) is a point: dividing by its r^2 gave 0 / 0 = NaN (found by
+        // tests/render/stability).
+        float cosTheta = dot(N, o.diffuseL);
+        float relativeToPoint = sinSigmaSq > 1e-30
+                                    ? sphereIrradianceFactor(cosTheta, sinSigmaSq) / (PI * sinSigmaSq)
+                                    : saturate(cosTheta);
         // Far away the factor equals NoL / d^2; the +1e-4 bias keeps the point-light limit.
-        diffuseFactor *= centerDistSq / (centerDistSq + kFalloffBias);
+        diffuseFactor = relativeToPoint * inverseSquare(centerDistSq);
     } else {
         diffuseFactor = saturate(dot(N, o.diffuseL)) * inverseSquare(centerDistSq);
     }
