@@ -68,6 +68,14 @@ TEST_F(ViewTest, CallbackWithoutEntity) {
     EXPECT_EQ(count, 5);
 }
 
+TEST_F(ViewTest, ConstRegistryGivesReadOnlyViews) {
+    const Registry& readOnly = registry;
+    float sum = 0;
+    readOnly.view<const Position, const Velocity>(exclude<Frozen>)
+        .each([&](const Position& p, const Velocity& v) { sum += p.x + v.x; });
+    EXPECT_EQ(sum, 45.0f + 10.0f);
+}
+
 TEST_F(ViewTest, RangeFor) {
     std::set<Entity> seen;
     for (auto [e, p, v] : registry.view<Position, const Velocity>(exclude<Frozen>)) {

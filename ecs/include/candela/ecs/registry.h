@@ -119,6 +119,9 @@ public:
     // and Velocity and without Frozen. Const components are read-only in the callback.
     template <class... Ts, class... Excluded>
     View<TypeList<Ts...>, Exclude<Excluded...>> view(Exclude<Excluded...> = {});
+    // On a const registry every viewed component must be const: view<const Light>().
+    template <class... Ts, class... Excluded>
+    View<TypeList<Ts...>, Exclude<Excluded...>> view(Exclude<Excluded...> = {}) const;
 
     // Declares an owning group over Ts (once; later calls just return the view). From then
     // on the Ts pools keep the entities that have all of Ts packed at their front in the same
@@ -382,6 +385,13 @@ HookId Registry::onRemove(ComponentHook hook) {
 template <class... Ts, class... Excluded>
 View<TypeList<Ts...>, Exclude<Excluded...>> Registry::view(Exclude<Excluded...>) {
     return View<TypeList<Ts...>, Exclude<Excluded...>>(*this);
+}
+
+template <class... Ts, class... Excluded>
+View<TypeList<Ts...>, Exclude<Excluded...>> Registry::view(Exclude<Excluded...>) const {
+    static_assert((std::is_const_v<Ts> && ...), "a const registry gives read-only views only");
+    // The view only reads through const component types; the lock counter is mutable.
+    return View<TypeList<Ts...>, Exclude<Excluded...>>(const_cast<Registry&>(*this));
 }
 
 template <Component... Ts>
