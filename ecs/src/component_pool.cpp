@@ -71,20 +71,21 @@ void ComponentPool::grow() {
 
 void ComponentPool::swapPositions(std::uint32_t a, std::uint32_t b) noexcept {
     if (a == b) return;
-    // Swap through a temporary: on the stack for small trivial types, else on the heap.
-    alignas(std::max_align_t) std::byte small[64];
-    std::byte* spare = elementSize_ <= sizeof(small) && trivial_ ? small : nullptr;
-    if (spare != nullptr) {
-        detail::copyComponent(spare, at(a), elementSize_);
+    // Swap through a temporary: on the stack unless the component is large or over-aligned.
+    alignas(std::max_align_t) std::byte local[256];
+    const bool fits = elementSize_ <= sizeof(local) && ops_->alignment <= alignof(std::max_align_t);
+    std::byte* temp =
+        fits ? local : static_cast<std::byte*>(allocateArray(elementSize_, ops_->alignment));
+    if (trivial_) {
+        detail::copyComponent(temp, at(a), elementSize_);
         detail::copyComponent(at(a), at(b), elementSize_);
-        detail::copyComponent(at(b), spare, elementSize_);
+        detail::copyComponent(at(b), temp, elementSize_);
     } else {
-        void* temp = allocateArray(elementSize_, ops_->alignment);
         ops_->relocate(temp, at(a));
         ops_->relocate(at(a), at(b));
         ops_->relocate(at(b), temp);
-        freeArray(temp, ops_->alignment);
     }
+    if (!fits) freeArray(temp, ops_->alignment);
     std::swap(ticks_[a], ticks_[b]);
     std::swap(entities_[a], entities_[b]);
     const Entity ea = entities_[a], eb = entities_[b];

@@ -173,6 +173,9 @@ TEST(Registry, Resources) {
     EXPECT_EQ(registry.resources().tryGet<Time>()->seconds, 2.0);
     EXPECT_TRUE(registry.resources().remove<Time>());
     EXPECT_EQ(registry.resources().tryGet<Time>(), nullptr);
+#ifdef NDEBUG
+    EXPECT_THROW((void)registry.resources().get<Time>(), EcsError);
+#endif
 }
 
 TEST(Registry, OneMillionEntitiesCreatedIteratedDestroyed) {

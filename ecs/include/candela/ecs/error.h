@@ -10,6 +10,7 @@ namespace candela::ecs {
 enum class EcsErrorCode {
     StaleEntity,                  // the handle's entity was destroyed (or never existed)
     MissingComponent,             // get<T>() on an entity without T
+    MissingResource,              // resources().get<T>() with no T emplaced
     StructuralChangeWhileLocked,  // create/destroy/emplace/remove during iteration or a hook
     EntityLimitReached,           // all 2^32-1 slot indices are in use or retired
     GroupConflict,                // a component pool already belongs to another group

@@ -3,12 +3,13 @@
 // state). At most one value per type. Lookups are a vector index, so systems can fetch them
 // every frame. Adding or removing a resource is not thread-safe; reading one from parallel
 // systems is (the scheduler orders writers through the declared resource accesses).
-#include <cassert>
 #include <cstdint>
 #include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#include <candela/ecs/error.h>
 
 namespace candela::ecs {
 
@@ -54,17 +55,19 @@ public:
         const std::uint32_t id = resourceId<T>();
         return id < slots_.size() ? static_cast<const T*>(slots_[id].object) : nullptr;
     }
-    // Precondition: the resource exists (checked by assert only: this is a hot path).
+    // The resource must exist (EcsError MissingResource otherwise; tryGet() to probe).
     template <class T>
-    T& get() noexcept {
+    T& get() {
         T* p = tryGet<T>();
-        assert(p != nullptr && "resource was never emplaced");
+        CANDELA_ECS_CHECK(p != nullptr, EcsErrorCode::MissingResource,
+                          "resources().get<T>() before emplace<T>()");
         return *p;
     }
     template <class T>
-    const T& get() const noexcept {
+    const T& get() const {
         const T* p = tryGet<T>();
-        assert(p != nullptr && "resource was never emplaced");
+        CANDELA_ECS_CHECK(p != nullptr, EcsErrorCode::MissingResource,
+                          "resources().get<T>() before emplace<T>()");
         return *p;
     }
     template <class T>
