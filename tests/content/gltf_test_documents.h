@@ -96,7 +96,7 @@ inline nlohmann::json quadDocument() {
 
 inline std::vector<std::byte> bytesOf(const std::string& text) {
     std::vector<std::byte> out(text.size());
-    std::memcpy(out.data(), text.data(), text.size());
+    if (!text.empty()) std::memcpy(out.data(), text.data(), text.size());
     return out;
 }
 
