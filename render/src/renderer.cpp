@@ -1,18 +1,25 @@
 #include "candela/render/renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 
+#include "candela/ecs/job_system.h"
+#include "candela/render/frame_submitter.h"
 #include "candela/render/gpu_context.h"
 #include "candela/render/scene_resources.h"
+#include "clustered/cluster_grid.h"
+#include "clustered/light_assignment.h"
 #include "gbuffer_targets.h"
 #include "gpu_camera.h"
-#include "gpu_light.h"
+#include "lights/gpu_light_buffer.h"
+#include "passes/depth_occupancy/depth_occupancy_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
+#include "vk/vk_check.h"
 
 namespace candela::render {
 
@@ -22,10 +29,15 @@ float exposureFromEv100(float ev100) {
 
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
 // The shader variant a scene needs: only the shading models its drawn materials use and the
 // light shapes its lights have.
-LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resources) {
+LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resources,
+                            const RendererOptions& options) {
     LightingFeatures f;
+    f.clustered = options.lightCulling == LightCulling::Clustered;
+    f.countLightPairs = options.countLightPairs;
     for (const DrawItem& draw : scene.draws) {
         switch (resources.material(draw.material).shadingModel) {
             case content::ShadingModel::Subsurface:
@@ -47,24 +59,57 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     return f;
 }
 
+// Host-visible storage buffer of at least `bytes`; grows by doubling. True when it grew.
+bool ensureBuffer(GpuContext& context, GpuBuffer& buffer, VkDeviceSize bytes) {
+    bytes = std::max<VkDeviceSize>(bytes, 16);
+    if (buffer.handle() && buffer.size() >= bytes) return false;
+    VkDeviceSize size = std::max(bytes, buffer.size() * 2);
+    buffer =
+        GpuBuffer(context, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryLocation::HostVisible);
+    return true;
+}
+
+void computeToHostBarrier(VkCommandBuffer cmd) {
+    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    barrier.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
+    barrier.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
 }  // namespace
 
-Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height)
+Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
+                   const RendererOptions& options)
     : context_(context),
+      options_(options),
       width_(width),
       height_(height),
       cameraBuffer_(context, sizeof(GpuCamera), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                     MemoryLocation::HostVisible),
-      lightBuffer_(context, sizeof(GpuLight), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                   MemoryLocation::HostVisible) {
+      lights_(std::make_unique<GpuLightBuffer>()),
+      grid_(std::make_unique<ClusterGrid>()),
+      assignment_(std::make_unique<LightAssignment>()),
+      jobs_(std::make_unique<ecs::JobSystem>()) {
     createTargets();
     trianglePass_ = std::make_unique<TrianglePass>(context_);
     gbufferPass_ = std::make_unique<GBufferPass>(context_);
+    occupancyPass_ = std::make_unique<DepthOccupancyPass>(context_);
     lightingPass_ = std::make_unique<LightingPass>(context_);
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
+    VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    queryInfo.queryCount = 2;
+    CANDELA_VK_CHECK(vkCreateQueryPool(context.device(), &queryInfo, nullptr, &timestamps_));
 }
 
-Renderer::~Renderer() = default;
+Renderer::~Renderer() {
+    vkDestroyQueryPool(context_.device(), timestamps_, nullptr);
+}
 
 void Renderer::resize(uint32_t width, uint32_t height) {
     width_ = width;
@@ -80,34 +125,56 @@ void Renderer::createTargets() {
     ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
     gbuffer_ = std::make_unique<GBufferTargets>(context_, width_, height_);
+    ensureBuffer(context_, pairCounts_,
+                 VkDeviceSize(LightingPass::workgroupCount(width_, height_)) * 8);
 }
 
 void Renderer::uploadFrameData(const FrameInputs& inputs) {
     const FrameScene& scene = inputs.scene;
-    lightCount_ = uint32_t(scene.lights.size());
-    VkDeviceSize lightBytes = std::max<VkDeviceSize>(lightCount_, 1) * sizeof(GpuLight);
-    if (lightBuffer_.size() < lightBytes) {
-        lightBuffer_ = GpuBuffer(context_, lightBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                 MemoryLocation::HostVisible);
-    }
-    auto* lights = static_cast<GpuLight*>(lightBuffer_.mapped());
-    for (uint32_t i = 0; i < lightCount_; ++i)
-        lights[i] = packLight(scene.lights[i]);
+    lights_->update(context_, scene.lights, scene.changedLights, scene.lightsRestructured);
+    const CameraView& view = scene.camera;
+    *grid_ = ClusterGrid::make({options_.tileSize, options_.slices}, width_, height_,
+                               view.projection[0][0], view.projection[1][1], view.nearPlane,
+                               view.farPlane);
 
     GpuCamera camera{};
-    camera.viewProjection = scene.camera.projection * scene.camera.view;
+    camera.viewProjection = view.projection * view.view;
     camera.inverseViewProjection = glm::inverse(camera.viewProjection);
-    camera.cameraPosition = glm::vec4(scene.camera.position, 1.0f);
-    camera.frameInfo = glm::uvec4(width_, height_, lightCount_, 0u);
+    camera.cameraPosition = glm::vec4(view.position, 1.0f);
+    camera.frameInfo = glm::uvec4(width_, height_, lights_->count(), lights_->capacity());
     std::memcpy(cameraBuffer_.mapped(), &camera, sizeof(camera));
 }
 
-void Renderer::recordScene(VkCommandBuffer cmd, const FrameInputs& inputs,
-                           SceneResources& resources) {
-    LightingFeatures features = featuresOf(inputs.scene, resources);
+void Renderer::assignLightsToClusters(const FrameInputs& inputs) {
+    std::span<const uint64_t> occupancy(static_cast<const uint64_t*>(occupancy_.mapped()),
+                                        grid_->tileCount());
+    assignLights(*grid_, inputs.scene.lights, inputs.scene.camera.view, occupancy, jobs_.get(),
+                 *assignment_);
+    ensureBuffer(context_, clusterRanges_, assignment_->clusterRanges.size() * sizeof(uint32_t));
+    // The lists are sized exactly each frame, so a light is never dropped; growing the buffer
+    // is what the overflow counter reports.
+    if (ensureBuffer(context_, lightIndices_,
+                     assignment_->lightIndices.size() * sizeof(uint32_t)) &&
+        !assignment_->lightIndices.empty()) {
+        ++stats_.lightListOverflows;
+    }
+    std::memcpy(clusterRanges_.mapped(), assignment_->clusterRanges.data(),
+                assignment_->clusterRanges.size() * sizeof(uint32_t));
+    std::memcpy(lightIndices_.mapped(), assignment_->lightIndices.data(),
+                assignment_->lightIndices.size() * sizeof(uint32_t));
+    stats_.clusters = grid_->clusterCount();
+    stats_.clustersOccupied = assignment_->occupiedClusters;
+    stats_.lightClusterPairs = assignment_->assignedPairs;
+}
+
+void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
+                           const FrameInputs& inputs, SceneResources& resources) {
+    LightingFeatures features = featuresOf(inputs.scene, resources, options_);
     lightingPass_->setFeatures(features);
     features_ = features.names();
     uploadFrameData(inputs);
+    stats_.lights = lights_->count();
+    stats_.lightsRewritten = lights_->rewrittenLastUpdate();
 
     for (const GpuImage& image : gbuffer_->color) {
         transitionImage(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -141,11 +208,65 @@ void Renderer::recordScene(VkCommandBuffer cmd, const FrameInputs& inputs,
                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                     VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    lightingPass_->record(cmd, *gbuffer_, hdr_, cameraBuffer_, lightBuffer_);
+
+    stats_.lightAssignMs = 0.0;
+    if (features.clustered) {
+        // Geometry first: the occupancy masks must be on the CPU before lights are assigned.
+        ensureBuffer(context_, occupancy_, VkDeviceSize(grid_->tileCount()) * 8);
+        occupancyPass_->record(cmd, gbuffer_->depth, *grid_, occupancy_);
+        computeToHostBarrier(cmd);
+        submitter.submit();
+        submitter.waitIdle();
+        Clock::time_point start = Clock::now();
+        assignLightsToClusters(inputs);
+        stats_.lightAssignMs =
+            std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        cmd = submitter.begin();
+    } else {
+        // The brute-force variant never reads the lists; bind valid placeholders.
+        ensureBuffer(context_, clusterRanges_, 16);
+        ensureBuffer(context_, lightIndices_, 16);
+        assignment_->directionalCount = 0;
+    }
+
+    vkCmdResetQueryPool(cmd, timestamps_, 0, 2);
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, 0);
+    LightingPass::Inputs lighting{
+        gbuffer_.get(), &hdr_,        &cameraBuffer_, &lights_->buffer(),           &clusterRanges_,
+        &lightIndices_, &pairCounts_, grid_.get(),    assignment_->directionalCount};
+    lightingPass_->record(cmd, lighting);
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_, 1);
+    timestampsWritten_ = true;
+    if (features.countLightPairs) computeToHostBarrier(cmd);
 }
 
-void Renderer::recordFrame(VkCommandBuffer cmd, const FrameInputs& inputs,
-                           SceneResources* resources) {
+void Renderer::recordTonemap(VkCommandBuffer cmd, float ev100) {
+    transitionImage(cmd, ldr_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_PIPELINE_STAGE_2_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    VkMemoryBarrier2 lit{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    lit.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    lit.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    lit.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    lit.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &lit;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+    tonemapPass_->record(cmd, hdr_, ldr_, exposureFromEv100(ev100));
+
+    transitionImage(cmd, hdr_, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
+                    VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    transitionImage(cmd, ldr_, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                    VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+}
+
+VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInputs& inputs,
+                                      SceneResources* resources) {
+    VkCommandBuffer cmd = submitter.begin();
+    timestampsWritten_ = false;
     transitionImage(cmd, hdr_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                     VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -159,30 +280,33 @@ void Renderer::recordFrame(VkCommandBuffer cmd, const FrameInputs& inputs,
             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
     } else {
-        recordScene(cmd, inputs, *resources);
+        recordScene(submitter, cmd, inputs, *resources);
     }
     features_.push_back("tonemap_aces");
+    recordTonemap(cmd, inputs.scene.camera.ev100);
+    return cmd;
+}
 
-    transitionImage(cmd, ldr_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_PIPELINE_STAGE_2_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    VkMemoryBarrier2 lit{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    lit.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    lit.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    lit.dstStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    lit.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.memoryBarrierCount = 1;
-    dependency.pMemoryBarriers = &lit;
-    vkCmdPipelineBarrier2(cmd, &dependency);
-    tonemapPass_->record(cmd, hdr_, ldr_, exposureFromEv100(inputs.scene.camera.ev100));
-
-    transitionImage(cmd, hdr_, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
-                    VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    transitionImage(cmd, ldr_, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+const RendererStats& Renderer::collectStats() {
+    stats_.lightingMs = 0.0;
+    if (timestampsWritten_) {
+        uint64_t ticks[2] = {0, 0};
+        if (vkGetQueryPoolResults(context_.device(), timestamps_, 0, 2, sizeof(ticks), ticks,
+                                  sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS) {
+            stats_.lightingMs =
+                double(ticks[1] - ticks[0]) * context_.properties().limits.timestampPeriod * 1e-6;
+        }
+    }
+    stats_.lightEvaluations = 0;
+    stats_.litPairs = 0;
+    if (options_.countLightPairs && timestampsWritten_) {
+        const auto* counts = static_cast<const uint32_t*>(pairCounts_.mapped());
+        for (uint32_t g = 0; g < LightingPass::workgroupCount(width_, height_); ++g) {
+            stats_.lightEvaluations += counts[2 * g];
+            stats_.litPairs += counts[2 * g + 1];
+        }
+    }
+    return stats_;
 }
 
 }  // namespace candela::render

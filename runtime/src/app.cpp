@@ -58,6 +58,7 @@ struct Session {
     std::unique_ptr<render::Renderer> renderer;
     std::unique_ptr<render::FrameSubmitter> submitter;
     std::unique_ptr<render::SceneResources> resources;
+    std::unique_ptr<LightTable> lightTable;
     ExtractedFrame extracted;
 };
 
@@ -67,10 +68,13 @@ render::SceneResources* prepareFrame(Session& s, LoadedScene& scene, double seco
     if (scene.animate) scene.animate(*scene.world, seconds);
     scene.world->updateTransforms();
     float aspect = float(s.renderer->width()) / float(s.renderer->height());
-    extractFrame(scene.world->registry, *s.resources, aspect, s.extracted);
+    if (!s.lightTable) s.lightTable = std::make_unique<LightTable>(scene.world->registry);
+    extractFrame(scene.world->registry, *s.lightTable, *s.resources, aspect, s.extracted);
     scene.frame.scene.camera = s.extracted.camera;
     scene.frame.scene.draws = s.extracted.draws;
     scene.frame.scene.lights = s.extracted.lights;
+    scene.frame.scene.changedLights = s.extracted.changedLights;
+    scene.frame.scene.lightsRestructured = s.extracted.lightsRestructured;
     return s.resources.get();
 }
 
@@ -78,14 +82,14 @@ void renderHeadless(Session& s, LoadedScene& scene, uint32_t frames,
                     render::FrameReadback* readback, FrameStats& stats) {
     for (uint32_t i = 0; i < frames; ++i) {
         Clock::time_point start = Clock::now();
-        VkCommandBuffer cmd = s.submitter->begin();
         render::SceneResources* resources = prepareFrame(s, scene, i * kHeadlessSecondsPerFrame);
-        s.renderer->recordFrame(cmd, scene.frame, resources);
+        VkCommandBuffer cmd = s.renderer->recordFrame(*s.submitter, scene.frame, resources);
         bool last = i + 1 == frames;
         if (last && readback) readback->recordCopy(cmd, *s.renderer);
         s.submitter->submit();
         s.submitter->waitIdle();
         stats.frameMs.push_back(millisecondsSince(start));
+        stats.addRendererStats(s.renderer->collectStats());
     }
 }
 
@@ -112,10 +116,9 @@ void renderWindowed(Session& s, Window& window, render::Swapchain& swapchain, Lo
             swapchain.recreate(w, h);
             continue;
         }
-        VkCommandBuffer cmd = s.submitter->begin();
         render::SceneResources* resources =
             prepareFrame(s, scene, std::chrono::duration<double>(Clock::now() - runStart).count());
-        s.renderer->recordFrame(cmd, scene.frame, resources);
+        VkCommandBuffer cmd = s.renderer->recordFrame(*s.submitter, scene.frame, resources);
         bool last = frames != 0 && i + 1 == frames;
         if (last && readback) readback->recordCopy(cmd, *s.renderer);
         swapchain.recordBlit(cmd, s.renderer->ldrTarget(), imageIndex);
@@ -128,6 +131,7 @@ void renderWindowed(Session& s, Window& window, render::Swapchain& swapchain, Lo
         }
         s.submitter->waitIdle();
         stats.frameMs.push_back(millisecondsSince(start));
+        stats.addRendererStats(s.renderer->collectStats());
     }
     // Closed before the last frame: nothing complete to capture from the readback.
     if (frames == 0 || stats.frameMs.size() < frames) readback = nullptr;
@@ -174,7 +178,11 @@ int runScene(const RunOptions& options) {
             window = std::make_unique<Window>(options.width, options.height, "Candela");
         }
         s.context = std::make_unique<render::GpuContext>(gpuOptions);
-        s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height);
+        render::RendererOptions rendererOptions;
+        rendererOptions.lightCulling = options.lightCulling;
+        rendererOptions.countLightPairs = options.stats.has_value();
+        s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
+                                                        rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
         s.resources = std::make_unique<render::SceneResources>(*s.context);
         stats.device = s.context->deviceName();

@@ -1,5 +1,6 @@
 #include "frame_extraction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
@@ -37,10 +38,9 @@ bool isFinite(const glm::mat4& m) {
 
 }  // namespace
 
-void extractFrame(ecs::Registry& registry, render::SceneResources& resources, float aspect,
-                  ExtractedFrame& out) {
+void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneResources& resources,
+                  float aspect, ExtractedFrame& out) {
     out.draws.clear();
-    out.lights.clear();
     out.hasCamera = false;
 
     registry.view<const ecs::WorldTransform, const content::MeshInstance>().each(
@@ -60,17 +60,10 @@ void extractFrame(ecs::Registry& registry, render::SceneResources& resources, fl
             }
         });
 
-    registry.view<const ecs::WorldTransform, const content::Light>().each(
-        [&](const ecs::WorldTransform& transform, const content::Light& light) {
-            glm::mat4 world = toGlm(transform.matrix);
-            if (!isFinite(world)) return;
-            render::LightInstance instance;
-            instance.light = light;
-            instance.position = glm::vec3(world[3]);
-            instance.direction = -unitColumn(world, 2, {0.0f, 0.0f, 1.0f});  // node -Z
-            instance.tubeAxis = unitColumn(world, 0, {1.0f, 0.0f, 0.0f});    // node +X
-            out.lights.push_back(instance);
-        });
+    lights.update();
+    out.lights = lights.lights();
+    out.changedLights = lights.changedSlots();
+    out.lightsRestructured = lights.restructured();
 
     registry.view<const ecs::WorldTransform, const content::Camera>().each(
         [&](const ecs::WorldTransform& transform, const content::Camera& camera) {
@@ -85,6 +78,8 @@ void extractFrame(ecs::Registry& registry, render::SceneResources& resources, fl
                 camera.verticalFov, aspect, camera.nearPlane > 0.0f ? camera.nearPlane : 0.05f);
             out.camera.position = position;
             out.camera.ev100 = render::ev100FromCamera(camera);
+            out.camera.nearPlane = camera.nearPlane > 0.0f ? camera.nearPlane : 0.05f;
+            out.camera.farPlane = std::max(camera.farPlane, out.camera.nearPlane * 2.0f);
             out.hasCamera = true;
         });
 }

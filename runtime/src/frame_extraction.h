@@ -6,18 +6,21 @@
 #include "candela/ecs/registry.h"
 #include "candela/render/frame_scene.h"
 #include "candela/render/scene_resources.h"
+#include "light_table.h"
 
 namespace candela::runtime {
 
 struct ExtractedFrame {
     std::vector<render::DrawItem> draws;
-    std::vector<render::LightInstance> lights;
+    std::span<const render::LightInstance> lights;  // the light table's slots
+    std::span<const uint32_t> changedLights;
+    bool lightsRestructured = true;
     render::CameraView camera;
     bool hasCamera = false;  // false: no entity has Camera + WorldTransform
 };
 
-// Uploads models on first sight (SceneResources caches them).
-void extractFrame(ecs::Registry& registry, render::SceneResources& resources, float aspect,
-                  ExtractedFrame& out);
+// Uploads models on first sight (SceneResources caches them); updates `lights`.
+void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneResources& resources,
+                  float aspect, ExtractedFrame& out);
 
 }  // namespace candela::runtime

@@ -6,12 +6,27 @@
 
 namespace candela::runtime {
 
+namespace {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    size_t mid = values.size() / 2;
+    return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
+}
+
+template <class F>
+std::vector<double> collect(const std::vector<render::RendererStats>& frames, F field) {
+    std::vector<double> out;
+    for (const render::RendererStats& f : frames)
+        out.push_back(double(field(f)));
+    return out;
+}
+
+}  // namespace
+
 double FrameStats::frameMsMedian() const {
-    if (frameMs.empty()) return 0.0;
-    std::vector<double> sorted = frameMs;
-    std::sort(sorted.begin(), sorted.end());
-    size_t mid = sorted.size() / 2;
-    return sorted.size() % 2 ? sorted[mid] : 0.5 * (sorted[mid - 1] + sorted[mid]);
+    return median(frameMs);
 }
 
 std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& stats) {
@@ -23,6 +38,20 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["frame_ms_median"] = stats.frameMsMedian();
     json["validation_messages"] = stats.validationMessages;
     json["features"] = stats.features;
+    // Light culling: counts describe the last frame; times are medians over all frames.
+    render::RendererStats last =
+        stats.frames.empty() ? render::RendererStats{} : stats.frames.back();
+    json["lights"] = last.lights;
+    json["lights_rewritten"] = last.lightsRewritten;
+    json["clusters"] = last.clusters;
+    json["clusters_occupied"] = last.clustersOccupied;
+    json["light_cluster_pairs"] = last.lightClusterPairs;
+    json["light_assign_ms"] =
+        median(collect(stats.frames, [](auto& f) { return f.lightAssignMs; }));
+    json["lighting_ms"] = median(collect(stats.frames, [](auto& f) { return f.lightingMs; }));
+    json["light_evaluations"] = last.lightEvaluations;
+    json["lit_pairs"] = last.litPairs;
+    json["light_list_overflows"] = last.lightListOverflows;
     std::ofstream out(path);
     if (!out) return path.string() + ": cannot open for writing";
     out << json.dump(2) << '\n';

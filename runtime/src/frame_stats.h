@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "candela/render/renderer_options.h"
+
 namespace candela::runtime {
 
 struct FrameStats {
@@ -14,7 +16,9 @@ struct FrameStats {
     std::vector<double> frameMs;  // CPU wall time per frame, including the wait for the GPU
     uint32_t validationMessages = 0;
     std::vector<std::string> features;
+    std::vector<render::RendererStats> frames;  // one per rendered frame
 
+    void addRendererStats(const render::RendererStats& frame) { frames.push_back(frame); }
     double frameMsMedian() const;
 };
 

@@ -37,7 +37,8 @@ render::ValidationMode validationFromEnvironment() {
 std::string runUsage() {
     return "usage: candela run <scene.json|scene.gltf|scene.glb|builtin:triangle> [--headless]\n"
            "                   [--size WxH] [--frames N] [--capture FILE.exr|FILE.png]...\n"
-           "                   [--stats FILE.json] [--validation off|on|require]\n"
+           "                   [--stats FILE.json] [--lights clustered|brute-force]\n"
+           "                   [--validation off|on|require]\n"
            "       candela demo [same options]\n";
 }
 
@@ -77,6 +78,14 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
         } else if (arg == "--stats") {
             if (!value(v)) return fail("--stats needs a file name");
             options.stats = v;
+        } else if (arg == "--lights") {
+            if (!value(v)) return fail("--lights needs clustered or brute-force");
+            if (v == "clustered")
+                options.lightCulling = render::LightCulling::Clustered;
+            else if (v == "brute-force")
+                options.lightCulling = render::LightCulling::BruteForce;
+            else
+                return fail("--lights needs clustered or brute-force, got '" + v + "'");
         } else if (arg == "--validation") {
             if (!value(v)) return fail("--validation needs off, on or require");
             if (v == "off")

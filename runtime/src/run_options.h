@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "candela/render/gpu_context.h"
+#include "candela/render/renderer_options.h"
 
 namespace candela::runtime {
 
@@ -19,6 +20,7 @@ struct RunOptions {
     std::vector<std::filesystem::path> captures;  // --capture may repeat (one .exr, one .png)
     std::optional<std::filesystem::path> stats;
     render::ValidationMode validation = render::ValidationMode::IfPresent;
+    render::LightCulling lightCulling = render::LightCulling::Clustered;
 };
 
 struct ParseResult {

@@ -19,13 +19,13 @@ inline GpuContextOptions requiredValidation() {
 
 inline CapturedFrame renderOffscreen(GpuContext& context, const FrameInputs& inputs, uint32_t width,
                                      uint32_t height, uint32_t frames = 1,
-                                     SceneResources* resources = nullptr) {
-    Renderer renderer(context, width, height);
+                                     SceneResources* resources = nullptr,
+                                     const RendererOptions& options = {}) {
+    Renderer renderer(context, width, height, options);
     FrameSubmitter submitter(context);
     FrameReadback readback(context, width, height);
     for (uint32_t i = 0; i < frames; ++i) {
-        VkCommandBuffer cmd = submitter.begin();
-        renderer.recordFrame(cmd, inputs, resources);
+        VkCommandBuffer cmd = renderer.recordFrame(submitter, inputs, resources);
         if (i + 1 == frames) readback.recordCopy(cmd, renderer);
         submitter.submit();
     }

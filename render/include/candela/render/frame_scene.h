@@ -15,6 +15,8 @@ struct CameraView {
     glm::mat4 projection{1.0f};
     glm::vec3 position{0.0f};
     float ev100 = 0.0f;
+    float nearPlane = 0.05f;  // must match the projection's
+    float farPlane = 500.0f;  // where the cluster grid's last depth slice begins
 };
 
 glm::mat4 reverseZPerspective(float verticalFov, float aspect, float nearPlane);
@@ -36,6 +38,10 @@ struct FrameScene {
     CameraView camera;
     std::span<const DrawItem> draws;
     std::span<const LightInstance> lights;
+    // Light slots whose data changed since the previous frame. When lightsRestructured is set
+    // (lights added or removed, or the caller does not track changes) every light is rewritten.
+    std::span<const uint32_t> changedLights;
+    bool lightsRestructured = true;
 };
 
 }  // namespace candela::render

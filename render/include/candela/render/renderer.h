@@ -1,6 +1,7 @@
 #pragma once
-// Owns the frame's render targets and passes, and records one frame into a command buffer:
-// G-buffer (+ emissive) -> deferred lighting -> exposure + tonemap.
+// Owns the frame's render targets and passes and runs one frame:
+//   G-buffer (+ emissive) -> depth occupancy -> light assignment (CPU) -> clustered
+//   deferred lighting -> exposure + tonemap.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -11,20 +12,31 @@
 #include "candela/render/frame_inputs.h"
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_image.h"
+#include "candela/render/renderer_options.h"
+
+namespace candela::ecs {
+class JobSystem;
+}
 
 namespace candela::render {
 
+class DepthOccupancyPass;
+class FrameSubmitter;
+class GBufferPass;
 class GpuContext;
+class GpuLightBuffer;
+class LightingPass;
 class SceneResources;
 class TonemapPass;
 class TrianglePass;
-class GBufferPass;
-class LightingPass;
+struct ClusterGrid;
 struct GBufferTargets;
+struct LightAssignment;
 
 class Renderer {
 public:
-    Renderer(GpuContext& context, uint32_t width, uint32_t height);
+    Renderer(GpuContext& context, uint32_t width, uint32_t height,
+             const RendererOptions& options = {});
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
@@ -32,11 +44,18 @@ public:
     void resize(uint32_t width, uint32_t height);
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
+    const RendererOptions& options() const { return options_; }
 
-    // Records every pass of one frame. `resources` holds the meshes and materials the scene's
-    // draws refer to (may be null when there are none). Afterwards both targets are in
-    // TRANSFER_SRC_OPTIMAL, ready for capture or for a blit to the swapchain.
-    void recordFrame(VkCommandBuffer cmd, const FrameInputs& inputs, SceneResources* resources);
+    // Records the frame's passes. Clustered lighting submits the geometry part and waits for
+    // it (light assignment reads the depth occupancy on the CPU), then begins a new command
+    // buffer. Returns the open command buffer holding the rest of the frame: the caller may
+    // append (capture copy, swapchain blit) and submits it. Afterwards both targets are in
+    // TRANSFER_SRC_OPTIMAL. `resources` holds what the draws refer to (null: no meshes).
+    VkCommandBuffer recordFrame(FrameSubmitter& submitter, const FrameInputs& inputs,
+                                SceneResources* resources);
+
+    // Reads the GPU-side measurements of the last frame; call once its submission completed.
+    const RendererStats& collectStats();
 
     const GpuImage& hdrTarget() const { return hdr_; }  // RGBA32F scene radiance
     const GpuImage& ldrTarget() const { return ldr_; }  // RGBA8, sRGB-encoded values
@@ -46,23 +65,37 @@ public:
 
 private:
     void createTargets();
-    void recordScene(VkCommandBuffer cmd, const FrameInputs& inputs, SceneResources& resources);
+    void recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd, const FrameInputs& inputs,
+                     SceneResources& resources);
     void uploadFrameData(const FrameInputs& inputs);
+    void assignLightsToClusters(const FrameInputs& inputs);
+    void recordTonemap(VkCommandBuffer cmd, float ev100);
 
     GpuContext& context_;
+    RendererOptions options_;
     uint32_t width_;
     uint32_t height_;
     GpuImage hdr_;
     GpuImage ldr_;
     std::unique_ptr<GBufferTargets> gbuffer_;
     GpuBuffer cameraBuffer_;
-    GpuBuffer lightBuffer_;
-    uint32_t lightCount_ = 0;
+    std::unique_ptr<GpuLightBuffer> lights_;
+    std::unique_ptr<ClusterGrid> grid_;
+    std::unique_ptr<LightAssignment> assignment_;
+    GpuBuffer occupancy_;      // uvec2 per tile, written by the GPU, read by the CPU
+    GpuBuffer clusterRanges_;  // offset, count per cluster
+    GpuBuffer lightIndices_;
+    GpuBuffer pairCounts_;  // uvec2 per lighting workgroup
+    VkQueryPool timestamps_ = VK_NULL_HANDLE;
+    bool timestampsWritten_ = false;
+    std::unique_ptr<ecs::JobSystem> jobs_;
     std::unique_ptr<TrianglePass> trianglePass_;
     std::unique_ptr<GBufferPass> gbufferPass_;
+    std::unique_ptr<DepthOccupancyPass> occupancyPass_;
     std::unique_ptr<LightingPass> lightingPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::vector<std::string> features_;
+    RendererStats stats_;
 };
 
 // Exposure scale for an EV100 (the same formula the shaders use).

@@ -1,19 +1,37 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Deferred lighting: reads the G-buffer and every light (brute force until clustered culling
-// replaces the list), adds the lit radiance to the HDR target that holds emissive already.
+// Deferred lighting: reads the G-buffer and adds the lit radiance to the HDR target, which
+// holds emissive already. Clustered: each pixel evaluates its cluster's light list (plus the
+// directional lights); brute force: every light at every pixel, the reference.
 #include "common/camera.glsl"
+#include "common/clusters.glsl"
+#include "common/light_buffer.glsl"
 #include "common/shading_models.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 1) readonly buffer Lights { Light lights[]; };
+layout(constant_id = 30) const bool kClustered = true;
+// Stats variant: counts evaluated and lit light-pixel pairs per workgroup.
+layout(constant_id = 31) const bool kCountLightPairs = false;
+
 layout(binding = 2) uniform sampler2D gbufferBaseColor;
 layout(binding = 3) uniform sampler2D gbufferNormalRoughMetal;
 layout(binding = 4) uniform sampler2D gbufferSpecularModel;
 layout(binding = 5) uniform sampler2D gbufferCustomData;
 layout(binding = 6) uniform sampler2D gbufferDepth;
 layout(binding = 7, rgba32f) uniform image2D hdrRadiance;
+layout(std430, binding = 8) readonly buffer ClusterRanges { uint clusterRanges[]; };
+layout(std430, binding = 9) readonly buffer LightIndices { uint lightIndices[]; };
+// Per workgroup: evaluated pairs, lit pairs (each fits 32 bits: 64 pixels x 2^26 lights).
+layout(std430, binding = 10) writeonly buffer PairCounts { uvec2 pairCounts[]; };
+
+layout(push_constant) uniform Push {
+    ClusterGridParams grid;
+    uint directionalCount;
+} push;
+
+shared uint groupEvaluations;
+shared uint groupLitPairs;
 
 Surface decodeSurface(ivec2 pixel, out vec3 N) {
     vec4 gb0 = texelFetch(gbufferBaseColor, pixel, 0);
@@ -30,36 +48,80 @@ Surface decodeSurface(ivec2 pixel, out vec3 N) {
     return s;
 }
 
-void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+struct PixelShading {
+    Surface surface;
+    vec3 P;
+    vec3 N;
+    vec3 V;
+    vec3 R;
+    float alpha;
+    vec3 radiance;
+    uint evaluations;
+    uint litPairs;
+};
+
+void addLight(inout PixelShading px, uint lightIndex) {
+    Light light = loadLight(lightIndex, camera.frameInfo.w);
+    LightIncidence incidence = light.type == kLightDirectional
+                                   ? evaluateDirectionalLight(light, px.N)
+                                   : evaluateLocalLight(light, px.P, px.N, px.R, px.alpha);
+    px.radiance += shadeSurface(px.surface, px.N, px.V, incidence);
+    if (kCountLightPairs) {
+        px.evaluations += 1u;
+        px.litPairs += any(greaterThan(incidence.incidentIlluminance, vec3(0.0))) ? 1u : 0u;
+    }
+}
+
+void shadePixel(ivec2 pixel, inout PixelShading px) {
     uvec2 size = camera.frameInfo.xy;
     if (pixel.x >= int(size.x) || pixel.y >= int(size.y)) return;
     float depth = texelFetch(gbufferDepth, pixel, 0).r;
     if (depth <= 0.0) return;  // background (reverse-Z: 0 is infinitely far)
-
-    vec3 N;
-    Surface s = decodeSurface(pixel, N);
-    if (s.shadingModel == kShadingUnlit) return;
+    px.surface = decodeSurface(pixel, px.N);
+    if (px.surface.shadingModel == kShadingUnlit) return;
 
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
     vec4 world = camera.inverseViewProjection * vec4(ndc, depth, 1.0);
-    vec3 P = world.xyz / world.w;
-    vec3 V = safeNormalize(camera.cameraPosition.xyz - P);
-    vec3 R = reflect(-V, N);
-    float alpha = alphaFromRoughness(s.roughness);
+    px.P = world.xyz / world.w;
+    px.V = safeNormalize(camera.cameraPosition.xyz - px.P);
+    px.R = reflect(-px.V, px.N);
+    px.alpha = alphaFromRoughness(px.surface.roughness);
 
-    vec3 radiance = vec3(0.0);
-    uint lightCount = camera.frameInfo.z;
-    for (uint i = 0u; i < lightCount; ++i) {
-        Light light = lights[i];
-        LightIncidence incidence;
-        if (light.type == kLightDirectional) {
-            incidence = evaluateDirectionalLight(light, N);
-        } else {
-            incidence = evaluateLocalLight(light, P, N, R, alpha);
-        }
-        radiance += shadeSurface(s, N, V, incidence);
+    if (kClustered) {
+        for (uint i = 0u; i < push.directionalCount; ++i) addLight(px, lightIndices[i]);
+        uvec2 tile = uvec2(pixel) / push.grid.tileSize;
+        uint slice = sliceOfDepth(push.grid, viewDepthFromNdc(depth, push.grid.nearPlane));
+        uint cluster = (slice * push.grid.tilesY + tile.y) * push.grid.tilesX + tile.x;
+        uint first = clusterRanges[2u * cluster];
+        uint count = clusterRanges[2u * cluster + 1u];
+        for (uint i = 0u; i < count; ++i) addLight(px, lightIndices[first + i]);
+    } else {
+        for (uint i = 0u; i < camera.frameInfo.z; ++i) addLight(px, i);
     }
     vec4 previous = imageLoad(hdrRadiance, pixel);
-    imageStore(hdrRadiance, pixel, vec4(previous.rgb + radiance, 1.0));
+    imageStore(hdrRadiance, pixel, vec4(previous.rgb + px.radiance, 1.0));
+}
+
+void main() {
+    if (kCountLightPairs && gl_LocalInvocationIndex == 0u) {
+        groupEvaluations = 0u;
+        groupLitPairs = 0u;
+    }
+    if (kCountLightPairs) barrier();
+
+    PixelShading px;
+    px.radiance = vec3(0.0);
+    px.evaluations = 0u;
+    px.litPairs = 0u;
+    shadePixel(ivec2(gl_GlobalInvocationID.xy), px);
+
+    if (kCountLightPairs) {
+        atomicAdd(groupEvaluations, px.evaluations);
+        atomicAdd(groupLitPairs, px.litPairs);
+        barrier();
+        if (gl_LocalInvocationIndex == 0u) {
+            uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+            pairCounts[group] = uvec2(groupEvaluations, groupLitPairs);
+        }
+    }
 }

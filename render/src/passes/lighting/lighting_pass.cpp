@@ -2,6 +2,7 @@
 
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_context.h"
+#include "clustered/gpu_cluster_params.h"
 #include "gbuffer_targets.h"
 #include "shaders/lighting.comp.spv.h"
 #include "vk/vk_check.h"
@@ -15,6 +16,14 @@ constexpr uint32_t kLegacyConstant = 11;
 constexpr uint32_t kSphereConstant = 20;
 constexpr uint32_t kTubeConstant = 21;
 constexpr uint32_t kSpotConstant = 22;
+// Declared in lighting.comp.
+constexpr uint32_t kClusteredConstant = 30;
+constexpr uint32_t kCountPairsConstant = 31;
+
+struct Push {
+    GpuClusterParams grid;
+    uint32_t directionalCount;
+};
 }  // namespace
 
 std::vector<std::string> LightingFeatures::names() const {
@@ -24,6 +33,8 @@ std::vector<std::string> LightingFeatures::names() const {
     if (sphereLights) out.push_back("lights_sphere");
     if (tubeLights) out.push_back("lights_tube");
     if (spotLights) out.push_back("lights_spot");
+    out.push_back(clustered ? "light_culling_clustered" : "light_culling_brute_force");
+    if (countLightPairs) out.push_back("light_pair_counters");
     return out;
 }
 
@@ -51,6 +62,8 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
     constants.set(kSphereConstant, features.sphereLights);
     constants.set(kTubeConstant, features.tubeLights);
     constants.set(kSpotConstant, features.spotLights);
+    constants.set(kClusteredConstant, features.clustered);
+    constants.set(kCountPairsConstant, features.countLightPairs);
     const DescriptorBinding bindings[] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -60,31 +73,44 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
         {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
         {6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
         {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+        {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     };
-    pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, 0, &constants);
+    pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
     built_ = true;
 }
 
-void LightingPass::record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const GpuImage& hdr,
-                          const GpuBuffer& cameraBuffer, const GpuBuffer& lightBuffer) const {
-    VkDescriptorBufferInfo cameraInfo{cameraBuffer.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo lightInfo{lightBuffer.handle(), 0, VK_WHOLE_SIZE};
+uint32_t LightingPass::workgroupCount(uint32_t width, uint32_t height) {
+    return ((width + 7) / 8) * ((height + 7) / 8);
+}
+
+void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo countsInfo{in.pairCounts->handle(), 0, VK_WHOLE_SIZE};
     std::array<VkDescriptorImageInfo, 5> images{};
     for (size_t i = 0; i < 4; ++i) {
-        images[i] = {pointSampler_, gbuffer.color[i].view(),
+        images[i] = {pointSampler_, in.gbuffer->color[i].view(),
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
-    images[4] = {pointSampler_, gbuffer.depth.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    images[4] = {pointSampler_, in.gbuffer->depth.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, in.hdr->view(), VK_IMAGE_LAYOUT_GENERAL};
     const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(0, &cameraInfo), storageBufferWrite(1, &lightInfo),
-        sampledImageWrite(2, &images[0]),   sampledImageWrite(3, &images[1]),
-        sampledImageWrite(4, &images[2]),   sampledImageWrite(5, &images[3]),
-        sampledImageWrite(6, &images[4]),   storageImageWrite(7, &hdrInfo),
+        uniformBufferWrite(0, &cameraInfo),  storageBufferWrite(1, &lightInfo),
+        sampledImageWrite(2, &images[0]),    sampledImageWrite(3, &images[1]),
+        sampledImageWrite(4, &images[2]),    sampledImageWrite(5, &images[3]),
+        sampledImageWrite(6, &images[4]),    storageImageWrite(7, &hdrInfo),
+        storageBufferWrite(8, &rangesInfo),  storageBufferWrite(9, &indicesInfo),
+        storageBufferWrite(10, &countsInfo),
     };
+    Push push{toGpu(*in.grid), in.directionalCount};
     pipeline_.bind(cmd);
     pipeline_.pushDescriptors(cmd, writes);
-    vkCmdDispatch(cmd, (hdr.desc().width + 7) / 8, (hdr.desc().height + 7) / 8, 1);
+    pipeline_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, (in.hdr->desc().width + 7) / 8, (in.hdr->desc().height + 7) / 8, 1);
 }
 
 }  // namespace candela::render

@@ -8,6 +8,7 @@
 namespace candela::render {
 
 class GpuBuffer;
+struct ClusterGrid;
 class GpuContext;
 class GpuImage;
 struct GBufferTargets;
@@ -19,6 +20,8 @@ struct LightingFeatures {
     bool sphereLights = false;
     bool tubeLights = false;
     bool spotLights = false;
+    bool clustered = true;
+    bool countLightPairs = false;
 
     bool operator==(const LightingFeatures&) const = default;
     std::vector<std::string> names() const;
@@ -35,9 +38,22 @@ public:
     void setFeatures(const LightingFeatures& features);
     const LightingFeatures& features() const { return features_; }
 
-    // G-buffer images must be SHADER_READ_ONLY, hdr GENERAL.
-    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const GpuImage& hdr,
-                const GpuBuffer& cameraBuffer, const GpuBuffer& lightBuffer) const;
+    // G-buffer images must be SHADER_READ_ONLY, hdr GENERAL. The cluster buffers are read
+    // only by the clustered variant, pairCounts only by the counting one (one uvec2 per
+    // workgroup, see workgroupCount()).
+    struct Inputs {
+        const GBufferTargets* gbuffer;
+        const GpuImage* hdr;
+        const GpuBuffer* camera;
+        const GpuBuffer* lights;
+        const GpuBuffer* clusterRanges;
+        const GpuBuffer* lightIndices;
+        const GpuBuffer* pairCounts;
+        const ClusterGrid* grid;
+        uint32_t directionalCount;
+    };
+    void record(VkCommandBuffer cmd, const Inputs& inputs) const;
+    static uint32_t workgroupCount(uint32_t width, uint32_t height);
 
 private:
     GpuContext& context_;

@@ -1,0 +1,35 @@
+#pragma once
+// How the renderer lights a frame, and what it measures.
+#include <cstdint>
+
+namespace candela::render {
+
+enum class LightCulling {
+    Clustered,   // per-cluster light lists (the default)
+    BruteForce,  // every light at every pixel: the reference clustered output must match
+};
+
+struct RendererOptions {
+    LightCulling lightCulling = LightCulling::Clustered;
+    uint32_t tileSize = 64;  // cluster tile, pixels
+    uint32_t slices = 32;    // exponential depth slices (<= 64)
+    // Counts evaluated and lit light-pixel pairs (a shader variant with per-workgroup counters;
+    // --stats turns it on).
+    bool countLightPairs = false;
+};
+
+// Measurements of the last completed frame (--stats fields).
+struct RendererStats {
+    uint32_t lights = 0;
+    uint32_t lightsRewritten = 0;  // light slots uploaded this frame (change detection)
+    uint32_t clusters = 0;
+    uint32_t clustersOccupied = 0;
+    uint64_t lightClusterPairs = 0;
+    double lightAssignMs = 0.0;       // CPU: assignment and list upload (not the geometry wait)
+    double lightingMs = 0.0;          // GPU timestamps around the lighting dispatch
+    uint64_t lightEvaluations = 0;    // light-pixel pairs the shader evaluated (countLightPairs)
+    uint64_t litPairs = 0;            // ... of which the light reaches the pixel
+    uint32_t lightListOverflows = 0;  // frames whose list buffer had to grow (nothing dropped)
+};
+
+}  // namespace candela::render

@@ -1,0 +1,172 @@
+#include "clustered/light_assignment.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "candela/ecs/job_system.h"
+#include "clustered/light_bounds.h"
+
+namespace candela::render {
+
+namespace {
+
+constexpr float kSliceDepthMargin = 1e-3f;
+
+// Light-cluster pairs found by one job, in ascending light order.
+struct PairList {
+    std::vector<uint32_t> cluster;
+    std::vector<uint32_t> light;
+};
+
+// Index range [first, last] of the sorted boundaries that intervals [lo, hi] overlap.
+void tileRange(const std::vector<float>& boundaries, float lo, float hi, bool descending,
+               uint32_t& first, uint32_t& last) {
+    const uint32_t tiles = uint32_t(boundaries.size() - 1);
+    first = 0;
+    last = tiles - 1;
+    if (!descending) {
+        while (first < tiles - 1 && boundaries[first + 1] < lo)
+            ++first;
+        while (last > 0 && boundaries[last] > hi)
+            --last;
+    } else {
+        while (first < tiles - 1 && boundaries[first + 1] > hi)
+            ++first;
+        while (last > 0 && boundaries[last] < lo)
+            --last;
+    }
+}
+
+void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightIndex,
+               std::span<const uint64_t> occupancy, PairList& out) {
+    const float centerDepth = -b.center.z;
+    const float nearDepth = centerDepth - b.radius;
+    const float farDepth = centerDepth + b.radius;
+    if (farDepth < grid.nearPlane) return;  // wholly behind the near plane
+    const uint32_t firstSlice = grid.sliceOf(nearDepth);
+    const uint32_t lastSlice = grid.sliceOf(farDepth);
+    for (uint32_t k = firstSlice; k <= lastSlice; ++k) {
+        // Widened by a relative margin: the shader's log-based slice of a pixel may round
+        // across a boundary the CPU's exp-based depth puts a hair away.
+        const float z0 = grid.sliceDepth(k) * (1.0f - kSliceDepthMargin);
+        // The last slice holds everything past far.
+        const float z1 = k + 1 == grid.slices ? std::max(farDepth, grid.farPlane) * 2.0f
+                                              : grid.sliceDepth(k + 1) * (1.0f + kSliceDepthMargin);
+        // The sphere's widest cross-section inside this slice, and the depths it spans there.
+        const float dz = std::clamp(centerDepth, z0, z1) - centerDepth;
+        const float crossRadius = std::sqrt(std::max(b.radius * b.radius - dz * dz, 0.0f));
+        const float depthLo = std::max(std::max(z0, nearDepth), 1e-6f);
+        const float depthHi = std::min(z1, farDepth);
+        if (depthHi < depthLo) continue;
+        // x / d over the cross-section's extent, at both ends of the depth span.
+        auto extent = [&](float c, float& lo, float& hi) {
+            lo = std::min((c - crossRadius) / depthLo, (c - crossRadius) / depthHi);
+            hi = std::max((c + crossRadius) / depthLo, (c + crossRadius) / depthHi);
+        };
+        float xLo, xHi, yLo, yHi;
+        extent(b.center.x, xLo, xHi);
+        extent(b.center.y, yLo, yHi);
+        uint32_t x0, x1, y0, y1;
+        tileRange(grid.columnTangent, xLo, xHi, false, x0, x1);
+        tileRange(grid.rowTangent, yLo, yHi, true, y0, y1);
+        if (xLo > grid.columnTangent.back() || xHi < grid.columnTangent.front()) continue;
+        if (yLo > grid.rowTangent.front() || yHi < grid.rowTangent.back()) continue;
+
+        for (uint32_t y = y0; y <= y1; ++y) {
+            const float top = grid.rowTangent[y], bottom = grid.rowTangent[y + 1];
+            // Row planes through the camera: bottom <= y/d <= top.
+            if (!lightReachesPositiveSide(b, glm::normalize(glm::vec3(0.0f, -1.0f, -top))) ||
+                !lightReachesPositiveSide(b, glm::normalize(glm::vec3(0.0f, 1.0f, bottom)))) {
+                continue;
+            }
+            for (uint32_t x = x0; x <= x1; ++x) {
+                const uint32_t tile = y * grid.tilesX + x;
+                if (!occupancy.empty() && !(occupancy[tile] >> k & 1u)) continue;
+                const float left = grid.columnTangent[x], right = grid.columnTangent[x + 1];
+                if (!lightReachesPositiveSide(b, glm::normalize(glm::vec3(1.0f, 0.0f, left))) ||
+                    !lightReachesPositiveSide(b, glm::normalize(glm::vec3(-1.0f, 0.0f, -right)))) {
+                    continue;
+                }
+                // The cell's view-space box (z is negative in front of the camera).
+                glm::vec3 lo(std::min(left * z0, left * z1), std::min(bottom * z0, bottom * z1),
+                             -z1);
+                glm::vec3 hi(std::max(right * z0, right * z1), std::max(top * z0, top * z1), -z0);
+                if (!lightTouchesBox(b, lo, hi)) continue;
+                out.cluster.push_back(grid.clusterIndex(x, y, k));
+                out.light.push_back(lightIndex);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights,
+                  const glm::mat4& view, std::span<const uint64_t> tileOccupancy,
+                  ecs::JobSystem* jobs, LightAssignment& out) {
+    out.lightIndices.clear();
+    out.directionalCount = 0;
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].light.type == content::LightType::Directional) {
+            out.lightIndices.push_back(i);
+            ++out.directionalCount;
+        }
+    }
+
+    // Chunks of lights in order; each job fills its own pair list.
+    constexpr size_t kLightsPerJob = 512;
+    const size_t jobCount = (lights.size() + kLightsPerJob - 1) / kLightsPerJob;
+    std::vector<PairList> pairs(jobCount);
+    auto work = [&](size_t begin, size_t end) {
+        for (size_t job = begin; job < end; ++job) {
+            PairList& list = pairs[job];
+            const size_t first = job * kLightsPerJob;
+            const size_t last = std::min(first + kLightsPerJob, lights.size());
+            for (size_t i = first; i < last; ++i) {
+                if (lights[i].light.type == content::LightType::Directional) continue;
+                assignOne(grid, lightBoundsInView(lights[i], view), uint32_t(i), tileOccupancy,
+                          list);
+            }
+        }
+    };
+    if (jobs) {
+        jobs->parallelFor(jobCount, 1, work);
+    } else {
+        work(0, jobCount);
+    }
+
+    // Counting sort by cluster, visiting jobs in light order: lists stay ascending.
+    const uint32_t clusters = grid.clusterCount();
+    out.clusterRanges.assign(size_t(clusters) * 2, 0);
+    size_t total = 0;
+    for (const PairList& list : pairs) {
+        for (uint32_t c : list.cluster)
+            ++out.clusterRanges[c * 2 + 1];
+        total += list.cluster.size();
+    }
+    uint32_t offset = uint32_t(out.lightIndices.size());
+    for (uint32_t c = 0; c < clusters; ++c) {
+        out.clusterRanges[c * 2] = offset;
+        offset += out.clusterRanges[c * 2 + 1];
+    }
+    out.lightIndices.resize(out.directionalCount + total);
+    std::vector<uint32_t> cursor(clusters);
+    for (uint32_t c = 0; c < clusters; ++c)
+        cursor[c] = out.clusterRanges[c * 2];
+    for (const PairList& list : pairs) {
+        for (size_t i = 0; i < list.cluster.size(); ++i) {
+            out.lightIndices[cursor[list.cluster[i]]++] = list.light[i];
+        }
+    }
+    out.assignedPairs = uint32_t(total);
+    out.occupiedClusters = 0;
+    if (tileOccupancy.empty()) {
+        out.occupiedClusters = clusters;
+    } else {
+        for (uint64_t mask : tileOccupancy)
+            out.occupiedClusters += uint32_t(std::popcount(mask));
+    }
+}
+
+}  // namespace candela::render

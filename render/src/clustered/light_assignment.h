@@ -1,0 +1,36 @@
+#pragma once
+// CPU light-to-cluster assignment, light-centric: each light visits only the clusters inside
+// its bounds (slice range, then per-slice tile range from the sphere's cross-section), tests
+// each against its bounds and the plane/box of the cell, and skips cells with no geometry.
+// Lists keep lights in ascending index order, so the shader sums exactly as brute force does.
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <span>
+#include <vector>
+
+#include "candela/render/frame_scene.h"
+#include "clustered/cluster_grid.h"
+
+namespace candela::ecs {
+class JobSystem;
+}
+
+namespace candela::render {
+
+struct LightAssignment {
+    // Per cluster: offset into lightIndices and count (2 uints per cluster).
+    std::vector<uint32_t> clusterRanges;
+    // Directional lights first (they reach every pixel), then every cluster's list.
+    std::vector<uint32_t> lightIndices;
+    uint32_t directionalCount = 0;
+    uint32_t occupiedClusters = 0;  // clusters holding geometry (all, without occupancy)
+    uint32_t assignedPairs = 0;     // light-cluster pairs in the lists
+};
+
+// tileOccupancy: one 64-bit mask per tile, bit k set when the depth buffer has a pixel in
+// slice k of that tile; empty means "assume every cluster holds geometry".
+void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights,
+                  const glm::mat4& view, std::span<const uint64_t> tileOccupancy,
+                  ecs::JobSystem* jobs, LightAssignment& out);
+
+}  // namespace candela::render

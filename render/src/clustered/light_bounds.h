@@ -1,0 +1,36 @@
+#pragma once
+// Where a light can touch, in view space, from its falloff window (eq. 9 reaches zero at
+// attenuationRadius): a sphere for point and sphere lights, a capsule for tubes (the window is
+// measured to the nearest point of the segment), a cone for spots. Every test here is
+// conservative: it may keep a light that adds nothing, never drop one that adds something.
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "candela/render/frame_scene.h"
+
+namespace candela::render {
+
+enum class LightShape : uint8_t { Sphere, Capsule, Cone };
+
+struct LightBounds {
+    glm::vec3 center{0.0f};  // bounding sphere, used for the slice and tile ranges
+    float radius = 0.0f;
+    LightShape shape = LightShape::Sphere;
+    glm::vec3 segmentStart{0.0f};  // capsule: segment; cone: apex
+    glm::vec3 segmentEnd{0.0f};    // capsule: segment end; cone: unit axis
+    float capsuleRadius = 0.0f;    // capsule: attenuation radius; cone: range
+    float coneCos = 0.0f;
+    float coneSin = 0.0f;
+};
+
+// Bounds of a local (non-directional) light in the view space of `view`.
+LightBounds lightBoundsInView(const LightInstance& light, const glm::mat4& view);
+
+// Does the light reach the axis-aligned box [boxMin, boxMax] (view space)?
+bool lightTouchesBox(const LightBounds& bounds, const glm::vec3& boxMin, const glm::vec3& boxMax);
+
+// False when the light lies entirely on the negative side of the plane n.p = 0 (n unit; the
+// tile side planes all pass through the camera).
+bool lightReachesPositiveSide(const LightBounds& bounds, const glm::vec3& planeNormal);
+
+}  // namespace candela::render
