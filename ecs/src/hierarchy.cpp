@@ -92,7 +92,7 @@ ReparentResult setParent(Registry& registry, Entity child, Entity parent) {
         ++s.version;
         return ReparentResult::Ok;
     }
-    // Add both nodes first: adding moves table rows, which would invalidate references.
+    // Add both nodes first: adding to a pool can reallocate it and invalidate references.
     if (!registry.has<HierarchyNode>(child)) registry.emplace<HierarchyNode>(child);
     if (!registry.has<HierarchyNode>(parent)) registry.emplace<HierarchyNode>(parent);
     HierarchyNode& node = registry.get<HierarchyNode>(child);

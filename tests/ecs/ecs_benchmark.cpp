@@ -69,7 +69,7 @@ void BM_Destroy(benchmark::State& state) {
 }
 BENCHMARK(BM_Destroy)->Arg(1 << 20)->Unit(benchmark::kMillisecond);
 
-// One item = one entity gaining a component and losing it again (two table moves).
+// One item = one entity gaining a component and losing it again.
 void BM_AddRemove(benchmark::State& state) {
     const auto n = static_cast<std::size_t>(state.range(0));
     Registry registry;

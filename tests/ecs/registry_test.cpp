@@ -151,7 +151,7 @@ TEST(Registry, ChangeTicks) {
     EXPECT_EQ(registry.changeTick<Position>(e), kNeverTick);
 }
 
-TEST(Registry, ChangeTickSurvivesTableMoves) {
+TEST(Registry, ChangeTickSurvivesOtherAddsAndRemoves) {
     Registry registry;
     const Entity e = registry.create();
     registry.emplace<Health>(e);
@@ -159,6 +159,13 @@ TEST(Registry, ChangeTickSurvivesTableMoves) {
     registry.advanceTick();
     registry.emplace<Position>(e);
     EXPECT_EQ(registry.changeTick<Health>(e), stamped);
+    // Removing e's Health moves the last Health into its place: the tick moves with it.
+    const Entity f = registry.create();
+    registry.emplace<Health>(f);
+    const Tick stampedF = registry.changeTick<Health>(f);
+    EXPECT_GT(stampedF, stamped);
+    registry.remove<Health>(e);
+    EXPECT_EQ(registry.changeTick<Health>(f), stampedF);
 }
 
 TEST(Registry, Resources) {

@@ -88,7 +88,7 @@ TEST_F(ViewTest, RangeFor) {
     EXPECT_EQ(registry.get<Position>(frozen[0]).y, 0.0f);
 }
 
-TEST_F(ViewTest, ViewSeesTablesCreatedLater) {
+TEST_F(ViewTest, ViewSeesPoolsCreatedLater) {
     auto view = registry.view<Position, Health>();
     EXPECT_EQ(view.size(), 0u);
     registry.emplace<Health>(still[0]);

@@ -26,7 +26,7 @@ ComponentId componentId() noexcept {
     return id;
 }
 
-// What storage needs to move rows between tables without knowing T.
+// What storage needs to move and destroy components without knowing T.
 struct ComponentOps {
     std::size_t size;
     std::size_t alignment;
