@@ -21,15 +21,17 @@ inline void multiplyByAffine(const Mat4& parent, const Mat4& local, Mat4& out) n
     const __m128 p1 = _mm_loadu_ps(parent.m + 4);
     const __m128 p2 = _mm_loadu_ps(parent.m + 8);
     const __m128 p3 = _mm_loadu_ps(parent.m + 12);
-    for (int c = 0; c < 4; ++c) {
-        const __m128 l = _mm_loadu_ps(local.m + 4 * c);
-        __m128 r =
-            _mm_add_ps(_mm_add_ps(_mm_mul_ps(p0, _mm_shuffle_ps(l, l, _MM_SHUFFLE(0, 0, 0, 0))),
-                                  _mm_mul_ps(p1, _mm_shuffle_ps(l, l, _MM_SHUFFLE(1, 1, 1, 1)))),
-                       _mm_mul_ps(p2, _mm_shuffle_ps(l, l, _MM_SHUFFLE(2, 2, 2, 2))));
-        if (c == 3) r = _mm_add_ps(r, p3);
-        _mm_storeu_ps(out.m + 4 * c, r);
-    }
+    // parent * (x, y, z, 0) for one column of the local matrix.
+    auto transform = [&](const float* column) {
+        const __m128 l = _mm_loadu_ps(column);
+        return _mm_add_ps(_mm_add_ps(_mm_mul_ps(p0, _mm_shuffle_ps(l, l, _MM_SHUFFLE(0, 0, 0, 0))),
+                                     _mm_mul_ps(p1, _mm_shuffle_ps(l, l, _MM_SHUFFLE(1, 1, 1, 1)))),
+                          _mm_mul_ps(p2, _mm_shuffle_ps(l, l, _MM_SHUFFLE(2, 2, 2, 2))));
+    };
+    _mm_storeu_ps(out.m + 0, transform(local.m + 0));
+    _mm_storeu_ps(out.m + 4, transform(local.m + 4));
+    _mm_storeu_ps(out.m + 8, transform(local.m + 8));
+    _mm_storeu_ps(out.m + 12, _mm_add_ps(transform(local.m + 12), p3));  // w = 1
 #else
     for (int c = 0; c < 4; ++c) {
         const float l0 = local.m[4 * c], l1 = local.m[4 * c + 1], l2 = local.m[4 * c + 2];
