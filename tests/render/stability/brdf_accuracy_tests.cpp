@@ -14,6 +14,7 @@
 #include "brdf_reference.h"
 #include "compute_harness.h"
 #include "error_stats.h"
+#include "fp16_shading.h"
 #include "quasi_random.h"
 #include "shaders/brdf_accuracy.comp.spv.h"
 
@@ -100,6 +101,7 @@ constexpr double kTermTolerance = 1e-4;
 
 TEST(BrdfAccuracy, AlphaVisibilityAndFresnelWithin1e4Relative) {
     const AccuracyRun& run = accuracyRun();
+    EXPECT_EQ(run.validationMessages, 0u);
     WorstError alpha, visSchlick, visCorrelated, fresnelSg, fresnelPow5;
     for (size_t i = 0; i < run.samples.size(); ++i) {
         const BrdfSample& s = run.samples[i];
@@ -129,7 +131,6 @@ TEST(BrdfAccuracy, AlphaVisibilityAndFresnelWithin1e4Relative) {
     EXPECT_LE(visCorrelated.error, kTermTolerance);
     EXPECT_LE(fresnelSg.error, kTermTolerance);
     EXPECT_LE(fresnelPow5.error, kTermTolerance);
-    EXPECT_EQ(run.validationMessages, 0u);
 }
 
 // D = a2 / (pi d^2) with d = (NoH a2 - NoH) NoH + 1 = 1 - NoH^2 (1 - a2): near the peak d is a
@@ -139,6 +140,7 @@ TEST(BrdfAccuracy, AlphaVisibilityAndFresnelWithin1e4Relative) {
 // all roughness, to 4 ulp(1) / d plus 1e-5 (d from the reference).
 TEST(BrdfAccuracy, GgxDistributionWithinItsFp32Conditioning) {
     const AccuracyRun& run = accuracyRun();
+    EXPECT_EQ(run.validationMessages, 0u);
     WorstError smooth, rough, conditioned;
     for (size_t i = 0; i < run.samples.size(); ++i) {
         const BrdfSample& s = run.samples[i];
@@ -164,6 +166,7 @@ TEST(BrdfAccuracy, GgxDistributionWithinItsFp32Conditioning) {
 // (the fit's bias is negative near roughness 1, NoV 1), which the reference mirrors.
 TEST(BrdfAccuracy, EnvBrdfApproxWithin1e5Absolute) {
     const AccuracyRun& run = accuracyRun();
+    EXPECT_EQ(run.validationMessages, 0u);
     WorstError env, nonmetal;
     for (size_t i = 0; i < run.samples.size(); ++i) {
         const BrdfSample& s = run.samples[i];
@@ -186,6 +189,7 @@ TEST(BrdfAccuracy, EnvBrdfApproxWithin1e5Absolute) {
 // and the 2% rule: an F0 below 0.02 fades the grazing term, F0 = 0 reflects nothing.
 TEST(BrdfAccuracy, FresnelLimitsAndSphericalGaussianFit) {
     const AccuracyRun& run = accuracyRun();
+    EXPECT_EQ(run.validationMessages, 0u);
     WorstError fitVsPow5;
     for (size_t i = 0; i < run.samples.size(); ++i) {
         const BrdfSample& s = run.samples[i];
@@ -206,4 +210,37 @@ TEST(BrdfAccuracy, FresnelLimitsAndSphericalGaussianFit) {
     }
     fitVsPow5.print("|SG fit - pow5| (eq. 5)", "absolute");
     EXPECT_LE(fitVsPow5.error, 5e-3);  // measured 3.7e-3, at VoH ~ 0.06
+}
+
+// The fp16 report runs a CPU transliteration of the GLSL (fp16_shading.h) in half precision.
+// Run in float it must reproduce the device: 1e-5 relative (FMA contraction and the driver's
+// exp2 may differ by a few ulp), D again within its fp32 conditioning.
+TEST(BrdfAccuracy, Fp16ReportTransliterationMatchesDeviceInFp32) {
+    namespace emu = candela::stability::emulated;
+    const AccuracyRun& run = accuracyRun();
+    EXPECT_EQ(run.validationMessages, 0u);
+    WorstError terms, distribution;
+    for (size_t i = 0; i < run.samples.size(); ++i) {
+        const BrdfSample& s = run.samples[i];
+        const BrdfValues& v = run.values[i];
+        const auto where = [&] { return describe(s); };
+        const float alpha = emu::alphaFromRoughness(s.roughness);
+        terms.add(relativeError(v.alpha, alpha), where);
+        terms.add(relativeError(v.visSchlick, emu::visibilitySmithSchlick(alpha, s.NoV, s.NoL)),
+                  where);
+        terms.add(
+            relativeError(v.visCorrelated, emu::visibilitySmithGgxCorrelated(alpha, s.NoV, s.NoL)),
+            where);
+        terms.add(relativeError(v.fresnelSg, emu::fresnelSchlickSg(s.f0, s.f0, s.VoH)), where);
+        terms.add(std::fabs(v.envBrdf - emu::envBrdfApprox(s.f0, s.roughness, s.NoV)), where);
+        const double a2 = double(alpha) * alpha;
+        const double d = (1.0 - double(s.NoH)) * (1.0 + s.NoH) + double(s.NoH) * s.NoH * a2;
+        distribution.add(relativeError(v.d, emu::distributionGgx(alpha * alpha, s.NoH)) /
+                             (8.0 * kUnitRoundoff / d + 1e-5),
+                         where);
+    }
+    terms.print("fp16_shading.h in fp32 vs device", "relative");
+    distribution.print("fp16_shading.h D vs device / bound", "relative");
+    EXPECT_LE(terms.error, 1e-5);
+    EXPECT_LE(distribution.error, 1.0);
 }

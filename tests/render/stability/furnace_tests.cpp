@@ -82,6 +82,7 @@ TEST(WhiteFurnace, EverySampleIsFiniteAndNonNegative) {
 // 8192 visible-normal-sampled Hammersley directions (the estimator G2 / G1 is bounded by 1, so
 // the error is well under 1e-3) and fp32 rounding.
 TEST(WhiteFurnace, SpecularAlbedoNeverExceedsOne) {
+    EXPECT_EQ(furnace().validationMessages, 0u);
     constexpr float kEpsilon = 2e-3f;
     std::printf("specular albedo, F0 = 1, max over NoV (visibilitySmithSchlick | correlated)\n");
     std::printf("roughness   Schlick   at NoV  correlated  at NoV   at NoV=1 (S | C)\n");
@@ -114,6 +115,7 @@ TEST(WhiteFurnace, SpecularAlbedoNeverExceedsOne) {
 // at 0.02 when NoH is formed as 1 / sqrt(1 + tan^2) in fp32, as a shading dot product would).
 // Held to 1e-3 from roughness 0.075 (~260 NoH values across the lobe), to 5% below.
 TEST(WhiteFurnace, ProjectedGgxIntegratesToOne) {
+    EXPECT_EQ(furnace().validationMessages, 0u);
     std::printf("roughness  alpha      integral of D NoH\n");
     for (size_t r = 0; r < kRoughness.size(); ++r) {
         const FurnaceCell& c = cell(r, 0);

@@ -8,6 +8,7 @@
 // significand bits (Figueroa 1995); float has 24 >= 2 * 11 + 2. Transcendentals (exp2) are
 // computed in float and rounded once, i.e. as well as a half unit can do, which makes the
 // report optimistic about real mediump hardware, never pessimistic.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>

@@ -106,6 +106,7 @@ TEST(LightAccuracy, EnergyNormalizationMatchesEq10To20) {
     tubeError.print("tubeEnergyNormalization (eq. 20)", "relative");
     EXPECT_LE(sphereError.error, 1e-5);
     EXPECT_LE(tubeError.error, 1e-5);
+    EXPECT_EQ(harness.validationMessages(), 0u);
 }
 
 // eq. 11, judged in units of the distance to the light (the point's position error relative
@@ -138,6 +139,7 @@ TEST(LightAccuracy, SphereRepresentativePointMatchesEq11) {
     }
     error.print("sphereRepresentativePoint (eq. 11)", "|error| / |L|");
     EXPECT_LE(error.error, 1e-5);
+    EXPECT_EQ(harness.validationMessages(), 0u);
 }
 
 // eq. 19: t = (R.L0 R.Ld - L0.Ld) / (|Ld|^2 - (R.Ld)^2). The denominator is |Ld|^2 sin^2 of
@@ -181,6 +183,7 @@ TEST(LightAccuracy, TubeClosestParameterMatchesEq19) {
     error.print("tubeClosestParameter (eq. 19)", "|t error| / bound");
     EXPECT_LE(error.error, 1.0);
     EXPECT_GT(used, 10000);
+    EXPECT_EQ(harness.validationMessages(), 0u);
 }
 
 // Tells the report whether the denormal inputs of the hard grids reached the arithmetic as
@@ -194,4 +197,5 @@ TEST(LightAccuracy, ReportsDenormalHandling) {
     std::printf("  %s: fp32 denormals are %s\n", harness.context().deviceName().c_str(),
                 preserved ? "preserved" : "flushed to zero");
     EXPECT_TRUE(product[0][0] == 0.0f || preserved);
+    EXPECT_EQ(harness.validationMessages(), 0u);
 }

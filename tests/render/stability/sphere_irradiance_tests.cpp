@@ -104,6 +104,7 @@ TEST(SphereIrradiance, TouchingSphereIsTheLimitOfNearbyOnes) {
     jump.print("jump across sin sigma = 1", "absolute/pi");
     EXPECT_LE(touching.error, 1e-3);
     EXPECT_LE(jump.error, 1e-2);
+    EXPECT_EQ(harness.validationMessages(), 0u);
 }
 
 // evaluateLocalLight's sphere diffuse, end to end: a 1 cd sphere light of radius r has
