@@ -174,6 +174,13 @@ TEST(SceneFile, KilledSaveLeavesAPreviousCompleteFile) {
     }
 }
 
+TEST(SceneFile, AssetPathsResolveAgainstTheSceneFile) {
+    EXPECT_EQ(resolveScenePath("/levels/one/level.json", "models/a.glb"),
+              std::filesystem::path("/levels/one/models/a.glb"));
+    EXPECT_EQ(resolveScenePath("/levels/one/level.json", "/abs/b.glb"),
+              std::filesystem::path("/abs/b.glb"));
+}
+
 TEST(SceneFile, BadJsonNamesFileAndPosition) {
     const std::string text = "{\n  \"format\": \"candela.scene\",\n  \"version\": 1,\n  oops\n}";
     Diagnostics diagnostics;

@@ -56,6 +56,14 @@ struct SceneDocument {
     std::vector<SceneEntity> entities;
 };
 
+// Where an asset path stored in a scene file points: relative paths are relative to the
+// scene file's directory; absolute paths stay as they are.
+inline std::filesystem::path resolveScenePath(const std::filesystem::path& sceneFile,
+                                              const std::string& stored) {
+    const std::filesystem::path path(stored);
+    return path.is_absolute() ? path : sceneFile.parent_path() / path;
+}
+
 // Returns nullopt when the file cannot be read or is not a scene file of a supported
 // version. Otherwise returns the scene; components that were malformed are left out with an
 // error naming the file and the JSON pointer (e.g. "/entities/3/light/lumens").
