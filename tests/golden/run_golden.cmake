@@ -1,0 +1,73 @@
+# Runs one golden test: renders its scene with the engine, then compares both captures with
+# the stored images using candela-golden. Any engine failure fails the test, exit 3
+# (validation messages while CANDELA_VALIDATION=require) included.
+#
+#   cmake -DGOLDEN_CONFIG=<build>/golden/<name>/golden.cmake [-DMODE=test|render|store]
+#         -P run_golden.cmake
+#
+# MODE test (default) renders and compares. scripts/update-goldens uses `render` (render, and
+# refuse an image with NaN/Inf) for every name first and `store` (copy the captures into the
+# expected directory) only once all rendered, so a failure part way changes no golden.
+cmake_minimum_required(VERSION 3.25)
+include("${GOLDEN_CONFIG}")
+if(NOT MODE)
+  set(MODE test)
+endif()
+set(exr "${GOLDEN_OUTPUT_DIR}/${GOLDEN_NAME}.exr")
+set(png "${GOLDEN_OUTPUT_DIR}/${GOLDEN_NAME}.png")
+set(stats "${GOLDEN_OUTPUT_DIR}/${GOLDEN_NAME}.stats.json")
+if(NOT DEFINED ENV{CANDELA_VALIDATION})
+  set(ENV{CANDELA_VALIDATION} require)
+endif()
+
+if(MODE STREQUAL "store")
+  foreach(capture "${exr}" "${png}")
+    if(NOT EXISTS "${capture}")
+      message(FATAL_ERROR "golden ${GOLDEN_NAME}: ${capture} was not rendered")
+    endif()
+  endforeach()
+  file(MAKE_DIRECTORY "${GOLDEN_EXPECTED_DIR}")
+  file(COPY_FILE "${exr}" "${GOLDEN_EXPECTED_DIR}/${GOLDEN_NAME}.exr")
+  file(COPY_FILE "${png}" "${GOLDEN_EXPECTED_DIR}/${GOLDEN_NAME}.png")
+  message(STATUS "stored ${GOLDEN_EXPECTED_DIR}/${GOLDEN_NAME}.exr and .png")
+  return()
+endif()
+
+foreach(executable "${GOLDEN_ENGINE}" "${GOLDEN_TOOL}")
+  if(NOT EXISTS "${executable}")
+    message(FATAL_ERROR "golden ${GOLDEN_NAME}: ${executable} is not built; build the tree "
+                        "first (scripts/build build)")
+  endif()
+endforeach()
+# A capture left from an earlier run must never stand in for this one.
+file(REMOVE "${exr}" "${png}" "${stats}")
+file(MAKE_DIRECTORY "${GOLDEN_OUTPUT_DIR}")
+
+execute_process(
+  COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
+          --frames "${GOLDEN_FRAMES}" --capture "${exr}" --capture "${png}" --stats "${stats}"
+  RESULT_VARIABLE engine_result)
+if(engine_result EQUAL 3)
+  message(FATAL_ERROR "golden ${GOLDEN_NAME}: FAIL: the engine reported Vulkan validation "
+                      "messages (exit 3); a golden must render without any")
+elseif(NOT engine_result EQUAL 0)
+  message(FATAL_ERROR "golden ${GOLDEN_NAME}: FAIL: `${GOLDEN_ENGINE} run ${GOLDEN_SCENE}` "
+                      "failed (exit ${engine_result})")
+endif()
+
+if(MODE STREQUAL "render")
+  execute_process(COMMAND "${GOLDEN_TOOL}" inspect "${exr}" RESULT_VARIABLE inspect_result)
+  if(NOT inspect_result EQUAL 0)
+    message(FATAL_ERROR "golden ${GOLDEN_NAME}: refusing to store a capture with NaN/Inf "
+                        "or that cannot be read")
+  endif()
+  return()
+endif()
+
+execute_process(
+  COMMAND "${GOLDEN_TOOL}" check "${GOLDEN_NAME}" --actual-dir "${GOLDEN_OUTPUT_DIR}"
+          --expected-dir "${GOLDEN_EXPECTED_DIR}"
+  RESULT_VARIABLE check_result)
+if(NOT check_result EQUAL 0)
+  message(FATAL_ERROR "golden ${GOLDEN_NAME}: FAIL (candela-golden exit ${check_result})")
+endif()
