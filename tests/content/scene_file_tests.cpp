@@ -190,6 +190,19 @@ TEST(SceneFile, BadJsonNamesFileAndPosition) {
     EXPECT_TRUE(diagnostics.mentions("line 4")) << diagnostics.toString();
 }
 
+TEST(SceneFile, InvalidUtf8NamesAreASaveErrorNotAnException) {
+    SceneDocument scene = exampleScene();
+    scene.entities[0].name = "bad \xff\xfe utf-8";
+    EXPECT_NE(saveSceneFile(testing::tempPath("utf8.json"), scene), "");
+}
+
+TEST(SceneFile, HugeNumbersAreAnErrorNotAnException) {
+    const std::string text = R"({"format": "candela.scene", "version": 1e999, "entities": []})";
+    Diagnostics diagnostics;
+    EXPECT_FALSE(parseSceneJson(std::as_bytes(std::span(text)), "huge.json", diagnostics));
+    EXPECT_TRUE(diagnostics.mentions("huge.json"));
+}
+
 TEST(SceneFile, StructuralErrorsNameTheJsonPointerAndDropOnlyThatComponent) {
     const std::string text = R"({
       "format": "candela.scene", "version": 1,

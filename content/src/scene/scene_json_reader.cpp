@@ -348,6 +348,11 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         diagnostics.error(name, "",
                           "invalid JSON at " + lineAndColumn(bytes, e.byte) + ": " + e.what());
         return std::nullopt;
+    } catch (const json::exception& e) {
+        // Not only parse_error: a number too large for a double throws out_of_range (found by
+        // fuzz_scene_file; tests/content/regressions/scene/).
+        diagnostics.error(name, "", std::string("invalid JSON: ") + e.what());
+        return std::nullopt;
     }
     Reader reader(name, diagnostics);
     if (nestingDepth(root) > kMaxNestingDepth) {

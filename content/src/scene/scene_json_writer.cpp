@@ -148,7 +148,12 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     if (!error.empty()) return {};
     const json document = {
         {"format", kFormatName}, {"version", kSceneFileVersion}, {"entities", std::move(entities)}};
-    return document.dump(2) + "\n";
+    try {
+        return document.dump(2) + "\n";
+    } catch (const nlohmann::json::exception& e) {  // e.g. a name that is not valid UTF-8
+        error = std::string("cannot write JSON: ") + e.what();
+        return {};
+    }
 }
 
 }  // namespace candela::content
