@@ -74,6 +74,10 @@ void* CommandBuffer::allocatePayload(std::size_t size, std::size_t alignment) {
 CommandBuffer::ApplyResult CommandBuffer::apply() {
     ApplyResult result;
     Registry& r = *registry_;
+    // Fail before consuming anything, rather than halfway through.
+    CANDELA_ECS_CHECK(commands_.empty() || !r.structureLocked(),
+                      EcsErrorCode::StructuralChangeWhileLocked,
+                      "CommandBuffer::apply() while iterating or inside a hook");
     // Index loop: a deferred call may record into this same buffer; those run too.
     for (std::size_t i = 0; i < commands_.size(); ++i) {
         Command& c = commands_[i];

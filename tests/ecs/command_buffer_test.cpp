@@ -154,6 +154,20 @@ TEST(CommandBuffer, DiscardedCreatesAreReleased) {
     EXPECT_TRUE(registry.valid(next));
 }
 
+TEST(CommandBuffer, ApplyWhileIteratingIsRejectedWithoutConsumingCommands) {
+    Registry registry;
+    const Entity e = registry.create();
+    registry.emplace<Health>(e);
+    CommandBuffer commands(registry);
+    commands.emplace<Position>(e);
+#ifdef NDEBUG
+    registry.view<Health>().each([&](Health&) { EXPECT_THROW(commands.apply(), EcsError); });
+#endif
+    EXPECT_EQ(commands.size(), 1u);
+    commands.apply();
+    EXPECT_TRUE(registry.has<Position>(e));
+}
+
 TEST(CommandBuffer, ReusableAfterApply) {
     Registry registry;
     CommandBuffer commands(registry);
