@@ -22,7 +22,7 @@ ecs::LocalTransform toLocalTransform(const Transform& t) {
 }  // namespace
 
 std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& model,
-                                          ecs::Entity parent) {
+                                          ecs::Entity parent, const std::string& gltfPath) {
     std::vector<ecs::Entity> created;
     // Depth-first from the shown roots; an explicit stack, because glTF trees can be deep.
     std::vector<std::pair<std::int32_t, ecs::Entity>> pending;
@@ -45,7 +45,7 @@ std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& 
         registry.emplace<ecs::WorldTransform>(e);
         if (parentEntity != ecs::kNullEntity) (void)ecs::setParent(registry, e, parentEntity);
         if (node.mesh >= 0 && size_t(node.mesh) < model.meshes.size()) {
-            registry.emplace<MeshInstance>(e, MeshInstance{&model, node.mesh});
+            registry.emplace<MeshInstance>(e, MeshInstance{&model, node.mesh, gltfPath});
         }
         if (node.light >= 0 && size_t(node.light) < model.lights.size()) {
             registry.emplace<Light>(e, model.lights[node.light].light);

@@ -7,7 +7,9 @@
 #include <cstring>
 #include <filesystem>
 
+#include "candela/content/components/mesh_instance.h"
 #include "candela/content/gltf_loader.h"
+#include "candela/content/model_instantiation.h"
 #include "candela/content/scene_instantiation.h"
 
 namespace candela::content {
@@ -19,19 +21,18 @@ TEST(SceneInstantiation, GltfNodesBecomeEntitiesWithHierarchyAndWorldTransforms)
     auto model = loadGltf(path, diagnostics);
     ASSERT_TRUE(model) << diagnostics.toString();
     ecs::Registry registry;
-    const auto entities = instantiateModel(registry, *model, "models/Box/Box.glb");
-    ASSERT_EQ(entities.size(), 2u);
-    const ecs::Entity root = entities[static_cast<std::size_t>(model->rootNodes[0])];
-    const std::int32_t childNode =
-        model->nodes[static_cast<std::size_t>(model->rootNodes[0])].children[0];
-    const ecs::Entity child = entities[static_cast<std::size_t>(childNode)];
+    const auto entities =
+        instantiateModel(registry, *model, ecs::kNullEntity, "models/Box/Box.glb");
+    ASSERT_EQ(entities.size(), 2u) << "parents before children";
+    const ecs::Entity root = entities[0];
+    const ecs::Entity child = entities[1];
     EXPECT_EQ(ecs::parentOf(registry, child), root);
     ASSERT_TRUE(registry.has<MeshInstance>(child));
+    EXPECT_EQ(registry.get<MeshInstance>(child).model, &*model);
     EXPECT_EQ(registry.get<MeshInstance>(child).gltfPath, "models/Box/Box.glb");
     EXPECT_FALSE(registry.has<MeshInstance>(root));
     ecs::propagateTransforms(registry);
-    // Box's root node rotates -90 degrees about X (Z-up to Y-up): the child's world matrix
-    // must include it, so its local +Y axis maps to world -Z... or +Z; either way not +Y.
+    // Box's root node rotates the Z-up box to Y-up: the child's world matrix must include it.
     const ecs::Mat4 world = registry.get<ecs::WorldTransform>(child).matrix;
     const ecs::Mat4 local = registry.get<ecs::LocalTransform>(child).matrix();
     EXPECT_NE(std::memcmp(&world, &local, sizeof(ecs::Mat4)), 0)
@@ -47,7 +48,8 @@ TEST(SceneInstantiation, SceneToRegistryAndBackIsIdentical) {
     }
     scene.entities[0].parent = 2;  // parent later in the list
     scene.entities[1].parent = 0;
-    scene.entities[1].mesh = MeshReference{"a.glb", 3};
+    scene.entities[1].mesh = MeshReference{"models/Box/Box.glb", 0};
+    scene.entities[2].mesh = MeshReference{"models/missing.glb", 1};  // kept, though unloadable
     scene.entities[2].light = Light{};
     scene.entities[2].light->lumens = 321.0f;
     scene.entities[3].camera = Camera{};
@@ -59,9 +61,15 @@ TEST(SceneInstantiation, SceneToRegistryAndBackIsIdentical) {
     scene.entities[1].materialOverrides.push_back(override);
 
     ecs::Registry registry;
-    const auto entities = instantiateScene(registry, scene);
+    AssetCache cache;
+    Diagnostics diagnostics;
+    const auto sceneFile = std::filesystem::path(CANDELA_SHARED_ASSETS) / "level.scene.json";
+    const auto entities = instantiateScene(registry, scene, sceneFile, cache, diagnostics);
     ASSERT_EQ(entities.size(), 4u);
     EXPECT_EQ(ecs::parentOf(registry, entities[0]), entities[2]);
+    ASSERT_NE(registry.get<MeshInstance>(entities[1]).model, nullptr) << diagnostics.toString();
+    EXPECT_EQ(registry.get<MeshInstance>(entities[2]).model, nullptr);
+    EXPECT_TRUE(diagnostics.mentions("missing.glb"));
     const SceneDocument captured = captureScene(registry);
     std::string a;
     std::string b;

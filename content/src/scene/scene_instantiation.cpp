@@ -4,6 +4,9 @@
 #include <candela/ecs/transform.h>
 #include <candela/ecs/view.h>
 
+#include "candela/content/components/mesh_instance.h"
+#include "candela/content/components/name.h"
+
 #include <algorithm>
 #include <unordered_map>
 
@@ -37,38 +40,9 @@ ecs::Entity createWithTransform(ecs::Registry& registry, const std::string& name
 
 }  // namespace
 
-std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& model,
-                                          const std::string& gltfPath, ecs::Entity parent) {
-    std::vector<ecs::Entity> entities(model.nodes.size(), ecs::kNullEntity);
-    // Explicit stack: node chains in files can be deeper than the call stack allows.
-    std::vector<std::pair<std::int32_t, ecs::Entity>> pending;
-    for (auto it = model.rootNodes.rbegin(); it != model.rootNodes.rend(); ++it) {
-        pending.push_back({*it, parent});
-    }
-    while (!pending.empty()) {
-        const auto [index, parentEntity] = pending.back();
-        pending.pop_back();
-        const Node& node = model.nodes[static_cast<std::size_t>(index)];
-        const ecs::Entity e = createWithTransform(registry, node.name, node.local);
-        entities[static_cast<std::size_t>(index)] = e;
-        if (parentEntity != ecs::kNullEntity) (void)ecs::setParent(registry, e, parentEntity);
-        if (node.mesh != kNoIndex)
-            registry.emplace<MeshInstance>(e, MeshInstance{gltfPath, node.mesh});
-        if (node.light != kNoIndex) {
-            registry.emplace<Light>(e, model.lights[static_cast<std::size_t>(node.light)].light);
-        }
-        if (node.camera != kNoIndex) {
-            registry.emplace<Camera>(e,
-                                     model.cameras[static_cast<std::size_t>(node.camera)].camera);
-        }
-        for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) {
-            pending.push_back({*child, e});
-        }
-    }
-    return entities;
-}
-
-std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDocument& scene) {
+std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDocument& scene,
+                                          const std::filesystem::path& sceneFile, AssetCache& cache,
+                                          Diagnostics& diagnostics) {
     std::vector<ecs::Entity> entities;
     entities.reserve(scene.entities.size());
     for (std::size_t i = 0; i < scene.entities.size(); ++i) {
@@ -76,8 +50,18 @@ std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDo
         const ecs::Entity e = createWithTransform(registry, source.name, source.transform);
         registry.emplace<SceneMember>(e, SceneMember{static_cast<std::uint32_t>(i)});
         if (source.mesh) {
+            std::shared_ptr<const Model> model =
+                cache.model(resolveScenePath(sceneFile, source.mesh->gltfPath), diagnostics);
+            const std::int32_t mesh = source.mesh->meshIndex;
+            const bool hasMesh =
+                model && mesh >= 0 && static_cast<std::size_t>(mesh) < model->meshes.size();
+            if (model && !hasMesh) {
+                diagnostics.error(sceneFile.string(), "/entities/" + std::to_string(i) + "/mesh",
+                                  source.mesh->gltfPath + " has no mesh " + std::to_string(mesh));
+            }
+            // The cache keeps the model alive as long as the cache lives.
             registry.emplace<MeshInstance>(
-                e, MeshInstance{source.mesh->gltfPath, source.mesh->meshIndex});
+                e, MeshInstance{hasMesh ? model.get() : nullptr, mesh, source.mesh->gltfPath});
         }
         if (!source.materialOverrides.empty()) {
             registry.emplace<MaterialOverrides>(e, MaterialOverrides{source.materialOverrides});
@@ -121,8 +105,8 @@ SceneDocument captureScene(ecs::Registry& registry) {
         if (const ecs::Entity p = ecs::parentOf(registry, e); p != ecs::kNullEntity) {
             if (auto it = indexOf.find(p.bits()); it != indexOf.end()) out.parent = it->second;
         }
-        if (const auto* mesh = registry.tryGet<MeshInstance>(e)) {
-            out.mesh = MeshReference{mesh->gltfPath, mesh->meshIndex};
+        if (const auto* mesh = registry.tryGet<MeshInstance>(e); mesh && !mesh->gltfPath.empty()) {
+            out.mesh = MeshReference{mesh->gltfPath, mesh->mesh};
         }
         if (const auto* overrides = registry.tryGet<MaterialOverrides>(e)) {
             out.materialOverrides = overrides->overrides;

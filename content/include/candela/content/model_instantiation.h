@@ -7,6 +7,7 @@
 //   ecs::propagateTransforms(registry);
 //
 // The model must outlive the entities (MeshInstance points at it).
+#include <string>
 #include <vector>
 
 #include "candela/content/model.h"
@@ -19,8 +20,10 @@ class Registry;
 namespace candela::content {
 
 // Returns the created entities, parents before children; `parent` (optional) becomes the
-// parent of the model's root nodes.
+// parent of the model's root nodes. `gltfPath` is stored in each MeshInstance so the entities
+// can be saved to a scene file.
 std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& model,
-                                          ecs::Entity parent = ecs::kNullEntity);
+                                          ecs::Entity parent = ecs::kNullEntity,
+                                          const std::string& gltfPath = {});
 
 }  // namespace candela::content

@@ -1,34 +1,35 @@
 #pragma once
-// Turning loaded content into entities, and entities back into a scene file.
+// Scene files into entities, and entities back into a scene file. (glTF models alone:
+// model_instantiation.h.)
 //
+//   AssetCache cache;
 //   ecs::Registry registry;
-//   auto nodes = instantiateModel(registry, model, "models/DamagedHelmet.glb");
-//   auto entities = instantiateScene(registry, sceneDocument);
+//   auto entities = instantiateScene(registry, scene, "levels/one.scene.json", cache, diagnostics);
 //   ecs::propagateTransforms(registry);            // fills WorldTransform
 //   SceneDocument saved = captureScene(registry);  // every SceneMember entity, in order
 //
-// Entities get Name, ecs::LocalTransform, ecs::WorldTransform and ecs hierarchy links, plus
-// MeshInstance, MaterialOverrides, Light, Camera, Sky, GameData as the source has them.
-#include <string>
+// Entities get Name, ecs::LocalTransform, ecs::WorldTransform, ecs hierarchy links and
+// SceneMember, plus MeshInstance, MaterialOverrides, Light, Camera, Sky, GameData as the
+// scene entity has them.
+#include <filesystem>
 #include <vector>
 
 #include <candela/ecs/entity.h>
 #include <candela/ecs/registry.h>
 
-#include "candela/content/model.h"
+#include "candela/content/asset_cache.h"
+#include "candela/content/diagnostics.h"
 #include "candela/content/scene_file.h"
 
 namespace candela::content {
 
-// One entity per node reachable from model.rootNodes, parented as in the file and the roots
-// under `parent` (kNullEntity: top level). `gltfPath` is what MeshInstance components will
-// name. Returns node index -> entity (kNullEntity for nodes outside the scene).
-std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& model,
-                                          const std::string& gltfPath,
-                                          ecs::Entity parent = ecs::kNullEntity);
-
-// One entity per SceneEntity, in order, each tagged SceneMember{index}. Returns them in order.
-std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDocument& scene);
+// One entity per SceneEntity, in order, each tagged SceneMember{index}; returns them in order.
+// Mesh references load through `cache`, resolved against `sceneFile`'s directory; a glTF that
+// fails to load (messages in `diagnostics`) or a mesh index it lacks leaves
+// MeshInstance::model null but keeps the reference, so saving again loses nothing.
+std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDocument& scene,
+                                          const std::filesystem::path& sceneFile, AssetCache& cache,
+                                          Diagnostics& diagnostics);
 
 // Every entity with SceneMember, sorted by SceneMember::order (ties by entity), as a scene
 // document; parents outside that set make the entity a root.

@@ -1,5 +1,5 @@
 #pragma once
-// Components the content module puts on entities besides Light, Camera and Sky.
+// Scene-file components besides Name, MeshInstance, Light, Camera and Sky.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -7,17 +7,6 @@
 #include "candela/content/material.h"
 
 namespace candela::content {
-
-struct Name {
-    std::string value;
-};
-
-// Draw mesh `meshIndex` of the glTF at `gltfPath` (relative to the scene file; the asset cache
-// resolves and loads it once however many entities use it).
-struct MeshInstance {
-    std::string gltfPath;
-    std::int32_t meshIndex = 0;
-};
 
 struct MaterialOverride {
     std::uint32_t primitive = 0;  // which primitive of the mesh
