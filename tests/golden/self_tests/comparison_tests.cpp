@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "engine_runner.h"
 #include "golden_comparison.h"
 #include "image_perturbations.h"
 #include "synthetic_images.h"
@@ -135,7 +136,8 @@ TEST(GoldenComparison, NanWrittenToAnExrIsCaughtWhenReadBack) {
     image.rgb[40] = std::numeric_limits<float>::quiet_NaN();
     image.rgb[41] = std::numeric_limits<float>::infinity();  // same texel
     image.rgb[90] = -std::numeric_limits<float>::infinity();
-    const auto path = std::filesystem::path(testing::TempDir()) / "golden_nan.exr";
+    const std::filesystem::path dir = testDirectory();
+    const std::filesystem::path path = dir / "nan.exr";
     ASSERT_EQ(writeHdrExr(path, image), "");
     std::string error;
     std::optional<LoadedHdr> loaded = readHdrExr(path, error);
@@ -144,6 +146,7 @@ TEST(GoldenComparison, NanWrittenToAnExrIsCaughtWhenReadBack) {
     const HdrComparison h = compareHdrImages(*loaded, {syntheticHdr(16, 16), 0}, kThresholds.hdr);
     EXPECT_FALSE(h.passed());
     EXPECT_TRUE(mentions(h.failures, "NaN/Inf in 2 texels"));
+    removeIfPassed(dir);
 }
 
 TEST(GoldenComparison, SizeMismatchFails) {

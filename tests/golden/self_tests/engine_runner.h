@@ -2,6 +2,7 @@
 // Runs the real candela executable (and candela-golden) from the self tests, so perturbation
 // tests capture frames exactly as golden tests do.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -34,14 +35,20 @@ inline CommandResult runCommand(const std::string& command, const std::filesyste
     return result;
 }
 
-// A fresh directory per test, so tests can run in parallel.
+// A fresh directory per test and process, so tests of several build trees can run at once.
 inline std::filesystem::path testDirectory() {
     const auto* info = testing::UnitTest::GetInstance()->current_test_info();
     auto dir = std::filesystem::path(testing::TempDir()) / "candela_golden" /
-               (std::string(info->test_suite_name()) + "." + info->name());
+               (std::string(info->test_suite_name()) + "." + info->name() + "." +
+                std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
+}
+
+// Kept when the test failed, so its images can be looked at.
+inline void removeIfPassed(const std::filesystem::path& dir) {
+    if (!testing::Test::HasFailure()) std::filesystem::remove_all(dir);
 }
 
 // Renders `scene` like a golden test does: <dir>/<name>.exr and <dir>/<name>.png.

@@ -34,6 +34,8 @@ protected:
         ASSERT_EQ(capture_.ldr.height, 256u);
     }
 
+    void TearDown() override { removeIfPassed(dir_); }
+
     fs::path dir_;
     Capture capture_;
 };

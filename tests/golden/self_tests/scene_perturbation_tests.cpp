@@ -41,6 +41,8 @@ protected:
         return c;
     }
 
+    void TearDown() override { removeIfPassed(dir_); }
+
     fs::path dir_;
     Capture baseline_;
 };
