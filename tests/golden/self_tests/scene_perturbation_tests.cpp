@@ -1,12 +1,14 @@
 // The scene perturbations on a real lit scene rendered by `candela run`: moving the
 // light 5 cm, changing roughness by 0.05 and swapping the shading model must each fail the
-// golden comparison; re-rendering the unchanged scene must pass it. New perturbations are one
-// test each: copy the baseline LitScene, change a field, expect a failure.
+// golden comparison; re-rendering the unchanged scene must pass it. Each runs on the scene as
+// glTF and as an engine scene file. A new perturbation is one test: copy the baseline
+// LitScene, change a field, expect a failure.
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "captures.h"
+#include "lit_scene_file.h"
 #include "lit_scene_gltf.h"
 
 using namespace candela::golden;
@@ -15,33 +17,60 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class ScenePerturbation : public testing::Test {
+enum class SceneFormat { Gltf, EngineSceneFile };
+
+class ScenePerturbation : public testing::TestWithParam<SceneFormat> {
 protected:
     void SetUp() override {
         dir_ = testDirectory();
+        if (GetParam() == SceneFormat::EngineSceneFile) skipUnlessEngineLoadsSceneFiles();
+        if (IsSkipped()) return;
         std::optional<Capture> baseline = render(LitScene{}, "baseline");
         ASSERT_TRUE(baseline);
         baseline_ = *baseline;
         ASSERT_EQ(baseline_.hdr.nonFiniteTexels, 0u);
     }
 
+    void TearDown() override { removeIfPassed(dir_); }
+
+    // Engine scene files are being wired into `candela run`; until then it rejects them by
+    // type, and these tests say so instead of failing. Any other failure still fails.
+    void skipUnlessEngineLoadsSceneFiles() {
+        std::string error;
+        const fs::path scene = writeLitSceneFile(LitScene{}, dir_, "probe", error);
+        ASSERT_FALSE(scene.empty()) << error;
+        const CommandResult probe = renderCapture(scene.string(), "16x16", 1, dir_, "probe");
+        if (probe.exitCode == 2 && probe.output.find("unsupported type") != std::string::npos) {
+            GTEST_SKIP() << "candela run does not load engine scene files yet: " << probe.output;
+        }
+    }
+
+    fs::path writeScene(const LitScene& scene, const std::string& name) {
+        if (GetParam() == SceneFormat::EngineSceneFile) {
+            std::string error;
+            fs::path path = writeLitSceneFile(scene, dir_, name, error);
+            EXPECT_TRUE(error.empty()) << error;
+            return path;
+        }
+        const fs::path path = dir_ / (name + ".gltf");
+        std::ofstream(path) << litSceneGltf(scene);
+        return path;
+    }
+
     std::optional<Capture> render(const LitScene& scene, const std::string& name) {
-        const fs::path gltf = dir_ / (name + ".gltf");
-        std::ofstream(gltf) << litSceneGltf(scene);
-        return renderAndLoad(gltf.string(), "256x256", dir_, name);
+        return renderAndLoad(writeScene(scene, name).string(), "256x256", dir_, name);
     }
 
     // Renders the perturbed scene, prints the metrics and returns the comparison.
-    CaptureComparison compareWithBaseline(const LitScene& scene, const char* what) {
+    CaptureComparison compareWithBaseline(const LitScene& scene, const std::string& what) {
         std::optional<Capture> changed = render(scene, "changed");
         EXPECT_TRUE(changed);
         if (!changed) return {};
         CaptureComparison c = compareCaptures(*changed, baseline_);
-        report(what, c);
+        const char* format = GetParam() == SceneFormat::Gltf ? "glTF" : "scene file";
+        report((what + " (" + format + ")").c_str(), c);
         return c;
     }
-
-    void TearDown() override { removeIfPassed(dir_); }
 
     fs::path dir_;
     Capture baseline_;
@@ -49,37 +78,46 @@ protected:
 
 }  // namespace
 
-TEST_F(ScenePerturbation, UnchangedSceneRenderedAgainPasses) {
+TEST_P(ScenePerturbation, UnchangedSceneRenderedAgainPasses) {
     const CaptureComparison c = compareWithBaseline(LitScene{}, "lit scene rendered again");
     EXPECT_TRUE(c.passed());
     EXPECT_EQ(c.hdr.difference.maxErrorInTolerances, 0.0);
 }
 
-TEST_F(ScenePerturbation, TheSceneIsLitNotBlack) {
+TEST_P(ScenePerturbation, TheSceneIsLitNotBlack) {
     // A perturbation test on a black frame would prove nothing.
     double sum = 0;
-    for (float v : baseline_.hdr.image.rgb)
+    for (float v : baseline_.hdr.image.rgb) {
         sum += v;
+    }
     EXPECT_GT(sum / double(baseline_.hdr.image.rgb.size()), 100.0);  // cd/m^2
 }
 
-TEST_F(ScenePerturbation, LightMovedFiveCentimetresFails) {
+TEST_P(ScenePerturbation, LightMovedFiveCentimetresFails) {
     LitScene scene;
     scene.lightPosition[0] += 0.05f;
     const CaptureComparison c = compareWithBaseline(scene, "light moved 5 cm along +x");
     EXPECT_FALSE(c.hdr.passed());
 }
 
-TEST_F(ScenePerturbation, RoughnessChangedByFiveHundredthsFails) {
+TEST_P(ScenePerturbation, RoughnessChangedByFiveHundredthsFails) {
     LitScene scene;
     scene.sphereRoughness += 0.05f;
     const CaptureComparison c = compareWithBaseline(scene, "sphere roughness 0.40 -> 0.45");
     EXPECT_FALSE(c.hdr.passed());
 }
 
-TEST_F(ScenePerturbation, ShadingModelSwappedFails) {
+TEST_P(ScenePerturbation, ShadingModelSwappedFails) {
     LitScene scene;
     scene.sphereShadingModel = "legacy";  // same albedo, specular 0.04: only the model differs
     const CaptureComparison c = compareWithBaseline(scene, "sphere defaultLit -> legacy");
     EXPECT_FALSE(c.hdr.passed());
 }
+
+std::string formatName(const testing::TestParamInfo<SceneFormat>& param) {
+    return param.param == SceneFormat::Gltf ? "Gltf" : "SceneFile";
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, ScenePerturbation,
+                         testing::Values(SceneFormat::Gltf, SceneFormat::EngineSceneFile),
+                         formatName);
