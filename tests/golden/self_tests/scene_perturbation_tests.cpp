@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <ostream>
 
 #include "captures.h"
 #include "lit_scene_file.h"
@@ -18,6 +19,15 @@ namespace fs = std::filesystem;
 namespace {
 
 enum class SceneFormat { Gltf, EngineSceneFile };
+
+const char* formatLabel(SceneFormat format) {
+    return format == SceneFormat::Gltf ? "glTF" : "scene file";
+}
+
+// Names the parameter in test output and ctest names instead of its bytes.
+void PrintTo(SceneFormat format, std::ostream* out) {
+    *out << (format == SceneFormat::Gltf ? "gltf" : "scene-file");
+}
 
 class ScenePerturbation : public testing::TestWithParam<SceneFormat> {
 protected:
@@ -67,8 +77,7 @@ protected:
         EXPECT_TRUE(changed);
         if (!changed) return {};
         CaptureComparison c = compareCaptures(*changed, baseline_);
-        const char* format = GetParam() == SceneFormat::Gltf ? "glTF" : "scene file";
-        report((what + " (" + format + ")").c_str(), c);
+        report((what + " (" + formatLabel(GetParam()) + ")").c_str(), c);
         return c;
     }
 

@@ -77,9 +77,9 @@ int comparePng(const fs::path& actualPath, const fs::path& expectedPath,
     LdrComparison comparison = compareLdrImages(*actual, *expected, thresholds);
     int verdict = reportVerdict(comparison.failures, describe(comparison, thresholds), out);
     if (comparison.sameSize) {
-        LdrImage diff = falseColourDiff(
-            comparison.difference.errorInTolerances, backdropFromLdr(*expected), expected->width,
-            expected->height, double(thresholds.hardLimitLevels) / std::max(thresholds.levels, 1));
+        LdrImage diff =
+            falseColourDiff(comparison.difference.errorInTolerances, backdropFromLdr(*expected),
+                            expected->width, expected->height, thresholds.hardLimitInTolerances());
         if (!writeDiff(diffPng, diff, out)) return kExitUnusable;
     }
     return verdict;

@@ -76,7 +76,8 @@ void writeFailureImages(const GoldenFiles& files, const LoadedHdr& expectedHdr,
                 << ec.message() << "\n";
         }
     }
-    const bool backdropFromPng = ldr.sameSize && hdr.sameSize;
+    const bool backdropFromPng = expectedLdr.width == expectedHdr.image.width &&
+                                 expectedLdr.height == expectedHdr.image.height;
     if (hdr.sameSize) {
         LdrImage diff = falseColourDiff(
             hdr.difference.errorInTolerances,
@@ -89,8 +90,7 @@ void writeFailureImages(const GoldenFiles& files, const LoadedHdr& expectedHdr,
     if (ldr.sameSize) {
         LdrImage diff = falseColourDiff(
             ldr.difference.errorInTolerances, backdropFromLdr(expectedLdr), ldr.difference.width,
-            ldr.difference.height,
-            double(thresholds.ldr.hardLimitLevels) / std::max(thresholds.ldr.levels, 1));
+            ldr.difference.height, thresholds.ldr.hardLimitInTolerances());
         if (std::string error = writeLdrPng(files.diffPng, diff); !error.empty()) {
             out << "  " << error << "\n";
         }

@@ -27,6 +27,10 @@ struct LdrThresholds {
     double maxFractionOverTolerance = 1e-3;
     // Mean SSIM of the sRGB luma (Rec. 709 weights, 11x11 Gaussian window, sigma 1.5).
     double minSsim = 0.995;
+
+    // Levels are whole numbers; a tolerance below one level would make every change count.
+    int toleranceLevels() const { return levels < 1 ? 1 : levels; }
+    double hardLimitInTolerances() const { return double(hardLimitLevels) / toleranceLevels(); }
 };
 
 struct GoldenThresholds {

@@ -74,8 +74,7 @@ DifferenceStats compareHdr(const HdrImage& actual, const HdrImage& expected,
 
 DifferenceStats compareLdr(const LdrImage& actual, const LdrImage& expected,
                            const LdrThresholds& thresholds) {
-    // Levels are whole numbers; a tolerance below one level would make every change count.
-    const double tolerance = std::max(thresholds.levels, 1);
+    const double tolerance = thresholds.toleranceLevels();
     auto value = [](const LdrImage& image) {
         return [&image](std::size_t i, std::size_t c) { return double(image.rgb[i * 3 + c]); };
     };
@@ -83,8 +82,8 @@ DifferenceStats compareLdr(const LdrImage& actual, const LdrImage& expected,
         double difference = std::abs(double(actual.rgb[i * 3 + c]) - expected.rgb[i * 3 + c]);
         return difference / tolerance;
     };
-    return summarise(actual.width, actual.height, thresholds.hardLimitLevels / tolerance,
-                     channelError, value(actual), value(expected));
+    return summarise(actual.width, actual.height, thresholds.hardLimitInTolerances(), channelError,
+                     value(actual), value(expected));
 }
 
 }  // namespace candela::golden
