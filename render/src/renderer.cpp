@@ -133,7 +133,7 @@ void Renderer::uploadFrameData(const FrameInputs& inputs) {
     const FrameScene& scene = inputs.scene;
     lights_->update(context_, scene.lights, scene.changedLights, scene.lightsRestructured);
     const CameraView& view = scene.camera;
-    *grid_ = ClusterGrid::make({options_.tileSize, options_.slices}, width_, height_,
+    *grid_ = ClusterGrid::make(options_.tileSize, options_.slices, width_, height_,
                                view.projection[0][0], view.projection[1][1], view.nearPlane,
                                view.farPlane);
 
@@ -146,8 +146,16 @@ void Renderer::uploadFrameData(const FrameInputs& inputs) {
 }
 
 void Renderer::assignLightsToClusters(const FrameInputs& inputs) {
-    std::span<const uint64_t> occupancy(static_cast<const uint64_t*>(occupancy_.mapped()),
-                                        grid_->tileCount());
+    // The slicing the occupancy pass derived from the measured depth range, bit for bit.
+    const auto* range = static_cast<const uint32_t*>(depthRange_.mapped());
+    float sliceNear, logRatio;
+    std::memcpy(&sliceNear, &range[2], sizeof(float));
+    std::memcpy(&logRatio, &range[3], sizeof(float));
+    grid_->setSlicing(sliceNear, logRatio);
+    ClusterOccupancy occupancy;
+    occupancy.tileMasks = {static_cast<const uint64_t*>(occupancy_.mapped()), grid_->tileCount()};
+    occupancy.pixelBounds = {static_cast<const float*>(clusterBounds_.mapped()),
+                             size_t(grid_->clusterCount()) * 6};
     assignLights(*grid_, inputs.scene.lights, inputs.scene.camera.view, occupancy, jobs_.get(),
                  *assignment_);
     ensureBuffer(context_, clusterRanges_, assignment_->clusterRanges.size() * sizeof(uint32_t));
@@ -213,7 +221,15 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
     if (features.clustered) {
         // Geometry first: the occupancy masks must be on the CPU before lights are assigned.
         ensureBuffer(context_, occupancy_, VkDeviceSize(grid_->tileCount()) * 8);
-        occupancyPass_->record(cmd, gbuffer_->depth, *grid_, occupancy_);
+        ensureBuffer(context_, clusterBounds_, VkDeviceSize(grid_->clusterCount()) * 24);
+        if (!depthRange_.handle()) {
+            depthRange_ = GpuBuffer(
+                context_, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                MemoryLocation::HostVisible);
+        }
+        const glm::mat4& projection = inputs.scene.camera.projection;
+        occupancyPass_->record(cmd, gbuffer_->depth, *grid_, {projection[0][0], projection[1][1]},
+                               {&occupancy_, &clusterBounds_, &depthRange_});
         computeToHostBarrier(cmd);
         submitter.submit();
         submitter.waitIdle();

@@ -20,7 +20,8 @@ inline GpuContextOptions requiredValidation() {
 inline CapturedFrame renderOffscreen(GpuContext& context, const FrameInputs& inputs, uint32_t width,
                                      uint32_t height, uint32_t frames = 1,
                                      SceneResources* resources = nullptr,
-                                     const RendererOptions& options = {}) {
+                                     const RendererOptions& options = {},
+                                     RendererStats* stats = nullptr) {
     Renderer renderer(context, width, height, options);
     FrameSubmitter submitter(context);
     FrameReadback readback(context, width, height);
@@ -28,8 +29,9 @@ inline CapturedFrame renderOffscreen(GpuContext& context, const FrameInputs& inp
         VkCommandBuffer cmd = renderer.recordFrame(submitter, inputs, resources);
         if (i + 1 == frames) readback.recordCopy(cmd, renderer);
         submitter.submit();
+        submitter.waitIdle();
+        if (stats) *stats = renderer.collectStats();
     }
-    submitter.waitIdle();
     return readback.read();
 }
 

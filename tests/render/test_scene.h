@@ -44,10 +44,13 @@ struct TestScene {
                 float verticalFov = glm::radians(60.0f)) {
         camera.view = glm::lookAt(eye, target, up);
         camera.projection = reverseZPerspective(verticalFov, float(width) / float(height), 0.05f);
+        camera.nearPlane = 0.05f;
+        camera.farPlane = 200.0f;
         camera.position = eye;
     }
 
-    CapturedFrame render(GpuContext& context) {
+    CapturedFrame render(GpuContext& context, const RendererOptions& options = {},
+                         RendererStats* stats = nullptr) {
         SceneResources resources(context);
         const UploadedModel& uploaded = resources.addModel(model);
         draws.clear();
@@ -59,7 +62,7 @@ struct TestScene {
         inputs.scene.camera = camera;
         inputs.scene.draws = draws;
         inputs.scene.lights = lights;
-        return renderOffscreen(context, inputs, width, height, 1, &resources);
+        return renderOffscreen(context, inputs, width, height, 1, &resources, options, stats);
     }
 
     // Where the ray through the centre of pixel (x, y) meets the plane y = planeY.

@@ -1,4 +1,4 @@
-// Cluster lookup shared by the depth-occupancy and lighting passes (matches cluster_grid.h).
+// Cluster lookup shared by the depth passes and the lighting pass (matches cluster_grid.h).
 #ifndef CANDELA_CLUSTERS_GLSL
 #define CANDELA_CLUSTERS_GLSL
 
@@ -7,19 +7,32 @@ struct ClusterGridParams {
     uint tilesX;
     uint tilesY;
     uint slices;
-    float nearPlane;
-    float logRatio;  // log(far / near) / slices
+    float projectionNear;  // of the reverse-Z projection
+    float sliceNear;       // where the exponential slices start (the nearest geometry)
+    float logRatio;        // log(far / sliceNear) / slices
+    uint pad;
 };
 
 // Reverse-Z with an infinite far plane: ndc depth = near / view depth.
-float viewDepthFromNdc(float ndcDepth, float nearPlane) {
-    return nearPlane / ndcDepth;
+float viewDepthFromNdc(float ndcDepth, float projectionNear) {
+    return projectionNear / ndcDepth;
 }
 
-uint sliceOfDepth(ClusterGridParams g, float depth) {
-    if (!(depth > g.nearPlane)) return 0u;
-    float k = floor(log(depth / g.nearPlane) / g.logRatio);
-    return uint(min(k, float(g.slices - 1u)));
+// Slice k >= 1 spans [sliceNear * r^k, sliceNear * r^(k+1)); slice 0 everything nearer.
+uint sliceOfDepth(float sliceNear, float logRatio, uint slices, float depth) {
+    if (!(depth > sliceNear)) return 0u;
+    float k = floor(log(depth / sliceNear) / logRatio);
+    return uint(min(k, float(slices - 1u)));
+}
+
+// Order-preserving float bits: uint atomics on them give float min/max.
+uint orderedBits(float f) {
+    uint u = floatBitsToUint(f);
+    return (u & 0x80000000u) != 0u ? ~u : (u | 0x80000000u);
+}
+
+float fromOrderedBits(uint u) {
+    return uintBitsToFloat((u & 0x80000000u) != 0u ? (u & 0x7fffffffu) : ~u);
 }
 
 #endif

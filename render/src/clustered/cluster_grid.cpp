@@ -4,17 +4,17 @@
 
 namespace candela::render {
 
-ClusterGrid ClusterGrid::make(const ClusterGridConfig& config, uint32_t width, uint32_t height,
+ClusterGrid ClusterGrid::make(uint32_t tileSize, uint32_t slices, uint32_t width, uint32_t height,
                               float projectionScaleX, float projectionScaleY, float nearPlane,
                               float farPlane) {
     ClusterGrid g;
-    g.tileSize = std::max(config.tileSize, 1u);
-    g.slices = std::clamp(config.slices, 1u, 64u);
+    g.tileSize = std::max(tileSize, 1u);
+    g.slices = std::clamp(slices, 1u, 64u);
     g.tilesX = (width + g.tileSize - 1) / g.tileSize;
     g.tilesY = (height + g.tileSize - 1) / g.tileSize;
     g.nearPlane = nearPlane;
-    g.farPlane = std::max(farPlane, nearPlane * 1.001f);
-    g.logRatio = std::log(g.farPlane / g.nearPlane) / float(g.slices);
+    g.sliceNear = nearPlane;
+    g.logRatio = std::log(std::max(farPlane, nearPlane * 1.01f) / nearPlane) / float(g.slices);
     // ndc_x = projectionScaleX * x / d and pixel = (ndc + 1) / 2 * size, so the boundary at
     // pixel p has x / d = (2 p / width - 1) / projectionScaleX. For y the projection flips
     // (Vulkan's y points down), so projectionScaleY is negative and rows count downwards.

@@ -11,12 +11,14 @@ struct GpuClusterParams {
     uint32_t tilesX;
     uint32_t tilesY;
     uint32_t slices;
-    float nearPlane;
+    float projectionNear;
+    float sliceNear;
     float logRatio;
+    uint32_t pad;
 };
 
 inline GpuClusterParams toGpu(const ClusterGrid& g) {
-    return {g.tileSize, g.tilesX, g.tilesY, g.slices, g.nearPlane, g.logRatio};
+    return {g.tileSize, g.tilesX, g.tilesY, g.slices, g.nearPlane, g.sliceNear, g.logRatio, 0};
 }
 
 }  // namespace candela::render

@@ -12,6 +12,7 @@ namespace candela::render {
 namespace {
 
 constexpr float kSliceDepthMargin = 1e-3f;
+constexpr float kPixelBoundsMargin = 1e-4f;  // relative to depth
 
 // Light-cluster pairs found by one job, in ascending light order.
 struct PairList {
@@ -39,19 +40,20 @@ void tileRange(const std::vector<float>& boundaries, float lo, float hi, bool de
 }
 
 void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightIndex,
-               std::span<const uint64_t> occupancy, PairList& out) {
+               const ClusterOccupancy& occupancy, PairList& out) {
     const float centerDepth = -b.center.z;
     const float nearDepth = centerDepth - b.radius;
     const float farDepth = centerDepth + b.radius;
     if (farDepth < grid.nearPlane) return;  // wholly behind the near plane
-    const uint32_t firstSlice = grid.sliceOf(nearDepth);
-    const uint32_t lastSlice = grid.sliceOf(farDepth);
+    // Widened like the slice depths below, for the same rounding reason.
+    const uint32_t firstSlice = grid.sliceOf(nearDepth * (1.0f - kSliceDepthMargin));
+    const uint32_t lastSlice = grid.sliceOf(farDepth * (1.0f + kSliceDepthMargin));
     for (uint32_t k = firstSlice; k <= lastSlice; ++k) {
         // Widened by a relative margin: the shader's log-based slice of a pixel may round
         // across a boundary the CPU's exp-based depth puts a hair away.
         const float z0 = grid.sliceDepth(k) * (1.0f - kSliceDepthMargin);
         // The last slice holds everything past far.
-        const float z1 = k + 1 == grid.slices ? std::max(farDepth, grid.farPlane) * 2.0f
+        const float z1 = k + 1 == grid.slices ? std::max(farDepth, grid.sliceDepth(k)) * 2.0f
                                               : grid.sliceDepth(k + 1) * (1.0f + kSliceDepthMargin);
         // The sphere's widest cross-section inside this slice, and the depths it spans there.
         const float dz = std::clamp(centerDepth, z0, z1) - centerDepth;
@@ -82,18 +84,34 @@ void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightInde
             }
             for (uint32_t x = x0; x <= x1; ++x) {
                 const uint32_t tile = y * grid.tilesX + x;
-                if (!occupancy.empty() && !(occupancy[tile] >> k & 1u)) continue;
+                if (!occupancy.tileMasks.empty() && !(occupancy.tileMasks[tile] >> k & 1u)) {
+                    continue;
+                }
                 const float left = grid.columnTangent[x], right = grid.columnTangent[x + 1];
                 if (!lightReachesPositiveSide(b, glm::normalize(glm::vec3(1.0f, 0.0f, left))) ||
                     !lightReachesPositiveSide(b, glm::normalize(glm::vec3(-1.0f, 0.0f, -right)))) {
                     continue;
                 }
-                // The cell's view-space box (z is negative in front of the camera).
-                glm::vec3 lo(std::min(left * z0, left * z1), std::min(bottom * z0, bottom * z1),
-                             -z1);
-                glm::vec3 hi(std::max(right * z0, right * z1), std::max(top * z0, top * z1), -z0);
+                const uint32_t cluster = grid.clusterIndex(x, y, k);
+                glm::vec3 lo, hi;
+                if (!occupancy.pixelBounds.empty()) {
+                    // The box around the cluster's pixels, padded for the lighting shader's
+                    // own (world-space) reconstruction of the same points.
+                    const float* bounds = &occupancy.pixelBounds[size_t(cluster) * 6];
+                    lo = glm::vec3(bounds[0], bounds[1], bounds[2]);
+                    hi = glm::vec3(bounds[3], bounds[4], bounds[5]);
+                    glm::vec3 pad(kPixelBoundsMargin * (1.0f - lo.z));
+                    lo -= pad;
+                    hi += pad;
+                } else {
+                    // The cell's view-space box (z is negative in front of the camera).
+                    lo = glm::vec3(std::min(left * z0, left * z1),
+                                   std::min(bottom * z0, bottom * z1), -z1);
+                    hi = glm::vec3(std::max(right * z0, right * z1), std::max(top * z0, top * z1),
+                                   -z0);
+                }
                 if (!lightTouchesBox(b, lo, hi)) continue;
-                out.cluster.push_back(grid.clusterIndex(x, y, k));
+                out.cluster.push_back(cluster);
                 out.light.push_back(lightIndex);
             }
         }
@@ -103,8 +121,8 @@ void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightInde
 }  // namespace
 
 void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights,
-                  const glm::mat4& view, std::span<const uint64_t> tileOccupancy,
-                  ecs::JobSystem* jobs, LightAssignment& out) {
+                  const glm::mat4& view, const ClusterOccupancy& occupancy, ecs::JobSystem* jobs,
+                  LightAssignment& out) {
     out.lightIndices.clear();
     out.directionalCount = 0;
     for (uint32_t i = 0; i < lights.size(); ++i) {
@@ -125,8 +143,7 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
             const size_t last = std::min(first + kLightsPerJob, lights.size());
             for (size_t i = first; i < last; ++i) {
                 if (lights[i].light.type == content::LightType::Directional) continue;
-                assignOne(grid, lightBoundsInView(lights[i], view), uint32_t(i), tileOccupancy,
-                          list);
+                assignOne(grid, lightBoundsInView(lights[i], view), uint32_t(i), occupancy, list);
             }
         }
     };
@@ -161,11 +178,12 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
     }
     out.assignedPairs = uint32_t(total);
     out.occupiedClusters = 0;
-    if (tileOccupancy.empty()) {
+    if (occupancy.tileMasks.empty()) {
         out.occupiedClusters = clusters;
     } else {
-        for (uint64_t mask : tileOccupancy)
+        for (uint64_t mask : occupancy.tileMasks) {
             out.occupiedClusters += uint32_t(std::popcount(mask));
+        }
     }
 }
 

@@ -27,10 +27,17 @@ struct LightAssignment {
     uint32_t assignedPairs = 0;     // light-cluster pairs in the lists
 };
 
-// tileOccupancy: one 64-bit mask per tile, bit k set when the depth buffer has a pixel in
-// slice k of that tile; empty means "assume every cluster holds geometry".
+// What the depth buffer says about each cluster; empty spans mean "assume every cluster is
+// full of geometry" (no depth refinement).
+struct ClusterOccupancy {
+    // One 64-bit mask per tile: bit k set when the tile has a pixel in slice k.
+    std::span<const uint64_t> tileMasks;
+    // Per cluster, 6 floats: view-space min xyz and max xyz of its pixels (occupied only).
+    std::span<const float> pixelBounds;
+};
+
 void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights,
-                  const glm::mat4& view, std::span<const uint64_t> tileOccupancy,
-                  ecs::JobSystem* jobs, LightAssignment& out);
+                  const glm::mat4& view, const ClusterOccupancy& occupancy, ecs::JobSystem* jobs,
+                  LightAssignment& out);
 
 }  // namespace candela::render

@@ -83,6 +83,8 @@ private:
     std::unique_ptr<ClusterGrid> grid_;
     std::unique_ptr<LightAssignment> assignment_;
     GpuBuffer occupancy_;      // uvec2 per tile, written by the GPU, read by the CPU
+    GpuBuffer clusterBounds_;  // view-space box of each occupied cluster's pixels
+    GpuBuffer depthRange_;     // measured depth range and the slicing derived from it
     GpuBuffer clusterRanges_;  // offset, count per cluster
     GpuBuffer lightIndices_;
     GpuBuffer pairCounts_;  // uvec2 per lighting workgroup

@@ -1,28 +1,54 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// One workgroup per screen tile: which depth slices of the tile hold geometry, as a 64-bit
-// mask. Light assignment skips the empty clusters, so they cost nothing to light.
+// One workgroup per screen tile. For each depth slice of the tile: whether any pixel lies in
+// it (a 64-bit mask per tile) and the view-space box around those pixels. Light assignment
+// skips empty clusters and tests lights against the box of the surfaces actually there, so
+// light lists shrink to the depths present.
 #include "common/clusters.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(binding = 0) uniform sampler2D depthBuffer;
 layout(std430, binding = 1) writeonly buffer Occupancy { uvec2 tileMasks[]; };
+// Per cluster: min xyz, max xyz of its pixels in view space (unwritten where unoccupied).
+layout(std430, binding = 2) writeonly buffer ClusterBounds { float clusterBounds[]; };
+// From depth_range.comp: [0] min, [1] max view depth (ordered bits); this pass writes the
+// slicing it derived into [2] sliceNear and [3] logRatio (float bits) for the CPU and the
+// lighting pass, so all three use bit-identical values.
+layout(std430, binding = 3) buffer DepthRange { uint range[]; };
 
 layout(push_constant) uniform Push {
     ClusterGridParams grid;
     uvec2 size;
+    vec2 projectionScale;  // projection[0][0], projection[1][1]
 } push;
 
+const uint kMaxSlices = 64u;
 shared uint maskLow;
 shared uint maskHigh;
+// Order-preserving float bits (see orderedBits), so uint atomics give float min/max.
+shared uint boundsMin[kMaxSlices * 3u];
+shared uint boundsMax[kMaxSlices * 3u];
 
 void main() {
     if (gl_LocalInvocationIndex == 0u) {
         maskLow = 0u;
         maskHigh = 0u;
     }
+    for (uint i = gl_LocalInvocationIndex; i < kMaxSlices * 3u; i += 256u) {
+        boundsMin[i] = 0xffffffffu;
+        boundsMax[i] = 0u;
+    }
     barrier();
+    // Slices span the depths present: from the nearest to the farthest geometry.
+    float minDepth = range[0] == 0xffffffffu ? push.grid.projectionNear : fromOrderedBits(range[0]);
+    float maxDepth = range[1] == 0u ? minDepth : fromOrderedBits(range[1]);
+    float sliceNear = max(minDepth, push.grid.projectionNear);
+    float logRatio = log(max(maxDepth, sliceNear * 1.01) / sliceNear) / float(push.grid.slices);
+    if (gl_WorkGroupID.xy == uvec2(0u) && gl_LocalInvocationIndex == 0u) {
+        range[2] = floatBitsToUint(sliceNear);
+        range[3] = floatBitsToUint(logRatio);
+    }
     uvec2 tile = gl_WorkGroupID.xy;
     uvec2 origin = tile * push.grid.tileSize;
     for (uint y = gl_LocalInvocationID.y; y < push.grid.tileSize; y += 16u) {
@@ -31,16 +57,31 @@ void main() {
             if (any(greaterThanEqual(pixel, push.size))) continue;
             float ndcDepth = texelFetch(depthBuffer, ivec2(pixel), 0).r;
             if (ndcDepth <= 0.0) continue;  // background
-            uint slice = sliceOfDepth(push.grid, viewDepthFromNdc(ndcDepth, push.grid.nearPlane));
+            float depth = viewDepthFromNdc(ndcDepth, push.grid.projectionNear);
+            uint slice = sliceOfDepth(sliceNear, logRatio, push.grid.slices, depth);
             if (slice < 32u) {
                 atomicOr(maskLow, 1u << slice);
             } else {
                 atomicOr(maskHigh, 1u << (slice - 32u));
             }
+            vec2 ndc = (vec2(pixel) + 0.5) / vec2(push.size) * 2.0 - 1.0;
+            vec3 view = vec3(ndc * depth / push.projectionScale, -depth);
+            for (uint c = 0u; c < 3u; ++c) {
+                atomicMin(boundsMin[slice * 3u + c], orderedBits(view[c]));
+                atomicMax(boundsMax[slice * 3u + c], orderedBits(view[c]));
+            }
         }
     }
     barrier();
-    if (gl_LocalInvocationIndex == 0u) {
-        tileMasks[tile.y * push.grid.tilesX + tile.x] = uvec2(maskLow, maskHigh);
+    uint tileIndex = tile.y * push.grid.tilesX + tile.x;
+    if (gl_LocalInvocationIndex == 0u) tileMasks[tileIndex] = uvec2(maskLow, maskHigh);
+    uint tileCount = push.grid.tilesX * push.grid.tilesY;
+    for (uint slice = gl_LocalInvocationIndex; slice < push.grid.slices; slice += 256u) {
+        if (boundsMax[slice * 3u] == 0u) continue;  // nothing in this cluster
+        uint cluster = slice * tileCount + tileIndex;
+        for (uint c = 0u; c < 3u; ++c) {
+            clusterBounds[cluster * 6u + c] = fromOrderedBits(boundsMin[slice * 3u + c]);
+            clusterBounds[cluster * 6u + 3u + c] = fromOrderedBits(boundsMax[slice * 3u + c]);
+        }
     }
 }

@@ -5,24 +5,56 @@
 #include "candela/render/gpu_image.h"
 #include "clustered/gpu_cluster_params.h"
 #include "shaders/depth_occupancy.comp.spv.h"
+#include "shaders/depth_range.comp.spv.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
 
 namespace {
-struct Push {
+
+struct RangePush {
+    uint32_t width;
+    uint32_t height;
+    float projectionNear;
+};
+
+struct OccupancyPush {
     GpuClusterParams grid;
     uint32_t width;
     uint32_t height;
+    float projectionScale[2];
 };
+
+void bufferBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
+    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = srcStage;
+    barrier.srcAccessMask = srcAccess;
+    barrier.dstStageMask = dstStage;
+    barrier.dstAccessMask = dstAccess;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
 }  // namespace
 
 DepthOccupancyPass::DepthOccupancyPass(GpuContext& context) : context_(context) {
-    const DescriptorBinding bindings[] = {
+    const DescriptorBinding rangeBindings[] = {
         {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     };
-    pipeline_ = Pipeline::compute(context, depth_occupancy_comp_spv, bindings, sizeof(Push));
+    rangePipeline_ =
+        Pipeline::compute(context, depth_range_comp_spv, rangeBindings, sizeof(RangePush));
+    const DescriptorBinding occupancyBindings[] = {
+        {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    };
+    occupancyPipeline_ = Pipeline::compute(context, depth_occupancy_comp_spv, occupancyBindings,
+                                           sizeof(OccupancyPush));
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = VK_FILTER_NEAREST;
     info.minFilter = VK_FILTER_NEAREST;
@@ -34,16 +66,39 @@ DepthOccupancyPass::~DepthOccupancyPass() {
 }
 
 void DepthOccupancyPass::record(VkCommandBuffer cmd, const GpuImage& depth, const ClusterGrid& grid,
-                                const GpuBuffer& masks) const {
+                                const glm::vec2& projectionScale, const Outputs& outputs) const {
+    const uint32_t width = depth.desc().width;
+    const uint32_t height = depth.desc().height;
     VkDescriptorImageInfo depthInfo{sampler_, depth.view(),
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorBufferInfo maskInfo{masks.handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet writes[] = {sampledImageWrite(0, &depthInfo),
-                                           storageBufferWrite(1, &maskInfo)};
-    Push push{toGpu(grid), depth.desc().width, depth.desc().height};
-    pipeline_.bind(cmd);
-    pipeline_.pushDescriptors(cmd, writes);
-    pipeline_.pushConstants(cmd, &push, sizeof(push));
+    VkDescriptorBufferInfo rangeInfo{outputs.depthRange->handle(), 0, VK_WHOLE_SIZE};
+
+    // min starts at the largest ordered value, max at the smallest.
+    vkCmdFillBuffer(cmd, outputs.depthRange->handle(), 0, 4, 0xffffffffu);
+    vkCmdFillBuffer(cmd, outputs.depthRange->handle(), 4, 4, 0u);
+    bufferBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    const VkWriteDescriptorSet rangeWrites[] = {sampledImageWrite(0, &depthInfo),
+                                                storageBufferWrite(1, &rangeInfo)};
+    RangePush rangePush{width, height, grid.nearPlane};
+    rangePipeline_.bind(cmd);
+    rangePipeline_.pushDescriptors(cmd, rangeWrites);
+    rangePipeline_.pushConstants(cmd, &rangePush, sizeof(rangePush));
+    vkCmdDispatch(cmd, (width + 15) / 16, (height + 15) / 16, 1);
+    bufferBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+    VkDescriptorBufferInfo maskInfo{outputs.tileMasks->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo boundsInfo{outputs.clusterBounds->handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {
+        sampledImageWrite(0, &depthInfo), storageBufferWrite(1, &maskInfo),
+        storageBufferWrite(2, &boundsInfo), storageBufferWrite(3, &rangeInfo)};
+    OccupancyPush push{toGpu(grid), width, height, {projectionScale.x, projectionScale.y}};
+    occupancyPipeline_.bind(cmd);
+    occupancyPipeline_.pushDescriptors(cmd, writes);
+    occupancyPipeline_.pushConstants(cmd, &push, sizeof(push));
     vkCmdDispatch(cmd, grid.tilesX, grid.tilesY, 1);
 }
 

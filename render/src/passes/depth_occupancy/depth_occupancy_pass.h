@@ -1,5 +1,9 @@
 #pragma once
-// Marks, per screen tile, the depth slices that hold geometry (64-bit mask per tile).
+// Measures what the depth buffer holds, for light assignment: the nearest and farthest
+// geometry (where the cluster slices go), which slices of each tile are occupied (64-bit mask
+// per tile), and a view-space box around each occupied cluster's pixels.
+#include <glm/glm.hpp>
+
 #include "candela/render/pipeline.h"
 #include "clustered/cluster_grid.h"
 
@@ -16,13 +20,20 @@ public:
     DepthOccupancyPass(const DepthOccupancyPass&) = delete;
     DepthOccupancyPass& operator=(const DepthOccupancyPass&) = delete;
 
-    // depth must be SHADER_READ_ONLY; masks receives grid.tileCount() uvec2 values.
+    struct Outputs {
+        const GpuBuffer* tileMasks;      // grid.tileCount() uvec2
+        const GpuBuffer* clusterBounds;  // grid.clusterCount() x 6 floats (occupied only)
+        const GpuBuffer* depthRange;     // 4 uints: min, max depth bits; sliceNear, logRatio
+    };
+    // depth must be SHADER_READ_ONLY. Uses the grid's tiles and slice count; the slicing it
+    // chose is in depthRange[2..3] once the commands ran.
     void record(VkCommandBuffer cmd, const GpuImage& depth, const ClusterGrid& grid,
-                const GpuBuffer& masks) const;
+                const glm::vec2& projectionScale, const Outputs& outputs) const;
 
 private:
     GpuContext& context_;
-    Pipeline pipeline_;
+    Pipeline rangePipeline_;
+    Pipeline occupancyPipeline_;
     VkSampler sampler_ = VK_NULL_HANDLE;
 };
 

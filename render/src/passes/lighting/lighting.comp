@@ -90,7 +90,9 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
     if (kClustered) {
         for (uint i = 0u; i < push.directionalCount; ++i) addLight(px, lightIndices[i]);
         uvec2 tile = uvec2(pixel) / push.grid.tileSize;
-        uint slice = sliceOfDepth(push.grid, viewDepthFromNdc(depth, push.grid.nearPlane));
+        float viewDepth = viewDepthFromNdc(depth, push.grid.projectionNear);
+        uint slice = sliceOfDepth(push.grid.sliceNear, push.grid.logRatio, push.grid.slices,
+                                  viewDepth);
         uint cluster = (slice * push.grid.tilesY + tile.y) * push.grid.tilesX + tile.x;
         uint first = clusterRanges[2u * cluster];
         uint count = clusterRanges[2u * cluster + 1u];

@@ -1,0 +1,201 @@
+// Clustered light culling against the brute-force reference (issue 5): the same image within
+// 1e-4 relative on 16, 1,024 and 16,384 lights including the hard placements, and culling
+// efficiency (evaluated / lit light-pixel pairs) on a floor scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "test_scene.h"
+
+using namespace candela::render;
+using namespace candela::render::test;
+using candela::content::LightType;
+
+namespace {
+
+// A floor, a row of boxes and spheres to give the depth buffer some structure, seen from a
+// camera 3 m up looking down the room.
+TestScene roomScene(uint32_t size) {
+    TestScene scene;
+    scene.width = size;
+    scene.height = size;
+    candela::content::Material grey = lambertWhite();
+    grey.specular = 0.5f;
+    grey.roughnessFactor = 0.4f;
+    scene.add(candela::content::makePlane(60.0f, 4), grey);
+    for (int i = 0; i < 6; ++i) {
+        glm::mat4 world =
+            glm::translate(glm::mat4(1.0f), glm::vec3(-6.0f + 2.4f * float(i), 0.6f, -8.0f));
+        scene.add(i % 2 ? candela::content::makeBox({0.6f, 0.6f, 0.6f})
+                        : candela::content::makeSphere(0.6f, 24, 12),
+                  grey, world);
+    }
+    scene.lookAt({0.0f, 3.0f, 4.0f}, {0.0f, 0.5f, -10.0f}, {0.0f, 1.0f, 0.0f});
+    return scene;
+}
+
+// Random lights around the room plus every placement that breaks naive culling.
+std::vector<LightInstance> hardLights(size_t count, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> x(-20.0f, 20.0f), y(0.05f, 4.0f), z(-40.0f, 12.0f);
+    std::uniform_real_distribution<float> radius(0.5f, 4.0f), unit(0.0f, 1.0f);
+    std::vector<LightInstance> lights;
+    for (size_t i = 0; i < count; ++i) {
+        LightInstance l =
+            pointLight({x(rng), y(rng), z(rng)}, 200.0f + 800.0f * unit(rng), radius(rng));
+        l.light.color = {unit(rng), unit(rng), unit(rng)};
+        switch (i % 8) {
+            case 1:
+                l.light.sourceRadius = 0.05f + 0.3f * unit(rng);
+                break;
+            case 2:
+                l.light.sourceLength = 0.2f + 2.0f * unit(rng);
+                l.tubeAxis =
+                    glm::normalize(glm::vec3(unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f));
+                break;
+            case 3:
+                l.light.type = LightType::Spot;
+                l.light.outerConeAngle = 0.2f + 0.8f * unit(rng);
+                l.light.innerConeAngle = 0.5f * l.light.outerConeAngle;
+                l.direction = glm::normalize(glm::vec3(unit(rng) - 0.5f, -1.0f, unit(rng) - 0.5f));
+                break;
+            default:
+                break;
+        }
+        lights.push_back(l);
+    }
+    // Behind the camera (camera at z = 4 looking to -z), reaching into the view.
+    lights.push_back(pointLight({0.5f, 2.0f, 7.0f}, 3000.0f, 8.0f));
+    // Straddling the near plane.
+    lights.push_back(pointLight({0.0f, 3.0f, 3.97f}, 500.0f, 2.0f));
+    // A huge radius covering everything.
+    lights.push_back(pointLight({4.0f, 6.0f, -10.0f}, 20000.0f, 1000.0f));
+    // A spot seen edge-on: its axis across the view, its cone grazing the floor.
+    LightInstance edgeOn = pointLight({-3.0f, 1.0f, -6.0f}, 5000.0f, 15.0f);
+    edgeOn.light.type = LightType::Spot;
+    edgeOn.light.outerConeAngle = 0.3f;
+    edgeOn.light.innerConeAngle = 0.2f;
+    edgeOn.direction = glm::normalize(glm::vec3(1.0f, -0.08f, 0.0f));
+    lights.push_back(edgeOn);
+    // A tube longer than the view.
+    LightInstance tube = pointLight({0.0f, 1.5f, -12.0f}, 8000.0f, 3.0f);
+    tube.light.sourceLength = 200.0f;
+    tube.light.sourceRadius = 0.05f;
+    tube.tubeAxis = {1.0f, 0.0f, 0.0f};
+    lights.push_back(tube);
+    // And a sun, which every pixel evaluates in both modes.
+    LightInstance sun;
+    sun.light.type = LightType::Directional;
+    sun.light.lux = 5.0f;
+    sun.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
+    lights.push_back(sun);
+    return lights;
+}
+
+double maxRelativeDifference(const CapturedFrame& a, const CapturedFrame& b) {
+    double worst = 0.0;
+    for (size_t i = 0; i < a.hdrRgb.size(); ++i) {
+        double x = a.hdrRgb[i], y = b.hdrRgb[i];
+        double scale = std::max(std::abs(x), std::abs(y));
+        if (scale > 0.0) worst = std::max(worst, std::abs(x - y) / scale);
+    }
+    return worst;
+}
+
+void expectClusteredMatchesBruteForce(size_t lightCount, uint32_t size) {
+    GpuContext context(requiredValidation());
+    TestScene scene = roomScene(size);
+    scene.lights = hardLights(lightCount, uint32_t(lightCount));
+    RendererOptions clustered;
+    clustered.countLightPairs = true;
+    RendererOptions bruteForce = clustered;
+    bruteForce.lightCulling = LightCulling::BruteForce;
+    RendererStats clusteredStats, bruteStats;
+    CapturedFrame a = scene.render(context, clustered, &clusteredStats);
+    CapturedFrame b = scene.render(context, bruteForce, &bruteStats);
+    double difference = maxRelativeDifference(a, b);
+    std::printf("%zu lights: max relative difference %.3g, evaluations %llu vs %llu, lit %llu\n",
+                scene.lights.size(), difference,
+                (unsigned long long)clusteredStats.lightEvaluations,
+                (unsigned long long)bruteStats.lightEvaluations,
+                (unsigned long long)clusteredStats.litPairs);
+    EXPECT_LE(difference, 1e-4);
+    EXPECT_EQ(a.nonFiniteHdrValues(), 0u);
+    // Culling may only skip pairs that add nothing.
+    EXPECT_EQ(clusteredStats.litPairs, bruteStats.litPairs);
+    EXPECT_LT(clusteredStats.lightEvaluations, bruteStats.lightEvaluations);
+    EXPECT_EQ(context.validationMessages(), 0u);
+}
+
+}  // namespace
+
+TEST(ClusteredLighting, MatchesBruteForceWith16Lights) {
+    expectClusteredMatchesBruteForce(16, 128);
+}
+
+TEST(ClusteredLighting, MatchesBruteForceWith1024Lights) {
+    expectClusteredMatchesBruteForce(1024, 128);
+}
+
+TEST(ClusteredLighting, MatchesBruteForceWith16384Lights) {
+    expectClusteredMatchesBruteForce(16384, 96);
+}
+
+namespace {
+
+// A large floor seen at a grazing angle, with `count` point lights scattered just above it:
+// every pixel sees a bounded number of lights. Returns evaluated / lit pairs.
+double floorCullingEfficiency(size_t count, const RendererOptions& options, uint32_t width,
+                              uint32_t height) {
+    GpuContext context(requiredValidation());
+    TestScene scene;
+    scene.width = width;
+    scene.height = height;
+    scene.add(candela::content::makePlane(100.0f, 8), lambertWhite());
+    scene.lookAt({0.0f, 6.0f, 20.0f}, {0.0f, 0.0f, -20.0f}, {0.0f, 1.0f, 0.0f});
+    // Spread over the visible floor area so light density per pixel stays bounded.
+    const float extent = 4.0f * std::sqrt(float(count));
+    std::mt19937 rng{uint32_t(count)};
+    std::uniform_real_distribution<float> x(-extent, extent), z(-2.0f * extent, 18.0f);
+    std::uniform_real_distribution<float> y(0.1f, 1.0f), radius(1.0f, 3.0f);
+    for (size_t i = 0; i < count; ++i) {
+        scene.lights.push_back(pointLight({x(rng), y(rng), z(rng)}, 500.0f, radius(rng)));
+    }
+    RendererOptions counting = options;
+    counting.countLightPairs = true;
+    RendererStats stats;
+    scene.render(context, counting, &stats);
+    EXPECT_GT(stats.litPairs, 0u);
+    EXPECT_EQ(context.validationMessages(), 0u);
+    return double(stats.lightEvaluations) / double(std::max<uint64_t>(stats.litPairs, 1));
+}
+
+}  // namespace
+
+TEST(ClusteredLighting, CullingEfficiencyOnAFloor) {
+    for (size_t count : {size_t(1024), size_t(16384)}) {
+        RendererOptions options;  // the defaults users get
+        double efficiency = floorCullingEfficiency(count, options, 320, 180);
+        std::printf("%zu lights on a floor: evaluated / lit = %.3f\n", count, efficiency);
+        EXPECT_LE(efficiency, 2.0);
+    }
+}
+// The measurement behind the default tile size and slice count (render/README.md). Run with
+// --gtest_filter=*TileAndSliceSweep* --gtest_also_run_disabled_tests.
+TEST(ClusteredLighting, DISABLED_TileAndSliceSweep) {
+    for (uint32_t width : {320u, 640u}) {
+        for (size_t count : {size_t(1024), size_t(16384)}) {
+            for (uint32_t tile : {8u, 16u, 32u}) {
+                for (uint32_t slices : {32u, 64u}) {
+                    RendererOptions options;
+                    options.tileSize = tile;
+                    options.slices = slices;
+                    double e = floorCullingEfficiency(count, options, width, width * 9 / 16);
+                    std::printf("w %u count %zu tile %u slices %u: %.3f\n", width, count, tile,
+                                slices, e);
+                }
+            }
+        }
+    }
+}
