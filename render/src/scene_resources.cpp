@@ -203,35 +203,49 @@ uint32_t SceneResources::addMaterialWithTextures(const content::Material& materi
     return uint32_t(materials_.size() - 1);
 }
 
+uint32_t SceneResources::textureFor(const content::Model& model, UploadedModel& uploaded,
+                                    const content::TextureRef& ref, uint32_t fallback) {
+    if (!ref.present() || ref.texture >= int32_t(model.textures.size())) return fallback;
+    const content::Texture& t = model.textures[ref.texture];
+    if (t.image < 0 || t.image >= int32_t(model.images.size())) return fallback;
+    // One GPU image per (texture, colour space): the same glTF texture may serve an sRGB slot
+    // in one material and a linear slot in another, which needs two formats.
+    uint64_t key = uint64_t(ref.texture) << 1 | (ref.colorSpace == content::ColorSpace::Srgb);
+    auto& images = uploaded.textureImages;
+    if (auto it = images.find(key); it != images.end()) return it->second;
+    uint32_t index = uploadTexture(model.images[t.image], ref.colorSpace, t.sampler);
+    images.emplace(key, index);
+    return index;
+}
+
+uint32_t SceneResources::addModelMaterial(const content::Model& model, UploadedModel& uploaded,
+                                          const content::Material& m) {
+    MaterialBinding binding{};
+    binding.textures[kBaseColorSlot] =
+        textureFor(model, uploaded, m.baseColorTexture, whiteTexture_);
+    binding.textures[kMetallicRoughnessSlot] =
+        textureFor(model, uploaded, m.metallicRoughnessTexture, whiteTexture_);
+    binding.textures[kNormalSlot] =
+        textureFor(model, uploaded, m.normalTexture, flatNormalTexture_);
+    binding.textures[kOcclusionSlot] =
+        textureFor(model, uploaded, m.occlusionTexture, whiteTexture_);
+    binding.textures[kEmissiveSlot] = textureFor(model, uploaded, m.emissiveTexture, whiteTexture_);
+    return addMaterialWithTextures(m, binding);
+}
+
+uint32_t SceneResources::addMaterialOverride(const content::Model& model,
+                                             const content::Material& material) {
+    addModel(model);
+    return addModelMaterial(model, models_.at(&model), material);
+}
+
 const UploadedModel& SceneResources::addModel(const content::Model& model) {
     if (auto it = models_.find(&model); it != models_.end()) return it->second;
     UploadedModel uploaded;
 
-    // One GPU image per (texture, colour space): the same glTF texture may serve an sRGB slot
-    // in one material and a linear slot in another, which needs two formats.
-    std::unordered_map<uint64_t, uint32_t> textureImages;
-    auto textureFor = [&](const content::TextureRef& ref, uint32_t fallback) {
-        if (!ref.present() || ref.texture >= int32_t(model.textures.size())) return fallback;
-        const content::Texture& t = model.textures[ref.texture];
-        if (t.image < 0 || t.image >= int32_t(model.images.size())) return fallback;
-        uint64_t key = uint64_t(ref.texture) << 1 | (ref.colorSpace == content::ColorSpace::Srgb);
-        if (auto it = textureImages.find(key); it != textureImages.end()) return it->second;
-        uint32_t index = uploadTexture(model.images[t.image], ref.colorSpace, t.sampler);
-        textureImages.emplace(key, index);
-        return index;
-    };
-
     uploaded.firstMaterial = uint32_t(materials_.size());
-    for (const content::Material& m : model.materials) {
-        MaterialBinding binding{};
-        binding.textures[kBaseColorSlot] = textureFor(m.baseColorTexture, whiteTexture_);
-        binding.textures[kMetallicRoughnessSlot] =
-            textureFor(m.metallicRoughnessTexture, whiteTexture_);
-        binding.textures[kNormalSlot] = textureFor(m.normalTexture, flatNormalTexture_);
-        binding.textures[kOcclusionSlot] = textureFor(m.occlusionTexture, whiteTexture_);
-        binding.textures[kEmissiveSlot] = textureFor(m.emissiveTexture, whiteTexture_);
-        addMaterialWithTextures(m, binding);
-    }
+    for (const content::Material& m : model.materials)
+        addModelMaterial(model, uploaded, m);
 
     for (const content::Mesh& mesh : model.meshes) {
         uploaded.firstPrimitiveOfMesh.push_back(uint32_t(meshes_.size()));

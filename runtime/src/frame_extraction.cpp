@@ -8,6 +8,7 @@
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
+#include "candela/content/components/scene_components.h"
 #include "candela/ecs/transform.h"
 #include "candela/render/exposure.h"
 
@@ -36,6 +37,26 @@ bool isFinite(const glm::mat4& m) {
     return true;
 }
 
+// The entity's override materials, made (or remade after a change) on demand.
+const ExtractedFrame::OverrideMaterials* overrideMaterials(ecs::Registry& registry, ecs::Entity e,
+                                                           const content::Model& model,
+                                                           render::SceneResources& resources,
+                                                           ExtractedFrame& out) {
+    const auto* component = registry.tryGet<content::MaterialOverrides>(e);
+    if (!component || component->overrides.empty()) return nullptr;
+    ExtractedFrame::OverrideMaterials& made = out.overrides[e.bits()];
+    const ecs::Tick changed = registry.changeTick<content::MaterialOverrides>(e);
+    if (made.builtAt != changed) {
+        made.primitiveMaterial.clear();
+        for (const content::MaterialOverride& o : component->overrides) {
+            made.primitiveMaterial.emplace_back(o.primitive,
+                                                resources.addMaterialOverride(model, o.material));
+        }
+        made.builtAt = changed;
+    }
+    return &made;
+}
+
 }  // namespace
 
 void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneResources& resources,
@@ -44,7 +65,8 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
     out.hasCamera = false;
 
     registry.view<const ecs::WorldTransform, const content::MeshInstance>().each(
-        [&](const ecs::WorldTransform& transform, const content::MeshInstance& instance) {
+        [&](ecs::Entity e, const ecs::WorldTransform& transform,
+            const content::MeshInstance& instance) {
             if (!instance.model) return;
             glm::mat4 world = toGlm(transform.matrix);
             if (!isFinite(world)) return;  // a NaN transform hides the mesh, not the frame
@@ -54,9 +76,16 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                 return;
             }
             uint32_t first = uploaded.firstPrimitiveOfMesh[instance.mesh];
+            const ExtractedFrame::OverrideMaterials* overrides =
+                overrideMaterials(registry, e, *instance.model, resources, out);
             for (uint32_t p = 0; p < uploaded.primitiveCountOfMesh[instance.mesh]; ++p) {
-                const render::GpuMesh& mesh = resources.mesh(first + p);
-                out.draws.push_back({first + p, uint32_t(mesh.defaultMaterial), world});
+                uint32_t material = uint32_t(resources.mesh(first + p).defaultMaterial);
+                if (overrides) {
+                    for (auto [primitive, replaced] : overrides->primitiveMaterial) {
+                        if (primitive == p) material = replaced;
+                    }
+                }
+                out.draws.push_back({first + p, material, world});
             }
         });
 

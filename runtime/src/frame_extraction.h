@@ -1,6 +1,8 @@
 #pragma once
 // Reads the ECS once per frame into the plain arrays the renderer draws: mesh draws, lights
 // and the camera. The renderer never sees the registry.
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "candela/ecs/registry.h"
@@ -17,6 +19,14 @@ struct ExtractedFrame {
     bool lightsRestructured = true;
     render::CameraView camera;
     bool hasCamera = false;  // false: no entity has Camera + WorldTransform
+
+    // GPU materials made for scene-file material overrides, per entity; remade when the
+    // entity's MaterialOverrides change.
+    struct OverrideMaterials {
+        ecs::Tick builtAt = 0;
+        std::vector<std::pair<uint32_t, uint32_t>> primitiveMaterial;  // primitive, material
+    };
+    std::unordered_map<uint64_t, OverrideMaterials> overrides;
 };
 
 // Uploads models on first sight (SceneResources caches them); updates `lights`.

@@ -21,6 +21,7 @@ LoadedScene builtinTriangle() {
 
 // Daylight sky behind glTF scenes, in cd/m^2 (about 0.2 after sunny-16 exposure).
 constexpr std::array<float, 4> kSkyRadiance = {3000.0f, 4500.0f, 7000.0f, 1.0f};
+constexpr std::array<float, 4> kSceneFileBackgroundRadiance = {0.05f, 0.05f, 0.05f, 1.0f};
 
 void printDiagnostics(const content::Diagnostics& diagnostics) {
     for (const content::Diagnostic& d : diagnostics.messages) {
@@ -58,22 +59,30 @@ std::optional<LoadedScene> loadScene(const std::string& scene, std::string& erro
         return std::nullopt;
     }
     std::string ext = std::filesystem::path(scene).extension().string();
-    if (ext != ".gltf" && ext != ".glb") {
-        error = "scene file '" + scene + "': unsupported type '" + ext + "' (use .gltf or .glb)";
+    const bool sceneFile = ext == ".json";
+    if (ext != ".gltf" && ext != ".glb" && !sceneFile) {
+        error = "scene file '" + scene + "': unsupported type '" + ext +
+                "' (use an engine scene .json, .gltf or .glb)";
         return std::nullopt;
     }
     LoadedScene loaded;
     loaded.name = scene;
     loaded.world = std::make_unique<SceneWorld>();
     content::Diagnostics diagnostics;
-    bool ok = loaded.world->loadGltf(scene, diagnostics);
+    bool ok = sceneFile ? loaded.world->loadSceneFile(scene, diagnostics)
+                        : loaded.world->loadGltf(scene, diagnostics);
     printDiagnostics(diagnostics);
     if (!ok) {
         error = "scene file '" + scene + "' could not be loaded (see the messages above)";
         return std::nullopt;
     }
-    loaded.world->addViewingDefaults();
-    loaded.frame.clearRadiance = kSkyRadiance;
+    if (sceneFile) {
+        // Engine scenes light themselves; until skies render, the background is a dim neutral.
+        loaded.frame.clearRadiance = kSceneFileBackgroundRadiance;
+    } else {
+        loaded.world->addViewingDefaults();
+        loaded.frame.clearRadiance = kSkyRadiance;
+    }
     return loaded;
 }
 

@@ -9,6 +9,8 @@
 #include "candela/content/components/name.h"
 #include "candela/content/gltf_loader.h"
 #include "candela/content/model_instantiation.h"
+#include "candela/content/scene_file.h"
+#include "candela/content/scene_instantiation.h"
 #include "candela/ecs/transform.h"
 #include "candela/ecs/transform_propagation.h"
 
@@ -76,6 +78,14 @@ bool SceneWorld::loadGltf(const std::filesystem::path& path, content::Diagnostic
     if (!model) return false;
     const content::Model& kept = adoptModel(std::make_unique<content::Model>(std::move(*model)));
     content::instantiateModel(registry, kept, parent);
+    return true;
+}
+
+bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
+                               content::Diagnostics& diagnostics) {
+    std::optional<content::SceneDocument> scene = content::loadSceneFile(path, diagnostics);
+    if (!scene) return false;
+    content::instantiateScene(registry, *scene, path, cache_, diagnostics);
     return true;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/content/asset_cache.h"
 #include "candela/content/diagnostics.h"
 #include "candela/content/model.h"
 #include "candela/ecs/registry.h"
@@ -28,6 +29,10 @@ public:
     bool loadGltf(const std::filesystem::path& path, content::Diagnostics& diagnostics,
                   ecs::Entity parent = ecs::kNullEntity);
 
+    // Loads an engine scene file (JSON) into the registry; its glTF references load through
+    // the world's asset cache. False when the file itself could not be read.
+    bool loadSceneFile(const std::filesystem::path& path, content::Diagnostics& diagnostics);
+
     // Keeps a model alive for the lifetime of the world and returns it.
     const content::Model& adoptModel(std::unique_ptr<content::Model> model);
 
@@ -42,6 +47,7 @@ public:
 
 private:
     std::vector<std::unique_ptr<content::Model>> models_;
+    content::AssetCache cache_;
 };
 
 }  // namespace candela::runtime

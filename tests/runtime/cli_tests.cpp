@@ -131,6 +131,29 @@ TEST(Cli, DemoRendersHeadlessWithEveryFeature) {
     }
 }
 
+// The engine scene files in tests/scenes load (glTF references, lights, camera, material
+// overrides) and render clean; the overrides switch on their shading models.
+TEST(Cli, EngineSceneFilesRender) {
+    auto dir = tempDir();
+    for (const char* name : {"sphere_grid_point", "sphere_grid_sphere_light",
+                             "sphere_grid_tube_light", "shading_models", "spot_light"}) {
+        std::string scene =
+            std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/" + name + ".scene.json";
+        auto stats = dir / (std::string(name) + ".json");
+        RunResult r =
+            runCandela("run " + scene + " --headless --size 64x64 --stats " + stats.string());
+        ASSERT_EQ(r.exitCode, 0) << name << ": " << r.output;
+        nlohmann::json json = nlohmann::json::parse(readBytes(stats));
+        EXPECT_GT(json["lights"].get<int>(), 0) << name;
+        if (std::string(name) == "shading_models") {
+            auto features = json["features"].get<std::vector<std::string>>();
+            for (const char* f : {"shading_subsurface", "shading_legacy_diffuse_specular"}) {
+                EXPECT_NE(std::find(features.begin(), features.end(), f), features.end()) << f;
+            }
+        }
+    }
+}
+
 TEST(Cli, SceneFileOfUnknownTypeIsRejected) {
     auto path = tempDir() / "scene.txt";
     std::ofstream(path) << "not a scene";

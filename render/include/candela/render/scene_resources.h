@@ -34,6 +34,7 @@ struct UploadedModel {
     std::vector<uint32_t> firstPrimitiveOfMesh;
     std::vector<uint32_t> primitiveCountOfMesh;
     uint32_t firstMaterial = 0;
+    std::unordered_map<uint64_t, uint32_t> textureImages;  // (texture, sRGB?) -> texture
 };
 
 // Texture slots of a material, in binding order of the G-buffer pass.
@@ -59,6 +60,9 @@ public:
 
     const UploadedModel& addModel(const content::Model& model);
     uint32_t addMaterial(const content::Material& material);  // with no textures
+    // A material replacing one of `model`'s (scene-file override); its texture indices refer
+    // to the model's textures, shared with the model's own materials.
+    uint32_t addMaterialOverride(const content::Model& model, const content::Material& material);
 
     const GpuMesh& mesh(uint32_t index) const { return meshes_[index]; }
     uint32_t meshCount() const { return uint32_t(meshes_.size()); }
@@ -77,6 +81,10 @@ private:
                            const content::Sampler& sampler);
     uint32_t addMaterialWithTextures(const content::Material& material,
                                      const MaterialBinding& binding);
+    uint32_t addModelMaterial(const content::Model& model, UploadedModel& uploaded,
+                              const content::Material& material);
+    uint32_t textureFor(const content::Model& model, UploadedModel& uploaded,
+                        const content::TextureRef& ref, uint32_t fallback);
     VkSampler samplerFor(const content::Sampler& sampler);
 
     GpuContext& context_;
