@@ -1,0 +1,106 @@
+// candela-bench-lights: clustered light culling against brute force, swept over light counts
+// on one scene family (a floor whose lights keep a constant density, so each pixel is touched
+// by a bounded number of lights however many the scene holds). Prints a markdown table; it
+// measures, it never fails on a number.
+//
+//   build/bin/candela-bench-lights [--size WxH] [--max-lights N] [--brute-force-max N]
+//                                  [--repeat N]
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "../test_scene.h"
+
+using namespace candela::render;
+using namespace candela::render::test;
+
+namespace {
+
+struct Row {
+    size_t lights;
+    double assignMs;
+    double lightingMs;
+    double efficiency;
+    double bruteForceMs;  // < 0: not measured
+};
+
+TestScene floorScene(size_t count, uint32_t width, uint32_t height) {
+    TestScene scene;
+    scene.width = width;
+    scene.height = height;
+    const float extent = 4.0f * std::sqrt(float(count));
+    scene.add(candela::content::makePlane(std::max(100.0f, 2.5f * extent), 8), lambertWhite());
+    scene.lookAt({0.0f, 6.0f, 20.0f}, {0.0f, 0.0f, -20.0f}, {0.0f, 1.0f, 0.0f});
+    std::mt19937 rng{uint32_t(count)};
+    std::uniform_real_distribution<float> x(-extent, extent), z(-2.0f * extent, 18.0f);
+    std::uniform_real_distribution<float> y(0.1f, 1.0f), radius(1.0f, 3.0f);
+    for (size_t i = 0; i < count; ++i) {
+        scene.lights.push_back(pointLight({x(rng), y(rng), z(rng)}, 500.0f, radius(rng)));
+    }
+    return scene;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    uint32_t width = 1280, height = 720, repeat = 3;
+    size_t maxLights = 65536, bruteForceMax = 1024;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        if (!std::strcmp(argv[i], "--size")) std::sscanf(argv[i + 1], "%ux%u", &width, &height);
+        if (!std::strcmp(argv[i], "--max-lights")) maxLights = std::strtoull(argv[i + 1], nullptr, 10);
+        if (!std::strcmp(argv[i], "--brute-force-max")) {
+            bruteForceMax = std::strtoull(argv[i + 1], nullptr, 10);
+        }
+        if (!std::strcmp(argv[i], "--repeat")) repeat = uint32_t(std::strtoul(argv[i + 1], nullptr, 10));
+    }
+    GpuContextOptions contextOptions;
+    contextOptions.validation = ValidationMode::Off;  // timing run
+    GpuContext context(contextOptions);
+    std::printf("device: %s, %ux%u, medians of %u frames\n\n", context.deviceName().c_str(), width,
+                height, repeat);
+    std::printf("| lights | assign ms | lighting ms | evaluated / lit | brute-force lighting ms |\n");
+    std::printf("|---:|---:|---:|---:|---:|\n");
+    for (size_t count = 16; count <= maxLights; count *= 4) {
+        TestScene scene = floorScene(count, width, height);
+        Row row{count, 0, 0, 0, -1};
+        std::vector<double> assign, lighting, brute;
+        for (uint32_t r = 0; r < repeat; ++r) {
+            RendererStats stats;
+            scene.render(context, {}, &stats);  // timing without pair counters
+            assign.push_back(stats.lightAssignMs);
+            lighting.push_back(stats.lightingMs);
+        }
+        RendererOptions counting;
+        counting.countLightPairs = true;
+        RendererStats counted;
+        scene.render(context, counting, &counted);
+        row.efficiency = double(counted.lightEvaluations) / double(std::max<uint64_t>(counted.litPairs, 1));
+        if (count <= bruteForceMax) {
+            RendererOptions bruteForce;
+            bruteForce.lightCulling = LightCulling::BruteForce;
+            for (uint32_t r = 0; r < repeat; ++r) {
+                RendererStats stats;
+                scene.render(context, bruteForce, &stats);
+                brute.push_back(stats.lightingMs);
+            }
+            row.bruteForceMs = median(brute);
+        }
+        row.assignMs = median(assign);
+        row.lightingMs = median(lighting);
+        char bruteText[32] = "not run";
+        if (row.bruteForceMs >= 0) std::snprintf(bruteText, sizeof(bruteText), "%.1f", row.bruteForceMs);
+        std::printf("| %zu | %.2f | %.1f | %.2f | %s |\n", row.lights, row.assignMs, row.lightingMs,
+                    row.efficiency, bruteText);
+        std::fflush(stdout);
+    }
+    return 0;
+}
