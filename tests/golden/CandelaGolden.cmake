@@ -15,7 +15,8 @@
 #   candela_add_golden_tests_from_json(FILE goldens.json BASE_DIR <dir> [EXPECTED_DIR dir])
 #
 # does the same for each entry of a JSON list, {"name", "scene", "size", "frames"} and an
-# optional "expected_dir", with paths relative to BASE_DIR. The file is re-read when it changes.
+# optional "expected_dir", with paths relative to BASE_DIR; CMake variables in them expand
+# ("${CANDELA_SHARED_ASSETS}/models/Box/Box.glb"). The file is re-read when it changes.
 include_guard(GLOBAL)
 
 set(CANDELA_GOLDEN_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}" CACHE INTERNAL "")
@@ -84,8 +85,10 @@ function(candela_add_golden_test)
 
   _candela_golden_resolve(scene "${ARG_SCENE}" "${CMAKE_CURRENT_SOURCE_DIR}")
   _candela_golden_resolve(expected_dir "${ARG_EXPECTED_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
+  # Only a warning: a scene on shared assets may be missing on one machine, and that should
+  # fail its test (the engine says why), not the configuration of the whole tree.
   if(NOT scene MATCHES "^builtin:" AND NOT EXISTS "${scene}")
-    message(FATAL_ERROR "${where}: scene file ${scene} does not exist")
+    message(WARNING "${where}: scene file ${scene} does not exist; the test will fail")
   endif()
   set(output_dir "${CMAKE_BINARY_DIR}/golden/${ARG_NAME}")
   set(config "${output_dir}/golden.cmake")
@@ -123,7 +126,10 @@ function(candela_add_golden_tests_from_json)
     if(error)
       set(expected_dir "${ARG_EXPECTED_DIR}")
     endif()
-    # Paths in the file are relative to BASE_DIR, not to the directory calling this.
+    # ${VAR} in a path expands (e.g. ${CANDELA_SHARED_ASSETS}); what remains relative is
+    # relative to BASE_DIR, not to the directory calling this.
+    string(CONFIGURE "${scene}" scene)
+    string(CONFIGURE "${expected_dir}" expected_dir)
     _candela_golden_resolve(scene "${scene}" "${ARG_BASE_DIR}")
     if(expected_dir)
       _candela_golden_resolve(expected_dir "${expected_dir}" "${ARG_BASE_DIR}")

@@ -1,6 +1,7 @@
 # Runs one golden test: renders its scene with the engine, then compares both captures with
-# the stored images using candela-golden. Any engine failure fails the test, exit 3
-# (validation messages while CANDELA_VALIDATION=require) included.
+# the stored images using candela-golden. Any engine failure fails the test: a non-zero exit,
+# 3 (validation messages while CANDELA_VALIDATION=require) included, and errors loading the
+# scene.
 #
 #   cmake -DGOLDEN_CONFIG=<build>/golden/<name>/golden.cmake [-DMODE=test|render|store]
 #         -P run_golden.cmake
@@ -46,13 +47,20 @@ file(MAKE_DIRECTORY "${GOLDEN_OUTPUT_DIR}")
 execute_process(
   COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
           --frames "${GOLDEN_FRAMES}" --capture "${exr}" --capture "${png}" --stats "${stats}"
-  RESULT_VARIABLE engine_result)
+  RESULT_VARIABLE engine_result OUTPUT_VARIABLE engine_output ERROR_VARIABLE engine_output)
+message("${engine_output}")
 if(engine_result EQUAL 3)
   message(FATAL_ERROR "golden ${GOLDEN_NAME}: FAIL: the engine reported Vulkan validation "
                       "messages (exit 3); a golden must render without any")
 elseif(NOT engine_result EQUAL 0)
   message(FATAL_ERROR "golden ${GOLDEN_NAME}: FAIL: `${GOLDEN_ENGINE} run ${GOLDEN_SCENE}` "
                       "failed (exit ${engine_result})")
+endif()
+# The engine renders what it could load and reports the rest as "<file>: error: ..." lines;
+# a golden of a scene with missing content would guard nothing.
+if(engine_output MATCHES "(^|\n)candela: [^\n]*: error: ")
+  message(FATAL_ERROR "golden ${GOLDEN_NAME}: FAIL: the engine reported errors while loading "
+                      "${GOLDEN_SCENE} (above); a golden must load its whole scene")
 endif()
 
 if(MODE STREQUAL "render")
