@@ -33,8 +33,6 @@ class ScenePerturbation : public testing::TestWithParam<SceneFormat> {
 protected:
     void SetUp() override {
         dir_ = testDirectory();
-        if (GetParam() == SceneFormat::EngineSceneFile) skipUnlessEngineLoadsSceneFiles();
-        if (IsSkipped()) return;
         std::optional<Capture> baseline = render(LitScene{}, "baseline");
         ASSERT_TRUE(baseline);
         baseline_ = *baseline;
@@ -42,18 +40,6 @@ protected:
     }
 
     void TearDown() override { removeIfPassed(dir_); }
-
-    // Engine scene files are being wired into `candela run`; until then it rejects them by
-    // type, and these tests say so instead of failing. Any other failure still fails.
-    void skipUnlessEngineLoadsSceneFiles() {
-        std::string error;
-        const fs::path scene = writeLitSceneFile(LitScene{}, dir_, "probe", error);
-        ASSERT_FALSE(scene.empty()) << error;
-        const CommandResult probe = renderCapture(scene.string(), "16x16", 1, dir_, "probe");
-        if (probe.exitCode == 2 && probe.output.find("unsupported type") != std::string::npos) {
-            GTEST_SKIP() << "candela run does not load engine scene files yet: " << probe.output;
-        }
-    }
 
     fs::path writeScene(const LitScene& scene, const std::string& name) {
         if (GetParam() == SceneFormat::EngineSceneFile) {
