@@ -37,6 +37,7 @@ struct GraphicsPipelineDesc {
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
+    bool dynamicCullMode = false;  // set per draw with vkCmdSetCullMode instead
     SpecializationConstants* specialization = nullptr;  // applied to the fragment stage
 };
 

@@ -39,6 +39,7 @@ GBufferPass::GBufferPass(GpuContext& context) {
                              GBufferTargets::kColorFormats.end());
     desc.colorFormats.push_back(VK_FORMAT_R32G32B32A32_SFLOAT);  // HDR (emissive)
     desc.depthFormat = GBufferTargets::kDepthFormat;
+    desc.dynamicCullMode = true;  // glTF: back faces of single-sided materials are not drawn
     std::vector<DescriptorBinding> bindings = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -101,6 +102,9 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
             writes.push_back(sampledImageWrite(kFirstTextureBinding + slot, &images[slot]));
         }
         pipeline_.pushDescriptors(cmd, writes);
+        vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided
+                                  ? VK_CULL_MODE_NONE
+                                  : VK_CULL_MODE_BACK_BIT);
         DrawPush push{draw.world, draw.material};
         pipeline_.pushConstants(cmd, &push, sizeof(push));
         VkDeviceSize offset = 0;
