@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <functional>
 
 #include "candela/ecs/job_system.h"
 #include "clustered/light_bounds.h"
@@ -23,19 +24,16 @@ struct PairList {
 // Index range [first, last] of the sorted boundaries that intervals [lo, hi] overlap.
 void tileRange(const std::vector<float>& boundaries, float lo, float hi, bool descending,
                uint32_t& first, uint32_t& last) {
+    // Inner boundaries only: tile i spans boundaries[i]..boundaries[i + 1]. Binary searches,
+    // since most lights cover a few of many tiles.
     const uint32_t tiles = uint32_t(boundaries.size() - 1);
-    first = 0;
-    last = tiles - 1;
+    auto begin = boundaries.begin() + 1, end = boundaries.begin() + tiles;
     if (!descending) {
-        while (first < tiles - 1 && boundaries[first + 1] < lo)
-            ++first;
-        while (last > 0 && boundaries[last] > hi)
-            --last;
+        first = uint32_t(std::lower_bound(begin, end, lo) - begin);
+        last = tiles - 1 - uint32_t(end - std::upper_bound(begin, end, hi));
     } else {
-        while (first < tiles - 1 && boundaries[first + 1] > hi)
-            ++first;
-        while (last > 0 && boundaries[last] < lo)
-            --last;
+        first = uint32_t(std::lower_bound(begin, end, hi, std::greater<float>()) - begin);
+        last = tiles - 1 - uint32_t(end - std::upper_bound(begin, end, lo, std::greater<float>()));
     }
 }
 
@@ -70,10 +68,10 @@ void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightInde
         extent(b.center.x, xLo, xHi);
         extent(b.center.y, yLo, yHi);
         uint32_t x0, x1, y0, y1;
-        tileRange(grid.columnTangent, xLo, xHi, false, x0, x1);
-        tileRange(grid.rowTangent, yLo, yHi, true, y0, y1);
         if (xLo > grid.columnTangent.back() || xHi < grid.columnTangent.front()) continue;
         if (yLo > grid.rowTangent.front() || yHi < grid.rowTangent.back()) continue;
+        tileRange(grid.columnTangent, xLo, xHi, false, x0, x1);
+        tileRange(grid.rowTangent, yLo, yHi, true, y0, y1);
 
         for (uint32_t y = y0; y <= y1; ++y) {
             const float top = grid.rowTangent[y], bottom = grid.rowTangent[y + 1];
