@@ -4,9 +4,10 @@
 #include <cstring>
 
 #include "candela/content/exr_image.h"
+#include "candela/content/png_writer.h"
 #include "candela/render/gpu_context.h"
 #include "candela/render/renderer.h"
-#include "capture/png_writer.h"
+#include "vk/memory_barrier.h"
 
 namespace candela::render {
 
@@ -47,15 +48,8 @@ FrameReadback::FrameReadback(GpuContext& context, uint32_t width, uint32_t heigh
 void FrameReadback::recordCopy(VkCommandBuffer cmd, const Renderer& renderer) const {
     copyImage(cmd, renderer.hdrTarget(), hdrStaging_);
     copyImage(cmd, renderer.ldrTarget(), ldrStaging_);
-    VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    toHost.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
-    toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-    toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.memoryBarrierCount = 1;
-    dependency.pMemoryBarriers = &toHost;
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 CapturedFrame FrameReadback::read() const {
@@ -80,7 +74,8 @@ std::string writeCapture(const std::filesystem::path& path, const CapturedFrame&
             content::writeExrRgbFloat(path, frame.width, frame.height, frame.hdrRgb.data());
         return error.empty() ? error : path.string() + ": " + error;
     }
-    if (ext == ".png") return writePngRgba(path, frame.width, frame.height, frame.ldrRgba.data());
+    if (ext == ".png")
+        return content::writePng(path, frame.width, frame.height, 4, frame.ldrRgba.data());
     return path.string() + ": unknown capture format '" + ext + "' (use .exr or .png)";
 }
 

@@ -6,6 +6,7 @@
 #include "clustered/gpu_cluster_params.h"
 #include "shaders/depth_occupancy.comp.spv.h"
 #include "shaders/depth_range.comp.spv.h"
+#include "vk/memory_barrier.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -24,19 +25,6 @@ struct OccupancyPush {
     uint32_t height;
     float projectionScale[2];
 };
-
-void bufferBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
-                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
-    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = srcStage;
-    barrier.srcAccessMask = srcAccess;
-    barrier.dstStageMask = dstStage;
-    barrier.dstAccessMask = dstAccess;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.memoryBarrierCount = 1;
-    dependency.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(cmd, &dependency);
-}
 
 }  // namespace
 
@@ -76,7 +64,7 @@ void DepthOccupancyPass::record(VkCommandBuffer cmd, const GpuImage& depth, cons
     // min starts at the largest ordered value, max at the smallest.
     vkCmdFillBuffer(cmd, outputs.depthRange->handle(), 0, 4, 0xffffffffu);
     vkCmdFillBuffer(cmd, outputs.depthRange->handle(), 4, 4, 0u);
-    bufferBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     const VkWriteDescriptorSet rangeWrites[] = {sampledImageWrite(0, &depthInfo),
@@ -86,7 +74,7 @@ void DepthOccupancyPass::record(VkCommandBuffer cmd, const GpuImage& depth, cons
     rangePipeline_.pushDescriptors(cmd, rangeWrites);
     rangePipeline_.pushConstants(cmd, &rangePush, sizeof(rangePush));
     vkCmdDispatch(cmd, (width + 15) / 16, (height + 15) / 16, 1);
-    bufferBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 

@@ -1,4 +1,4 @@
-#include "capture/png_writer.h"
+#include "candela/content/png_writer.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -15,7 +15,7 @@
 #include <stb/stb_image_write.h>
 #pragma GCC diagnostic pop
 
-namespace candela::render {
+namespace candela::content {
 
 namespace {
 void appendBytes(void* context, void* data, int size) {
@@ -25,21 +25,21 @@ void appendBytes(void* context, void* data, int size) {
 }
 }  // namespace
 
-std::string writePngRgba(const std::filesystem::path& path, uint32_t width, uint32_t height,
-                         const uint8_t* rgba) {
+std::string writePng(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                     int channels, const std::uint8_t* pixels) {
     // Encode to memory first so an encoder failure never leaves a partial file behind, and
     // so the file error (missing directory, permissions) can be reported with errno.
     std::vector<unsigned char> encoded;
-    if (!stbi_write_png_to_func(appendBytes, &encoded, int(width), int(height), 4, rgba,
-                                int(width * 4))) {
+    if (!stbi_write_png_to_func(appendBytes, &encoded, int(width), int(height), channels, pixels,
+                                int(width) * channels)) {
         return path.string() + ": PNG encoding failed";
     }
     std::FILE* file = std::fopen(path.c_str(), "wb");
     if (!file) return path.string() + ": cannot open for writing: " + std::strerror(errno);
-    size_t written = std::fwrite(encoded.data(), 1, encoded.size(), file);
+    std::size_t written = std::fwrite(encoded.data(), 1, encoded.size(), file);
     bool closed = std::fclose(file) == 0;
     if (written != encoded.size() || !closed) return path.string() + ": write failed";
     return {};
 }
 
-}  // namespace candela::render
+}  // namespace candela::content
