@@ -116,8 +116,10 @@ void Renderer::createTargets() {
     hdr_ = GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+    // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
     ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
-                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
     gbuffer_ = std::make_unique<GBufferTargets>(context_, width_, height_);
     ensureBuffer(context_, pairCounts_,
                  VkDeviceSize(LightingPass::workgroupCount(width_, height_)) * 8);

@@ -38,6 +38,7 @@ struct GraphicsPipelineDesc {
     VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
     bool dynamicCullMode = false;  // set per draw with vkCmdSetCullMode instead
+    bool alphaBlend = false;       // colour = src * srcAlpha + dst * (1 - srcAlpha) (UI overlays)
     SpecializationConstants* specialization = nullptr;  // applied to the fragment stage
 };
 
