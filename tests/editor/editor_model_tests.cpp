@@ -1,0 +1,244 @@
+// The editor model without a window: edit commands, undo/redo, selection, saving.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "candela/content/asset_cache.h"
+#include "candela/content/components/name.h"
+#include "candela/content/scene_file.h"
+#include "candela/content/scene_instantiation.h"
+#include "candela/ecs/hierarchy.h"
+#include "model/editor_scene.h"
+#include "model/set_component_command.h"
+#include "model/structure_commands.h"
+
+namespace candela::editor {
+namespace {
+
+namespace fs = std::filesystem;
+
+// floor (mesh reference) / lamp (point light) -> bulb (child) / camera
+content::SceneDocument testDocument() {
+    content::SceneDocument doc;
+    content::SceneEntity& floor = doc.entities.emplace_back();
+    floor.name = "floor";
+    floor.mesh = content::MeshReference{"models/floor.glb", 0};
+    content::SceneEntity& lamp = doc.entities.emplace_back();
+    lamp.name = "lamp";
+    lamp.transform.translation = {0, 3, 0};
+    lamp.light = content::Light{};
+    lamp.light->lumens = 800.0f;
+    content::SceneEntity& bulb = doc.entities.emplace_back();
+    bulb.name = "bulb";
+    bulb.parent = 1;
+    bulb.light = content::Light{};
+    bulb.light->sourceRadius = 0.1f;
+    content::SceneEntity& camera = doc.entities.emplace_back();
+    camera.name = "camera";
+    camera.camera = content::Camera{};
+    return doc;
+}
+
+class EditorModel : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() /
+              ("candela_editor_model_" +
+               std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir / "saved");
+        source = dir / "level.scene.json";
+        ASSERT_EQ(content::saveSceneFile(source, testDocument()), "");
+        content::Diagnostics diagnostics;  // the missing floor model is reported, not fatal
+        std::optional<content::SceneDocument> doc = content::loadSceneFile(source, diagnostics);
+        ASSERT_TRUE(doc);
+        content::instantiateScene(registry, *doc, source, cache, diagnostics);
+        scene = std::make_unique<EditorScene>(registry, source);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+
+    ecs::Entity named(const std::string& name) { return scene->findByName(name); }
+    float lumens(const std::string& name) {
+        return registry.get<content::Light>(named(name)).lumens;
+    }
+    bool setLumens(const std::string& name, float value, uint64_t mergeKey = 0) {
+        content::Light light = registry.get<content::Light>(named(name));
+        light.lumens = value;
+        return scene->execute(setComponent(*scene, named(name), light, "Set Light"), mergeKey);
+    }
+    content::SceneDocument saveAndLoad(const fs::path& path) {
+        EXPECT_EQ(scene->save(path), "");
+        content::Diagnostics diagnostics;
+        std::optional<content::SceneDocument> doc = content::loadSceneFile(path, diagnostics);
+        EXPECT_TRUE(doc) << path;
+        return doc ? *doc : content::SceneDocument{};
+    }
+    static const content::SceneEntity* entityNamed(const content::SceneDocument& doc,
+                                                   const std::string& name) {
+        for (const content::SceneEntity& e : doc.entities) {
+            if (e.name == name) return &e;
+        }
+        return nullptr;
+    }
+
+    fs::path dir;
+    fs::path source;
+    ecs::Registry registry;
+    content::AssetCache cache;
+    std::unique_ptr<EditorScene> scene;
+};
+
+TEST_F(EditorModel, LightEditMarksTheComponentChangedAndUndoRedoRestoreIt) {
+    const ecs::Tick before = registry.changeTick<content::Light>(named("lamp"));
+    registry.advanceTick();
+    ASSERT_TRUE(setLumens("lamp", 1600.0f));
+    EXPECT_EQ(lumens("lamp"), 1600.0f);
+    // What LightTable's change query sees: the light changed after `before`.
+    EXPECT_TRUE(registry.changedSince<content::Light>(named("lamp"), before));
+    EXPECT_EQ(scene->commands().undoLabel(), "Set Light");
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(lumens("lamp"), 800.0f);
+    EXPECT_FALSE(scene->undo());
+    ASSERT_TRUE(scene->redo());
+    EXPECT_EQ(lumens("lamp"), 1600.0f);
+    EXPECT_FALSE(scene->redo());
+}
+
+TEST_F(EditorModel, ADragIsOneUndoStepAndANewEditClearsRedo) {
+    for (float v : {900.0f, 1000.0f, 1100.0f})
+        ASSERT_TRUE(setLumens("lamp", v, 42));
+    EXPECT_EQ(scene->commands().undoCount(), 1u);
+    scene->commands().closeMerge();  // the slider was released
+    ASSERT_TRUE(setLumens("lamp", 2000.0f, 42));
+    EXPECT_EQ(scene->commands().undoCount(), 2u);
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(lumens("lamp"), 1100.0f);
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(lumens("lamp"), 800.0f);
+    ASSERT_TRUE(scene->redo());
+    ASSERT_TRUE(setLumens("bulb", 5.0f));
+    EXPECT_FALSE(scene->commands().canRedo());
+    EXPECT_EQ(lumens("lamp"), 1100.0f);
+}
+
+TEST_F(EditorModel, RenameAndCreateUndoAndRedo) {
+    ecs::Entity lamp = named("lamp");
+    ASSERT_TRUE(scene->execute(setComponent(*scene, lamp, content::Name{"desk lamp"}, "Rename")));
+    EXPECT_EQ(named("lamp"), ecs::kNullEntity);
+    EXPECT_EQ(named("desk lamp"), lamp);
+
+    auto create = std::make_unique<CreateEntityCommand>(*scene, lamp, "spot", content::Light{});
+    const uint64_t id = create->createdId();
+    ASSERT_TRUE(scene->execute(std::move(create)));
+    ecs::Entity spot = scene->find(id);
+    ASSERT_NE(spot, ecs::kNullEntity);
+    EXPECT_EQ(ecs::parentOf(registry, spot), lamp);
+    EXPECT_TRUE(registry.has<content::Light>(spot));
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(scene->find(id), ecs::kNullEntity);
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(named("lamp"), lamp);
+    ASSERT_TRUE(scene->redo());
+    ASSERT_TRUE(scene->redo());
+    EXPECT_NE(scene->find(id), ecs::kNullEntity);
+    EXPECT_EQ(ecs::parentOf(registry, scene->find(id)), lamp);
+}
+
+TEST_F(EditorModel, DuplicateCopiesTheSubtreeAndUndoRemovesIt) {
+    const size_t entities = registry.aliveCount();
+    uint64_t copyId = 0;
+    ASSERT_TRUE(scene->execute(duplicateEntity(*scene, named("lamp"), &copyId)));
+    EXPECT_EQ(registry.aliveCount(), entities + 2);
+    ecs::Entity copy = scene->find(copyId);
+    EXPECT_EQ(scene->displayName(copy), "lamp copy");
+    std::vector<ecs::Entity> children = ecs::childrenOf(registry, copy);
+    ASSERT_EQ(children.size(), 1u);
+    EXPECT_EQ(scene->displayName(children[0]), "bulb");
+    EXPECT_NE(children[0], named("bulb"));  // a copy, not the original moved
+    EXPECT_EQ(registry.get<content::Light>(children[0]).sourceRadius, 0.1f);
+    // Edits of the copy leave the original alone.
+    ASSERT_TRUE(setLumens("lamp copy", 42.0f));
+    EXPECT_EQ(lumens("lamp"), 800.0f);
+    ASSERT_TRUE(scene->undo());
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(registry.aliveCount(), entities);
+    EXPECT_EQ(scene->find(copyId), ecs::kNullEntity);
+}
+
+TEST_F(EditorModel, DeleteUndoRestoresComponentsLinksAndEarlierCommands) {
+    ASSERT_TRUE(setLumens("lamp", 1234.0f));
+    scene->select(named("bulb"));
+    const uint64_t bulbId = scene->selectedId();
+    ASSERT_TRUE(scene->execute(deleteEntity(*scene, named("lamp"))));
+    EXPECT_EQ(named("lamp"), ecs::kNullEntity);
+    EXPECT_EQ(named("bulb"), ecs::kNullEntity);  // descendants go too
+    EXPECT_EQ(scene->selected(), ecs::kNullEntity);
+    ASSERT_TRUE(scene->undo());
+    ASSERT_NE(named("lamp"), ecs::kNullEntity);
+    EXPECT_EQ(lumens("lamp"), 1234.0f);
+    EXPECT_EQ(ecs::parentOf(registry, named("bulb")), named("lamp"));
+    EXPECT_EQ(scene->find(bulbId), named("bulb"));
+    // The light edit made before the delete still undoes on the recreated entity.
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(lumens("lamp"), 800.0f);
+    ASSERT_TRUE(scene->redo());
+    ASSERT_TRUE(scene->redo());
+    EXPECT_EQ(named("lamp"), ecs::kNullEntity);
+}
+
+TEST_F(EditorModel, ReparentAndRefuseCycles) {
+    ecs::Entity bulb = named("bulb");
+    ecs::Entity lamp = named("lamp");
+    ASSERT_TRUE(scene->execute(reparentEntity(*scene, bulb, ecs::kNullEntity)));
+    EXPECT_EQ(ecs::parentOf(registry, bulb), ecs::kNullEntity);
+    ASSERT_TRUE(scene->execute(reparentEntity(*scene, lamp, bulb)));
+    EXPECT_EQ(ecs::parentOf(registry, lamp), bulb);
+    // bulb under its own child: refused, nothing recorded.
+    EXPECT_FALSE(scene->execute(reparentEntity(*scene, bulb, lamp)));
+    EXPECT_FALSE(scene->execute(reparentEntity(*scene, bulb, bulb)));
+    EXPECT_EQ(scene->commands().undoCount(), 2u);
+    ASSERT_TRUE(scene->undo());
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(ecs::parentOf(registry, bulb), lamp);
+    EXPECT_EQ(ecs::parentOf(registry, lamp), ecs::kNullEntity);
+}
+
+TEST_F(EditorModel, SaveWritesEditsHierarchyAndRebasedAssetPaths) {
+    ASSERT_TRUE(setLumens("lamp", 1600.0f));
+    ASSERT_TRUE(
+        scene->execute(std::make_unique<CreateEntityCommand>(*scene, named("lamp"), "extra")));
+    EXPECT_TRUE(scene->modified());
+    const content::SceneDocument saved = saveAndLoad(dir / "saved" / "edited.scene.json");
+    EXPECT_FALSE(scene->modified());
+    ASSERT_EQ(saved.entities.size(), 5u);
+    const content::SceneEntity* lamp = entityNamed(saved, "lamp");
+    ASSERT_TRUE(lamp && lamp->light);
+    EXPECT_EQ(lamp->light->lumens, 1600.0f);
+    const content::SceneEntity* extra = entityNamed(saved, "extra");
+    ASSERT_TRUE(extra);
+    ASSERT_GE(extra->parent, 0);
+    EXPECT_EQ(saved.entities[size_t(extra->parent)].name, "lamp");
+    const content::SceneEntity* floor = entityNamed(saved, "floor");
+    ASSERT_TRUE(floor && floor->mesh);
+    // Still points at <dir>/models/floor.glb from the new directory.
+    EXPECT_EQ(floor->mesh->gltfPath, "../models/floor.glb");
+    // Scene order is kept: the loaded entities first, in file order.
+    EXPECT_EQ(saved.entities[0].name, "floor");
+    EXPECT_EQ(saved.entities[3].name, "camera");
+    ASSERT_TRUE(scene->undo());
+    EXPECT_TRUE(scene->modified());
+}
+
+TEST_F(EditorModel, SavingIntoAMissingDirectoryFailsNamingTheFileAndKeepsModified) {
+    ASSERT_TRUE(setLumens("lamp", 1600.0f));
+    const fs::path bad = dir / "no_such_dir" / "x.scene.json";
+    const std::string error = scene->save(bad);
+    EXPECT_NE(error.find("x.scene.json"), std::string::npos) << error;
+    EXPECT_TRUE(scene->modified());
+    EXPECT_FALSE(fs::exists(bad));
+}
+
+}  // namespace
+}  // namespace candela::editor
