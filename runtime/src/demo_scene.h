@@ -4,7 +4,7 @@
 #include <array>
 
 #include "candela/content/diagnostics.h"
-#include "scene_world.h"
+#include "candela/runtime/scene_world.h"
 
 namespace candela::runtime {
 

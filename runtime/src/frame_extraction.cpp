@@ -1,4 +1,4 @@
-#include "frame_extraction.h"
+#include "candela/runtime/frame_extraction.h"
 
 #include <algorithm>
 #include <cmath>

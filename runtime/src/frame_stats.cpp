@@ -1,4 +1,4 @@
-#include "frame_stats.h"
+#include "candela/runtime/frame_stats.h"
 
 #include <algorithm>
 #include <fstream>

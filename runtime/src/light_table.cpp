@@ -1,4 +1,4 @@
-#include "light_table.h"
+#include "candela/runtime/light_table.h"
 
 #include <cmath>
 #include <cstring>

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "app.h"
 #include "run_options.h"
+#include "run_scene.h"
 
 using namespace candela::runtime;
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "candela/render/frame_inputs.h"
-#include "scene_world.h"
+#include "candela/runtime/scene_world.h"
 
 namespace candela::runtime {
 

@@ -1,4 +1,4 @@
-#include "scene_world.h"
+#include "candela/runtime/scene_world.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,11 @@
-#include "window.h"
+#include "candela/runtime/window.h"
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
 #include <stdexcept>
+
+#include "window_key_map.h"
 
 namespace candela::runtime {
 
@@ -54,6 +56,56 @@ bool Window::shouldClose() const {
 
 void Window::pollEvents() const {
     glfwPollEvents();
+    if (input_ && glfwWindowShouldClose(window_)) input_->closeRequested = true;
+}
+
+void Window::setInputTarget(InputState* input) {
+    input_ = input;
+    hasCursor_ = false;
+    if (!input) {
+        glfwSetKeyCallback(window_, nullptr);
+        glfwSetMouseButtonCallback(window_, nullptr);
+        glfwSetCursorPosCallback(window_, nullptr);
+        return;
+    }
+    glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
+        Window* window = static_cast<Window*>(glfwGetWindowUserPointer(w));
+        std::optional<Key> mapped = keyFromGlfw(key);
+        if (!mapped || !window->input_ || action == GLFW_REPEAT) return;
+        window->input_->setKey(*mapped, action == GLFW_PRESS);
+    });
+    glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
+        Window* window = static_cast<Window*>(glfwGetWindowUserPointer(w));
+        std::optional<MouseButton> mapped = mouseButtonFromGlfw(button);
+        if (!mapped || !window->input_) return;
+        window->input_->setButton(*mapped, action == GLFW_PRESS);
+    });
+    glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
+        Window* window = static_cast<Window*>(glfwGetWindowUserPointer(w));
+        if (!window->input_) return;
+        // The first position after a (re)start is a jump, not a motion.
+        if (window->hasCursor_) {
+            window->input_->mouseDeltaX += float(x - window->lastCursorX_);
+            window->input_->mouseDeltaY += float(y - window->lastCursorY_);
+        }
+        window->hasCursor_ = true;
+        window->lastCursorX_ = x;
+        window->lastCursorY_ = y;
+        window->input_->mouseX = float(x);
+        window->input_->mouseY = float(y);
+    });
+}
+
+void Window::setCursorCaptured(bool captured) {
+    glfwSetInputMode(window_, GLFW_CURSOR, captured ? GLFW_CURSOR_DISABLED : GLFW_CURSOR_NORMAL);
+    if (captured && glfwRawMouseMotionSupported()) {
+        glfwSetInputMode(window_, GLFW_RAW_MOUSE_MOTION, GLFW_TRUE);
+    }
+    hasCursor_ = false;
+}
+
+void Window::setTitle(const std::string& title) {
+    glfwSetWindowTitle(window_, title.c_str());
 }
 
 void Window::framebufferSize(uint32_t& width, uint32_t& height) const {

@@ -8,7 +8,7 @@
 #include "candela/ecs/registry.h"
 #include "candela/render/frame_scene.h"
 #include "candela/render/scene_resources.h"
-#include "light_table.h"
+#include "candela/runtime/light_table.h"
 
 namespace candela::runtime {
 

@@ -1,0 +1,112 @@
+#pragma once
+// Keyboard and mouse as plain data, the same whether a window (GLFW) or a recorded input
+// script fills it; game systems read only this.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace candela::runtime {
+
+enum class Key : std::uint8_t {
+    A,
+    B,
+    C,
+    D,
+    E,
+    F,
+    G,
+    H,
+    I,
+    J,
+    K,
+    L,
+    M,
+    N,
+    O,
+    P,
+    Q,
+    R,
+    S,
+    T,
+    U,
+    V,
+    W,
+    X,
+    Y,
+    Z,
+    Num0,
+    Num1,
+    Num2,
+    Num3,
+    Num4,
+    Num5,
+    Num6,
+    Num7,
+    Num8,
+    Num9,
+    Space,
+    Enter,
+    Escape,
+    Tab,
+    Backspace,
+    Left,
+    Right,
+    Up,
+    Down,
+    LeftShift,
+    RightShift,
+    LeftControl,
+    RightControl,
+    LeftAlt,
+    RightAlt,
+    F1,
+    F2,
+    F3,
+    F4,
+    Count
+};
+inline constexpr std::size_t kKeyCount = std::size_t(Key::Count);
+
+enum class MouseButton : std::uint8_t { Left, Right, Middle, Count };
+inline constexpr std::size_t kMouseButtonCount = std::size_t(MouseButton::Count);
+
+// Names as input scripts spell them: "A".."Z", "0".."9", "Space", "LeftShift", "F1", ...
+std::string_view keyName(Key key);
+std::optional<Key> keyFromName(std::string_view name);  // case-insensitive
+std::string_view mouseButtonName(MouseButton button);
+std::optional<MouseButton> mouseButtonFromName(std::string_view name);  // case-insensitive
+
+struct InputState {
+    std::array<bool, kKeyCount> keysDown{};
+    std::array<bool, kKeyCount> keysPressed{};  // went down since the previous frame
+    std::array<bool, kMouseButtonCount> buttonsDown{};
+    std::array<bool, kMouseButtonCount> buttonsPressed{};
+    float mouseX = 0.0f, mouseY = 0.0f;            // window pixels, origin top-left
+    float mouseDeltaX = 0.0f, mouseDeltaY = 0.0f;  // movement since the previous frame
+    bool closeRequested = false;  // the window's close button, or `quit` in a script
+
+    bool down(Key key) const { return keysDown[std::size_t(key)]; }
+    bool pressed(Key key) const { return keysPressed[std::size_t(key)]; }
+    bool down(MouseButton b) const { return buttonsDown[std::size_t(b)]; }
+    bool pressed(MouseButton b) const { return buttonsPressed[std::size_t(b)]; }
+
+    // Starts a new frame: what was pressed or moved belongs to the previous one.
+    void beginFrame() {
+        keysPressed = {};
+        buttonsPressed = {};
+        mouseDeltaX = mouseDeltaY = 0.0f;
+    }
+    void setKey(Key key, bool isDown) {
+        std::size_t i = std::size_t(key);
+        if (isDown && !keysDown[i]) keysPressed[i] = true;
+        keysDown[i] = isDown;
+    }
+    void setButton(MouseButton button, bool isDown) {
+        std::size_t i = std::size_t(button);
+        if (isDown && !buttonsDown[i]) buttonsPressed[i] = true;
+        buttonsDown[i] = isDown;
+    }
+};
+
+}  // namespace candela::runtime

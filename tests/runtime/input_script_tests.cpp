@@ -1,0 +1,99 @@
+// Recorded input: what a script means frame by frame, and scripts that are wrong must say
+// where (file:line) and why, never crash.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "candela/runtime/input_script.h"
+
+using namespace candela::runtime;
+
+namespace {
+
+InputScript parseOk(const std::string& text) {
+    std::string error;
+    std::optional<InputScript> script = InputScript::parse(text, "test.input", error);
+    EXPECT_TRUE(script.has_value()) << error;
+    return script ? *script : InputScript{};
+}
+
+std::string parseError(const std::string& text) {
+    std::string error;
+    std::optional<InputScript> script = InputScript::parse(text, "bad.input", error);
+    EXPECT_FALSE(script.has_value()) << "accepted: " << text;
+    return error;
+}
+
+}  // namespace
+
+TEST(InputScript, KeysGoDownAndUpOnTheirFrames) {
+    InputScript script = parseOk("# move right\n2 down d\n4 up D   # release\n");
+    InputState state;
+    std::vector<bool> down, pressed;
+    for (uint32_t frame = 0; frame < 6; ++frame) {
+        state.beginFrame();
+        script.apply(frame, state);
+        down.push_back(state.down(Key::D));
+        pressed.push_back(state.pressed(Key::D));
+    }
+    EXPECT_EQ(down, (std::vector<bool>{false, false, true, true, false, false}));
+    EXPECT_EQ(pressed, (std::vector<bool>{false, false, true, false, false, false}));
+}
+
+TEST(InputScript, TapHoldMouseButtonAndQuit) {
+    InputScript script =
+        parseOk("1 tap R\n0 hold LeftShift 3\n1 mouse 4.5 -2\n2 button down left\n5 quit\n");
+    InputState state;
+    state.beginFrame();
+    script.apply(0, state);
+    EXPECT_TRUE(state.down(Key::LeftShift));
+    EXPECT_FALSE(state.down(Key::R));
+    state.beginFrame();
+    script.apply(1, state);
+    EXPECT_TRUE(state.pressed(Key::R));
+    EXPECT_FLOAT_EQ(state.mouseDeltaX, 4.5f);
+    EXPECT_FLOAT_EQ(state.mouseDeltaY, -2.0f);
+    state.beginFrame();
+    script.apply(2, state);
+    EXPECT_FALSE(state.down(Key::R));
+    EXPECT_FLOAT_EQ(state.mouseDeltaX, 0.0f);
+    EXPECT_TRUE(state.pressed(MouseButton::Left));
+    state.beginFrame();
+    script.apply(3, state);
+    EXPECT_FALSE(state.down(Key::LeftShift));
+    EXPECT_FALSE(state.closeRequested);
+    state.beginFrame();
+    script.apply(5, state);
+    EXPECT_TRUE(state.closeRequested);
+}
+
+TEST(InputScript, BadScriptsNameTheLineAndTheProblem) {
+    EXPECT_EQ(parseError("0 down W\n\n3 down Q2\n").rfind("bad.input:3: unknown key 'Q2'", 0), 0u);
+    EXPECT_NE(parseError("x down W").find("bad.input:1: expected a frame number"),
+              std::string::npos);
+    EXPECT_NE(parseError("-1 down W").find("expected a frame number"), std::string::npos);
+    EXPECT_NE(parseError("4").find("bad.input:1: frame 4 has no action"), std::string::npos);
+    EXPECT_NE(parseError("1 jump W").find("unknown action 'jump'"), std::string::npos);
+    EXPECT_NE(parseError("1 down").find("'down' takes one key"), std::string::npos);
+    EXPECT_NE(parseError("1 down W S").find("'down' takes one key"), std::string::npos);
+    EXPECT_NE(parseError("1 hold W 0").find("positive frame count"), std::string::npos);
+    EXPECT_NE(parseError("1 mouse 1 nan").find("two finite numbers"), std::string::npos);
+    EXPECT_NE(parseError("1 mouse 1").find("'mouse' takes dx and dy"), std::string::npos);
+    EXPECT_NE(parseError("1 button down thumb").find("unknown mouse button 'thumb'"),
+              std::string::npos);
+    EXPECT_NE(parseError("99999999999 down W").find("expected a frame number"), std::string::npos);
+}
+
+TEST(InputScript, MissingFileIsAClearError) {
+    std::string error;
+    EXPECT_FALSE(InputScript::load("/nonexistent/dir/x.input", error).has_value());
+    EXPECT_EQ(error, "/nonexistent/dir/x.input: cannot open input script");
+}
+
+TEST(InputScript, KeyNamesRoundTrip) {
+    for (size_t i = 0; i < kKeyCount; ++i) {
+        std::optional<Key> k = keyFromName(keyName(Key(i)));
+        ASSERT_TRUE(k.has_value()) << keyName(Key(i));
+        EXPECT_EQ(size_t(*k), i);
+    }
+}
