@@ -5,11 +5,17 @@
 #include <fstream>
 
 #include "candela/content/asset_cache.h"
+#include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/content/model.h"
+#include "candela/content/procedural_mesh.h"
 #include "candela/content/scene_file.h"
 #include "candela/content/scene_instantiation.h"
 #include "candela/ecs/hierarchy.h"
+#include "candela/ecs/transform.h"
 #include "model/editor_scene.h"
+#include "model/material_editing.h"
+#include "model/property_edits.h"
 #include "model/set_component_command.h"
 #include "model/structure_commands.h"
 
@@ -238,6 +244,80 @@ TEST_F(EditorModel, SavingIntoAMissingDirectoryFailsNamingTheFileAndKeepsModifie
     EXPECT_NE(error.find("x.scene.json"), std::string::npos) << error;
     EXPECT_TRUE(scene->modified());
     EXPECT_FALSE(fs::exists(bad));
+}
+
+TEST_F(EditorModel, PropertyEditsByNameAndTheirErrors) {
+    std::string error;
+    ASSERT_TRUE(
+        scene->execute(propertyEdit(*scene, named("lamp"), "light.lumens", {1600.0f}, error)))
+        << error;
+    EXPECT_EQ(lumens("lamp"), 1600.0f);
+    ASSERT_TRUE(scene->execute(
+        propertyEdit(*scene, named("lamp"), "transform.position", {1.0f, 2.0f, 3.0f}, error)));
+    EXPECT_EQ(registry.get<ecs::LocalTransform>(named("lamp")).position.y, 2.0f);
+    ASSERT_TRUE(
+        scene->execute(propertyEdit(*scene, named("camera"), "camera.aperture", {8.0f}, error)));
+    EXPECT_EQ(registry.get<content::Camera>(named("camera")).aperture, 8.0f);
+
+    EXPECT_FALSE(propertyEdit(*scene, named("lamp"), "light.lumen", {1.0f}, error));
+    EXPECT_EQ(error, "light.lumen: unknown property");
+    EXPECT_FALSE(propertyEdit(*scene, named("lamp"), "light.color", {1.0f}, error));
+    EXPECT_EQ(error, "light.color: expects 3 value(s), got 1");
+    EXPECT_FALSE(propertyEdit(*scene, named("camera"), "light.lumens", {1.0f}, error));
+    EXPECT_EQ(error, "light.lumens: the entity has no light");
+    EXPECT_FALSE(propertyEdit(*scene, named("floor"), "material.roughness", {0.5f}, error));
+    EXPECT_EQ(error, "material.roughness: the entity has no loaded mesh");
+    EXPECT_EQ(scene->commands().undoCount(), 3u);
+}
+
+TEST_F(EditorModel, AddAndRemoveComponentsUndo) {
+    ecs::Entity camera = named("camera");
+    ASSERT_TRUE(scene->execute(setComponent(*scene, camera, content::Light{}, "Add Light")));
+    EXPECT_TRUE(registry.has<content::Light>(camera));
+    ASSERT_TRUE(scene->undo());
+    EXPECT_FALSE(registry.has<content::Light>(camera));
+    ASSERT_TRUE(scene->execute(removeComponent<content::Light>(*scene, named("lamp"), "Remove")));
+    EXPECT_FALSE(registry.has<content::Light>(named("lamp")));
+    EXPECT_FALSE(removeComponent<content::Light>(*scene, named("lamp"), "Remove"));
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(lumens("lamp"), 800.0f);
+}
+
+TEST_F(EditorModel, MaterialEditsWriteOverridesAndKeepTheModelMaterial) {
+    content::Model model;
+    content::Material red;
+    red.baseColorFactor = {1, 0, 0, 1};
+    red.roughnessFactor = 0.8f;
+    model.materials.push_back(red);
+    content::Mesh& mesh = model.meshes.emplace_back();
+    mesh.primitives.push_back(content::makeBox({1, 1, 1}));
+    mesh.primitives.back().material = 0;
+    mesh.primitives.push_back(content::makeSphere(1, 8, 4));  // the glTF default material
+    ecs::Entity floor = named("floor");
+    registry.get<content::MeshInstance>(floor).model = &model;
+    registry.get<content::MeshInstance>(floor).mesh = 0;
+
+    ASSERT_EQ(primitiveCount(*scene, floor), 2u);
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).roughnessFactor, 0.8f);
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 1).roughnessFactor, 1.0f);
+    std::string error;
+    const ecs::Tick before = registry.currentTick();
+    registry.advanceTick();
+    ASSERT_TRUE(scene->execute(propertyEdit(*scene, floor, "material.roughness", {0.25f}, error)));
+    // Frame extraction remakes override materials when this tick moves.
+    EXPECT_TRUE(registry.changedSince<content::MaterialOverrides>(floor, before));
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).roughnessFactor, 0.25f);
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).baseColorFactor[1], 0.0f);  // rest kept
+    EXPECT_EQ(model.materials[0].roughnessFactor, 0.8f);  // the shared model is untouched
+    content::Material legacy = effectiveMaterial(*scene, floor, 1);
+    legacy.shadingModel = content::ShadingModel::Legacy;
+    ASSERT_TRUE(scene->execute(setMaterial(*scene, floor, 1, legacy)));
+    EXPECT_EQ(registry.get<content::MaterialOverrides>(floor).overrides.size(), 2u);
+    EXPECT_FALSE(setMaterial(*scene, floor, 2, legacy));
+    ASSERT_TRUE(scene->undo());
+    ASSERT_TRUE(scene->undo());
+    EXPECT_FALSE(registry.has<content::MaterialOverrides>(floor));
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).roughnessFactor, 0.8f);
 }
 
 }  // namespace
