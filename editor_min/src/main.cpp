@@ -1,15 +1,22 @@
-// candela-editor [--frames N]
-#include <cstdlib>
-#include <cstring>
+// candela-editor [<scene>] [--script FILE] [--size WxH] [--frames N] [--validation MODE]
+#include <cstdio>
 
-#include "editor_window.h"
+#include "app/editor_app.h"
+#include "app/editor_options.h"
 
 int main(int argc, char** argv) {
-    uint32_t frames = 0;
-    for (int i = 1; i + 1 < argc; ++i) {
-        if (std::strcmp(argv[i], "--frames") == 0) {
-            frames = static_cast<uint32_t>(std::strtoul(argv[i + 1], nullptr, 10));
+    std::string error;
+    bool help = false;
+    std::optional<candela::editor::EditorOptions> options =
+        candela::editor::parseEditorOptions(argc, argv, error, help);
+    if (!options) {
+        if (help) {
+            std::printf("%s", error.c_str());
+            return candela::editor::kEditorOk;
         }
+        std::fprintf(stderr, "candela-editor: %s\n%s", error.c_str(),
+                     candela::editor::editorUsage().c_str());
+        return candela::editor::kEditorBadArguments;
     }
-    return candela::editor::runEditorWindow(frames);
+    return candela::editor::runEditor(*options);
 }

@@ -1,0 +1,225 @@
+#include "app/inspector_panel.h"
+
+#include <imgui.h>
+#include <imgui_internal.h>  // GetItemID (public from 1.87)
+#include <imgui_stdlib.h>
+
+#include <cmath>
+#include <glm/gtc/quaternion.hpp>
+#include <string>
+
+#include "candela/content/components/camera.h"
+#include "candela/content/components/light.h"
+#include "candela/content/components/mesh_instance.h"
+#include "candela/content/components/name.h"
+#include "candela/ecs/transform.h"
+#include "candela/render/exposure.h"
+#include "model/editor_scene.h"
+#include "model/material_editing.h"
+#include "model/set_component_command.h"
+
+namespace candela::editor {
+
+namespace {
+
+// Folds the edits of one widget on one entity into one undo step until it is released.
+uint64_t mergeKey(EditorScene& scene, ecs::Entity e) {
+    return (uint64_t(ImGui::GetItemID()) << 32) ^ scene.idOf(e) ^ 1u;
+}
+
+// Called right after a widget: commits `value` when the widget changed it, and ends the undo
+// step when the widget is released.
+template <class T>
+void commit(EditorScene& scene, ecs::Entity e, bool changed, const T& value, const char* label) {
+    if (changed) scene.execute(setComponent(scene, e, value, label), mergeKey(scene, e));
+    if (ImGui::IsItemDeactivated()) scene.commands().closeMerge();
+}
+
+bool sameQuat(const ecs::Quat& a, const ecs::Quat& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z && a.w == b.w;
+}
+
+void drawName(EditorScene& scene, ecs::Entity e) {
+    const content::Name* current = scene.registry().tryGet<content::Name>(e);
+    std::string name = current ? current->value : std::string();
+    const bool changed = ImGui::InputText("Name", &name);
+    commit(scene, e, changed, content::Name{name}, "Rename");
+}
+
+void drawTransform(EditorScene& scene, ecs::Entity e, InspectorState& state) {
+    const auto* current = scene.registry().tryGet<ecs::LocalTransform>(e);
+    if (!current || !ImGui::CollapsingHeader("Transform", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ecs::LocalTransform t = *current;
+    commit(scene, e, ImGui::DragFloat3("Position", &t.position.x, 0.05f), t, "Move");
+    if (state.eulerEntity != scene.idOf(e) || !sameQuat(state.eulerSource, t.rotation)) {
+        const glm::vec3 euler = glm::degrees(
+            glm::eulerAngles(glm::quat(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z)));
+        state.eulerEntity = scene.idOf(e);
+        state.eulerSource = t.rotation;
+        state.eulerDegrees[0] = euler.x;
+        state.eulerDegrees[1] = euler.y;
+        state.eulerDegrees[2] = euler.z;
+    }
+    const bool rotated =
+        ImGui::DragFloat3("Rotation", state.eulerDegrees, 0.5f, 0.0f, 0.0f, "%.1f deg");
+    if (rotated) {
+        const glm::quat q(glm::radians(
+            glm::vec3(state.eulerDegrees[0], state.eulerDegrees[1], state.eulerDegrees[2])));
+        t.rotation = {q.x, q.y, q.z, q.w};
+        state.eulerSource = t.rotation;
+    }
+    commit(scene, e, rotated, t, "Rotate");
+    commit(scene, e, ImGui::DragFloat3("Scale", &t.scale.x, 0.01f), t, "Scale");
+}
+
+void drawLight(EditorScene& scene, ecs::Entity e) {
+    const auto* current = scene.registry().tryGet<content::Light>(e);
+    if (!current) return;
+    bool open = ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen);
+    if (ImGui::BeginPopupContextItem("light context")) {
+        if (ImGui::MenuItem("Remove light")) {
+            scene.execute(removeComponent<content::Light>(scene, e, "Remove Light"));
+        }
+        ImGui::EndPopup();
+        return;
+    }
+    if (!open) return;
+    content::Light l = *current;
+    const char* types[] = {"Point", "Spot", "Directional"};
+    int type = int(l.type);
+    const bool typeChanged = ImGui::Combo("Type", &type, types, 3);
+    l.type = content::LightType(type);
+    commit(scene, e, typeChanged, l, "Set Light Type");
+    commit(scene, e, ImGui::ColorEdit3("Colour", l.color.data()), l, "Set Light Colour");
+    if (l.type == content::LightType::Directional) {
+        commit(scene, e, ImGui::DragFloat("Lux", &l.lux, 100.0f, 0.0f, 1.0e6f, "%.1f lx"), l,
+               "Set Lux");
+        return;
+    }
+    commit(scene, e, ImGui::DragFloat("Lumens", &l.lumens, 10.0f, 0.0f, 1.0e7f, "%.1f lm"), l,
+           "Set Lumens");
+    commit(scene, e,
+           ImGui::DragFloat("Attenuation radius", &l.attenuationRadius, 0.05f, 0.01f, 1.0e4f,
+                            "%.2f m"),
+           l, "Set Attenuation Radius");
+    commit(scene, e,
+           ImGui::DragFloat("Source radius", &l.sourceRadius, 0.005f, 0.0f, 100.0f, "%.3f m"), l,
+           "Set Source Radius");
+    commit(scene, e,
+           ImGui::DragFloat("Source length", &l.sourceLength, 0.01f, 0.0f, 100.0f, "%.3f m"), l,
+           "Set Source Length");
+    if (l.type == content::LightType::Spot) {
+        commit(scene, e, ImGui::SliderAngle("Inner cone", &l.innerConeAngle, 0.0f, 90.0f), l,
+               "Set Inner Cone");
+        commit(scene, e, ImGui::SliderAngle("Outer cone", &l.outerConeAngle, 0.0f, 90.0f), l,
+               "Set Outer Cone");
+    }
+}
+
+void drawCamera(EditorScene& scene, ecs::Entity e) {
+    const auto* current = scene.registry().tryGet<content::Camera>(e);
+    if (!current || !ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    content::Camera c = *current;
+    commit(scene, e, ImGui::SliderAngle("Vertical FOV", &c.verticalFov, 1.0f, 170.0f), c,
+           "Set FOV");
+    const char* modes[] = {"Physical", "Manual"};
+    int mode = int(c.exposureMode);
+    const bool modeChanged = ImGui::Combo("Exposure", &mode, modes, 2);
+    c.exposureMode = content::ExposureMode(mode);
+    commit(scene, e, modeChanged, c, "Set Exposure Mode");
+    if (c.exposureMode == content::ExposureMode::Physical) {
+        commit(scene, e, ImGui::DragFloat("Aperture", &c.aperture, 0.1f, 0.5f, 64.0f, "f/%.1f"), c,
+               "Set Aperture");
+        float shutterInverse = c.shutterSeconds > 0.0f ? 1.0f / c.shutterSeconds : 100.0f;
+        const bool shutter =
+            ImGui::DragFloat("Shutter", &shutterInverse, 1.0f, 0.01f, 1.0e5f, "1/%.0f s");
+        if (shutter && shutterInverse > 0.0f) c.shutterSeconds = 1.0f / shutterInverse;
+        commit(scene, e, shutter, c, "Set Shutter");
+        commit(scene, e, ImGui::DragFloat("ISO", &c.iso, 10.0f, 1.0f, 1.0e6f, "%.0f"), c,
+               "Set ISO");
+    } else {
+        commit(scene, e, ImGui::DragFloat("EV100", &c.manualEv100, 0.05f, -10.0f, 30.0f), c,
+               "Set EV100");
+    }
+    commit(
+        scene, e,
+        ImGui::DragFloat("Compensation", &c.exposureCompensation, 0.05f, -10.0f, 10.0f, "%.2f EV"),
+        c, "Set Exposure Compensation");
+    ImGui::Text("EV100 %.2f", render::ev100FromCamera(c));
+}
+
+void drawMaterials(EditorScene& scene, ecs::Entity e) {
+    const uint32_t primitives = primitiveCount(scene, e);
+    if (primitives == 0 || !ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return;
+    }
+    for (uint32_t p = 0; p < primitives; ++p) {
+        ImGui::PushID(int(p));
+        content::Material m = effectiveMaterial(scene, e, p);
+        const std::string title =
+            "Primitive " + std::to_string(p) + (m.name.empty() ? "" : " (" + m.name + ")");
+        if (primitives == 1 || ImGui::TreeNodeEx(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+            auto edited = [&](bool changed) {
+                if (changed) scene.execute(setMaterial(scene, e, p, m), mergeKey(scene, e));
+                if (ImGui::IsItemDeactivated()) scene.commands().closeMerge();
+            };
+            const char* models[] = {"Default lit", "Subsurface", "Legacy", "Unlit"};
+            int model = int(m.shadingModel);
+            const bool modelChanged = ImGui::Combo("Shading model", &model, models, 4);
+            m.shadingModel = content::ShadingModel(model);
+            edited(modelChanged);
+            edited(ImGui::ColorEdit4("Base colour", m.baseColorFactor.data()));
+            if (m.shadingModel == content::ShadingModel::Legacy) {
+                edited(ImGui::ColorEdit3("Diffuse colour", m.diffuseColor.data()));
+                edited(ImGui::ColorEdit3("Specular colour", m.specularColor.data()));
+            } else if (m.shadingModel != content::ShadingModel::Unlit) {
+                edited(ImGui::SliderFloat("Metallic", &m.metallicFactor, 0.0f, 1.0f));
+                edited(ImGui::SliderFloat("Roughness", &m.roughnessFactor, 0.0f, 1.0f));
+                edited(ImGui::SliderFloat("Specular", &m.specular, 0.0f, 1.0f));
+            }
+            if (m.shadingModel == content::ShadingModel::Subsurface) {
+                edited(ImGui::ColorEdit3("Subsurface colour", m.subsurfaceColor.data()));
+                edited(ImGui::SliderFloat("Subsurface opacity", &m.subsurfaceOpacity, 0.0f, 1.0f));
+            }
+            edited(ImGui::ColorEdit3("Emissive", m.emissiveFactor.data()));
+            if (primitives > 1) ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+}
+
+void drawAddComponent(EditorScene& scene, ecs::Entity e) {
+    if (ImGui::Button("Add component")) ImGui::OpenPopup("add component");
+    if (ImGui::BeginPopup("add component")) {
+        if (!scene.registry().has<content::Light>(e) && ImGui::MenuItem("Light")) {
+            scene.execute(setComponent(scene, e, content::Light{}, "Add Light"));
+        }
+        if (!scene.registry().has<content::Camera>(e) && ImGui::MenuItem("Camera")) {
+            scene.execute(setComponent(scene, e, content::Camera{}, "Add Camera"));
+        }
+        ImGui::EndPopup();
+    }
+}
+
+}  // namespace
+
+void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
+    const ecs::Entity e = scene.selected();
+    if (e == ecs::kNullEntity) {
+        ImGui::TextDisabled("Nothing selected");
+        return;
+    }
+    ImGui::PushID(int(scene.idOf(e)));
+    ImGui::PushItemWidth(-110.0f);
+    drawName(scene, e);
+    drawTransform(scene, e, state);
+    // Each section re-reads its component: an edit above may have replaced it this frame.
+    if (scene.registry().valid(e)) drawLight(scene, e);
+    if (scene.registry().valid(e)) drawCamera(scene, e);
+    if (scene.registry().valid(e)) drawMaterials(scene, e);
+    if (scene.registry().valid(e)) drawAddComponent(scene, e);
+    ImGui::PopItemWidth();
+    ImGui::PopID();
+}
+
+}  // namespace candela::editor

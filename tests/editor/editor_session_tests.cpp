@@ -1,0 +1,166 @@
+// candela-editor driven by a script under a virtual display (ctest runs this binary through
+// xvfb-run): a light edit is saved to the scene file and visible in the viewport, undo shows
+// the old light again, and bad scripts or scenes fail with clear messages.
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>
+
+#include <sys/wait.h>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "candela/content/scene_file.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace content = candela::content;
+
+const fs::path kScene = fs::path(CANDELA_SOURCE_DIR) / "tests/scenes/spot_light.scene.json";
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgba;
+    // Mean Rec. 709 luma over a rectangle, in 8-bit levels.
+    double meanLuma(int x0, int y0, int x1, int y1) const {
+        double sum = 0.0;
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) {
+                const unsigned char* p = &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4];
+                sum += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            }
+        }
+        return sum / double((x1 - x0) * (y1 - y0));
+    }
+};
+
+Image readPng(const fs::path& path) {
+    Image image;
+    int channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &image.width, &image.height, &channels, 4);
+    if (data) {
+        image.rgba.assign(data, data + size_t(image.width) * size_t(image.height) * 4);
+        stbi_image_free(data);
+    }
+    return image;
+}
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class EditorSession : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() /
+              ("candela_editor_session_" +
+               std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override {
+        if (!HasFailure()) fs::remove_all(dir);
+    }
+
+    // Runs the editor on `scene` with `script`; returns its exit status, stderr in `errors`.
+    int runEditor(const fs::path& scene, const std::string& script, std::string& errors) {
+        const fs::path scriptPath = dir / "session.txt";
+        std::ofstream(scriptPath) << script;
+        const fs::path errPath = dir / "stderr.txt";
+        const std::string command = std::string("\"") + CANDELA_EDITOR + "\" \"" + scene.string() +
+                                    "\" --size 640x360 --script \"" + scriptPath.string() +
+                                    "\" 2> \"" + errPath.string() + "\"";
+        const int status = std::system(command.c_str());
+        errors = readText(errPath);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+
+    fs::path dir;
+};
+
+TEST_F(EditorSession, LightEditIsSavedShownAndUndone) {
+    ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run through xvfb-run (ctest does)";
+    const std::string original = readText(kScene);
+    const fs::path saved = dir / "edited.scene.json";
+    std::string errors;
+    const int status = runEditor(kScene,
+                                 "select spot\n"
+                                 "screenshot " +
+                                     (dir / "before.png").string() +
+                                     "\n"
+                                     "set light.lumens 2000\n"
+                                     "screenshot " +
+                                     (dir / "after.png").string() +
+                                     "\n"
+                                     "undo\n"
+                                     "screenshot " +
+                                     (dir / "undone.png").string() +
+                                     "\n"
+                                     "redo\n"
+                                     "save " +
+                                     saved.string() +
+                                     "\n"
+                                     "quit\n",
+                                 errors);
+    ASSERT_EQ(status, 0) << errors;  // 3 would be validation messages
+    EXPECT_EQ(readText(kScene), original) << "saving elsewhere must not touch the opened file";
+
+    // The saved scene has the new value, and everything else the file had.
+    content::Diagnostics diagnostics;
+    std::optional<content::SceneDocument> doc = content::loadSceneFile(saved, diagnostics);
+    ASSERT_TRUE(doc);
+    EXPECT_TRUE(diagnostics.messages.empty());
+    ASSERT_EQ(doc->entities.size(), 3u);
+    ASSERT_TRUE(doc->entities[1].light);
+    EXPECT_EQ(doc->entities[1].name, "spot");
+    EXPECT_EQ(doc->entities[1].light->lumens, 2000.0f);
+    ASSERT_TRUE(doc->entities[0].mesh);
+    // The floor's glTF path was rebased to the new directory and still resolves.
+    EXPECT_TRUE(fs::exists(content::resolveScenePath(saved, doc->entities[0].mesh->gltfPath)))
+        << doc->entities[0].mesh->gltfPath;
+
+    const Image before = readPng(dir / "before.png");
+    const Image after = readPng(dir / "after.png");
+    const Image undone = readPng(dir / "undone.png");
+    ASSERT_EQ(before.width, 640);
+    ASSERT_EQ(before.height, 360);
+    ASSERT_EQ(after.width, 640);
+    ASSERT_EQ(undone.width, 640);
+    // The spot's pool of light on the floor, between the hierarchy (left) and inspector (right)
+    // panels: a quarter of the light is visibly darker there.
+    const int x0 = 250, y0 = 150, x1 = 390, y1 = 230;
+    const double lit = before.meanLuma(x0, y0, x1, y1);
+    const double dimmed = after.meanLuma(x0, y0, x1, y1);
+    std::printf("lit pool mean luma (8-bit): 8000 lm %.1f, 2000 lm %.1f, after undo %.1f\n", lit,
+                dimmed, undone.meanLuma(x0, y0, x1, y1));
+    EXPECT_GT(lit, 150.0) << "the region is not the lit pool";
+    EXPECT_LT(dimmed, lit * 0.8) << "before " << lit << ", after " << dimmed;
+    // Undo brings the old light back (the renderer is deterministic).
+    EXPECT_NEAR(undone.meanLuma(x0, y0, x1, y1), lit, 0.5);
+}
+
+TEST_F(EditorSession, AFailingScriptStepNamesTheLineAndFails) {
+    std::string errors;
+    EXPECT_EQ(runEditor(kScene, "select spot\nselect nobody\nquit\n", errors), 1);
+    EXPECT_NE(errors.find("session.txt:2: select: no entity named 'nobody'"), std::string::npos)
+        << errors;
+    EXPECT_EQ(runEditor(kScene, "select spot\nset light.lumen 3\nquit\n", errors), 1);
+    EXPECT_NE(errors.find("session.txt:2: set: light.lumen: unknown property"), std::string::npos)
+        << errors;
+    EXPECT_EQ(runEditor(kScene, "frobnicate\n", errors), 2);
+    EXPECT_NE(errors.find("session.txt:1: unknown step 'frobnicate'"), std::string::npos) << errors;
+}
+
+TEST_F(EditorSession, AMissingSceneIsABadArgument) {
+    std::string errors;
+    EXPECT_EQ(runEditor(dir / "missing.scene.json", "quit\n", errors), 2);
+    EXPECT_NE(errors.find("missing.scene.json: no such file"), std::string::npos) << errors;
+}
+
+}  // namespace
