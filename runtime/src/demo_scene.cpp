@@ -1,5 +1,6 @@
 #include "demo_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -9,21 +10,29 @@
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
-#include "candela/content/model_instantiation.h"
+#include "candela/content/components/sky.h"
 #include "candela/content/procedural_mesh.h"
 #include "candela/ecs/hierarchy.h"
 #include "candela/ecs/transform.h"
+#include "candela/runtime/fly_camera.h"
 
 namespace candela::runtime {
 
 namespace {
 
-// A light that circles `center` at `radius` metres, `speed` radians per second.
-struct OrbitingLight {
+constexpr float kPi = std::numbers::pi_v<float>;
+
+// A light that drifts on a Lissajous figure inside a box: x, y, z each oscillate.
+struct DriftingLight {
     ecs::Vec3 center;
-    float radius;
-    float speed;
-    float phase;
+    ecs::Vec3 amplitude;
+    ecs::Vec3 frequency;  // radians per second per axis
+    ecs::Vec3 phase;
+};
+
+// Marks the demo camera; `flying` once the user took over in a window.
+struct DemoCamera {
+    bool flying = false;
 };
 
 std::filesystem::path sharedAssets() {
@@ -36,6 +45,29 @@ content::Material material(std::array<float, 3> color, float metallic, float rou
     m.baseColorFactor = {color[0], color[1], color[2], 1.0f};
     m.metallicFactor = metallic;
     m.roughnessFactor = roughness;
+    return m;
+}
+
+content::Material emissive(std::array<float, 3> radiance) {
+    content::Material m = material({0.0f, 0.0f, 0.0f}, 0.0f, 1.0f);
+    m.shadingModel = content::ShadingModel::Unlit;
+    m.emissiveFactor = radiance;
+    return m;
+}
+
+content::Material toon(std::array<float, 3> diffuse) {
+    content::Material m = material({0.0f, 0.0f, 0.0f}, 0.0f, 0.3f);
+    m.shadingModel = content::ShadingModel::Legacy;
+    m.diffuseColor = diffuse;
+    m.specularColor = {0.7f, 0.7f, 0.7f};
+    return m;
+}
+
+content::Material subsurface(std::array<float, 3> color, std::array<float, 3> scatter) {
+    content::Material m = material(color, 0.0f, 0.45f);
+    m.shadingModel = content::ShadingModel::Subsurface;
+    m.subsurfaceColor = scatter;
+    m.subsurfaceOpacity = 0.15f;
     return m;
 }
 
@@ -69,117 +101,291 @@ content::Light pointLight(std::array<float, 3> color, float lumens, float radius
     return l;
 }
 
+// Saturated colours around the hue circle, hue in [0, 1).
+std::array<float, 3> hueColor(float hue) {
+    std::array<float, 3> c;
+    for (int i = 0; i < 3; ++i) {
+        float h = std::fmod(hue + float(i) / 3.0f, 1.0f);
+        c[size_t(i)] = std::clamp(std::fabs(h * 6.0f - 3.0f) - 1.0f, 0.0f, 1.0f);
+    }
+    return {std::max(c[0], 0.05f), std::max(c[1], 0.05f), std::max(c[2], 0.05f)};
+}
+
+// Deterministic pseudo-random numbers in [0, 1) (the level is the same on every machine).
+float hash01(uint32_t n) {
+    n = (n ^ 61u) ^ (n >> 16);
+    n *= 9u;
+    n ^= n >> 4;
+    n *= 0x27d4eb2du;
+    n ^= n >> 15;
+    return float(n & 0xffffffu) / float(0x1000000u);
+}
+
+// Hall: x in [-6.5, 6.5], z in [-9.5, 8], colonnades at x = +-4, open roof between ribs.
+constexpr float kColonnadeX = 4.0f;
+constexpr float kPillarHeight = 4.4f;
+constexpr int kPillarsPerRow = 6;
+constexpr float kFirstPillarZ = -8.0f;
+constexpr float kPillarSpacing = 2.8f;
+
 }  // namespace
+
+const CameraPath& demoCameraPath() {
+    // A tour: the entrance, the toon figures, the helmet, the sphere grid and neon, the
+    // back-lit panels, and a high view back over the hall.
+    static const CameraPath path(
+        {
+            {{0.0f, 2.2f, 9.0f}, {0.0f, 1.6f, -3.0f}},
+            {{-3.0f, 1.5f, 3.2f}, {-2.3f, 1.0f, 0.0f}},
+            {{-1.4f, 1.9f, -0.6f}, {0.0f, 1.5f, -3.0f}},
+            {{1.6f, 2.8f, -5.0f}, {0.0f, 3.0f, -9.2f}},
+            {{3.6f, 1.5f, 3.4f}, {2.2f, 1.0f, -0.3f}},
+            {{2.5f, 4.2f, 6.5f}, {0.0f, 1.0f, -4.0f}},
+        },
+        4.0f);
+    return path;
+}
 
 void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     ecs::Registry& registry = world.registry;
+
+    // The sphere grid goes in first: its bounds (alone in the world) size its placement.
+    const std::filesystem::path grid =
+        sharedAssets() / "models/MetalRoughSpheresNoTextures/MetalRoughSpheresNoTextures.glb";
+    ecs::Entity gridRoot = place(registry, "sphere grid", {});
+    if (world.loadGltf(grid, diagnostics, gridRoot)) {
+        SceneBounds b = world.bounds();
+        if (!b.empty) {
+            // Stand the grid's larger side up to 3 m wide against the back wall, centred.
+            float width = std::max(b.max[0] - b.min[0], 1e-6f);
+            float scale = 3.0f / width;
+            ecs::Vec3 center = {0.5f * (b.min[0] + b.max[0]), 0.5f * (b.min[1] + b.max[1]),
+                                b.max[2]};
+            auto& local = registry.get<ecs::LocalTransform>(gridRoot);
+            local.scale = {scale, scale, scale};
+            local.position = ecs::Vec3{0.0f, 3.0f, -9.0f} - center * scale;
+            registry.markChanged<ecs::LocalTransform>(gridRoot);
+        }
+    }
+
     auto meshes = std::make_unique<DemoMeshes>();
     const int32_t floor =
-        meshes->add(content::makePlane(8.0f, 8), material({0.5f, 0.5f, 0.52f}, 0.0f, 0.6f));
-    const int32_t wall = meshes->add(content::makeBox({8.0f, 2.5f, 0.2f}),
-                                     material({0.7f, 0.66f, 0.6f}, 0.0f, 0.9f));
-    const int32_t pillar = meshes->add(content::makeBox({0.25f, 2.0f, 0.25f}),
-                                       material({0.8f, 0.78f, 0.74f}, 0.0f, 0.5f));
+        meshes->add(content::makePlane(12.0f, 12), material({0.16f, 0.15f, 0.14f}, 0.0f, 0.55f));
+    const int32_t runner = meshes->add(content::makeBox({1.0f, 0.01f, 8.0f}),
+                                       material({0.75f, 0.75f, 0.78f}, 1.0f, 0.12f));
+    const content::Material stone = material({0.72f, 0.68f, 0.62f}, 0.0f, 0.8f);
+    const int32_t pillar = meshes->add(content::makeBox({0.28f, kPillarHeight * 0.5f, 0.28f}),
+                                       material({0.8f, 0.78f, 0.74f}, 0.0f, 0.45f));
+    const int32_t plinthBlock = meshes->add(content::makeBox({0.45f, 0.12f, 0.45f}), stone);
+    const int32_t architrave = meshes->add(content::makeBox({0.45f, 0.25f, 8.6f}), stone);
+    const int32_t rib = meshes->add(content::makeBox({4.45f, 0.12f, 0.15f}),
+                                    material({0.35f, 0.22f, 0.12f}, 0.0f, 0.7f));
+    const int32_t backWall = meshes->add(content::makeBox({6.5f, 3.2f, 0.25f}),
+                                         material({0.45f, 0.12f, 0.1f}, 0.0f, 0.9f));
+    const int32_t sideWall = meshes->add(content::makeBox({0.25f, 2.6f, 9.0f}), stone);
+    const int32_t pedestal = meshes->add(content::makeBox({0.5f, 0.5f, 0.5f}),
+                                         material({0.9f, 0.9f, 0.88f}, 0.0f, 0.25f));
+    const int32_t gold = meshes->add(content::makeBox({0.55f, 0.04f, 0.55f}),
+                                     material({1.0f, 0.77f, 0.34f}, 1.0f, 0.3f));
     std::vector<int32_t> spheres;
-    for (int i = 0; i < 5; ++i) {
-        float roughness = 0.1f + 0.2f * float(i);
-        spheres.push_back(meshes->add(content::makeSphere(0.3f),
-                                      material({1.0f, 0.77f, 0.34f}, 1.0f, roughness)));
+    for (int i = 0; i < 6; ++i) {
+        float roughness = 0.05f + 0.18f * float(i);
+        spheres.push_back(meshes->add(content::makeSphere(0.28f),
+                                      material({0.95f, 0.64f, 0.54f}, 1.0f, roughness)));
         spheres.push_back(
-            meshes->add(content::makeSphere(0.3f), material({0.8f, 0.1f, 0.1f}, 0.0f, roughness)));
+            meshes->add(content::makeSphere(0.28f), material({0.1f, 0.3f, 0.8f}, 0.0f, roughness)));
     }
-    content::Material translucent = material({0.9f, 0.85f, 0.8f}, 0.0f, 0.5f);
-    translucent.shadingModel = content::ShadingModel::Subsurface;
-    translucent.subsurfaceColor = {1.0f, 0.3f, 0.15f};
-    translucent.subsurfaceOpacity = 0.2f;
-    const int32_t leaf = meshes->add(content::makeBox({0.6f, 0.8f, 0.02f}), translucent);
-    content::Material toon = material({0.0f, 0.0f, 0.0f}, 0.0f, 0.35f);
-    toon.shadingModel = content::ShadingModel::Legacy;
-    toon.diffuseColor = {0.15f, 0.45f, 0.9f};
-    toon.specularColor = {0.6f, 0.6f, 0.6f};
-    const int32_t toonSphere = meshes->add(content::makeSphere(0.45f), toon);
-    content::Material neon = material({0.0f, 0.0f, 0.0f}, 0.0f, 1.0f);
-    neon.shadingModel = content::ShadingModel::Unlit;
-    neon.emissiveFactor = {40.0f, 4.0f, 30.0f};
-    const int32_t neonTube = meshes->add(content::makeBox({0.6f, 0.03f, 0.03f}), neon);
+    const int32_t panelAmber = meshes->add(content::makeBox({0.35f, 0.6f, 0.015f}),
+                                           subsurface({0.9f, 0.75f, 0.5f}, {1.0f, 0.35f, 0.05f}));
+    const int32_t panelJade = meshes->add(content::makeBox({0.35f, 0.6f, 0.015f}),
+                                          subsurface({0.6f, 0.85f, 0.6f}, {0.1f, 0.9f, 0.3f}));
+    const int32_t waxSphere = meshes->add(content::makeSphere(0.3f),
+                                          subsurface({0.95f, 0.9f, 0.85f}, {1.0f, 0.25f, 0.2f}));
+    const int32_t toonBody = meshes->add(content::makeSphere(0.42f), toon({0.95f, 0.95f, 1.0f}));
+    const int32_t toonHead = meshes->add(content::makeSphere(0.28f), toon({0.95f, 0.95f, 1.0f}));
+    const int32_t toonHat =
+        meshes->add(content::makeBox({0.18f, 0.16f, 0.18f}), toon({0.1f, 0.1f, 0.12f}));
+    const int32_t toonBall = meshes->add(content::makeSphere(0.3f), toon({0.15f, 0.45f, 0.9f}));
+    const int32_t neonMagenta =
+        meshes->add(content::makeBox({1.5f, 0.03f, 0.03f}), emissive({60.0f, 4.0f, 40.0f}));
+    const int32_t neonCyan =
+        meshes->add(content::makeBox({0.8f, 0.03f, 0.03f}), emissive({4.0f, 40.0f, 60.0f}));
+    const int32_t bulbGlass =
+        meshes->add(content::makeSphere(0.08f, 24, 12), emissive({2000.0f, 1500.0f, 900.0f}));
+    const int32_t cord = meshes->add(content::makeBox({0.008f, 0.6f, 0.008f}),
+                                     material({0.05f, 0.05f, 0.05f}, 0.0f, 0.6f));
 
     const content::Model& model = world.adoptModel(
         std::unique_ptr<content::Model>(new content::Model(std::move(meshes->model))));
     auto draw = [&](ecs::Entity e, int32_t mesh) {
         registry.emplace<content::MeshInstance>(e, content::MeshInstance{&model, mesh});
+        return e;
     };
 
-    draw(place(registry, "floor", {0.0f, 0.0f, 0.0f}), floor);
-    draw(place(registry, "back wall", {0.0f, 2.5f, -4.0f}), wall);
-    for (int i = 0; i < 4; ++i) {
-        draw(place(registry, "pillar", {-4.5f + 3.0f * float(i), 2.0f, -2.8f}), pillar);
+    // Architecture.
+    draw(place(registry, "floor", {0.0f, 0.0f, -1.0f}), floor);
+    draw(place(registry, "runner", {0.0f, 0.01f, -0.5f}), runner);
+    draw(place(registry, "back wall", {0.0f, 3.2f, -9.75f}), backWall);
+    for (float side : {-1.0f, 1.0f}) {
+        draw(place(registry, "side wall", {side * 6.75f, 2.6f, -1.0f}), sideWall);
+        for (int i = 0; i < kPillarsPerRow; ++i) {
+            float z = kFirstPillarZ + kPillarSpacing * float(i);
+            float x = side * kColonnadeX;
+            draw(place(registry, "pillar", {x, kPillarHeight * 0.5f, z}), pillar);
+            draw(place(registry, "pillar base", {x, 0.12f, z}), plinthBlock);
+            draw(place(registry, "pillar capital", {x, kPillarHeight + 0.12f, z}), plinthBlock);
+        }
+        draw(place(registry, "architrave", {side * kColonnadeX, kPillarHeight + 0.49f, -1.0f}),
+             architrave);
     }
-    for (size_t i = 0; i < spheres.size(); ++i) {
-        float x = -2.4f + 1.2f * float(i / 2);
-        float z = i % 2 ? 2.2f : 1.4f;
-        draw(place(registry, "sphere", {x, 0.3f, z}), spheres[i]);
+    for (int i = 0; i < kPillarsPerRow; ++i) {
+        draw(place(registry, "roof rib",
+                   {0.0f, kPillarHeight + 0.86f, kFirstPillarZ + kPillarSpacing * float(i)}),
+             rib);
     }
-    draw(place(registry, "translucent panel", {2.9f, 0.8f, -0.6f},
-               ecs::Quat::fromAxisAngle({0.0f, 1.0f, 0.0f}, -0.5f)),
-         leaf);
-    draw(place(registry, "toon sphere", {-3.2f, 0.45f, -0.4f}), toonSphere);
 
+    // The helmet on a pedestal in the middle of the hall.
+    draw(place(registry, "helmet pedestal", {0.0f, 0.5f, -3.0f}), pedestal);
+    draw(place(registry, "helmet pedestal top", {0.0f, 1.02f, -3.0f}), gold);
     const std::filesystem::path helmet = sharedAssets() / "models/DamagedHelmet/DamagedHelmet.glb";
-    // The helmet stands on an invisible plinth in the middle of the room.
-    ecs::Entity plinth =
-        place(registry, "helmet plinth", {0.0f, 1.1f, -0.6f},
-              ecs::Quat::fromAxisAngle({0.0f, 1.0f, 0.0f}, 0.35f), {0.9f, 0.9f, 0.9f});
-    world.loadGltf(helmet, diagnostics, plinth);
+    ecs::Entity helmetRoot =
+        place(registry, "helmet", {0.0f, 1.65f, -3.0f},
+              ecs::Quat::fromAxisAngle({0.0f, 1.0f, 0.0f}, 0.35f), {0.6f, 0.6f, 0.6f});
+    world.loadGltf(helmet, diagnostics, helmetRoot);
 
-    // Coloured point lights circling the room, a warm lamp bulb (sphere light) and a neon tube.
-    const std::array<std::array<float, 3>, 6> colors = {{{1.0f, 0.3f, 0.2f},
-                                                         {0.2f, 1.0f, 0.4f},
-                                                         {0.3f, 0.4f, 1.0f},
-                                                         {1.0f, 0.8f, 0.2f},
-                                                         {0.9f, 0.3f, 1.0f},
-                                                         {0.2f, 0.9f, 1.0f}}};
-    for (int i = 0; i < 48; ++i) {
-        float t = float(i) / 48.0f;
-        ecs::Entity e = place(registry, "orbiting light", {});
-        registry.emplace<content::Light>(e, pointLight(colors[i % colors.size()], 250.0f, 3.5f));
-        registry.emplace<OrbitingLight>(
-            e, OrbitingLight{{0.0f, 0.25f + 1.5f * float(i % 4) / 3.0f, 0.0f},
-                             1.5f + 3.5f * t,
-                             0.4f + 0.5f * float(i % 3) / 2.0f,
-                             t * 2.0f * std::numbers::pi_v<float> * 5.0f});
+    // Metal (copper) and dielectric (blue) spheres, roughness rising to the right.
+    for (size_t i = 0; i < spheres.size(); ++i) {
+        float x = -2.5f + 1.0f * float(i / 2);
+        float z = i % 2 ? 4.4f : 3.6f;
+        draw(place(registry, "sphere", {x, 0.28f, z}), spheres[i]);
     }
-    content::Light bulb = pointLight({1.0f, 0.78f, 0.55f}, 1600.0f, 9.0f);
+
+    // Toon figures (Legacy diffuse/specular): a snowman and a ball, left of the helmet.
+    draw(place(registry, "toon body", {-2.3f, 0.42f, 0.0f}), toonBody);
+    draw(place(registry, "toon head", {-2.3f, 1.05f, 0.0f}), toonHead);
+    draw(place(registry, "toon hat", {-2.3f, 1.45f, 0.0f}), toonHat);
+    draw(place(registry, "toon ball", {-1.6f, 0.3f, 0.7f}), toonBall);
+
+    // Subsurface panels and a wax sphere, lit from behind (the side away from the path).
+    const float panelYaw = -0.4f;
+    for (int i = 0; i < 3; ++i) {
+        ecs::Quat yaw = ecs::Quat::fromAxisAngle({0.0f, 1.0f, 0.0f}, panelYaw);
+        ecs::Vec3 offset = ecs::rotate(yaw, {-0.8f + 0.8f * float(i), 0.0f, 0.0f});
+        draw(place(registry, "translucent panel", ecs::Vec3{2.4f, 1.0f, 0.0f} + offset, yaw),
+             i == 1 ? panelJade : panelAmber);
+    }
+    draw(place(registry, "wax sphere", {2.9f, 0.3f, 1.1f}), waxSphere);
+    for (int i = 0; i < 2; ++i) {
+        registry.emplace<content::Light>(
+            place(registry, "panel backlight", {1.8f + 1.2f * float(i), 1.1f, -1.3f}),
+            pointLight({1.0f, 0.85f, 0.6f}, 700.0f, 3.5f));
+    }
+
+    // Lamp bulb: a sphere light inside an emissive glass, hanging from a rib on a cord.
+    content::Light bulb = pointLight({1.0f, 0.78f, 0.55f}, 1800.0f, 9.0f);
     bulb.sourceRadius = 0.08f;
-    registry.emplace<content::Light>(place(registry, "lamp bulb", {-1.5f, 2.6f, 0.8f}), bulb);
-    content::Light tube = pointLight({1.0f, 0.1f, 0.75f}, 1200.0f, 6.0f);
-    tube.sourceLength = 1.2f;
-    tube.sourceRadius = 0.03f;
-    ecs::Entity neonEntity = place(registry, "neon tube", {1.8f, 2.2f, -3.7f});
-    registry.emplace<content::Light>(neonEntity, tube);
-    draw(neonEntity, neonTube);
-    // Back-light for the translucent panel: the subsurface model shows light through it.
-    registry.emplace<content::Light>(place(registry, "panel backlight", {3.6f, 1.0f, -1.5f}),
-                                     pointLight({1.0f, 0.9f, 0.7f}, 900.0f, 4.0f));
+    ecs::Entity bulbEntity = place(registry, "lamp bulb", {-2.0f, 3.4f, -5.2f});
+    registry.emplace<content::Light>(bulbEntity, bulb);
+    draw(bulbEntity, bulbGlass);
+    draw(place(registry, "lamp cord", {-2.0f, 4.08f, -5.2f}), cord);
+
+    // Neon: a magenta tube across the back wall, cyan uprights on the side walls.
+    content::Light magenta = pointLight({1.0f, 0.1f, 0.75f}, 2500.0f, 7.0f);
+    magenta.sourceLength = 3.0f;
+    magenta.sourceRadius = 0.03f;
+    ecs::Entity backNeon = place(registry, "neon tube", {0.0f, 5.2f, -9.4f});
+    registry.emplace<content::Light>(backNeon, magenta);
+    draw(backNeon, neonMagenta);
+    content::Light cyan = pointLight({0.1f, 0.7f, 1.0f}, 900.0f, 5.0f);
+    cyan.sourceLength = 1.6f;
+    cyan.sourceRadius = 0.03f;
+    for (float side : {-1.0f, 1.0f}) {
+        for (int i = 0; i < 3; ++i) {
+            ecs::Entity e =
+                place(registry, "neon upright", {side * 6.45f, 2.2f, -7.0f + 5.0f * float(i)},
+                      ecs::Quat::fromAxisAngle({0.0f, 0.0f, 1.0f}, 0.5f * kPi));
+            registry.emplace<content::Light>(e, cyan);
+            draw(e, neonCyan);
+        }
+    }
+
+    // Hundreds of coloured lights drifting through the hall; each has its own Lissajous
+    // figure, so the pattern never visibly repeats within the tour.
+    for (uint32_t i = 0; i < kDemoAnimatedLights; ++i) {
+        const float r0 = hash01(i * 7u + 1u), r1 = hash01(i * 7u + 2u), r2 = hash01(i * 7u + 3u),
+                    r3 = hash01(i * 7u + 4u), r4 = hash01(i * 7u + 5u), r5 = hash01(i * 7u + 6u);
+        ecs::Entity e = place(registry, "drifting light", {});
+        registry.emplace<content::Light>(
+            e, pointLight(hueColor(float(i) / float(kDemoAnimatedLights)), 90.0f + 90.0f * r0,
+                          1.6f + 1.0f * r1));
+        DriftingLight drift;
+        drift.center = {-5.0f + 10.0f * r2, 0.4f + 3.0f * r3, -8.5f + 15.0f * r4};
+        drift.amplitude = {0.8f + 1.2f * r5, 0.2f + 0.5f * r0, 0.8f + 1.2f * r1};
+        drift.frequency = {0.15f + 0.35f * r3, 0.3f + 0.4f * r4, 0.15f + 0.35f * r5};
+        drift.phase = {2.0f * kPi * r1, 2.0f * kPi * r2, 2.0f * kPi * r0};
+        registry.emplace<DriftingLight>(e, drift);
+    }
+
+    // The sky (the renderer's image-based lighting reads it; the background stays a dim night
+    // until then).
+    ecs::Entity sky = place(registry, "sky", {});
+    registry.emplace<content::Sky>(
+        sky,
+        content::Sky{(sharedAssets() / "env/qwantani_afternoon_puresky_1k.exr").string(), 1.0f});
 
     content::Camera camera;
     camera.exposureMode = content::ExposureMode::Manual;
     camera.manualEv100 = 4.5f;
     camera.verticalFov = 0.95f;
-    ecs::Entity cam = place(registry, "camera", {0.0f, 2.0f, 6.2f},
-                            ecs::Quat::fromAxisAngle({1.0f, 0.0f, 0.0f}, -0.2f));
+    CameraPose start = demoCameraPath().pose(0.0);
+    ecs::Entity cam = place(registry, "camera", start.position, start.rotation);
     registry.emplace<content::Camera>(cam, camera);
-    animateDemoScene(world, 0.0);
+    registry.emplace<DemoCamera>(cam);
+    animateDemoLights(world, 0.0);
 }
 
-void animateDemoScene(SceneWorld& world, double seconds) {
-    world.registry.view<ecs::LocalTransform, const OrbitingLight>().each(
-        [&](ecs::Entity e, ecs::LocalTransform& local, const OrbitingLight& orbit) {
-            float angle = orbit.phase + orbit.speed * float(seconds);
-            local.position = orbit.center + ecs::Vec3{std::cos(angle) * orbit.radius, 0.0f,
-                                                      std::sin(angle) * orbit.radius};
+void animateDemoLights(SceneWorld& world, double seconds) {
+    world.registry.view<ecs::LocalTransform, const DriftingLight>().each(
+        [&](ecs::Entity e, ecs::LocalTransform& local, const DriftingLight& d) {
+            const float t = float(seconds);
+            local.position =
+                d.center + ecs::Vec3{d.amplitude.x * std::sin(d.frequency.x * t + d.phase.x),
+                                     d.amplitude.y * std::sin(d.frequency.y * t + d.phase.y),
+                                     d.amplitude.z * std::sin(d.frequency.z * t + d.phase.z)};
+            local.position.y = std::max(local.position.y, 0.15f);
             world.registry.markChanged<ecs::LocalTransform>(e);
         });
-    world.updateTransforms();
+}
+
+void updateDemoCamera(SceneWorld& world, const FrameContext& frame) {
+    const InputState& in = frame.keys();
+    ecs::Entity takeOver = ecs::kNullEntity;
+    FlyCamera fly;
+    world.registry.view<ecs::LocalTransform, DemoCamera>().each(
+        [&](ecs::Entity e, ecs::LocalTransform& local, DemoCamera& demo) {
+            if (!frame.headless && !demo.flying) {
+                const bool touched = in.down(Key::W) || in.down(Key::A) || in.down(Key::S) ||
+                                     in.down(Key::D) || in.down(Key::Q) || in.down(Key::E) ||
+                                     in.down(MouseButton::Left) || in.down(MouseButton::Right);
+                if (touched) {
+                    // Take over from the path where it is: the fly camera starts from the
+                    // current view direction.
+                    demo.flying = true;
+                    ecs::Vec3 forward = ecs::rotate(local.rotation, {0.0f, 0.0f, -1.0f});
+                    fly.yaw = std::atan2(-forward.x, -forward.z);
+                    fly.pitch = std::asin(std::clamp(forward.y, -1.0f, 1.0f));
+                    takeOver = e;  // the component is added after the view is done
+                    return;
+                }
+            }
+            if (demo.flying) return;  // updateFlyCameras moves it
+            CameraPose pose = demoCameraPath().pose(frame.seconds);
+            local.position = pose.position;
+            local.rotation = pose.rotation;
+            world.registry.markChanged<ecs::LocalTransform>(e);
+        });
+    if (takeOver != ecs::kNullEntity) world.registry.emplace<FlyCamera>(takeOver, fly);
+    updateFlyCameras(world, frame);
 }
 
 }  // namespace candela::runtime

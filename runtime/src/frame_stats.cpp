@@ -25,6 +25,11 @@ std::vector<double> collect(const std::vector<render::RendererStats>& frames, F 
 
 }  // namespace
 
+double cullingEfficiency(const render::RendererStats& frame) {
+    return frame.lightEvaluations == 0 ? 0.0
+                                       : double(frame.litPairs) / double(frame.lightEvaluations);
+}
+
 double FrameStats::frameMsMedian() const {
     return median(frameMs);
 }
@@ -52,6 +57,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;
+    json["culling_efficiency"] = cullingEfficiency(last);
     std::ofstream out(path);
     if (!out) return path.string() + ": cannot open for writing";
     out << json.dump(2) << '\n';

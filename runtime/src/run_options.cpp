@@ -23,6 +23,12 @@ bool parseSize(const std::string& text, uint32_t& width, uint32_t& height) {
            width > 0 && height > 0 && width <= kMaxDimension && height <= kMaxDimension;
 }
 
+bool parseSeconds(const std::string& text, double& value) {
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    return ec == std::errc() && ptr == end && value >= 0.001 && value <= 60.0;
+}
+
 render::ValidationMode validationFromEnvironment() {
     const char* value = std::getenv("CANDELA_VALIDATION");
     if (!value) return render::ValidationMode::IfPresent;
@@ -38,7 +44,8 @@ std::string runUsage() {
     return "usage: candela run <scene.json|scene.gltf|scene.glb|builtin:triangle> [--headless]\n"
            "                   [--size WxH] [--frames N] [--capture FILE.exr|FILE.png]...\n"
            "                   [--stats FILE.json] [--lights clustered|brute-force]\n"
-           "                   [--validation off|on|require]\n"
+           "                   [--validation off|on|require] [--step SECONDS]\n"
+           "                   [--capture-each DIR] [--summary FILE.md] [--input SCRIPT]\n"
            "       candela demo [same options]\n";
 }
 
@@ -96,6 +103,24 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
                 options.validation = render::ValidationMode::Required;
             else
                 return fail("--validation needs off, on or require, got '" + v + "'");
+        } else if (arg == "--step") {
+            double step = 0.0;
+            if (!value(v) || !parseSeconds(v, step)) {
+                return fail(
+                    "--step needs seconds per frame, a number between 0.001 and 60, "
+                    "got '" +
+                    v + "'");
+            }
+            options.stepSeconds = step;
+        } else if (arg == "--capture-each") {
+            if (!value(v)) return fail("--capture-each needs a directory");
+            options.captureEach = v;
+        } else if (arg == "--summary") {
+            if (!value(v)) return fail("--summary needs a file name");
+            options.summary = v;
+        } else if (arg == "--input") {
+            if (!value(v)) return fail("--input needs an input script (see input_script.h)");
+            options.inputScript = v;
         } else if (!arg.empty() && arg[0] == '-') {
             return fail("unknown option '" + arg + "'");
         } else if (options.scene.empty()) {

@@ -21,6 +21,10 @@ struct RunOptions {
     std::optional<std::filesystem::path> stats;
     render::ValidationMode validation = render::ValidationMode::IfPresent;
     render::LightCulling lightCulling = render::LightCulling::Clustered;
+    std::optional<double> stepSeconds;                 // --step: scene time per frame (fixed)
+    std::optional<std::filesystem::path> captureEach;  // --capture-each DIR: DIR/frame_NN.png
+    std::optional<std::filesystem::path> summary;      // --summary FILE.md
+    std::optional<std::filesystem::path> inputScript;  // --input SCRIPT: recorded input
 };
 
 struct ParseResult {

@@ -2,12 +2,22 @@
 
 #include <cstdio>
 
-#include "candela/runtime/application.h"
+#include "run_summary.h"
 #include "scene_source.h"
 
 namespace candela::runtime {
 
-int runScene(const RunOptions& options) {
+namespace {
+
+std::filesystem::path eachFramePath(const std::filesystem::path& dir, uint32_t frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%02u.png", frame);
+    return dir / name;
+}
+
+}  // namespace
+
+int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>> layers) {
     std::string error;
     std::optional<LoadedScene> scene = loadScene(options.scene, error);
     if (!scene) {
@@ -19,24 +29,56 @@ int runScene(const RunOptions& options) {
     app.height = options.height;
     app.headless = options.headless;
     app.frames = options.frames;
+    if (options.stepSeconds) app.fixedStepSeconds = *options.stepSeconds;
     for (const std::filesystem::path& capture : options.captures) {
         app.captures.push_back({FrameCapture::kLastFrame, capture});
     }
+    if (options.captureEach) {
+        if (options.frames == 0) {
+            std::fprintf(stderr, "candela: --capture-each needs --frames N\n");
+            return kExitBadArguments;
+        }
+        std::error_code ec;
+        std::filesystem::create_directories(*options.captureEach, ec);
+        if (ec) {
+            std::fprintf(stderr, "candela: %s: cannot create directory: %s\n",
+                         options.captureEach->c_str(), ec.message().c_str());
+            return kExitBadArguments;
+        }
+        for (uint32_t i = 0; i < options.frames; ++i) {
+            app.captures.push_back({i, eachFramePath(*options.captureEach, i)});
+        }
+    }
+    if (options.inputScript) {
+        app.inputScript = InputScript::load(*options.inputScript, error);
+        if (!app.inputScript) {
+            std::fprintf(stderr, "candela: %s\n", error.c_str());
+            return kExitBadArguments;
+        }
+    }
     app.stats = options.stats;
-    app.countLightPairs = options.stats.has_value();
+    app.countLightPairs = options.stats.has_value() || options.summary.has_value();
     app.validation = options.validation;
     app.lightCulling = options.lightCulling;
 
+    const double step = app.fixedStepSeconds;
     Application application(std::move(app));
     application.setWorld(std::move(scene->world));
     application.frameInputs() = scene->frame;
-    if (scene->animate) {
-        application.addSystem(
-            "animate", [animate = scene->animate](SceneWorld& world, const FrameContext& frame) {
-                animate(world, frame.seconds);
-            });
+    for (auto& [name, system] : scene->systems)
+        application.addSystem(name, std::move(system));
+    for (auto& layer : layers)
+        application.addLayer(std::move(layer));
+    int exitCode = application.run();
+    if (options.summary && application.framesRendered() > 0) {
+        if (std::string e =
+                writeRunSummary(*options.summary, scene->name, step, application.stats());
+            !e.empty()) {
+            std::fprintf(stderr, "candela: %s\n", e.c_str());
+            if (exitCode == kExitOk) exitCode = kExitFailure;
+        }
     }
-    return application.run();
+    return exitCode;
 }
 
 }  // namespace candela::runtime

@@ -43,7 +43,10 @@ std::optional<LoadedScene> loadScene(const std::string& scene, std::string& erro
         loaded.world = std::make_unique<SceneWorld>();
         content::Diagnostics diagnostics;
         buildDemoScene(*loaded.world, diagnostics);
-        loaded.animate = animateDemoScene;
+        loaded.systems.emplace_back("demo lights", [](SceneWorld& world, const FrameContext& f) {
+            animateDemoLights(world, f.seconds);
+        });
+        loaded.systems.emplace_back("demo camera", updateDemoCamera);
         printDiagnostics(diagnostics);
         loaded.frame.clearRadiance = kDemoBackgroundRadiance;
         return loaded;

@@ -5,7 +5,11 @@
 #include <optional>
 #include <string>
 
+#include <utility>
+#include <vector>
+
 #include "candela/render/frame_inputs.h"
+#include "candela/runtime/application.h"
 #include "candela/runtime/scene_world.h"
 
 namespace candela::runtime {
@@ -14,8 +18,8 @@ struct LoadedScene {
     std::string name;
     render::FrameInputs frame;          // background; the test triangle for builtin:triangle
     std::unique_ptr<SceneWorld> world;  // entities to draw; null for builtin:triangle
-    // Advances the scene's animation to a time in seconds (empty for static scenes).
-    std::function<void(SceneWorld&, double)> animate;
+    // The scene's own systems (animation, camera), run every frame in this order.
+    std::vector<std::pair<std::string, System>> systems;
 };
 
 // Returns the scene, or nullopt with `error` naming the scene and the problem. Problems that

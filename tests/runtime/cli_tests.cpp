@@ -131,6 +131,67 @@ TEST(Cli, DemoRendersHeadlessWithEveryFeature) {
     }
 }
 
+// The demo's headless camera follows its path by frame index: two runs write the same bytes
+// for every frame, and the frames along the path differ from each other.
+TEST(Cli, DemoCameraPathIsDeterministic) {
+    auto dir = tempDir();
+    const std::string args = "demo --headless --size 96x54 --frames 3 --step 4 --capture-each ";
+    RunResult a = runCandela(args + (dir / "path_a").string());
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    RunResult b = runCandela(args + (dir / "path_b").string() + " --summary " +
+                             (dir / "path_b" / "summary.md").string());
+    ASSERT_EQ(b.exitCode, 0) << b.output;
+    std::vector<std::string> frames;
+    for (const char* name : {"frame_00.png", "frame_01.png", "frame_02.png"}) {
+        std::string bytes = readBytes(dir / "path_a" / name);
+        ASSERT_FALSE(bytes.empty()) << name;
+        EXPECT_EQ(bytes, readBytes(dir / "path_b" / name)) << name;
+        frames.push_back(bytes);
+    }
+    EXPECT_NE(frames[0], frames[1]);
+    EXPECT_NE(frames[1], frames[2]);
+    std::string summary = readBytes(dir / "path_b" / "summary.md");
+    EXPECT_NE(summary.find("| 2 | 8.00 |"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("culling efficiency"), std::string::npos) << summary;
+}
+
+TEST(Cli, DemoHasHundredsOfLightsAndCullsThem) {
+    auto dir = tempDir();
+    RunResult r = runCandela("demo --headless --size 96x54 --stats " + (dir / "d.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    nlohmann::json stats = nlohmann::json::parse(readBytes(dir / "d.json"));
+    EXPECT_GE(stats["lights"].get<int>(), 256);
+    EXPECT_GT(stats["clusters_occupied"].get<int>(), 0);
+    EXPECT_LT(stats["clusters_occupied"].get<int>(), stats["clusters"].get<int>());
+    double efficiency = stats["culling_efficiency"].get<double>();
+    EXPECT_GT(efficiency, 0.0);
+    EXPECT_LE(efficiency, 1.0);
+}
+
+TEST(Cli, BadInputScriptIsRejectedWithFileAndLine) {
+    auto script = tempDir() / "bad.input";
+    std::ofstream(script) << "0 down W\n5 press W\n";
+    RunResult r = runCandela(kTriangle + "--input " + script.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find(script.string() + ":2: unknown action 'press'"), std::string::npos)
+        << r.output;
+    r = runCandela(kTriangle + "--input " + (tempDir() / "missing.input").string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("cannot open input script"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BadStepAndCaptureEachAreRejected) {
+    RunResult r = runCandela(kTriangle + "--step 0");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--step needs seconds"), std::string::npos) << r.output;
+    r = runCandela(kTriangle + "--step nan");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    r = runCandela("run builtin:triangle --size 64x48 --capture-each " + tempDir().string());
+    // Headless without a display still needs a frame count to know how many files to write.
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--capture-each needs --frames"), std::string::npos) << r.output;
+}
+
 // The engine scene files in tests/scenes load (glTF references, lights, camera, material
 // overrides) and render clean; the overrides switch on their shading models.
 TEST(Cli, EngineSceneFilesRender) {

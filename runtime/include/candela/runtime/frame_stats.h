@@ -22,6 +22,10 @@ struct FrameStats {
     double frameMsMedian() const;
 };
 
+// Lit light-pixel pairs over evaluated ones (1.0: every light the shader looked at reached
+// the pixel); 0 when the renderer did not count pairs.
+double cullingEfficiency(const render::RendererStats& frame);
+
 // Returns an empty string on success, else a message naming the file.
 std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& stats);
 
