@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <optional>
 
@@ -10,6 +11,8 @@
 #include "app/editor_ui.h"
 #include "app/editor_window.h"
 #include "app/scene_opening.h"
+#include "candela/content/components/camera.h"
+#include "candela/render/exposure.h"
 #include "candela/render/frame_capture.h"
 #include "candela/render/frame_submitter.h"
 #include "candela/render/gpu_context.h"
@@ -80,6 +83,20 @@ bool runScriptStep(EditorScript& script, Session& session, render::GpuContext& c
         requests.quit = true;
     }
     return true;
+}
+
+// What the viewport shows when the scene has no camera: 50 degrees, sunny-16 exposure, from
+// 5 m in front of the origin.
+render::CameraView defaultCamera(float aspect) {
+    const content::Camera camera;
+    render::CameraView view;
+    view.position = glm::vec3(0.0f, 1.0f, 5.0f);
+    view.view = glm::lookAt(view.position, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    view.projection = render::reverseZPerspective(camera.verticalFov, aspect, camera.nearPlane);
+    view.ev100 = render::ev100FromCamera(camera);
+    view.nearPlane = camera.nearPlane;
+    view.farPlane = camera.farPlane;
+    return view;
 }
 
 render::GpuContextOptions gpuOptions(const EditorOptions& options) {
@@ -158,7 +175,6 @@ int runEditor(const EditorOptions& options) {
                                       *session.resources, float(w) / float(h), session.extracted);
                 const runtime::ExtractedFrame& x = session.extracted;
                 inputs.clearRadiance = session.opened.background;
-                inputs.scene.camera = x.camera;
                 inputs.scene.draws = x.draws;
                 inputs.scene.lights = x.lights;
                 inputs.scene.changedLights = x.changedLights;
@@ -168,7 +184,9 @@ int runEditor(const EditorOptions& options) {
                 layer.beginFrame(float(w), float(h),
                                  std::chrono::duration<float>(now - last).count());
                 last = now;
-                drawEditorUi(scene, ui, x.hasCamera ? &x.camera : nullptr, float(w), float(h));
+                inputs.scene.camera = drawEditorUi(
+                    scene, ui, x.hasCamera ? x.camera : defaultCamera(float(w) / float(h)),
+                    x.hasCamera, float(w), float(h));
                 if (ui.saveRequested) {
                     ui.saveRequested = false;
                     const std::string why = scene.save(session.opened.savePath);

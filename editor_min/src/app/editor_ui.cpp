@@ -65,6 +65,13 @@ float menuBar(EditorScene& scene, EditorUiState& state) {
         }
         ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("View")) {
+        if (ImGui::MenuItem("Scene camera", nullptr, !state.camera.detached())) {
+            state.camera.attachToScene();
+        }
+        ImGui::TextDisabled("Hold the right mouse button in the viewport to fly (WASD, Q/E)");
+        ImGui::EndMenu();
+    }
     const std::string title =
         scene.sourcePath().filename().string() + (scene.modified() ? " *" : "");
     ImGui::TextDisabled("%s", title.c_str());
@@ -76,8 +83,12 @@ float menuBar(EditorScene& scene, EditorUiState& state) {
 
 }  // namespace
 
-void drawEditorUi(EditorScene& scene, EditorUiState& state, const render::CameraView* camera,
-                  float width, float height) {
+render::CameraView drawEditorUi(EditorScene& scene, EditorUiState& state,
+                                const render::CameraView& sceneCamera, bool sceneHasCamera,
+                                float width, float height) {
+    // Before the panels: whether the mouse is over one is known from the previous frame.
+    state.camera.update(sceneCamera, sceneHasCamera);
+    const render::CameraView camera = state.camera.view(sceneCamera);
     shortcuts(scene, state);
     const float top = menuBar(scene, state);
     const float hierarchyWidth = std::clamp(width * 0.25f, 160.0f, 320.0f);
@@ -95,9 +106,8 @@ void drawEditorUi(EditorScene& scene, EditorUiState& state, const render::Camera
     if (ImGui::Begin("Inspector", nullptr, flags)) drawInspectorPanel(scene, state.inspector);
     ImGui::End();
 
-    if (camera) {
-        drawLightGizmos(scene, *camera, ImVec2(width, height), ImGui::GetBackgroundDrawList());
-    }
+    drawLightGizmos(scene, camera, ImVec2(width, height), ImGui::GetBackgroundDrawList());
+    return camera;
 }
 
 }  // namespace candela::editor

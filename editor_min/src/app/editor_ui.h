@@ -3,6 +3,7 @@
 // and inspector panels docked left and right, and the light gizmos over the viewport between.
 #include <string>
 
+#include "app/editor_camera.h"
 #include "app/inspector_panel.h"
 #include "candela/render/frame_scene.h"
 
@@ -12,14 +13,17 @@ class EditorScene;
 
 struct EditorUiState {
     InspectorState inspector;
+    EditorCamera camera;
     std::string status;          // last save result, shown in the menu bar
     bool saveRequested = false;  // File > Save or Ctrl+S; the app saves and clears it
     bool quitRequested = false;  // File > Quit
 };
 
-// Builds the UI for one frame (between ImGuiLayer::beginFrame and endFrame). `camera` is the
-// frame's scene camera (null: none, no gizmos).
-void drawEditorUi(EditorScene& scene, EditorUiState& state, const render::CameraView* camera,
-                  float width, float height);
+// Builds the UI for one frame (between ImGuiLayer::beginFrame and endFrame) and moves the
+// viewport camera; returns the camera the frame renders through. `sceneCamera` is the scene's
+// (a default one when the scene has none).
+render::CameraView drawEditorUi(EditorScene& scene, EditorUiState& state,
+                                const render::CameraView& sceneCamera, bool sceneHasCamera,
+                                float width, float height);
 
 }  // namespace candela::editor
