@@ -51,7 +51,7 @@ void entityActions(EditorScene& scene, ecs::Entity e, PendingEdit& pending) {
     if (ImGui::MenuItem("Make root")) pending.command = reparentEntity(scene, e, ecs::kNullEntity);
 }
 
-void drawNode(EditorScene& scene, ecs::Entity e, PendingEdit& pending) {
+void drawNode(EditorScene& scene, ecs::Entity e, PendingEdit& pending, HierarchyLayout* layout) {
     const uint64_t id = scene.idOf(e);
     const std::vector<ecs::Entity> children = scene.childrenInOrder(e);
     ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_DefaultOpen |
@@ -62,6 +62,7 @@ void drawNode(EditorScene& scene, ecs::Entity e, PendingEdit& pending) {
     if (scene.registry().has<content::Light>(e)) label += "  (light)";
     const bool open =
         ImGui::TreeNodeEx(reinterpret_cast<void*>(uintptr_t(id)), flags, "%s", label.c_str());
+    if (layout) (*layout)[id] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
     if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) scene.selectId(id);
     if (ImGui::BeginDragDropSource()) {
         ImGui::SetDragDropPayload(kEntityPayload, &id, sizeof(id));
@@ -83,14 +84,15 @@ void drawNode(EditorScene& scene, ecs::Entity e, PendingEdit& pending) {
     }
     if (open) {
         for (ecs::Entity child : children)
-            drawNode(scene, child, pending);
+            drawNode(scene, child, pending, layout);
         ImGui::TreePop();
     }
 }
 
 }  // namespace
 
-void drawHierarchyPanel(EditorScene& scene) {
+void drawHierarchyPanel(EditorScene& scene, HierarchyLayout* layout) {
+    if (layout) layout->clear();
     PendingEdit pending;
     if (ImGui::Button("Create")) ImGui::OpenPopup("create");
     if (ImGui::BeginPopup("create")) {
@@ -109,7 +111,7 @@ void drawHierarchyPanel(EditorScene& scene) {
     ImGui::Separator();
 
     for (ecs::Entity root : scene.childrenInOrder(ecs::kNullEntity))
-        drawNode(scene, root, pending);
+        drawNode(scene, root, pending, layout);
 
     // The free space below the tree: dropping there makes the entity a root.
     const ImVec2 rest = ImGui::GetContentRegionAvail();

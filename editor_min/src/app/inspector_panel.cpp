@@ -22,6 +22,13 @@ namespace candela::editor {
 
 namespace {
 
+// The layout being recorded by the current drawInspectorPanel call (null: none).
+InspectorLayout* recording = nullptr;
+
+void record(const char* label) {
+    if (recording) (*recording)[label] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+}
+
 // Folds the edits of one widget on one entity into one undo step until it is released.
 uint64_t mergeKey(EditorScene& scene, ecs::Entity e) {
     return (uint64_t(ImGui::GetItemID()) << 32) ^ scene.idOf(e) ^ 1u;
@@ -31,6 +38,7 @@ uint64_t mergeKey(EditorScene& scene, ecs::Entity e) {
 // step when the widget is released.
 template <class T>
 void commit(EditorScene& scene, ecs::Entity e, bool changed, const T& value, const char* label) {
+    record(label);
     if (changed) scene.execute(setComponent(scene, e, value, label), mergeKey(scene, e));
     if (ImGui::IsItemDeactivated()) scene.commands().closeMerge();
 }
@@ -209,6 +217,8 @@ void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
         ImGui::TextDisabled("Nothing selected");
         return;
     }
+    recording = state.layout;
+    if (recording) recording->clear();
     ImGui::PushID(int(scene.idOf(e)));
     ImGui::PushItemWidth(-110.0f);
     drawName(scene, e);
@@ -220,6 +230,7 @@ void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
     if (scene.registry().valid(e)) drawAddComponent(scene, e);
     ImGui::PopItemWidth();
     ImGui::PopID();
+    recording = nullptr;
 }
 
 }  // namespace candela::editor
