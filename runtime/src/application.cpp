@@ -51,6 +51,15 @@ bool displayAvailable() {
 
 }  // namespace
 
+render::ValidationMode validationModeFromEnvironment() {
+    const char* value = std::getenv("CANDELA_VALIDATION");
+    if (!value) return render::ValidationMode::IfPresent;
+    std::string mode = value;
+    if (mode == "require") return render::ValidationMode::Required;
+    if (mode == "off") return render::ValidationMode::Off;
+    return render::ValidationMode::IfPresent;
+}
+
 struct Application::Session {
     std::unique_ptr<render::GpuContext> context;
     std::unique_ptr<render::Renderer> renderer;
@@ -176,6 +185,10 @@ int Application::runSession(bool headless, std::uint32_t frames) {
             if (options_.inputScript) options_.inputScript->apply(i, input_);
             if (input_.closeRequested || quitRequested_) break;
             if (s.window && s.window->shouldClose()) break;
+            if (s.window && !windowTitle_.empty()) {
+                s.window->setTitle(windowTitle_);
+                windowTitle_.clear();
+            }
 
             uint32_t imageIndex = 0;
             if (s.window) {

@@ -1,5 +1,7 @@
 #include "run_options.h"
 
+#include "candela/runtime/application.h"
+
 #include <charconv>
 #include <cstdlib>
 
@@ -29,15 +31,6 @@ bool parseSeconds(const std::string& text, double& value) {
     return ec == std::errc() && ptr == end && value >= 0.001 && value <= 60.0;
 }
 
-render::ValidationMode validationFromEnvironment() {
-    const char* value = std::getenv("CANDELA_VALIDATION");
-    if (!value) return render::ValidationMode::IfPresent;
-    std::string mode = value;
-    if (mode == "require") return render::ValidationMode::Required;
-    if (mode == "off") return render::ValidationMode::Off;
-    return render::ValidationMode::IfPresent;
-}
-
 }  // namespace
 
 std::string runUsage() {
@@ -52,7 +45,7 @@ std::string runUsage() {
 ParseResult parseRunOptions(const std::vector<std::string>& args) {
     ParseResult result;
     RunOptions options;
-    options.validation = validationFromEnvironment();
+    options.validation = validationModeFromEnvironment();
     auto fail = [&](std::string message) {
         result.error = std::move(message);
         return result;

@@ -101,6 +101,8 @@ public:
     void addLayer(std::shared_ptr<FrameLayer> layer);
     // Ends the run after the current frame (e.g. from a system).
     void requestQuit() { quitRequested_ = true; }
+    // The window's title from the next frame on (a HUD line for small games); no-op headless.
+    void setWindowTitle(std::string title) { windowTitle_ = std::move(title); }
 
     // Runs until the frame count, the window closing, a script's quit or requestQuit().
     // Returns an ExitCode (exit_code.h); errors are printed to stderr.
@@ -123,6 +125,10 @@ private:
     InputState input_;
     FrameStats stats_;
     bool quitRequested_ = false;
+    std::string windowTitle_;
 };
+
+// CANDELA_VALIDATION=require|off|on (unset: on, i.e. IfPresent), as every test sets it.
+render::ValidationMode validationModeFromEnvironment();
 
 }  // namespace candela::runtime

@@ -1,0 +1,55 @@
+#pragma once
+// The orb game's state, all of it in components: the ECS holds the game, systems change it.
+#include <cstdint>
+#include <string>
+
+#include "candela/ecs/transform_math.h"
+
+namespace orb {
+
+// The glowing orb the player steers (a sphere light with an emissive sphere).
+struct Orb {
+    float acceleration = 14.0f;  // m/s^2 while a direction key is held
+    float maxSpeed = 5.0f;       // m/s
+    float radius = 0.3f;         // m, for collisions and pickups
+    candela::ecs::Vec3 velocity{};
+    candela::ecs::Vec3 start{};  // where a restart puts it
+};
+
+// A small light to collect.
+struct Pickup {
+    std::int32_t points = 10;
+    bool collected = false;
+    candela::ecs::Vec3 home{};
+    float lumens = 150.0f;  // restored on restart (collected pickups go dark)
+};
+
+// A red sentinel patrolling between two points; touching it loses the game.
+struct Hazard {
+    candela::ecs::Vec3 from{}, to{};
+    float speed = 1.0f;  // m/s along the patrol
+    float radius = 0.3f;
+};
+
+// An axis-aligned block the orb bounces off (from the entity's transform: a unit box scaled).
+struct Wall {
+    candela::ecs::Vec3 min{}, max{};
+};
+
+enum class Status : std::uint8_t { Playing, Won, Lost };
+
+// One per level (on the "rules" entity).
+struct GameState {
+    float timeLimitSeconds = 40.0f;
+    double elapsedSeconds = 0.0;
+    std::int32_t score = 0;
+    std::int32_t collected = 0;
+    std::int32_t total = 0;
+    std::int32_t restarts = 0;
+    Status status = Status::Playing;
+    std::string reason;  // why the game ended ("all sparks collected", "caught", "out of time")
+};
+
+const char* statusName(Status status);
+
+}  // namespace orb

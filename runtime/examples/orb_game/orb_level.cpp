@@ -1,0 +1,162 @@
+#include "orb_level.h"
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "candela/content/components/light.h"
+#include "candela/content/components/mesh_instance.h"
+#include "candela/content/components/scene_components.h"
+#include "candela/content/procedural_mesh.h"
+#include "candela/ecs/transform.h"
+#include "orb_components.h"
+
+namespace orb {
+
+namespace {
+
+using candela::ecs::Entity;
+using candela::ecs::Vec3;
+using nlohmann::json;
+
+candela::content::Material glow(std::array<float, 3> radiance) {
+    candela::content::Material m;
+    m.shadingModel = candela::content::ShadingModel::Unlit;
+    m.baseColorFactor = {0.0f, 0.0f, 0.0f, 1.0f};
+    m.emissiveFactor = radiance;
+    return m;
+}
+
+// One sphere mesh per glow colour, in one model kept alive by the world.
+struct GlowMeshes {
+    std::unique_ptr<candela::content::Model> model = std::make_unique<candela::content::Model>();
+    int32_t add(float radius, std::array<float, 3> radiance) {
+        candela::content::Primitive sphere = candela::content::makeSphere(radius, 32, 16);
+        sphere.material = int32_t(model->materials.size());
+        model->materials.push_back(glow(radiance));
+        candela::content::Mesh mesh;
+        mesh.primitives.push_back(std::move(sphere));
+        model->meshes.push_back(std::move(mesh));
+        return int32_t(model->meshes.size() - 1);
+    }
+};
+
+float number(const json& j, const char* key, float fallback) {
+    auto it = j.find(key);
+    return it != j.end() && it->is_number() ? it->get<float>() : fallback;
+}
+
+bool point(const json& j, const char* key, Vec3& out) {
+    auto it = j.find(key);
+    if (it == j.end() || !it->is_array() || it->size() != 3) return false;
+    for (const json& v : *it)
+        if (!v.is_number()) return false;
+    out = {(*it)[0].get<float>(), (*it)[1].get<float>(), (*it)[2].get<float>()};
+    return true;
+}
+
+}  // namespace
+
+const char* statusName(Status status) {
+    switch (status) {
+        case Status::Playing:
+            return "playing";
+        case Status::Won:
+            return "won";
+        case Status::Lost:
+            return "lost";
+    }
+    return "?";
+}
+
+std::string spawnLevel(candela::runtime::SceneWorld& world, const std::string& levelName) {
+    auto& registry = world.registry;
+    struct Tagged {
+        Entity entity;
+        json data;
+    };
+    std::vector<Tagged> tagged;
+    std::string error;
+    registry.view<const candela::content::GameData>().each(
+        [&](Entity e, const candela::content::GameData& data) {
+            json parsed = json::parse(data.json, nullptr, false);
+            if (parsed.is_discarded() || !parsed.is_object() || !parsed["role"].is_string()) {
+                if (error.empty()) error = levelName + ": gameData without a \"role\" string";
+                return;
+            }
+            tagged.push_back({e, std::move(parsed)});
+        });
+    if (!error.empty()) return error;
+
+    GlowMeshes meshes;
+    const int32_t orbMesh = meshes.add(0.3f, {60.0f, 45.0f, 25.0f});
+    const int32_t hazardMesh = meshes.add(0.3f, {80.0f, 3.0f, 1.0f});
+    auto lightOf = [&](Entity e) { return registry.tryGet<candela::content::Light>(e); };
+
+    int orbs = 0, rules = 0;
+    std::vector<std::pair<Entity, int32_t>> draws;
+    for (Tagged& t : tagged) {
+        const std::string role = t.data["role"].get<std::string>();
+        auto* local = registry.tryGet<candela::ecs::LocalTransform>(t.entity);
+        if (!local && role != "rules") {
+            return levelName + ": the " + role + " entity has no transform";
+        }
+        if (role == "orb") {
+            Orb orb;
+            orb.acceleration = number(t.data, "acceleration", orb.acceleration);
+            orb.maxSpeed = number(t.data, "maxSpeed", orb.maxSpeed);
+            orb.radius = number(t.data, "radius", orb.radius);
+            orb.start = local->position;
+            registry.emplace<Orb>(t.entity, orb);
+            draws.emplace_back(t.entity, orbMesh);
+            ++orbs;
+        } else if (role == "pickup") {
+            Pickup pickup;
+            pickup.points = int32_t(number(t.data, "points", 10.0f));
+            pickup.home = local->position;
+            const candela::content::Light* light = lightOf(t.entity);
+            if (!light) return levelName + ": a pickup needs a light (it is the thing to see)";
+            pickup.lumens = light->lumens;
+            registry.emplace<Pickup>(t.entity, pickup);
+            // Each spark glows in its light's colour.
+            const std::array<float, 3>& c = light->color;
+            draws.emplace_back(t.entity,
+                               meshes.add(0.12f, {c[0] * 40.0f, c[1] * 40.0f, c[2] * 40.0f}));
+        } else if (role == "hazard") {
+            Hazard hazard;
+            if (!point(t.data, "from", hazard.from) || !point(t.data, "to", hazard.to)) {
+                return levelName + ": a hazard needs \"from\" and \"to\" points [x, y, z]";
+            }
+            hazard.speed = number(t.data, "speed", hazard.speed);
+            hazard.radius = number(t.data, "radius", hazard.radius);
+            registry.emplace<Hazard>(t.entity, hazard);
+            draws.emplace_back(t.entity, hazardMesh);
+        } else if (role == "wall") {
+            // The level draws walls with the unit glTF box, so the scale is the size.
+            Vec3 half = local->scale * 0.5f;
+            registry.emplace<Wall>(t.entity, Wall{local->position - half, local->position + half});
+        } else if (role == "rules") {
+            GameState state;
+            state.timeLimitSeconds = number(t.data, "timeLimitSeconds", state.timeLimitSeconds);
+            registry.emplace<GameState>(t.entity, state);
+            ++rules;
+        } else {
+            return levelName + ": unknown gameData role '" + role + "'";
+        }
+    }
+    if (orbs != 1) return levelName + ": needs exactly one orb, found " + std::to_string(orbs);
+    if (rules != 1) {
+        return levelName + ": needs exactly one \"rules\" entity, found " + std::to_string(rules);
+    }
+    const candela::content::Model& model = world.adoptModel(std::move(meshes.model));
+    for (auto [e, mesh] : draws) {
+        registry.emplace<candela::content::MeshInstance>(
+            e, candela::content::MeshInstance{&model, mesh});
+    }
+    int32_t total = 0;
+    registry.view<const Pickup>().each([&](const Pickup&) { ++total; });
+    registry.view<GameState>().each([&](GameState& s) { s.total = total; });
+    return {};
+}
+
+}  // namespace orb

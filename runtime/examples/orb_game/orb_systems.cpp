@@ -1,0 +1,258 @@
+#include "orb_systems.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "candela/content/components/light.h"
+#include "candela/ecs/transform.h"
+#include "orb_components.h"
+
+namespace orb {
+
+namespace {
+
+using candela::ecs::LocalTransform;
+using candela::ecs::Vec3;
+using candela::runtime::FrameContext;
+using candela::runtime::Key;
+using candela::runtime::SceneWorld;
+
+GameState* gameState(SceneWorld& world) {
+    GameState* found = nullptr;
+    world.registry.view<GameState>().each([&](GameState& s) { found = &s; });
+    return found;
+}
+
+// Where a sentinel is after `seconds` of patrol: back and forth between its two points.
+Vec3 patrolPosition(const Hazard& h, double seconds) {
+    const float length = candela::ecs::length(h.to - h.from);
+    if (length <= 0.0f) return h.from;
+    const double travelled = std::fmod(seconds * h.speed, 2.0 * length);
+    const float along = float(travelled <= length ? travelled : 2.0 * length - travelled);
+    return h.from + (h.to - h.from) * (along / length);
+}
+
+void setLightLumens(SceneWorld& world, candela::ecs::Entity e, float lumens) {
+    if (auto* light = world.registry.tryGet<candela::content::Light>(e)) {
+        light->lumens = lumens;
+        world.registry.markChanged<candela::content::Light>(e);
+    }
+}
+
+void setOrbColor(SceneWorld& world, std::array<float, 3> color) {
+    world.registry.view<const Orb, candela::content::Light>().each(
+        [&](candela::ecs::Entity e, const Orb&, candela::content::Light& light) {
+            light.color = color;
+            world.registry.markChanged<candela::content::Light>(e);
+        });
+}
+
+constexpr std::array<float, 3> kOrbColor = {1.0f, 0.85f, 0.6f};
+
+}  // namespace
+
+void restartSystem(SceneWorld& world, const FrameContext& f) {
+    if (!f.keys().pressed(Key::R)) return;
+    GameState* state = gameState(world);
+    if (!state) return;
+    const int32_t restarts = state->restarts + 1;
+    *state =
+        GameState{state->timeLimitSeconds, 0.0, 0, 0, state->total, restarts, Status::Playing, {}};
+    auto& registry = world.registry;
+    registry.view<Orb, LocalTransform>().each(
+        [&](candela::ecs::Entity e, Orb& orb, LocalTransform& local) {
+            orb.velocity = {};
+            local.position = orb.start;
+            registry.markChanged<LocalTransform>(e);
+        });
+    registry.view<Pickup, LocalTransform>().each(
+        [&](candela::ecs::Entity e, Pickup& pickup, LocalTransform& local) {
+            pickup.collected = false;
+            local.position = pickup.home;
+            registry.markChanged<LocalTransform>(e);
+            setLightLumens(world, e, pickup.lumens);
+        });
+    setOrbColor(world, kOrbColor);
+    std::printf("restart %d\n", restarts);
+}
+
+void steerSystem(SceneWorld& world, const FrameContext& f) {
+    const GameState* state = gameState(world);
+    if (!state || state->status != Status::Playing) return;
+    const auto& in = f.keys();
+    Vec3 push{};
+    if (in.down(Key::W) || in.down(Key::Up)) push.z -= 1.0f;
+    if (in.down(Key::S) || in.down(Key::Down)) push.z += 1.0f;
+    if (in.down(Key::A) || in.down(Key::Left)) push.x -= 1.0f;
+    if (in.down(Key::D) || in.down(Key::Right)) push.x += 1.0f;
+    const float dt = float(std::min(f.deltaSeconds, 0.1));  // a hitch must not tunnel walls
+    std::vector<Wall> walls;
+    world.registry.view<const Wall>().each([&](const Wall& w) { walls.push_back(w); });
+    world.registry.view<Orb, LocalTransform>().each(
+        [&](candela::ecs::Entity e, Orb& orb, LocalTransform& local) {
+            // Arcade steering: the velocity turns toward the wanted one (full speed along the
+            // held direction, or rest) by at most `acceleration` per second.
+            Vec3 wanted{};
+            if (float len = candela::ecs::length(push); len > 0.0f) {
+                wanted = push * (orb.maxSpeed / len);
+            }
+            Vec3 change = wanted - orb.velocity;
+            const float maxChange = orb.acceleration * dt;
+            if (float len = candela::ecs::length(change); len > maxChange) {
+                change *= maxChange / len;
+            }
+            orb.velocity += change;
+            Vec3 p = local.position + orb.velocity * dt;
+            // Circle against boxes on the floor plane: push out along the shallower axis and
+            // bounce (half the speed kept).
+            for (const Wall& w : walls) {
+                const float cx = std::clamp(p.x, w.min.x, w.max.x);
+                const float cz = std::clamp(p.z, w.min.z, w.max.z);
+                const float dx = p.x - cx, dz = p.z - cz;
+                const float d2 = dx * dx + dz * dz;
+                if (d2 >= orb.radius * orb.radius) continue;
+                if (d2 > 1e-12f) {
+                    const float d = std::sqrt(d2);
+                    const float nx = dx / d, nz = dz / d;
+                    p.x = cx + nx * orb.radius;
+                    p.z = cz + nz * orb.radius;
+                    const float vn = orb.velocity.x * nx + orb.velocity.z * nz;
+                    if (vn < 0.0f) {
+                        orb.velocity.x -= 1.5f * vn * nx;
+                        orb.velocity.z -= 1.5f * vn * nz;
+                    }
+                } else {
+                    // Centre inside the box: leave by the nearest face.
+                    const float left = p.x - w.min.x, right = w.max.x - p.x;
+                    const float back = p.z - w.min.z, front = w.max.z - p.z;
+                    const float m = std::min({left, right, back, front});
+                    if (m == left)
+                        p.x = w.min.x - orb.radius, orb.velocity.x = 0.0f;
+                    else if (m == right)
+                        p.x = w.max.x + orb.radius, orb.velocity.x = 0.0f;
+                    else if (m == back)
+                        p.z = w.min.z - orb.radius, orb.velocity.z = 0.0f;
+                    else
+                        p.z = w.max.z + orb.radius, orb.velocity.z = 0.0f;
+                }
+            }
+            local.position = p;
+            world.registry.markChanged<LocalTransform>(e);
+        });
+}
+
+void patrolSystem(SceneWorld& world, const FrameContext&) {
+    const GameState* state = gameState(world);
+    if (!state) return;
+    world.registry.view<const Hazard, LocalTransform>().each(
+        [&](candela::ecs::Entity e, const Hazard& h, LocalTransform& local) {
+            local.position = patrolPosition(h, state->elapsedSeconds);
+            world.registry.markChanged<LocalTransform>(e);
+        });
+}
+
+void collectSystem(SceneWorld& world, const FrameContext&) {
+    GameState* state = gameState(world);
+    if (!state || state->status != Status::Playing) return;
+    Vec3 orbAt{};
+    float reach = 0.0f;
+    world.registry.view<const Orb, const LocalTransform>().each(
+        [&](const Orb& orb, const LocalTransform& local) {
+            orbAt = local.position;
+            reach = orb.radius + 0.15f;
+        });
+    world.registry.view<Pickup, LocalTransform>().each(
+        [&](candela::ecs::Entity e, Pickup& pickup, LocalTransform& local) {
+            if (pickup.collected) return;
+            Vec3 d = pickup.home - orbAt;
+            d.y = 0.0f;
+            if (candela::ecs::length(d) > reach) return;
+            pickup.collected = true;
+            state->score += pickup.points;
+            state->collected += 1;
+            // Gone dark and out of sight below the floor (kept, so a restart brings it back).
+            local.position = pickup.home - Vec3{0.0f, 10.0f, 0.0f};
+            world.registry.markChanged<LocalTransform>(e);
+            setLightLumens(world, e, 0.0f);
+        });
+}
+
+void refereeSystem(SceneWorld& world, const FrameContext& f) {
+    GameState* state = gameState(world);
+    if (!state || state->status != Status::Playing) return;
+    state->elapsedSeconds += f.deltaSeconds;
+    Vec3 orbAt{};
+    float orbRadius = 0.0f;
+    world.registry.view<const Orb, const LocalTransform>().each(
+        [&](const Orb& orb, const LocalTransform& local) {
+            orbAt = local.position;
+            orbRadius = orb.radius;
+        });
+    bool caught = false;
+    world.registry.view<const Hazard, const LocalTransform>().each(
+        [&](const Hazard& h, const LocalTransform& local) {
+            Vec3 d = local.position - orbAt;
+            d.y = 0.0f;
+            caught = caught || candela::ecs::length(d) < h.radius + orbRadius;
+        });
+    if (state->collected == state->total) {
+        state->status = Status::Won;
+        state->reason = "all sparks collected";
+        setOrbColor(world, {0.2f, 1.0f, 0.3f});
+    } else if (caught) {
+        state->status = Status::Lost;
+        state->reason = "caught by a sentinel";
+        setOrbColor(world, {1.0f, 0.1f, 0.05f});
+    } else if (state->elapsedSeconds >= state->timeLimitSeconds) {
+        state->status = Status::Lost;
+        state->reason = "out of time";
+        setOrbColor(world, {0.3f, 0.3f, 1.0f});
+    }
+    if (state->status != Status::Playing) {
+        std::printf("%s at frame %u: %s, score %d (%d/%d sparks) after %.2f s\n",
+                    statusName(state->status), f.frame, state->reason.c_str(), state->score,
+                    state->collected, state->total, state->elapsedSeconds);
+    }
+}
+
+void animateSystem(SceneWorld& world, const FrameContext& f) {
+    // Sparks bob so they read as alive; by scene time, so headless frames repeat.
+    world.registry.view<const Pickup, LocalTransform>().each(
+        [&](candela::ecs::Entity e, const Pickup& pickup, LocalTransform& local) {
+            if (pickup.collected) return;
+            const float phase = pickup.home.x * 1.3f + pickup.home.z * 0.7f;
+            local.position.y = pickup.home.y + 0.08f * std::sin(3.0f * float(f.seconds) + phase);
+            world.registry.markChanged<LocalTransform>(e);
+        });
+}
+
+void addOrbSystems(candela::runtime::Application& app) {
+    app.addSystem("restart", restartSystem);
+    app.addSystem("steer", steerSystem);
+    app.addSystem("patrol", patrolSystem);
+    app.addSystem("collect", collectSystem);
+    app.addSystem("referee", refereeSystem);
+    app.addSystem("animate", animateSystem);
+    // The HUD: the window title, rewritten only when what it says changes.
+    app.addSystem("hud", [&app, last = std::string()](SceneWorld& world,
+                                                      const FrameContext&) mutable {
+        const GameState* s = gameState(world);
+        if (!s) return;
+        char title[160];
+        if (s->status == Status::Playing) {
+            std::snprintf(title, sizeof title, "Orb - score %d - sparks %d/%d - %.0f s left",
+                          s->score, s->collected, s->total,
+                          std::ceil(std::max(0.0, s->timeLimitSeconds - s->elapsedSeconds)));
+        } else {
+            std::snprintf(title, sizeof title, "Orb - you %s (%s), score %d - press R to restart",
+                          statusName(s->status), s->reason.c_str(), s->score);
+        }
+        if (last != title) {
+            last = title;
+            app.setWindowTitle(title);
+        }
+    });
+}
+
+}  // namespace orb
