@@ -208,6 +208,8 @@ void GpuContext::createDevice(bool swapchain) {
     features12.hostQueryReset = VK_TRUE;
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features12;
+    // The transparency occupancy pass records cluster boxes from fragment shaders.
+    features.features.fragmentStoresAndAtomics = VK_TRUE;
 
     std::vector<const char*> extensions{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
     if (swapchain) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);

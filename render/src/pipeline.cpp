@@ -153,7 +153,7 @@ Pipeline Pipeline::graphics(GpuContext& context, const GraphicsPipelineDesc& des
         VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     bool hasDepth = desc.depthFormat != VK_FORMAT_UNDEFINED;
     depth.depthTestEnable = hasDepth;
-    depth.depthWriteEnable = hasDepth;
+    depth.depthWriteEnable = hasDepth && desc.depthWrite;
     depth.depthCompareOp = desc.depthCompare;
 
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());

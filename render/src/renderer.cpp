@@ -15,6 +15,7 @@
 #include "gpu_camera.h"
 #include "lights/gpu_light_buffer.h"
 #include "passes/depth_occupancy/depth_occupancy_pass.h"
+#include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
@@ -94,6 +95,7 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     gbufferPass_ = std::make_unique<GBufferPass>(context_);
     occupancyPass_ = std::make_unique<DepthOccupancyPass>(context_);
     lightingPass_ = std::make_unique<LightingPass>(context_);
+    transparentPass_ = std::make_unique<ForwardTransparentPass>(context_);
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
     VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -176,6 +178,8 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
     lightingPass_->setFeatures(features);
     features_ = features.names();
+    // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
+    const bool blended = transparentPass_->prepare(inputs.scene, resources, features);
     uploadFrameData(inputs);
     stats_.lights = lights_->count();
     stats_.lightsRewritten = lights_->rewrittenLastUpdate();
@@ -226,6 +230,16 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
         const glm::mat4& projection = inputs.scene.camera.projection;
         occupancyPass_->record(cmd, gbuffer_->depth, *grid_, {projection[0][0], projection[1][1]},
                                {&occupancy_, &clusterBounds_, &depthRange_});
+        if (blended) {
+            transparentPass_->recordOccupancy(cmd, resources,
+                                              {&gbuffer_->depth,
+                                               &cameraBuffer_,
+                                               &depthRange_,
+                                               &occupancy_,
+                                               &clusterBounds_,
+                                               grid_.get(),
+                                               {projection[0][0], projection[1][1]}});
+        }
         computeToHostBarrier(cmd);
         submitter.submit();
         submitter.waitIdle();
@@ -250,6 +264,13 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_, 1);
     timestampsWritten_ = true;
     if (features.countLightPairs) computeToHostBarrier(cmd);
+    if (blended) {
+        transparentPass_->recordShading(
+            cmd, resources,
+            {&hdr_, &gbuffer_->depth, &cameraBuffer_, &lights_->buffer(), &clusterRanges_,
+             &lightIndices_, grid_.get(), assignment_->directionalCount});
+        features_.push_back("forward_transparency");
+    }
 }
 
 void Renderer::recordTonemap(VkCommandBuffer cmd, float ev100) {

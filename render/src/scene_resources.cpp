@@ -260,6 +260,16 @@ const UploadedModel& SceneResources::addModel(const content::Model& model) {
                 uploadBuffer(context_, p.indices.data(), p.indices.size() * sizeof(uint32_t),
                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
             gpu.indexCount = uint32_t(p.indices.size());
+            if (!p.positions.empty()) {
+                glm::vec3 lo(p.positions[0][0], p.positions[0][1], p.positions[0][2]);
+                glm::vec3 hi = lo;
+                for (const auto& position : p.positions) {
+                    glm::vec3 v(position[0], position[1], position[2]);
+                    lo = glm::min(lo, v);
+                    hi = glm::max(hi, v);
+                }
+                gpu.boundsCenter = 0.5f * (lo + hi);
+            }
             gpu.defaultMaterial = p.material >= 0 && p.material < int32_t(model.materials.size())
                                       ? int32_t(uploaded.firstMaterial + p.material)
                                       : int32_t(defaultMaterial());

@@ -36,9 +36,11 @@ struct GraphicsPipelineDesc {
     std::vector<VkFormat> colorFormats;
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
+    bool depthWrite = true;
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
     bool dynamicCullMode = false;  // set per draw with vkCmdSetCullMode instead
-    bool alphaBlend = false;       // colour = src * srcAlpha + dst * (1 - srcAlpha) (UI overlays)
+    // colour = src * srcAlpha + dst * (1 - srcAlpha): UI overlays, glTF BLEND (straight alpha)
+    bool alphaBlend = false;
     SpecializationConstants* specialization = nullptr;  // applied to the fragment stage
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 // Owns the frame's render targets and passes and runs one frame:
 //   G-buffer (+ emissive) -> depth occupancy -> light assignment (CPU) -> clustered
-//   deferred lighting -> exposure + tonemap.
+//   deferred lighting -> forward transparency (blended draws only) -> exposure + tonemap.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -21,6 +21,7 @@ class JobSystem;
 namespace candela::render {
 
 class DepthOccupancyPass;
+class ForwardTransparentPass;
 class FrameSubmitter;
 class GBufferPass;
 class GpuContext;
@@ -95,6 +96,7 @@ private:
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<DepthOccupancyPass> occupancyPass_;
     std::unique_ptr<LightingPass> lightingPass_;
+    std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::vector<std::string> features_;
     RendererStats stats_;

@@ -4,6 +4,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -21,6 +22,7 @@ struct GpuMesh {
     GpuBuffer indices;   // uint32
     uint32_t indexCount = 0;
     int32_t defaultMaterial = -1;  // the primitive's material in SceneResources, -1: default
+    glm::vec3 boundsCenter{0.0f};  // of the positions' box, mesh space (transparency sorting)
 };
 
 struct GpuTexture {

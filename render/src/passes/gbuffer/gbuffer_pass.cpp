@@ -92,6 +92,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     for (const DrawItem& draw : scene.draws) {
         const GpuMesh& mesh = resources.mesh(draw.mesh);
         if (mesh.indexCount == 0) continue;
+        // Blended surfaces are drawn by the forward transparency pass.
+        if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
         const MaterialBinding& binding = resources.materialBinding(draw.material);
         std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
         std::vector<VkWriteDescriptorSet> writes = {uniformBufferWrite(0, &cameraInfo),

@@ -1,0 +1,114 @@
+// Material evaluation shared by the G-buffer pass and the forward transparency pass, so an
+// opaque and a blended surface with the same material get the same inputs. The including
+// shader defines MATERIAL_BUFFER_BINDING (the std430 material array, render/src/
+// gpu_material.h) and MATERIAL_TEXTURE_BINDING (the first of the slot samplers, in
+// TextureSlot order) before including this file.
+#ifndef CANDELA_MATERIAL_GLSL
+#define CANDELA_MATERIAL_GLSL
+
+#include "common/math.glsl"
+
+struct TextureTransform {
+    vec4 matrix;  // 2x2 column-major
+    vec2 offset;
+    uint texCoord;
+    uint present;
+};
+
+struct Material {
+    vec4 baseColor;
+    vec4 emissive;
+    vec4 customData;
+    float metallic;
+    float roughness;
+    float specular;
+    float normalScale;
+    float occlusionStrength;
+    float alphaCutoff;
+    uint shadingModel;
+    uint pad;
+    TextureTransform transforms[5];
+};
+
+layout(std430, binding = MATERIAL_BUFFER_BINDING) readonly buffer Materials {
+    Material materials[];
+};
+layout(binding = MATERIAL_TEXTURE_BINDING + 0) uniform sampler2D baseColorTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 1) uniform sampler2D metallicRoughnessTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 2) uniform sampler2D normalTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 3) uniform sampler2D occlusionTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 4) uniform sampler2D emissiveTexture;
+
+// A material evaluated at one fragment.
+struct MaterialSample {
+    vec4 baseColor;  // rgb, a = coverage (alpha)
+    float roughness;
+    float metallic;
+    float specular;
+    float occlusion;
+    vec3 N;  // shading normal (normal map applied, flipped on back faces)
+    vec3 emissive;  // cd/m^2
+    vec4 customData;
+    uint shadingModel;
+};
+
+// UV gradients, taken once per fragment in uniform control flow (materialGradients), so the
+// alpha-test discard and the normal-map branch cannot leave implicit derivatives undefined
+// (which showed as sparkles and seams on lavapipe).
+struct MaterialUv {
+    vec4 uv;  // uv0, uv1
+    vec4 dx;
+    vec4 dy;
+};
+
+MaterialUv materialGradients(vec2 uv0, vec2 uv1) {
+    MaterialUv m;
+    m.uv = vec4(uv0, uv1);
+    m.dx = dFdx(m.uv);
+    m.dy = dFdy(m.uv);
+    return m;
+}
+
+vec4 sampleSlot(sampler2D tex, TextureTransform t, MaterialUv uv) {
+    mat2 m = mat2(t.matrix.xy, t.matrix.zw);
+    bool second = t.texCoord == 1u;
+    vec2 coord = m * (second ? uv.uv.zw : uv.uv.xy) + t.offset;
+    vec2 ddx = m * (second ? uv.dx.zw : uv.dx.xy);
+    vec2 ddy = m * (second ? uv.dy.zw : uv.dy.xy);
+    return textureGrad(tex, coord, ddx, ddy);
+}
+
+// Base colour with vertex colour: what the alpha test and blending read.
+vec4 materialBaseColor(Material m, MaterialUv uv, vec4 vertexColor) {
+    return m.baseColor * vertexColor * sampleSlot(baseColorTexture, m.transforms[0], uv);
+}
+
+// Everything but the base colour (pass materialBaseColor's result in).
+MaterialSample evaluateMaterial(Material m, MaterialUv uv, vec4 baseColor, vec3 normal,
+                                vec4 tangent, bool frontFacing) {
+    MaterialSample s;
+    s.baseColor = baseColor;
+    vec4 metalRough = sampleSlot(metallicRoughnessTexture, m.transforms[1], uv);
+    s.roughness = saturate(m.roughness * metalRough.g);
+    s.metallic = saturate(m.metallic * metalRough.b);
+    s.occlusion = 1.0 + m.occlusionStrength * (sampleSlot(occlusionTexture, m.transforms[3], uv).r - 1.0);
+
+    vec3 N = safeNormalize(normal);
+    if (!frontFacing) N = -N;  // double-sided surfaces light their back side
+    float tangentLength = dot(tangent.xyz, tangent.xyz);
+    if (m.transforms[2].present != 0u && tangentLength > 0.0) {
+        vec3 T = safeNormalize(tangent.xyz - N * dot(N, tangent.xyz));
+        vec3 B = cross(N, T) * (tangent.w < 0.0 ? -1.0 : 1.0);
+        vec3 n = sampleSlot(normalTexture, m.transforms[2], uv).xyz * 2.0 - 1.0;
+        n.xy *= m.normalScale;
+        N = safeNormalize(mat3(T, B, N) * n);
+    }
+    s.N = N;
+    s.emissive = m.emissive.rgb * sampleSlot(emissiveTexture, m.transforms[4], uv).rgb;
+    s.specular = saturate(m.specular);
+    s.customData = clamp(m.customData, 0.0, 1.0);
+    s.shadingModel = m.shadingModel;
+    return s;
+}
+
+#endif

@@ -1,0 +1,93 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Forward+ shading of alpha-blended (glTF BLEND) surfaces over the deferred result: the same
+// material evaluation as the G-buffer pass and the same lights, light code and cluster lists
+// as the deferred lighting pass, so a blended surface is lit exactly like an opaque one with
+// the same inputs. Output is straight alpha ("over", glTF 2.0 alphaMode BLEND): the pipeline
+// blends rgb with SRC_ALPHA, ONE_MINUS_SRC_ALPHA; emissive is part of the surface's colour.
+#define MATERIAL_BUFFER_BINDING 2
+#define MATERIAL_TEXTURE_BINDING 3
+#include "common/camera.glsl"
+#include "common/clusters.glsl"
+#include "common/light_buffer.glsl"
+#include "common/material.glsl"
+#include "common/shading_models.glsl"
+
+layout(constant_id = 30) const bool kClustered = true;
+
+layout(std430, binding = 16) readonly buffer ClusterRanges { uint clusterRanges[]; };
+layout(std430, binding = 17) readonly buffer LightIndices { uint lightIndices[]; };
+
+layout(push_constant) uniform Draw {
+    mat4 world;
+    uint material;
+    uint directionalCount;
+    ClusterGridParams grid;
+} draw;
+
+layout(location = 0) in vec3 inNormal;
+layout(location = 1) in vec4 inTangent;
+layout(location = 2) in vec2 inUv0;
+layout(location = 3) in vec2 inUv1;
+layout(location = 4) in vec4 inColor;
+
+layout(location = 0) out vec4 outRadiance;  // cd/m^2, a = coverage
+
+vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha, uint index) {
+    Light light = loadLight(index, camera.frameInfo.w);
+    LightIncidence incidence = light.type == kLightDirectional
+                                   ? evaluateDirectionalLight(light, N)
+                                   : evaluateLocalLight(light, P, N, R, alpha);
+    return shadeSurface(surface, N, V, incidence);
+}
+
+void main() {
+    MaterialUv uv = materialGradients(inUv0, inUv1);
+    Material m = materials[draw.material];
+    vec4 baseColor = materialBaseColor(m, uv, inColor);
+    MaterialSample s = evaluateMaterial(m, uv, baseColor, inNormal, inTangent, gl_FrontFacing);
+
+    vec3 radiance = s.emissive;
+    if (s.shadingModel != kShadingUnlit) {
+        Surface surface;
+        surface.baseColor = s.baseColor.rgb;
+        surface.roughness = s.roughness;
+        surface.metallic = s.metallic;
+        surface.specular = s.specular;
+        surface.shadingModel = s.shadingModel;
+        surface.customData = s.customData;
+
+        // The world position from the fragment's depth, as the deferred pass reconstructs it.
+        uvec2 size = camera.frameInfo.xy;
+        vec2 ndc = gl_FragCoord.xy / vec2(size) * 2.0 - 1.0;
+        vec4 world = camera.inverseViewProjection * vec4(ndc, gl_FragCoord.z, 1.0);
+        vec3 P = world.xyz / world.w;
+        vec3 N = s.N;
+        vec3 V = safeNormalize(camera.cameraPosition.xyz - P);
+        vec3 R = reflect(-V, N);
+        float alpha = alphaFromRoughness(s.roughness);
+
+        if (kClustered) {
+            for (uint i = 0u; i < draw.directionalCount; ++i) {
+                radiance += lightRadiance(surface, P, N, V, R, alpha, lightIndices[i]);
+            }
+            // The cluster of this fragment; the transparency occupancy pass made sure it holds
+            // every light that reaches this depth.
+            uvec2 tile = uvec2(gl_FragCoord.xy) / draw.grid.tileSize;
+            float viewDepth = viewDepthFromNdc(gl_FragCoord.z, draw.grid.projectionNear);
+            uint slice = sliceOfDepth(draw.grid.sliceNear, draw.grid.logRatio, draw.grid.slices,
+                                      viewDepth);
+            uint cluster = (slice * draw.grid.tilesY + tile.y) * draw.grid.tilesX + tile.x;
+            uint first = clusterRanges[2u * cluster];
+            uint count = clusterRanges[2u * cluster + 1u];
+            for (uint i = 0u; i < count; ++i) {
+                radiance += lightRadiance(surface, P, N, V, R, alpha, lightIndices[first + i]);
+            }
+        } else {
+            for (uint i = 0u; i < camera.frameInfo.z; ++i) {
+                radiance += lightRadiance(surface, P, N, V, R, alpha, i);
+            }
+        }
+    }
+    outRadiance = vec4(radiance, saturate(s.baseColor.a));
+}

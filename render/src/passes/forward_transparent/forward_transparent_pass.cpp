@@ -1,0 +1,323 @@
+#include "passes/forward_transparent/forward_transparent_pass.h"
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+
+#include "candela/render/gpu_context.h"
+#include "candela/render/gpu_image.h"
+#include "candela/render/scene_resources.h"
+#include "clustered/cluster_grid.h"
+#include "clustered/gpu_cluster_params.h"
+#include "gbuffer_targets.h"
+#include "mesh_vertex.h"
+#include "shaders/forward_transparent.frag.spv.h"
+#include "shaders/gbuffer.vert.spv.h"
+#include "shaders/transparent_occupancy.frag.spv.h"
+#include "shaders/transparent_occupancy_merge.comp.spv.h"
+#include "vk/memory_barrier.h"
+#include "vk/vk_check.h"
+
+namespace candela::render {
+
+namespace {
+
+// Both fragment shaders' push block; the vertex stage (gbuffer.vert) reads world only.
+struct DrawPush {
+    glm::mat4 world;
+    uint32_t material;
+    uint32_t directionalCount;
+    GpuClusterParams grid;
+    uint32_t size[2];
+    float projectionScale[2];
+};
+
+// Bindings of forward_transparent.frag.
+constexpr uint32_t kCameraBinding = 0;
+constexpr uint32_t kLightsBinding = 1;
+constexpr uint32_t kMaterialsBinding = 2;
+constexpr uint32_t kFirstTextureBinding = 3;
+constexpr uint32_t kClusterRangesBinding = 16;
+constexpr uint32_t kLightIndicesBinding = 17;
+static_assert(kFirstTextureBinding + kTextureSlotCount <= kClusterRangesBinding);
+
+// Specialization constants shared with the lighting pass (shading_models.glsl, lights.glsl,
+// forward_transparent.frag).
+constexpr uint32_t kSubsurfaceConstant = 10;
+constexpr uint32_t kLegacyConstant = 11;
+constexpr uint32_t kSphereConstant = 20;
+constexpr uint32_t kTubeConstant = 21;
+constexpr uint32_t kSpotConstant = 22;
+constexpr uint32_t kClusteredConstant = 30;
+
+void setMeshVertexInput(GraphicsPipelineDesc& desc) {
+    desc.vertexSpirv = gbuffer_vert_spv;  // the G-buffer's vertex stage: same transform
+    desc.vertexBindings = {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertexAttributes = {
+        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
+        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)},
+        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MeshVertex, tangent)},
+        {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv0)},
+        {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv1)},
+        {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MeshVertex, color)},
+    };
+}
+
+void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh) {
+    VkDeviceSize offset = 0;
+    VkBuffer vertexBuffer = mesh.vertices.handle();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+}
+
+void setViewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
+    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {width, height}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+}  // namespace
+
+ForwardTransparentPass::ForwardTransparentPass(GpuContext& context) : context_(context) {
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = VK_FILTER_NEAREST;
+    info.minFilter = VK_FILTER_NEAREST;
+    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    CANDELA_VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &pointSampler_));
+
+    // Occupancy: no attachments; the fragment shader tests against the G-buffer depth itself,
+    // so the depth image stays in the layout the occupancy compute pass read it in.
+    GraphicsPipelineDesc occupancy;
+    setMeshVertexInput(occupancy);
+    occupancy.fragmentSpirv = transparent_occupancy_frag_spv;
+    const DescriptorBinding occupancyBindings[] = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+        {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    };
+    occupancy_ = Pipeline::graphics(context, occupancy, occupancyBindings, sizeof(DrawPush));
+
+    const DescriptorBinding mergeBindings[] = {
+        {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    };
+    merge_ = Pipeline::compute(context, transparent_occupancy_merge_comp_spv, mergeBindings,
+                               sizeof(GpuClusterParams));
+}
+
+ForwardTransparentPass::~ForwardTransparentPass() {
+    vkDestroySampler(context_.device(), pointSampler_, nullptr);
+}
+
+void ForwardTransparentPass::buildShadingPipeline() {
+    SpecializationConstants constants;
+    constants.set(kSubsurfaceConstant, features_.subsurface);
+    constants.set(kLegacyConstant, features_.legacyDiffuseSpecular);
+    constants.set(kSphereConstant, features_.sphereLights);
+    constants.set(kTubeConstant, features_.tubeLights);
+    constants.set(kSpotConstant, features_.spotLights);
+    constants.set(kClusteredConstant, features_.clustered);
+
+    GraphicsPipelineDesc desc;
+    setMeshVertexInput(desc);
+    desc.fragmentSpirv = forward_transparent_frag_spv;
+    desc.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};  // the HDR target
+    desc.depthFormat = GBufferTargets::kDepthFormat;
+    desc.depthWrite = false;  // blended surfaces neither hide nor sort each other by depth
+    desc.alphaBlend = true;
+    desc.dynamicCullMode = true;
+    desc.specialization = &constants;
+    std::vector<DescriptorBinding> bindings = {
+        {kCameraBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+        {kLightsBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {kMaterialsBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {kClusterRangesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {kLightIndicesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    };
+    for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+        bindings.push_back({kFirstTextureBinding + slot, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            VK_SHADER_STAGE_FRAGMENT_BIT});
+    }
+    shading_ = Pipeline::graphics(context_, desc, bindings, sizeof(DrawPush));
+    built_ = true;
+}
+
+bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& resources,
+                                     const LightingFeatures& features) {
+    order_.clear();
+    sorted_.clear();
+    for (uint32_t i = 0; i < uint32_t(scene.draws.size()); ++i) {
+        const DrawItem& draw = scene.draws[i];
+        if (resources.material(draw.material).alphaMode != content::AlphaMode::Blend) continue;
+        if (resources.mesh(draw.mesh).indexCount == 0) continue;
+        glm::vec4 centre = draw.world * glm::vec4(resources.mesh(draw.mesh).boundsCenter, 1.0f);
+        float viewDepth = -(scene.camera.view * centre).z;
+        order_.emplace_back(viewDepth, i);
+    }
+    if (order_.empty()) return false;
+    // Farthest first; equal depths keep scene order, so the result does not depend on the
+    // sort's implementation.
+    std::stable_sort(order_.begin(), order_.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (const auto& [depth, index] : order_)
+        sorted_.push_back(scene.draws[index]);
+    if (!built_ || !(features == features_)) {
+        features_ = features;
+        buildShadingPipeline();
+    }
+    return true;
+}
+
+void ForwardTransparentPass::recordOccupancy(VkCommandBuffer cmd, SceneResources& resources,
+                                             const OccupancyInputs& in) {
+    const ClusterGrid& grid = *in.grid;
+    const VkDeviceSize half = VkDeviceSize(grid.clusterCount()) * 3 * sizeof(uint32_t);
+    if (!transparentBounds_.handle() || transparentBounds_.size() < 2 * half) {
+        transparentBounds_ =
+            GpuBuffer(context_, 2 * half,
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      MemoryLocation::Device);
+    }
+    // Empty boxes: mins at the largest ordered value, maxs at the smallest.
+    vkCmdFillBuffer(cmd, transparentBounds_.handle(), 0, half, 0xffffffffu);
+    vkCmdFillBuffer(cmd, transparentBounds_.handle(), half, half, 0u);
+    // The fills, and the slicing the occupancy compute pass wrote into depthRange.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+
+    const uint32_t width = in.depth->desc().width;
+    const uint32_t height = in.depth->desc().height;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    vkCmdBeginRendering(cmd, &rendering);
+    setViewport(cmd, width, height);
+    occupancy_.bind(cmd);
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorImageInfo depthInfo{pointSampler_, in.depth->view(),
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorBufferInfo rangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo boundsInfo{transparentBounds_.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(0, &cameraInfo), sampledImageWrite(1, &depthInfo),
+        storageBufferWrite(2, &rangeInfo), storageBufferWrite(3, &boundsInfo)};
+    occupancy_.pushDescriptors(cmd, writes);
+    DrawPush push{};
+    push.grid = toGpu(grid);
+    push.size[0] = width;
+    push.size[1] = height;
+    push.projectionScale[0] = in.projectionScale.x;
+    push.projectionScale[1] = in.projectionScale.y;
+    for (const DrawItem& draw : sorted_) {
+        push.world = draw.world;
+        push.material = draw.material;
+        occupancy_.pushConstants(cmd, &push, sizeof(push));
+        drawMesh(cmd, resources.mesh(draw.mesh));
+    }
+    vkCmdEndRendering(cmd);
+
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    VkDescriptorBufferInfo maskInfo{in.tileMasks->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo clusterInfo{in.clusterBounds->handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet mergeWrites[] = {storageBufferWrite(0, &maskInfo),
+                                                storageBufferWrite(1, &clusterInfo),
+                                                storageBufferWrite(2, &boundsInfo)};
+    GpuClusterParams params = toGpu(grid);
+    merge_.bind(cmd);
+    merge_.pushDescriptors(cmd, mergeWrites);
+    merge_.pushConstants(cmd, &params, sizeof(params));
+    vkCmdDispatch(cmd, grid.tilesX, grid.tilesY, 1);
+}
+
+void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& resources,
+                                           const ShadingInputs& in) const {
+    // Lighting wrote the HDR target as a storage image; blending reads and writes it.
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    transitionImage(
+        cmd, *in.depth, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
+        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+
+    const uint32_t width = in.hdr->desc().width;
+    const uint32_t height = in.hdr->desc().height;
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = in.hdr->view();
+    color.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = in.depth->view();
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_NONE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    setViewport(cmd, width, height);
+    shading_.bind(cmd);
+
+    const GpuBuffer& materials = resources.materialBuffer();
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo materialInfo{materials.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
+    DrawPush push{};
+    push.directionalCount = in.directionalCount;
+    push.grid = toGpu(*in.grid);
+    push.size[0] = width;
+    push.size[1] = height;
+    for (const DrawItem& draw : sorted_) {
+        const MaterialBinding& binding = resources.materialBinding(draw.material);
+        std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
+        std::vector<VkWriteDescriptorSet> writes = {
+            uniformBufferWrite(kCameraBinding, &cameraInfo),
+            storageBufferWrite(kLightsBinding, &lightInfo),
+            storageBufferWrite(kMaterialsBinding, &materialInfo),
+            storageBufferWrite(kClusterRangesBinding, &rangesInfo),
+            storageBufferWrite(kLightIndicesBinding, &indicesInfo)};
+        for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+            const GpuTexture& t = resources.texture(binding.textures[slot]);
+            images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+            writes.push_back(sampledImageWrite(kFirstTextureBinding + slot, &images[slot]));
+        }
+        shading_.pushDescriptors(cmd, writes);
+        vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided
+                                  ? VK_CULL_MODE_NONE
+                                  : VK_CULL_MODE_BACK_BIT);
+        push.world = draw.world;
+        push.material = draw.material;
+        shading_.pushConstants(cmd, &push, sizeof(push));
+        drawMesh(cmd, resources.mesh(draw.mesh));
+    }
+    vkCmdEndRendering(cmd);
+
+    transitionImage(
+        cmd, *in.depth, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+        0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
+
+}  // namespace candela::render

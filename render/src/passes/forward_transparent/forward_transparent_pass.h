@@ -1,0 +1,80 @@
+#pragma once
+// Alpha-blended (glTF BLEND) surfaces, drawn forward after deferred lighting: sorted back to
+// front per draw, depth-tested against the G-buffer depth without writing it, shaded with the
+// shared light code and the clustered light lists (forward+), blended "over" into the HDR
+// target. Before light assignment, their fragments mark the clusters they occupy so those
+// lists hold the lights that reach them.
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "candela/render/frame_scene.h"
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/pipeline.h"
+#include "passes/lighting/lighting_pass.h"
+
+namespace candela::render {
+
+class GpuContext;
+class GpuImage;
+class SceneResources;
+struct ClusterGrid;
+
+class ForwardTransparentPass {
+public:
+    explicit ForwardTransparentPass(GpuContext& context);
+    ~ForwardTransparentPass();
+    ForwardTransparentPass(const ForwardTransparentPass&) = delete;
+    ForwardTransparentPass& operator=(const ForwardTransparentPass&) = delete;
+
+    // Collects the frame's blended draws, sorted back to front by the view depth of their
+    // bounds centre, and selects the shader variant. False when there are none: the frame then
+    // records nothing of this pass.
+    bool prepare(const FrameScene& scene, SceneResources& resources,
+                 const LightingFeatures& features);
+    size_t drawCount() const { return sorted_.size(); }
+
+    // Clustered culling only. Record after DepthOccupancyPass and before its outputs are read:
+    // adds the clusters (and view-space boxes) the blended fragments occupy to its outputs.
+    // depth is SHADER_READ_ONLY.
+    struct OccupancyInputs {
+        const GpuImage* depth;
+        const GpuBuffer* camera;
+        const GpuBuffer* depthRange;
+        const GpuBuffer* tileMasks;
+        const GpuBuffer* clusterBounds;
+        const ClusterGrid* grid;
+        glm::vec2 projectionScale;
+    };
+    void recordOccupancy(VkCommandBuffer cmd, SceneResources& resources, const OccupancyInputs& in);
+
+    // After the lighting pass: hdr in GENERAL (written by compute), depth SHADER_READ_ONLY;
+    // both are left as they came, the HDR writes visible to compute shaders.
+    struct ShadingInputs {
+        const GpuImage* hdr;
+        const GpuImage* depth;
+        const GpuBuffer* camera;
+        const GpuBuffer* lights;
+        const GpuBuffer* clusterRanges;
+        const GpuBuffer* lightIndices;
+        const ClusterGrid* grid;
+        uint32_t directionalCount;
+    };
+    void recordShading(VkCommandBuffer cmd, SceneResources& resources,
+                       const ShadingInputs& in) const;
+
+private:
+    void buildShadingPipeline();
+
+    GpuContext& context_;
+    std::vector<DrawItem> sorted_;
+    std::vector<std::pair<float, uint32_t>> order_;  // (view depth, draw index) scratch
+    LightingFeatures features_;
+    bool built_ = false;
+    Pipeline shading_;
+    Pipeline occupancy_;
+    Pipeline merge_;
+    GpuBuffer transparentBounds_;  // see transparent_occupancy.frag
+    VkSampler pointSampler_ = VK_NULL_HANDLE;
+};
+
+}  // namespace candela::render
