@@ -1,5 +1,6 @@
 #include "gpu_material.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace candela::render {
@@ -61,6 +62,13 @@ GpuMaterial packMaterial(const content::Material& m) {
     g.transforms[2] = packTransform(m.normalTexture);
     g.transforms[3] = packTransform(m.occlusionTexture);
     g.transforms[4] = packTransform(m.emissiveTexture);
+    g.transforms[5] = packTransform(m.specularTexture);
+    g.transforms[6] = packTransform(m.specularColorTexture);
+    const auto& c = m.specularColorFactor;
+    const float largest = std::max({c[0], c[1], c[2]});
+    for (int i = 0; i < 3; ++i)
+        g.specularColorScale[i] = largest > 0.0f ? c[i] / largest : 1.0f;
+    g.specularColorScale[3] = 1.0f;
     return g;
 }
 

@@ -26,7 +26,11 @@ struct GpuMaterial {
     float alphaCutoff;  // < 0: opaque (no alpha test)
     uint32_t shadingModel;
     uint32_t pad;
-    GpuTextureTransform transforms[5];  // TextureSlot order
+    // KHR_materials_specular textures scale `specular` per texel by specularTexture.a *
+    // max(this.rgb * specularColorTexture.rgb); rgb = specularColorFactor / its largest
+    // channel, so untextured (white) slots leave `specular` exactly as it is.
+    float specularColorScale[4];
+    GpuTextureTransform transforms[7];  // TextureSlot order
 };
 static_assert(sizeof(GpuMaterial) % 16 == 0, "std430 array stride");
 

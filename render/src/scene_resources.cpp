@@ -230,6 +230,9 @@ uint32_t SceneResources::addModelMaterial(const content::Model& model, UploadedM
     binding.textures[kOcclusionSlot] =
         textureFor(model, uploaded, m.occlusionTexture, whiteTexture_);
     binding.textures[kEmissiveSlot] = textureFor(model, uploaded, m.emissiveTexture, whiteTexture_);
+    binding.textures[kSpecularSlot] = textureFor(model, uploaded, m.specularTexture, whiteTexture_);
+    binding.textures[kSpecularColorSlot] =
+        textureFor(model, uploaded, m.specularColorTexture, whiteTexture_);
     return addMaterialWithTextures(m, binding);
 }
 

@@ -27,7 +27,8 @@ struct Material {
     float alphaCutoff;
     uint shadingModel;
     uint pad;
-    TextureTransform transforms[5];
+    vec4 specularColorScale;  // see gpu_material.h
+    TextureTransform transforms[7];
 };
 
 layout(std430, binding = MATERIAL_BUFFER_BINDING) readonly buffer Materials {
@@ -38,6 +39,8 @@ layout(binding = MATERIAL_TEXTURE_BINDING + 1) uniform sampler2D metallicRoughne
 layout(binding = MATERIAL_TEXTURE_BINDING + 2) uniform sampler2D normalTexture;
 layout(binding = MATERIAL_TEXTURE_BINDING + 3) uniform sampler2D occlusionTexture;
 layout(binding = MATERIAL_TEXTURE_BINDING + 4) uniform sampler2D emissiveTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 5) uniform sampler2D specularTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 6) uniform sampler2D specularColorTexture;
 
 // A material evaluated at one fragment.
 struct MaterialSample {
@@ -105,7 +108,19 @@ MaterialSample evaluateMaterial(Material m, MaterialUv uv, vec4 baseColor, vec3 
     }
     s.N = N;
     s.emissive = m.emissive.rgb * sampleSlot(emissiveTexture, m.transforms[4], uv).rgb;
-    s.specular = saturate(m.specular);
+    // KHR_materials_specular: glTF's dielectric F0 = 0.04 * specularFactor * specularTexture.a *
+    // specularColorFactor * specularColorTexture.rgb; the engine's F0 = 0.08 * specular with one
+    // scalar, so the colour's largest channel is taken (as the loader does for the factors).
+    // The slots are sampled only when the material has the texture (uniform per draw).
+    float specular = m.specular;
+    if (m.transforms[5].present != 0u) {
+        specular *= sampleSlot(specularTexture, m.transforms[5], uv).a;
+    }
+    if (m.transforms[6].present != 0u) {
+        vec3 c = m.specularColorScale.rgb * sampleSlot(specularColorTexture, m.transforms[6], uv).rgb;
+        specular *= max(c.r, max(c.g, c.b));
+    }
+    s.specular = saturate(specular);
     s.customData = clamp(m.customData, 0.0, 1.0);
     s.shadingModel = m.shadingModel;
     return s;

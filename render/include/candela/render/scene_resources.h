@@ -46,6 +46,8 @@ enum TextureSlot : uint32_t {
     kNormalSlot,
     kOcclusionSlot,
     kEmissiveSlot,
+    kSpecularSlot,       // KHR_materials_specular specularTexture (A)
+    kSpecularColorSlot,  // KHR_materials_specular specularColorTexture (RGB, sRGB)
     kTextureSlotCount
 };
 
