@@ -5,6 +5,7 @@
 
 #include "run_options.h"
 #include "run_scene.h"
+#include "stats_overlay.h"
 
 using namespace candela::runtime;
 
@@ -32,5 +33,10 @@ int main(int argc, char** argv) {
     }
     RunOptions options = *parsed.options;
     if (command == "demo" && options.scene.empty()) options.scene = "builtin:demo";
-    return runScene(options);
+    // The stats overlay: on in the demo's window; --overlay also draws it headless and on
+    // `run` (the figures change run to run, so captures with it are not reproducible).
+    std::vector<std::shared_ptr<FrameLayer>> layers;
+    const bool overlay = options.overlay.value_or(command == "demo");
+    if (overlay) layers.push_back(std::make_shared<StatsOverlay>(options.overlay.value_or(false)));
+    return runScene(options, std::move(layers));
 }

@@ -39,6 +39,7 @@ std::string runUsage() {
            "                   [--stats FILE.json] [--lights clustered|brute-force]\n"
            "                   [--validation off|on|require] [--step SECONDS]\n"
            "                   [--capture-each DIR] [--summary FILE.md] [--input SCRIPT]\n"
+           "                   [--overlay|--no-overlay]\n"
            "       candela demo [same options]\n";
 }
 
@@ -105,6 +106,10 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
                     v + "'");
             }
             options.stepSeconds = step;
+        } else if (arg == "--overlay") {
+            options.overlay = true;
+        } else if (arg == "--no-overlay") {
+            options.overlay = false;
         } else if (arg == "--capture-each") {
             if (!value(v)) return fail("--capture-each needs a directory");
             options.captureEach = v;

@@ -57,7 +57,9 @@ int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>>
         }
     }
     app.stats = options.stats;
-    app.countLightPairs = options.stats.has_value() || options.summary.has_value();
+    // The overlay shows culling efficiency, which needs the pair counts too.
+    app.countLightPairs =
+        options.stats.has_value() || options.summary.has_value() || !layers.empty();
     app.validation = options.validation;
     app.lightCulling = options.lightCulling;
 

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "candela/content/exr_image.h"
+#include "image_files.h"
 
 namespace {
 
@@ -166,6 +167,35 @@ TEST(Cli, DemoHasHundredsOfLightsAndCullsThem) {
     double efficiency = stats["culling_efficiency"].get<double>();
     EXPECT_GT(efficiency, 0.0);
     EXPECT_LE(efficiency, 1.0);
+}
+
+// The stats overlay (ImGui) draws in the top-left corner only: with --overlay the frame
+// changes there and nowhere else (the window shows it by default; headless needs --overlay).
+TEST(Cli, DemoOverlayDrawsOnlyItsCorner) {
+    auto dir = tempDir();
+    const std::string args = "demo --headless --size 640x360 --frames 2 --capture ";
+    RunResult plain = runCandela(args + (dir / "plain.png").string());
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    RunResult overlay = runCandela(args + (dir / "overlay.png").string() + " --overlay");
+    ASSERT_EQ(overlay.exitCode, 0) << overlay.output;
+    std::string error;
+    auto a = candela::golden::readLdrPng(dir / "plain.png", error);
+    ASSERT_TRUE(a) << error;
+    auto b = candela::golden::readLdrPng(dir / "overlay.png", error);
+    ASSERT_TRUE(b) << error;
+    ASSERT_EQ(a->rgb.size(), b->rgb.size());
+    size_t changedInCorner = 0, changedElsewhere = 0;
+    for (uint32_t y = 0; y < a->height; ++y) {
+        for (uint32_t x = 0; x < a->width; ++x) {
+            size_t i = (size_t(y) * a->width + x) * 3;
+            bool changed = a->rgb[i] != b->rgb[i] || a->rgb[i + 1] != b->rgb[i + 1] ||
+                           a->rgb[i + 2] != b->rgb[i + 2];
+            bool corner = x < 400 && y < 140;
+            (corner ? changedInCorner : changedElsewhere) += changed;
+        }
+    }
+    EXPECT_GT(changedInCorner, 1000u);  // text and panel edges (the panel over black stays black)
+    EXPECT_EQ(changedElsewhere, 0u);
 }
 
 TEST(Cli, BadInputScriptIsRejectedWithFileAndLine) {
