@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace candela::runtime {
@@ -79,6 +80,9 @@ std::optional<InputScript> InputScript::parse(std::string_view text, const std::
             std::uint32_t length = 1;
             if (action == "hold" && (!parseFrame(w[3], length) || length == 0)) {
                 return fail("'hold' needs a positive frame count, got '" + w[3] + "'");
+            }
+            if (event.frame > std::numeric_limits<std::uint32_t>::max() - length) {
+                return fail("'" + action + "' ends past the last frame number");
             }
             event.type = InputEvent::Type::KeyDown;
             event.key = *k;

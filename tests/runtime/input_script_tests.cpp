@@ -81,6 +81,7 @@ TEST(InputScript, BadScriptsNameTheLineAndTheProblem) {
     EXPECT_NE(parseError("1 mouse 1").find("'mouse' takes dx and dy"), std::string::npos);
     EXPECT_NE(parseError("1 button down thumb").find("unknown mouse button 'thumb'"),
               std::string::npos);
+    EXPECT_NE(parseError("4294967295 tap W").find("ends past the last frame"), std::string::npos);
     EXPECT_NE(parseError("99999999999 down W").find("expected a frame number"), std::string::npos);
 }
 
