@@ -1,6 +1,7 @@
 #include "candela/render/renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -17,6 +18,7 @@
 #include "passes/depth_occupancy/depth_occupancy_pass.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
+#include "passes/light_assignment/light_assignment_pass.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
@@ -97,9 +99,12 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     lightingPass_ = std::make_unique<LightingPass>(context_);
     transparentPass_ = std::make_unique<ForwardTransparentPass>(context_);
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
+    if (options_.lightAssignment == LightAssignmentDevice::Gpu) {
+        assignmentPass_ = std::make_unique<LightAssignmentPass>(context_);
+    }
     VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    queryInfo.queryCount = 2;
+    queryInfo.queryCount = 4;  // lighting begin/end, device assignment begin/end
     CANDELA_VK_CHECK(vkCreateQueryPool(context.device(), &queryInfo, nullptr, &timestamps_));
 }
 
@@ -173,6 +178,71 @@ void Renderer::assignLightsToClusters(const FrameInputs& inputs) {
     stats_.lightClusterPairs = assignment_->assignedPairs;
 }
 
+void Renderer::recordGpuAssignment(VkCommandBuffer cmd, const FrameInputs& inputs) {
+    absorbGpuListUsage();
+    std::span<const LightInstance> lights = inputs.scene.lights;
+    // Directional lights lead the index buffer, as on the CPU path; the device lists follow.
+    std::vector<uint32_t>& directional = assignment_->lightIndices;
+    directional.clear();
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].light.type == content::LightType::Directional) directional.push_back(i);
+    }
+    assignment_->directionalCount = uint32_t(directional.size());
+    if (gpuListEntriesWanted_ == 0) {
+        // First frame: a guess (the floor benchmark needs under 8 entries per light); later
+        // frames grow from what the previous one asked for.
+        gpuListEntriesWanted_ = options_.initialGpuLightListEntries
+                                    ? options_.initialGpuLightListEntries
+                                    : std::max<uint32_t>(uint32_t(lights.size()) * 16, 1u << 16);
+    }
+    ensureBuffer(context_, lightIndices_,
+                 VkDeviceSize(std::max<size_t>(gpuListEntriesWanted_, directional.size())) * 4);
+    std::memcpy(lightIndices_.mapped(), directional.data(), directional.size() * sizeof(uint32_t));
+    ensureBuffer(context_, clusterRanges_, VkDeviceSize(grid_->clusterCount()) * 8);
+    gpuListCapacity_ = uint32_t(lightIndices_.size() / 4);
+
+    vkCmdResetQueryPool(cmd, timestamps_, 2, 2);
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, 2);
+    const glm::mat4& projection = inputs.scene.camera.projection;
+    LightAssignmentPass::Inputs in{&lights_->buffer(),
+                                   lights_->count(),
+                                   lights_->capacity(),
+                                   inputs.scene.camera.view,
+                                   grid_.get(),
+                                   width_,
+                                   height_,
+                                   {projection[0][0], projection[1][1]},
+                                   &occupancy_,
+                                   &clusterBounds_,
+                                   &depthRange_,
+                                   &clusterRanges_,
+                                   &lightIndices_,
+                                   gpuListCapacity_,
+                                   assignment_->directionalCount};
+    assignmentPass_->record(cmd, in);
+    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_, 3);
+    gpuListPending_ = true;
+    stats_.clusters = grid_->clusterCount();
+}
+
+void Renderer::absorbGpuListUsage() {
+    // The frame that recorded the device assignment has completed (collectStats, or the next
+    // recordFrame after FrameSubmitter::begin waited for it).
+    if (!gpuListPending_) return;
+    gpuListPending_ = false;
+    const uint32_t requested = assignmentPass_->requestedEntries();
+    stats_.lightClusterPairs = requested - assignment_->directionalCount;
+    if (requested > gpuListCapacity_) {
+        ++stats_.lightListOverflows;
+        gpuListEntriesWanted_ = requested + requested / 4;
+    }
+    stats_.clustersOccupied = 0;
+    const auto* masks = static_cast<const uint64_t*>(occupancy_.mapped());
+    for (uint32_t t = 0; t < grid_->tileCount(); ++t) {
+        stats_.clustersOccupied += uint32_t(std::popcount(masks[t]));
+    }
+}
+
 void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
                            const FrameInputs& inputs, SceneResources& resources) {
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
@@ -218,15 +288,15 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
                     VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 
     stats_.lightAssignMs = 0.0;
+    gpuAssignTimed_ = false;
+    if (!depthRange_.handle()) {
+        depthRange_ = GpuBuffer(
+            context_, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+            MemoryLocation::HostVisible);
+    }
     if (features.clustered) {
-        // Geometry first: the occupancy masks must be on the CPU before lights are assigned.
         ensureBuffer(context_, occupancy_, VkDeviceSize(grid_->tileCount()) * 8);
         ensureBuffer(context_, clusterBounds_, VkDeviceSize(grid_->clusterCount()) * 24);
-        if (!depthRange_.handle()) {
-            depthRange_ = GpuBuffer(
-                context_, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                MemoryLocation::HostVisible);
-        }
         const glm::mat4& projection = inputs.scene.camera.projection;
         occupancyPass_->record(cmd, gbuffer_->depth, *grid_, {projection[0][0], projection[1][1]},
                                {&occupancy_, &clusterBounds_, &depthRange_});
@@ -240,6 +310,15 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
                                                grid_.get(),
                                                {projection[0][0], projection[1][1]}});
         }
+    }
+    if (features.clustered && assignmentPass_) {
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+        recordGpuAssignment(cmd, inputs);
+        gpuAssignTimed_ = true;
+    } else if (features.clustered) {
+        // Geometry first: the occupancy masks must be on the CPU before lights are assigned.
         computeToHostBarrier(cmd);
         submitter.submit();
         submitter.waitIdle();
@@ -257,9 +336,11 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
 
     vkCmdResetQueryPool(cmd, timestamps_, 0, 2);
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, 0);
-    LightingPass::Inputs lighting{
-        gbuffer_.get(), &hdr_,        &cameraBuffer_, &lights_->buffer(),           &clusterRanges_,
-        &lightIndices_, &pairCounts_, grid_.get(),    assignment_->directionalCount};
+    LightingPass::Inputs lighting{gbuffer_.get(),  &hdr_,
+                                  &cameraBuffer_,  &lights_->buffer(),
+                                  &clusterRanges_, &lightIndices_,
+                                  &pairCounts_,    &depthRange_,
+                                  grid_.get(),     assignment_->directionalCount};
     lightingPass_->record(cmd, lighting);
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_, 1);
     timestampsWritten_ = true;
@@ -315,6 +396,15 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
 
 const RendererStats& Renderer::collectStats() {
     stats_.lightingMs = 0.0;
+    if (gpuAssignTimed_) {
+        absorbGpuListUsage();
+        uint64_t ticks[2] = {0, 0};
+        if (vkGetQueryPoolResults(context_.device(), timestamps_, 2, 2, sizeof(ticks), ticks,
+                                  sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS) {
+            stats_.lightAssignMs =
+                double(ticks[1] - ticks[0]) * context_.properties().limits.timestampPeriod * 1e-6;
+        }
+    }
     if (timestampsWritten_) {
         uint64_t ticks[2] = {0, 0};
         if (vkGetQueryPoolResults(context_.device(), timestamps_, 0, 2, sizeof(ticks), ticks,

@@ -125,6 +125,27 @@ void expectClusteredMatchesBruteForce(size_t lightCount, uint32_t size) {
     // Culling may only skip pairs that add nothing.
     EXPECT_EQ(clusteredStats.litPairs, bruteStats.litPairs);
     EXPECT_LT(clusteredStats.lightEvaluations, bruteStats.lightEvaluations);
+
+    // The compute-shader assignment: the same image as brute force and as the CPU lists.
+    RendererOptions device = clustered;
+    device.lightAssignment = LightAssignmentDevice::Gpu;
+    RendererStats deviceStats;
+    CapturedFrame c = scene.render(context, device, &deviceStats);
+    double deviceToBrute = maxRelativeDifference(c, b);
+    double deviceToCpu = maxRelativeDifference(c, a);
+    std::printf(
+        "  device lists: vs brute force %.3g, vs CPU lists %.3g, evaluations %llu, "
+        "pairs %llu (CPU %llu)\n",
+        deviceToBrute, deviceToCpu, (unsigned long long)deviceStats.lightEvaluations,
+        (unsigned long long)deviceStats.lightClusterPairs,
+        (unsigned long long)clusteredStats.lightClusterPairs);
+    EXPECT_LE(deviceToBrute, 1e-4);
+    EXPECT_LE(deviceToCpu, 1e-4);
+    EXPECT_EQ(c.nonFiniteHdrValues(), 0u);
+    EXPECT_EQ(deviceStats.litPairs, bruteStats.litPairs);
+    EXPECT_LT(deviceStats.lightEvaluations, bruteStats.lightEvaluations);
+    EXPECT_EQ(deviceStats.lightListOverflows, 0u);
+    EXPECT_GT(deviceStats.lightClusterPairs, 0u);
     EXPECT_EQ(context.validationMessages(), 0u);
 }
 
@@ -140,6 +161,31 @@ TEST(ClusteredLighting, MatchesBruteForceWith1024Lights) {
 
 TEST(ClusteredLighting, MatchesBruteForceWith16384Lights) {
     expectClusteredMatchesBruteForce(16384, 96);
+}
+
+// A device list buffer far too small for the frame: the clusters that do not fit evaluate every
+// light (the image still matches brute force), the overflow is counted, and the next frame's
+// buffer is large enough.
+TEST(ClusteredLighting, DeviceListOverflowDropsNoLightAndGrows) {
+    GpuContext context(requiredValidation());
+    TestScene scene = roomScene(96);
+    scene.lights = hardLights(256, 7);
+    RendererOptions bruteForce;
+    bruteForce.lightCulling = LightCulling::BruteForce;
+    CapturedFrame reference = scene.render(context, bruteForce);
+    RendererOptions device;
+    device.lightAssignment = LightAssignmentDevice::Gpu;
+    device.initialGpuLightListEntries = 64;
+    RendererStats first, second;
+    CapturedFrame overflowed = scene.render(context, device, &first);
+    EXPECT_EQ(first.lightListOverflows, 1u);
+    EXPECT_GT(first.lightClusterPairs, 64u);
+    EXPECT_LE(maxRelativeDifference(overflowed, reference), 1e-4);
+    CapturedFrame grown = scene.render(context, device, &second, 2);
+    EXPECT_EQ(second.lightListOverflows, 1u);  // only the first of the two frames
+    EXPECT_EQ(second.lightClusterPairs, first.lightClusterPairs);
+    EXPECT_LE(maxRelativeDifference(grown, reference), 1e-4);
+    EXPECT_EQ(context.validationMessages(), 0u);
 }
 
 namespace {

@@ -49,8 +49,9 @@ struct TestScene {
         camera.position = eye;
     }
 
+    // Renders `frames` frames with one renderer; returns the last (stats: of the last).
     CapturedFrame render(GpuContext& context, const RendererOptions& options = {},
-                         RendererStats* stats = nullptr) {
+                         RendererStats* stats = nullptr, uint32_t frames = 1) {
         SceneResources resources(context);
         const UploadedModel& uploaded = resources.addModel(model);
         draws.clear();
@@ -62,7 +63,7 @@ struct TestScene {
         inputs.scene.camera = camera;
         inputs.scene.draws = draws;
         inputs.scene.lights = lights;
-        return renderOffscreen(context, inputs, width, height, 1, &resources, options, stats);
+        return renderOffscreen(context, inputs, width, height, frames, &resources, options, stats);
     }
 
     // Where the ray through the centre of pixel (x, y) meets the plane y = planeY.

@@ -1,7 +1,8 @@
 #pragma once
 // Owns the frame's render targets and passes and runs one frame:
-//   G-buffer (+ emissive) -> depth occupancy -> light assignment (CPU) -> clustered
-//   deferred lighting -> forward transparency (blended draws only) -> exposure + tonemap.
+//   G-buffer (+ emissive) -> depth occupancy -> light assignment (CPU or compute) ->
+//   clustered deferred lighting -> forward transparency (blended draws only) -> exposure +
+//   tonemap.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -26,6 +27,7 @@ class FrameSubmitter;
 class GBufferPass;
 class GpuContext;
 class GpuLightBuffer;
+class LightAssignmentPass;
 class LightingPass;
 class SceneResources;
 class TonemapPass;
@@ -47,11 +49,12 @@ public:
     uint32_t height() const { return height_; }
     const RendererOptions& options() const { return options_; }
 
-    // Records the frame's passes. Clustered lighting submits the geometry part and waits for
-    // it (light assignment reads the depth occupancy on the CPU), then begins a new command
-    // buffer. Returns the open command buffer holding the rest of the frame: the caller may
-    // append (capture copy, swapchain blit) and submits it. Afterwards both targets are in
-    // TRANSFER_SRC_OPTIMAL. `resources` holds what the draws refer to (null: no meshes).
+    // Records the frame's passes. Clustered lighting with CPU assignment submits the geometry
+    // part and waits for it (assignment reads the depth occupancy on the CPU), then begins a
+    // new command buffer; device assignment records everything into one. Returns the open command
+    // buffer holding the rest of the frame: the caller may append (capture copy, swapchain blit)
+    // and submits it. Afterwards both targets are in TRANSFER_SRC_OPTIMAL. `resources` holds what
+    // the draws refer to (null: no meshes).
     VkCommandBuffer recordFrame(FrameSubmitter& submitter, const FrameInputs& inputs,
                                 SceneResources* resources);
 
@@ -70,6 +73,8 @@ private:
                      SceneResources& resources);
     void uploadFrameData(const FrameInputs& inputs);
     void assignLightsToClusters(const FrameInputs& inputs);
+    void recordGpuAssignment(VkCommandBuffer cmd, const FrameInputs& inputs);
+    void absorbGpuListUsage();
     void recordTonemap(VkCommandBuffer cmd, float ev100);
 
     GpuContext& context_;
@@ -91,10 +96,15 @@ private:
     GpuBuffer pairCounts_;  // uvec2 per lighting workgroup
     VkQueryPool timestamps_ = VK_NULL_HANDLE;
     bool timestampsWritten_ = false;
+    bool gpuAssignTimed_ = false;        // this frame assigned lights on the device
+    bool gpuListPending_ = false;        // its list usage is not read back yet
+    uint32_t gpuListCapacity_ = 0;       // index entries the device lists had this frame
+    uint32_t gpuListEntriesWanted_ = 0;  // what the next frame allocates
     std::unique_ptr<ecs::JobSystem> jobs_;
     std::unique_ptr<TrianglePass> trianglePass_;
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<DepthOccupancyPass> occupancyPass_;
+    std::unique_ptr<LightAssignmentPass> assignmentPass_;  // LightAssignmentDevice::Gpu only
     std::unique_ptr<LightingPass> lightingPass_;
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;

@@ -9,8 +9,18 @@ enum class LightCulling {
     BruteForce,  // every light at every pixel: the reference clustered output must match
 };
 
+// Where clustered lighting builds its per-cluster light lists (render/README.md compares both).
+enum class LightAssignmentDevice {
+    Cpu,  // job system, after a mid-frame wait for the depth occupancy
+    Gpu,  // compute shaders between the occupancy and lighting passes, no wait
+};
+
 struct RendererOptions {
     LightCulling lightCulling = LightCulling::Clustered;
+    LightAssignmentDevice lightAssignment = LightAssignmentDevice::Cpu;
+    // Device assignment: light index entries of the first frame's list buffer (0: a guess from
+    // the light count). Later frames size it from what the previous frame needed.
+    uint32_t initialGpuLightListEntries = 0;
     // Cluster tile in pixels and exponential depth slices (<= 64). 16 x 64 keeps culling
     // efficiency under 2 on the floor benchmark at 320x180 and up (render/README.md).
     uint32_t tileSize = 16;
@@ -27,11 +37,14 @@ struct RendererStats {
     uint32_t clusters = 0;
     uint32_t clustersOccupied = 0;
     uint64_t lightClusterPairs = 0;
-    double lightAssignMs = 0.0;       // CPU: assignment and list upload (not the geometry wait)
-    double lightingMs = 0.0;          // GPU timestamps around the lighting dispatch
-    uint64_t lightEvaluations = 0;    // light-pixel pairs the shader evaluated (countLightPairs)
-    uint64_t litPairs = 0;            // ... of which the light reaches the pixel
-    uint32_t lightListOverflows = 0;  // frames whose list buffer had to grow (nothing dropped)
+    double lightAssignMs = 0.0;     // CPU: assignment and list upload (not the geometry wait);
+                                    // GPU: timestamps around the assignment passes
+    double lightingMs = 0.0;        // GPU timestamps around the lighting dispatch
+    uint64_t lightEvaluations = 0;  // light-pixel pairs the shader evaluated (countLightPairs)
+    uint64_t litPairs = 0;          // ... of which the light reaches the pixel
+    // Frames whose list buffer had to grow (nothing dropped: the CPU path sizes the buffer
+    // before lighting; on the GPU path the overflowed clusters evaluated every light).
+    uint32_t lightListOverflows = 0;
 };
 
 }  // namespace candela::render

@@ -24,6 +24,13 @@ layout(std430, binding = 8) readonly buffer ClusterRanges { uint clusterRanges[]
 layout(std430, binding = 9) readonly buffer LightIndices { uint lightIndices[]; };
 // Per workgroup: evaluated pairs, lit pairs (each fits 32 bits: 64 pixels x 2^26 lights).
 layout(std430, binding = 10) writeonly buffer PairCounts { uvec2 pairCounts[]; };
+// The slicing the depth occupancy pass derived ([2] sliceNear, [3] logRatio as float bits):
+// read here rather than pushed, so lists assigned on the device need no host round trip.
+layout(std430, binding = 11) readonly buffer DepthRange { uint depthRange[]; };
+
+// A cluster whose list did not fit the device-assigned index buffer (light_assignment_pass.h):
+// it evaluates every light instead, so no light is ever dropped.
+const uint kListOverflow = 0xffffffffu;
 
 layout(push_constant) uniform Push {
     ClusterGridParams grid;
@@ -91,12 +98,21 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
         for (uint i = 0u; i < push.directionalCount; ++i) addLight(px, lightIndices[i]);
         uvec2 tile = uvec2(pixel) / push.grid.tileSize;
         float viewDepth = viewDepthFromNdc(depth, push.grid.projectionNear);
-        uint slice = sliceOfDepth(push.grid.sliceNear, push.grid.logRatio, push.grid.slices,
-                                  viewDepth);
+        uint slice = sliceOfDepth(uintBitsToFloat(depthRange[2]), uintBitsToFloat(depthRange[3]),
+                                  push.grid.slices, viewDepth);
         uint cluster = (slice * push.grid.tilesY + tile.y) * push.grid.tilesX + tile.x;
         uint first = clusterRanges[2u * cluster];
         uint count = clusterRanges[2u * cluster + 1u];
-        for (uint i = 0u; i < count; ++i) addLight(px, lightIndices[first + i]);
+        if (count == kListOverflow) {
+            for (uint i = 0u; i < camera.frameInfo.z; ++i) {
+                // Stream 3's w is the light type (light_buffer.glsl).
+                if (uint(lightData[3u * camera.frameInfo.w + i].w) != kLightDirectional) {
+                    addLight(px, i);
+                }
+            }
+        } else {
+            for (uint i = 0u; i < count; ++i) addLight(px, lightIndices[first + i]);
+        }
     } else {
         for (uint i = 0u; i < camera.frameInfo.z; ++i) addLight(px, i);
     }

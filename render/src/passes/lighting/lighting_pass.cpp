@@ -76,6 +76,7 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
         {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
         {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
         {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     };
     pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
     built_ = true;
@@ -91,6 +92,7 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
     VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo countsInfo{in.pairCounts->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     std::array<VkDescriptorImageInfo, 5> images{};
     for (size_t i = 0; i < 4; ++i) {
         images[i] = {pointSampler_, in.gbuffer->color[i].view(),
@@ -104,7 +106,7 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
         sampledImageWrite(4, &images[2]),    sampledImageWrite(5, &images[3]),
         sampledImageWrite(6, &images[4]),    storageImageWrite(7, &hdrInfo),
         storageBufferWrite(8, &rangesInfo),  storageBufferWrite(9, &indicesInfo),
-        storageBufferWrite(10, &countsInfo),
+        storageBufferWrite(10, &countsInfo), storageBufferWrite(11, &depthRangeInfo),
     };
     Push push{toGpu(*in.grid), in.directionalCount};
     pipeline_.bind(cmd);

@@ -49,6 +49,7 @@ public:
         const GpuBuffer* clusterRanges;
         const GpuBuffer* lightIndices;
         const GpuBuffer* pairCounts;
+        const GpuBuffer* depthRange;  // slicing from DepthOccupancyPass (clustered only)
         const ClusterGrid* grid;
         uint32_t directionalCount;
     };

@@ -1,0 +1,58 @@
+#pragma once
+// Light assignment in compute shaders: the same per-cluster lists as the CPU path
+// (clustered/light_assignment.h: offset + count per cluster, directional lights first, every
+// list in ascending light order), built on the device right after the depth occupancy pass,
+// so the frame needs no mid-frame wait. Passes: count (per light), allocate (per tile), write
+// (per light), sort (per cluster). The index buffer has a fixed capacity per frame; clusters
+// that do not fit are marked overflowed (the lighting pass then evaluates every light there)
+// and requestedEntries() tells the renderer how large to grow it.
+#include <glm/glm.hpp>
+
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/pipeline.h"
+#include "clustered/cluster_grid.h"
+
+namespace candela::render {
+
+class GpuContext;
+
+class LightAssignmentPass {
+public:
+    explicit LightAssignmentPass(GpuContext& context);
+
+    struct Inputs {
+        const GpuBuffer* lights;  // GpuLightBuffer's structure-of-arrays streams
+        uint32_t lightCount;
+        uint32_t lightCapacity;
+        glm::mat4 view;
+        const ClusterGrid* grid;  // tiles and slice count; slicing comes from depthRange
+        uint32_t width;
+        uint32_t height;
+        glm::vec2 projectionScale;   // projection[0][0], projection[1][1]
+        const GpuBuffer* tileMasks;  // DepthOccupancyPass outputs
+        const GpuBuffer* clusterBounds;
+        const GpuBuffer* depthRange;
+        const GpuBuffer* clusterRanges;  // out: uvec2 per cluster
+        const GpuBuffer* lightIndices;   // out: directional indices already in [0, count)
+        uint32_t lightIndexCapacity;     // entries lightIndices holds
+        uint32_t directionalCount;
+    };
+    // Reads the occupancy outputs after a compute barrier; leaves the lists for a later compute
+    // pass behind a compute barrier and requestedEntries() behind a host barrier.
+    void record(VkCommandBuffer cmd, const Inputs& inputs);
+
+    // Index entries the last completed frame asked for (directional lights included); more
+    // than its capacity means some clusters overflowed.
+    uint32_t requestedEntries() const;
+
+private:
+    GpuContext& context_;
+    Pipeline countPipeline_;
+    Pipeline writePipeline_;
+    Pipeline allocatePipeline_;
+    Pipeline sortPipeline_;
+    GpuBuffer clusterCounts_;  // per cluster: count, then the write cursor
+    GpuBuffer usage_;          // entries requested (host-visible)
+};
+
+}  // namespace candela::render
