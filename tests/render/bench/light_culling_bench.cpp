@@ -1,7 +1,8 @@
 // candela-bench-lights: clustered light culling against brute force, swept over light counts
 // on one scene family (a floor whose lights keep a constant density, so each pixel is touched
-// by a bounded number of lights however many the scene holds). Prints a markdown table; it
-// measures, it never fails on a number.
+// by a bounded number of lights however many the scene holds), with light assignment on the
+// CPU (job system) and in compute shaders, alternating in the same process. Prints a markdown
+// table; it measures, it never fails on a number.
 //
 //   build/bin/candela-bench-lights [--size WxH] [--max-lights N] [--brute-force-max N]
 //                                  [--repeat N]
@@ -22,8 +23,11 @@ namespace {
 
 struct Row {
     size_t lights;
-    double assignMs;
-    double lightingMs;
+    double cpuAssignMs;
+    double gpuAssignMs;
+    double assignRatio;  // median of the per-repetition GPU / CPU ratios
+    double cpuLightingMs;
+    double gpuLightingMs;
     double efficiency;
     double bruteForceMs;  // < 0: not measured
 };
@@ -56,34 +60,47 @@ int main(int argc, char** argv) {
     size_t maxLights = 65536, bruteForceMax = 1024;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!std::strcmp(argv[i], "--size")) std::sscanf(argv[i + 1], "%ux%u", &width, &height);
-        if (!std::strcmp(argv[i], "--max-lights")) maxLights = std::strtoull(argv[i + 1], nullptr, 10);
+        if (!std::strcmp(argv[i], "--max-lights"))
+            maxLights = std::strtoull(argv[i + 1], nullptr, 10);
         if (!std::strcmp(argv[i], "--brute-force-max")) {
             bruteForceMax = std::strtoull(argv[i + 1], nullptr, 10);
         }
-        if (!std::strcmp(argv[i], "--repeat")) repeat = uint32_t(std::strtoul(argv[i + 1], nullptr, 10));
+        if (!std::strcmp(argv[i], "--repeat"))
+            repeat = uint32_t(std::strtoul(argv[i + 1], nullptr, 10));
     }
     GpuContextOptions contextOptions;
     contextOptions.validation = ValidationMode::Off;  // timing run
     GpuContext context(contextOptions);
     std::printf("device: %s, %ux%u, medians of %u frames\n\n", context.deviceName().c_str(), width,
                 height, repeat);
-    std::printf("| lights | assign ms | lighting ms | evaluated / lit | brute-force lighting ms |\n");
-    std::printf("|---:|---:|---:|---:|---:|\n");
+    std::printf(
+        "| lights | CPU assign ms | GPU assign ms | GPU / CPU | lighting ms (CPU lists) | "
+        "lighting ms (GPU lists) | evaluated / lit | brute-force lighting ms |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (size_t count = 16; count <= maxLights; count *= 4) {
         TestScene scene = floorScene(count, width, height);
-        Row row{count, 0, 0, 0, -1};
-        std::vector<double> assign, lighting, brute;
+        Row row{count, 0, 0, 0, 0, 0, 0, -1};
+        std::vector<double> cpuAssign, gpuAssign, ratio, cpuLighting, gpuLighting, brute;
+        RendererOptions cpu, gpu;  // timing without pair counters
+        cpu.lightAssignment = LightAssignmentDevice::Cpu;
+        gpu.lightAssignment = LightAssignmentDevice::Gpu;
         for (uint32_t r = 0; r < repeat; ++r) {
-            RendererStats stats;
-            scene.render(context, {}, &stats);  // timing without pair counters
-            assign.push_back(stats.lightAssignMs);
-            lighting.push_back(stats.lightingMs);
+            RendererStats cpuStats, gpuStats;
+            scene.render(context, cpu, &cpuStats, 2);
+            scene.render(context, gpu, &gpuStats, 2);
+            if (gpuStats.lightListOverflows) std::fprintf(stderr, "GPU list overflow\n");
+            cpuAssign.push_back(cpuStats.lightAssignMs);
+            gpuAssign.push_back(gpuStats.lightAssignMs);
+            ratio.push_back(gpuStats.lightAssignMs / std::max(cpuStats.lightAssignMs, 1e-9));
+            cpuLighting.push_back(cpuStats.lightingMs);
+            gpuLighting.push_back(gpuStats.lightingMs);
         }
         RendererOptions counting;
         counting.countLightPairs = true;
         RendererStats counted;
         scene.render(context, counting, &counted);
-        row.efficiency = double(counted.lightEvaluations) / double(std::max<uint64_t>(counted.litPairs, 1));
+        row.efficiency =
+            double(counted.lightEvaluations) / double(std::max<uint64_t>(counted.litPairs, 1));
         if (count <= bruteForceMax) {
             RendererOptions bruteForce;
             bruteForce.lightCulling = LightCulling::BruteForce;
@@ -94,12 +111,17 @@ int main(int argc, char** argv) {
             }
             row.bruteForceMs = median(brute);
         }
-        row.assignMs = median(assign);
-        row.lightingMs = median(lighting);
+        row.cpuAssignMs = median(cpuAssign);
+        row.gpuAssignMs = median(gpuAssign);
+        row.assignRatio = median(ratio);
+        row.cpuLightingMs = median(cpuLighting);
+        row.gpuLightingMs = median(gpuLighting);
         char bruteText[32] = "not run";
-        if (row.bruteForceMs >= 0) std::snprintf(bruteText, sizeof(bruteText), "%.1f", row.bruteForceMs);
-        std::printf("| %zu | %.2f | %.1f | %.2f | %s |\n", row.lights, row.assignMs, row.lightingMs,
-                    row.efficiency, bruteText);
+        if (row.bruteForceMs >= 0)
+            std::snprintf(bruteText, sizeof(bruteText), "%.1f", row.bruteForceMs);
+        std::printf("| %zu | %.2f | %.2f | %.2f | %.1f | %.1f | %.2f | %s |\n", row.lights,
+                    row.cpuAssignMs, row.gpuAssignMs, row.assignRatio, row.cpuLightingMs,
+                    row.gpuLightingMs, row.efficiency, bruteText);
         std::fflush(stdout);
     }
     return 0;

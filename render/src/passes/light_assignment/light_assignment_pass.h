@@ -3,7 +3,7 @@
 // (clustered/light_assignment.h: offset + count per cluster, directional lights first, every
 // list in ascending light order), built on the device right after the depth occupancy pass,
 // so the frame needs no mid-frame wait. Passes: count (per light), allocate (per tile), write
-// (per light), sort (per cluster). The index buffer has a fixed capacity per frame; clusters
+// (per light), sort (per tile). The index buffer has a fixed capacity per frame; clusters
 // that do not fit are marked overflowed (the lighting pass then evaluates every light there)
 // and requestedEntries() tells the renderer how large to grow it.
 #include <glm/glm.hpp>
@@ -32,7 +32,7 @@ public:
         const GpuBuffer* tileMasks;  // DepthOccupancyPass outputs
         const GpuBuffer* clusterBounds;
         const GpuBuffer* depthRange;
-        const GpuBuffer* clusterRanges;  // out: uvec2 per cluster
+        const GpuBuffer* clusterRanges;  // out: uvec2 per cluster (host-visible)
         const GpuBuffer* lightIndices;   // out: directional indices already in [0, count)
         uint32_t lightIndexCapacity;     // entries lightIndices holds
         uint32_t directionalCount;
@@ -51,8 +51,14 @@ private:
     Pipeline writePipeline_;
     Pipeline allocatePipeline_;
     Pipeline sortPipeline_;
-    GpuBuffer clusterCounts_;  // per cluster: count, then the write cursor
+    GpuBuffer clusterCounts_;  // per cluster: count, then the write cursor; zero between frames
     GpuBuffer usage_;          // entries requested (host-visible)
+    GpuBuffer previousMasks_;  // each tile's occupancy mask of the previous frame
+    // The layout the persistent buffers hold; a change starts them from zeros.
+    uint32_t tilesX_ = 0;
+    uint32_t tilesY_ = 0;
+    uint32_t slices_ = 0;
+    VkBuffer ranges_ = VK_NULL_HANDLE;
 };
 
 }  // namespace candela::render
