@@ -159,9 +159,15 @@ void Renderer::assignLightsToClusters(const FrameInputs& inputs) {
     occupancy.tileMasks = {static_cast<const uint64_t*>(occupancy_.mapped()), grid_->tileCount()};
     occupancy.pixelBounds = {static_cast<const float*>(clusterBounds_.mapped()),
                              size_t(grid_->clusterCount()) * 6};
+    // Ranges are written in place, only for the clusters that changed (light_assignment.h): a
+    // new buffer starts from zeros.
+    if (ensureBuffer(context_, clusterRanges_, VkDeviceSize(grid_->clusterCount()) * 8)) {
+        std::memset(clusterRanges_.mapped(), 0, clusterRanges_.size());
+        assignment_->rangedClusters.clear();
+    }
     assignLights(*grid_, inputs.scene.lights, inputs.scene.camera.view, occupancy, jobs_.get(),
+                 {static_cast<uint32_t*>(clusterRanges_.mapped()), clusterRanges_.size() / 4},
                  *assignment_);
-    ensureBuffer(context_, clusterRanges_, assignment_->clusterRanges.size() * sizeof(uint32_t));
     // The lists are sized exactly each frame, so a light is never dropped; growing the buffer
     // is what the overflow counter reports.
     if (ensureBuffer(context_, lightIndices_,
@@ -169,8 +175,6 @@ void Renderer::assignLightsToClusters(const FrameInputs& inputs) {
         !assignment_->lightIndices.empty()) {
         ++stats_.lightListOverflows;
     }
-    std::memcpy(clusterRanges_.mapped(), assignment_->clusterRanges.data(),
-                assignment_->clusterRanges.size() * sizeof(uint32_t));
     std::memcpy(lightIndices_.mapped(), assignment_->lightIndices.data(),
                 assignment_->lightIndices.size() * sizeof(uint32_t));
     stats_.clusters = grid_->clusterCount();

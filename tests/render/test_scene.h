@@ -49,10 +49,8 @@ struct TestScene {
         camera.position = eye;
     }
 
-    // Renders `frames` frames with one renderer; returns the last (stats: of the last).
-    CapturedFrame render(GpuContext& context, const RendererOptions& options = {},
-                         RendererStats* stats = nullptr, uint32_t frames = 1) {
-        SceneResources resources(context);
+    // Uploads the model into `resources` and returns the frame that draws it.
+    FrameInputs prepare(SceneResources& resources) {
         const UploadedModel& uploaded = resources.addModel(model);
         draws.clear();
         for (size_t m = 0; m < model.meshes.size(); ++m) {
@@ -63,6 +61,14 @@ struct TestScene {
         inputs.scene.camera = camera;
         inputs.scene.draws = draws;
         inputs.scene.lights = lights;
+        return inputs;
+    }
+
+    // Renders `frames` frames with one renderer; returns the last (stats: of the last).
+    CapturedFrame render(GpuContext& context, const RendererOptions& options = {},
+                         RendererStats* stats = nullptr, uint32_t frames = 1) {
+        SceneResources resources(context);
+        FrameInputs inputs = prepare(resources);
         return renderOffscreen(context, inputs, width, height, frames, &resources, options, stats);
     }
 

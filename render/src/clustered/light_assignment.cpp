@@ -15,10 +15,23 @@ namespace {
 constexpr float kSliceDepthMargin = 1e-3f;
 constexpr float kPixelBoundsMargin = 1e-4f;  // relative to depth
 
-// Light-cluster pairs found by one job, in ascending light order.
+// Light-cluster pairs found by one job, in ascending light order. Clusters are numbered
+// compactly over the occupied ones (see OccupiedNumbering).
 struct PairList {
     std::vector<uint32_t> cluster;
     std::vector<uint32_t> light;
+};
+
+// Occupied clusters numbered tile by tile, slices ascending: tile t's clusters start at
+// firstOfTile[t], and slice k is the popcount of the tile's mask below bit k after that.
+struct OccupiedNumbering {
+    std::span<const uint64_t> masks;
+    std::vector<uint32_t> firstOfTile;  // tileCount + 1 entries
+
+    uint32_t compact(uint32_t tile, uint32_t slice) const {
+        return firstOfTile[tile] +
+               uint32_t(std::popcount(masks[tile] & ((uint64_t(1) << slice) - 1)));
+    }
 };
 
 // Index range [first, last] of the sorted boundaries that intervals [lo, hi] overlap.
@@ -38,7 +51,8 @@ void tileRange(const std::vector<float>& boundaries, float lo, float hi, bool de
 }
 
 void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightIndex,
-               const ClusterOccupancy& occupancy, PairList& out) {
+               const ClusterOccupancy& occupancy, const OccupiedNumbering& numbering,
+               PairList& out) {
     const float centerDepth = -b.center.z;
     const float nearDepth = centerDepth - b.radius;
     const float farDepth = centerDepth + b.radius;
@@ -82,9 +96,7 @@ void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightInde
             }
             for (uint32_t x = x0; x <= x1; ++x) {
                 const uint32_t tile = y * grid.tilesX + x;
-                if (!occupancy.tileMasks.empty() && !(occupancy.tileMasks[tile] >> k & 1u)) {
-                    continue;
-                }
+                if (!(numbering.masks[tile] >> k & 1u)) continue;
                 const float left = grid.columnTangent[x], right = grid.columnTangent[x + 1];
                 if (!lightReachesPositiveSide(b, glm::normalize(glm::vec3(1.0f, 0.0f, left))) ||
                     !lightReachesPositiveSide(b, glm::normalize(glm::vec3(-1.0f, 0.0f, -right)))) {
@@ -109,7 +121,7 @@ void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightInde
                                    -z0);
                 }
                 if (!lightTouchesBox(b, lo, hi)) continue;
-                out.cluster.push_back(cluster);
+                out.cluster.push_back(numbering.compact(tile, k));
                 out.light.push_back(lightIndex);
             }
         }
@@ -120,7 +132,7 @@ void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightInde
 
 void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights,
                   const glm::mat4& view, const ClusterOccupancy& occupancy, ecs::JobSystem* jobs,
-                  LightAssignment& out) {
+                  std::span<uint32_t> clusterRanges, LightAssignment& out) {
     out.lightIndices.clear();
     out.directionalCount = 0;
     for (uint32_t i = 0; i < lights.size(); ++i) {
@@ -129,6 +141,24 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
             ++out.directionalCount;
         }
     }
+
+    // Without depth refinement every cluster counts as occupied.
+    const uint32_t tileCount = grid.tileCount();
+    std::vector<uint64_t> everySlice;
+    OccupiedNumbering numbering;
+    numbering.masks = occupancy.tileMasks;
+    if (numbering.masks.empty()) {
+        const uint64_t all = grid.slices >= 64 ? ~uint64_t(0) : (uint64_t(1) << grid.slices) - 1;
+        everySlice.assign(tileCount, all);
+        numbering.masks = everySlice;
+    }
+    numbering.firstOfTile.resize(size_t(tileCount) + 1);
+    uint32_t occupied = 0;
+    for (uint32_t t = 0; t < tileCount; ++t) {
+        numbering.firstOfTile[t] = occupied;
+        occupied += uint32_t(std::popcount(numbering.masks[t]));
+    }
+    numbering.firstOfTile[tileCount] = occupied;
 
     // Chunks of lights in order; each job fills its own pair list.
     constexpr size_t kLightsPerJob = 512;
@@ -141,7 +171,8 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
             const size_t last = std::min(first + kLightsPerJob, lights.size());
             for (size_t i = first; i < last; ++i) {
                 if (lights[i].light.type == content::LightType::Directional) continue;
-                assignOne(grid, lightBoundsInView(lights[i], view), uint32_t(i), occupancy, list);
+                assignOne(grid, lightBoundsInView(lights[i], view), uint32_t(i), occupancy,
+                          numbering, list);
             }
         }
     };
@@ -151,38 +182,45 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
         work(0, jobCount);
     }
 
-    // Counting sort by cluster, visiting jobs in light order: lists stay ascending.
-    const uint32_t clusters = grid.clusterCount();
-    out.clusterRanges.assign(size_t(clusters) * 2, 0);
+    // Counting sort over the occupied clusters, visiting jobs in light order: lists stay
+    // ascending.
+    std::vector<uint32_t> cursor(occupied, 0);
     size_t total = 0;
     for (const PairList& list : pairs) {
         for (uint32_t c : list.cluster)
-            ++out.clusterRanges[c * 2 + 1];
+            ++cursor[c];
         total += list.cluster.size();
     }
     uint32_t offset = uint32_t(out.lightIndices.size());
-    for (uint32_t c = 0; c < clusters; ++c) {
-        out.clusterRanges[c * 2] = offset;
-        offset += out.clusterRanges[c * 2 + 1];
+    for (uint32_t c = 0; c < occupied; ++c) {
+        const uint32_t count = cursor[c];
+        cursor[c] = offset;
+        offset += count;
+    }
+    // Ranges: reset what the last call wrote, then write every occupied cluster's.
+    for (uint32_t cluster : out.rangedClusters) {
+        clusterRanges[size_t(cluster) * 2] = 0;
+        clusterRanges[size_t(cluster) * 2 + 1] = 0;
+    }
+    out.rangedClusters.clear();
+    uint32_t c = 0;
+    for (uint32_t t = 0; t < tileCount; ++t) {
+        for (uint64_t bits = numbering.masks[t]; bits; bits &= bits - 1, ++c) {
+            const uint32_t cluster = uint32_t(std::countr_zero(bits)) * tileCount + t;
+            const uint32_t end = c + 1 < occupied ? cursor[c + 1] : offset;
+            clusterRanges[size_t(cluster) * 2] = cursor[c];
+            clusterRanges[size_t(cluster) * 2 + 1] = end - cursor[c];
+            out.rangedClusters.push_back(cluster);
+        }
     }
     out.lightIndices.resize(out.directionalCount + total);
-    std::vector<uint32_t> cursor(clusters);
-    for (uint32_t c = 0; c < clusters; ++c)
-        cursor[c] = out.clusterRanges[c * 2];
     for (const PairList& list : pairs) {
         for (size_t i = 0; i < list.cluster.size(); ++i) {
             out.lightIndices[cursor[list.cluster[i]]++] = list.light[i];
         }
     }
     out.assignedPairs = uint32_t(total);
-    out.occupiedClusters = 0;
-    if (occupancy.tileMasks.empty()) {
-        out.occupiedClusters = clusters;
-    } else {
-        for (uint64_t mask : occupancy.tileMasks) {
-            out.occupiedClusters += uint32_t(std::popcount(mask));
-        }
-    }
+    out.occupiedClusters = occupied;
 }
 
 }  // namespace candela::render

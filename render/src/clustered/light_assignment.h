@@ -3,6 +3,8 @@
 // its bounds (slice range, then per-slice tile range from the sphere's cross-section), tests
 // each against its bounds and the plane/box of the cell, and skips cells with no geometry.
 // Lists keep lights in ascending index order, so the shader sums exactly as brute force does.
+// Per-cluster work touches only occupied clusters: pairs are sorted over a compact numbering
+// of them (tile-major, from the occupancy masks), and only their ranges are written.
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <span>
@@ -18,10 +20,11 @@ class JobSystem;
 namespace candela::render {
 
 struct LightAssignment {
-    // Per cluster: offset into lightIndices and count (2 uints per cluster).
-    std::vector<uint32_t> clusterRanges;
     // Directional lights first (they reach every pixel), then every cluster's list.
     std::vector<uint32_t> lightIndices;
+    // Clusters whose range the last call wrote (the occupied ones); the next call resets
+    // those it does not write again. Clear it when handing assignLights zeroed ranges.
+    std::vector<uint32_t> rangedClusters;
     uint32_t directionalCount = 0;
     uint32_t occupiedClusters = 0;  // clusters holding geometry (all, without occupancy)
     uint32_t assignedPairs = 0;     // light-cluster pairs in the lists
@@ -36,8 +39,11 @@ struct ClusterOccupancy {
     std::span<const float> pixelBounds;
 };
 
+// clusterRanges: per cluster, offset into lightIndices and count (2 uints per cluster; the
+// lighting shader reads it). It must hold what the previous call with the same `out` left
+// there, or zeros; clusters without geometry keep a zero range.
 void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights,
                   const glm::mat4& view, const ClusterOccupancy& occupancy, ecs::JobSystem* jobs,
-                  LightAssignment& out);
+                  std::span<uint32_t> clusterRanges, LightAssignment& out);
 
 }  // namespace candela::render
