@@ -156,6 +156,7 @@ int Application::runSession(bool headless, std::uint32_t frames) {
         s.context = std::make_unique<render::GpuContext>(gpuOptions);
         render::RendererOptions rendererOptions;
         rendererOptions.lightCulling = options_.lightCulling;
+        rendererOptions.lightAssignment = options_.lightAssignment;
         rendererOptions.countLightPairs = options_.countLightPairs;
         s.renderer = std::make_unique<render::Renderer>(*s.context, options_.width, options_.height,
                                                         rendererOptions);

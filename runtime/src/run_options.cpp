@@ -37,9 +37,9 @@ std::string runUsage() {
     return "usage: candela run <scene.json|scene.gltf|scene.glb|builtin:triangle> [--headless]\n"
            "                   [--size WxH] [--frames N] [--capture FILE.exr|FILE.png]...\n"
            "                   [--stats FILE.json] [--lights clustered|brute-force]\n"
-           "                   [--validation off|on|require] [--step SECONDS]\n"
-           "                   [--capture-each DIR] [--summary FILE.md] [--input SCRIPT]\n"
-           "                   [--overlay|--no-overlay]\n"
+           "                   [--light-assign cpu|gpu] [--validation off|on|require]\n"
+           "                   [--step SECONDS] [--capture-each DIR] [--summary FILE.md]\n"
+           "                   [--input SCRIPT] [--overlay|--no-overlay]\n"
            "       candela demo [same options]\n";
 }
 
@@ -87,6 +87,14 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
                 options.lightCulling = render::LightCulling::BruteForce;
             else
                 return fail("--lights needs clustered or brute-force, got '" + v + "'");
+        } else if (arg == "--light-assign") {
+            if (!value(v)) return fail("--light-assign needs cpu or gpu");
+            if (v == "cpu")
+                options.lightAssignment = render::LightAssignmentDevice::Cpu;
+            else if (v == "gpu")
+                options.lightAssignment = render::LightAssignmentDevice::Gpu;
+            else
+                return fail("--light-assign needs cpu or gpu, got '" + v + "'");
         } else if (arg == "--validation") {
             if (!value(v)) return fail("--validation needs off, on or require");
             if (v == "off")

@@ -27,6 +27,7 @@ struct RunOptions {
     std::optional<std::filesystem::path> inputScript;
     std::optional<bool> overlay;  // --overlay / --no-overlay (default: demo in a window)  //
                                   // --input SCRIPT: recorded input
+    render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Cpu;
 };
 
 struct ParseResult {

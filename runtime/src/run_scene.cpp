@@ -62,6 +62,7 @@ int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>>
         options.stats.has_value() || options.summary.has_value() || !layers.empty();
     app.validation = options.validation;
     app.lightCulling = options.lightCulling;
+    app.lightAssignment = options.lightAssignment;
 
     const double step = app.fixedStepSeconds;
     Application application(std::move(app));

@@ -222,6 +222,24 @@ TEST(Cli, BadStepAndCaptureEachAreRejected) {
     EXPECT_NE(r.output.find("--capture-each needs --frames"), std::string::npos) << r.output;
 }
 
+// Light lists built in compute shaders are the CPU's lists, in the same order: the same bytes.
+TEST(Cli, DeviceLightAssignmentGivesTheSameImage) {
+    auto dir = tempDir();
+    for (const char* device : {"cpu", "gpu"}) {
+        RunResult r = runCandela(std::string("demo --headless --size 160x90 --frames 2 ") +
+                                 "--light-assign " + device + " --capture " +
+                                 (dir / (std::string("assign_") + device + ".exr")).string());
+        ASSERT_EQ(r.exitCode, 0) << device << ": " << r.output;
+    }
+    std::string cpu = readBytes(dir / "assign_cpu.exr");
+    EXPECT_FALSE(cpu.empty());
+    EXPECT_EQ(cpu, readBytes(dir / "assign_gpu.exr"));
+    RunResult bad = runCandela(kTriangle + "--light-assign tpu");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("--light-assign needs cpu or gpu, got 'tpu'"), std::string::npos)
+        << bad.output;
+}
+
 // The engine scene files in tests/scenes load (glTF references, lights, camera, material
 // overrides) and render clean; the overrides switch on their shading models.
 TEST(Cli, EngineSceneFilesRender) {

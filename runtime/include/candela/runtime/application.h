@@ -60,6 +60,7 @@ struct ApplicationOptions {
     bool countLightPairs = false;  // renderer counts light-pixel pairs (stats' culling figures)
     render::ValidationMode validation = render::ValidationMode::IfPresent;
     render::LightCulling lightCulling = render::LightCulling::Clustered;
+    render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Cpu;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
