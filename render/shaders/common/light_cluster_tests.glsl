@@ -2,6 +2,8 @@
 // render/src/clustered/light_bounds.cpp (same shapes, same slack), so the GPU and CPU paths
 // keep the same lights. Every test is conservative: it may keep a light that adds nothing,
 // never drop one that adds something (eq. 9's window reaches zero at attenuationRadius).
+// Only assign_lights.comp includes it; it lives in common/ because the shader build tracks
+// included files there.
 #ifndef CANDELA_LIGHT_CLUSTER_TESTS_GLSL
 #define CANDELA_LIGHT_CLUSTER_TESTS_GLSL
 

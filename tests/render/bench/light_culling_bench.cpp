@@ -5,7 +5,10 @@
 // table; it measures, it never fails on a number.
 //
 //   build/bin/candela-bench-lights [--size WxH] [--max-lights N] [--brute-force-max N]
-//                                  [--repeat N]
+//                                  [--repeat N] [--frames N]
+//
+// --frames: frames each renderer draws; the last is timed (default 2: warm pipelines and
+// buffers; 1 times a fresh renderer's first frame, as the benchmark did before).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -56,7 +59,7 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    uint32_t width = 1280, height = 720, repeat = 3;
+    uint32_t width = 1280, height = 720, repeat = 3, frames = 2;
     size_t maxLights = 65536, bruteForceMax = 1024;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!std::strcmp(argv[i], "--size")) std::sscanf(argv[i + 1], "%ux%u", &width, &height);
@@ -67,12 +70,15 @@ int main(int argc, char** argv) {
         }
         if (!std::strcmp(argv[i], "--repeat"))
             repeat = uint32_t(std::strtoul(argv[i + 1], nullptr, 10));
+        if (!std::strcmp(argv[i], "--frames")) {
+            frames = std::max(1u, uint32_t(std::strtoul(argv[i + 1], nullptr, 10)));
+        }
     }
     GpuContextOptions contextOptions;
     contextOptions.validation = ValidationMode::Off;  // timing run
     GpuContext context(contextOptions);
-    std::printf("device: %s, %ux%u, medians of %u frames\n\n", context.deviceName().c_str(), width,
-                height, repeat);
+    std::printf("device: %s, %ux%u, medians of %u repetitions, frame %u of each\n\n",
+                context.deviceName().c_str(), width, height, repeat, frames);
     std::printf(
         "| lights | CPU assign ms | GPU assign ms | GPU / CPU | lighting ms (CPU lists) | "
         "lighting ms (GPU lists) | evaluated / lit | brute-force lighting ms |\n");
@@ -86,8 +92,8 @@ int main(int argc, char** argv) {
         gpu.lightAssignment = LightAssignmentDevice::Gpu;
         for (uint32_t r = 0; r < repeat; ++r) {
             RendererStats cpuStats, gpuStats;
-            scene.render(context, cpu, &cpuStats, 2);
-            scene.render(context, gpu, &gpuStats, 2);
+            scene.render(context, cpu, &cpuStats, frames);
+            scene.render(context, gpu, &gpuStats, frames);
             if (gpuStats.lightListOverflows) std::fprintf(stderr, "GPU list overflow\n");
             cpuAssign.push_back(cpuStats.lightAssignMs);
             gpuAssign.push_back(gpuStats.lightAssignMs);

@@ -4,8 +4,9 @@
 // clustered sum is the brute-force sum with zeros left out (the CPU path's order) and every
 // frame is deterministic. Lists are short (tens of lights), so an insertion sort in place is
 // enough. It also zeroes the write cursors, so the counts start at zero next frame without a
-// fill. (One invocation walking all of a tile's clusters left some lists unsorted on lavapipe
-// in the 16,384-light test; one invocation per cluster does not.)
+// fill. (A variant with one invocation walking all of a tile's clusters gave images that
+// changed run to run in the 16,384-light test on lavapipe, cause not found; one invocation
+// per cluster is deterministic there.)
 
 layout(local_size_x = 64) in;
 
