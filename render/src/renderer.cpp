@@ -353,7 +353,7 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
         transparentPass_->recordShading(
             cmd, resources,
             {&hdr_, &gbuffer_->depth, &cameraBuffer_, &lights_->buffer(), &clusterRanges_,
-             &lightIndices_, grid_.get(), assignment_->directionalCount});
+             &lightIndices_, &depthRange_, grid_.get(), assignment_->directionalCount});
         features_.push_back("forward_transparency");
     }
 }

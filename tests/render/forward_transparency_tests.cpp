@@ -209,6 +209,11 @@ static void expectClusteredMatchesBruteForceOnBlendedSquare(bool withOpaqueFloor
     }
     std::printf("clustered vs brute force: worst relative difference %.3g\n", worst);
     EXPECT_LE(worst, 1e-4);
+    // Lists assigned in compute shaders are the CPU's lists: the same image, bit for bit.
+    RendererOptions device;
+    device.lightAssignment = LightAssignmentDevice::Gpu;
+    CapturedFrame deviceAssigned = scene.render(context, {0, 1}, device);
+    EXPECT_EQ(deviceAssigned.hdrRgb, clustered.hdrRgb);
     EXPECT_EQ(context.validationMessages(), 0u);
 }
 

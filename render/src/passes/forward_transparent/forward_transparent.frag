@@ -17,6 +17,12 @@ layout(constant_id = 30) const bool kClustered = true;
 
 layout(std430, binding = 16) readonly buffer ClusterRanges { uint clusterRanges[]; };
 layout(std430, binding = 17) readonly buffer LightIndices { uint lightIndices[]; };
+// The frame's slicing from depth_occupancy.comp ([2] sliceNear, [3] logRatio as float bits):
+// read here, as lists assigned on the device leave the host without it.
+layout(std430, binding = 18) readonly buffer DepthRange { uint depthRange[]; };
+
+// A cluster whose device-assigned list did not fit (light_assignment_pass.h): every light.
+const uint kListOverflow = 0xffffffffu;
 
 layout(push_constant) uniform Draw {
     mat4 world;
@@ -75,13 +81,22 @@ void main() {
             // every light that reaches this depth.
             uvec2 tile = uvec2(gl_FragCoord.xy) / draw.grid.tileSize;
             float viewDepth = viewDepthFromNdc(gl_FragCoord.z, draw.grid.projectionNear);
-            uint slice = sliceOfDepth(draw.grid.sliceNear, draw.grid.logRatio, draw.grid.slices,
-                                      viewDepth);
+            uint slice = sliceOfDepth(uintBitsToFloat(depthRange[2]),
+                                      uintBitsToFloat(depthRange[3]), draw.grid.slices, viewDepth);
             uint cluster = (slice * draw.grid.tilesY + tile.y) * draw.grid.tilesX + tile.x;
             uint first = clusterRanges[2u * cluster];
             uint count = clusterRanges[2u * cluster + 1u];
-            for (uint i = 0u; i < count; ++i) {
-                radiance += lightRadiance(surface, P, N, V, R, alpha, lightIndices[first + i]);
+            if (count == kListOverflow) {
+                for (uint i = 0u; i < camera.frameInfo.z; ++i) {
+                    // Stream 3's w is the light type (light_buffer.glsl).
+                    if (uint(lightData[3u * camera.frameInfo.w + i].w) != kLightDirectional) {
+                        radiance += lightRadiance(surface, P, N, V, R, alpha, i);
+                    }
+                }
+            } else {
+                for (uint i = 0u; i < count; ++i) {
+                    radiance += lightRadiance(surface, P, N, V, R, alpha, lightIndices[first + i]);
+                }
             }
         } else {
             for (uint i = 0u; i < camera.frameInfo.z; ++i) {

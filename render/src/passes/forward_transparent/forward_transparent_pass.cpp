@@ -39,6 +39,7 @@ constexpr uint32_t kMaterialsBinding = 2;
 constexpr uint32_t kFirstTextureBinding = 3;
 constexpr uint32_t kClusterRangesBinding = 16;
 constexpr uint32_t kLightIndicesBinding = 17;
+constexpr uint32_t kDepthRangeBinding = 18;
 static_assert(kFirstTextureBinding + kTextureSlotCount <= kClusterRangesBinding);
 
 // Specialization constants shared with the lighting pass (shading_models.glsl, lights.glsl,
@@ -140,6 +141,7 @@ void ForwardTransparentPass::buildShadingPipeline() {
         {kMaterialsBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
         {kClusterRangesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
         {kLightIndicesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {kDepthRangeBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
         bindings.push_back({kFirstTextureBinding + slot, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
@@ -280,6 +282,7 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
     VkDescriptorBufferInfo materialInfo{materials.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     DrawPush push{};
     push.directionalCount = in.directionalCount;
     push.grid = toGpu(*in.grid);
@@ -293,7 +296,8 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
             storageBufferWrite(kLightsBinding, &lightInfo),
             storageBufferWrite(kMaterialsBinding, &materialInfo),
             storageBufferWrite(kClusterRangesBinding, &rangesInfo),
-            storageBufferWrite(kLightIndicesBinding, &indicesInfo)};
+            storageBufferWrite(kLightIndicesBinding, &indicesInfo),
+            storageBufferWrite(kDepthRangeBinding, &depthRangeInfo)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};

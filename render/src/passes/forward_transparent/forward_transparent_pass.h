@@ -56,6 +56,7 @@ public:
         const GpuBuffer* lights;
         const GpuBuffer* clusterRanges;
         const GpuBuffer* lightIndices;
+        const GpuBuffer* depthRange;  // the slicing DepthOccupancyPass derived
         const ClusterGrid* grid;
         uint32_t directionalCount;
     };
