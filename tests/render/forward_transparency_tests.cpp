@@ -212,7 +212,7 @@ static void expectClusteredMatchesBruteForceOnBlendedSquare(bool withOpaqueFloor
     // Lists assigned in compute shaders are the CPU's lists: the same image, bit for bit.
     RendererOptions device;
     device.lightAssignment = LightAssignmentDevice::Gpu;
-    CapturedFrame deviceAssigned = scene.render(context, {0, 1}, device);
+    CapturedFrame deviceAssigned = scene.render(context, order, device);
     EXPECT_EQ(deviceAssigned.hdrRgb, clustered.hdrRgb);
     EXPECT_EQ(context.validationMessages(), 0u);
 }
