@@ -175,8 +175,12 @@ void Renderer::assignLightsToClusters(const FrameInputs& inputs) {
         !assignment_->lightIndices.empty()) {
         ++stats_.lightListOverflows;
     }
-    std::memcpy(lightIndices_.mapped(), assignment_->lightIndices.data(),
-                assignment_->lightIndices.size() * sizeof(uint32_t));
+    // A frame without lights has no list entries, and memcpy from an empty vector's null
+    // data() is undefined even for 0 bytes (UBSan).
+    if (!assignment_->lightIndices.empty()) {
+        std::memcpy(lightIndices_.mapped(), assignment_->lightIndices.data(),
+                    assignment_->lightIndices.size() * sizeof(uint32_t));
+    }
     stats_.clusters = grid_->clusterCount();
     stats_.clustersOccupied = assignment_->occupiedClusters;
     stats_.lightClusterPairs = assignment_->assignedPairs;
@@ -201,7 +205,10 @@ void Renderer::recordGpuAssignment(VkCommandBuffer cmd, const FrameInputs& input
     }
     ensureBuffer(context_, lightIndices_,
                  VkDeviceSize(std::max<size_t>(gpuListEntriesWanted_, directional.size())) * 4);
-    std::memcpy(lightIndices_.mapped(), directional.data(), directional.size() * sizeof(uint32_t));
+    if (!directional.empty()) {  // data() may be null (see assignLightsToClusters)
+        std::memcpy(lightIndices_.mapped(), directional.data(),
+                    directional.size() * sizeof(uint32_t));
+    }
     ensureBuffer(context_, clusterRanges_, VkDeviceSize(grid_->clusterCount()) * 8);
     gpuListCapacity_ = uint32_t(lightIndices_.size() / 4);
 
