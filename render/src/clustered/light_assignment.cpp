@@ -15,12 +15,7 @@ namespace {
 constexpr float kSliceDepthMargin = 1e-3f;
 constexpr float kPixelBoundsMargin = 1e-4f;  // relative to depth
 
-// Light-cluster pairs found by one job, in ascending light order. Clusters are numbered
-// compactly over the occupied ones (see OccupiedNumbering).
-struct PairList {
-    std::vector<uint32_t> cluster;
-    std::vector<uint32_t> light;
-};
+using PairList = LightAssignment::PairList;
 
 // Occupied clusters numbered tile by tile, slices ascending: tile t's clusters start at
 // firstOfTile[t], and slice k is the popcount of the tile's mask below bit k after that.
@@ -163,7 +158,12 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
     // Chunks of lights in order; each job fills its own pair list.
     constexpr size_t kLightsPerJob = 512;
     const size_t jobCount = (lights.size() + kLightsPerJob - 1) / kLightsPerJob;
-    std::vector<PairList> pairs(jobCount);
+    std::vector<PairList>& pairs = out.pairScratch;
+    if (pairs.size() < jobCount) pairs.resize(jobCount);
+    for (size_t job = 0; job < jobCount; ++job) {
+        pairs[job].cluster.clear();
+        pairs[job].light.clear();
+    }
     auto work = [&](size_t begin, size_t end) {
         for (size_t job = begin; job < end; ++job) {
             PairList& list = pairs[job];
@@ -184,9 +184,11 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
 
     // Counting sort over the occupied clusters, visiting jobs in light order: lists stay
     // ascending.
-    std::vector<uint32_t> cursor(occupied, 0);
+    std::vector<uint32_t>& cursor = out.cursorScratch;
+    cursor.assign(occupied, 0);
     size_t total = 0;
-    for (const PairList& list : pairs) {
+    for (size_t job = 0; job < jobCount; ++job) {
+        const PairList& list = pairs[job];
         for (uint32_t c : list.cluster)
             ++cursor[c];
         total += list.cluster.size();
@@ -214,7 +216,8 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
         }
     }
     out.lightIndices.resize(out.directionalCount + total);
-    for (const PairList& list : pairs) {
+    for (size_t job = 0; job < jobCount; ++job) {
+        const PairList& list = pairs[job];
         for (size_t i = 0; i < list.cluster.size(); ++i) {
             out.lightIndices[cursor[list.cluster[i]]++] = list.light[i];
         }

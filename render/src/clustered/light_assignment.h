@@ -28,6 +28,16 @@ struct LightAssignment {
     uint32_t directionalCount = 0;
     uint32_t occupiedClusters = 0;  // clusters holding geometry (all, without occupancy)
     uint32_t assignedPairs = 0;     // light-cluster pairs in the lists
+
+    // Scratch kept between calls, so a warm frame allocates (and page-faults) nothing: per job,
+    // the light-cluster pairs it found in ascending light order; per occupied cluster, the
+    // counting sort's cursor.
+    struct PairList {
+        std::vector<uint32_t> cluster;  // compact occupied-cluster number
+        std::vector<uint32_t> light;
+    };
+    std::vector<PairList> pairScratch;
+    std::vector<uint32_t> cursorScratch;
 };
 
 // What the depth buffer says about each cluster; empty spans mean "assume every cluster is
