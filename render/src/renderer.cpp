@@ -14,6 +14,8 @@
 #include "clustered/light_assignment.h"
 #include "gbuffer_targets.h"
 #include "gpu_camera.h"
+#include "ibl/environment_brdf_lut.h"
+#include "ibl/environment_sampling_table.h"
 #include "lights/gpu_light_buffer.h"
 #include "passes/depth_occupancy/depth_occupancy_pass.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
@@ -26,6 +28,18 @@
 #include "vk/vk_check.h"
 
 namespace candela::render {
+
+const char* iblModeName(IblMode mode) {
+    switch (mode) {
+        case IblMode::SplitSum:
+            return "split_sum";
+        case IblMode::Mobile:
+            return "mobile";
+        case IblMode::Reference:
+            return "reference";
+    }
+    return "unknown";
+}
 
 float exposureFromEv100(float ev100) {
     return 1.0f / (1.2f * std::exp2(ev100));
@@ -42,6 +56,7 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     LightingFeatures f;
     f.clustered = options.lightCulling == LightCulling::Clustered;
     f.countLightPairs = options.countLightPairs;
+    if (resources.environment()) f.ibl = options.ibl;
     for (const DrawItem& draw : scene.draws) {
         switch (resources.material(draw.material).shadingModel) {
             case content::ShadingModel::Subsurface:
@@ -109,6 +124,8 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
 }
 
 Renderer::~Renderer() {
+    brdfLut_.reset();
+    samplingTable_.reset();
     vkDestroyQueryPool(context_.device(), timestamps_, nullptr);
 }
 
@@ -258,6 +275,14 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
                            const FrameInputs& inputs, SceneResources& resources) {
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
     lightingPass_->setFeatures(features);
+    // The environment BRDF LUT is the same for every sky: built once, when first needed.
+    if (features.ibl && !brdfLut_) brdfLut_ = std::make_unique<EnvironmentBrdfLut>(context_);
+    // The reference mode also samples the sky by luminance: a table per environment.
+    if (features.ibl == IblMode::Reference &&
+        (!samplingTable_ || samplingTable_->source() != resources.environment())) {
+        samplingTable_ =
+            std::make_unique<EnvironmentSamplingTable>(context_, *resources.environment());
+    }
     features_ = features.names();
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
     const bool blended = transparentPass_->prepare(inputs.scene, resources, features);
@@ -352,6 +377,13 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
                                   &clusterRanges_, &lightIndices_,
                                   &pairCounts_,    &depthRange_,
                                   grid_.get(),     assignment_->directionalCount};
+    lighting.environment = resources.environment();
+    lighting.brdfLut = brdfLut_.get();
+    lighting.skyIntensity = inputs.scene.skyIntensity;
+    lighting.referenceSamples = options_.referenceSamples;
+    if (samplingTable_ && features.ibl == IblMode::Reference) {
+        lighting.samplingTable = &samplingTable_->buffer();
+    }
     lightingPass_->record(cmd, lighting);
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_, 1);
     timestampsWritten_ = true;

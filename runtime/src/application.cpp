@@ -73,7 +73,31 @@ struct Application::Session {
     std::map<std::uint32_t, std::vector<std::filesystem::path>> captures;
     std::vector<std::filesystem::path> capturesMissed;
     int exitCode = kExitOk;
+    std::optional<std::filesystem::path> skyFile;  // what resources' environment came from
 };
+
+// Loads the sky when the file named by the options or the world's Sky component changes
+// (cached precomputation makes a reload of a known sky cheap).
+void Application::updateSky(Session& s) {
+    std::optional<std::filesystem::path> wanted = options_.environment;
+    if (!wanted && !s.extracted.skyExrPath.empty()) {
+        wanted = world_->resolveAssetPath(s.extracted.skyExrPath);
+    }
+    if (wanted == s.skyFile) return;
+    s.skyFile = wanted;
+    if (!wanted) {
+        s.resources->setEnvironment(nullptr);
+        stats_.environment.reset();
+        return;
+    }
+    content::Diagnostics diagnostics;
+    s.submitter->waitIdle();  // the previous sky may still be read by the last frame
+    s.resources->setEnvironment(render::Environment::load(*s.context, *wanted, diagnostics));
+    for (const content::Diagnostic& d : diagnostics.messages) {
+        std::fprintf(stderr, "candela: %s\n", content::formatDiagnostic(d).c_str());
+    }
+    stats_.environment = s.resources->environment()->stats();
+}
 
 Application::Application(ApplicationOptions options)
     : options_(std::move(options)), world_(std::make_unique<SceneWorld>()) {}
@@ -158,6 +182,7 @@ int Application::runSession(bool headless, std::uint32_t frames) {
         rendererOptions.lightCulling = options_.lightCulling;
         rendererOptions.lightAssignment = options_.lightAssignment;
         rendererOptions.countLightPairs = options_.countLightPairs;
+        rendererOptions.ibl = options_.ibl;
         s.renderer = std::make_unique<render::Renderer>(*s.context, options_.width, options_.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
@@ -237,6 +262,8 @@ int Application::runSession(bool headless, std::uint32_t frames) {
                 frame_.scene.lights = s.extracted.lights;
                 frame_.scene.changedLights = s.extracted.changedLights;
                 frame_.scene.lightsRestructured = s.extracted.lightsRestructured;
+                frame_.scene.skyIntensity = s.extracted.skyIntensity;
+                updateSky(s);
                 resources = s.resources.get();
             }
             VkCommandBuffer cmd = s.renderer->recordFrame(*s.submitter, frame_, resources);

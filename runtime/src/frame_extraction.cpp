@@ -9,6 +9,7 @@
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/scene_components.h"
+#include "candela/content/components/sky.h"
 #include "candela/ecs/transform.h"
 #include "candela/render/exposure.h"
 
@@ -111,6 +112,15 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
             out.camera.farPlane = std::max(camera.farPlane, out.camera.nearPlane * 2.0f);
             out.hasCamera = true;
         });
+
+    // An absurd intensity (negative, NaN, Inf) would poison every pixel: it turns the sky off.
+    out.skyIntensity = 1.0f;
+    out.skyExrPath.clear();
+    registry.view<const content::Sky>().each([&](const content::Sky& sky) {
+        out.skyExrPath = sky.exrPath;
+        out.skyIntensity =
+            std::isfinite(sky.intensity) && sky.intensity >= 0.0f ? sky.intensity : 0.0f;
+    });
 }
 
 }  // namespace candela::runtime

@@ -58,6 +58,19 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;
     json["culling_efficiency"] = cullingEfficiency(last);
+    if (stats.environment) {
+        const render::EnvironmentBuildStats& e = *stats.environment;
+        json["environment"] = {{"source", e.source},
+                               {"fallback", e.fallback},
+                               {"from_cache", e.fromCache},
+                               {"read_ms", e.readMs},
+                               {"decode_ms", e.decodeMs},
+                               {"precompute_ms", e.precomputeMs},
+                               {"cache_ms", e.cacheMs},
+                               {"cube_face_size", e.cubeFaceSize},
+                               {"prefiltered_face_size", e.prefilteredFaceSize},
+                               {"prefiltered_mips", e.prefilteredMipCount}};
+    }
     std::ofstream out(path);
     if (!out) return path.string() + ": cannot open for writing";
     out << json.dump(2) << '\n';

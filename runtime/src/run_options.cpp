@@ -40,6 +40,10 @@ std::string runUsage() {
            "                   [--light-assign cpu|gpu] [--validation off|on|require]\n"
            "                   [--step SECONDS] [--capture-each DIR] [--summary FILE.md]\n"
            "                   [--input SCRIPT] [--overlay|--no-overlay]\n"
+           "                   [--validation off|on|require] [--step SECONDS]\n"
+           "                   [--capture-each DIR] [--summary FILE.md] [--input SCRIPT]\n"
+           "                   [--overlay|--no-overlay]\n"
+           "                   [--env SKY.exr] [--ibl split-sum|mobile|reference]\n"
            "       candela demo [same options]\n";
 }
 
@@ -127,6 +131,19 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
         } else if (arg == "--input") {
             if (!value(v)) return fail("--input needs an input script (see input_script.h)");
             options.inputScript = v;
+        } else if (arg == "--env") {
+            if (!value(v)) return fail("--env needs an OpenEXR file");
+            options.environment = v;
+        } else if (arg == "--ibl") {
+            if (!value(v)) return fail("--ibl needs split-sum, mobile or reference");
+            if (v == "split-sum")
+                options.ibl = render::IblMode::SplitSum;
+            else if (v == "mobile")
+                options.ibl = render::IblMode::Mobile;
+            else if (v == "reference")
+                options.ibl = render::IblMode::Reference;
+            else
+                return fail("--ibl needs split-sum, mobile or reference, got '" + v + "'");
         } else if (!arg.empty() && arg[0] == '-') {
             return fail("unknown option '" + arg + "'");
         } else if (options.scene.empty()) {

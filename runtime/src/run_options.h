@@ -28,6 +28,10 @@ struct RunOptions {
     std::optional<bool> overlay;  // --overlay / --no-overlay (default: demo in a window)  //
                                   // --input SCRIPT: recorded input
     render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Cpu;
+    std::optional<std::filesystem::path> inputScript;  // --input SCRIPT: recorded input
+    std::optional<bool> overlay;  // --overlay / --no-overlay (default: demo in a window)
+    std::optional<std::filesystem::path> environment;  // --env: overrides the scene's sky
+    render::IblMode ibl = render::IblMode::SplitSum;
 };
 
 struct ParseResult {

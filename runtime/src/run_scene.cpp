@@ -63,6 +63,8 @@ int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>>
     app.validation = options.validation;
     app.lightCulling = options.lightCulling;
     app.lightAssignment = options.lightAssignment;
+    app.environment = options.environment;
+    app.ibl = options.ibl;
 
     const double step = app.fixedStepSeconds;
     Application application(std::move(app));

@@ -86,7 +86,13 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     std::optional<content::SceneDocument> scene = content::loadSceneFile(path, diagnostics);
     if (!scene) return false;
     content::instantiateScene(registry, *scene, path, cache_, diagnostics);
+    sceneFile_ = path;
     return true;
+}
+
+std::filesystem::path SceneWorld::resolveAssetPath(const std::string& stored) const {
+    if (sceneFile_.empty()) return stored;
+    return content::resolveScenePath(sceneFile_, stored);
 }
 
 void SceneWorld::updateTransforms() {

@@ -75,6 +75,33 @@ vec3 shadeLegacyDiffuseSpecular(Surface s, vec3 N, vec3 V, LightIncidence inc) {
            specularGgx(specularColor, s.roughness, N, V, inc);
 }
 
+// What a shading model reflects of an environment: the same colours its direct lighting uses,
+// so ambient and direct light agree. The IBL mode (split sum, mobile, reference) decides how
+// the environment is integrated against them.
+struct AmbientTerms {
+    vec3 diffuseColor;      // times irradiance / pi
+    vec3 specularColor;     // F0 for the environment BRDF
+    vec3 transmittedColor;  // times the irradiance from behind / pi (Subsurface)
+};
+
+AmbientTerms ambientTermsOf(Surface s) {
+    AmbientTerms t;
+    t.diffuseColor = s.baseColor * (1.0 - s.metallic);
+    t.specularColor = mix(vec3(0.08 * s.specular), s.baseColor, s.metallic);
+    t.transmittedColor = vec3(0.0);
+    if (kSubsurfaceEnabled && s.shadingModel == kShadingSubsurface) {
+        t.transmittedColor = s.customData.rgb * (1.0 - s.customData.a);
+    } else if (kLegacyDiffuseSpecularEnabled && s.shadingModel == kShadingLegacyDiffuseSpecular) {
+        t.diffuseColor = s.baseColor;
+        t.specularColor = s.customData.rgb;
+        if (s.roughness >= 1.0) {  // the fully-rough fold, as shadeLegacyDiffuseSpecular
+            t.diffuseColor += t.specularColor * 0.45;
+            t.specularColor = vec3(0.0);
+        }
+    }
+    return t;
+}
+
 vec3 shadeSurface(Surface s, vec3 N, vec3 V, LightIncidence inc) {
     if (s.shadingModel == kShadingUnlit) return vec3(0.0);  // emissive only (G-buffer pass)
     if (kSubsurfaceEnabled && s.shadingModel == kShadingSubsurface) {

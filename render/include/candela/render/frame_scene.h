@@ -42,6 +42,9 @@ struct FrameScene {
     // (lights added or removed, or the caller does not track changes) every light is rewritten.
     std::span<const uint32_t> changedLights;
     bool lightsRestructured = true;
+    // Multiplies the environment's radiance (SceneResources::environment()), for the sky
+    // background and image-based lighting alike.
+    float skyIntensity = 1.0f;
 };
 
 }  // namespace candela::render

@@ -23,6 +23,8 @@ namespace candela::render {
 
 class DepthOccupancyPass;
 class ForwardTransparentPass;
+class EnvironmentBrdfLut;
+class EnvironmentSamplingTable;
 class FrameSubmitter;
 class GBufferPass;
 class GpuContext;
@@ -63,6 +65,9 @@ public:
 
     const GpuImage& hdrTarget() const { return hdr_; }  // RGBA32F scene radiance
     const GpuImage& ldrTarget() const { return ldr_; }  // RGBA8, sRGB-encoded values
+
+    // The environment BRDF LUT (eq. 8), built when the first environment was lit; else null.
+    const EnvironmentBrdfLut* environmentBrdfLut() const { return brdfLut_.get(); }
 
     // What this renderer enabled for the last recorded frame, for --stats.
     std::vector<std::string> features() const { return features_; }
@@ -108,6 +113,8 @@ private:
     std::unique_ptr<LightingPass> lightingPass_;
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
+    std::unique_ptr<EnvironmentBrdfLut> brdfLut_;
+    std::unique_ptr<EnvironmentSamplingTable> samplingTable_;
     std::vector<std::string> features_;
     RendererStats stats_;
 };

@@ -14,6 +14,13 @@ enum class LightAssignmentDevice {
     Cpu,  // job system, after a mid-frame wait for the depth occupancy
     Gpu,  // compute shaders between the occupancy and lighting passes, no wait
 };
+// How an environment (sky) lights surfaces (seed 000 section 2.2.4, seed 001).
+enum class IblMode {
+    SplitSum,   // prefiltered radiance cube x environment BRDF LUT (eq. 7, 8): the default
+    Mobile,     // prefiltered cube x EnvBRDFApprox (seed 001), no LUT
+    Reference,  // eq. 6 by Monte Carlo per pixel (referenceSamples): for measurement only
+};
+const char* iblModeName(IblMode mode);  // "split_sum", "mobile", "reference"
 
 struct RendererOptions {
     LightCulling lightCulling = LightCulling::Clustered;
@@ -28,6 +35,8 @@ struct RendererOptions {
     // Counts evaluated and lit light-pixel pairs (a shader variant with per-workgroup counters;
     // --stats turns it on).
     bool countLightPairs = false;
+    IblMode ibl = IblMode::SplitSum;
+    uint32_t referenceSamples = 2048;  // per pixel, for each of specular and diffuse
 };
 
 // Measurements of the last completed frame (--stats fields).

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "candela/content/model.h"
+#include "candela/render/environment.h"
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_image.h"
 
@@ -80,7 +81,17 @@ public:
     // std430 array of GpuMaterial; rebuilt when materials were added since the last call.
     const GpuBuffer& materialBuffer();
 
+    // The scene's sky: lights every surface (image-based lighting) and fills the background.
+    // Null: no environment light, background is FrameInputs::clearRadiance. Shared, so scenes
+    // reloaded under the same sky (the editor) keep its precomputed cubes.
+    void setEnvironment(std::shared_ptr<const Environment> environment) {
+        environment_ = std::move(environment);
+    }
+    const Environment* environment() const { return environment_.get(); }
+
 private:
+    std::shared_ptr<const Environment> environment_;
+
     uint32_t uploadTexture(const content::Rgba8Image& image, content::ColorSpace space,
                            const content::Sampler& sampler);
     uint32_t addMaterialWithTextures(const content::Material& material,

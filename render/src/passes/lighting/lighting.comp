@@ -2,9 +2,12 @@
 #extension GL_GOOGLE_include_directive : require
 // Deferred lighting: reads the G-buffer and adds the lit radiance to the HDR target, which
 // holds emissive already. Clustered: each pixel evaluates its cluster's light list (plus the
-// directional lights); brute force: every light at every pixel, the reference.
+// directional lights); brute force: every light at every pixel, the reference. With an
+// environment, every lit pixel adds its ambient light (image-based lighting) and background
+// pixels show the sky.
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
+#include "common/ibl.glsl"
 #include "common/light_buffer.glsl"
 #include "common/shading_models.glsl"
 
@@ -13,6 +16,13 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = 30) const bool kClustered = true;
 // Stats variant: counts evaluated and lit light-pixel pairs per workgroup.
 layout(constant_id = 31) const bool kCountLightPairs = false;
+// Image-based lighting: none (no sky), split sum (prefiltered cube x LUT, eq. 7), mobile
+// (prefiltered cube x seed 001's analytic fit) or reference (eq. 6 by Monte Carlo per pixel).
+const uint kIblNone = 0u;
+const uint kIblSplitSum = 1u;
+const uint kIblMobile = 2u;
+const uint kIblReference = 3u;
+layout(constant_id = 32) const uint kIblMode = 0u;
 
 layout(binding = 2) uniform sampler2D gbufferBaseColor;
 layout(binding = 3) uniform sampler2D gbufferNormalRoughMetal;
@@ -32,9 +42,26 @@ layout(std430, binding = 11) readonly buffer DepthRange { uint depthRange[]; };
 // it evaluates every light instead, so no light is ever dropped.
 const uint kListOverflow = 0xffffffffu;
 
+layout(binding = 12) uniform samplerCube environmentCube;  // all mips
+layout(binding = 13) uniform samplerCube prefilteredCube;  // roughness per mip
+layout(binding = 14) uniform sampler2D environmentBrdfLut;
+layout(std430, binding = 15) readonly buffer IrradianceSh { vec4 irradianceSh[9]; };
+// Reference mode: luminance importance sampling of environmentCube's mip 0
+// (render/src/ibl/environment_sampling_table.h).
+layout(std430, binding = 16) readonly buffer EnvironmentSampling {
+    uint faceSize;
+    uint texelCount;
+    uint pad0;
+    uint pad1;
+    vec2 cdfAndProbability[];
+} environmentSampling;
+
 layout(push_constant) uniform Push {
     ClusterGridParams grid;
     uint directionalCount;
+    float skyIntensity;
+    float prefilteredMipCount;
+    uint referenceSamples;
 } push;
 
 shared uint groupEvaluations;
@@ -79,20 +106,200 @@ void addLight(inout PixelShading px, uint lightIndex) {
     }
 }
 
+// A per-pixel offset for the reference mode's sample set (deterministic: same image each run).
+vec2 pixelHash(ivec2 pixel) {
+    uvec2 v = uvec2(pixel) * uvec2(1664525u, 1013904223u);
+    v.x += v.y * 1664525u;
+    v.y += v.x * 1013904223u;
+    v ^= v >> 16u;
+    return vec2(v & 0xFFFFu) / 65536.0;
+}
+
+// Density over solid angle of sampleEnvironment() at direction d: the texel's probability
+// spread uniformly over its face area, dw = dA / (1 + u^2 + v^2)^(3/2).
+float environmentPdf(vec3 d) {
+    vec2 st;
+    uint face = cubeFaceOfDirection(d, st);
+    uint size = environmentSampling.faceSize;
+    uvec2 texel = min(uvec2(st * float(size)), uvec2(size - 1u));
+    uint index = (face * size + texel.y) * size + texel.x;
+    vec2 uv = st * 2.0 - 1.0;
+    float r2 = 1.0 + dot(uv, uv);
+    return environmentSampling.cdfAndProbability[index].y * float(size * size) * 0.25 * r2 *
+           sqrt(r2);
+}
+
+// One step of the search below: move past `step` texels if all their cumulative
+// probabilities are <= x.
+#define CANDELA_SEARCH_STEP(step)                                                              \
+    if (first + (step) <= count &&                                                             \
+        environmentSampling.cdfAndProbability[first + (step) - 1u].x <= x)                    \
+        first += (step);
+
+// A direction drawn with probability proportional to the texel's radiance x solid angle.
+vec3 sampleEnvironment(vec2 xi, out float pdf) {
+    // The first texel whose cumulative probability exceeds xi.x, by a fixed 23-step search
+    // (tables up to 8M texels). Written without a loop: llvmpipe (lavapipe) stops a shader's
+    // loops after 65,535 iterations in total, and a search loop inside the sample loop
+    // silently cut the reference mode's sample count by a quarter.
+    uint count = environmentSampling.texelCount;
+    float x = xi.x;
+    uint first = 0u;
+    CANDELA_SEARCH_STEP(4194304u) CANDELA_SEARCH_STEP(2097152u) CANDELA_SEARCH_STEP(1048576u)
+    CANDELA_SEARCH_STEP(524288u) CANDELA_SEARCH_STEP(262144u) CANDELA_SEARCH_STEP(131072u)
+    CANDELA_SEARCH_STEP(65536u) CANDELA_SEARCH_STEP(32768u) CANDELA_SEARCH_STEP(16384u)
+    CANDELA_SEARCH_STEP(8192u) CANDELA_SEARCH_STEP(4096u) CANDELA_SEARCH_STEP(2048u)
+    CANDELA_SEARCH_STEP(1024u) CANDELA_SEARCH_STEP(512u) CANDELA_SEARCH_STEP(256u)
+    CANDELA_SEARCH_STEP(128u) CANDELA_SEARCH_STEP(64u) CANDELA_SEARCH_STEP(32u)
+    CANDELA_SEARCH_STEP(16u) CANDELA_SEARCH_STEP(8u) CANDELA_SEARCH_STEP(4u)
+    CANDELA_SEARCH_STEP(2u) CANDELA_SEARCH_STEP(1u)
+    uint texel = min(first, count - 1u);
+    vec2 entry = environmentSampling.cdfAndProbability[texel];
+    // Reuse xi.x's position inside the texel's interval as the first coordinate.
+    float u = saturate((x - (entry.x - entry.y)) / max(entry.y, 1e-30));
+    uint size = environmentSampling.faceSize;
+    uint face = texel / (size * size);
+    uint inFace = texel % (size * size);
+    vec2 st = (vec2(inFace % size, inFace / size) + vec2(u, xi.y)) / float(size);
+    vec3 d = cubeFaceDirection(face, st);
+    pdf = environmentPdf(d);
+    return d;
+}
+
+// Eq. 3 from a tangent-space half vector: 1 - NoH^2 = H.x^2 + H.y^2 exactly, where the usual
+// form cancels catastrophically in fp32 for narrow lobes (D of a near-mirror is then off by
+// orders of magnitude, and so would be the sample weights below).
+float stableGgx(float a2, vec3 tangentH) {
+    float d = dot(tangentH.xy, tangentH.xy) + a2 * tangentH.z * tangentH.z;
+    return a2 / (PI * d * d);
+}
+
+// Eq. 6 by Monte Carlo per pixel, for measuring the approximations only. Each iteration
+// draws one direction from the BRDF (GGX visible normals for the specular lobe, cosine for
+// the diffuse and transmitted parts) and one from the environment's luminance, weighted by
+// the balance heuristic, so neither glossy lobes nor a sun clipped to a few 65504 cd/m^2
+// texels leave fireflies. Same D, Vis and Fresnel as the direct lighting; radiance is read
+// from the unfiltered cube.
+vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
+    mat3 frame = tangentFrame(px.N);
+    vec3 tangentV = transpose(frame) * px.V;
+    tangentV.z = max(tangentV.z, 1e-4);
+    vec2 offset = pixelHash(pixel);
+    vec2 offsetEnvironment = pixelHash(pixel + ivec2(7919, 104729));
+    float alpha = px.surface.roughness * px.surface.roughness;
+    float a2 = alpha * alpha;
+    float NoV = tangentV.z;
+    bool transmits = any(greaterThan(t.transmittedColor, vec3(0.0)));
+    vec3 specular = vec3(0.0), diffuse = vec3(0.0), transmitted = vec3(0.0);
+    uint n = push.referenceSamples;
+    for (uint i = 0u; i < n; ++i) {
+        vec2 xi = hammersley(i, n, offset);
+
+        // BRDF sample of the specular lobe; pdf(L) = D(H) G1(V) / (4 NoV).
+        vec3 H = importanceSampleGgxVisible(xi, alpha, tangentV);
+        float VoH = dot(tangentV, H);
+        vec3 L = 2.0 * VoH * H - tangentV;
+        if (L.z > 0.0 && VoH > 0.0) {
+            vec3 Lw = frame * L;
+            float misWeight = 1.0;  // a mirror's lobe is a delta: BRDF sampling only
+            if (alpha > 0.0) {
+                float pdf = stableGgx(a2, H) * smithG1Ggx(alpha, NoV) / (4.0 * NoV);
+                misWeight = pdf / (pdf + environmentPdf(Lw));
+            }
+            specular += textureLod(environmentCube, Lw, 0.0).rgb *
+                        fresnelSchlickSg(t.specularColor, VoH) *
+                        (visibleNormalSampleWeight(alpha, NoV, L.z) * misWeight);
+        }
+        // BRDF sample of the diffuse (and transmitted) lobe; pdf = cos / pi.
+        vec3 C = frame * cosineSampleHemisphere(xi);
+        float cosPdf = max(dot(C, px.N), 0.0) / PI;
+        diffuse += textureLod(environmentCube, C, 0.0).rgb * (cosPdf / (cosPdf + environmentPdf(C)));
+        if (transmits) {
+            transmitted += textureLod(environmentCube, -C, 0.0).rgb *
+                           (cosPdf / (cosPdf + environmentPdf(-C)));
+        }
+
+        // Environment sample, shared by all lobes.
+        float environmentPdfE;
+        vec3 E = sampleEnvironment(hammersley(i, n, offsetEnvironment), environmentPdfE);
+        if (environmentPdfE <= 0.0) continue;
+        vec3 radiance = textureLod(environmentCube, E, 0.0).rgb;
+        float NoL = dot(px.N, E);
+        if (NoL > 0.0) {
+            float lambertPdf = NoL / PI;
+            diffuse += radiance * (NoL / PI) / (lambertPdf + environmentPdfE);
+            if (alpha > 0.0) {
+                vec3 He = safeNormalize(px.V + E);
+                float VoHe = saturate(dot(px.V, He));
+                float D = stableGgx(a2, transpose(frame) * He);
+                float brdfPdf = D * smithG1Ggx(alpha, NoV) / (4.0 * NoV);
+                specular += radiance * fresnelSchlickSg(t.specularColor, VoHe) *
+                            (D * visibilitySmithSchlick(alpha, NoV, NoL) * NoL /
+                             (brdfPdf + environmentPdfE));
+            }
+        } else if (transmits && NoL < 0.0) {
+            float lambertPdf = -NoL / PI;
+            transmitted += radiance * (-NoL / PI) / (lambertPdf + environmentPdfE);
+        }
+    }
+    return (specular + diffuse * t.diffuseColor + transmitted * t.transmittedColor) / float(n);
+}
+
+// Ambient light of the environment on the pixel's surface (cd/m^2 before sky intensity).
+vec3 ambientRadiance(PixelShading px, ivec2 pixel) {
+    AmbientTerms t = ambientTermsOf(px.surface);
+    if (kIblMode == kIblReference) return referenceAmbient(t, px, pixel);
+    vec4 sh[9] = irradianceSh;
+    vec3 diffuse = t.diffuseColor * (1.0 / PI) * shIrradiance(sh, px.N);
+    if (any(greaterThan(t.transmittedColor, vec3(0.0)))) {
+        diffuse += t.transmittedColor * (1.0 / PI) * shIrradiance(sh, -px.N);
+    }
+    float roughness = px.surface.roughness;
+    float NoV = saturate(dot(px.N, px.V));
+    vec3 prefiltered = textureLod(prefilteredCube, px.R,
+                                  prefilteredMipOfRoughness(roughness, push.prefilteredMipCount))
+                           .rgb;
+    vec3 environmentBrdf;
+    if (kIblMode == kIblMobile) {
+        // G-buffer Specular is 8-bit: 0.5 arrives as 128 / 255.
+        bool defaultNonmetal = px.surface.shadingModel == kShadingDefaultLit &&
+                               px.surface.metallic == 0.0 &&
+                               abs(px.surface.specular - 0.5) < 1.0 / 255.0;
+        environmentBrdf = environmentBrdfMobile(t.specularColor, roughness, NoV, defaultNonmetal);
+    } else {
+        environmentBrdf = environmentBrdfFromLut(environmentBrdfLut, t.specularColor, roughness,
+                                                 NoV);
+    }
+    return diffuse + prefiltered * environmentBrdf;
+}
+
 void shadePixel(ivec2 pixel, inout PixelShading px) {
     uvec2 size = camera.frameInfo.xy;
     if (pixel.x >= int(size.x) || pixel.y >= int(size.y)) return;
     float depth = texelFetch(gbufferDepth, pixel, 0).r;
-    if (depth <= 0.0) return;  // background (reverse-Z: 0 is infinitely far)
+    vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
+    if (depth <= 0.0) {  // background (reverse-Z: 0 is infinitely far)
+        if (kIblMode != kIblNone) {
+            vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+            vec3 direction = safeNormalize(nearPoint.xyz / nearPoint.w - camera.cameraPosition.xyz);
+            vec3 sky = textureLod(environmentCube, direction, 0.0).rgb * push.skyIntensity;
+            imageStore(hdrRadiance, pixel, vec4(sky, 1.0));
+        }
+        return;
+    }
     px.surface = decodeSurface(pixel, px.N);
     if (px.surface.shadingModel == kShadingUnlit) return;
 
-    vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
     vec4 world = camera.inverseViewProjection * vec4(ndc, depth, 1.0);
     px.P = world.xyz / world.w;
     px.V = safeNormalize(camera.cameraPosition.xyz - px.P);
     px.R = reflect(-px.V, px.N);
     px.alpha = alphaFromRoughness(px.surface.roughness);
+
+    if (kIblMode != kIblNone) {
+        float occlusion = texelFetch(gbufferBaseColor, pixel, 0).a;
+        px.radiance += ambientRadiance(px, pixel) * (occlusion * push.skyIntensity);
+    }
 
     if (kClustered) {
         for (uint i = 0u; i < push.directionalCount; ++i) addLight(px, lightIndices[i]);

@@ -1,16 +1,22 @@
 #pragma once
 // Full-screen compute lighting over the G-buffer (brute force: every light at every pixel).
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/gpu_image.h"
 #include "candela/render/pipeline.h"
+#include "candela/render/renderer_options.h"
 
 namespace candela::render {
 
-class GpuBuffer;
 struct ClusterGrid;
+class EnvironmentBrdfLut;
+class Environment;
 class GpuContext;
-class GpuImage;
+class Sampler;
 struct GBufferTargets;
 
 // Which shading models and light shapes the shader variant contains.
@@ -22,6 +28,7 @@ struct LightingFeatures {
     bool spotLights = false;
     bool clustered = true;
     bool countLightPairs = false;
+    std::optional<IblMode> ibl;  // none without an environment
 
     bool operator==(const LightingFeatures&) const = default;
     std::vector<std::string> names() const;
@@ -52,6 +59,12 @@ public:
         const GpuBuffer* depthRange;  // slicing from DepthOccupancyPass (clustered only)
         const ClusterGrid* grid;
         uint32_t directionalCount;
+        // Read only when features().ibl is set; then neither may be null.
+        const Environment* environment = nullptr;
+        const EnvironmentBrdfLut* brdfLut = nullptr;
+        float skyIntensity = 1.0f;
+        uint32_t referenceSamples = 0;
+        const GpuBuffer* samplingTable = nullptr;  // the reference mode's (EnvironmentSamplingTable)
     };
     void record(VkCommandBuffer cmd, const Inputs& inputs) const;
     static uint32_t workgroupCount(uint32_t width, uint32_t height);
@@ -62,6 +75,11 @@ private:
     bool built_ = false;
     Pipeline pipeline_;
     VkSampler pointSampler_ = VK_NULL_HANDLE;
+    // Bound in place of the environment when the scene has none (the variant never reads them).
+    GpuImage placeholderCube_;
+    GpuImage placeholderLut_;
+    GpuBuffer placeholderSh_;
+    std::unique_ptr<Sampler> linearSampler_;
 };
 
 }  // namespace candela::render

@@ -61,6 +61,10 @@ struct ApplicationOptions {
     render::ValidationMode validation = render::ValidationMode::IfPresent;
     render::LightCulling lightCulling = render::LightCulling::Clustered;
     render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Cpu;
+    // The sky (image-based lighting and background): this file if set, else the world's Sky
+    // component; a file that cannot be used gives a message and a neutral sky.
+    std::optional<std::filesystem::path> environment;
+    render::IblMode ibl = render::IblMode::SplitSum;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
@@ -117,6 +121,7 @@ public:
 private:
     struct Session;
     int runSession(bool headless, std::uint32_t frames);
+    void updateSky(Session& session);
 
     ApplicationOptions options_;
     std::unique_ptr<SceneWorld> world_;

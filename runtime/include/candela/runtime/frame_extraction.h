@@ -1,4 +1,5 @@
 #pragma once
+#include <string>
 // Reads the ECS once per frame into the plain arrays the renderer draws: mesh draws, lights
 // and the camera. The renderer never sees the registry.
 #include <unordered_map>
@@ -18,7 +19,9 @@ struct ExtractedFrame {
     std::span<const uint32_t> changedLights;
     bool lightsRestructured = true;
     render::CameraView camera;
-    bool hasCamera = false;  // false: no entity has Camera + WorldTransform
+    bool hasCamera = false;     // false: no entity has Camera + WorldTransform
+    float skyIntensity = 1.0f;  // the Sky component's
+    std::string skyExrPath;     // the Sky component's file as stored (empty: no sky)
 
     // GPU materials made for scene-file material overrides, per entity; remade when the
     // entity's MaterialOverrides change.

@@ -2,9 +2,11 @@
 // Per-run measurements written by --stats. Field names are a contract: add, never rename.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "candela/render/environment.h"
 #include "candela/render/renderer_options.h"
 
 namespace candela::runtime {
@@ -16,7 +18,8 @@ struct FrameStats {
     std::vector<double> frameMs;  // CPU wall time per frame, including the wait for the GPU
     uint32_t validationMessages = 0;
     std::vector<std::string> features;
-    std::vector<render::RendererStats> frames;  // one per rendered frame
+    std::vector<render::RendererStats> frames;                 // one per rendered frame
+    std::optional<render::EnvironmentBuildStats> environment;  // when the scene has a sky
 
     void addRendererStats(const render::RendererStats& frame) { frames.push_back(frame); }
     double frameMsMedian() const;

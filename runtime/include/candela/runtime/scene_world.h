@@ -32,6 +32,9 @@ public:
     // Loads an engine scene file (JSON) into the registry; its glTF references load through
     // the world's asset cache. False when the file itself could not be read.
     bool loadSceneFile(const std::filesystem::path& path, content::Diagnostics& diagnostics);
+    // Where an asset path stored in a component (a Sky's file) points: relative to the last
+    // scene file loaded, else as it is.
+    std::filesystem::path resolveAssetPath(const std::string& stored) const;
 
     // Keeps a model alive for the lifetime of the world and returns it.
     const content::Model& adoptModel(std::unique_ptr<content::Model> model);
@@ -48,6 +51,7 @@ public:
 private:
     std::vector<std::unique_ptr<content::Model>> models_;
     content::AssetCache cache_;
+    std::filesystem::path sceneFile_;
 };
 
 }  // namespace candela::runtime

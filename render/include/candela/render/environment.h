@@ -1,0 +1,89 @@
+#pragma once
+// Image-based lighting for one HDR environment (seed 000 section 2.2.4, eq. 6-8): the
+// environment cube with mips (sky background, reference mode), the GGX-prefiltered radiance
+// cube with one roughness per mip (split sum), and order-2 spherical-harmonic irradiance
+// (diffuse). Built on the device from an OpenEXR file; the results are cached on disk under
+// the file's content hash, so a second run reads them instead of recomputing.
+//
+//   content::Diagnostics diagnostics;
+//   resources.setEnvironment(Environment::load(context, "sky.exr", diagnostics));
+//   // A bad file leaves a message in diagnostics and a neutral uniform sky.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "candela/content/diagnostics.h"
+#include "candela/content/environment_map.h"
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/gpu_image.h"
+
+namespace candela::render {
+
+class GpuContext;
+class Sampler;
+
+struct EnvironmentCacheOptions {
+    std::filesystem::path directory;  // empty: defaultEnvironmentCacheDirectory()
+    bool enabled = true;
+};
+
+// $CANDELA_CACHE_DIR, else $XDG_CACHE_HOME/candela, else $HOME/.cache/candela, else a
+// folder under the system temp directory.
+std::filesystem::path defaultEnvironmentCacheDirectory();
+
+struct EnvironmentBuildStats {
+    std::string source;  // the file, or "uniform"
+    uint64_t contentHash = 0;
+    bool fromCache = false;
+    bool fallback = false;      // the file could not be used: neutral uniform sky instead
+    double readMs = 0.0;        // reading and hashing the file
+    double decodeMs = 0.0;      // OpenEXR decode (0 on a cache hit)
+    double precomputeMs = 0.0;  // cube, mips, prefiltering, SH on the device (0 when cached)
+    double cacheMs = 0.0;       // writing the cache file, or reading and uploading it
+    uint32_t cubeFaceSize = 0;
+    uint32_t prefilteredFaceSize = 0;
+    uint32_t prefilteredMipCount = 0;
+};
+
+class Environment {
+public:
+    // Radiance of the neutral sky used when a file cannot be loaded, in cd/m^2 (an overcast
+    // sky's order of magnitude).
+    static constexpr float kFallbackRadiance = 1000.0f;
+
+    // Never null: a file that cannot be used yields the neutral sky and a diagnostic naming it.
+    static std::unique_ptr<Environment> load(GpuContext& context, const std::filesystem::path& exr,
+                                             content::Diagnostics& diagnostics,
+                                             const EnvironmentCacheOptions& cache = {});
+    static std::unique_ptr<Environment> fromMap(GpuContext& context,
+                                                const content::EnvironmentMap& map,
+                                                const std::string& name);
+    // The same radiance from every direction (the neutral sky, and the white furnace).
+    static std::unique_ptr<Environment> uniform(GpuContext& context, float radiance);
+
+    ~Environment();
+    Environment(const Environment&) = delete;
+    Environment& operator=(const Environment&) = delete;
+
+    // Both cubes are RGBA16F in SHADER_READ_ONLY_OPTIMAL; sampled with sampler().
+    const GpuImage& cube() const { return cube_; }
+    const GpuImage& prefiltered() const { return prefiltered_; }
+    // 9 vec4: SH coefficients of irradiance (already convolved with the clamped cosine).
+    const GpuBuffer& irradianceSh() const { return irradianceSh_; }
+    VkSampler sampler() const;
+    const EnvironmentBuildStats& stats() const { return stats_; }
+
+private:
+    explicit Environment(GpuContext& context);
+    void allocate(uint32_t cubeFaceSize);
+
+    GpuContext& context_;
+    GpuImage cube_;
+    GpuImage prefiltered_;
+    GpuBuffer irradianceSh_;
+    std::unique_ptr<Sampler> sampler_;
+    EnvironmentBuildStats stats_;
+};
+
+}  // namespace candela::render

@@ -1,0 +1,203 @@
+// Image-based lighting math of seed 000 section 2.2.4 (eq. 6-8) and seed 001, shared by the
+// precompute shaders (prefiltered cube, SH irradiance, environment BRDF LUT), the lighting
+// pass (split-sum, mobile and reference modes) and the tests.
+#ifndef CANDELA_IBL_GLSL
+#define CANDELA_IBL_GLSL
+
+#include "common/brdf.glsl"
+
+// --- Sampling -------------------------------------------------------------------------------
+
+float radicalInverseVdC(uint bits) {
+    bits = (bits << 16u) | (bits >> 16u);
+    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+    return float(bits) * 2.3283064365386963e-10;
+}
+
+// Point i of an n-point Hammersley set, shifted by `offset` (Cranley-Patterson rotation) so
+// neighbouring pixels of the reference mode see decorrelated sets.
+vec2 hammersley(uint i, uint n, vec2 offset) {
+    return fract(vec2((float(i) + 0.5) / float(n), radicalInverseVdC(i)) + offset);
+}
+
+// GGX half vector around +Z with pdf(H) = D(H) NoH; alpha = roughness^2 (alpha 0: H = +Z).
+vec3 importanceSampleGgx(vec2 xi, float alpha) {
+    float a2 = alpha * alpha;
+    float phi = 2.0 * PI * xi.x;
+    float cosTheta = sqrt((1.0 - xi.y) / max(1.0 + (a2 - 1.0) * xi.y, 1e-20));
+    float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
+}
+
+// Cosine-weighted direction around +Z, pdf = NoL / pi.
+vec3 cosineSampleHemisphere(vec2 xi) {
+    float r = sqrt(xi.x);
+    float phi = 2.0 * PI * xi.y;
+    return vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - xi.x, 0.0)));
+}
+
+// Orthonormal basis with N as +Z (Frisvad's construction, revised for N.z near -1).
+mat3 tangentFrame(vec3 N) {
+    float s = N.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + N.z);
+    float b = N.x * N.y * a;
+    vec3 t = vec3(1.0 + s * N.x * N.x * a, s * b, -s * N.x);
+    vec3 bt = vec3(b, s + N.y * N.y * a, -N.y);
+    return mat3(t, bt, N);
+}
+
+// World direction through (s, t) in [0, 1]^2 of Vulkan cube face `face` (+X,-X,+Y,-Y,+Z,-Z;
+// t = 0 is the top row). The inverse of the spec's face selection, as content's
+// cubeFaceDirection(), so CPU and GPU agree on every texel.
+vec3 cubeFaceDirection(uint face, vec2 st) {
+    vec2 uv = st * 2.0 - 1.0;
+    vec3 d;
+    if (face == 0u) d = vec3(1.0, -uv.y, -uv.x);
+    else if (face == 1u) d = vec3(-1.0, -uv.y, uv.x);
+    else if (face == 2u) d = vec3(uv.x, 1.0, uv.y);
+    else if (face == 3u) d = vec3(uv.x, -1.0, -uv.y);
+    else if (face == 4u) d = vec3(uv.x, -uv.y, 1.0);
+    else d = vec3(-uv.x, -uv.y, -1.0);
+    return normalize(d);
+}
+
+// Inverse of cubeFaceDirection (the Vulkan spec's face selection): face and (s, t) in [0, 1]^2.
+uint cubeFaceOfDirection(vec3 d, out vec2 st) {
+    vec3 a = abs(d);
+    uint face;
+    vec2 sc;
+    float major;
+    if (a.x >= a.y && a.x >= a.z) {
+        face = d.x > 0.0 ? 0u : 1u;
+        sc = vec2(d.x > 0.0 ? -d.z : d.z, -d.y);
+        major = a.x;
+    } else if (a.y >= a.z) {
+        face = d.y > 0.0 ? 2u : 3u;
+        sc = vec2(d.x, d.y > 0.0 ? d.z : -d.z);
+        major = a.y;
+    } else {
+        face = d.z > 0.0 ? 4u : 5u;
+        sc = vec2(d.z > 0.0 ? d.x : -d.x, -d.y);
+        major = a.z;
+    }
+    st = clamp(0.5 * (sc / max(major, 1e-30) + 1.0), 0.0, 1.0);
+    return face;
+}
+
+// Solid angle of a cube texel of a face with `size` texels per side, at face point uv in
+// [-1, 1]^2: dA / (1 + u^2 + v^2)^(3/2) with dA = (2 / size)^2.
+float cubeTexelSolidAngle(vec2 uv, float size) {
+    float r2 = 1.0 + dot(uv, uv);
+    return (4.0 / (size * size)) / (r2 * sqrt(r2));
+}
+
+// --- Environment BRDF (eq. 8) -------------------------------------------------------------
+
+// Smith G1 for GGX, exact (the masking the visible-normal distribution is built on).
+float smithG1Ggx(float alpha, float NoX) {
+    float a2 = alpha * alpha;
+    return 2.0 * NoX / (NoX + sqrt(a2 + (1.0 - a2) * NoX * NoX));
+}
+
+// Schlick-Smith G1 with k = alpha / 2 (eq. 4): G = G1(V) G1(L).
+float smithG1Schlick(float alpha, float NoX) {
+    float k = alpha * 0.5;
+    return NoX / (NoX * (1.0 - k) + k);
+}
+
+// A GGX normal visible from V (tangent space, N = +Z), sampled with pdf
+// D(H) G1(V) max(VoH, 0) / NoV (Heitz 2018). Against plain D NoH sampling, the estimator of
+// the specular integral becomes F G(V, L) / G1(V): bounded and continuous at the horizon, so
+// grazing views converge with a few hundred samples instead of tens of thousands.
+vec3 importanceSampleGgxVisible(vec2 xi, float alpha, vec3 V) {
+    vec3 Vh = normalize(vec3(alpha * V.x, alpha * V.y, V.z));
+    float lengthSquared = Vh.x * Vh.x + Vh.y * Vh.y;
+    vec3 T1 = lengthSquared > 0.0 ? vec3(-Vh.y, Vh.x, 0.0) * inversesqrt(lengthSquared)
+                                  : vec3(1.0, 0.0, 0.0);
+    vec3 T2 = cross(Vh, T1);
+    float r = sqrt(xi.x);
+    float phi = 2.0 * PI * xi.y;
+    float t1 = r * cos(phi);
+    float s = 0.5 * (1.0 + Vh.z);
+    float t2 = mix(sqrt(max(1.0 - t1 * t1, 0.0)), r * sin(phi), s);
+    vec3 Nh = t1 * T1 + t2 * T2 + sqrt(max(1.0 - t1 * t1 - t2 * t2, 0.0)) * Vh;
+    return safeNormalize(vec3(alpha * Nh.x, alpha * Nh.y, max(Nh.z, 1e-7)));
+}
+
+// Weight of one visible-normal sample in the specular integral, without F:
+// f NoL / pdf(L) = F G(V, L) / G1exact(V) for eq. 2 with eq. 3 and eq. 4.
+float visibleNormalSampleWeight(float alpha, float NoV, float NoL) {
+    return smithG1Schlick(alpha, NoV) * smithG1Schlick(alpha, NoL) / smithG1Ggx(alpha, NoV);
+}
+
+// (scale, bias) of F0 in the integral of the specular BRDF over a white environment (eq. 8):
+// the same D, Vis (eq. 4) and pow5 Fresnel split, by sampling visible normals. The LUT
+// stores this over (NoV, roughness).
+vec2 integrateEnvironmentBrdf(float roughness, float NoV, uint sampleCount) {
+    NoV = max(NoV, 1e-4);
+    vec3 V = vec3(sqrt(1.0 - NoV * NoV), 0.0, NoV);
+    float alpha = roughness * roughness;
+    vec2 ab = vec2(0.0);
+    for (uint i = 0u; i < sampleCount; ++i) {
+        vec3 H = importanceSampleGgxVisible(hammersley(i, sampleCount, vec2(0.0)), alpha, V);
+        float VoH = dot(V, H);
+        float NoL = 2.0 * VoH * H.z - V.z;
+        if (NoL <= 0.0 || VoH <= 0.0) continue;
+        float weight = visibleNormalSampleWeight(alpha, NoV, NoL);
+        float fc = pow(1.0 - VoH, 5.0);
+        ab += vec2(1.0 - fc, fc) * weight;
+    }
+    return ab / float(sampleCount);
+}
+
+// Split-sum specular reflectance (eq. 7's second factor) from the LUT, with the 2% rule of
+// eq. 5 on the bias as the direct lighting has it.
+vec3 environmentBrdfFromLut(sampler2D lut, vec3 specularColor, float roughness, float NoV) {
+    vec2 ab = textureLod(lut, vec2(NoV, roughness), 0.0).rg;
+    return specularColor * ab.x + saturate(50.0 * specularColor.g) * ab.y;
+}
+
+// Seed 001's mobile path: the analytic fit, and its cheaper non-metal form when the material
+// is the default non-metal (Specular 0.5, Metallic 0: F0 = 0.04).
+vec3 environmentBrdfMobile(vec3 specularColor, float roughness, float NoV, bool defaultNonmetal) {
+    if (defaultNonmetal) return vec3(envBrdfApproxNonmetal(roughness, NoV));
+    return envBrdfApprox(specularColor, roughness, NoV);
+}
+
+// --- Prefiltered radiance (eq. 7's first factor) --------------------------------------------
+
+// The prefiltered cube keeps one roughness per mip, linearly: mip m holds
+// roughness m / (mipCount - 1).
+float prefilteredMipOfRoughness(float roughness, float mipCount) {
+    return saturate(roughness) * (mipCount - 1.0);
+}
+
+// --- Diffuse irradiance: order-2 spherical harmonics ----------------------------------------
+
+// Real SH basis Y_lm for l <= 2 at unit direction n.
+void shBasis9(vec3 n, out float y[9]) {
+    y[0] = 0.282095;
+    y[1] = 0.488603 * n.y;
+    y[2] = 0.488603 * n.z;
+    y[3] = 0.488603 * n.x;
+    y[4] = 1.092548 * n.x * n.y;
+    y[5] = 1.092548 * n.y * n.z;
+    y[6] = 0.315392 * (3.0 * n.z * n.z - 1.0);
+    y[7] = 1.092548 * n.x * n.z;
+    y[8] = 0.546274 * (n.x * n.x - n.y * n.y);
+}
+
+// Irradiance E(n) from coefficients already convolved with the clamped cosine
+// (A0 = pi, A1 = 2 pi / 3, A2 = pi / 4, folded in by the projection pass).
+vec3 shIrradiance(vec4 coefficients[9], vec3 n) {
+    float y[9];
+    shBasis9(n, y);
+    vec3 e = vec3(0.0);
+    for (int i = 0; i < 9; ++i) e += coefficients[i].rgb * y[i];
+    return max(e, vec3(0.0));  // order 2 rings slightly negative behind bright suns
+}
+
+#endif

@@ -1,0 +1,137 @@
+#include "ibl/environment_cache.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+namespace candela::render {
+
+namespace {
+
+constexpr char kMagic[8] = {'C', 'A', 'N', 'D', 'I', 'B', 'L', '1'};
+
+struct Header {
+    char magic[8];
+    uint32_t version;
+    uint32_t cubeFaceSize;
+    uint32_t cubeMipCount;
+    uint32_t prefilteredFaceSize;
+    uint32_t prefilteredMipCount;
+    uint32_t reserved;
+    uint64_t cubeBytes;
+    uint64_t prefilteredBytes;
+    uint64_t shBytes;
+    uint64_t payloadChecksum;
+};
+
+constexpr uint64_t kFnvOffset = 1469598103934665603ull;
+constexpr uint64_t kFnvPrime = 1099511628211ull;
+
+uint64_t fnv1a(const void* data, size_t bytes, uint64_t hash) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < bytes; ++i)
+        hash = (hash ^ p[i]) * kFnvPrime;
+    return hash;
+}
+
+uint64_t payloadChecksum(const CachedEnvironment& e) {
+    uint64_t h = fnv1a(e.cube.data(), e.cube.size(), kFnvOffset);
+    h = fnv1a(e.prefiltered.data(), e.prefiltered.size(), h);
+    return fnv1a(e.irradianceSh.data(), e.irradianceSh.size(), h);
+}
+
+}  // namespace
+
+uint64_t contentHash(std::span<const std::byte> bytes) {
+    uint64_t h = fnv1a(bytes.data(), bytes.size(), kFnvOffset);
+    return fnv1a(&kEnvironmentPrecomputeVersion, sizeof(kEnvironmentPrecomputeVersion), h);
+}
+
+std::filesystem::path environmentCachePath(const std::filesystem::path& directory, uint64_t hash) {
+    char name[40];
+    std::snprintf(name, sizeof(name), "env-%016llx.cibl", static_cast<unsigned long long>(hash));
+    return directory / name;
+}
+
+std::optional<CachedEnvironment> readCachedEnvironment(const std::filesystem::path& path,
+                                                       std::string& problem) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    Header h{};
+    if (!in.read(reinterpret_cast<char*>(&h), sizeof(h)) ||
+        std::memcmp(h.magic, kMagic, sizeof(kMagic)) != 0 ||
+        h.version != kEnvironmentPrecomputeVersion) {
+        problem = "not a cache entry of this version";
+        return std::nullopt;
+    }
+    EnvironmentSizes expected = environmentSizesFor(h.cubeFaceSize);
+    if (expected.cubeFaceSize != h.cubeFaceSize || expected.cubeMipCount != h.cubeMipCount ||
+        expected.prefilteredFaceSize != h.prefilteredFaceSize ||
+        expected.prefilteredMipCount != h.prefilteredMipCount || h.shBytes != 9 * 16 ||
+        h.cubeBytes > (uint64_t(1) << 32) || h.prefilteredBytes > (uint64_t(1) << 32)) {
+        problem = "header sizes are inconsistent";
+        return std::nullopt;
+    }
+    CachedEnvironment e;
+    e.sizes = expected;
+    e.cube.resize(h.cubeBytes);
+    e.prefiltered.resize(h.prefilteredBytes);
+    e.irradianceSh.resize(h.shBytes);
+    if (!in.read(reinterpret_cast<char*>(e.cube.data()), std::streamsize(e.cube.size())) ||
+        !in.read(reinterpret_cast<char*>(e.prefiltered.data()),
+                 std::streamsize(e.prefiltered.size())) ||
+        !in.read(reinterpret_cast<char*>(e.irradianceSh.data()),
+                 std::streamsize(e.irradianceSh.size()))) {
+        problem = "truncated";
+        return std::nullopt;
+    }
+    if (payloadChecksum(e) != h.payloadChecksum) {
+        problem = "checksum mismatch";
+        return std::nullopt;
+    }
+    return e;
+}
+
+std::string writeCachedEnvironment(const std::filesystem::path& path, const CachedEnvironment& e) {
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec);
+    if (ec) return "cannot create " + path.parent_path().string() + ": " + ec.message();
+    Header h{};
+    std::memcpy(h.magic, kMagic, sizeof(kMagic));
+    h.version = kEnvironmentPrecomputeVersion;
+    h.cubeFaceSize = e.sizes.cubeFaceSize;
+    h.cubeMipCount = e.sizes.cubeMipCount;
+    h.prefilteredFaceSize = e.sizes.prefilteredFaceSize;
+    h.prefilteredMipCount = e.sizes.prefilteredMipCount;
+    h.cubeBytes = e.cube.size();
+    h.prefilteredBytes = e.prefiltered.size();
+    h.shBytes = e.irradianceSh.size();
+    h.payloadChecksum = payloadChecksum(e);
+    // Unique per process, so two runs filling the cache at once never share a temporary.
+    std::filesystem::path temporary = path;
+    temporary += ".tmp" + std::to_string(::getpid());
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(&h), sizeof(h));
+        out.write(reinterpret_cast<const char*>(e.cube.data()), std::streamsize(e.cube.size()));
+        out.write(reinterpret_cast<const char*>(e.prefiltered.data()),
+                  std::streamsize(e.prefiltered.size()));
+        out.write(reinterpret_cast<const char*>(e.irradianceSh.data()),
+                  std::streamsize(e.irradianceSh.size()));
+        out.flush();
+        if (!out) {
+            std::filesystem::remove(temporary, ec);
+            return "cannot write " + temporary.string();
+        }
+    }
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+        std::filesystem::remove(temporary, ec);
+        return "cannot rename into " + path.string();
+    }
+    return {};
+}
+
+}  // namespace candela::render
