@@ -28,6 +28,8 @@ struct TestScene {
     CameraView camera;
     uint32_t width = 128;
     uint32_t height = 128;
+    std::shared_ptr<const Environment> environment;  // the sky, when set
+    float skyIntensity = 1.0f;
 
     // One mesh per primitive, each with its own material.
     void add(content::Primitive primitive, const content::Material& material,
@@ -61,6 +63,7 @@ struct TestScene {
         inputs.scene.camera = camera;
         inputs.scene.draws = draws;
         inputs.scene.lights = lights;
+        inputs.scene.skyIntensity = skyIntensity;
         return inputs;
     }
 
@@ -68,6 +71,7 @@ struct TestScene {
     CapturedFrame render(GpuContext& context, const RendererOptions& options = {},
                          RendererStats* stats = nullptr, uint32_t frames = 1) {
         SceneResources resources(context);
+        resources.setEnvironment(environment);
         FrameInputs inputs = prepare(resources);
         return renderOffscreen(context, inputs, width, height, frames, &resources, options, stats);
     }

@@ -22,8 +22,9 @@ struct RunResult {
     std::string output;  // stdout and stderr together
 };
 
-RunResult runCandela(const std::string& args) {
-    std::string command = std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1";
+// `environment`: variable assignments for the shell to put before the command.
+RunResult runCandela(const std::string& args, const std::string& environment = "") {
+    std::string command = environment + std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1";
     RunResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
@@ -328,4 +329,66 @@ TEST(Cli, NoSceneAndUnknownOptionsAreRejected) {
     EXPECT_EQ(runCandela("run builtin:triangle --frames 0").exitCode, 2);
     EXPECT_EQ(runCandela("run builtin:triangle --frames").exitCode, 2);
     EXPECT_EQ(runCandela("run --help").exitCode, 0);
+}
+
+// Image-based lighting from the command line (issue 6): a scene's sky, --env overriding it,
+// the disk cache across runs, the three modes, and bad sky files.
+TEST(Cli, SkyLightsTheSceneAndIsCachedAcrossRuns) {
+    auto dir = tempDir() / "sky";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string cache = "CANDELA_CACHE_DIR=" + (dir / "cache").string() + " ";
+    const std::string scene = std::string(CANDELA_SOURCE_DIR) +
+                              "/tests/scenes/ibl_spheres_garden.scene.json --headless "
+                              "--size 64x64 ";
+    // Every run uses a private cache folder; the variable prefixes the command in the shell.
+    auto run = [&](const std::string& name, const std::string& extra) {
+        RunResult r =
+            runCandela("run " + scene + extra + " --stats " + (dir / (name + ".json")).string() +
+                           " --capture " + (dir / (name + ".exr")).string(),
+                       cache);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return nlohmann::json::parse(readBytes(dir / (name + ".json")));
+    };
+    nlohmann::json first = run("first", "");
+    nlohmann::json second = run("second", "");
+    ASSERT_TRUE(first.contains("environment"));
+    EXPECT_FALSE(first["environment"]["from_cache"].get<bool>());
+    EXPECT_TRUE(second["environment"]["from_cache"].get<bool>());
+    EXPECT_EQ(second["environment"]["precompute_ms"].get<double>(), 0.0);
+    // The cache holds exactly what the device computed: the same image either way.
+    EXPECT_EQ(readBytes(dir / "first.exr"), readBytes(dir / "second.exr"));
+
+    nlohmann::json mobile = run("mobile", "--ibl mobile");
+    auto features = mobile["features"].get<std::vector<std::string>>();
+    EXPECT_NE(std::find(features.begin(), features.end(), "ibl_mobile"), features.end());
+    EXPECT_NE(readBytes(dir / "mobile.exr"), readBytes(dir / "first.exr"));
+
+    // --env replaces the scene's sky; the image changes.
+    run("studio", "--env " + std::string(CANDELA_SHARED_ASSETS) + "/env/studio_small_03_1k.exr");
+    EXPECT_NE(readBytes(dir / "studio.exr"), readBytes(dir / "first.exr"));
+}
+
+TEST(Cli, BadSkyFileGivesAClearErrorAndTheNeutralSky) {
+    auto dir = tempDir();
+    auto bad = dir / "bad_sky.exr";
+    std::ofstream(bad) << "not an exr";
+    RunResult r =
+        runCandela(std::string("run ") + CANDELA_SOURCE_DIR +
+                       "/tests/scenes/ibl_spheres_garden.scene.json --headless --size 32x32 "
+                       "--env " +
+                       bad.string() + " --stats " + (dir / "bad_sky.json").string(),
+                   "CANDELA_CACHE_DIR=" + (dir / "bad_sky_cache").string() + " ");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find(bad.string()), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("neutral uniform sky"), std::string::npos) << r.output;
+    nlohmann::json stats = nlohmann::json::parse(readBytes(dir / "bad_sky.json"));
+    EXPECT_TRUE(stats["environment"]["fallback"].get<bool>());
+}
+
+TEST(Cli, UnknownIblModeIsRejected) {
+    RunResult r = runCandela(kTriangle + "--ibl fancy");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("split-sum, mobile or reference"), std::string::npos) << r.output;
+    EXPECT_EQ(runCandela(kTriangle + "--env").exitCode, 2);
 }

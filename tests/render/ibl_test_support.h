@@ -1,0 +1,32 @@
+#pragma once
+// Test support shared by the IBL tests: one device per process, the shared assets, scratch
+// folders, and the three IBL modes.
+#include <filesystem>
+#include <string>
+
+#include "candela/render/gpu_context.h"
+#include "candela/render/renderer_options.h"
+#include "offscreen_frame.h"
+
+namespace candela::render::test {
+
+inline GpuContext& sharedContext() {
+    static GpuContext context(requiredValidation());
+    return context;
+}
+
+inline std::filesystem::path sharedAsset(const std::string& relative) {
+    return std::filesystem::path(CANDELA_SHARED_ASSETS) / relative;
+}
+
+// An empty folder under the temp directory (removed first if it exists).
+inline std::filesystem::path freshDirectory(const std::string& name) {
+    std::filesystem::path dir = std::filesystem::temp_directory_path() / ("candela_ibl_" + name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+inline constexpr IblMode kIblModes[] = {IblMode::SplitSum, IblMode::Mobile, IblMode::Reference};
+
+}  // namespace candela::render::test
