@@ -24,9 +24,6 @@ struct RunOptions {
     std::optional<double> stepSeconds;                 // --step: scene time per frame (fixed)
     std::optional<std::filesystem::path> captureEach;  // --capture-each DIR: DIR/frame_NN.png
     std::optional<std::filesystem::path> summary;      // --summary FILE.md
-    std::optional<std::filesystem::path> inputScript;
-    std::optional<bool> overlay;  // --overlay / --no-overlay (default: demo in a window)  //
-                                  // --input SCRIPT: recorded input
     render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Cpu;
     std::optional<std::filesystem::path> inputScript;  // --input SCRIPT: recorded input
     std::optional<bool> overlay;  // --overlay / --no-overlay (default: demo in a window)
