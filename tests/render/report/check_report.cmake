@@ -1,0 +1,33 @@
+# Smoke test of candela-report: a quick run writes the page; every row is there and every
+# number in the main table is finite. Timing values are never checked.
+execute_process(COMMAND ${REPORT} --quick --out ${OUT} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "candela-report --quick failed (${rc})")
+endif()
+file(READ ${OUT} page)
+foreach(row
+    "| Fresnel: Schlick with SG exponent"
+    "| Vis: Schlick-Smith, k = alpha / 2"
+    "| EnvBRDFApprox (seed 001, mobile)"
+    "| eq. 8 LUT, 128x128"
+    "| eq. 8 by Monte Carlo at run time"
+    "| Sphere light: representative point"
+    "| Tube light: closest point to R"
+    "| Windowed falloff (eq. 9)"
+    "| Split-sum IBL"
+    "| Mobile IBL"
+    "| Clustered light culling"
+    "| GGX D (eq. 3) in fp32 at kMinRoughness"
+    "## GGX peak in fp32 near kMinRoughness"
+    "## Sphere lights:"
+    "## Tube lights:")
+  string(FIND "${page}" "${row}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "row missing from ${OUT}: ${row}")
+  endif()
+endforeach()
+# formatNumber writes non-finite values as nan / inf.
+if(page MATCHES "[| (]-?(nan|inf)[ |)%]")
+  message(FATAL_ERROR "non-finite number in ${OUT}")
+endif()
+message(STATUS "candela-report smoke: every row present, all numbers finite")

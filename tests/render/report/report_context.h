@@ -1,0 +1,35 @@
+#pragma once
+// What every section of the report shares: the device harness, the cost timer, the budget,
+// and the report being filled.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "../stability/compute_harness.h"
+#include "report_table.h"
+#include "shader_cost.h"
+
+namespace candela::report {
+
+struct Budget {
+    bool quick = false;  // the smoke test's tiny budget: coarse grids, few repetitions
+    uint32_t iterations(uint32_t full) const { return quick ? std::max(1u, full / 16) : full; }
+};
+
+struct ReportContext {
+    stability::ComputeHarness& harness;
+    ShaderCost& cost;
+    Budget budget;
+    Report& report;
+};
+
+// The sections, one file each.
+void addBrdfRows(ReportContext& context);
+void addEnvironmentBrdfRows(ReportContext& context, const std::vector<float>& lut,
+                            uint32_t lutSize);
+void addAreaLightRows(ReportContext& context);
+void addFalloffRow(ReportContext& context);
+void addSplitSumRow(ReportContext& context);
+void addClusteredRow(ReportContext& context);
+
+}  // namespace candela::report

@@ -1,0 +1,102 @@
+// candela-report: the speed-against-error table of the renderer's approximations (issue 8),
+// each approximation's error against a reference and its cost against the reference's,
+// measured in this run on this machine. scripts/report regenerates docs/speed-vs-error.md.
+//
+//   build/bin/candela-report [--out FILE] [--quick]
+//
+// --quick: coarse grids and one repetition (the ctest smoke test); the numbers are then only
+// good for checking that every row is produced.
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <string>
+
+#include "../stability/compute_harness.h"
+#include "ibl/environment_brdf_lut.h"
+#include "report_context.h"
+
+using namespace candela;
+using namespace candela::report;
+
+namespace {
+
+// The LUT as the renderer computes it, unpacked from R16G16 UNORM to (scale, bias).
+std::vector<float> environmentBrdfLut(render::GpuContext& context) {
+    render::EnvironmentBrdfLut lut(context);
+    const uint32_t n = render::EnvironmentBrdfLut::kSize;
+    std::vector<float> values(size_t(n) * n * 2);
+    for (size_t i = 0; i < size_t(n) * n; ++i) {
+        const uint32_t packed = lut.packedTexels()[i];
+        values[2 * i] = float((packed & 0xFFFFu) / 65535.0);
+        values[2 * i + 1] = float((packed >> 16) / 65535.0);
+    }
+    return values;
+}
+
+int usage() {
+    std::fprintf(stderr, "usage: candela-report [--out FILE] [--quick]\n");
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string outPath;
+    Budget budget;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--quick")) {
+            budget.quick = true;
+        } else if (!std::strcmp(argv[i], "--out") && i + 1 < argc) {
+            outPath = argv[++i];
+        } else {
+            return usage();
+        }
+    }
+    try {
+        const auto start = std::chrono::steady_clock::now();
+        stability::ComputeHarness harness;
+        const std::vector<float> lut = environmentBrdfLut(harness.context());
+        ShaderCost cost(harness, lut, render::EnvironmentBrdfLut::kSize, budget.quick ? 3 : 11,
+                        budget.quick ? 4096 : 16384);
+        Report report;
+        report.device = harness.context().deviceName();
+        report.budget =
+            budget.quick ? "quick (smoke test: coarse grids, numbers not meaningful)" : "full";
+        ReportContext context{harness, cost, budget, report};
+        auto section = [&](const char* name, auto&& run) {
+            std::fprintf(stderr, "candela-report: %s\n", name);
+            run();
+        };
+        section("BRDF terms", [&] { addBrdfRows(context); });
+        section("environment BRDF",
+                [&] { addEnvironmentBrdfRows(context, lut, render::EnvironmentBrdfLut::kSize); });
+        section("area lights", [&] { addAreaLightRows(context); });
+        section("falloff", [&] { addFalloffRow(context); });
+        section("image-based lighting", [&] { addSplitSumRow(context); });
+        section("clustered lights", [&] { addClusteredRow(context); });
+        if (harness.validationMessages() != 0) {
+            std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
+                         harness.validationMessages());
+            return 1;
+        }
+        report.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const std::string markdown = toMarkdown(report);
+        if (outPath.empty()) {
+            std::fputs(markdown.c_str(), stdout);
+        } else {
+            std::ofstream out(outPath, std::ios::binary);
+            out << markdown;
+            if (!out) {
+                std::fprintf(stderr, "candela-report: cannot write %s\n", outPath.c_str());
+                return 1;
+            }
+        }
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "candela-report: %s\n", e.what());
+        return 1;
+    }
+}

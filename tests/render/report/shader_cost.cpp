@@ -1,0 +1,59 @@
+#include "shader_cost.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <span>
+
+#include "shaders/report_cost.comp.spv.h"
+
+namespace candela::report {
+
+namespace {
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values.empty() ? 0.0 : values[values.size() / 2];
+}
+
+}  // namespace
+
+ShaderCost::ShaderCost(stability::ComputeHarness& harness, const std::vector<float>& lut,
+                       uint32_t lutSize, uint32_t repetitions, uint32_t invocations)
+    : harness_(harness),
+      sums_(harness.buffer(invocations * sizeof(float))),
+      lut_(harness.upload(std::span<const float>(lut))),
+      pipeline_(harness.pipeline(report_cost_comp_spv, 2, 16)),
+      lutSize_(lutSize),
+      repetitions_(repetitions),
+      invocations_(invocations) {}
+
+double ShaderCost::timeDispatchMs(CostFunction function, uint32_t iterations, uint32_t samples) {
+    const std::array<uint32_t, 4> job = {uint32_t(function), iterations, samples, lutSize_};
+    auto start = std::chrono::steady_clock::now();
+    harness_.dispatch(pipeline_, {&sums_, &lut_}, job.data(), sizeof(job), invocations_ / 64);
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+std::vector<double> ShaderCost::nsPerEvaluation(const std::vector<CostJob>& jobs) {
+    // One untimed pass compiles and warms every variant.
+    for (const CostJob& job : jobs)
+        timeDispatchMs(job.function, 1, job.samples);
+    std::vector<std::vector<double>> net(jobs.size());
+    for (uint32_t r = 0; r < repetitions_; ++r) {
+        for (size_t j = 0; j < jobs.size(); ++j) {
+            const CostJob& job = jobs[j];
+            double baseline = timeDispatchMs(CostFunction::Baseline, job.iterations, 0);
+            double measured = timeDispatchMs(job.function, job.iterations, job.samples);
+            net[j].push_back((measured - baseline) * 1e6 /
+                             (double(invocations_) * double(job.iterations)));
+        }
+    }
+    std::vector<double> out;
+    for (auto& values : net)
+        out.push_back(median(values));
+    return out;
+}
+
+}  // namespace candela::report

@@ -1,0 +1,59 @@
+#pragma once
+// GPU cost per evaluation of the shared GLSL functions (shaders/report_cost.comp): whole
+// dispatches timed by wall clock around submit-and-wait, the input-generation loop subtracted,
+// medians over repetitions. Functions compared with each other are timed interleaved in the
+// same repetitions, so load on the machine hits both alike.
+#include <cstdint>
+#include <vector>
+
+#include "../stability/compute_harness.h"
+
+namespace candela::report {
+
+// Must match the function ids of shaders/report_cost.comp.
+enum class CostFunction : uint32_t {
+    Baseline = 0,
+    FresnelSg = 1,
+    FresnelPow5 = 2,
+    VisSchlick = 3,
+    VisSmithGgx = 4,
+    EnvBrdfApprox = 5,
+    EnvBrdfLut = 6,
+    EnvBrdfMonteCarlo = 7,
+    InverseSquare = 8,
+    WindowedFalloff = 9,
+    SphereRepresentative = 10,
+    SphereMonteCarlo = 11,
+    TubeRepresentative = 12,
+    TubeMonteCarlo = 13,
+};
+
+struct CostJob {
+    CostFunction function;
+    uint32_t iterations;   // evaluations per invocation (loop trip count, << 65,535)
+    uint32_t samples = 0;  // Monte Carlo samples per evaluation
+};
+
+class ShaderCost {
+public:
+    // lut: the environment BRDF LUT as (scale, bias) pairs, lutSize^2 of them.
+    ShaderCost(stability::ComputeHarness& harness, const std::vector<float>& lut, uint32_t lutSize,
+               uint32_t repetitions, uint32_t invocations);
+
+    // Nanoseconds per evaluation of each job, net of the baseline loop with the same trip
+    // count; may be <= 0 when a function costs less than the timer's noise.
+    std::vector<double> nsPerEvaluation(const std::vector<CostJob>& jobs);
+
+private:
+    double timeDispatchMs(CostFunction function, uint32_t iterations, uint32_t samples);
+
+    stability::ComputeHarness& harness_;
+    render::GpuBuffer sums_;
+    render::GpuBuffer lut_;
+    render::Pipeline pipeline_;
+    uint32_t lutSize_;
+    uint32_t repetitions_;
+    uint32_t invocations_;
+};
+
+}  // namespace candela::report

@@ -1,0 +1,121 @@
+#version 460
+// Cost of one shared-GLSL function: every invocation evaluates it `iterations` times on
+// inputs that change with the loop index (so nothing is hoisted) and keeps a sum (so nothing
+// is dropped). The host times whole dispatches; function 0 (input generation only) is the
+// loop overhead it subtracts. Loops stay far under llvmpipe's 65,535 iterations per invocation.
+#extension GL_GOOGLE_include_directive : require
+
+#include "common/ibl.glsl"
+#include "common/lights.glsl"
+#include "area_light_integration.glsl"
+
+layout(local_size_x = 64) in;
+
+// Must match CostFunction in shader_cost.h.
+const uint kBaseline = 0u;
+const uint kFresnelSg = 1u;
+const uint kFresnelPow5 = 2u;
+const uint kVisSchlick = 3u;
+const uint kVisSmithGgx = 4u;
+const uint kEnvBrdfApprox = 5u;
+const uint kEnvBrdfLut = 6u;
+const uint kEnvBrdfMonteCarlo = 7u;
+const uint kInverseSquare = 8u;
+const uint kWindowedFalloff = 9u;
+const uint kSphereRepresentative = 10u;
+const uint kSphereMonteCarlo = 11u;
+const uint kTubeRepresentative = 12u;
+const uint kTubeMonteCarlo = 13u;
+
+layout(std430, binding = 0) writeonly buffer Sums {
+    float sums[];
+};
+// The environment BRDF LUT unpacked to (scale, bias), row = roughness, column = NoV.
+layout(std430, binding = 1) readonly buffer Lut {
+    vec2 lut[];
+};
+
+layout(push_constant) uniform Job {
+    uint function;
+    uint iterations;
+    uint samples;     // Monte Carlo samples per evaluation
+    uint lutSize;
+};
+
+// Bilinear fetch with clamp-to-edge at texel centres, as a linear sampler reads the LUT.
+vec2 lutBilinear(float roughness, float NoV) {
+    vec2 p = clamp(vec2(NoV, roughness) * float(lutSize) - 0.5, vec2(0.0), vec2(float(lutSize) - 1.0));
+    uvec2 i0 = uvec2(p);
+    uvec2 i1 = min(i0 + 1u, uvec2(lutSize - 1u));
+    vec2 f = p - vec2(i0);
+    vec2 top = mix(lut[i0.y * lutSize + i0.x], lut[i0.y * lutSize + i1.x], f.x);
+    vec2 bottom = mix(lut[i1.y * lutSize + i0.x], lut[i1.y * lutSize + i1.x], f.x);
+    return mix(top, bottom, f.y);
+}
+
+Light areaLight(float sourceRadius, float sourceLength) {
+    Light light;
+    light.position = vec3(0.5, 0.0, 0.866);
+    light.invAttenuationRadius = 0.0;
+    light.intensity = vec3(1.0);
+    light.sourceRadius = sourceRadius;
+    light.direction = vec3(0.0, 0.0, -1.0);
+    light.sourceLength = sourceLength;
+    light.tubeAxis = vec3(0.0, 1.0, 0.0);
+    light.type = kLightPoint;
+    light.spotScale = 0.0;
+    light.spotOffset = 0.0;
+    return light;
+}
+
+// Each function gets its own loop (the switch is outside it, so no case pays for the others'
+// branches): `iterations` evaluations on inputs x, y, z in [1e-3, 0.999] that change every
+// iteration (golden-ratio steps per invocation), summed so nothing is dropped.
+#define TIMED_LOOP(EXPRESSION)                                      \
+    for (uint i = 0u; i < iterations; ++i) {                        \
+        u = fract(u + vec3(0.6180340, 0.7548777, 0.5698403));       \
+        vec3 v = clamp(u, vec3(1e-3), vec3(0.999));                 \
+        float x = v.x, y = v.y, z = v.z;                            \
+        sum += (EXPRESSION);                                        \
+    }
+
+// A view over the surface (N = +Z) and the light's size, from the loop's inputs.
+#define AREA_VIEW normalize(vec3(-0.5 + 0.2 * x, 0.2 * y, 0.866))
+#define SPHERE_LIGHT areaLight(0.1 + 0.2 * z, 0.0)
+#define TUBE_LIGHT areaLight(0.0, 0.5 + z)
+
+void main() {
+    uint id = gl_GlobalInvocationID.x;
+    vec3 u = fract(vec3(0.1234, 0.5678, 0.9012) + float(id) * vec3(0.0001357, 0.0002468, 0.0003579));
+    float sum = 0.0;
+    switch (function) {
+        case kBaseline: TIMED_LOOP(x + y + z); break;
+        case kFresnelSg: TIMED_LOOP(fresnelSchlickSg(vec3(y), x).x); break;
+        case kFresnelPow5: TIMED_LOOP(fresnelSchlickPow5(vec3(y), x).x); break;
+        case kVisSchlick: TIMED_LOOP(visibilitySmithSchlick(y * y + 4e-4, x, z)); break;
+        case kVisSmithGgx: TIMED_LOOP(visibilitySmithGgxCorrelated(y * y + 4e-4, x, z)); break;
+        case kEnvBrdfApprox: TIMED_LOOP(envBrdfApprox(vec3(z), y, x).x); break;
+        case kEnvBrdfLut: TIMED_LOOP(dot(lutBilinear(y, x), vec2(z, 1.0))); break;
+        case kEnvBrdfMonteCarlo:
+            TIMED_LOOP(dot(integrateEnvironmentBrdf(y, x, samples), vec2(z, 1.0)));
+            break;
+        case kInverseSquare: TIMED_LOOP(inverseSquare(x * 100.0)); break;
+        case kWindowedFalloff:
+            TIMED_LOOP(attenuationWindow(x * 100.0, 0.1) * inverseSquare(x * 100.0));
+            break;
+        case kSphereRepresentative:
+            TIMED_LOOP(representativePointSpecular(SPHERE_LIGHT, AREA_VIEW, 0.1 + 0.9 * y));
+            break;
+        case kSphereMonteCarlo:
+            TIMED_LOOP(sphereSpecularMonteCarlo(SPHERE_LIGHT, AREA_VIEW, 0.1 + 0.9 * y, samples, i));
+            break;
+        case kTubeRepresentative:
+            TIMED_LOOP(representativePointSpecular(TUBE_LIGHT, AREA_VIEW, 0.1 + 0.9 * y));
+            break;
+        case kTubeMonteCarlo:
+            TIMED_LOOP(tubeSpecularMonteCarlo(TUBE_LIGHT, AREA_VIEW, 0.1 + 0.9 * y, samples, i));
+            break;
+        default: break;
+    }
+    sums[id] = sum;
+}

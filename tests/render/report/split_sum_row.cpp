@@ -1,0 +1,144 @@
+// Rows: split-sum and mobile image-based lighting against the reference mode (eq. 6 by Monte
+// Carlo per pixel), as images: two rows of spheres (metal, dielectric; roughness 0..1) under a
+// real sky, RMSE over the spheres' pixels; cost from the lighting pass's GPU timestamps.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "../test_scene.h"
+#include "candela/render/environment.h"
+#include "image_difference.h"
+#include "report_context.h"
+
+namespace candela::report {
+
+using namespace candela::render;
+using namespace candela::render::test;
+
+namespace {
+
+constexpr float kSphereRadius = 0.45f;
+constexpr const char* kSky = "env/chinese_garden_1k.exr";
+
+struct SphereRows {
+    TestScene scene;
+    std::vector<glm::vec3> centres;
+};
+
+SphereRows sphereRows(std::shared_ptr<const Environment> sky, uint32_t width, uint32_t height) {
+    SphereRows rows;
+    rows.scene.width = width;
+    rows.scene.height = height;
+    for (int row = 0; row < 2; ++row) {
+        for (int i = 0; i < 6; ++i) {
+            content::Material m;
+            const bool metal = row == 0;
+            m.baseColorFactor = metal ? std::array<float, 4>{0.95f, 0.93f, 0.88f, 1.0f}
+                                      : std::array<float, 4>{0.5f, 0.5f, 0.5f, 1.0f};
+            m.metallicFactor = metal ? 1.0f : 0.0f;
+            m.roughnessFactor = float(i) / 5.0f;
+            glm::vec3 centre((float(i) - 2.5f) * 1.2f, metal ? 0.6f : -0.6f, 0.0f);
+            rows.scene.add(content::makeSphere(kSphereRadius, 96, 48), m,
+                           glm::translate(glm::mat4(1.0f), centre));
+            rows.centres.push_back(centre);
+        }
+    }
+    rows.scene.lookAt({0.0f, 0.0f, 4.5f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f},
+                      glm::radians(50.0f));
+    rows.scene.environment = std::move(sky);
+    return rows;
+}
+
+// The sphere (0..5 metal, 6..11 dielectric) the pixel's ray meets inside 95% of its radius
+// (silhouette pixels depend on tessellation, not lighting), or -1.
+int sphereAt(const SphereRows& rows, uint32_t x, uint32_t y) {
+    const TestScene& s = rows.scene;
+    glm::mat4 inverse = glm::inverse(s.camera.projection * s.camera.view);
+    glm::vec2 ndc((float(x) + 0.5f) / float(s.width) * 2.0f - 1.0f,
+                  (float(y) + 0.5f) / float(s.height) * 2.0f - 1.0f);
+    glm::vec4 far = inverse * glm::vec4(ndc, 0.5f, 1.0f);
+    glm::vec3 origin = s.camera.position;
+    glm::vec3 dir = glm::normalize(glm::vec3(far) / far.w - origin);
+    for (size_t i = 0; i < rows.centres.size(); ++i) {
+        glm::vec3 oc = origin - rows.centres[i];
+        float b = glm::dot(oc, dir);
+        float r = kSphereRadius * 0.95f;
+        if (b * b - (glm::dot(oc, oc) - r * r) > 0.0f) return int(i);
+    }
+    return -1;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+}  // namespace
+
+void addSplitSumRow(ReportContext& context) {
+    const bool quick = context.budget.quick;
+    GpuContext& gpu = context.harness.context();
+    content::Diagnostics diagnostics;
+    EnvironmentCacheOptions cache{std::filesystem::temp_directory_path() / "candela_report_sky"};
+    std::shared_ptr<const Environment> sky = Environment::load(
+        gpu, std::filesystem::path(CANDELA_SHARED_ASSETS) / kSky, diagnostics, cache);
+    if (sky->stats().fallback) {
+        throw std::runtime_error(std::string("cannot load the report's sky ") + kSky + ": " +
+                                 diagnostics.toString());
+    }
+    const uint32_t width = quick ? 96 : 288, height = quick ? 48 : 128;
+    const uint32_t referenceSamples = quick ? 64 : 2048;
+    const uint32_t repetitions = quick ? 1 : 3;
+    SphereRows rows = sphereRows(sky, width, height);
+    std::map<IblMode, CapturedFrame> images;
+    std::map<IblMode, std::vector<double>> ms;
+    for (uint32_t r = 0; r < repetitions; ++r) {
+        for (IblMode mode : {IblMode::SplitSum, IblMode::Mobile, IblMode::Reference}) {
+            RendererOptions options;
+            options.ibl = mode;
+            options.referenceSamples = referenceSamples;
+            RendererStats stats;
+            images[mode] = rows.scene.render(gpu, options, &stats, 2);
+            ms[mode].push_back(stats.lightingMs);
+        }
+    }
+    std::vector<int> sphereOfPixel(size_t(width) * height);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (uint32_t x = 0; x < width; ++x)
+            sphereOfPixel[size_t(y) * width + x] = sphereAt(rows, x, y);
+    }
+    auto spheres = [&](int first, int last) {
+        return [&, first, last](uint32_t x, uint32_t y) {
+            int i = sphereOfPixel[size_t(y) * width + x];
+            return i >= first && i <= last;
+        };
+    };
+    char metric[240];
+    std::snprintf(metric, sizeof(metric),
+                  "relative RMSE over the spheres' pixels (12 spheres: metal and grey dielectric, "
+                  "roughness 0..1; %ux%u, %s, no lights); reference: %u + %u samples per pixel",
+                  width, height, kSky, referenceSamples, referenceSamples);
+    for (IblMode mode : {IblMode::SplitSum, IblMode::Mobile}) {
+        const CapturedFrame& reference = images[IblMode::Reference];
+        ImageDifference d = imageDifference(images[mode], reference, spheres(0, 11));
+        ImageDifference metals = imageDifference(images[mode], reference, spheres(0, 5));
+        ImageDifference dielectrics = imageDifference(images[mode], reference, spheres(6, 11));
+        char where[240];
+        std::snprintf(where, sizeof(where),
+                      "max %.1f x the mean at pixel (%u, %u); RMSE metals %.2f, dielectrics "
+                      "%.3f; energy bias %+.1f %%",
+                      d.relativeMax, d.worstX, d.worstY, metals.relativeRmse,
+                      dielectrics.relativeRmse, 100.0 * d.relativeBias);
+        const bool splitSum = mode == IblMode::SplitSum;
+        context.report.rows.push_back(
+            {splitSum ? "Split-sum IBL (eq. 7: prefiltered cube x LUT, SH irradiance)"
+                      : "Mobile IBL (prefiltered cube x EnvBRDFApprox, SH irradiance)",
+             "reference IBL (eq. 6 per pixel, MIS)", metric, d.relativeRmse, "rel RMSE", where,
+             "lighting pass " +
+                 formatCost(median(ms[mode]), median(ms[IblMode::Reference]), "ms")});
+    }
+}
+
+}  // namespace candela::report
