@@ -89,8 +89,8 @@ Sweep sweep(ReportContext& context, bool sphere, const std::vector<double>& size
             if (!(cell.l1 <= out.worst)) {
                 out.worst = cell.l1;
                 char text[96];
-                std::snprintf(text, sizeof(text), "roughness %.2f, %s %.2f", roughness,
-                              sphere ? "sin(sigma)" : "length (m) at 1 m", size);
+                std::snprintf(text, sizeof(text), "roughness %.2f, %s %.2f%s", roughness,
+                              sphere ? "sin(sigma)" : "length", size, sphere ? "" : " m at 1 m");
                 out.where = text;
             }
         }
@@ -107,8 +107,8 @@ void addAreaLightRows(ReportContext& context) {
     const int tubeSamples = quick ? 4096 : 65536;
     const uint32_t monteCarloSamples = 64;
     const uint32_t monteCarloIterations = context.budget.iterations(16);
-    const uint32_t iterations = context.budget.iterations(1024);
-    std::vector<double> ns = context.cost.nsPerEvaluation({
+    const uint32_t iterations = context.budget.iterations(4096);
+    std::vector<Cost> ns = context.cost.nsPerEvaluation({
         {CostFunction::SphereRepresentative, iterations},
         {CostFunction::SphereMonteCarlo, monteCarloIterations, monteCarloSamples},
         {CostFunction::TubeRepresentative, iterations},
@@ -149,7 +149,7 @@ void addAreaLightRows(ReportContext& context) {
         {"Sphere light: representative point + (alpha / alpha')^2 (eq. 10-14)",
          "specular integrated over the sphere (double)",
          "relative L1 over 6 views (roughness 0.1..1 x sin(sigma) 0.05..0.4, see the table below)",
-         sphere.worst, "rel", sphere.where, formatCost(ns[0], ns[1]) + monteCarloCost});
+         sphere.worst, "rel", sphere.where, formatShaderCost(ns[0], ns[1]) + monteCarloCost});
     context.report.tables.push_back(sphere.table);
 
     // Tube (radius 0): R through the centre, along the axis to 0.5, 1 and 1.5 half-lengths,
@@ -186,7 +186,7 @@ void addAreaLightRows(ReportContext& context) {
          "specular integrated along the tube (double)",
          "relative L1 over 6 views (roughness 0.1..1 x length 0.25..2 m at 1 m, see the table "
          "below)",
-         tube.worst, "rel", tube.where, formatCost(ns[2], ns[3]) + monteCarloCost});
+         tube.worst, "rel", tube.where, formatShaderCost(ns[2], ns[3]) + monteCarloCost});
     context.report.tables.push_back(tube.table);
 }
 

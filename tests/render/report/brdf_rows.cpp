@@ -18,7 +18,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-void addFresnelRow(ReportContext& context, double costSg, double costPow5) {
+void addFresnelRow(ReportContext& context, const Cost& costSg, const Cost& costPow5) {
     const float f0s[] = {0.02f, 0.04f, 0.1f, 0.5f, 0.95f, 1.0f};
     const int steps = context.budget.quick ? 64 : 4096;
     std::vector<ValueSample> samples;
@@ -47,10 +47,10 @@ void addFresnelRow(ReportContext& context, double costSg, double costPow5) {
     context.report.rows.push_back(
         {"Fresnel: Schlick with SG exponent exp2((-5.55473 VoH - 6.98316) "
          "VoH) (eq. 5)",
-         "Schlick (1 - VoH)^5", metric, worst, "abs", where, formatCost(costSg, costPow5)});
+         "Schlick (1 - VoH)^5", metric, worst, "abs", where, formatShaderCost(costSg, costPow5)});
 }
 
-void addVisibilityRow(ReportContext& context, double costSchlick, double costSmith) {
+void addVisibilityRow(ReportContext& context, const Cost& costSchlick, const Cost& costSmith) {
     const int roughnessSteps = context.budget.quick ? 8 : 50;
     const int angleSteps = context.budget.quick ? 16 : 128;
     std::vector<ValueSample> samples;
@@ -89,7 +89,7 @@ void addVisibilityRow(ReportContext& context, double costSchlick, double costSmi
                   roughnessSteps, angleSteps, formatNumber(worstMid).c_str());
     context.report.rows.push_back({"Vis: Schlick-Smith, k = alpha / 2 (eq. 4)",
                                    "height-correlated Smith GGX (exact)", metric, worst, "rel",
-                                   where, formatCost(costSchlick, costSmith)});
+                                   where, formatShaderCost(costSchlick, costSmith)});
 }
 
 // Projected area of D: the integral of D(h) NoH over the hemisphere is 1 for any alpha. With
@@ -160,8 +160,8 @@ void addGgxNote(ReportContext& context) {
 }  // namespace
 
 void addBrdfRows(ReportContext& context) {
-    const uint32_t iterations = context.budget.iterations(2048);
-    std::vector<double> ns = context.cost.nsPerEvaluation({
+    const uint32_t iterations = context.budget.iterations(16384);
+    std::vector<Cost> ns = context.cost.nsPerEvaluation({
         {CostFunction::FresnelSg, iterations},
         {CostFunction::FresnelPow5, iterations},
         {CostFunction::VisSchlick, iterations},

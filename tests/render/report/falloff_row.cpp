@@ -28,8 +28,8 @@ void addFalloffRow(ReportContext& context) {
         if (i + 1 == steps / 2) droppedAtHalf = dropped;
         if (tenPercentAt < 0.0 && d > 0.05 && dropped >= 0.1) tenPercentAt = d / radius;
     }
-    const uint32_t iterations = context.budget.iterations(2048);
-    std::vector<double> ns = context.cost.nsPerEvaluation({
+    const uint32_t iterations = context.budget.iterations(16384);
+    std::vector<Cost> ns = context.cost.nsPerEvaluation({
         {CostFunction::WindowedFalloff, iterations},
         {CostFunction::InverseSquare, iterations},
     });
@@ -46,7 +46,7 @@ void addFalloffRow(ReportContext& context) {
     context.report.rows.push_back(
         {"Windowed falloff (eq. 9)", "inverse square 1 / d^2", metric, 100.0 * meanDropped,
          "% energy", where,
-         formatCost(ns[0], ns[1]) + " (the window is what lets clustering cull at R)"});
+         formatShaderCost(ns[0], ns[1]) + " (the window is what lets clustering cull at R)"});
 }
 
 }  // namespace candela::report

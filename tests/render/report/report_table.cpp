@@ -63,8 +63,10 @@ std::string toMarkdown(const Report& report) {
         << " s.\n"
         << "- Cost: GPU time per evaluation from wall-clock time around compute dispatches "
            "(each invocation evaluates the function in a loop on changing inputs), minus the "
-           "same loop with no function (input generation only), median over repetitions; "
-           "`ratio` = reference / approximation. Image rows: the lighting pass's GPU timestamps "
+           "same loop with no function (input generation only), median over repetitions "
+           "(interleaved with the reference's); `< noise` when the median is under the "
+           "repetitions' interquartile range, the machine being shared; `ratio` = reference / "
+           "approximation. Image rows: the lighting pass's GPU timestamps "
            "(RendererStats::lightingMs), medians.\n"
         << "- Error: the metric and input grid are stated per row; `worst at` names the input of "
            "the largest error.\n\n";

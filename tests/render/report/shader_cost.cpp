@@ -5,6 +5,7 @@
 #include <chrono>
 #include <span>
 
+#include "report_table.h"
 #include "shaders/report_cost.comp.spv.h"
 
 namespace candela::report {
@@ -16,7 +17,29 @@ double median(std::vector<double> values) {
     return values.empty() ? 0.0 : values[values.size() / 2];
 }
 
+double quantile(std::vector<double> values, double q) {
+    std::sort(values.begin(), values.end());
+    return values.empty() ? 0.0 : values[size_t(q * double(values.size() - 1) + 0.5)];
+}
+
+bool aboveNoise(const Cost& cost) {
+    return cost.ns > 0.0 && cost.ns > cost.spread;
+}
+
 }  // namespace
+
+std::string formatShaderCost(const Cost& cost) {
+    if (aboveNoise(cost)) return formatNumber(cost.ns) + " ns";
+    return "< noise (IQR " + formatNumber(cost.spread, 2) + " ns)";
+}
+
+std::string formatShaderCost(const Cost& approximation, const Cost& reference) {
+    std::string text = formatShaderCost(approximation) + " vs " + formatShaderCost(reference);
+    if (aboveNoise(approximation) && aboveNoise(reference)) {
+        text += " (" + formatNumber(reference.ns / approximation.ns) + "x)";
+    }
+    return text;
+}
 
 ShaderCost::ShaderCost(stability::ComputeHarness& harness, const std::vector<float>& lut,
                        uint32_t lutSize, uint32_t repetitions, uint32_t invocations)
@@ -36,7 +59,7 @@ double ShaderCost::timeDispatchMs(CostFunction function, uint32_t iterations, ui
         .count();
 }
 
-std::vector<double> ShaderCost::nsPerEvaluation(const std::vector<CostJob>& jobs) {
+std::vector<Cost> ShaderCost::nsPerEvaluation(const std::vector<CostJob>& jobs) {
     // One untimed pass compiles and warms every variant.
     for (const CostJob& job : jobs)
         timeDispatchMs(job.function, 1, job.samples);
@@ -50,9 +73,9 @@ std::vector<double> ShaderCost::nsPerEvaluation(const std::vector<CostJob>& jobs
                              (double(invocations_) * double(job.iterations)));
         }
     }
-    std::vector<double> out;
+    std::vector<Cost> out;
     for (auto& values : net)
-        out.push_back(median(values));
+        out.push_back({median(values), quantile(values, 0.75) - quantile(values, 0.25)});
     return out;
 }
 

@@ -4,6 +4,7 @@
 // medians over repetitions. Functions compared with each other are timed interleaved in the
 // same repetitions, so load on the machine hits both alike.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "../stability/compute_harness.h"
@@ -34,6 +35,18 @@ struct CostJob {
     uint32_t samples = 0;  // Monte Carlo samples per evaluation
 };
 
+// Median nanoseconds per evaluation over the repetitions and their interquartile range: a
+// median under its spread is indistinguishable from zero on this (shared, loaded) machine.
+struct Cost {
+    double ns = 0.0;
+    double spread = 0.0;
+};
+
+// "0.36 ns", or "< noise (IQR 0.05 ns)" when the median is under its spread.
+std::string formatShaderCost(const Cost& cost);
+// "a vs b (ratio x)"; the ratio only when both are above their noise.
+std::string formatShaderCost(const Cost& approximation, const Cost& reference);
+
 class ShaderCost {
 public:
     // lut: the environment BRDF LUT as (scale, bias) pairs, lutSize^2 of them.
@@ -41,8 +54,8 @@ public:
                uint32_t repetitions, uint32_t invocations);
 
     // Nanoseconds per evaluation of each job, net of the baseline loop with the same trip
-    // count; may be <= 0 when a function costs less than the timer's noise.
-    std::vector<double> nsPerEvaluation(const std::vector<CostJob>& jobs);
+    // count; the median may be <= 0 when a function costs less than the timer's noise.
+    std::vector<Cost> nsPerEvaluation(const std::vector<CostJob>& jobs);
 
 private:
     double timeDispatchMs(CostFunction function, uint32_t iterations, uint32_t samples);
