@@ -15,6 +15,7 @@
 #include "gbuffer_targets.h"
 #include "gpu_camera.h"
 #include "ibl/environment_brdf_lut.h"
+#include "ibl/environment_descriptors.h"
 #include "ibl/environment_sampling_table.h"
 #include "lights/gpu_light_buffer.h"
 #include "passes/depth_occupancy/depth_occupancy_pass.h"
@@ -112,6 +113,7 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     gbufferPass_ = std::make_unique<GBufferPass>(context_);
     occupancyPass_ = std::make_unique<DepthOccupancyPass>(context_);
     lightingPass_ = std::make_unique<LightingPass>(context_);
+    environmentPlaceholders_ = std::make_unique<EnvironmentPlaceholders>(context_);
     transparentPass_ = std::make_unique<ForwardTransparentPass>(context_);
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
     if (options_.lightAssignment == LightAssignmentDevice::Gpu) {
@@ -377,13 +379,12 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
                                   &clusterRanges_, &lightIndices_,
                                   &pairCounts_,    &depthRange_,
                                   grid_.get(),     assignment_->directionalCount};
-    lighting.environment = resources.environment();
-    lighting.brdfLut = brdfLut_.get();
+    const EnvironmentDescriptors environment = environmentPlaceholders_->describe(
+        features.ibl ? resources.environment() : nullptr, brdfLut_.get(),
+        samplingTable_ && features.ibl == IblMode::Reference ? &samplingTable_->buffer() : nullptr);
+    lighting.environment = &environment;
     lighting.skyIntensity = inputs.scene.skyIntensity;
     lighting.referenceSamples = options_.referenceSamples;
-    if (samplingTable_ && features.ibl == IblMode::Reference) {
-        lighting.samplingTable = &samplingTable_->buffer();
-    }
     lightingPass_->record(cmd, lighting);
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_, 1);
     timestampsWritten_ = true;
@@ -392,7 +393,8 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
         transparentPass_->recordShading(
             cmd, resources,
             {&hdr_, &gbuffer_->depth, &cameraBuffer_, &lights_->buffer(), &clusterRanges_,
-             &lightIndices_, &depthRange_, grid_.get(), assignment_->directionalCount});
+             &lightIndices_, &depthRange_, grid_.get(), assignment_->directionalCount, &environment,
+             inputs.scene.skyIntensity});
         features_.push_back("forward_transparency");
     }
 }

@@ -257,3 +257,26 @@ TEST(IblEnvironment, SecondLoadReadsTheCacheAndACorruptEntryIsRebuilt) {
     EXPECT_TRUE(load(fourth)->stats().fromCache);
     EXPECT_EQ(context.validationMessages(), 0u);
 }
+
+// Blended (glTF BLEND) surfaces are shaded by the forward pass: they get the same ambient
+// light. A half-transparent white Lambert sphere in the uniform sky reflects radiance 1 and
+// lets half the sky through: 0.5 x 1 + 0.5 x 1 = 1. Without ambient it would show 0.5.
+TEST(IblFurnace, BlendedLambertSphereGetsTheSameAmbientLight) {
+    GpuContext& context = sharedContext();
+    std::shared_ptr<const Environment> sky = Environment::uniform(context, 1.0f);
+    candela::content::Material glass = lambertWhite();
+    glass.baseColorFactor[3] = 0.5f;
+    glass.alphaMode = candela::content::AlphaMode::Blend;
+    for (IblMode mode : {IblMode::SplitSum, IblMode::Mobile}) {
+        RendererOptions options;
+        options.ibl = mode;
+        RendererStats stats;
+        TestScene scene = sphereInSky(glass, sky);
+        CentreStats s = centreStats(scene.render(context, options, &stats));
+        std::printf("%-10s blended white Lambert sphere: radiance %.5f .. %.5f\n",
+                    iblModeName(mode), s.min, s.max);
+        EXPECT_NEAR(s.min, 1.0f, 0.01f) << iblModeName(mode);
+        EXPECT_NEAR(s.max, 1.0f, 0.01f) << iblModeName(mode);
+    }
+    EXPECT_EQ(context.validationMessages(), 0u);
+}

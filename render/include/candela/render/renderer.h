@@ -24,6 +24,7 @@ namespace candela::render {
 class DepthOccupancyPass;
 class ForwardTransparentPass;
 class EnvironmentBrdfLut;
+class EnvironmentPlaceholders;
 class EnvironmentSamplingTable;
 class FrameSubmitter;
 class GBufferPass;
@@ -114,6 +115,7 @@ private:
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<EnvironmentBrdfLut> brdfLut_;
+    std::unique_ptr<EnvironmentPlaceholders> environmentPlaceholders_;
     std::unique_ptr<EnvironmentSamplingTable> samplingTable_;
     std::vector<std::string> features_;
     RendererStats stats_;

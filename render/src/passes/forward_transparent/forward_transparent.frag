@@ -7,6 +7,7 @@
 // blends rgb with SRC_ALPHA, ONE_MINUS_SRC_ALPHA; emissive is part of the surface's colour.
 #define MATERIAL_BUFFER_BINDING 2
 #define MATERIAL_TEXTURE_BINDING 3
+#include "common/ambient_lighting.glsl"
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
 #include "common/light_buffer.glsl"
@@ -14,12 +15,17 @@
 #include "common/shading_models.glsl"
 
 layout(constant_id = 30) const bool kClustered = true;
+// Image-based lighting as the deferred pass does it: 0 none, 1 split sum, 2 mobile.
+layout(constant_id = 32) const uint kIblMode = 0u;
 
 layout(std430, binding = 16) readonly buffer ClusterRanges { uint clusterRanges[]; };
 layout(std430, binding = 17) readonly buffer LightIndices { uint lightIndices[]; };
 // The frame's slicing from depth_occupancy.comp ([2] sliceNear, [3] logRatio as float bits):
 // read here, as lists assigned on the device leave the host without it.
 layout(std430, binding = 18) readonly buffer DepthRange { uint depthRange[]; };
+layout(binding = 19) uniform samplerCube prefilteredCube;
+layout(binding = 20) uniform sampler2D environmentBrdfLut;
+layout(std430, binding = 21) readonly buffer IrradianceSh { vec4 irradianceSh[9]; };
 
 // A cluster whose device-assigned list did not fit (light_assignment_pass.h): every light.
 const uint kListOverflow = 0xffffffffu;
@@ -29,6 +35,10 @@ layout(push_constant) uniform Draw {
     uint material;
     uint directionalCount;
     ClusterGridParams grid;
+    uvec2 size;             // used by the occupancy variant
+    vec2 projectionScale;   // used by the occupancy variant
+    float skyIntensity;
+    float prefilteredMipCount;
 } draw;
 
 layout(location = 0) in vec3 inNormal;
@@ -72,6 +82,14 @@ void main() {
         vec3 V = safeNormalize(camera.cameraPosition.xyz - P);
         vec3 R = reflect(-V, N);
         float alpha = alphaFromRoughness(s.roughness);
+
+        if (kIblMode != 0u) {
+            vec4 sh[9] = irradianceSh;
+            radiance += environmentAmbient(surface, N, V, sh, prefilteredCube,
+                                           draw.prefilteredMipCount, environmentBrdfLut,
+                                           kIblMode == 2u) *
+                        (s.occlusion * draw.skyIntensity);
+        }
 
         if (kClustered) {
             for (uint i = 0u; i < draw.directionalCount; ++i) {

@@ -10,6 +10,7 @@
 #include "clustered/cluster_grid.h"
 #include "clustered/gpu_cluster_params.h"
 #include "gbuffer_targets.h"
+#include "ibl/environment_descriptors.h"
 #include "mesh_vertex.h"
 #include "shaders/forward_transparent.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
@@ -30,6 +31,8 @@ struct DrawPush {
     GpuClusterParams grid;
     uint32_t size[2];
     float projectionScale[2];
+    float skyIntensity;
+    float prefilteredMipCount;
 };
 
 // Bindings of forward_transparent.frag.
@@ -40,6 +43,9 @@ constexpr uint32_t kFirstTextureBinding = 3;
 constexpr uint32_t kClusterRangesBinding = 16;
 constexpr uint32_t kLightIndicesBinding = 17;
 constexpr uint32_t kDepthRangeBinding = 18;
+constexpr uint32_t kPrefilteredBinding = 19;
+constexpr uint32_t kBrdfLutBinding = 20;
+constexpr uint32_t kIrradianceShBinding = 21;
 static_assert(kFirstTextureBinding + kTextureSlotCount <= kClusterRangesBinding);
 
 // Specialization constants shared with the lighting pass (shading_models.glsl, lights.glsl,
@@ -50,6 +56,7 @@ constexpr uint32_t kSphereConstant = 20;
 constexpr uint32_t kTubeConstant = 21;
 constexpr uint32_t kSpotConstant = 22;
 constexpr uint32_t kClusteredConstant = 30;
+constexpr uint32_t kIblModeConstant = 32;
 
 void setMeshVertexInput(GraphicsPipelineDesc& desc) {
     desc.vertexSpirv = gbuffer_vert_spv;  // the G-buffer's vertex stage: same transform
@@ -124,6 +131,11 @@ void ForwardTransparentPass::buildShadingPipeline() {
     constants.set(kTubeConstant, features_.tubeLights);
     constants.set(kSpotConstant, features_.spotLights);
     constants.set(kClusteredConstant, features_.clustered);
+    // 0 none, 1 split sum, 2 mobile; the reference mode's per-pixel integration is for the
+    // deferred pass's measurements: blended surfaces take the split sum under it.
+    constants.set(kIblModeConstant, !features_.ibl                      ? 0u
+                                    : *features_.ibl == IblMode::Mobile ? 2u
+                                                                        : 1u);
 
     GraphicsPipelineDesc desc;
     setMeshVertexInput(desc);
@@ -142,6 +154,10 @@ void ForwardTransparentPass::buildShadingPipeline() {
         {kClusterRangesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
         {kLightIndicesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
         {kDepthRangeBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {kPrefilteredBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {kBrdfLutBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {kIrradianceShBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
         bindings.push_back({kFirstTextureBinding + slot, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
@@ -288,6 +304,8 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
     push.grid = toGpu(*in.grid);
     push.size[0] = width;
     push.size[1] = height;
+    push.skyIntensity = in.skyIntensity;
+    push.prefilteredMipCount = in.environment->prefilteredMipCount;
     for (const DrawItem& draw : sorted_) {
         const MaterialBinding& binding = resources.materialBinding(draw.material);
         std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
@@ -297,7 +315,10 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
             storageBufferWrite(kMaterialsBinding, &materialInfo),
             storageBufferWrite(kClusterRangesBinding, &rangesInfo),
             storageBufferWrite(kLightIndicesBinding, &indicesInfo),
-            storageBufferWrite(kDepthRangeBinding, &depthRangeInfo)};
+            storageBufferWrite(kDepthRangeBinding, &depthRangeInfo),
+            sampledImageWrite(kPrefilteredBinding, &in.environment->prefiltered),
+            sampledImageWrite(kBrdfLutBinding, &in.environment->brdfLut),
+            storageBufferWrite(kIrradianceShBinding, &in.environment->irradianceSh)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};

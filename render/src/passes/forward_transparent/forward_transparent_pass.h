@@ -18,6 +18,7 @@ class GpuContext;
 class GpuImage;
 class SceneResources;
 struct ClusterGrid;
+struct EnvironmentDescriptors;
 
 class ForwardTransparentPass {
 public:
@@ -59,6 +60,8 @@ public:
         const GpuBuffer* depthRange;  // the slicing DepthOccupancyPass derived
         const ClusterGrid* grid;
         uint32_t directionalCount;
+        const EnvironmentDescriptors* environment;  // the sky (features().ibl), or placeholders
+        float skyIntensity;
     };
     void recordShading(VkCommandBuffer cmd, SceneResources& resources,
                        const ShadingInputs& in) const;

@@ -7,6 +7,7 @@
 // pixels show the sky.
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
+#include "common/ambient_lighting.glsl"
 #include "common/ibl.glsl"
 #include "common/light_buffer.glsl"
 #include "common/shading_models.glsl"
@@ -247,30 +248,11 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
 
 // Ambient light of the environment on the pixel's surface (cd/m^2 before sky intensity).
 vec3 ambientRadiance(PixelShading px, ivec2 pixel) {
-    AmbientTerms t = ambientTermsOf(px.surface);
-    if (kIblMode == kIblReference) return referenceAmbient(t, px, pixel);
+    if (kIblMode == kIblReference) return referenceAmbient(ambientTermsOf(px.surface), px, pixel);
     vec4 sh[9] = irradianceSh;
-    vec3 diffuse = t.diffuseColor * (1.0 / PI) * shIrradiance(sh, px.N);
-    if (any(greaterThan(t.transmittedColor, vec3(0.0)))) {
-        diffuse += t.transmittedColor * (1.0 / PI) * shIrradiance(sh, -px.N);
-    }
-    float roughness = px.surface.roughness;
-    float NoV = saturate(dot(px.N, px.V));
-    vec3 prefiltered = textureLod(prefilteredCube, px.R,
-                                  prefilteredMipOfRoughness(roughness, push.prefilteredMipCount))
-                           .rgb;
-    vec3 environmentBrdf;
-    if (kIblMode == kIblMobile) {
-        // G-buffer Specular is 8-bit: 0.5 arrives as 128 / 255.
-        bool defaultNonmetal = px.surface.shadingModel == kShadingDefaultLit &&
-                               px.surface.metallic == 0.0 &&
-                               abs(px.surface.specular - 0.5) < 1.0 / 255.0;
-        environmentBrdf = environmentBrdfMobile(t.specularColor, roughness, NoV, defaultNonmetal);
-    } else {
-        environmentBrdf = environmentBrdfFromLut(environmentBrdfLut, t.specularColor, roughness,
-                                                 NoV);
-    }
-    return diffuse + prefiltered * environmentBrdf;
+    return environmentAmbient(px.surface, px.N, px.V, sh, prefilteredCube,
+                              push.prefilteredMipCount, environmentBrdfLut,
+                              kIblMode == kIblMobile);
 }
 
 void shadePixel(ivec2 pixel, inout PixelShading px) {

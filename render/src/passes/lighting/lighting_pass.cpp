@@ -1,13 +1,11 @@
 #include "passes/lighting/lighting_pass.h"
 
-#include "candela/render/environment.h"
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_context.h"
 #include "clustered/gpu_cluster_params.h"
 #include "gbuffer_targets.h"
-#include "ibl/environment_brdf_lut.h"
+#include "ibl/environment_descriptors.h"
 #include "shaders/lighting.comp.spv.h"
-#include "vk/sampler.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -68,20 +66,6 @@ LightingPass::LightingPass(GpuContext& context) : context_(context) {
     info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     CANDELA_VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &pointSampler_));
-    linearSampler_ = std::make_unique<Sampler>(context, SamplerDesc{});
-    placeholderCube_ = GpuImage(
-        context, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1, true, VK_IMAGE_USAGE_SAMPLED_BIT});
-    placeholderLut_ =
-        GpuImage(context, {VK_FORMAT_R16G16_UNORM, 1, 1, 1, false, VK_IMAGE_USAGE_SAMPLED_BIT});
-    placeholderSh_ =
-        GpuBuffer(context, 9 * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryLocation::Device);
-    context.submitAndWait([&](VkCommandBuffer cmd) {
-        for (const GpuImage* image : {&placeholderCube_, &placeholderLut_}) {
-            transitionImage(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED,
-                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
-                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0);
-        }
-    });
     setFeatures({});
 }
 
@@ -142,36 +126,19 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
     }
     images[4] = {pointSampler_, in.gbuffer->depth.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, in.hdr->view(), VK_IMAGE_LAYOUT_GENERAL};
-    const bool ibl = features_.ibl.has_value();
-    VkSampler linear = linearSampler_->handle();
-    constexpr VkImageLayout kRead = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    VkDescriptorImageInfo environmentInfo{linear, placeholderCube_.view(), kRead};
-    VkDescriptorImageInfo prefilteredInfo{linear, placeholderCube_.view(), kRead};
-    VkDescriptorImageInfo lutInfo{linear, placeholderLut_.view(), kRead};
-    VkDescriptorBufferInfo shInfo{placeholderSh_.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo samplingInfo{placeholderSh_.handle(), 0, VK_WHOLE_SIZE};
-    float prefilteredMipCount = 1.0f;
-    if (ibl) {
-        const Environment& env = *in.environment;
-        environmentInfo = {env.sampler(), env.cube().view(), kRead};
-        prefilteredInfo = {env.sampler(), env.prefiltered().view(), kRead};
-        lutInfo = {in.brdfLut->sampler(), in.brdfLut->image().view(), kRead};
-        shInfo = {env.irradianceSh().handle(), 0, VK_WHOLE_SIZE};
-        prefilteredMipCount = float(env.prefiltered().desc().mipLevels);
-        if (in.samplingTable) samplingInfo = {in.samplingTable->handle(), 0, VK_WHOLE_SIZE};
-    }
+    const EnvironmentDescriptors& env = *in.environment;
     const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(0, &cameraInfo),      storageBufferWrite(1, &lightInfo),
-        sampledImageWrite(2, &images[0]),        sampledImageWrite(3, &images[1]),
-        sampledImageWrite(4, &images[2]),        sampledImageWrite(5, &images[3]),
-        sampledImageWrite(6, &images[4]),        storageImageWrite(7, &hdrInfo),
-        storageBufferWrite(8, &rangesInfo),      storageBufferWrite(9, &indicesInfo),
-        storageBufferWrite(10, &countsInfo),     storageBufferWrite(11, &depthRangeInfo),
-        sampledImageWrite(12, &environmentInfo), sampledImageWrite(13, &prefilteredInfo),
-        sampledImageWrite(14, &lutInfo),         storageBufferWrite(15, &shInfo),
-        storageBufferWrite(16, &samplingInfo),
+        uniformBufferWrite(0, &cameraInfo),         storageBufferWrite(1, &lightInfo),
+        sampledImageWrite(2, &images[0]),           sampledImageWrite(3, &images[1]),
+        sampledImageWrite(4, &images[2]),           sampledImageWrite(5, &images[3]),
+        sampledImageWrite(6, &images[4]),           storageImageWrite(7, &hdrInfo),
+        storageBufferWrite(8, &rangesInfo),         storageBufferWrite(9, &indicesInfo),
+        storageBufferWrite(10, &countsInfo),        storageBufferWrite(11, &depthRangeInfo),
+        sampledImageWrite(12, &env.environment),    sampledImageWrite(13, &env.prefiltered),
+        sampledImageWrite(14, &env.brdfLut),        storageBufferWrite(15, &env.irradianceSh),
+        storageBufferWrite(16, &env.samplingTable),
     };
-    Push push{toGpu(*in.grid), in.directionalCount, in.skyIntensity, prefilteredMipCount,
+    Push push{toGpu(*in.grid), in.directionalCount, in.skyIntensity, env.prefilteredMipCount,
               in.referenceSamples};
     pipeline_.bind(cmd);
     pipeline_.pushDescriptors(cmd, writes);

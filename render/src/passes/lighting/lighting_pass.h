@@ -13,10 +13,8 @@
 namespace candela::render {
 
 struct ClusterGrid;
-class EnvironmentBrdfLut;
-class Environment;
 class GpuContext;
-class Sampler;
+struct EnvironmentDescriptors;
 struct GBufferTargets;
 
 // Which shading models and light shapes the shader variant contains.
@@ -59,12 +57,9 @@ public:
         const GpuBuffer* depthRange;  // slicing from DepthOccupancyPass (clustered only)
         const ClusterGrid* grid;
         uint32_t directionalCount;
-        // Read only when features().ibl is set; then neither may be null.
-        const Environment* environment = nullptr;
-        const EnvironmentBrdfLut* brdfLut = nullptr;
+        const EnvironmentDescriptors* environment;  // the sky, or placeholders
         float skyIntensity = 1.0f;
         uint32_t referenceSamples = 0;
-        const GpuBuffer* samplingTable = nullptr;  // the reference mode's (EnvironmentSamplingTable)
     };
     void record(VkCommandBuffer cmd, const Inputs& inputs) const;
     static uint32_t workgroupCount(uint32_t width, uint32_t height);
@@ -75,11 +70,6 @@ private:
     bool built_ = false;
     Pipeline pipeline_;
     VkSampler pointSampler_ = VK_NULL_HANDLE;
-    // Bound in place of the environment when the scene has none (the variant never reads them).
-    GpuImage placeholderCube_;
-    GpuImage placeholderLut_;
-    GpuBuffer placeholderSh_;
-    std::unique_ptr<Sampler> linearSampler_;
 };
 
 }  // namespace candela::render
