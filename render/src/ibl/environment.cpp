@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <vector>
 
 #include "candela/render/gpu_context.h"
@@ -26,12 +25,15 @@ double millisecondsSince(Clock::time_point start) {
 }
 
 std::optional<std::vector<std::byte>> readFileBytes(const std::filesystem::path& path) {
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
     std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::vector<char> chars((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) return std::nullopt;
-    std::vector<std::byte> bytes(chars.size());
-    std::memcpy(bytes.data(), chars.data(), chars.size());
+    if (ec || !in) return std::nullopt;
+    std::vector<std::byte> bytes(size);
+    // An empty file reads nothing (and memcpy-like calls must not see its null data()).
+    if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
+        return std::nullopt;
+    }
     return bytes;
 }
 

@@ -70,7 +70,8 @@ std::optional<CachedEnvironment> readCachedEnvironment(const std::filesystem::pa
     if (expected.cubeFaceSize != h.cubeFaceSize || expected.cubeMipCount != h.cubeMipCount ||
         expected.prefilteredFaceSize != h.prefilteredFaceSize ||
         expected.prefilteredMipCount != h.prefilteredMipCount || h.shBytes != 9 * 16 ||
-        h.cubeBytes > (uint64_t(1) << 32) || h.prefilteredBytes > (uint64_t(1) << 32)) {
+        h.cubeBytes == 0 || h.prefilteredBytes == 0 || h.cubeBytes > (uint64_t(1) << 32) ||
+        h.prefilteredBytes > (uint64_t(1) << 32)) {
         problem = "header sizes are inconsistent";
         return std::nullopt;
     }
