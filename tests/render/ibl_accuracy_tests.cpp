@@ -10,107 +10,13 @@
 #include <vector>
 
 #include "candela/render/environment.h"
+#include "ibl_sphere_rows.h"
 #include "ibl_test_support.h"
-#include "test_scene.h"
+#include "report/image_difference.h"
 
 using namespace candela::render;
 using namespace candela::render::test;
 using candela::content::Diagnostics;
-using candela::content::makeSphere;
-
-namespace {
-
-struct SphereRowScene {
-    TestScene scene;
-    std::vector<glm::vec3> centres;
-    std::vector<float> roughness;
-    std::vector<bool> metallic;
-    static constexpr float kRadius = 0.45f;
-};
-
-// Two rows of six spheres, roughness 0 .. 1 left to right: metal on top, a grey dielectric
-// (Specular 0.5) below. No lights: only the sky.
-SphereRowScene sphereRows(std::shared_ptr<const Environment> sky) {
-    SphereRowScene rows;
-    rows.scene.width = 288;
-    rows.scene.height = 128;
-    for (int row = 0; row < 2; ++row) {
-        for (int i = 0; i < 6; ++i) {
-            candela::content::Material m;
-            bool metal = row == 0;
-            m.baseColorFactor = metal ? std::array<float, 4>{0.95f, 0.93f, 0.88f, 1.0f}
-                                      : std::array<float, 4>{0.5f, 0.5f, 0.5f, 1.0f};
-            m.metallicFactor = metal ? 1.0f : 0.0f;
-            m.roughnessFactor = float(i) / 5.0f;
-            glm::vec3 centre((float(i) - 2.5f) * 1.2f, metal ? 0.6f : -0.6f, 0.0f);
-            rows.scene.add(makeSphere(SphereRowScene::kRadius, 96, 48), m,
-                           glm::translate(glm::mat4(1.0f), centre));
-            rows.centres.push_back(centre);
-            rows.roughness.push_back(m.roughnessFactor);
-            rows.metallic.push_back(metal);
-        }
-    }
-    rows.scene.lookAt({0.0f, 0.0f, 4.5f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f},
-                      glm::radians(50.0f));
-    rows.scene.environment = std::move(sky);
-    return rows;
-}
-
-// Which sphere the ray through pixel (x, y) hits inside 95% of its radius (silhouette pixels
-// depend on tessellation, not on lighting), or -1.
-int sphereAtPixel(const SphereRowScene& rows, uint32_t x, uint32_t y) {
-    const TestScene& s = rows.scene;
-    glm::mat4 inverse = glm::inverse(s.camera.projection * s.camera.view);
-    glm::vec2 ndc((float(x) + 0.5f) / float(s.width) * 2.0f - 1.0f,
-                  (float(y) + 0.5f) / float(s.height) * 2.0f - 1.0f);
-    glm::vec4 far = inverse * glm::vec4(ndc, 0.5f, 1.0f);
-    glm::vec3 origin = s.camera.position;
-    glm::vec3 dir = glm::normalize(glm::vec3(far) / far.w - origin);
-    for (size_t i = 0; i < rows.centres.size(); ++i) {
-        glm::vec3 oc = origin - rows.centres[i];
-        float b = glm::dot(oc, dir);
-        float r = SphereRowScene::kRadius * 0.95f;
-        if (b * b - (glm::dot(oc, oc) - r * r) > 0.0f) return int(i);
-    }
-    return -1;
-}
-
-struct SphereError {
-    double relativeRmse = 0.0;  // RMSE over the sphere's pixels and channels / mean reference
-    double relativeMax = 0.0;   // largest absolute difference / mean reference
-    double relativeBias = 0.0;  // (mean - mean reference) / mean reference: energy gained
-};
-
-std::vector<SphereError> errorsPerSphere(const SphereRowScene& rows, const CapturedFrame& image,
-                                         const CapturedFrame& reference) {
-    size_t n = rows.centres.size();
-    std::vector<double> sumSquared(n, 0.0), sumReference(n, 0.0), sumImage(n, 0.0), maxAbs(n, 0.0);
-    std::vector<int> count(n, 0);
-    for (uint32_t y = 0; y < image.height; ++y) {
-        for (uint32_t x = 0; x < image.width; ++x) {
-            int i = sphereAtPixel(rows, x, y);
-            if (i < 0) continue;
-            for (int c = 0; c < 3; ++c) {
-                double a = hdrPixel(image, x, y)[c], r = hdrPixel(reference, x, y)[c];
-                sumSquared[i] += (a - r) * (a - r);
-                sumReference[i] += r;
-                sumImage[i] += a;
-                maxAbs[i] = std::max(maxAbs[i], std::abs(a - r));
-                ++count[i];
-            }
-        }
-    }
-    std::vector<SphereError> out(n);
-    for (size_t i = 0; i < n; ++i) {
-        double mean = sumReference[i] / std::max(count[i], 1);
-        out[i].relativeRmse = std::sqrt(sumSquared[i] / std::max(count[i], 1)) / mean;
-        out[i].relativeMax = maxAbs[i] / mean;
-        out[i].relativeBias = (sumImage[i] - sumReference[i]) / sumReference[i];
-    }
-    return out;
-}
-
-}  // namespace
 
 // Errors are relative to each sphere's mean reference radiance; render/README.md records the
 // table. The skies' suns are clipped to 65504 cd/m^2 in a few texels: the reference integrates
@@ -126,7 +32,7 @@ TEST(IblAccuracy, SplitSumAndMobileAgainstReferenceUnderRealSkies) {
         std::shared_ptr<const Environment> env =
             Environment::load(context, sharedAsset(sky), diagnostics, cache);
         ASSERT_FALSE(env->stats().fallback) << diagnostics.toString();
-        SphereRowScene rows = sphereRows(env);
+        SphereRows rows = sphereRows(env, 288, 128);
         std::map<IblMode, CapturedFrame> images;
         std::map<IblMode, double> lightingMs;
         for (IblMode mode : kIblModes) {
@@ -152,10 +58,18 @@ TEST(IblAccuracy, SplitSumAndMobileAgainstReferenceUnderRealSkies) {
         std::printf(
             "| material | roughness | split-sum RMSE | max | bias | mobile RMSE | max | "
             "bias |\n|---|---|---|---|---|---|---|---|\n");
-        std::vector<SphereError> splitSum =
-            errorsPerSphere(rows, images[IblMode::SplitSum], images[IblMode::Reference]);
-        std::vector<SphereError> mobile =
-            errorsPerSphere(rows, images[IblMode::Mobile], images[IblMode::Reference]);
+        // Each sphere's pixels, against the reference's mean radiance there.
+        auto perSphere = [&](IblMode mode) {
+            std::vector<candela::report::ImageDifference> out;
+            for (int i = 0; i < int(rows.centres.size()); ++i) {
+                out.push_back(candela::report::imageDifference(
+                    images[mode], images[IblMode::Reference],
+                    [&](uint32_t x, uint32_t y) { return sphereAtPixel(rows, x, y) == i; }));
+            }
+            return out;
+        };
+        auto splitSum = perSphere(IblMode::SplitSum);
+        auto mobile = perSphere(IblMode::Mobile);
         for (size_t i = 0; i < rows.centres.size(); ++i) {
             std::printf("| %s | %.1f | %.3f | %.2f | %+.3f | %.3f | %.2f | %+.3f |\n",
                         rows.metallic[i] ? "metal" : "dielectric", rows.roughness[i],

@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-#include "../test_scene.h"
+#include "../ibl_sphere_rows.h"
 #include "candela/render/environment.h"
 #include "image_difference.h"
 #include "report_context.h"
@@ -19,56 +19,7 @@ using namespace candela::render::test;
 
 namespace {
 
-constexpr float kSphereRadius = 0.45f;
 constexpr const char* kSky = "env/chinese_garden_1k.exr";
-
-struct SphereRows {
-    TestScene scene;
-    std::vector<glm::vec3> centres;
-};
-
-SphereRows sphereRows(std::shared_ptr<const Environment> sky, uint32_t width, uint32_t height) {
-    SphereRows rows;
-    rows.scene.width = width;
-    rows.scene.height = height;
-    for (int row = 0; row < 2; ++row) {
-        for (int i = 0; i < 6; ++i) {
-            content::Material m;
-            const bool metal = row == 0;
-            m.baseColorFactor = metal ? std::array<float, 4>{0.95f, 0.93f, 0.88f, 1.0f}
-                                      : std::array<float, 4>{0.5f, 0.5f, 0.5f, 1.0f};
-            m.metallicFactor = metal ? 1.0f : 0.0f;
-            m.roughnessFactor = float(i) / 5.0f;
-            glm::vec3 centre((float(i) - 2.5f) * 1.2f, metal ? 0.6f : -0.6f, 0.0f);
-            rows.scene.add(content::makeSphere(kSphereRadius, 96, 48), m,
-                           glm::translate(glm::mat4(1.0f), centre));
-            rows.centres.push_back(centre);
-        }
-    }
-    rows.scene.lookAt({0.0f, 0.0f, 4.5f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f},
-                      glm::radians(50.0f));
-    rows.scene.environment = std::move(sky);
-    return rows;
-}
-
-// The sphere (0..5 metal, 6..11 dielectric) the pixel's ray meets inside 95% of its radius
-// (silhouette pixels depend on tessellation, not lighting), or -1.
-int sphereAt(const SphereRows& rows, uint32_t x, uint32_t y) {
-    const TestScene& s = rows.scene;
-    glm::mat4 inverse = glm::inverse(s.camera.projection * s.camera.view);
-    glm::vec2 ndc((float(x) + 0.5f) / float(s.width) * 2.0f - 1.0f,
-                  (float(y) + 0.5f) / float(s.height) * 2.0f - 1.0f);
-    glm::vec4 far = inverse * glm::vec4(ndc, 0.5f, 1.0f);
-    glm::vec3 origin = s.camera.position;
-    glm::vec3 dir = glm::normalize(glm::vec3(far) / far.w - origin);
-    for (size_t i = 0; i < rows.centres.size(); ++i) {
-        glm::vec3 oc = origin - rows.centres[i];
-        float b = glm::dot(oc, dir);
-        float r = kSphereRadius * 0.95f;
-        if (b * b - (glm::dot(oc, oc) - r * r) > 0.0f) return int(i);
-    }
-    return -1;
-}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -107,7 +58,7 @@ void addSplitSumRow(ReportContext& context) {
     std::vector<int> sphereOfPixel(size_t(width) * height);
     for (uint32_t y = 0; y < height; ++y) {
         for (uint32_t x = 0; x < width; ++x)
-            sphereOfPixel[size_t(y) * width + x] = sphereAt(rows, x, y);
+            sphereOfPixel[size_t(y) * width + x] = sphereAtPixel(rows, x, y);
     }
     auto spheres = [&](int first, int last) {
         return [&, first, last](uint32_t x, uint32_t y) {
