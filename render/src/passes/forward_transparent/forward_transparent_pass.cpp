@@ -17,7 +17,6 @@
 #include "shaders/transparent_occupancy.frag.spv.h"
 #include "shaders/transparent_occupancy_merge.comp.spv.h"
 #include "vk/memory_barrier.h"
-#include "vk/vk_check.h"
 
 namespace candela::render {
 
@@ -88,15 +87,8 @@ void setViewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
 
 }  // namespace
 
-ForwardTransparentPass::ForwardTransparentPass(GpuContext& context) : context_(context) {
-    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.magFilter = VK_FILTER_NEAREST;
-    info.minFilter = VK_FILTER_NEAREST;
-    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    CANDELA_VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &pointSampler_));
-
+ForwardTransparentPass::ForwardTransparentPass(GpuContext& context)
+    : context_(context), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {
     // Occupancy: no attachments; the fragment shader tests against the G-buffer depth itself,
     // so the depth image stays in the layout the occupancy compute pass read it in.
     GraphicsPipelineDesc occupancy;
@@ -119,9 +111,7 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context) : context_(c
                                sizeof(GpuClusterParams));
 }
 
-ForwardTransparentPass::~ForwardTransparentPass() {
-    vkDestroySampler(context_.device(), pointSampler_, nullptr);
-}
+ForwardTransparentPass::~ForwardTransparentPass() = default;
 
 void ForwardTransparentPass::buildShadingPipeline() {
     SpecializationConstants constants;
@@ -221,7 +211,7 @@ void ForwardTransparentPass::recordOccupancy(VkCommandBuffer cmd, SceneResources
     setViewport(cmd, width, height);
     occupancy_.bind(cmd);
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorImageInfo depthInfo{pointSampler_, in.depth->view(),
+    VkDescriptorImageInfo depthInfo{pointSampler_.handle(), in.depth->view(),
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorBufferInfo rangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo boundsInfo{transparentBounds_.handle(), 0, VK_WHOLE_SIZE};

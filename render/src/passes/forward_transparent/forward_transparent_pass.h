@@ -11,6 +11,7 @@
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/pipeline.h"
 #include "passes/lighting/lighting_pass.h"
+#include "vk/sampler.h"
 
 namespace candela::render {
 
@@ -78,7 +79,7 @@ private:
     Pipeline occupancy_;
     Pipeline merge_;
     GpuBuffer transparentBounds_;  // see transparent_occupancy.frag
-    VkSampler pointSampler_ = VK_NULL_HANDLE;
+    Sampler pointSampler_;         // G-buffer and depth reads
 };
 
 }  // namespace candela::render

@@ -6,7 +6,6 @@
 #include "gbuffer_targets.h"
 #include "ibl/environment_descriptors.h"
 #include "shaders/lighting.comp.spv.h"
-#include "vk/vk_check.h"
 
 namespace candela::render {
 
@@ -58,20 +57,12 @@ std::vector<std::string> LightingFeatures::names() const {
     return out;
 }
 
-LightingPass::LightingPass(GpuContext& context) : context_(context) {
-    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    info.magFilter = VK_FILTER_NEAREST;
-    info.minFilter = VK_FILTER_NEAREST;
-    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    CANDELA_VK_CHECK(vkCreateSampler(context.device(), &info, nullptr, &pointSampler_));
+LightingPass::LightingPass(GpuContext& context)
+    : context_(context), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {
     setFeatures({});
 }
 
-LightingPass::~LightingPass() {
-    vkDestroySampler(context_.device(), pointSampler_, nullptr);
-}
+LightingPass::~LightingPass() = default;
 
 void LightingPass::setFeatures(const LightingFeatures& features) {
     if (built_ && features == features_) return;
@@ -121,10 +112,11 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
     VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     std::array<VkDescriptorImageInfo, 5> images{};
     for (size_t i = 0; i < 4; ++i) {
-        images[i] = {pointSampler_, in.gbuffer->color[i].view(),
+        images[i] = {pointSampler_.handle(), in.gbuffer->color[i].view(),
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
-    images[4] = {pointSampler_, in.gbuffer->depth.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    images[4] = {pointSampler_.handle(), in.gbuffer->depth.view(),
+                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, in.hdr->view(), VK_IMAGE_LAYOUT_GENERAL};
     const EnvironmentDescriptors& env = *in.environment;
     const VkWriteDescriptorSet writes[] = {

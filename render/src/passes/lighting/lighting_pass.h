@@ -9,6 +9,7 @@
 #include "candela/render/gpu_image.h"
 #include "candela/render/pipeline.h"
 #include "candela/render/renderer_options.h"
+#include "vk/sampler.h"
 
 namespace candela::render {
 
@@ -69,7 +70,7 @@ private:
     LightingFeatures features_;
     bool built_ = false;
     Pipeline pipeline_;
-    VkSampler pointSampler_ = VK_NULL_HANDLE;
+    Sampler pointSampler_;  // G-buffer and depth reads
 };
 
 }  // namespace candela::render
