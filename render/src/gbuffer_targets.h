@@ -1,5 +1,5 @@
 #pragma once
-// The G-buffer images. Layout (precision in brackets):
+// The G-buffer images, transient in the frame graph. Layout (precision in brackets):
 //   baseColor       RGBA8_SRGB   rgb base colour (Legacy: DiffuseColor), a occlusion
 //   normalRoughMetal RGBA16_UNORM octahedral normal xy (max angular error ~0.005 deg at
 //                                16 bits), roughness, metallic
@@ -10,23 +10,36 @@
 #include <array>
 #include <cstdint>
 
-#include "candela/render/gpu_image.h"
+#include "frame_graph/graph_resources.h"
 
 namespace candela::render {
-
-class GpuContext;
 
 struct GBufferTargets {
     static constexpr std::array<VkFormat, 4> kColorFormats = {
         VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_R16G16B16A16_UNORM, VK_FORMAT_R8G8B8A8_UNORM,
         VK_FORMAT_R8G8B8A8_UNORM};
+    static constexpr std::array<const char*, 4> kColorNames = {
+        "gbuffer.base_color", "gbuffer.normal_rough_metal", "gbuffer.specular_model",
+        "gbuffer.custom_data"};
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-    GBufferTargets() = default;
-    GBufferTargets(GpuContext& context, uint32_t width, uint32_t height);
+    static ImageDesc colorDesc(size_t index, uint32_t width, uint32_t height) {
+        return {kColorFormats[index],
+                width,
+                height,
+                1,
+                false,
+                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
+    }
+    static ImageDesc depthDesc(uint32_t width, uint32_t height) {
+        return {
+            kDepthFormat, width,
+            height,       1,
+            false,        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
+    }
 
-    std::array<GpuImage, 4> color;
-    GpuImage depth;
+    std::array<ImageRef, 4> color;
+    ImageRef depth;
 };
 
 }  // namespace candela::render

@@ -1,10 +1,12 @@
 #include "candela/render/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <span>
 
 #include "candela/ecs/job_system.h"
 #include "candela/render/frame_submitter.h"
@@ -12,6 +14,8 @@
 #include "candela/render/scene_resources.h"
 #include "clustered/cluster_grid.h"
 #include "clustered/light_assignment.h"
+#include "frame_graph/frame_graph.h"
+#include "frame_graph/frame_graph_executor.h"
 #include "gbuffer_targets.h"
 #include "gpu_camera.h"
 #include "ibl/environment_brdf_lut.h"
@@ -25,7 +29,6 @@
 #include "passes/lighting/lighting_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
-#include "vk/memory_barrier.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -89,9 +92,16 @@ bool ensureBuffer(GpuContext& context, GpuBuffer& buffer, VkDeviceSize bytes) {
     return true;
 }
 
-void computeToHostBarrier(VkCommandBuffer cmd) {
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+// hdr and ldr: discarded at the start of a frame (the previous frame's copies out of them
+// are fenced), left ready to be copied from (capture, swapchain blit) at its end.
+constexpr ImageState kDiscardAfterCopies{VK_IMAGE_LAYOUT_UNDEFINED,
+                                         VK_PIPELINE_STAGE_2_TRANSFER_BIT, 0};
+constexpr ImageState kReadyToCopy{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                  VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
+constexpr VkPipelineStageFlags2 kRasterStages = kVertexStage | kFragmentStage;
+
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
 }  // namespace
@@ -102,6 +112,9 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
       options_(options),
       width_(width),
       height_(height),
+      lightAssignment_(resolveLightAssignment(options, context)),
+      graph_(std::make_unique<FrameGraph>()),
+      executor_(std::make_unique<FrameGraphExecutor>(context)),
       cameraBuffer_(context, sizeof(GpuCamera), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                     MemoryLocation::HostVisible),
       lights_(std::make_unique<GpuLightBuffer>()),
@@ -116,19 +129,24 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     environmentPlaceholders_ = std::make_unique<EnvironmentPlaceholders>(context_);
     transparentPass_ = std::make_unique<ForwardTransparentPass>(context_);
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
-    if (options_.lightAssignment == LightAssignmentDevice::Gpu) {
+    if (lightAssignment_ == LightAssignmentDevice::Gpu) {
         assignmentPass_ = std::make_unique<LightAssignmentPass>(context_);
     }
-    VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    queryInfo.queryCount = 4;  // lighting begin/end, device assignment begin/end
-    CANDELA_VK_CHECK(vkCreateQueryPool(context.device(), &queryInfo, nullptr, &timestamps_));
 }
 
 Renderer::~Renderer() {
     brdfLut_.reset();
     samplingTable_.reset();
-    vkDestroyQueryPool(context_.device(), timestamps_, nullptr);
+}
+
+LightAssignmentDevice Renderer::resolveLightAssignment(const RendererOptions& options,
+                                                       const GpuContext& context) {
+    if (options.lightAssignment != LightAssignmentDevice::Auto) return options.lightAssignment;
+    // On a CPU device the "GPU" is the same cores: the job system's sort beats four compute
+    // dispatches there (render/README.md, "CPU vs compute light assignment").
+    return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
+               ? LightAssignmentDevice::Cpu
+               : LightAssignmentDevice::Gpu;
 }
 
 void Renderer::resize(uint32_t width, uint32_t height) {
@@ -146,7 +164,6 @@ void Renderer::createTargets() {
     ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
-    gbuffer_ = std::make_unique<GBufferTargets>(context_, width_, height_);
     ensureBuffer(context_, pairCounts_,
                  VkDeviceSize(LightingPass::workgroupCount(width_, height_)) * 8);
 }
@@ -205,7 +222,7 @@ void Renderer::assignLightsToClusters(const FrameInputs& inputs) {
     stats_.lightClusterPairs = assignment_->assignedPairs;
 }
 
-void Renderer::recordGpuAssignment(VkCommandBuffer cmd, const FrameInputs& inputs) {
+void Renderer::prepareGpuAssignment(const FrameInputs& inputs) {
     absorbGpuListUsage();
     std::span<const LightInstance> lights = inputs.scene.lights;
     // Directional lights lead the index buffer, as on the CPU path; the device lists follow.
@@ -230,27 +247,6 @@ void Renderer::recordGpuAssignment(VkCommandBuffer cmd, const FrameInputs& input
     }
     ensureBuffer(context_, clusterRanges_, VkDeviceSize(grid_->clusterCount()) * 8);
     gpuListCapacity_ = uint32_t(lightIndices_.size() / 4);
-
-    vkCmdResetQueryPool(cmd, timestamps_, 2, 2);
-    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, 2);
-    const glm::mat4& projection = inputs.scene.camera.projection;
-    LightAssignmentPass::Inputs in{&lights_->buffer(),
-                                   lights_->count(),
-                                   lights_->capacity(),
-                                   inputs.scene.camera.view,
-                                   grid_.get(),
-                                   width_,
-                                   height_,
-                                   {projection[0][0], projection[1][1]},
-                                   &occupancy_,
-                                   &clusterBounds_,
-                                   &depthRange_,
-                                   &clusterRanges_,
-                                   &lightIndices_,
-                                   gpuListCapacity_,
-                                   assignment_->directionalCount};
-    assignmentPass_->record(cmd, in);
-    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_, 3);
     gpuListPending_ = true;
     stats_.clusters = grid_->clusterCount();
 }
@@ -273,8 +269,172 @@ void Renderer::absorbGpuListUsage() {
     }
 }
 
-void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
-                           const FrameInputs& inputs, SceneResources& resources) {
+// The handles of one frame's scene passes. Passes capture resource ids by value; the
+// versions they read are declared through the builder.
+struct Renderer::SceneHandles {
+    std::array<ResourceHandle, 4> color;
+    ResourceHandle depth, hdr, camera, lights;
+    ResourceHandle depthRange, tileMasks, clusterBounds, clusterRanges, lightIndices;
+};
+
+void Renderer::declareClusterAssignment(const FrameInputs& inputs, SceneResources& resources,
+                                        SceneHandles& h, bool blended) {
+    FrameGraph& g = *graph_;
+    const glm::mat4& projection = inputs.scene.camera.projection;
+    const glm::vec2 projectionScale{projection[0][0], projection[1][1]};
+    const bool onDevice = lightAssignment_ == LightAssignmentDevice::Gpu;
+    ensureBuffer(context_, occupancy_, VkDeviceSize(grid_->tileCount()) * 8);
+    ensureBuffer(context_, clusterBounds_, VkDeviceSize(grid_->clusterCount()) * 24);
+    // Read on the CPU: by the host assignment pass, or (device path) for the stats.
+    h.tileMasks = g.importBuffer("cluster.tile_masks", &occupancy_, onDevice);
+    h.clusterBounds = g.importBuffer("cluster.bounds", &clusterBounds_);
+
+    {
+        auto p = g.addPass("depth_range_clear", PassKind::Device, [this](PassContext& ctx) {
+            occupancyPass_->recordClearRange(ctx.cmd(), depthRange_);
+        });
+        h.depthRange = p.write(h.depthRange, Use::TransferDst);
+    }
+    {
+        const ResourceHandle depth = h.depth;
+        auto p = g.addPass("depth_range", PassKind::Device, [this, depth](PassContext& ctx) {
+            occupancyPass_->recordMeasureRange(ctx.cmd(), ctx.image(depth), *grid_, depthRange_);
+        });
+        p.read(h.depth, Use::Sampled);
+        h.depthRange = p.write(h.depthRange, Use::StorageReadWrite);
+    }
+    {
+        const ResourceHandle depth = h.depth;
+        auto p = g.addPass(
+            "depth_occupancy", PassKind::Device, [this, depth, projectionScale](PassContext& ctx) {
+                occupancyPass_->recordMarkOccupancy(ctx.cmd(), ctx.image(depth), *grid_,
+                                                    projectionScale,
+                                                    {&occupancy_, &clusterBounds_, &depthRange_});
+            });
+        p.read(h.depth, Use::Sampled);
+        h.depthRange = p.write(h.depthRange, Use::StorageReadWrite);
+        h.tileMasks = p.write(h.tileMasks, Use::StorageWrite);
+        h.clusterBounds = p.write(h.clusterBounds, Use::StorageWrite);
+    }
+    if (blended) {
+        ResourceHandle bounds =
+            g.createBuffer("transparent.bounds", ForwardTransparentPass::boundsBytes(*grid_),
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        const ResourceHandle depth = h.depth;
+        auto occupancyInputs = [this, depth, bounds, projectionScale](PassContext& ctx) {
+            return ForwardTransparentPass::OccupancyInputs{
+                ctx.image(depth), &cameraBuffer_,     &depthRange_, &occupancy_,
+                &clusterBounds_,  ctx.buffer(bounds), grid_.get(),  projectionScale};
+        };
+        auto clear =
+            g.addPass("transparent_bounds_clear", PassKind::Device,
+                      [this, occupancyInputs](PassContext& ctx) {
+                          transparentPass_->recordClearBounds(ctx.cmd(), occupancyInputs(ctx));
+                      });
+        bounds = clear.write(bounds, Use::TransferDst);
+        auto mark = g.addPass("transparent_occupancy", PassKind::Device,
+                              [this, occupancyInputs, &resources](PassContext& ctx) {
+                                  transparentPass_->recordMarkOccupancy(ctx.cmd(), resources,
+                                                                        occupancyInputs(ctx));
+                              });
+        mark.read(h.depth, Use::Sampled, kFragmentStage);
+        mark.read(h.camera, Use::Uniform, kRasterStages);
+        mark.read(h.depthRange, Use::StorageRead, kFragmentStage);
+        bounds = mark.write(bounds, Use::StorageReadWrite, kFragmentStage);
+        auto merge =
+            g.addPass("transparent_occupancy_merge", PassKind::Device,
+                      [this, occupancyInputs](PassContext& ctx) {
+                          transparentPass_->recordMergeOccupancy(ctx.cmd(), occupancyInputs(ctx));
+                      });
+        merge.read(bounds, Use::StorageRead);
+        h.tileMasks = merge.write(h.tileMasks, Use::StorageReadWrite);
+        h.clusterBounds = merge.write(h.clusterBounds, Use::StorageReadWrite);
+    }
+
+    if (!onDevice) {
+        // The frame splits here: the occupancy must be on the CPU before lights are assigned.
+        auto p = g.addPass("light_assignment_cpu", PassKind::Host, [this, &inputs](PassContext&) {
+            const Clock::time_point start = Clock::now();
+            assignLightsToClusters(inputs);
+            stats_.lightAssignMs = millisecondsSince(start);
+        });
+        p.read(h.tileMasks, Use::HostRead);
+        p.read(h.clusterBounds, Use::HostRead);
+        p.read(h.depthRange, Use::HostRead);
+        h.clusterRanges = p.write(h.clusterRanges, Use::HostWrite);
+        h.lightIndices = p.write(h.lightIndices, Use::HostWrite);
+        return;
+    }
+
+    prepareGpuAssignment(inputs);
+    const LightAssignmentPass::Inputs in{&lights_->buffer(),
+                                         lights_->count(),
+                                         lights_->capacity(),
+                                         inputs.scene.camera.view,
+                                         grid_.get(),
+                                         width_,
+                                         height_,
+                                         projectionScale,
+                                         &occupancy_,
+                                         &clusterBounds_,
+                                         &depthRange_,
+                                         &clusterRanges_,
+                                         &lightIndices_,
+                                         gpuListCapacity_,
+                                         assignment_->directionalCount};
+    assignmentPass_->prepare(in);
+    ResourceHandle counts =
+        g.importBuffer("light_assign.counts", &assignmentPass_->clusterCounts());
+    ResourceHandle usage = g.importBuffer("light_assign.usage", &assignmentPass_->usage(), true);
+    ResourceHandle previous =
+        g.importBuffer("light_assign.previous_masks", &assignmentPass_->previousMasks());
+    auto readOccupancy = [&h](FrameGraph::PassBuilder& p) {
+        p.read(h.lights, Use::StorageRead);
+        p.read(h.tileMasks, Use::StorageRead);
+        p.read(h.clusterBounds, Use::StorageRead);
+        p.read(h.depthRange, Use::StorageRead);
+    };
+    {
+        auto p = g.addPass("light_assign_count", PassKind::Device, [this, in](PassContext& ctx) {
+            assignmentPass_->recordCount(ctx.cmd(), in);
+        });
+        readOccupancy(p);
+        counts = p.write(counts, Use::StorageReadWrite);
+    }
+    {
+        auto p = g.addPass("light_assign_allocate", PassKind::Device, [this, in](PassContext& ctx) {
+            assignmentPass_->recordAllocate(ctx.cmd(), in);
+        });
+        p.read(h.tileMasks, Use::StorageRead);
+        counts = p.write(counts, Use::StorageReadWrite);
+        h.clusterRanges = p.write(h.clusterRanges, Use::StorageReadWrite);
+        usage = p.write(usage, Use::StorageReadWrite);
+        previous = p.write(previous, Use::StorageReadWrite);
+    }
+    {
+        auto p = g.addPass("light_assign_write", PassKind::Device, [this, in](PassContext& ctx) {
+            assignmentPass_->recordWrite(ctx.cmd(), in);
+        });
+        readOccupancy(p);
+        p.read(h.clusterRanges, Use::StorageRead);
+        counts = p.write(counts, Use::StorageReadWrite);
+        h.lightIndices = p.write(h.lightIndices, Use::StorageReadWrite);
+    }
+    {
+        auto p = g.addPass("light_assign_sort", PassKind::Device, [this, in](PassContext& ctx) {
+            assignmentPass_->recordSort(ctx.cmd(), in);
+        });
+        p.read(h.tileMasks, Use::StorageRead);
+        h.clusterRanges = p.write(h.clusterRanges, Use::StorageReadWrite);
+        h.lightIndices = p.write(h.lightIndices, Use::StorageReadWrite);
+        counts = p.write(counts, Use::StorageReadWrite);
+    }
+    gpuAssignTimed_ = true;
+}
+
+uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resources,
+                                uint32_t hdrId) {
+    FrameGraph& g = *graph_;
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
     lightingPass_->setFeatures(features);
     // The environment BRDF LUT is the same for every sky: built once, when first needed.
@@ -291,40 +451,6 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
     uploadFrameData(inputs);
     stats_.lights = lights_->count();
     stats_.lightsRewritten = lights_->rewrittenLastUpdate();
-
-    for (const GpuImage& image : gbuffer_->color) {
-        transitionImage(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED,
-                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
-                        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    }
-    transitionImage(
-        cmd, gbuffer_->depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
-        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-            VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
-    gbufferPass_->record(cmd, *gbuffer_, hdr_, inputs.clearRadiance, inputs.scene, resources,
-                         cameraBuffer_);
-
-    for (const GpuImage& image : gbuffer_->color) {
-        transitionImage(
-            cmd, image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    }
-    transitionImage(cmd, gbuffer_->depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                    VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    transitionImage(cmd, hdr_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-
     stats_.lightAssignMs = 0.0;
     gpuAssignTimed_ = false;
     if (!depthRange_.handle()) {
@@ -332,135 +458,172 @@ void Renderer::recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd,
             context_, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
             MemoryLocation::HostVisible);
     }
-    if (features.clustered) {
-        ensureBuffer(context_, occupancy_, VkDeviceSize(grid_->tileCount()) * 8);
-        ensureBuffer(context_, clusterBounds_, VkDeviceSize(grid_->clusterCount()) * 24);
-        const glm::mat4& projection = inputs.scene.camera.projection;
-        occupancyPass_->record(cmd, gbuffer_->depth, *grid_, {projection[0][0], projection[1][1]},
-                               {&occupancy_, &clusterBounds_, &depthRange_});
-        if (blended) {
-            transparentPass_->recordOccupancy(cmd, resources,
-                                              {&gbuffer_->depth,
-                                               &cameraBuffer_,
-                                               &depthRange_,
-                                               &occupancy_,
-                                               &clusterBounds_,
-                                               grid_.get(),
-                                               {projection[0][0], projection[1][1]}});
-        }
-    }
-    if (features.clustered && assignmentPass_) {
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-        recordGpuAssignment(cmd, inputs);
-        gpuAssignTimed_ = true;
-    } else if (features.clustered) {
-        // Geometry first: the occupancy masks must be on the CPU before lights are assigned.
-        computeToHostBarrier(cmd);
-        submitter.submit();
-        submitter.waitIdle();
-        Clock::time_point start = Clock::now();
-        assignLightsToClusters(inputs);
-        stats_.lightAssignMs =
-            std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        cmd = submitter.begin();
-    } else {
+    if (!features.clustered) {
         // The brute-force variant never reads the lists; bind valid placeholders.
         ensureBuffer(context_, clusterRanges_, 16);
         ensureBuffer(context_, lightIndices_, 16);
         assignment_->directionalCount = 0;
     }
 
-    vkCmdResetQueryPool(cmd, timestamps_, 0, 2);
-    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, timestamps_, 0);
-    LightingPass::Inputs lighting{gbuffer_.get(),  &hdr_,
-                                  &cameraBuffer_,  &lights_->buffer(),
-                                  &clusterRanges_, &lightIndices_,
-                                  &pairCounts_,    &depthRange_,
-                                  grid_.get(),     assignment_->directionalCount};
+    SceneHandles h;
+    h.hdr = {hdrId, 0};
+    for (size_t i = 0; i < h.color.size(); ++i) {
+        h.color[i] = g.createImage(GBufferTargets::kColorNames[i],
+                                   GBufferTargets::colorDesc(i, width_, height_));
+    }
+    h.depth = g.createImage("gbuffer.depth", GBufferTargets::depthDesc(width_, height_));
+    h.camera = g.importBuffer("camera", &cameraBuffer_);
+    h.lights = g.importBuffer("lights", &lights_->buffer());
+    h.depthRange = g.importBuffer("cluster.depth_range", &depthRange_);
+    h.clusterRanges = g.importBuffer("cluster.ranges", &clusterRanges_);
+    h.lightIndices = g.importBuffer("cluster.light_indices", &lightIndices_);
+    const ResourceHandle pairCounts =
+        g.importBuffer("lighting.pair_counts", &pairCounts_, features.countLightPairs);
+
+    const SceneHandles ids = h;  // resource ids for the passes to look up
+    auto gbufferViews = [ids](PassContext& ctx) {
+        GBufferTargets targets;
+        for (size_t i = 0; i < targets.color.size(); ++i)
+            targets.color[i] = ctx.image(ids.color[i]);
+        targets.depth = ctx.image(ids.depth);
+        return targets;
+    };
+    {
+        auto p = g.addPass("gbuffer", PassKind::Device,
+                           [this, gbufferViews, ids, &inputs, &resources](PassContext& ctx) {
+                               gbufferPass_->record(ctx.cmd(), gbufferViews(ctx),
+                                                    ctx.image(ids.hdr), inputs.clearRadiance,
+                                                    inputs.scene, resources, cameraBuffer_);
+                           });
+        p.read(h.camera, Use::Uniform, kRasterStages);
+        for (ResourceHandle& c : h.color)
+            c = p.write(c, Use::ColorAttachment);
+        h.depth = p.write(h.depth, Use::DepthWrite);
+        h.hdr = p.write(h.hdr, Use::ColorAttachment);
+    }
+    if (features.clustered) declareClusterAssignment(inputs, resources, h, blended);
+
     const EnvironmentDescriptors environment = environmentPlaceholders_->describe(
         features.ibl ? resources.environment() : nullptr, brdfLut_.get(),
         samplingTable_ && features.ibl == IblMode::Reference ? &samplingTable_->buffer() : nullptr);
-    lighting.environment = &environment;
-    lighting.skyIntensity = inputs.scene.skyIntensity;
-    lighting.referenceSamples = options_.referenceSamples;
-    lightingPass_->record(cmd, lighting);
-    vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, timestamps_, 1);
-    timestampsWritten_ = true;
-    if (features.countLightPairs) computeToHostBarrier(cmd);
+    const float skyIntensity = inputs.scene.skyIntensity;
+    {
+        auto p = g.addPass("lighting", PassKind::Device,
+                           [this, gbufferViews, ids, environment, skyIntensity](PassContext& ctx) {
+                               const GBufferTargets targets = gbufferViews(ctx);
+                               LightingPass::Inputs lighting{
+                                   &targets,        ctx.image(ids.hdr),
+                                   &cameraBuffer_,  &lights_->buffer(),
+                                   &clusterRanges_, &lightIndices_,
+                                   &pairCounts_,    &depthRange_,
+                                   grid_.get(),     assignment_->directionalCount};
+                               lighting.environment = &environment;
+                               lighting.skyIntensity = skyIntensity;
+                               lighting.referenceSamples = options_.referenceSamples;
+                               lightingPass_->record(ctx.cmd(), lighting);
+                           });
+        for (ResourceHandle c : h.color)
+            p.read(c, Use::Sampled);
+        p.read(h.depth, Use::Sampled);
+        p.read(h.camera, Use::Uniform);
+        p.read(h.lights, Use::StorageRead);
+        if (features.clustered) {
+            p.read(h.clusterRanges, Use::StorageRead);
+            p.read(h.lightIndices, Use::StorageRead);
+            p.read(h.depthRange, Use::StorageRead);
+        }
+        if (features.countLightPairs) p.write(pairCounts, Use::StorageWrite);
+        h.hdr = p.write(h.hdr, Use::StorageReadWrite);
+    }
     if (blended) {
-        transparentPass_->recordShading(
-            cmd, resources,
-            {&hdr_, &gbuffer_->depth, &cameraBuffer_, &lights_->buffer(), &clusterRanges_,
-             &lightIndices_, &depthRange_, grid_.get(), assignment_->directionalCount, &environment,
-             inputs.scene.skyIntensity});
+        auto p = g.addPass(
+            "forward_transparent", PassKind::Device,
+            [this, ids, environment, skyIntensity, &resources](PassContext& ctx) {
+                transparentPass_->recordShading(
+                    ctx.cmd(), resources,
+                    {ctx.image(ids.hdr), ctx.image(ids.depth), &cameraBuffer_, &lights_->buffer(),
+                     &clusterRanges_, &lightIndices_, &depthRange_, grid_.get(),
+                     assignment_->directionalCount, &environment, skyIntensity});
+            });
+        p.read(h.depth, Use::DepthRead);
+        p.read(h.camera, Use::Uniform, kRasterStages);
+        p.read(h.lights, Use::StorageRead, kFragmentStage);
+        if (features.clustered) {
+            p.read(h.clusterRanges, Use::StorageRead, kFragmentStage);
+            p.read(h.lightIndices, Use::StorageRead, kFragmentStage);
+            p.read(h.depthRange, Use::StorageRead, kFragmentStage);
+        }
+        h.hdr = p.write(h.hdr, Use::ColorAttachment);
         features_.push_back("forward_transparency");
     }
-}
-
-void Renderer::recordTonemap(VkCommandBuffer cmd, float ev100) {
-    transitionImage(cmd, ldr_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_PIPELINE_STAGE_2_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                    VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
-    tonemapPass_->record(cmd, hdr_, ldr_, exposureFromEv100(ev100));
-
-    transitionImage(cmd, hdr_, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT,
-                    VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    transitionImage(cmd, ldr_, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    return h.hdr.version;
 }
 
 VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInputs& inputs,
                                       SceneResources* resources) {
     VkCommandBuffer cmd = submitter.begin();
-    timestampsWritten_ = false;
-    transitionImage(cmd, hdr_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                    VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
-                    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    const Clock::time_point start = Clock::now();
+    FrameGraph& g = *graph_;
+    g.clear();
+    ResourceHandle hdr = g.importImage("hdr", &hdr_, kDiscardAfterCopies, kReadyToCopy);
+    ResourceHandle ldr = g.importImage("ldr", &ldr_, kDiscardAfterCopies, kReadyToCopy);
     if (inputs.testTriangleRadiance || !resources) {
-        trianglePass_->record(cmd, hdr_, inputs.clearRadiance,
-                              inputs.testTriangleRadiance.value_or(inputs.clearRadiance));
+        const std::array<float, 4> clear = inputs.clearRadiance;
+        const std::array<float, 4> radiance = inputs.testTriangleRadiance.value_or(clear);
+        auto p =
+            g.addPass("triangle", PassKind::Device, [this, hdr, clear, radiance](PassContext& ctx) {
+                trianglePass_->record(ctx.cmd(), ctx.image(hdr), clear, radiance);
+            });
+        hdr = p.write(hdr, Use::ColorAttachment);
         features_ = {"test_triangle"};
-        transitionImage(
-            cmd, hdr_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
     } else {
-        recordScene(submitter, cmd, inputs, *resources);
+        hdr.version = declareScene(inputs, *resources, hdr.id);
     }
     features_.push_back("tonemap_aces");
-    recordTonemap(cmd, inputs.scene.camera.ev100);
+    const float exposure = exposureFromEv100(inputs.scene.camera.ev100);
+    {
+        auto p =
+            g.addPass("tonemap", PassKind::Device, [this, hdr, ldr, exposure](PassContext& ctx) {
+                tonemapPass_->record(ctx.cmd(), ctx.image(hdr), ctx.image(ldr), exposure);
+            });
+        p.read(hdr, Use::StorageRead);
+        p.write(ldr, Use::StorageWrite);
+    }
+    stats_.graphRecordMs = millisecondsSince(start);
+    executor_->execute(g, submitter, cmd);
+    frameRecorded_ = true;
+    const FrameGraphStats& graphStats = executor_->stats();
+    stats_.graphCompileMs = graphStats.compileMs;
+    stats_.graphReused = graphStats.reused;
+    stats_.graphPasses = graphStats.passes;
+    stats_.graphCulledPasses = graphStats.culledPasses;
+    stats_.graphResources = graphStats.resources;
+    stats_.graphBarriers = graphStats.barriers;
+    stats_.transientBytes = graphStats.transientBytes;
+    stats_.transientBytesUnaliased = graphStats.transientBytesUnaliased;
     return cmd;
+}
+
+std::string Renderer::frameGraphDot() const {
+    return executor_->dot(*graph_);
 }
 
 const RendererStats& Renderer::collectStats() {
     stats_.lightingMs = 0.0;
+    stats_.passMs.clear();
+    if (!frameRecorded_) return stats_;
     if (gpuAssignTimed_) {
         absorbGpuListUsage();
-        uint64_t ticks[2] = {0, 0};
-        if (vkGetQueryPoolResults(context_.device(), timestamps_, 2, 2, sizeof(ticks), ticks,
-                                  sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS) {
-            stats_.lightAssignMs =
-                double(ticks[1] - ticks[0]) * context_.properties().limits.timestampPeriod * 1e-6;
-        }
+        stats_.lightAssignMs = 0.0;
     }
-    if (timestampsWritten_) {
-        uint64_t ticks[2] = {0, 0};
-        if (vkGetQueryPoolResults(context_.device(), timestamps_, 0, 2, sizeof(ticks), ticks,
-                                  sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS) {
-            stats_.lightingMs =
-                double(ticks[1] - ticks[0]) * context_.properties().limits.timestampPeriod * 1e-6;
-        }
+    stats_.passMs = executor_->passTimes();
+    for (const auto& [name, ms] : stats_.passMs) {
+        if (name == "lighting") stats_.lightingMs = ms;
+        if (gpuAssignTimed_ && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
     }
     stats_.lightEvaluations = 0;
     stats_.litPairs = 0;
-    if (options_.countLightPairs && timestampsWritten_) {
+    if (options_.countLightPairs && !features_.empty() && features_[0] != "test_triangle") {
         const auto* counts = static_cast<const uint32_t*>(pairCounts_.mapped());
         for (uint32_t g = 0; g < LightingPass::workgroupCount(width_, height_); ++g) {
             stats_.lightEvaluations += counts[2 * g];

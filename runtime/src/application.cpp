@@ -2,9 +2,11 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <map>
 
@@ -40,6 +42,27 @@ std::string checkWritable(const std::filesystem::path& path) {
         return path.string() + ": directory '" + dir.string() + "' is not writable";
     }
     if (std::filesystem::is_directory(path, ec)) return path.string() + ": is a directory";
+    return {};
+}
+
+// Written to a temporary file beside the target, then renamed over it: a failed write leaves
+// the old file and says why.
+std::string writeTextFile(const std::filesystem::path& path, const std::string& text) {
+    const std::filesystem::path temporary = path.string() + ".tmp";
+    std::FILE* file = std::fopen(temporary.c_str(), "wb");
+    if (!file) return path.string() + ": " + std::strerror(errno);
+    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size() &&
+                         std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
+    const int writeError = errno;
+    if (std::fclose(file) != 0 || !written) {
+        std::remove(temporary.c_str());
+        return path.string() + ": " + std::strerror(written ? errno : writeError);
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const int renameError = errno;
+        std::remove(temporary.c_str());
+        return path.string() + ": " + std::strerror(renameError);
+    }
     return {};
 }
 
@@ -128,6 +151,7 @@ int Application::run() {
         outputs.push_back(c.path);
     }
     if (options_.stats) outputs.push_back(*options_.stats);
+    if (options_.frameGraph) outputs.push_back(*options_.frameGraph);
     for (const std::filesystem::path& path : outputs) {
         if (std::string e = checkWritable(path); !e.empty()) {
             std::fprintf(stderr, "candela: %s\n", e.c_str());
@@ -149,6 +173,7 @@ int Application::runSession(bool headless, std::uint32_t frames) {
     input_ = InputState{};
     quitRequested_ = false;
     Session s;
+    std::string frameGraphDot;
     for (const FrameCapture& c : options_.captures) {
         if (c.frame == FrameCapture::kLastFrame && frames == 0) {
             s.capturesMissed.push_back(c.path);  // an open-ended window has no last frame
@@ -311,6 +336,7 @@ int Application::runSession(bool headless, std::uint32_t frames) {
         if (surface != VK_NULL_HANDLE) vkDestroySurfaceKHR(s.context->instance(), surface, nullptr);
         if (s.window) s.window->setInputTarget(nullptr);
         stats_.features = s.renderer->features();
+        if (options_.frameGraph) frameGraphDot = s.renderer->frameGraphDot();
         stats_.validationMessages = s.context->validationMessages();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "candela: %s\n", e.what());
@@ -335,6 +361,12 @@ int Application::runSession(bool headless, std::uint32_t frames) {
         std::fprintf(stderr, "candela: run ended after %u frames; nothing captured for %s\n",
                      framesRendered(), s.capturesMissed.front().c_str());
         s.exitCode = kExitFailure;
+    }
+    if (options_.frameGraph) {
+        if (std::string e = writeTextFile(*options_.frameGraph, frameGraphDot); !e.empty()) {
+            std::fprintf(stderr, "candela: %s\n", e.c_str());
+            s.exitCode = kExitFailure;
+        }
     }
     if (options_.stats) {
         if (std::string e = writeStatsJson(*options_.stats, stats_); !e.empty()) {

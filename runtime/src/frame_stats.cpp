@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 namespace candela::runtime {
@@ -58,6 +59,31 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;
     json["culling_efficiency"] = cullingEfficiency(last);
+    // Frame graph: each pass's median GPU milliseconds (a host pass: CPU) over the frames that
+    // ran it, and the last frame's graph; record_ms + compile_ms is the graph's CPU cost.
+    std::map<std::string, std::vector<double>> passTimes;
+    for (const render::RendererStats& f : stats.frames) {
+        for (const auto& [name, ms] : f.passMs)
+            passTimes[name].push_back(ms);
+    }
+    json["passes"] = nlohmann::json::object();
+    for (const render::RendererStats::PassTime& pass : last.passMs) {
+        json["passes"][pass.first] = median(passTimes[pass.first]);
+    }
+    json["frame_graph"] = {
+        {"passes", last.graphPasses},
+        {"culled_passes", last.graphCulledPasses},
+        {"resources", last.graphResources},
+        {"barriers", last.graphBarriers},
+        {"transient_bytes", last.transientBytes},
+        {"transient_bytes_unaliased", last.transientBytesUnaliased},
+        {"record_ms", median(collect(stats.frames, [](auto& f) { return f.graphRecordMs; }))},
+        {"compile_ms", median(collect(stats.frames, [](auto& f) { return f.graphCompileMs; }))},
+        {"record_compile_ms",
+         median(collect(stats.frames, [](auto& f) { return f.graphRecordMs + f.graphCompileMs; }))},
+        {"compiled_frames",
+         std::count_if(stats.frames.begin(), stats.frames.end(),
+                       [](const render::RendererStats& f) { return !f.graphReused; })}};
     if (stats.environment) {
         const render::EnvironmentBuildStats& e = *stats.environment;
         json["environment"] = {{"source", e.source},

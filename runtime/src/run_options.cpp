@@ -37,7 +37,7 @@ std::string runUsage() {
     return "usage: candela run <scene.json|scene.gltf|scene.glb|builtin:triangle> [--headless]\n"
            "                   [--size WxH] [--frames N] [--capture FILE.exr|FILE.png]...\n"
            "                   [--stats FILE.json] [--lights clustered|brute-force]\n"
-           "                   [--light-assign cpu|gpu] [--validation off|on|require]\n"
+           "                   [--light-assign auto|cpu|gpu] [--validation off|on|require]\n"
            "                   [--step SECONDS] [--capture-each DIR] [--summary FILE.md]\n"
            "                   [--input SCRIPT] [--overlay|--no-overlay]\n"
            "                   [--validation off|on|require] [--step SECONDS]\n"
@@ -80,6 +80,9 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
         } else if (arg == "--capture") {
             if (!value(v)) return fail("--capture needs a file name ending in .exr or .png");
             options.captures.push_back(v);
+        } else if (arg == "--frame-graph") {
+            if (!value(v)) return fail("--frame-graph needs a file name (FILE.dot)");
+            options.frameGraph = v;
         } else if (arg == "--stats") {
             if (!value(v)) return fail("--stats needs a file name");
             options.stats = v;
@@ -92,13 +95,15 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
             else
                 return fail("--lights needs clustered or brute-force, got '" + v + "'");
         } else if (arg == "--light-assign") {
-            if (!value(v)) return fail("--light-assign needs cpu or gpu");
-            if (v == "cpu")
+            if (!value(v)) return fail("--light-assign needs auto, cpu or gpu");
+            if (v == "auto")
+                options.lightAssignment = render::LightAssignmentDevice::Auto;
+            else if (v == "cpu")
                 options.lightAssignment = render::LightAssignmentDevice::Cpu;
             else if (v == "gpu")
                 options.lightAssignment = render::LightAssignmentDevice::Gpu;
             else
-                return fail("--light-assign needs cpu or gpu, got '" + v + "'");
+                return fail("--light-assign needs auto, cpu or gpu, got '" + v + "'");
         } else if (arg == "--validation") {
             if (!value(v)) return fail("--validation needs off, on or require");
             if (v == "off")

@@ -24,7 +24,8 @@ struct RunOptions {
     std::optional<double> stepSeconds;                 // --step: scene time per frame (fixed)
     std::optional<std::filesystem::path> captureEach;  // --capture-each DIR: DIR/frame_NN.png
     std::optional<std::filesystem::path> summary;      // --summary FILE.md
-    render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Cpu;
+    render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Auto;
+    std::optional<std::filesystem::path> frameGraph;   // --frame-graph FILE.dot
     std::optional<std::filesystem::path> inputScript;  // --input SCRIPT: recorded input
     std::optional<bool> overlay;  // --overlay / --no-overlay (default: demo in a window)
     std::optional<std::filesystem::path> environment;  // --env: overrides the scene's sky

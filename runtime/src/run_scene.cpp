@@ -57,6 +57,7 @@ int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>>
         }
     }
     app.stats = options.stats;
+    app.frameGraph = options.frameGraph;
     // The overlay shows culling efficiency, which needs the pair counts too.
     app.countLightPairs =
         options.stats.has_value() || options.summary.has_value() || !layers.empty();

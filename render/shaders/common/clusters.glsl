@@ -25,6 +25,16 @@ uint sliceOfDepth(float sliceNear, float logRatio, uint slices, float depth) {
     return uint(min(k, float(slices - 1u)));
 }
 
+// The cluster holding a pixel at an ndc depth, with the slicing the depth occupancy pass
+// measured (depthRange[2..3]): the one lookup the lighting and forward passes share.
+uint clusterOfPixel(ClusterGridParams grid, uvec2 pixel, float ndcDepth, float sliceNear,
+                    float logRatio) {
+    uvec2 tile = pixel / grid.tileSize;
+    float viewDepth = viewDepthFromNdc(ndcDepth, grid.projectionNear);
+    uint slice = sliceOfDepth(sliceNear, logRatio, grid.slices, viewDepth);
+    return (slice * grid.tilesY + tile.y) * grid.tilesX + tile.x;
+}
+
 // Order-preserving float bits: uint atomics on them give float min/max.
 uint orderedBits(float f) {
     uint u = floatBitsToUint(f);

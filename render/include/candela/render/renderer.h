@@ -1,8 +1,8 @@
 #pragma once
-// Owns the frame's render targets and passes and runs one frame:
+// Assembles each frame as a frame graph from the scene's features and runs it:
 //   G-buffer (+ emissive) -> depth occupancy -> light assignment (CPU or compute) ->
 //   clustered deferred lighting -> forward transparency (blended draws only) -> exposure +
-//   tonemap.
+//   tonemap. The graph orders the passes and places every barrier (render/README.md).
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -26,6 +26,8 @@ class ForwardTransparentPass;
 class EnvironmentBrdfLut;
 class EnvironmentPlaceholders;
 class EnvironmentSamplingTable;
+class FrameGraph;
+class FrameGraphExecutor;
 class FrameSubmitter;
 class GBufferPass;
 class GpuContext;
@@ -36,7 +38,6 @@ class SceneResources;
 class TonemapPass;
 class TrianglePass;
 struct ClusterGrid;
-struct GBufferTargets;
 struct LightAssignment;
 
 class Renderer {
@@ -73,23 +74,34 @@ public:
     // What this renderer enabled for the last recorded frame, for --stats.
     std::vector<std::string> features() const { return features_; }
 
+    // The last frame's compiled graph as Graphviz (--frame-graph FILE.dot).
+    std::string frameGraphDot() const;
+
+    // Where clustered lists are built for `options` on this device (Auto resolved).
+    static LightAssignmentDevice resolveLightAssignment(const RendererOptions& options,
+                                                        const GpuContext& context);
+
 private:
     void createTargets();
-    void recordScene(FrameSubmitter& submitter, VkCommandBuffer& cmd, const FrameInputs& inputs,
-                     SceneResources& resources);
+    struct SceneHandles;
+    // Declare the frame's passes; return the HDR target's last version.
+    uint32_t declareScene(const FrameInputs& inputs, SceneResources& resources, uint32_t hdr);
+    void declareClusterAssignment(const FrameInputs& inputs, SceneResources& resources,
+                                  SceneHandles& h, bool blended);
     void uploadFrameData(const FrameInputs& inputs);
     void assignLightsToClusters(const FrameInputs& inputs);
-    void recordGpuAssignment(VkCommandBuffer cmd, const FrameInputs& inputs);
+    void prepareGpuAssignment(const FrameInputs& inputs);
     void absorbGpuListUsage();
-    void recordTonemap(VkCommandBuffer cmd, float ev100);
 
     GpuContext& context_;
     RendererOptions options_;
     uint32_t width_;
     uint32_t height_;
+    LightAssignmentDevice lightAssignment_;  // options_.lightAssignment resolved
     GpuImage hdr_;
     GpuImage ldr_;
-    std::unique_ptr<GBufferTargets> gbuffer_;
+    std::unique_ptr<FrameGraph> graph_;
+    std::unique_ptr<FrameGraphExecutor> executor_;
     GpuBuffer cameraBuffer_;
     std::unique_ptr<GpuLightBuffer> lights_;
     std::unique_ptr<ClusterGrid> grid_;
@@ -100,8 +112,7 @@ private:
     GpuBuffer clusterRanges_;  // offset, count per cluster
     GpuBuffer lightIndices_;
     GpuBuffer pairCounts_;  // uvec2 per lighting workgroup
-    VkQueryPool timestamps_ = VK_NULL_HANDLE;
-    bool timestampsWritten_ = false;
+    bool frameRecorded_ = false;
     bool gpuAssignTimed_ = false;        // this frame assigned lights on the device
     bool gpuListPending_ = false;        // its list usage is not read back yet
     uint32_t gpuListCapacity_ = 0;       // index entries the device lists had this frame

@@ -1,6 +1,9 @@
 #pragma once
 // How the renderer lights a frame, and what it measures.
 #include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace candela::render {
 
@@ -11,8 +14,9 @@ enum class LightCulling {
 
 // Where clustered lighting builds its per-cluster light lists (render/README.md compares both).
 enum class LightAssignmentDevice {
-    Cpu,  // job system, after a mid-frame wait for the depth occupancy
-    Gpu,  // compute shaders between the occupancy and lighting passes, no wait
+    Auto,  // Gpu on a real GPU, Cpu on a CPU device (lavapipe), where the job system wins
+    Cpu,   // job system, after a mid-frame wait for the depth occupancy
+    Gpu,   // compute shaders between the occupancy and lighting passes, no wait
 };
 // How an environment (sky) lights surfaces (seed 000 section 2.2.4, seed 001).
 enum class IblMode {
@@ -24,7 +28,7 @@ const char* iblModeName(IblMode mode);  // "split_sum", "mobile", "reference"
 
 struct RendererOptions {
     LightCulling lightCulling = LightCulling::Clustered;
-    LightAssignmentDevice lightAssignment = LightAssignmentDevice::Cpu;
+    LightAssignmentDevice lightAssignment = LightAssignmentDevice::Auto;
     // Device assignment: light index entries of the first frame's list buffer (0: a guess from
     // the light count). Later frames size it from what the previous frame needed.
     uint32_t initialGpuLightListEntries = 0;
@@ -54,6 +58,19 @@ struct RendererStats {
     // Frames whose list buffer had to grow (nothing dropped: the CPU path sizes the buffer
     // before lighting; on the GPU path the overflowed clusters evaluated every light).
     uint32_t lightListOverflows = 0;
+    // The frame graph (--stats `passes`, `frame_graph`): each live pass's GPU milliseconds
+    // (a host pass: CPU), in execution order.
+    using PassTime = std::pair<std::string, double>;
+    std::vector<PassTime> passMs;
+    uint32_t graphPasses = 0;
+    uint32_t graphCulledPasses = 0;
+    uint32_t graphResources = 0;
+    uint32_t graphBarriers = 0;
+    uint64_t transientBytes = 0;           // the aliased transient pool
+    uint64_t transientBytesUnaliased = 0;  // the same transients in separate allocations
+    double graphRecordMs = 0.0;            // CPU: declaring the frame's passes
+    double graphCompileMs = 0.0;           // CPU: compiling (0 when the cached graph was reused)
+    bool graphReused = false;
 };
 
 }  // namespace candela::render

@@ -6,7 +6,6 @@
 #include "clustered/gpu_cluster_params.h"
 #include "shaders/depth_occupancy.comp.spv.h"
 #include "shaders/depth_range.comp.spv.h"
-#include "vk/memory_barrier.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -53,20 +52,20 @@ DepthOccupancyPass::~DepthOccupancyPass() {
     vkDestroySampler(context_.device(), sampler_, nullptr);
 }
 
-void DepthOccupancyPass::record(VkCommandBuffer cmd, const GpuImage& depth, const ClusterGrid& grid,
-                                const glm::vec2& projectionScale, const Outputs& outputs) const {
+void DepthOccupancyPass::recordClearRange(VkCommandBuffer cmd, const GpuBuffer& depthRange) const {
+    // min starts at the largest ordered value, max at the smallest.
+    vkCmdFillBuffer(cmd, depthRange.handle(), 0, 4, 0xffffffffu);
+    vkCmdFillBuffer(cmd, depthRange.handle(), 4, 4, 0u);
+}
+
+void DepthOccupancyPass::recordMeasureRange(VkCommandBuffer cmd, const ImageRef& depth,
+                                            const ClusterGrid& grid,
+                                            const GpuBuffer& depthRange) const {
     const uint32_t width = depth.desc().width;
     const uint32_t height = depth.desc().height;
     VkDescriptorImageInfo depthInfo{sampler_, depth.view(),
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorBufferInfo rangeInfo{outputs.depthRange->handle(), 0, VK_WHOLE_SIZE};
-
-    // min starts at the largest ordered value, max at the smallest.
-    vkCmdFillBuffer(cmd, outputs.depthRange->handle(), 0, 4, 0xffffffffu);
-    vkCmdFillBuffer(cmd, outputs.depthRange->handle(), 4, 4, 0u);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    VkDescriptorBufferInfo rangeInfo{depthRange.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet rangeWrites[] = {sampledImageWrite(0, &depthInfo),
                                                 storageBufferWrite(1, &rangeInfo)};
     RangePush rangePush{width, height, grid.nearPlane};
@@ -74,10 +73,17 @@ void DepthOccupancyPass::record(VkCommandBuffer cmd, const GpuImage& depth, cons
     rangePipeline_.pushDescriptors(cmd, rangeWrites);
     rangePipeline_.pushConstants(cmd, &rangePush, sizeof(rangePush));
     vkCmdDispatch(cmd, (width + 15) / 16, (height + 15) / 16, 1);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+}
 
+void DepthOccupancyPass::recordMarkOccupancy(VkCommandBuffer cmd, const ImageRef& depth,
+                                             const ClusterGrid& grid,
+                                             const glm::vec2& projectionScale,
+                                             const Outputs& outputs) const {
+    const uint32_t width = depth.desc().width;
+    const uint32_t height = depth.desc().height;
+    VkDescriptorImageInfo depthInfo{sampler_, depth.view(),
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorBufferInfo rangeInfo{outputs.depthRange->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo maskInfo{outputs.tileMasks->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo boundsInfo{outputs.clusterBounds->handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {

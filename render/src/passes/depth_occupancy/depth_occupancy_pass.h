@@ -6,12 +6,12 @@
 
 #include "candela/render/pipeline.h"
 #include "clustered/cluster_grid.h"
+#include "frame_graph/graph_resources.h"
 
 namespace candela::render {
 
 class GpuBuffer;
 class GpuContext;
-class GpuImage;
 
 class DepthOccupancyPass {
 public:
@@ -25,10 +25,15 @@ public:
         const GpuBuffer* clusterBounds;  // grid.clusterCount() x 6 floats (occupied only)
         const GpuBuffer* depthRange;     // 4 uints: min, max depth bits; sliceNear, logRatio
     };
-    // depth must be SHADER_READ_ONLY. Uses the grid's tiles and slice count; the slicing it
-    // chose is in depthRange[2..3] once the commands ran.
-    void record(VkCommandBuffer cmd, const GpuImage& depth, const ClusterGrid& grid,
-                const glm::vec2& projectionScale, const Outputs& outputs) const;
+    // Three frame-graph passes, in this order. clearRange: depthRange (TransferDst).
+    // measureRange: depth (Sampled), depthRange (StorageReadWrite). markOccupancy: depth
+    // (Sampled), depthRange (StorageReadWrite: the slicing it chose lands in [2..3]),
+    // tileMasks and clusterBounds (StorageWrite). Uses the grid's tiles and slice count.
+    void recordClearRange(VkCommandBuffer cmd, const GpuBuffer& depthRange) const;
+    void recordMeasureRange(VkCommandBuffer cmd, const ImageRef& depth, const ClusterGrid& grid,
+                            const GpuBuffer& depthRange) const;
+    void recordMarkOccupancy(VkCommandBuffer cmd, const ImageRef& depth, const ClusterGrid& grid,
+                             const glm::vec2& projectionScale, const Outputs& outputs) const;
 
 private:
     GpuContext& context_;

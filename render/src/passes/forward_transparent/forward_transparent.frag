@@ -97,11 +97,9 @@ void main() {
             }
             // The cluster of this fragment; the transparency occupancy pass made sure it holds
             // every light that reaches this depth.
-            uvec2 tile = uvec2(gl_FragCoord.xy) / draw.grid.tileSize;
-            float viewDepth = viewDepthFromNdc(gl_FragCoord.z, draw.grid.projectionNear);
-            uint slice = sliceOfDepth(uintBitsToFloat(depthRange[2]),
-                                      uintBitsToFloat(depthRange[3]), draw.grid.slices, viewDepth);
-            uint cluster = (slice * draw.grid.tilesY + tile.y) * draw.grid.tilesX + tile.x;
+            uint cluster = clusterOfPixel(draw.grid, uvec2(gl_FragCoord.xy), gl_FragCoord.z,
+                                          uintBitsToFloat(depthRange[2]),
+                                          uintBitsToFloat(depthRange[3]));
             uint first = clusterRanges[2u * cluster];
             uint count = clusterRanges[2u * cluster + 1u];
             if (count == kListOverflow) {

@@ -16,7 +16,6 @@
 #include "shaders/gbuffer.vert.spv.h"
 #include "shaders/transparent_occupancy.frag.spv.h"
 #include "shaders/transparent_occupancy_merge.comp.spv.h"
-#include "vk/memory_barrier.h"
 
 namespace candela::render {
 
@@ -183,27 +182,23 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
     return true;
 }
 
-void ForwardTransparentPass::recordOccupancy(VkCommandBuffer cmd, SceneResources& resources,
-                                             const OccupancyInputs& in) {
-    const ClusterGrid& grid = *in.grid;
-    const VkDeviceSize half = VkDeviceSize(grid.clusterCount()) * 3 * sizeof(uint32_t);
-    if (!transparentBounds_.handle() || transparentBounds_.size() < 2 * half) {
-        transparentBounds_ =
-            GpuBuffer(context_, 2 * half,
-                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                      MemoryLocation::Device);
-    }
-    // Empty boxes: mins at the largest ordered value, maxs at the smallest.
-    vkCmdFillBuffer(cmd, transparentBounds_.handle(), 0, half, 0xffffffffu);
-    vkCmdFillBuffer(cmd, transparentBounds_.handle(), half, half, 0u);
-    // The fills, and the slicing the occupancy compute pass wrote into depthRange.
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+VkDeviceSize ForwardTransparentPass::boundsBytes(const ClusterGrid& grid) {
+    return 2 * VkDeviceSize(grid.clusterCount()) * 3 * sizeof(uint32_t);
+}
 
-    const uint32_t width = in.depth->desc().width;
-    const uint32_t height = in.depth->desc().height;
+void ForwardTransparentPass::recordClearBounds(VkCommandBuffer cmd,
+                                               const OccupancyInputs& in) const {
+    // Empty boxes: mins at the largest ordered value, maxs at the smallest.
+    const VkDeviceSize half = boundsBytes(*in.grid) / 2;
+    vkCmdFillBuffer(cmd, in.bounds.handle(), 0, half, 0xffffffffu);
+    vkCmdFillBuffer(cmd, in.bounds.handle(), half, half, 0u);
+}
+
+void ForwardTransparentPass::recordMarkOccupancy(VkCommandBuffer cmd, SceneResources& resources,
+                                                 const OccupancyInputs& in) const {
+    const ClusterGrid& grid = *in.grid;
+    const uint32_t width = in.depth.desc().width;
+    const uint32_t height = in.depth.desc().height;
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = {{0, 0}, {width, height}};
     rendering.layerCount = 1;
@@ -211,10 +206,10 @@ void ForwardTransparentPass::recordOccupancy(VkCommandBuffer cmd, SceneResources
     setViewport(cmd, width, height);
     occupancy_.bind(cmd);
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorImageInfo depthInfo{pointSampler_.handle(), in.depth->view(),
+    VkDescriptorImageInfo depthInfo{pointSampler_.handle(), in.depth.view(),
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorBufferInfo rangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo boundsInfo{transparentBounds_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo boundsInfo{in.bounds.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(0, &cameraInfo), sampledImageWrite(1, &depthInfo),
         storageBufferWrite(2, &rangeInfo), storageBufferWrite(3, &boundsInfo)};
@@ -232,10 +227,12 @@ void ForwardTransparentPass::recordOccupancy(VkCommandBuffer cmd, SceneResources
         drawMesh(cmd, resources.mesh(draw.mesh));
     }
     vkCmdEndRendering(cmd);
+}
 
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+void ForwardTransparentPass::recordMergeOccupancy(VkCommandBuffer cmd,
+                                                  const OccupancyInputs& in) const {
+    const ClusterGrid& grid = *in.grid;
+    VkDescriptorBufferInfo boundsInfo{in.bounds.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo maskInfo{in.tileMasks->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo clusterInfo{in.clusterBounds->handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet mergeWrites[] = {storageBufferWrite(0, &maskInfo),
@@ -250,25 +247,15 @@ void ForwardTransparentPass::recordOccupancy(VkCommandBuffer cmd, SceneResources
 
 void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& resources,
                                            const ShadingInputs& in) const {
-    // Lighting wrote the HDR target as a storage image; blending reads and writes it.
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    transitionImage(
-        cmd, *in.depth, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-        VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0,
-        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-        VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
-
-    const uint32_t width = in.hdr->desc().width;
-    const uint32_t height = in.hdr->desc().height;
+    const uint32_t width = in.hdr.desc().width;
+    const uint32_t height = in.hdr.desc().height;
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = in.hdr->view();
-    color.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+    color.imageView = in.hdr.view();
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
     color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = in.depth->view();
+    depth.imageView = in.depth.view();
     depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
     depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
     depth.storeOp = VK_ATTACHMENT_STORE_OP_NONE;
@@ -324,15 +311,6 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
         drawMesh(cmd, resources.mesh(draw.mesh));
     }
     vkCmdEndRendering(cmd);
-
-    transitionImage(
-        cmd, *in.depth, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
-        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-        0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                  VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 }
 
 }  // namespace candela::render

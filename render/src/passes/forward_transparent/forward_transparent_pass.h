@@ -10,6 +10,7 @@
 #include "candela/render/frame_scene.h"
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/pipeline.h"
+#include "frame_graph/graph_resources.h"
 #include "passes/lighting/lighting_pass.h"
 #include "vk/sampler.h"
 
@@ -35,25 +36,34 @@ public:
                  const LightingFeatures& features);
     size_t drawCount() const { return sorted_.size(); }
 
-    // Clustered culling only. Record after DepthOccupancyPass and before its outputs are read:
-    // adds the clusters (and view-space boxes) the blended fragments occupy to its outputs.
-    // depth is SHADER_READ_ONLY.
+    // Clustered culling only: three frame-graph passes after DepthOccupancyPass and before its
+    // outputs are read, adding the clusters (and view-space boxes) the blended fragments occupy
+    // to its outputs. `bounds` is a transient of boundsBytes(grid) (storage, transfer dst):
+    // clearBounds writes it (TransferDst); markOccupancy reads depth (Sampled, fragment),
+    // camera (Uniform), depthRange (StorageRead, fragment) and writes bounds
+    // (StorageReadWrite, fragment); mergeOccupancy reads bounds and updates tileMasks and
+    // clusterBounds (StorageReadWrite, compute).
     struct OccupancyInputs {
-        const GpuImage* depth;
+        ImageRef depth;
         const GpuBuffer* camera;
         const GpuBuffer* depthRange;
         const GpuBuffer* tileMasks;
         const GpuBuffer* clusterBounds;
+        BufferRef bounds;
         const ClusterGrid* grid;
         glm::vec2 projectionScale;
     };
-    void recordOccupancy(VkCommandBuffer cmd, SceneResources& resources, const OccupancyInputs& in);
+    static VkDeviceSize boundsBytes(const ClusterGrid& grid);
+    void recordClearBounds(VkCommandBuffer cmd, const OccupancyInputs& in) const;
+    void recordMarkOccupancy(VkCommandBuffer cmd, SceneResources& resources,
+                             const OccupancyInputs& in) const;
+    void recordMergeOccupancy(VkCommandBuffer cmd, const OccupancyInputs& in) const;
 
-    // After the lighting pass: hdr in GENERAL (written by compute), depth SHADER_READ_ONLY;
-    // both are left as they came, the HDR writes visible to compute shaders.
+    // After the lighting pass: hdr is a ColorAttachment (blended over), depth a DepthRead
+    // attachment; the light lists and depthRange are read in the fragment shader.
     struct ShadingInputs {
-        const GpuImage* hdr;
-        const GpuImage* depth;
+        ImageRef hdr;
+        ImageRef depth;
         const GpuBuffer* camera;
         const GpuBuffer* lights;
         const GpuBuffer* clusterRanges;
@@ -78,8 +88,7 @@ private:
     Pipeline shading_;
     Pipeline occupancy_;
     Pipeline merge_;
-    GpuBuffer transparentBounds_;  // see transparent_occupancy.frag
-    Sampler pointSampler_;         // G-buffer and depth reads
+    Sampler pointSampler_;  // G-buffer and depth reads
 };
 
 }  // namespace candela::render

@@ -51,7 +51,7 @@ GBufferPass::GBufferPass(GpuContext& context) {
     pipeline_ = Pipeline::graphics(context, desc, bindings, sizeof(DrawPush));
 }
 
-void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, const GpuImage& hdr,
+void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
                          const std::array<float, 4>& clearRadiance, const FrameScene& scene,
                          SceneResources& resources, const GpuBuffer& cameraBuffer) const {
     const uint32_t width = hdr.desc().width;

@@ -8,7 +8,6 @@
 #include "shaders/allocate_lists.comp.spv.h"
 #include "shaders/assign_lights.comp.spv.h"
 #include "shaders/sort_lists.comp.spv.h"
-#include "vk/memory_barrier.h"
 
 namespace candela::render {
 
@@ -34,12 +33,6 @@ struct AllocatePush {
 struct SortPush {
     uint32_t tileCount;
 };
-
-void computeBarrier(VkCommandBuffer cmd) {
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-}
 
 uint32_t groups(uint32_t invocations) {
     return (invocations + 63) / 64;
@@ -88,7 +81,7 @@ uint32_t LightAssignmentPass::requestedEntries() const {
     return *static_cast<const uint32_t*>(usage_.mapped());
 }
 
-void LightAssignmentPass::record(VkCommandBuffer cmd, const Inputs& in) {
+void LightAssignmentPass::prepare(const Inputs& in) {
     const ClusterGrid& grid = *in.grid;
     // Cluster counts and ranges persist between frames: the sort pass leaves every count at
     // zero and the allocate pass keeps every range the lighting pass can read current. Start
@@ -118,62 +111,87 @@ void LightAssignmentPass::record(VkCommandBuffer cmd, const Inputs& in) {
     // The previous frame has completed (the renderer read its usage already): written by the
     // host, as a fill command costs more than the whole allocate pass on lavapipe.
     *static_cast<uint32_t*>(usage_.mapped()) = in.directionalCount;
+}
 
-    VkDescriptorBufferInfo lights{in.lights->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo masks{in.tileMasks->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo bounds{in.clusterBounds->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo range{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo counts{clusterCounts_.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo ranges{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo indices{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo usage{usage_.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo previous{previousMasks_.handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet assignWrites[] = {
-        storageBufferWrite(1, &lights), storageBufferWrite(2, &masks),
-        storageBufferWrite(3, &bounds), storageBufferWrite(4, &range),
-        storageBufferWrite(5, &counts), storageBufferWrite(6, &ranges),
-        storageBufferWrite(7, &indices)};
+namespace {
+struct AssignDescriptors {
+    VkDescriptorBufferInfo lights, masks, bounds, range, counts, ranges, indices, usage, previous;
+};
+AssignDescriptors describe(const LightAssignmentPass::Inputs& in, const GpuBuffer& counts,
+                           const GpuBuffer& usage, const GpuBuffer& previous) {
+    return {{in.lights->handle(), 0, VK_WHOLE_SIZE},
+            {in.tileMasks->handle(), 0, VK_WHOLE_SIZE},
+            {in.clusterBounds->handle(), 0, VK_WHOLE_SIZE},
+            {in.depthRange->handle(), 0, VK_WHOLE_SIZE},
+            {counts.handle(), 0, VK_WHOLE_SIZE},
+            {in.clusterRanges->handle(), 0, VK_WHOLE_SIZE},
+            {in.lightIndices->handle(), 0, VK_WHOLE_SIZE},
+            {usage.handle(), 0, VK_WHOLE_SIZE},
+            {previous.handle(), 0, VK_WHOLE_SIZE}};
+}
+}  // namespace
+
+void LightAssignmentPass::recordCount(VkCommandBuffer cmd, const Inputs& in) const {
+    const AssignDescriptors d = describe(in, clusterCounts_, usage_, previousMasks_);
+    const VkWriteDescriptorSet writes[] = {
+        storageBufferWrite(1, &d.lights), storageBufferWrite(2, &d.masks),
+        storageBufferWrite(3, &d.bounds), storageBufferWrite(4, &d.range),
+        storageBufferWrite(5, &d.counts), storageBufferWrite(6, &d.ranges),
+        storageBufferWrite(7, &d.indices)};
     AssignPush assign{in.view,
-                      toGpu(grid),
+                      toGpu(*in.grid),
                       {in.width, in.height},
                       {in.projectionScale.x, in.projectionScale.y},
                       in.lightCount,
                       in.lightCapacity};
-
     countPipeline_.bind(cmd);
-    countPipeline_.pushDescriptors(cmd, assignWrites);
+    countPipeline_.pushDescriptors(cmd, writes);
     countPipeline_.pushConstants(cmd, &assign, sizeof(assign));
     vkCmdDispatch(cmd, std::max(groups(in.lightCount), 1u), 1, 1);
-    computeBarrier(cmd);
+}
 
-    const VkWriteDescriptorSet allocateWrites[] = {
-        storageBufferWrite(0, &counts), storageBufferWrite(1, &ranges),
-        storageBufferWrite(2, &usage), storageBufferWrite(3, &masks),
-        storageBufferWrite(4, &previous)};
-    AllocatePush allocate{grid.tileCount(), in.lightIndexCapacity};
+void LightAssignmentPass::recordAllocate(VkCommandBuffer cmd, const Inputs& in) const {
+    const AssignDescriptors d = describe(in, clusterCounts_, usage_, previousMasks_);
+    const VkWriteDescriptorSet writes[] = {
+        storageBufferWrite(0, &d.counts), storageBufferWrite(1, &d.ranges),
+        storageBufferWrite(2, &d.usage), storageBufferWrite(3, &d.masks),
+        storageBufferWrite(4, &d.previous)};
+    AllocatePush allocate{in.grid->tileCount(), in.lightIndexCapacity};
     allocatePipeline_.bind(cmd);
-    allocatePipeline_.pushDescriptors(cmd, allocateWrites);
+    allocatePipeline_.pushDescriptors(cmd, writes);
     allocatePipeline_.pushConstants(cmd, &allocate, sizeof(allocate));
-    vkCmdDispatch(cmd, groups(grid.tileCount()), 1, 1);
-    computeBarrier(cmd);
+    vkCmdDispatch(cmd, groups(in.grid->tileCount()), 1, 1);
+}
 
+void LightAssignmentPass::recordWrite(VkCommandBuffer cmd, const Inputs& in) const {
+    const AssignDescriptors d = describe(in, clusterCounts_, usage_, previousMasks_);
+    const VkWriteDescriptorSet writes[] = {
+        storageBufferWrite(1, &d.lights), storageBufferWrite(2, &d.masks),
+        storageBufferWrite(3, &d.bounds), storageBufferWrite(4, &d.range),
+        storageBufferWrite(5, &d.counts), storageBufferWrite(6, &d.ranges),
+        storageBufferWrite(7, &d.indices)};
+    AssignPush assign{in.view,
+                      toGpu(*in.grid),
+                      {in.width, in.height},
+                      {in.projectionScale.x, in.projectionScale.y},
+                      in.lightCount,
+                      in.lightCapacity};
     writePipeline_.bind(cmd);
-    writePipeline_.pushDescriptors(cmd, assignWrites);
+    writePipeline_.pushDescriptors(cmd, writes);
     writePipeline_.pushConstants(cmd, &assign, sizeof(assign));
     vkCmdDispatch(cmd, std::max(groups(in.lightCount), 1u), 1, 1);
-    computeBarrier(cmd);
+}
 
-    const VkWriteDescriptorSet sortWrites[] = {
-        storageBufferWrite(0, &ranges), storageBufferWrite(1, &indices),
-        storageBufferWrite(2, &counts), storageBufferWrite(3, &masks)};
-    SortPush sort{grid.tileCount()};
+void LightAssignmentPass::recordSort(VkCommandBuffer cmd, const Inputs& in) const {
+    const AssignDescriptors d = describe(in, clusterCounts_, usage_, previousMasks_);
+    const VkWriteDescriptorSet writes[] = {
+        storageBufferWrite(0, &d.ranges), storageBufferWrite(1, &d.indices),
+        storageBufferWrite(2, &d.counts), storageBufferWrite(3, &d.masks)};
+    SortPush sort{in.grid->tileCount()};
     sortPipeline_.bind(cmd);
-    sortPipeline_.pushDescriptors(cmd, sortWrites);
+    sortPipeline_.pushDescriptors(cmd, writes);
     sortPipeline_.pushConstants(cmd, &sort, sizeof(sort));
-    vkCmdDispatch(cmd, grid.tileCount(), 1, 1);
-    computeBarrier(cmd);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    vkCmdDispatch(cmd, in.grid->tileCount(), 1, 1);
 }
 
 }  // namespace candela::render

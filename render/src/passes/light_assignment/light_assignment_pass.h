@@ -37,9 +37,20 @@ public:
         uint32_t lightIndexCapacity;     // entries lightIndices holds
         uint32_t directionalCount;
     };
-    // Reads the occupancy outputs after a compute barrier; leaves the lists for a later compute
-    // pass behind a compute barrier and requestedEntries() behind a host barrier.
-    void record(VkCommandBuffer cmd, const Inputs& inputs);
+    // Host side, before the frame is submitted: sizes and resets the persistent buffers.
+    void prepare(const Inputs& inputs);
+    // Four frame-graph passes, in this order, all compute. Each reads lights, tileMasks,
+    // clusterBounds and depthRange (StorageRead) where its shader binds them and updates
+    // (StorageReadWrite) what it writes: count -> clusterCounts; allocate -> clusterCounts,
+    // clusterRanges, usage, previousMasks; write -> clusterCounts, lightIndices; sort ->
+    // clusterRanges, lightIndices, clusterCounts. usage is read by the host after the frame.
+    void recordCount(VkCommandBuffer cmd, const Inputs& inputs) const;
+    void recordAllocate(VkCommandBuffer cmd, const Inputs& inputs) const;
+    void recordWrite(VkCommandBuffer cmd, const Inputs& inputs) const;
+    void recordSort(VkCommandBuffer cmd, const Inputs& inputs) const;
+    const GpuBuffer& clusterCounts() const { return clusterCounts_; }
+    const GpuBuffer& usage() const { return usage_; }
+    const GpuBuffer& previousMasks() const { return previousMasks_; }
 
     // Index entries the last completed frame asked for (directional lights included); more
     // than its capacity means some clusters overflowed.

@@ -285,11 +285,8 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
 
     if (kClustered) {
         for (uint i = 0u; i < push.directionalCount; ++i) addLight(px, lightIndices[i]);
-        uvec2 tile = uvec2(pixel) / push.grid.tileSize;
-        float viewDepth = viewDepthFromNdc(depth, push.grid.projectionNear);
-        uint slice = sliceOfDepth(uintBitsToFloat(depthRange[2]), uintBitsToFloat(depthRange[3]),
-                                  push.grid.slices, viewDepth);
-        uint cluster = (slice * push.grid.tilesY + tile.y) * push.grid.tilesX + tile.x;
+        uint cluster = clusterOfPixel(push.grid, uvec2(pixel), depth,
+                                      uintBitsToFloat(depthRange[2]), uintBitsToFloat(depthRange[3]));
         uint first = clusterRanges[2u * cluster];
         uint count = clusterRanges[2u * cluster + 1u];
         if (count == kListOverflow) {

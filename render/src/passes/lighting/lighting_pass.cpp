@@ -117,7 +117,7 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
     }
     images[4] = {pointSampler_.handle(), in.gbuffer->depth.view(),
                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, in.hdr->view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
     const EnvironmentDescriptors& env = *in.environment;
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(0, &cameraInfo),         storageBufferWrite(1, &lightInfo),
@@ -135,7 +135,7 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
     pipeline_.bind(cmd);
     pipeline_.pushDescriptors(cmd, writes);
     pipeline_.pushConstants(cmd, &push, sizeof(push));
-    vkCmdDispatch(cmd, (in.hdr->desc().width + 7) / 8, (in.hdr->desc().height + 7) / 8, 1);
+    vkCmdDispatch(cmd, (in.hdr.desc().width + 7) / 8, (in.hdr.desc().height + 7) / 8, 1);
 }
 
 }  // namespace candela::render

@@ -9,6 +9,7 @@
 #include "candela/render/gpu_image.h"
 #include "candela/render/pipeline.h"
 #include "candela/render/renderer_options.h"
+#include "frame_graph/graph_resources.h"
 #include "vk/sampler.h"
 
 namespace candela::render {
@@ -44,12 +45,12 @@ public:
     void setFeatures(const LightingFeatures& features);
     const LightingFeatures& features() const { return features_; }
 
-    // G-buffer images must be SHADER_READ_ONLY, hdr GENERAL. The cluster buffers are read
+    // Frame graph uses: G-buffer images Sampled, hdr StorageReadWrite. The cluster buffers are read
     // only by the clustered variant, pairCounts only by the counting one (one uvec2 per
     // workgroup, see workgroupCount()).
     struct Inputs {
         const GBufferTargets* gbuffer;
-        const GpuImage* hdr;
+        ImageRef hdr;
         const GpuBuffer* camera;
         const GpuBuffer* lights;
         const GpuBuffer* clusterRanges;

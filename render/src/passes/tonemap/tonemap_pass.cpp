@@ -13,7 +13,7 @@ TonemapPass::TonemapPass(GpuContext& context) {
     pipeline_ = Pipeline::compute(context, tonemap_comp_spv, bindings, sizeof(float));
 }
 
-void TonemapPass::record(VkCommandBuffer cmd, const GpuImage& hdr, const GpuImage& ldr,
+void TonemapPass::record(VkCommandBuffer cmd, const ImageRef& hdr, const ImageRef& ldr,
                          float exposure) const {
     VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorImageInfo ldrInfo{VK_NULL_HANDLE, ldr.view(), VK_IMAGE_LAYOUT_GENERAL};

@@ -14,7 +14,7 @@ TrianglePass::TrianglePass(GpuContext& context) {
     pipeline_ = Pipeline::graphics(context, desc, {}, sizeof(float) * 4);
 }
 
-void TrianglePass::record(VkCommandBuffer cmd, const GpuImage& target,
+void TrianglePass::record(VkCommandBuffer cmd, const ImageRef& target,
                           const std::array<float, 4>& clear,
                           const std::array<float, 4>& radiance) const {
     const uint32_t width = target.desc().width;

@@ -3,11 +3,11 @@
 #include <array>
 
 #include "candela/render/pipeline.h"
+#include "frame_graph/graph_resources.h"
 
 namespace candela::render {
 
 class GpuContext;
-class GpuImage;
 
 // NDC corners of the triangle, shared with tests that check coverage pixel by pixel.
 inline constexpr std::array<std::array<float, 2>, 3> kTestTriangleNdc = {
@@ -17,7 +17,7 @@ class TrianglePass {
 public:
     explicit TrianglePass(GpuContext& context);
     // target must be in COLOR_ATTACHMENT_OPTIMAL layout.
-    void record(VkCommandBuffer cmd, const GpuImage& target, const std::array<float, 4>& clear,
+    void record(VkCommandBuffer cmd, const ImageRef& target, const std::array<float, 4>& clear,
                 const std::array<float, 4>& radiance) const;
 
 private:

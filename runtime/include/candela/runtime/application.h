@@ -56,11 +56,12 @@ struct ApplicationOptions {
     std::uint32_t frames = 0;              // 0: until the window closes (headless: 1)
     double fixedStepSeconds = 1.0 / 30.0;  // scene time per frame when headless
     std::vector<FrameCapture> captures;
-    std::optional<std::filesystem::path> stats;  // per-run JSON (see frame_stats.h)
+    std::optional<std::filesystem::path> stats;       // per-run JSON (see frame_stats.h)
+    std::optional<std::filesystem::path> frameGraph;  // the last frame's graph as Graphviz
     bool countLightPairs = false;  // renderer counts light-pixel pairs (stats' culling figures)
     render::ValidationMode validation = render::ValidationMode::IfPresent;
     render::LightCulling lightCulling = render::LightCulling::Clustered;
-    render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Cpu;
+    render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Auto;
     // The sky (image-based lighting and background): this file if set, else the world's Sky
     // component; a file that cannot be used gives a message and a neutral sky.
     std::optional<std::filesystem::path> environment;
