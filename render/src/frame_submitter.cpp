@@ -10,7 +10,7 @@ namespace candela::render {
 FrameSubmitter::FrameSubmitter(GpuContext& context) : context_(context) {
     VkDevice device = context.device();
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;  // reset whole, once per begin()
     poolInfo.queueFamilyIndex = context.queueFamily();
     CANDELA_VK_CHECK(vkCreateCommandPool(device, &poolInfo, nullptr, &pool_));
     VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
@@ -41,7 +41,7 @@ void FrameSubmitter::waitIdle() {
 
 VkCommandBuffer FrameSubmitter::begin() {
     waitIdle();
-    CANDELA_VK_CHECK(vkResetCommandBuffer(cmd_, 0));
+    CANDELA_VK_CHECK(vkResetCommandPool(context_.device(), pool_, 0));
     VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     CANDELA_VK_CHECK(vkBeginCommandBuffer(cmd_, &beginInfo));

@@ -66,6 +66,10 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
         for (const auto& [name, ms] : f.passMs)
             passTimes[name].push_back(ms);
     }
+    std::vector<double> compileMs;  // over the frames that compiled (the rest reused the graph)
+    for (const render::RendererStats& f : stats.frames) {
+        if (!f.graphReused) compileMs.push_back(f.graphCompileMs);
+    }
     json["passes"] = nlohmann::json::object();
     for (const render::RendererStats::PassTime& pass : last.passMs) {
         json["passes"][pass.first] = median(passTimes[pass.first]);
@@ -78,7 +82,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
         {"transient_bytes", last.transientBytes},
         {"transient_bytes_unaliased", last.transientBytesUnaliased},
         {"record_ms", median(collect(stats.frames, [](auto& f) { return f.graphRecordMs; }))},
-        {"compile_ms", median(collect(stats.frames, [](auto& f) { return f.graphCompileMs; }))},
+        {"compile_ms", compileMs.empty() ? 0.0 : median(compileMs)},
         {"record_compile_ms",
          median(collect(stats.frames, [](auto& f) { return f.graphRecordMs + f.graphCompileMs; }))},
         {"compiled_frames",

@@ -124,7 +124,7 @@ TEST(FrameGraph, BarrierListsOfADeferredFrame) {
     EXPECT_EQ(d.newLayout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     EXPECT_EQ(d.srcAccess, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
     EXPECT_EQ(d.dstStages, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
-    EXPECT_EQ(d.dstAccess, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    EXPECT_EQ(d.dstAccess, VK_ACCESS_2_SHADER_READ_BIT);
     // lighting: albedo and hdr change layout; depth is already readable by compute; the
     // masks need one memory barrier (storage write -> storage read).
     ASSERT_EQ(c.before[2].images.size(), 2u);

@@ -226,7 +226,7 @@ TEST(Cli, BadStepAndCaptureEachAreRejected) {
 // Light lists built in compute shaders are the CPU's lists, in the same order: the same bytes.
 TEST(Cli, DeviceLightAssignmentGivesTheSameImage) {
     auto dir = tempDir();
-    for (const char* device : {"cpu", "gpu"}) {
+    for (const char* device : {"cpu", "gpu", "auto"}) {
         RunResult r = runCandela(std::string("demo --headless --size 160x90 --frames 2 ") +
                                  "--light-assign " + device + " --capture " +
                                  (dir / (std::string("assign_") + device + ".exr")).string());
@@ -235,10 +235,43 @@ TEST(Cli, DeviceLightAssignmentGivesTheSameImage) {
     std::string cpu = readBytes(dir / "assign_cpu.exr");
     EXPECT_FALSE(cpu.empty());
     EXPECT_EQ(cpu, readBytes(dir / "assign_gpu.exr"));
+    EXPECT_EQ(cpu, readBytes(dir / "assign_auto.exr"));
     RunResult bad = runCandela(kTriangle + "--light-assign tpu");
     EXPECT_EQ(bad.exitCode, 2);
-    EXPECT_NE(bad.output.find("--light-assign needs cpu or gpu, got 'tpu'"), std::string::npos)
+    EXPECT_NE(bad.output.find("--light-assign needs auto, cpu or gpu, got 'tpu'"),
+              std::string::npos)
         << bad.output;
+}
+
+// --stats names every pass the frame graph ran with its time and describes the graph;
+// --frame-graph writes it as Graphviz. On lavapipe (a CPU device) auto assigns on the CPU.
+TEST(Cli, StatsAndGraphvizDescribeTheFrameGraph) {
+    auto dir = tempDir();
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/alpha_blend_mode.scene.json";
+    RunResult r = runCandela("run " + scene + " --headless --size 64x64 --frames 3 --stats " +
+                             (dir / "graph.json").string() + " --frame-graph " +
+                             (dir / "graph.dot").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    nlohmann::json json = nlohmann::json::parse(readBytes(dir / "graph.json"));
+    for (const char* pass :
+         {"gbuffer", "depth_range", "depth_occupancy", "light_assignment_cpu", "lighting",
+          "transparent_occupancy", "forward_transparent", "tonemap"}) {
+        ASSERT_TRUE(json["passes"].contains(pass)) << pass << ": " << json["passes"].dump();
+        EXPECT_GE(json["passes"][pass].get<double>(), 0.0) << pass;
+    }
+    const nlohmann::json& graph = json["frame_graph"];
+    EXPECT_EQ(graph["passes"].get<int>(), int(json["passes"].size()));
+    EXPECT_EQ(graph["culled_passes"].get<int>(), 0);
+    EXPECT_GT(graph["barriers"].get<int>(), 0);
+    EXPECT_GT(graph["transient_bytes"].get<uint64_t>(), 0u);
+    EXPECT_LE(graph["transient_bytes"].get<uint64_t>(),
+              graph["transient_bytes_unaliased"].get<uint64_t>());
+    EXPECT_EQ(graph["compiled_frames"].get<int>(), 1);  // frames 2 and 3 reuse the graph
+    const std::string dot = readBytes(dir / "graph.dot");
+    EXPECT_EQ(dot.rfind("digraph frame {", 0), 0u) << dot.substr(0, 80);
+    EXPECT_NE(dot.find("gbuffer.depth"), std::string::npos);
+    EXPECT_NE(dot.find("forward_transparent"), std::string::npos);
 }
 
 // The engine scene files in tests/scenes load (glTF references, lights, camera, material

@@ -329,6 +329,9 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
     }
     const TransientPlacement placement = placeTransients(intervals);
     out.poolOffset.assign(resources.size(), 0);
+    out.poolSize.assign(resources.size(), 0);
+    for (uint32_t r : transients)
+        out.poolSize[r] = resources[r].needs.size;
     for (size_t i = 0; i < transients.size(); ++i)
         out.poolOffset[transients[i]] = placement.offsets[i];
     out.poolBytes = placement.poolBytes;

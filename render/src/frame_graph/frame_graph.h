@@ -166,6 +166,7 @@ struct CompiledFrameGraph {
     // Transient placement: offset in the pool per resource (imported: unused), the pool's
     // size with aliasing and the sum of the transients' sizes without.
     std::vector<VkDeviceSize> poolOffset;
+    std::vector<VkDeviceSize> poolSize;  // per resource: bytes a transient takes in the pool
     VkDeviceSize poolBytes = 0;
     VkDeviceSize unaliasedBytes = 0;
     uint32_t poolMemoryTypeBits = ~0u;

@@ -45,8 +45,8 @@ std::string frameGraphDot(const FrameGraph& graph, const CompiledFrameGraph& com
         dot << "  r" << r << " [shape=" << (res.image ? "ellipse" : "note") << ", label=\""
             << escaped(res.name);
         if (!res.imported) {
-            dot << "\\ntransient " << (res.needs.size + 1023) / 1024 << " KiB @"
-                << compiled.poolOffset[r] / 1024;
+            dot << "\\ntransient " << (compiled.poolSize[r] + 1023) / 1024 << " KiB at "
+                << compiled.poolOffset[r] / 1024 << " KiB";
         } else {
             dot << "\\nimported";
         }

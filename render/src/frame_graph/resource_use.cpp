@@ -7,7 +7,8 @@ UseInfo useInfo(Use use, VkPipelineStageFlags2 shaderStages) {
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
     switch (use) {
         case Use::Sampled:
-            return {shaderStages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+            // SHADER_READ (not SAMPLED_READ): what best practices expects for the layout.
+            return {shaderStages, VK_ACCESS_2_SHADER_READ_BIT,
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, false, true};
         case Use::StorageRead:
             return {shaderStages, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_GENERAL,

@@ -47,7 +47,7 @@ EnvironmentBrdfLut::EnvironmentBrdfLut(GpuContext& context)
         transitionImage(cmd, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+                        VK_ACCESS_2_SHADER_READ_BIT);
     });
     buildMs_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

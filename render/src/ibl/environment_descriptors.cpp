@@ -12,14 +12,27 @@ constexpr VkImageLayout kRead = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 }
 
 EnvironmentPlaceholders::EnvironmentPlaceholders(GpuContext& context)
-    : cube_(context, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1, true, VK_IMAGE_USAGE_SAMPLED_BIT}),
-      lut_(context, {VK_FORMAT_R16G16_UNORM, 1, 1, 1, false, VK_IMAGE_USAGE_SAMPLED_BIT}),
+    : cube_(context, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1, true,
+                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
+      lut_(context, {VK_FORMAT_R16G16_UNORM, 1, 1, 1, false,
+                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
       buffer_(context, 9 * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryLocation::Device),
       sampler_(std::make_unique<Sampler>(context, SamplerDesc{})) {
     context.submitAndWait([&](VkCommandBuffer cmd) {
+        // Cleared to zero, not left undefined: a variant that binds them may still read them.
+        const VkClearColorValue zero{};
         for (const GpuImage* image : {&cube_, &lut_}) {
-            transitionImage(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, kRead, VK_PIPELINE_STAGE_2_NONE,
-                            0, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0);
+            transitionImage(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED,
+                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+                            VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+            const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, image->layers()};
+            vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero,
+                                 1, &all);
+            transitionImage(
+                cmd, *image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kRead,
+                VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_READ_BIT);
         }
     });
 }
