@@ -3,33 +3,31 @@
 #include <utility>
 
 #include "candela/render/gpu_context.h"
+#include "vk/memory_allocator.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
 
 GpuBuffer::GpuBuffer(GpuContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
                      MemoryLocation location)
-    : device_(context.device()), size_(size) {
+    : device_(context.device()), allocator_(&context.memoryAllocator()), size_(size) {
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = size;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     CANDELA_VK_CHECK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
 
-    VkMemoryRequirements requirements;
-    vkGetBufferMemoryRequirements(device_, buffer_, &requirements);
     // Host-coherent so CPU writes and GPU readbacks need no explicit flush/invalidate.
-    VkMemoryPropertyFlags flags =
-        location == MemoryLocation::HostVisible
-            ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-            : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = requirements.size;
-    alloc.memoryTypeIndex = context.findMemoryType(requirements.memoryTypeBits, flags);
-    CANDELA_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
-    CANDELA_VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
-    if (location == MemoryLocation::HostVisible) {
-        CANDELA_VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    const bool hostVisible = location == MemoryLocation::HostVisible;
+    const VkMemoryPropertyFlags flags =
+        hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    try {
+        memory_ = allocator_->allocateFor(buffer_, flags, hostVisible);
+        CANDELA_VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_.memory, memory_.offset));
+    } catch (...) {
+        release();
+        throw;
     }
 }
 
@@ -45,10 +43,10 @@ GpuBuffer& GpuBuffer::operator=(GpuBuffer&& other) noexcept {
     if (this != &other) {
         release();
         device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        allocator_ = std::exchange(other.allocator_, nullptr);
         buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
-        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        memory_ = std::exchange(other.memory_, MemoryAllocation{});
         size_ = std::exchange(other.size_, 0);
-        mapped_ = std::exchange(other.mapped_, nullptr);
     }
     return *this;
 }
@@ -56,10 +54,9 @@ GpuBuffer& GpuBuffer::operator=(GpuBuffer&& other) noexcept {
 void GpuBuffer::release() {
     if (!device_) return;
     if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
-    if (memory_) vkFreeMemory(device_, memory_, nullptr);  // unmaps implicitly
+    allocator_->free(memory_);
     buffer_ = VK_NULL_HANDLE;
-    memory_ = VK_NULL_HANDLE;
-    mapped_ = nullptr;
+    memory_ = {};
 }
 
 }  // namespace candela::render

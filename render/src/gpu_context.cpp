@@ -9,6 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "vk/memory_allocator.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -88,6 +89,7 @@ GpuContext::~GpuContext() {
     if (device_) {
         vkDeviceWaitIdle(device_);
         vkDestroyCommandPool(device_, oneShotPool_, nullptr);
+        memoryAllocator_.reset();
         vkDestroyDevice(device_, nullptr);
     }
     if (messenger_) {
@@ -172,7 +174,6 @@ void GpuContext::pickPhysicalDevice(const std::string& preferred) {
             "no Vulkan 1.3 device found (install mesa-vulkan-drivers for lavapipe)");
     }
     deviceName_ = properties_.deviceName;
-    vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memoryProperties_);
 }
 
 void GpuContext::createDevice(bool swapchain) {
@@ -229,16 +230,15 @@ void GpuContext::createDevice(bool swapchain) {
     poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
     poolInfo.queueFamilyIndex = queueFamily_;
     CANDELA_VK_CHECK(vkCreateCommandPool(device_, &poolInfo, nullptr, &oneShotPool_));
+    memoryAllocator_ = std::make_unique<MemoryAllocator>(physicalDevice_, device_);
 }
 
 uint32_t GpuContext::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required) const {
-    for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i) {
-        bool allowed = (typeBits & (1u << i)) != 0;
-        if (allowed && (memoryProperties_.memoryTypes[i].propertyFlags & required) == required) {
-            return i;
-        }
-    }
-    throw std::runtime_error("no Vulkan memory type with the required properties");
+    return memoryAllocator_->findMemoryType(typeBits, required);
+}
+
+MemoryStatistics GpuContext::memoryStatistics() const {
+    return memoryAllocator_->statistics();
 }
 
 void GpuContext::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "candela/render/gpu_context.h"
+#include "vk/memory_allocator.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -15,7 +16,7 @@ bool isDepthFormat(VkFormat format) {
 }  // namespace
 
 GpuImage::GpuImage(GpuContext& context, const ImageDesc& desc)
-    : device_(context.device()), desc_(desc) {
+    : device_(context.device()), allocator_(&context.memoryAllocator()), desc_(desc) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.flags = desc.cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
     info.imageType = VK_IMAGE_TYPE_2D;
@@ -30,21 +31,25 @@ GpuImage::GpuImage(GpuContext& context, const ImageDesc& desc)
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     CANDELA_VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
 
-    VkMemoryRequirements requirements;
-    vkGetImageMemoryRequirements(device_, image_, &requirements);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = requirements.size;
-    alloc.memoryTypeIndex =
-        context.findMemoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    CANDELA_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
-    CANDELA_VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
+    try {
+        memory_ = allocator_->allocateFor(image_, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        CANDELA_VK_CHECK(vkBindImageMemory(device_, image_, memory_.memory, memory_.offset));
+    } catch (...) {
+        release();
+        throw;
+    }
 
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     viewInfo.image = image_;
     viewInfo.viewType = desc.cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D;
     viewInfo.format = desc.format;
     viewInfo.subresourceRange = {aspect(), 0, desc.mipLevels, 0, layers()};
-    CANDELA_VK_CHECK(vkCreateImageView(device_, &viewInfo, nullptr, &view_));
+    try {
+        CANDELA_VK_CHECK(vkCreateImageView(device_, &viewInfo, nullptr, &view_));
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
 VkImageAspectFlags GpuImage::aspect() const {
@@ -63,9 +68,10 @@ GpuImage& GpuImage::operator=(GpuImage&& other) noexcept {
     if (this != &other) {
         release();
         device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        allocator_ = std::exchange(other.allocator_, nullptr);
         image_ = std::exchange(other.image_, VK_NULL_HANDLE);
         view_ = std::exchange(other.view_, VK_NULL_HANDLE);
-        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        memory_ = std::exchange(other.memory_, MemoryAllocation{});
         desc_ = other.desc_;
     }
     return *this;
@@ -75,10 +81,10 @@ void GpuImage::release() {
     if (!device_) return;
     if (view_) vkDestroyImageView(device_, view_, nullptr);
     if (image_) vkDestroyImage(device_, image_, nullptr);
-    if (memory_) vkFreeMemory(device_, memory_, nullptr);
+    allocator_->free(memory_);
     view_ = VK_NULL_HANDLE;
     image_ = VK_NULL_HANDLE;
-    memory_ = VK_NULL_HANDLE;
+    memory_ = {};
 }
 
 void transitionImage(VkCommandBuffer cmd, const GpuImage& image, VkImageLayout from,

@@ -1,12 +1,16 @@
 #pragma once
-// A VkBuffer with its own memory. Host-visible buffers stay mapped for their lifetime.
+// A VkBuffer bound to a range of the context's MemoryAllocator. Host-visible buffers stay
+// mapped for their lifetime.
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
 
+#include "candela/render/memory_allocation.h"
+
 namespace candela::render {
 
 class GpuContext;
+class MemoryAllocator;
 
 enum class MemoryLocation { Device, HostVisible };
 
@@ -23,16 +27,16 @@ public:
 
     VkBuffer handle() const { return buffer_; }
     VkDeviceSize size() const { return size_; }
-    void* mapped() const { return mapped_; }  // null for device-local buffers
+    void* mapped() const { return memory_.mapped; }  // null for device-local buffers
 
 private:
     void release();
 
     VkDevice device_ = VK_NULL_HANDLE;
+    MemoryAllocator* allocator_ = nullptr;
     VkBuffer buffer_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    MemoryAllocation memory_{};
     VkDeviceSize size_ = 0;
-    void* mapped_ = nullptr;
 };
 
 }  // namespace candela::render

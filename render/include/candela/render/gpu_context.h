@@ -6,10 +6,15 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "candela/render/memory_allocation.h"
+
 namespace candela::render {
+
+class MemoryAllocator;
 
 enum class ValidationMode {
     Off,        // no layer
@@ -49,6 +54,11 @@ public:
 
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required) const;
 
+    // Where GpuBuffer and GpuImage get their memory (render/src/vk/memory_allocator.h).
+    MemoryAllocator& memoryAllocator() { return *memoryAllocator_; }
+    // Blocks, bytes obtained from Vulkan and bytes bound to live resources.
+    MemoryStatistics memoryStatistics() const;
+
     // Records into a fresh command buffer, submits it and waits: for uploads and readbacks.
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
 
@@ -61,11 +71,11 @@ private:
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
     VkPhysicalDeviceProperties properties_{};
-    VkPhysicalDeviceMemoryProperties memoryProperties_{};
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
     uint32_t queueFamily_ = 0;
     VkCommandPool oneShotPool_ = VK_NULL_HANDLE;
+    std::unique_ptr<MemoryAllocator> memoryAllocator_;  // freed before the device
     std::string deviceName_;
     bool echoValidationMessages_ = true;
     std::atomic<uint32_t> validationMessages_{0};

@@ -1,12 +1,16 @@
 #pragma once
-// A 2D (or cube) VkImage with its own memory and one view over all mips and layers.
+// A 2D (or cube) VkImage bound to a range of the context's MemoryAllocator, with one view over
+// all mips and layers.
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
 
+#include "candela/render/memory_allocation.h"
+
 namespace candela::render {
 
 class GpuContext;
+class MemoryAllocator;
 
 struct ImageDesc {
     VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
@@ -37,9 +41,10 @@ private:
     void release();
 
     VkDevice device_ = VK_NULL_HANDLE;
+    MemoryAllocator* allocator_ = nullptr;
     VkImage image_ = VK_NULL_HANDLE;
     VkImageView view_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    MemoryAllocation memory_{};
     ImageDesc desc_{};
 };
 
