@@ -7,6 +7,7 @@
 
 #include "candela/ecs/job_system.h"
 #include "clustered/light_bounds.h"
+#include "clustered/light_frustum_prepass.h"
 
 namespace candela::render {
 
@@ -169,10 +170,17 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
             PairList& list = pairs[job];
             const size_t first = job * kLightsPerJob;
             const size_t last = std::min(first + kLightsPerJob, lights.size());
-            for (size_t i = first; i < last; ++i) {
-                if (lights[i].light.type == content::LightType::Directional) continue;
-                assignOne(grid, lightBoundsInView(lights[i], view), uint32_t(i), occupancy,
-                          numbering, list);
+            list.visible.clear();
+            if (out.frustumPrepass) {
+                lightsInFrustum(grid, lights, first, last, view, list.frustum, list.visible);
+            } else {
+                for (size_t i = first; i < last; ++i) {
+                    if (lights[i].light.type == content::LightType::Directional) continue;
+                    list.visible.push_back(uint32_t(i));
+                }
+            }
+            for (uint32_t i : list.visible) {
+                assignOne(grid, lightBoundsInView(lights[i], view), i, occupancy, numbering, list);
             }
         }
     };
@@ -223,6 +231,10 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
         }
     }
     out.assignedPairs = uint32_t(total);
+    out.lightsInFrustum = 0;
+    for (size_t job = 0; job < jobCount; ++job) {
+        out.lightsInFrustum += uint32_t(pairs[job].visible.size());
+    }
     out.occupiedClusters = occupied;
 }
 
