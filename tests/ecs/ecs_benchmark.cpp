@@ -3,6 +3,7 @@
 // results can be compared over time (see ecs/README.md for the measured table).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -273,14 +274,26 @@ void BM_Propagate(benchmark::State& state) {
     Registry registry;
     const std::vector<Entity> roots = buildForest(registry, std::size_t(state.range(0)));
     propagateTransforms(registry);
+    // Workload check, reported as "wrong": every world translation is (depth + 1) x (0.5, 1, 0).
+    double wrong = 0;
+    registry.view<const HierarchyNode, const WorldTransform>().each(
+        [&](const HierarchyNode& node, const WorldTransform& world) {
+            const float expectY = float(node.depth + 1);
+            if (std::abs(world.matrix.m[13] - expectY) > 1e-4f ||
+                std::abs(world.matrix.m[12] - 0.5f * expectY) > 1e-4f)
+                ++wrong;
+        });
+    state.counters["wrong"] = wrong;
     float t = 0;
+    std::uint32_t recomputed = 0;
     for (auto _ : state) {
         t += kDt;
         for (Entity root : roots) {
             registry.patch<LocalTransform>(root, [&](LocalTransform& l) { l.position.x = t; });
         }
-        propagateTransforms(registry);
+        recomputed = propagateTransforms(registry).recomputed;
     }
+    state.counters["recomputed"] = recomputed;
     setItems(state);
 }
 BENCHMARK(BM_Propagate)->Arg(81000)->Unit(benchmark::kMicrosecond);
