@@ -4,10 +4,12 @@
 // it never fails on a number.
 //
 //   build/bin/candela-bench-light-assignment [--size WxH] [--rounds N] [--calls N]
-//                                            [--max-lights N] [--efficiency]
+//                                            [--max-lights N] [--workers N] [--efficiency]
 //
 // Each round times `calls` warm calls per mode (pre-pass off, then on) and keeps their
 // median; the table gives the median over rounds and the median of the per-round ratios.
+// --workers: job-system worker threads (default: one per core beyond the caller's; 0 runs the
+// assignment on the calling thread alone, steadier on a loaded machine).
 // --efficiency instead prints evaluated / lit pairs of the CPU lists on the floor and the
 // mixed-size floor, with the exact per-cluster and per-8-px bounds (list_efficiency.h).
 #include <algorithm>
@@ -25,6 +27,20 @@ using namespace candela::render;
 using namespace candela::render::bench;
 
 namespace {
+
+// FNV-1a over the lists and ranges: equal across builds when a change keeps the lists.
+uint64_t listChecksum(const LightAssignment& a, const std::vector<uint32_t>& ranges) {
+    uint64_t h = 1469598103934665603ull;
+    auto add = [&](uint32_t v) {
+        for (int b = 0; b < 4; ++b)
+            h = (h ^ ((v >> (8 * b)) & 0xffu)) * 1099511628211ull;
+    };
+    for (uint32_t v : a.lightIndices)
+        add(v);
+    for (uint32_t v : ranges)
+        add(v);
+    return h;
+}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -71,6 +87,7 @@ void printEfficiency(candela::ecs::JobSystem& jobs) {
 int main(int argc, char** argv) {
     uint32_t width = 1280, height = 720, rounds = 5, calls = 7;
     size_t maxLights = 65536;
+    unsigned workers = candela::ecs::JobSystem::defaultWorkerCount();
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!std::strcmp(argv[i], "--size")) std::sscanf(argv[i + 1], "%ux%u", &width, &height);
         if (!std::strcmp(argv[i], "--rounds"))
@@ -79,8 +96,10 @@ int main(int argc, char** argv) {
             calls = std::max(1u, uint32_t(std::strtoul(argv[i + 1], nullptr, 10)));
         if (!std::strcmp(argv[i], "--max-lights"))
             maxLights = std::strtoull(argv[i + 1], nullptr, 10);
+        if (!std::strcmp(argv[i], "--workers"))
+            workers = unsigned(std::strtoul(argv[i + 1], nullptr, 10));
     }
-    candela::ecs::JobSystem jobs;
+    candela::ecs::JobSystem jobs(workers);
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--efficiency")) {
             printEfficiency(jobs);
@@ -91,7 +110,7 @@ int main(int argc, char** argv) {
                 width, height, jobs.threadCount(), rounds, calls);
     std::printf(
         "| lights | in frustum | pairs | without pre-pass ms | with pre-pass ms | with / without "
-        "|\n|---:|---:|---:|---:|---:|---:|\n");
+        "| list checksum |\n|---:|---:|---:|---:|---:|---:|---|\n");
     for (size_t count = 1024; count <= maxLights; count *= 4) {
         const AnalyticFloorView floor = analyticFloorView(width, height, floorHalfExtent(count));
         const std::vector<LightInstance> lights = floorLights(count);
@@ -119,8 +138,10 @@ int main(int argc, char** argv) {
             with.push_back(perMode[1]);
             ratio.push_back(perMode[1] / std::max(perMode[0], 1e-9));
         }
-        std::printf("| %zu | %u | %u | %.3f | %.3f | %.2f |\n", count, assignment.lightsInFrustum,
-                    assignment.assignedPairs, median(without), median(with), median(ratio));
+        std::printf("| %zu | %u | %u | %.3f | %.3f | %.2f | %016llx |\n", count,
+                    assignment.lightsInFrustum, assignment.assignedPairs, median(without),
+                    median(with), median(ratio),
+                    (unsigned long long)listChecksum(assignment, ranges));
         std::fflush(stdout);
     }
     return 0;
