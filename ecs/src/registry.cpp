@@ -73,6 +73,8 @@ Registry::ComponentRecord& Registry::record(ComponentId id) {
 ComponentPool& Registry::createPool(ComponentId id, const ComponentOps& ops) {
     ComponentRecord& r = record(id);
     r.pool = std::make_unique<ComponentPool>(id, ops);
+    if (id >= poolsById_.size()) poolsById_.resize(id + 1, nullptr);
+    poolsById_[id] = r.pool.get();
     return *r.pool;
 }
 

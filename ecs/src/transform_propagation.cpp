@@ -45,13 +45,6 @@ inline void multiplyByAffine(const Mat4& parent, const Mat4& local, Mat4& out) n
 
 }  // namespace
 
-bool TransformPropagation::orderIsCurrent(const Registry& registry, const ComponentPool& local,
-                                          const ComponentPool& world) const {
-    return built_ && local.structureVersion() == localVersion_ &&
-           world.structureVersion() == worldVersion_ &&
-           hierarchyVersion(registry) == hierarchyVersion_;
-}
-
 void TransformPropagation::rebuildOrder(Registry& registry, ComponentPool& local,
                                         ComponentPool& world) {
     // Gather the entities with both transforms, with their depth and parent.
@@ -174,15 +167,14 @@ std::uint32_t TransformPropagation::propagate(ComponentPool& local, ComponentPoo
     return recomputed;
 }
 
-TransformPropagation::Stats TransformPropagation::update(Registry& registry) {
+TransformPropagation::Stats TransformPropagation::updateChanged(Registry& registry,
+                                                                ComponentPool* local,
+                                                                ComponentPool* world) {
     Stats stats;
     // Close the current tick: local changes up to `upTo` are handled now, later ones next run.
     const Tick upTo = registry.advanceTick();
     const Tick since = lastSeen_;
     lastSeen_ = upTo;
-
-    ComponentPool* local = registry.pool<LocalTransform>();
-    ComponentPool* world = registry.pool<WorldTransform>();
     if (local == nullptr || world == nullptr) return stats;
 
     const bool rebuild = !orderIsCurrent(registry, *local, *world);
@@ -207,10 +199,6 @@ TransformPropagation::Stats TransformPropagation::update(Registry& registry) {
     }
     if (stats.recomputed > 0) world->noteChange(now);
     return stats;
-}
-
-TransformPropagation::Stats propagateTransforms(Registry& registry) {
-    return registry.resources().getOrEmplace<TransformPropagation>().update(registry);
 }
 
 }  // namespace candela::ecs

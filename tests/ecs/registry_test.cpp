@@ -2,6 +2,9 @@
 
 #include <candela/ecs/registry.h>
 
+#include <string>
+#include <vector>
+
 #include "test_components.h"
 
 namespace candela::ecs {
@@ -80,6 +83,78 @@ TEST(Registry, MissingComponentIsAnError) {
     }
 #else
     EXPECT_DEATH((void)registry.get<Health>(e), "without T");
+#endif
+}
+
+// The unchecked storage-level accessor answers what the checked get answers, across pages,
+// removals that move elements, group reordering and non-trivial components.
+TEST(Registry, StorageGetMatchesCheckedGet) {
+    Registry registry;
+    registry.group<Position, Velocity>();
+    std::vector<Entity> entities;
+    for (int i = 0; i < 10000; ++i) {  // more than one 4,096-entry sparse page
+        const Entity e = registry.create();
+        registry.emplace<Position>(e, float(i), 0.0f, 0.0f);
+        registry.emplace<Name>(e, std::to_string(i));
+        if (i % 3 == 0) registry.emplace<Velocity>(e);  // group swaps reorder Position
+        entities.push_back(e);
+    }
+    for (int i = 0; i < 10000; i += 7)
+        registry.remove<Position>(entities[size_t(i)]);
+    const Storage<Position> positions = registry.storage<Position>();
+    const Storage<Name> names = registry.storage<Name>();
+    EXPECT_EQ(positions.size(), registry.pool<Position>()->size());
+    for (int i = 0; i < 10000; ++i) {
+        const Entity e = entities[size_t(i)];
+        EXPECT_EQ(&names.get(e), &registry.get<Name>(e));
+        EXPECT_EQ(names.get(e).text, std::to_string(i));
+        EXPECT_EQ(positions.contains(e), i % 7 != 0);
+        if (i % 7 != 0) {
+            EXPECT_EQ(&positions.get(e), &registry.get<Position>(e));
+            EXPECT_EQ(positions.get(e).x, float(i));
+        }
+    }
+    // The handle follows the pool as it grows.
+    const Entity late = registry.create();
+    registry.emplace<Position>(late, 42.0f, 0.0f, 0.0f);
+    EXPECT_EQ(positions.get(late).x, 42.0f);
+}
+
+TEST(Registry, StorageOfANeverAddedTypeIsAnError) {
+    Registry registry;
+#ifdef NDEBUG
+    try {
+        (void)registry.storage<Health>();
+        FAIL();
+    } catch (const EcsError& error) {
+        EXPECT_EQ(error.code(), EcsErrorCode::MissingComponent);
+    }
+#else
+    EXPECT_DEATH((void)registry.storage<Health>(), "storage");
+#endif
+}
+
+// Checked access answers stale handles and missing components, including after the slot
+// is reused by a new entity (generation mismatch) and past the last slot.
+TEST(Registry, CheckedAccessRejectsStaleAndUnknownHandles) {
+    Registry registry;
+    const Entity old = registry.create();
+    registry.emplace<Position>(old);
+    ASSERT_TRUE(registry.destroy(old));
+    const Entity reused = registry.create();
+    ASSERT_EQ(reused.index(), old.index());
+    registry.emplace<Position>(reused, 1.0f, 2.0f, 3.0f);
+    EXPECT_EQ(registry.tryGet<Position>(old), nullptr);
+    EXPECT_EQ(registry.tryGet<Position>(reused)->y, 2.0f);
+    EXPECT_EQ(registry.tryGet<Position>(Entity(12345, 0)), nullptr);
+    EXPECT_EQ(registry.tryGet<Position>(kNullEntity), nullptr);
+    EXPECT_EQ(registry.tryGet<Velocity>(reused), nullptr);  // no pool at all
+    EXPECT_FALSE(registry.valid(old));
+    EXPECT_TRUE(registry.valid(reused));
+    const Entity reserved = registry.reserve();
+    EXPECT_FALSE(registry.valid(reserved));
+#ifdef NDEBUG
+    EXPECT_THROW((void)registry.get<Position>(old), EcsError);
 #endif
 }
 

@@ -74,6 +74,40 @@ TEST(TransformPropagation, NothingChangedSkipsTheTree) {
     EXPECT_EQ(stats.recomputed, 0u);
 }
 
+// The static early exit returns before advancing the tick (issue 22): whatever changes
+// after any number of skipped runs is still seen, once, by the next run.
+TEST(TransformPropagation, ChangesAfterSkippedRunsAreStillPropagated) {
+    Registry registry;
+    const Entity parent = spawn(registry, {1, 0, 0});
+    const Entity child = spawn(registry, {0, 1, 0});
+    propagateTransforms(registry);
+    const Tick tick = registry.currentTick();
+    EXPECT_TRUE(propagateTransforms(registry).skipped);
+    EXPECT_TRUE(propagateTransforms(registry).skipped);
+    EXPECT_EQ(registry.currentTick(), tick);  // the skipped runs wrote nothing
+
+    registry.patch<LocalTransform>(parent, [](LocalTransform& t) { t.position.x = 4; });
+    auto stats = propagateTransforms(registry);
+    EXPECT_FALSE(stats.skipped);
+    EXPECT_EQ(stats.recomputed, 1u);
+    expectNear(registry.get<WorldTransform>(parent).position(), {4, 0, 0});
+    EXPECT_TRUE(propagateTransforms(registry).skipped);
+
+    // A hierarchy change alone (no LocalTransform written) rebuilds the order.
+    ASSERT_EQ(setParent(registry, child, parent), ReparentResult::Ok);
+    stats = propagateTransforms(registry);
+    EXPECT_FALSE(stats.skipped);
+    EXPECT_TRUE(stats.rebuiltOrder);
+    expectNear(registry.get<WorldTransform>(child).position(), {4, 1, 0});
+
+    // So does a structural change of a transform pool.
+    const Entity late = spawn(registry, {0, 0, 7});
+    stats = propagateTransforms(registry);
+    EXPECT_TRUE(stats.rebuiltOrder);
+    expectNear(registry.get<WorldTransform>(late).position(), {0, 0, 7});
+    EXPECT_TRUE(propagateTransforms(registry).skipped);
+}
+
 TEST(TransformPropagation, OnlyDirtySubtreesAreRecomputed) {
     Registry registry;
     std::vector<Entity> roots;

@@ -7,6 +7,7 @@
 
 #include "candela/ecs/job_system.h"
 #include "clustered/light_bounds.h"
+#include "clustered/light_frustum_prepass.h"
 
 namespace candela::render {
 
@@ -29,25 +30,67 @@ struct OccupiedNumbering {
     }
 };
 
-// Index range [first, last] of the sorted boundaries that intervals [lo, hi] overlap.
-void tileRange(const std::vector<float>& boundaries, float lo, float hi, bool descending,
-               uint32_t& first, uint32_t& last) {
-    // Inner boundaries only: tile i spans boundaries[i]..boundaries[i + 1]. Binary searches,
-    // since most lights cover a few of many tiles.
+// Per-call tables of what the walk would otherwise recompute per light and cell: the unit
+// normals of every row and column plane and every slice's near depth. Built with the very
+// expressions the walk used, so every test sees bit-identical values and the lists are
+// unchanged.
+struct WalkTables {
+    std::vector<glm::vec3> rowTop, rowBottom;        // per row: planes y/d <= top, >= bottom
+    std::vector<glm::vec3> columnLeft, columnRight;  // per column: x/d >= left, <= right
+    std::vector<float> sliceDepth;                   // slices + 1 entries
+    // Inner boundary j of each axis is about first + j * step: the guess tileRange starts from.
+    float columnFirst = 0.0f, columnInvStep = 0.0f, rowFirst = 0.0f, rowInvStep = 0.0f;
+
+    explicit WalkTables(const ClusterGrid& grid) {
+        for (uint32_t y = 0; y < grid.tilesY; ++y) {
+            rowTop.push_back(glm::normalize(glm::vec3(0.0f, -1.0f, -grid.rowTangent[y])));
+            rowBottom.push_back(glm::normalize(glm::vec3(0.0f, 1.0f, grid.rowTangent[y + 1])));
+        }
+        for (uint32_t x = 0; x < grid.tilesX; ++x) {
+            columnLeft.push_back(glm::normalize(glm::vec3(1.0f, 0.0f, grid.columnTangent[x])));
+            columnRight.push_back(
+                glm::normalize(glm::vec3(-1.0f, 0.0f, -grid.columnTangent[x + 1])));
+        }
+        for (uint32_t k = 0; k <= grid.slices; ++k)
+            sliceDepth.push_back(grid.sliceDepth(k));
+        columnFirst = grid.columnTangent[0];
+        columnInvStep = 1.0f / (grid.columnTangent[1] - grid.columnTangent[0]);
+        rowFirst = grid.rowTangent[0];
+        rowInvStep = 1.0f / (grid.rowTangent[1] - grid.rowTangent[0]);
+    }
+};
+
+// How many inner boundaries (boundaries[1 .. tiles-1]) satisfy `below`, a predicate true on a
+// prefix of them. Starts at the guess from the uniform tile spacing and corrects it with exact
+// comparisons, so the answer is the binary search's (NaN included) in one or two steps.
+template <class Below>
+uint32_t prefixCount(const std::vector<float>& boundaries, float guess, Below below) {
     const uint32_t tiles = uint32_t(boundaries.size() - 1);
-    auto begin = boundaries.begin() + 1, end = boundaries.begin() + tiles;
+    const float clamped = guess >= 0.0f ? std::min(guess, float(tiles - 1)) : 0.0f;  // NaN: 0
+    uint32_t c = uint32_t(clamped);
+    while (c > 0 && !below(boundaries[c]))
+        --c;
+    while (c + 1 < tiles && below(boundaries[c + 1]))
+        ++c;
+    return c;
+}
+
+// Index range [first, last] of the tiles whose boundaries interval [lo, hi] overlaps: tile i
+// spans boundaries[i]..boundaries[i + 1], ascending (columns) or descending (rows).
+void tileRange(const std::vector<float>& boundaries, float first0, float invStep, float lo,
+               float hi, bool descending, uint32_t& first, uint32_t& last) {
     if (!descending) {
-        first = uint32_t(std::lower_bound(begin, end, lo) - begin);
-        last = tiles - 1 - uint32_t(end - std::upper_bound(begin, end, hi));
+        first = prefixCount(boundaries, (lo - first0) * invStep, [&](float b) { return b < lo; });
+        last = prefixCount(boundaries, (hi - first0) * invStep, [&](float b) { return b <= hi; });
     } else {
-        first = uint32_t(std::lower_bound(begin, end, hi, std::greater<float>()) - begin);
-        last = tiles - 1 - uint32_t(end - std::upper_bound(begin, end, lo, std::greater<float>()));
+        first = prefixCount(boundaries, (hi - first0) * invStep, [&](float b) { return b > hi; });
+        last = prefixCount(boundaries, (lo - first0) * invStep, [&](float b) { return b >= lo; });
     }
 }
 
-void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightIndex,
-               const ClusterOccupancy& occupancy, const OccupiedNumbering& numbering,
-               PairList& out) {
+void assignOne(const ClusterGrid& grid, const WalkTables& tables, const LightBounds& b,
+               uint32_t lightIndex, const ClusterOccupancy& occupancy,
+               const OccupiedNumbering& numbering, PairList& out) {
     const float centerDepth = -b.center.z;
     const float nearDepth = centerDepth - b.radius;
     const float farDepth = centerDepth + b.radius;
@@ -58,10 +101,11 @@ void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightInde
     for (uint32_t k = firstSlice; k <= lastSlice; ++k) {
         // Widened by a relative margin: the shader's log-based slice of a pixel may round
         // across a boundary the CPU's exp-based depth puts a hair away.
-        const float z0 = grid.sliceDepth(k) * (1.0f - kSliceDepthMargin);
+        const float z0 = tables.sliceDepth[k] * (1.0f - kSliceDepthMargin);
         // The last slice holds everything past far.
-        const float z1 = k + 1 == grid.slices ? std::max(farDepth, grid.sliceDepth(k)) * 2.0f
-                                              : grid.sliceDepth(k + 1) * (1.0f + kSliceDepthMargin);
+        const float z1 = k + 1 == grid.slices
+                             ? std::max(farDepth, tables.sliceDepth[k]) * 2.0f
+                             : tables.sliceDepth[k + 1] * (1.0f + kSliceDepthMargin);
         // The sphere's widest cross-section inside this slice, and the depths it spans there.
         const float dz = std::clamp(centerDepth, z0, z1) - centerDepth;
         const float crossRadius = std::sqrt(std::max(b.radius * b.radius - dz * dz, 0.0f));
@@ -79,22 +123,23 @@ void assignOne(const ClusterGrid& grid, const LightBounds& b, uint32_t lightInde
         uint32_t x0, x1, y0, y1;
         if (xLo > grid.columnTangent.back() || xHi < grid.columnTangent.front()) continue;
         if (yLo > grid.rowTangent.front() || yHi < grid.rowTangent.back()) continue;
-        tileRange(grid.columnTangent, xLo, xHi, false, x0, x1);
-        tileRange(grid.rowTangent, yLo, yHi, true, y0, y1);
+        tileRange(grid.columnTangent, tables.columnFirst, tables.columnInvStep, xLo, xHi, false, x0,
+                  x1);
+        tileRange(grid.rowTangent, tables.rowFirst, tables.rowInvStep, yLo, yHi, true, y0, y1);
 
         for (uint32_t y = y0; y <= y1; ++y) {
             const float top = grid.rowTangent[y], bottom = grid.rowTangent[y + 1];
             // Row planes through the camera: bottom <= y/d <= top.
-            if (!lightReachesPositiveSide(b, glm::normalize(glm::vec3(0.0f, -1.0f, -top))) ||
-                !lightReachesPositiveSide(b, glm::normalize(glm::vec3(0.0f, 1.0f, bottom)))) {
+            if (!lightReachesPositiveSide(b, tables.rowTop[y]) ||
+                !lightReachesPositiveSide(b, tables.rowBottom[y])) {
                 continue;
             }
             for (uint32_t x = x0; x <= x1; ++x) {
                 const uint32_t tile = y * grid.tilesX + x;
                 if (!(numbering.masks[tile] >> k & 1u)) continue;
                 const float left = grid.columnTangent[x], right = grid.columnTangent[x + 1];
-                if (!lightReachesPositiveSide(b, glm::normalize(glm::vec3(1.0f, 0.0f, left))) ||
-                    !lightReachesPositiveSide(b, glm::normalize(glm::vec3(-1.0f, 0.0f, -right)))) {
+                if (!lightReachesPositiveSide(b, tables.columnLeft[x]) ||
+                    !lightReachesPositiveSide(b, tables.columnRight[x])) {
                     continue;
                 }
                 const uint32_t cluster = grid.clusterIndex(x, y, k);
@@ -155,6 +200,8 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
     }
     numbering.firstOfTile[tileCount] = occupied;
 
+    const WalkTables tables(grid);
+
     // Chunks of lights in order; each job fills its own pair list.
     constexpr size_t kLightsPerJob = 512;
     const size_t jobCount = (lights.size() + kLightsPerJob - 1) / kLightsPerJob;
@@ -169,10 +216,18 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
             PairList& list = pairs[job];
             const size_t first = job * kLightsPerJob;
             const size_t last = std::min(first + kLightsPerJob, lights.size());
-            for (size_t i = first; i < last; ++i) {
-                if (lights[i].light.type == content::LightType::Directional) continue;
-                assignOne(grid, lightBoundsInView(lights[i], view), uint32_t(i), occupancy,
-                          numbering, list);
+            list.visible.clear();
+            if (out.frustumPrepass) {
+                lightsInFrustum(grid, lights, first, last, view, list.frustum, list.visible);
+            } else {
+                for (size_t i = first; i < last; ++i) {
+                    if (lights[i].light.type == content::LightType::Directional) continue;
+                    list.visible.push_back(uint32_t(i));
+                }
+            }
+            for (uint32_t i : list.visible) {
+                assignOne(grid, tables, lightBoundsInView(lights[i], view), i, occupancy, numbering,
+                          list);
             }
         }
     };
@@ -223,6 +278,10 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
         }
     }
     out.assignedPairs = uint32_t(total);
+    out.lightsInFrustum = 0;
+    for (size_t job = 0; job < jobCount; ++job) {
+        out.lightsInFrustum += uint32_t(pairs[job].visible.size());
+    }
     out.occupiedClusters = occupied;
 }
 

@@ -12,6 +12,7 @@
 
 #include "candela/render/frame_scene.h"
 #include "clustered/cluster_grid.h"
+#include "clustered/light_frustum_prepass.h"
 
 namespace candela::ecs {
 class JobSystem;
@@ -28,6 +29,11 @@ struct LightAssignment {
     uint32_t directionalCount = 0;
     uint32_t occupiedClusters = 0;  // clusters holding geometry (all, without occupancy)
     uint32_t assignedPairs = 0;     // light-cluster pairs in the lists
+    uint32_t lightsInFrustum = 0;   // local lights the frustum pre-pass passed to the walk
+
+    // The SIMD frustum pre-pass (light_frustum_prepass.h). It changes no list; off only to
+    // measure what it saves and to test that it changes nothing.
+    bool frustumPrepass = true;
 
     // Scratch kept between calls, so a warm frame allocates (and page-faults) nothing: per job,
     // the light-cluster pairs it found in ascending light order; per occupied cluster, the
@@ -35,6 +41,8 @@ struct LightAssignment {
     struct PairList {
         std::vector<uint32_t> cluster;  // compact occupied-cluster number
         std::vector<uint32_t> light;
+        std::vector<uint32_t> visible;  // the job's lights that passed the pre-pass
+        LightFrustumScratch frustum;
     };
     std::vector<PairList> pairScratch;
     std::vector<uint32_t> cursorScratch;

@@ -5,8 +5,10 @@
 // table; it measures, it never fails on a number.
 //
 //   build/bin/candela-bench-lights [--size WxH] [--max-lights N] [--brute-force-max N]
-//                                  [--repeat N] [--frames N]
+//                                  [--repeat N] [--frames N] [--scene floor|mixed]
 //
+// --scene mixed: issue 22's mixed-size floor (a fixed floor patch, radii 1-3 m at 0.1-1.5 m)
+// instead of the constant-density floor.
 // --frames: frames each renderer draws; the last is timed (default 2: warm pipelines and
 // buffers; 1 times a fresh renderer's first frame, as the benchmark did before).
 #include <algorithm>
@@ -18,9 +20,11 @@
 #include <vector>
 
 #include "../test_scene.h"
+#include "analytic_floor.h"
 
 using namespace candela::render;
 using namespace candela::render::test;
+using namespace candela::render::bench;
 
 namespace {
 
@@ -35,19 +39,16 @@ struct Row {
     double bruteForceMs;  // < 0: not measured
 };
 
-TestScene floorScene(size_t count, uint32_t width, uint32_t height) {
+// Both scenes are shared with candela-bench-light-assignment (analytic_floor.h).
+TestScene floorScene(size_t count, uint32_t width, uint32_t height, bool mixedSizes) {
     TestScene scene;
     scene.width = width;
     scene.height = height;
-    const float extent = 4.0f * std::sqrt(float(count));
-    scene.add(candela::content::makePlane(std::max(100.0f, 2.5f * extent), 8), lambertWhite());
+    scene.add(candela::content::makePlane(
+                  mixedSizes ? kMixedSizeFloorHalfExtent : floorHalfExtent(count), 8),
+              lambertWhite());
     scene.lookAt({0.0f, 6.0f, 20.0f}, {0.0f, 0.0f, -20.0f}, {0.0f, 1.0f, 0.0f});
-    std::mt19937 rng{uint32_t(count)};
-    std::uniform_real_distribution<float> x(-extent, extent), z(-2.0f * extent, 18.0f);
-    std::uniform_real_distribution<float> y(0.1f, 1.0f), radius(1.0f, 3.0f);
-    for (size_t i = 0; i < count; ++i) {
-        scene.lights.push_back(pointLight({x(rng), y(rng), z(rng)}, 500.0f, radius(rng)));
-    }
+    scene.lights = mixedSizes ? mixedSizeLights(count) : floorLights(count);
     return scene;
 }
 
@@ -61,6 +62,7 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
     uint32_t width = 1280, height = 720, repeat = 3, frames = 2;
     size_t maxLights = 65536, bruteForceMax = 1024;
+    bool mixedSizes = false;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!std::strcmp(argv[i], "--size")) std::sscanf(argv[i + 1], "%ux%u", &width, &height);
         if (!std::strcmp(argv[i], "--max-lights"))
@@ -70,6 +72,7 @@ int main(int argc, char** argv) {
         }
         if (!std::strcmp(argv[i], "--repeat"))
             repeat = uint32_t(std::strtoul(argv[i + 1], nullptr, 10));
+        if (!std::strcmp(argv[i], "--scene")) mixedSizes = !std::strcmp(argv[i + 1], "mixed");
         if (!std::strcmp(argv[i], "--frames")) {
             frames = std::max(1u, uint32_t(std::strtoul(argv[i + 1], nullptr, 10)));
         }
@@ -77,14 +80,15 @@ int main(int argc, char** argv) {
     GpuContextOptions contextOptions;
     contextOptions.validation = ValidationMode::Off;  // timing run
     GpuContext context(contextOptions);
-    std::printf("device: %s, %ux%u, medians of %u repetitions, frame %u of each\n\n",
-                context.deviceName().c_str(), width, height, repeat, frames);
+    std::printf("device: %s, %s, %ux%u, medians of %u repetitions, frame %u of each\n\n",
+                context.deviceName().c_str(), mixedSizes ? "mixed-size floor" : "floor", width,
+                height, repeat, frames);
     std::printf(
         "| lights | CPU assign ms | GPU assign ms | GPU / CPU | lighting ms (CPU lists) | "
         "lighting ms (GPU lists) | evaluated / lit | brute-force lighting ms |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (size_t count = 16; count <= maxLights; count *= 4) {
-        TestScene scene = floorScene(count, width, height);
+        TestScene scene = floorScene(count, width, height, mixedSizes);
         Row row{count, 0, 0, 0, 0, 0, 0, -1};
         std::vector<double> cpuAssign, gpuAssign, ratio, cpuLighting, gpuLighting, brute;
         RendererOptions cpu, gpu;  // timing without pair counters

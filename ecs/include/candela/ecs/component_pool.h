@@ -6,6 +6,7 @@
 // arrays. Groups (see registry.h) keep several pools in the same order so a multi-component
 // loop is as tight as a loop over separate std::vectors.
 #include <atomic>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -78,6 +79,12 @@ public:
         return entries ? entries[e.index() & kPageMask] : kAbsent;
     }
     bool contains(Entity e) const noexcept { return indexOf(e) != kAbsent; }
+    // Dense position of an entity known to have the component (Storage<T>::get): no bounds
+    // or presence checks, debug builds assert.
+    std::uint32_t indexOfPresent(Entity e) const noexcept {
+        assert(contains(e) && "component absent");
+        return pages_[e.index() >> kPageBits][e.index() & kPageMask];
+    }
     std::byte* at(std::uint32_t index) const noexcept { return data_ + index * elementSize_; }
 
     // Appends e; its component is left for the caller to construct at the returned index.

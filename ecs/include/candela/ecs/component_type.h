@@ -20,8 +20,10 @@ template <class T>
 concept Component = std::is_same_v<T, std::remove_cvref_t<T>> && std::is_object_v<T> &&
     std::is_nothrow_move_constructible_v<T> && std::is_nothrow_destructible_v<T>;
 
+// Always inlined: in a lookup loop it is then a guard-byte test the loop can keep in a
+// register, not a call per component access.
 template <Component T>
-ComponentId componentId() noexcept {
+[[gnu::always_inline]] inline ComponentId componentId() noexcept {
     static const ComponentId id = detail::allocateComponentId();
     return id;
 }

@@ -22,6 +22,7 @@
 #include <candela/ecs/error.h>
 #include <candela/ecs/query.h>
 #include <candela/ecs/resources.h>
+#include <candela/ecs/storage.h>
 #include <candela/ecs/tick.h>
 
 namespace candela::ecs {
@@ -114,6 +115,11 @@ public:
         return changeTick<T>(e) > since;
     }
 
+    // Typed handle on T's pool for hot lookup loops: Storage<T>::get(e) is unchecked (see
+    // storage.h). EcsError MissingComponent if no T was ever added.
+    template <Component T>
+    Storage<T> storage() const;
+
     // ---- Queries -------------------------------------------------------------------------
     // registry.view<Position, const Velocity>(exclude<Frozen>): every entity with Position
     // and Velocity and without Frozen. Const components are read-only in the callback.
@@ -184,7 +190,7 @@ public:
         return findPool(componentId<T>());
     }
     ComponentPool* findPool(ComponentId id) const noexcept {
-        return id < components_.size() ? components_[id].pool.get() : nullptr;
+        return id < poolsById_.size() ? poolsById_[id] : nullptr;
     }
     const EntityPool& entityPool() const noexcept { return pool_; }
     EntityPool& entityPoolForTesting() noexcept { return pool_; }
@@ -226,6 +232,9 @@ private:
     EntityPool pool_;
     std::size_t alive_ = 0;
     std::vector<ComponentRecord> components_;  // by ComponentId
+    // components_[id].pool.get(), packed: the component lookup of get/tryGet is one indexed
+    // load instead of a stride-56 record walk.
+    std::vector<ComponentPool*> poolsById_;
     std::vector<std::unique_ptr<detail::Group>> groups_;
     std::uint32_t nextHookSerial_ = 1;
     std::atomic<Tick> tick_{1};
@@ -302,11 +311,15 @@ bool Registry::remove(Entity e) {
 
 template <Component T>
 T* Registry::tryGet(Entity e) noexcept {
-    if (!pool_.alive(e)) return nullptr;
+    // Pools hold live entities only (destroy empties them first) and store full handles, so
+    // "alive and has T" is "T's pool maps e's index to a slot holding exactly e": a stale
+    // handle whose slot was reused carries another generation. One sparse-set lookup, no
+    // trip to the entity slots.
     const ComponentPool* pool = findPool(componentId<T>());
     if (pool == nullptr) return nullptr;
     const std::uint32_t index = pool->indexOf(e);
-    return index == ComponentPool::kAbsent ? nullptr : pool->typedData<T>() + index;
+    if (index == ComponentPool::kAbsent || pool->entities()[index] != e) return nullptr;
+    return pool->typedData<T>() + index;
 }
 
 template <Component T>
@@ -327,6 +340,14 @@ T& Registry::get(Entity e) {
 template <Component T>
 const T& Registry::get(Entity e) const {
     return const_cast<Registry*>(this)->get<T>(e);
+}
+
+template <Component T>
+Storage<T> Registry::storage() const {
+    ComponentPool* pool = findPool(componentId<T>());
+    CANDELA_ECS_CHECK(pool != nullptr, EcsErrorCode::MissingComponent,
+                      "storage<T>() before any T was added");
+    return Storage<T>(*pool);
 }
 
 template <Component... Ts>

@@ -17,8 +17,9 @@ namespace detail {
 std::uint32_t allocateResourceId() noexcept;
 }  // namespace detail
 
+// Always inlined, as componentId: a guard-byte test rather than a call per lookup.
 template <class T>
-std::uint32_t resourceId() noexcept {
+[[gnu::always_inline]] inline std::uint32_t resourceId() noexcept {
     static const std::uint32_t id = detail::allocateResourceId();
     return id;
 }

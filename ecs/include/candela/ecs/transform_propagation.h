@@ -16,13 +16,13 @@
 #include <cstdint>
 #include <vector>
 
+#include <candela/ecs/hierarchy.h>
+#include <candela/ecs/registry.h>
 #include <candela/ecs/tick.h>
+#include <candela/ecs/transform.h>
 #include <candela/ecs/transform_math.h>
 
 namespace candela::ecs {
-
-class Registry;
-class ComponentPool;
 
 class TransformPropagation {
 public:
@@ -35,11 +35,30 @@ public:
 
     // Runs one propagation. Reads LocalTransform and HierarchyNode, writes WorldTransform
     // (stamped changed, so the renderer can upload only what moved).
-    Stats update(Registry& registry);
+    //
+    // The "nothing changed" exit is always inlined: it is a handful of loads and compares,
+    // and out of line most of its cost was handing Stats back (GCC packs it on the stack
+    // with narrow stores and reloads it as words, a store-forwarding stall).
+    [[gnu::always_inline]] Stats update(Registry& registry) {
+        ComponentPool* local = registry.pool<LocalTransform>();
+        ComponentPool* world = registry.pool<WorldTransform>();
+        // Changes made after the last run carry ticks above lastSeen_, so returning without
+        // advancing the tick (an atomic read-modify-write) loses none.
+        if (built_ && local != nullptr && world != nullptr && local->latestChange() <= lastSeen_ &&
+            orderIsCurrent(registry, *local, *world)) [[likely]] {
+            return Stats{static_cast<std::uint32_t>(parent_.size()), 0, false, true};
+        }
+        return updateChanged(registry, local, world);
+    }
 
 private:
+    Stats updateChanged(Registry& registry, ComponentPool* local, ComponentPool* world);
     bool orderIsCurrent(const Registry& registry, const ComponentPool& local,
-                        const ComponentPool& world) const;
+                        const ComponentPool& world) const {
+        return built_ && local.structureVersion() == localVersion_ &&
+               world.structureVersion() == worldVersion_ &&
+               hierarchyVersion(registry) == hierarchyVersion_;
+    }
     void rebuildOrder(Registry& registry, ComponentPool& local, ComponentPool& world);
     template <class LocalIndex, class WorldIndex>
     std::uint32_t propagate(ComponentPool& local, ComponentPool& world, Tick since, Tick now,
@@ -67,6 +86,8 @@ private:
 };
 
 // Runs the registry's TransformPropagation (kept as a resource, created on first use).
-TransformPropagation::Stats propagateTransforms(Registry& registry);
+[[gnu::always_inline]] inline TransformPropagation::Stats propagateTransforms(Registry& registry) {
+    return registry.resources().getOrEmplace<TransformPropagation>().update(registry);
+}
 
 }  // namespace candela::ecs

@@ -1,0 +1,104 @@
+#pragma once
+// Culling efficiency of CPU light lists on an analytic floor (analytic_floor.h), with the two
+// bounds that say what tighter light/cluster tests could still gain: evaluated / lit
+// light-pixel pairs for
+//  - the lists assignLights built (what the lighting pass evaluates),
+//  - exact per-cluster lists: a light listed only where it reaches at least one of the
+//    cluster's pixels. No per-cluster bound (box, sphere, depth bitmask) can do better at
+//    this grid,
+//  - exact per-sub-tile lists: the same test per 8 x 8 px quarter of each 16 px cluster, i.e.
+//    what per-entry sub-tile masks in 16 px lists could reach.
+// Point lights only (a pixel is lit when it lies strictly inside the attenuation radius, where
+// eq. 9's window is non-zero; the floor's lights all sit above it, so it faces them).
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <span>
+#include <vector>
+
+#include "analytic_floor.h"
+
+namespace candela::render::bench {
+
+struct ListEfficiency {
+    uint64_t litPairs = 0;
+    double lists = 0.0;
+    double exactPerCluster = 0.0;
+    double exactPerSubTile = 0.0;
+};
+
+inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
+                                     std::span<const LightInstance> lights,
+                                     const LightAssignment& assignment,
+                                     std::span<const uint32_t> ranges) {
+    const ClusterGrid& g = f.grid;
+    std::vector<glm::vec4> light(lights.size());  // view-space centre, radius
+    for (size_t i = 0; i < lights.size(); ++i) {
+        light[i] = glm::vec4(glm::vec3(f.view * glm::vec4(lights[i].position, 1.0f)),
+                             lights[i].light.attenuationRadius);
+    }
+    auto lit = [&](const glm::vec3& p, uint32_t i) {
+        const glm::vec3 d = p - glm::vec3(light[i]);
+        return glm::dot(d, d) < light[i].w * light[i].w;
+    };
+    // Pixels grouped by cluster, each tagged with its 8 px quarter of the tile.
+    struct Pixel {
+        uint32_t cluster;
+        uint32_t quarter;
+        uint32_t index;
+    };
+    std::vector<Pixel> pixels;
+    for (uint32_t py = 0; py < f.height; ++py) {
+        for (uint32_t px = 0; px < f.width; ++px) {
+            const glm::vec3& p = f.pixels[size_t(py) * f.width + px];
+            if (p.z == 0.0f) continue;
+            const uint32_t tile = (py / g.tileSize) * g.tilesX + px / g.tileSize;
+            const uint32_t half = g.tileSize / 2;
+            pixels.push_back({g.sliceOf(-p.z) * g.tileCount() + tile,
+                              (py % g.tileSize) / half * 2 + (px % g.tileSize) / half,
+                              py * f.width + px});
+        }
+    }
+    std::sort(pixels.begin(), pixels.end(), [](const Pixel& a, const Pixel& b) {
+        return a.cluster != b.cluster ? a.cluster < b.cluster : a.quarter < b.quarter;
+    });
+    uint64_t evaluated = 0, exactCluster = 0, exactQuarter = 0, litPairs = 0;
+    for (size_t begin = 0; begin < pixels.size();) {
+        size_t end = begin;
+        while (end < pixels.size() && pixels[end].cluster == pixels[begin].cluster)
+            ++end;
+        const uint32_t offset = ranges[size_t(pixels[begin].cluster) * 2];
+        const uint32_t count = ranges[size_t(pixels[begin].cluster) * 2 + 1];
+        evaluated += uint64_t(count) * (end - begin);
+        for (uint32_t k = 0; k < count; ++k) {
+            const uint32_t i = assignment.lightIndices[offset + k];
+            bool inCluster = false;
+            for (size_t q = begin; q < end;) {
+                size_t qEnd = q;
+                while (qEnd < end && pixels[qEnd].quarter == pixels[q].quarter)
+                    ++qEnd;
+                bool inQuarter = false;
+                for (size_t p = q; p < qEnd; ++p) {
+                    if (lit(f.pixels[pixels[p].index], i)) {
+                        inQuarter = true;
+                        ++litPairs;
+                    }
+                }
+                if (inQuarter) exactQuarter += qEnd - q;
+                inCluster = inCluster || inQuarter;
+                q = qEnd;
+            }
+            if (inCluster) exactCluster += end - begin;
+        }
+        begin = end;
+    }
+    ListEfficiency e;
+    e.litPairs = litPairs;
+    const double lit1 = double(std::max<uint64_t>(litPairs, 1));
+    e.lists = double(evaluated) / lit1;
+    e.exactPerCluster = double(exactCluster) / lit1;
+    e.exactPerSubTile = double(exactQuarter) / lit1;
+    return e;
+}
+
+}  // namespace candela::render::bench
