@@ -24,14 +24,20 @@ std::string osError(const fs::path& path, const char* what, int error) {
 }
 
 // Follows symbolic links to the file that is really written, so that a link stays a link and
-// its target is what changes. A dangling link resolves to the path it names.
-std::string resolveSymlinks(fs::path& path) {
+// its target is what changes. A dangling link resolves to the path it names. Links into /proc
+// (/dev/stdout -> /proc/self/fd/1 -> "pipe:[...]" or the file the shell redirected to) name an
+// open file, not a place to put a new one: `openDescriptor` is set and `path` stays the link.
+std::string resolveSymlinks(fs::path& path, bool& openDescriptor) {
     for (int hop = 0; hop < kMaxSymlinkHops; ++hop) {
         struct stat st {};
         if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return {};
         std::error_code ec;
         const fs::path target = fs::read_symlink(path, ec);
         if (ec) return path.string() + ": cannot read the symbolic link: " + ec.message();
+        if (path.string().starts_with("/proc/") || target.string().starts_with("/proc/")) {
+            openDescriptor = true;
+            return {};
+        }
         path = target.is_absolute() ? target : path.parent_path() / target;
     }
     return osError(path, "cannot follow the symbolic link", ELOOP);
@@ -53,10 +59,11 @@ bool writeAll(int fd, std::string_view contents) {
     return true;
 }
 
-// Devices and pipes cannot be renamed over: write them in place, checking every step.
+// Devices, pipes and open descriptors cannot be renamed over: write them in place, checking
+// every step. O_APPEND, so /dev/stdout redirected to a file adds to what is already there.
 std::string writeInPlace(const fs::path& path, std::string_view contents) {
     // O_NONBLOCK: a FIFO without a reader fails (ENXIO) instead of hanging the engine.
-    const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
     if (fd < 0) return osError(path, "cannot open for writing", errno);
     const int flags = ::fcntl(fd, F_GETFL);
     if (flags >= 0) ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
@@ -94,13 +101,15 @@ std::string writeFileAtomically(const fs::path& requested, std::string_view cont
                                 AtomicWriteOptions options) {
     if (requested.empty()) return "cannot write a file with an empty name";
     fs::path path = requested;
-    if (std::string error = resolveSymlinks(path); !error.empty()) return error;
+    bool openDescriptor = false;
+    if (std::string error = resolveSymlinks(path, openDescriptor); !error.empty()) return error;
+    if (openDescriptor) return writeInPlace(requested, contents);
 
     struct stat existing {};
     const bool exists = ::stat(path.c_str(), &existing) == 0;
     if (!exists && errno != ENOENT) return osError(requested, "cannot write", errno);
     if (exists && S_ISDIR(existing.st_mode)) return osError(requested, "cannot write", EISDIR);
-    if (exists && !S_ISREG(existing.st_mode)) return writeInPlace(path, contents);
+    if (exists && !S_ISREG(existing.st_mode)) return writeInPlace(requested, contents);
     if (exists && !options.replaceReadOnly) {
         // Mode bits rather than access(): root may write anything, but a 0444 file still
         // says "do not change me".

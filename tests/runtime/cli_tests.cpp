@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -549,4 +550,19 @@ TEST(Cli, AbsurdLightsAndExposuresGiveAFiniteLitFrame) {
         const std::size_t centre = (std::size_t(ldr->height / 2) * ldr->width + ldr->width / 2) * 3;
         EXPECT_EQ(ldr->rgb[centre], 255) << c.name;
     }
+}
+
+// /dev/stdout is an open descriptor, not a place for a temporary file: the stats go to the
+// pipe, or are appended to the file the shell redirected stdout to.
+TEST(Cli, StatsToDevStdoutReachThePipeOrTheRedirectedFile) {
+    RunResult piped = runCandela(kTriangle + "--frames 1 --stats /dev/stdout");
+    EXPECT_EQ(piped.exitCode, 0) << piped.output;
+    EXPECT_NE(piped.output.find("\"frames\": 1"), std::string::npos) << piped.output;
+
+    const auto file = tempDir() / "stdout.txt";
+    const std::string command = std::string(CANDELA_EXECUTABLE) + " " + kTriangle +
+                                "--frames 1 --stats /dev/stdout > " + file.string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << readBytes(file);
+    EXPECT_NE(readBytes(file).find("\"frames\": 1"), std::string::npos) << readBytes(file);
 }

@@ -5,8 +5,10 @@
 // synced. Readers see the old or the new file, never a mix, and a full disk leaves the old
 // file untouched. A symbolic link is followed, so its target is updated and the link stays a
 // link. A file without any write permission bit is not replaced unless asked. A target that
-// is not a regular file (/dev/stdout, /dev/full, a FIFO with a reader) is written in place,
-// every write checked.
+// is not a regular file (/dev/full, a FIFO with a reader) or that names an open descriptor
+// (/dev/stdout, /proc/self/fd/N) is written in place (appending), every write checked. When
+// the old file's owner cannot be kept (another user's group-writable file, without root), the
+// write fails rather than silently changing who owns the file.
 //
 //   if (std::string error = writeFileAtomically("stats.json", text); !error.empty())
 //       fail(error);  // e.g. "stats.json: cannot write: No space left on device"
