@@ -15,8 +15,8 @@
 #include <exception>
 
 #include "candela/content/exr_image.h"
+#include "candela/content/file_bytes.h"
 #include "exr_memory_stream.h"
-#include "file_bytes.h"
 
 namespace candela::content {
 namespace {

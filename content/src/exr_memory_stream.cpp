@@ -24,4 +24,14 @@ void ExrMemoryStream::seekg(std::uint64_t position) {
     position_ = position;
 }
 
+void ExrMemoryOutputStream::write(const char c[], int n) {
+    if (n <= 0) return;
+    const auto count = static_cast<std::size_t>(n);
+    // OpenEXR seeks back to patch the line offset table, so writes may land inside the data.
+    if (position_ + count > bytes_.size())
+        bytes_.resize(static_cast<std::size_t>(position_) + count);
+    std::memcpy(bytes_.data() + position_, c, count);
+    position_ += count;
+}
+
 }  // namespace candela::content

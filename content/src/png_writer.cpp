@@ -1,9 +1,9 @@
 #include "candela/content/png_writer.h"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
+#include <string_view>
 #include <vector>
+
+#include "candela/content/atomic_file_write.h"
 
 // stb_image_write comes with libstb-dev, which tinygltf already depends on.
 #pragma GCC diagnostic push
@@ -27,19 +27,15 @@ void appendBytes(void* context, void* data, int size) {
 
 std::string writePng(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
                      int channels, const std::uint8_t* pixels) {
-    // Encode to memory first so an encoder failure never leaves a partial file behind, and
-    // so the file error (missing directory, permissions) can be reported with errno.
+    // Encode to memory first so an encoder failure never leaves a partial file behind; the
+    // bytes then go through the engine's one checked, atomic file writer.
     std::vector<unsigned char> encoded;
     if (!stbi_write_png_to_func(appendBytes, &encoded, int(width), int(height), channels, pixels,
                                 int(width) * channels)) {
         return path.string() + ": PNG encoding failed";
     }
-    std::FILE* file = std::fopen(path.c_str(), "wb");
-    if (!file) return path.string() + ": cannot open for writing: " + std::strerror(errno);
-    std::size_t written = std::fwrite(encoded.data(), 1, encoded.size(), file);
-    bool closed = std::fclose(file) == 0;
-    if (written != encoded.size() || !closed) return path.string() + ": write failed";
-    return {};
+    return writeFileAtomically(
+        path, std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()));
 }
 
 }  // namespace candela::content

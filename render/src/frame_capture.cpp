@@ -70,9 +70,8 @@ CapturedFrame FrameReadback::read() const {
 std::string writeCapture(const std::filesystem::path& path, const CapturedFrame& frame) {
     const std::string ext = lowercaseExtension(path);
     if (ext == ".exr") {
-        std::string error =
-            content::writeExrRgbFloat(path, frame.width, frame.height, frame.hdrRgb.data());
-        return error.empty() ? error : path.string() + ": " + error;
+        // Errors already start with the path (content::writeExrRgbFloat).
+        return content::writeExrRgbFloat(path, frame.width, frame.height, frame.hdrRgb.data());
     }
     if (ext == ".png")
         return content::writePng(path, frame.width, frame.height, 4, frame.ldrRgba.data());

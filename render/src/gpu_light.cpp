@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "candela/content/component_validation.h"
+
 namespace candela::render {
 
 namespace {
@@ -38,8 +40,14 @@ GpuLight packLight(const LightInstance& instance) {
     photometric = std::max(finiteOr(photometric, 0.0f), 0.0f);
     // A zero attenuation radius means the light reaches nothing.
     if (radius == 0.0f && l.type != content::LightType::Directional) photometric = 0.0f;
+    // Capped in double at the brightest the loaders and the editor let through, so a light set
+    // directly by code cannot overflow to Inf and make NaN texels either.
+    constexpr double kMaxIntensity =
+        double(content::kMaxLightColorChannel) *
+        std::max(double(content::kMaxLux), double(content::kMaxLumens) / (4.0 * std::numbers::pi));
     for (int i = 0; i < 3; ++i) {
-        g.intensity[i] = std::max(finiteOr(l.color[i], 0.0f), 0.0f) * photometric;
+        const double channel = double(std::max(finiteOr(l.color[i], 0.0f), 0.0f)) * photometric;
+        g.intensity[i] = float(std::min(channel, kMaxIntensity));
     }
     g.sourceRadius = std::max(finiteOr(l.sourceRadius, 0.0f), 0.0f);
     g.sourceLength = std::max(finiteOr(l.sourceLength, 0.0f), 0.0f);

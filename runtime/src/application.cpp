@@ -2,14 +2,13 @@
 
 #include <unistd.h>
 
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <exception>
 #include <map>
 
+#include "candela/content/atomic_file_write.h"
 #include "candela/render/frame_capture.h"
 #include "candela/render/frame_submitter.h"
 #include "candela/render/renderer.h"
@@ -42,27 +41,6 @@ std::string checkWritable(const std::filesystem::path& path) {
         return path.string() + ": directory '" + dir.string() + "' is not writable";
     }
     if (std::filesystem::is_directory(path, ec)) return path.string() + ": is a directory";
-    return {};
-}
-
-// Written to a temporary file beside the target, then renamed over it: a failed write leaves
-// the old file and says why.
-std::string writeTextFile(const std::filesystem::path& path, const std::string& text) {
-    const std::filesystem::path temporary = path.string() + ".tmp";
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) return path.string() + ": " + std::strerror(errno);
-    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size() &&
-                         std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
-    const int writeError = errno;
-    if (std::fclose(file) != 0 || !written) {
-        std::remove(temporary.c_str());
-        return path.string() + ": " + std::strerror(written ? errno : writeError);
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-        const int renameError = errno;
-        std::remove(temporary.c_str());
-        return path.string() + ": " + std::strerror(renameError);
-    }
     return {};
 }
 
@@ -363,7 +341,8 @@ int Application::runSession(bool headless, std::uint32_t frames) {
         s.exitCode = kExitFailure;
     }
     if (options_.frameGraph) {
-        if (std::string e = writeTextFile(*options_.frameGraph, frameGraphDot); !e.empty()) {
+        if (std::string e = content::writeFileAtomically(*options_.frameGraph, frameGraphDot);
+            !e.empty()) {
             std::fprintf(stderr, "candela: %s\n", e.c_str());
             s.exitCode = kExitFailure;
         }

@@ -1,9 +1,10 @@
 #include "candela/runtime/frame_stats.h"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+
+#include "candela/content/atomic_file_write.h"
 
 namespace candela::runtime {
 
@@ -101,11 +102,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
                                {"prefiltered_face_size", e.prefilteredFaceSize},
                                {"prefiltered_mips", e.prefilteredMipCount}};
     }
-    std::ofstream out(path);
-    if (!out) return path.string() + ": cannot open for writing";
-    out << json.dump(2) << '\n';
-    if (!out) return path.string() + ": write failed";
-    return {};
+    return content::writeFileAtomically(path, json.dump(2) + '\n');
 }
 
 }  // namespace candela::runtime

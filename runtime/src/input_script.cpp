@@ -1,5 +1,7 @@
 #include "candela/runtime/input_script.h"
 
+#include "candela/content/file_bytes.h"
+
 #include <algorithm>
 #include <charconv>
 #include <fstream>
@@ -124,14 +126,14 @@ std::optional<InputScript> InputScript::parse(std::string_view text, const std::
 
 std::optional<InputScript> InputScript::load(const std::filesystem::path& path,
                                              std::string& error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = path.string() + ": cannot open input script";
+    content::FileBytes file = content::readFileBytes(path, kMaxFileBytes);
+    if (!file.error.empty()) {
+        error = path.string() + ": cannot open input script: " + file.error;
         return std::nullopt;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse(text.str(), path.string(), error);
+    const std::string_view text(reinterpret_cast<const char*>(file.bytes.data()),
+                                file.bytes.size());
+    return parse(text, path.string(), error);
 }
 
 void InputScript::apply(std::uint32_t frame, InputState& state) const {

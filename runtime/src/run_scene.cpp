@@ -19,7 +19,8 @@ std::filesystem::path eachFramePath(const std::filesystem::path& dir, uint32_t f
 
 int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>> layers) {
     std::string error;
-    std::optional<LoadedScene> scene = loadScene(options.scene, error);
+    std::optional<LoadedScene> scene =
+        loadScene(options.scene, error, options.environment.has_value());
     if (!scene) {
         std::fprintf(stderr, "candela: %s\n", error.c_str());
         return kExitBadArguments;

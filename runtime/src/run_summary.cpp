@@ -1,14 +1,16 @@
 #include "run_summary.h"
 
 #include <cstdio>
-#include <fstream>
+#include <sstream>
+
+#include "candela/content/atomic_file_write.h"
 
 namespace candela::runtime {
 
 std::string writeRunSummary(const std::filesystem::path& path, const std::string& scene,
                             double stepSeconds, const FrameStats& stats) {
-    std::ofstream out(path);
-    if (!out) return path.string() + ": cannot open for writing";
+    // Composed in memory, then written atomically: the summary is whole or not there.
+    std::ostringstream out;
     char line[512];
     out << "# " << scene << "\n\n";
     std::snprintf(line, sizeof line,
@@ -33,8 +35,7 @@ std::string writeRunSummary(const std::filesystem::path& path, const std::string
                       static_cast<unsigned long long>(f.litPairs), cullingEfficiency(f));
         out << line;
     }
-    if (!out) return path.string() + ": write failed";
-    return {};
+    return content::writeFileAtomically(path, out.str());
 }
 
 }  // namespace candela::runtime

@@ -31,7 +31,8 @@ void printDiagnostics(const content::Diagnostics& diagnostics) {
 
 }  // namespace
 
-std::optional<LoadedScene> loadScene(const std::string& scene, std::string& error) {
+std::optional<LoadedScene> loadScene(const std::string& scene, std::string& error,
+                                     bool externalSky) {
     if (scene.empty()) {
         error = "no scene given";
         return std::nullopt;
@@ -83,7 +84,9 @@ std::optional<LoadedScene> loadScene(const std::string& scene, std::string& erro
         // Engine scenes light themselves; until skies render, the background is a dim neutral.
         loaded.frame.clearRadiance = kSceneFileBackgroundRadiance;
     } else {
-        loaded.world->addViewingDefaults();
+        for (const std::string& added : loaded.world->addViewingDefaults(externalSky)) {
+            std::fprintf(stderr, "candela: %s: %s\n", scene.c_str(), added.c_str());
+        }
         loaded.frame.clearRadiance = kSkyRadiance;
     }
     return loaded;

@@ -24,6 +24,9 @@ struct LoadedScene {
 
 // Returns the scene, or nullopt with `error` naming the scene and the problem. Problems that
 // do not stop loading (a skipped primitive, a missing texture) are printed as warnings.
-std::optional<LoadedScene> loadScene(const std::string& scene, std::string& error);
+// `externalSky`: the run lights the scene with a sky of its own (--env), so a glTF without
+// lights gets no default sun and fill.
+std::optional<LoadedScene> loadScene(const std::string& scene, std::string& error,
+                                     bool externalSky = false);
 
 }  // namespace candela::runtime

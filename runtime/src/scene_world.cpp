@@ -7,6 +7,7 @@
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/content/components/sky.h"
 #include "candela/content/gltf_loader.h"
 #include "candela/content/model_instantiation.h"
 #include "candela/content/scene_file.h"
@@ -127,7 +128,8 @@ SceneBounds SceneWorld::bounds() {
     return b;
 }
 
-void SceneWorld::addViewingDefaults() {
+std::vector<std::string> SceneWorld::addViewingDefaults(bool externalSky) {
+    std::vector<std::string> added;
     SceneBounds b = bounds();
     ecs::Vec3 center{0.0f, 0.0f, 0.0f};
     float radius = 1.0f;
@@ -138,9 +140,10 @@ void SceneWorld::addViewingDefaults() {
         radius = std::max(ecs::length(half), 1e-3f);
     }
 
-    bool hasCamera = false, hasLight = false;
+    bool hasCamera = false, hasLight = false, hasSky = externalSky;
     registry.view<const content::Camera>().each([&](const content::Camera&) { hasCamera = true; });
     registry.view<const content::Light>().each([&](const content::Light&) { hasLight = true; });
+    registry.view<const content::Sky>().each([&](const content::Sky&) { hasSky = true; });
 
     if (!hasCamera) {
         content::Camera camera;  // 50 degree vertical field of view, sunny-16 exposure
@@ -151,8 +154,9 @@ void SceneWorld::addViewingDefaults() {
                                        ecs::Vec3{-direction.x, -direction.y, -direction.z});
         camera.nearPlane = std::max(distance - radius * 1.5f, radius * 1e-3f);
         registry.emplace<content::Camera>(e, camera);
+        added.push_back("the scene has no camera: added a default camera framing its bounds");
     }
-    if (!hasLight) {
+    if (!hasLight && !hasSky) {
         // Daylight under the sunny-16 exposure: a sun of 100,000 lux and a sky-like fill.
         content::Light sun;
         sun.type = content::LightType::Directional;
@@ -165,8 +169,12 @@ void SceneWorld::addViewingDefaults() {
         fill.color = {0.6f, 0.75f, 1.0f};
         ecs::Entity f = addAimedEntity(registry, "default fill", center, {0.6f, 0.2f, -0.5f});
         registry.emplace<content::Light>(f, fill);
+        added.push_back(
+            "the scene has neither lights nor a sky: added a default sun of 100000 lux and a "
+            "fill of 25000 lux (pass --env SKY.exr to light it with a sky instead)");
     }
     updateTransforms();
+    return added;
 }
 
 }  // namespace candela::runtime

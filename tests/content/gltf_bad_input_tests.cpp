@@ -2,10 +2,13 @@
 // what it can, and never crash (these also run under ASan/UBSan).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <limits>
 
+#include "candela/content/component_validation.h"
 #include "candela/content/gltf_loader.h"
+#include "candela/content/light_units.h"
 #include "gltf_test_documents.h"
 #include "test_paths.h"
 
@@ -237,6 +240,34 @@ TEST(GltfBadInput, DeepHierarchyAndManyNodesDoNotRecurse) {
     auto m = loadJson(doc, diagnostics);
     ASSERT_TRUE(m);
     EXPECT_EQ(m->nodes.back().parent, depth - 2);
+}
+
+// Issue 22: a point light of 3e38 cd overflowed to Inf lumens and was switched off without a
+// word; emission of 3e38 x 3e38 made NaN frames. Both are clamped with a warning naming the
+// element, and the light still shines.
+TEST(GltfBadInput, AbsurdLightAndEmissionAreClampedWithAWarning) {
+    json doc = quadDocument();
+    doc["extensionsUsed"] = {"KHR_lights_punctual", "KHR_materials_emissive_strength"};
+    doc["extensions"]["KHR_lights_punctual"]["lights"] =
+        json::array({{{"type", "point"}, {"intensity", 3e38}}});
+    doc["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 0;
+    doc["materials"][0]["emissiveFactor"] = {1.0, 1.0, 1.0};
+    doc["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 3e38;
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    ASSERT_EQ(m->lights.size(), 1u);
+    const Light& light = m->lights[0].light;
+    EXPECT_TRUE(std::isfinite(light.lumens));
+    EXPECT_LE(light.lumens, kMaxLumens);
+    EXPECT_GT(light.lumens, 0.999f * kMaxLumens);
+    EXPECT_GT(light.attenuationRadius, 0.0f);
+    EXPECT_TRUE(diagnostics.mentions("KHR_lights_punctual.lights[0]")) << diagnostics.toString();
+    EXPECT_TRUE(diagnostics.mentions("is beyond the limit of")) << diagnostics.toString();
+    const Material& material = m->materials[0];
+    EXPECT_LE(material.emissiveStrength, kMaxEmissiveLuminance);
+    EXPECT_TRUE(diagnostics.mentions("materials[0]: warning: emissiveStrength"))
+        << diagnostics.toString();
 }
 
 }  // namespace

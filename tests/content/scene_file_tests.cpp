@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 
+#include "candela/content/component_validation.h"
 #include "candela/content/scene_file.h"
 #include "test_paths.h"
 
@@ -246,6 +247,91 @@ TEST(SceneFile, VersionFormatAndNestingAreChecked) {
     Diagnostics missing;
     EXPECT_FALSE(loadSceneFile("/no/such/scene.json", missing));
     EXPECT_TRUE(missing.mentions("/no/such/scene.json"));
+}
+
+// Issue 22: values that used to give a blank, flipped or NaN frame without a word are errors
+// naming the file and the element (the component is dropped), and physically absurd but
+// finite magnitudes are clamped with a warning.
+TEST(SceneFile, OutOfDomainValuesAreErrorsNamingTheElement) {
+    const std::string text = R"({
+      "format": "candela.scene", "version": 1,
+      "entities": [
+        {"name": "fov0", "camera": {"verticalFov": 0}},
+        {"name": "fovPi", "camera": {"verticalFov": 3.14159274}},
+        {"name": "fov2Pi", "camera": {"verticalFov": 6.2831855}},
+        {"name": "fovNeg", "camera": {"verticalFov": -1}},
+        {"name": "nearFar", "camera": {"nearPlane": 10, "farPlane": 1}},
+        {"name": "zeroQuat", "transform": {"rotation": [0, 0, 0, 0]}},
+        {"name": "darkSky", "sky": {"exr": "sky.exr", "intensity": -5}},
+        {"name": "noSky", "sky": {"exr": ""}},
+        {"name": "cones", "light": {"type": "spot", "innerConeAngle": 0.8, "outerConeAngle": 0.4}},
+        {"name": "negative", "light": {"lumens": -1, "attenuationRadius": 0, "sourceRadius": -2}},
+        {"name": "fine", "camera": {"verticalFov": 0.5}, "light": {"type": "spot"}}
+      ]})";
+    Diagnostics diagnostics;
+    auto scene = parseSceneJson(std::as_bytes(std::span(text)), "s.json", diagnostics);
+    ASSERT_TRUE(scene);
+    ASSERT_EQ(scene->entities.size(), 11u);
+    for (int i = 0; i < 5; ++i) {
+        EXPECT_FALSE(scene->entities[i].camera) << scene->entities[i].name;
+    }
+    const std::string expected[] = {
+        "s.json: /entities/0/camera/verticalFov: error: must be between 0 and pi",
+        "s.json: /entities/1/camera/verticalFov: error",
+        "s.json: /entities/2/camera/verticalFov: error",
+        "s.json: /entities/3/camera/verticalFov: error",
+        "s.json: /entities/4/camera/farPlane: error: must be beyond nearPlane",
+        "s.json: /entities/5/transform/rotation: error: a zero quaternion",
+        "s.json: /entities/6/sky/intensity: error: must not be negative",
+        "s.json: /entities/7/sky/exr: error",
+        "s.json: /entities/8/light/innerConeAngle: error: the inner cone (0.8) is wider",
+        "s.json: /entities/9/light/lumens: error",
+        "s.json: /entities/9/light/attenuationRadius: error",
+        "s.json: /entities/9/light/sourceRadius: error"};
+    for (const std::string& message : expected) {
+        EXPECT_TRUE(diagnostics.mentions(message)) << message << "\n" << diagnostics.toString();
+    }
+    EXPECT_EQ(scene->entities[5].transform.rotation, (std::array<float, 4>{0, 0, 0, 1}));
+    EXPECT_FALSE(scene->entities[6].sky);
+    EXPECT_FALSE(scene->entities[7].sky);
+    EXPECT_FALSE(scene->entities[8].light);
+    EXPECT_FALSE(scene->entities[9].light);
+    EXPECT_TRUE(scene->entities[10].camera);
+    EXPECT_TRUE(scene->entities[10].light);
+    EXPECT_FALSE(diagnostics.mentions("/entities/10/"));
+}
+
+TEST(SceneFile, AbsurdMagnitudesAreClampedWithAWarning) {
+    const std::string text = R"({
+      "format": "candela.scene", "version": 1,
+      "entities": [
+        {"name": "bright", "light": {"color": [3e38, 1, 1], "lumens": 3e38}},
+        {"name": "sun", "light": {"type": "directional", "lux": 3e38}},
+        {"name": "sky", "sky": {"exr": "sky.exr", "intensity": 3e38}},
+        {"name": "glow", "mesh": {"gltf": "x.glb"}, "materialOverrides": [{"primitive": 0,
+          "material": {"emissiveFactor": [3e38, 3e38, 3e38], "emissiveStrength": 3e38}}]}
+      ]})";
+    Diagnostics diagnostics;
+    auto scene = parseSceneJson(std::as_bytes(std::span(text)), "s.json", diagnostics);
+    ASSERT_TRUE(scene);
+    ASSERT_TRUE(scene->entities[0].light);
+    EXPECT_EQ(scene->entities[0].light->lumens, kMaxLumens);
+    EXPECT_EQ(scene->entities[0].light->color[0], kMaxLightColorChannel);
+    ASSERT_TRUE(scene->entities[1].light);
+    EXPECT_EQ(scene->entities[1].light->lux, kMaxLux);
+    ASSERT_TRUE(scene->entities[2].sky);
+    EXPECT_EQ(scene->entities[2].sky->intensity, kMaxSkyIntensity);
+    ASSERT_EQ(scene->entities[3].materialOverrides.size(), 1u);
+    const Material& m = scene->entities[3].materialOverrides[0].material;
+    EXPECT_LE(double(m.emissiveFactor[0]) * double(m.emissiveStrength),
+              double(kMaxEmissiveLuminance) * 1.0001);
+    for (const char* message :
+         {"s.json: /entities/0/light/lumens: warning: 3e+38 lm is beyond the limit of 1e+12 lm",
+          "s.json: /entities/0/light/color: warning", "s.json: /entities/1/light/lux: warning",
+          "s.json: /entities/2/sky/intensity: warning",
+          "s.json: /entities/3/materialOverrides/0/material/emissiveStrength: warning"}) {
+        EXPECT_TRUE(diagnostics.mentions(message)) << message << "\n" << diagnostics.toString();
+    }
 }
 
 }  // namespace

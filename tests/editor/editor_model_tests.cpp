@@ -3,8 +3,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
 
 #include "candela/content/asset_cache.h"
+#include "candela/content/component_validation.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
 #include "candela/content/model.h"
@@ -268,6 +271,45 @@ TEST_F(EditorModel, PropertyEditsByNameAndTheirErrors) {
     EXPECT_FALSE(propertyEdit(*scene, named("floor"), "material.roughness", {0.5f}, error));
     EXPECT_EQ(error, "material.roughness: the entity has no loaded mesh");
     EXPECT_EQ(scene->commands().undoCount(), 3u);
+}
+
+// Issue 22: the editor accepted lumens -1, attenuation radius 0, source radius -2 and field of
+// view -1 and saved them; the loader then dropped the light, and the next save lost it for
+// good. The editor now applies the loader's rules: refused, or clamped with a notice.
+TEST_F(EditorModel, EditsTheLoaderWouldRejectAreRefusedAndAbsurdOnesClamped) {
+    std::string error;
+    const std::pair<const char*, float> refused[] = {{"light.lumens", -1.0f},
+                                                     {"light.attenuationRadius", 0.0f},
+                                                     {"light.sourceRadius", -2.0f},
+                                                     {"camera.verticalFov", -1.0f},
+                                                     {"camera.verticalFov", 3.1415927f}};
+    for (const auto& [property, value] : refused) {
+        const char* entity = std::string(property).starts_with("camera") ? "camera" : "lamp";
+        EXPECT_FALSE(propertyEdit(*scene, named(entity), property, {value}, error)) << property;
+        EXPECT_NE(error.find(property), std::string::npos) << error;
+    }
+    EXPECT_NE(error.find("between 0 and pi"), std::string::npos) << error;
+    EXPECT_FALSE(
+        propertyEdit(*scene, named("lamp"), "transform.rotation", {0.0f, 0.0f, 0.0f, 0.0f}, error));
+    EXPECT_NE(error.find("zero quaternion"), std::string::npos) << error;
+    EXPECT_EQ(scene->commands().undoCount(), 0u);
+
+    std::string notice;
+    ASSERT_TRUE(scene->execute(
+        propertyEdit(*scene, named("lamp"), "light.lumens", {3e38f}, error, &notice)))
+        << error;
+    EXPECT_EQ(lumens("lamp"), content::kMaxLumens);
+    EXPECT_NE(notice.find("beyond the limit"), std::string::npos) << notice;
+
+    // What the editor saves, the loader keeps, without a message.
+    const fs::path path = dir / "saved" / "checked.scene.json";
+    ASSERT_EQ(scene->save(path), "");
+    content::Diagnostics diagnostics;
+    std::optional<content::SceneDocument> doc = content::loadSceneFile(path, diagnostics);
+    ASSERT_TRUE(doc);
+    EXPECT_FALSE(diagnostics.mentions("/light")) << diagnostics.toString();
+    ASSERT_TRUE(doc->entities[1].light);
+    EXPECT_EQ(doc->entities[1].light->lumens, content::kMaxLumens);
 }
 
 TEST_F(EditorModel, AddAndRemoveComponentsUndo) {

@@ -6,6 +6,7 @@
 #include "app/hierarchy_panel.h"
 #include "app/inspector_panel.h"
 #include "candela/content/asset_cache.h"
+#include "candela/content/component_validation.h"
 #include "candela/content/components/light.h"
 #include "candela/content/scene_instantiation.h"
 #include "candela/ecs/hierarchy.h"
@@ -112,6 +113,38 @@ TEST_F(EditorPanels, DraggingTheLumensFieldIsOneLiveUndoStep) {
     EXPECT_EQ(scene->commands().undoLabel(), "Set Lumens");
     ASSERT_TRUE(scene->undo());
     EXPECT_EQ(registry.get<content::Light>(lamp).lumens, 8000.0f);
+}
+
+// Issue 22: a value typed into a field (Ctrl+click) went past the widget's range, and the
+// editor saved lumens -1, which the loader then dropped with the light. The inspector applies
+// the loader's rules: -1 is refused (no edit, a notice), 3e38 is clamped to the limit.
+TEST_F(EditorPanels, TypedValuesTheLoaderWouldRejectAreRefusedAndAbsurdOnesClamped) {
+    frame(row("lamp"), true);
+    frame(row("lamp"), false);
+    frame(ImVec2(-1, -1), false);  // the inspector now shows the lamp
+    ASSERT_TRUE(inspectorLayout.count("Set Lumens"));
+    const ImVec2 field = inspectorLayout.at("Set Lumens").center();
+    const ecs::Entity lamp = scene->findByName("lamp");
+    auto type = [&](const char* text) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.KeyCtrl = true;  // Ctrl+click turns the drag field into a text field
+        frame(field, true);
+        frame(field, false);
+        io.KeyCtrl = false;
+        for (const char* c = text; *c; ++c) {  // one character per frame, as typed
+            io.AddInputCharacter(static_cast<unsigned>(*c));
+            frame(field, false);
+        }
+        frame(ImVec2(-1, -1), true);  // click elsewhere: the field closes
+        frame(ImVec2(-1, -1), false);
+    };
+    type("-1");
+    EXPECT_EQ(registry.get<content::Light>(lamp).lumens, 8000.0f);
+    EXPECT_EQ(scene->commands().undoCount(), 0u);
+
+    type("3e38");
+    EXPECT_EQ(registry.get<content::Light>(lamp).lumens, content::kMaxLumens);
+    EXPECT_GE(scene->commands().undoCount(), 1u);
 }
 
 }  // namespace

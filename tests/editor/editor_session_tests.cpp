@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include <string>
 
 #include "candela/content/scene_file.h"
+#include "full_filesystem.h"
 
 namespace {
 
@@ -161,6 +163,47 @@ TEST_F(EditorSession, AMissingSceneIsABadArgument) {
     std::string errors;
     EXPECT_EQ(runEditor(dir / "missing.scene.json", "quit\n", errors), 2);
     EXPECT_NE(errors.find("missing.scene.json: no such file"), std::string::npos) << errors;
+}
+
+// Issue 22: saving over a file keeps what the file is. A read-only scene is refused unless the
+// user says so, and keeps its mode; a symlinked scene stays a link and its target changes; a
+// full disk is a failed step naming the file and the error.
+TEST_F(EditorSession, SavingKeepsReadOnlyLinkedAndFullDiskScenesIntact) {
+    const fs::path target = dir / "real.scene.json";
+    fs::copy_file(kScene, target);
+    ASSERT_EQ(::chmod(target.c_str(), 0444), 0);
+    const std::string original = readText(target);
+    std::string errors;
+    EXPECT_EQ(runEditor(target, "select spot\nset light.lumens 2000\nsave\nquit\n", errors), 1);
+    EXPECT_NE(errors.find(target.string() + ": the file is read-only (mode 0444)"),
+              std::string::npos)
+        << errors;
+    EXPECT_EQ(readText(target), original);
+    EXPECT_EQ(
+        runEditor(target, "select spot\nset light.lumens 2000\nsave --replace-read-only\nquit\n",
+                  errors),
+        0)
+        << errors;
+    EXPECT_NE(readText(target), original);
+    EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, fs::perms(0444));
+
+    ASSERT_EQ(::chmod(target.c_str(), 0600), 0);
+    const fs::path link = dir / "link.scene.json";
+    fs::create_symlink(target.filename(), link);
+    EXPECT_EQ(runEditor(link, "select spot\nset light.lumens 1234\nsave\nquit\n", errors), 0)
+        << errors;
+    EXPECT_TRUE(fs::is_symlink(link));
+    EXPECT_NE(readText(target).find("1234"), std::string::npos);
+    EXPECT_EQ(fs::status(target).permissions() & fs::perms::all, fs::perms(0600));
+
+    CANDELA_SMALL_FILESYSTEM_OR_SKIP(disk);
+    disk->fill();
+    const fs::path full = disk->dir() / "saved.scene.json";
+    EXPECT_EQ(runEditor(target, "save " + full.string() + "\nquit\n", errors), 1);
+    EXPECT_NE(errors.find(full.string() + ": cannot write: No space left on device"),
+              std::string::npos)
+        << errors;
+    EXPECT_FALSE(fs::exists(full));
 }
 
 }  // namespace

@@ -1,18 +1,23 @@
 // The candela executable as a user runs it: good runs, determinism, and bad arguments that
 // must give a clear message and a non-zero exit, never a crash.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "candela/content/exr_image.h"
+#include "full_filesystem.h"
 #include "image_files.h"
 
 namespace {
@@ -424,4 +429,173 @@ TEST(Cli, UnknownIblModeIsRejected) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.output.find("split-sum, mobile or reference"), std::string::npos) << r.output;
     EXPECT_EQ(runCandela(kTriangle + "--env").exitCode, 2);
+}
+
+// Issue 22: every file the engine writes is complete or absent, and a failed write exits 1
+// naming the path and the operating system's error.
+TEST(Cli, EveryOutputFileOnAFullDiskFailsNamingThePathAndTheError) {
+    CANDELA_SMALL_FILESYSTEM_OR_SKIP(disk);
+    disk->fill();
+    const std::filesystem::path dir = disk->dir();
+    for (const std::string& output :
+         {"--stats " + (dir / "s.json").string(), "--summary " + (dir / "s.md").string(),
+          "--capture " + (dir / "c.exr").string(), "--capture " + (dir / "c.png").string()}) {
+        const std::string path = output.substr(output.find(' ') + 1);
+        RunResult r = runCandela(kTriangle + "--frames 1 " + output);
+        EXPECT_EQ(r.exitCode, 1) << output << "\n" << r.output;
+        EXPECT_NE(r.output.find(path + ": cannot write: No space left on device"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_EQ(r.output.find("captured"), std::string::npos) << r.output;
+        EXPECT_FALSE(std::filesystem::exists(path)) << "a partial file was left: " << path;
+    }
+}
+
+TEST(Cli, StatsToDevFullFailsWithTheOsError) {
+    if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+    for (const char* option : {"--stats", "--summary"}) {
+        RunResult r = runCandela(kTriangle + "--frames 1 " + option + " /dev/full");
+        EXPECT_EQ(r.exitCode, 1) << r.output;
+        EXPECT_NE(r.output.find("/dev/full: cannot write: No space left on device"),
+                  std::string::npos)
+            << r.output;
+    }
+}
+
+// Issue 22: a sky that is a FIFO used to hang, a 20 GB sparse file ended in "std::bad_alloc"
+// with no file named. Both now name the file and fall back to the neutral sky; `timeout`
+// turns a regression into a failure instead of a stuck test.
+TEST(Cli, SpecialOrHugeSkyFilesGiveTheNeutralSkyWithoutHanging) {
+    auto dir = tempDir() / "special_sky";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const auto fifo = dir / "sky_fifo.exr";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const auto huge = dir / "sky_huge.exr";
+    std::ofstream(huge).close();
+    std::filesystem::resize_file(huge, 20ull * 1000 * 1000 * 1000);  // sparse: no disk used
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/ibl_spheres_garden.scene.json";
+    const std::pair<std::filesystem::path, std::string> cases[] = {
+        {fifo, "not a regular file (a FIFO)"},
+        {huge, "over the limit of"},
+        {"/dev/zero", "not a regular file (a character device)"}};
+    for (const auto& [sky, problem] : cases) {
+        RunResult r = runCandela("run " + scene + " --headless --size 32x32 --env " + sky.string() +
+                                     " --stats " + (dir / "s.json").string(),
+                                 "CANDELA_CACHE_DIR=" + (dir / "cache").string() + " timeout 300 ");
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find(sky.string()), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(problem), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("neutral uniform sky"), std::string::npos) << r.output;
+        nlohmann::json stats = nlohmann::json::parse(readBytes(dir / "s.json"));
+        EXPECT_TRUE(stats["environment"]["fallback"].get<bool>());
+    }
+}
+
+TEST(Cli, InputScriptsThatAreDevicesOrDirectoriesAreRejected) {
+    for (const char* input : {"/dev/zero", "/tmp"}) {
+        RunResult r = runCandela(kTriangle + "--frames 1 --input " + input, "timeout 120 ");
+        EXPECT_EQ(r.exitCode, 2) << input << "\n" << r.output;
+        EXPECT_NE(
+            r.output.find(std::string(input) + ": cannot open input script: not a regular file"),
+            std::string::npos)
+            << r.output;
+    }
+}
+
+// Issue 22: a glTF without lights run with --env used to get the default 100,000 lux sun and
+// its fill on top of the sky. Default lights now come only when there is neither a light nor a
+// sky, and the run says what it added.
+TEST(Cli, DefaultLightsOnlyWithoutLightsOrASkyAndTheRunSaysSo) {
+    auto dir = tempDir() / "default_lights";
+    std::filesystem::create_directories(dir);
+    const std::string box =
+        std::string(CANDELA_SHARED_ASSETS) + "/models/Box/Box.glb --headless --size 32x32 ";
+    const std::string cache = "CANDELA_CACHE_DIR=" + (dir / "cache").string() + " ";
+    RunResult plain = runCandela("run " + box + "--stats " + (dir / "plain.json").string(), cache);
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    EXPECT_NE(plain.output.find("added a default sun of 100000 lux and a fill"), std::string::npos)
+        << plain.output;
+    EXPECT_EQ(nlohmann::json::parse(readBytes(dir / "plain.json"))["lights"], 2);
+
+    RunResult sky =
+        runCandela("run " + box + "--env " + CANDELA_SHARED_ASSETS +
+                       "/env/studio_small_03_1k.exr --stats " + (dir / "sky.json").string(),
+                   cache);
+    ASSERT_EQ(sky.exitCode, 0) << sky.output;
+    EXPECT_EQ(sky.output.find("default sun"), std::string::npos) << sky.output;
+    EXPECT_EQ(nlohmann::json::parse(readBytes(dir / "sky.json"))["lights"], 0);
+}
+
+// Issue 22: a light colour of 3e38 at 8,000 lm gave NaN/Inf texels and a black PNG; a finite
+// but huge light or an EV100 of -64 or below left the EXR fine and the PNG black (tonemapping
+// overflowed). Now the light is clamped with a warning naming the file and element, and the
+// frame is finite and lit: the spot's pool is white, not black.
+TEST(Cli, AbsurdLightsAndExposuresGiveAFiniteLitFrame) {
+    auto dir = tempDir() / "absurd";
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path source =
+        std::filesystem::path(CANDELA_SOURCE_DIR) / "tests/scenes/spot_light.scene.json";
+    nlohmann::json base = nlohmann::json::parse(readBytes(source));
+    base["entities"][0]["mesh"]["gltf"] =
+        std::string(CANDELA_SHARED_ASSETS) + "/models/Box/Box.glb";
+    struct Case {
+        const char* name;
+        std::function<void(nlohmann::json&)> change;
+        const char* warning;  // expected on stderr, or nullptr
+    };
+    const Case cases[] = {
+        {"colour",
+         [](nlohmann::json& s) {
+             s["entities"][1]["light"]["color"] = {3e38, 3e38, 3e38};
+         },
+         "/entities/1/light/color: warning"},
+        {"lumens", [](nlohmann::json& s) { s["entities"][1]["light"]["lumens"] = 3e38; },
+         "/entities/1/light/lumens: warning"},
+        {"ev_minus_64", [](nlohmann::json& s) { s["entities"][2]["camera"]["manualEv100"] = -64; },
+         nullptr},
+        {"ev_minus_200",
+         [](nlohmann::json& s) { s["entities"][2]["camera"]["manualEv100"] = -200; }, nullptr},
+    };
+    for (const Case& c : cases) {
+        nlohmann::json scene = base;
+        c.change(scene);
+        const auto path = dir / (std::string(c.name) + ".scene.json");
+        std::ofstream(path) << scene.dump();
+        const auto png = dir / (std::string(c.name) + ".png");
+        const auto exr = dir / (std::string(c.name) + ".exr");
+        RunResult r = runCandela("run " + path.string() + " --headless --size 48x32 --capture " +
+                                 exr.string() + " --capture " + png.string());
+        ASSERT_EQ(r.exitCode, 0) << c.name << "\n" << r.output;
+        EXPECT_EQ(r.output.find("NaN/Inf"), std::string::npos) << c.name << "\n" << r.output;
+        if (c.warning) {
+            EXPECT_NE(r.output.find(path.string() + ": " + c.warning), std::string::npos)
+                << r.output;
+        }
+        std::string error;
+        auto hdr = candela::golden::readHdrExr(exr, error);
+        ASSERT_TRUE(hdr) << error;
+        EXPECT_EQ(hdr->nonFiniteTexels, 0u) << c.name;
+        auto ldr = candela::golden::readLdrPng(png, error);
+        ASSERT_TRUE(ldr) << error;
+        // The centre of the frame is the spot's pool on the floor: saturated, not black.
+        const std::size_t centre = (std::size_t(ldr->height / 2) * ldr->width + ldr->width / 2) * 3;
+        EXPECT_EQ(ldr->rgb[centre], 255) << c.name;
+    }
+}
+
+// /dev/stdout is an open descriptor, not a place for a temporary file: the stats go to the
+// pipe, or are appended to the file the shell redirected stdout to.
+TEST(Cli, StatsToDevStdoutReachThePipeOrTheRedirectedFile) {
+    RunResult piped = runCandela(kTriangle + "--frames 1 --stats /dev/stdout");
+    EXPECT_EQ(piped.exitCode, 0) << piped.output;
+    EXPECT_NE(piped.output.find("\"frames\": 1"), std::string::npos) << piped.output;
+
+    const auto file = tempDir() / "stdout.txt";
+    const std::string command = std::string(CANDELA_EXECUTABLE) + " " + kTriangle +
+                                "--frames 1 --stats /dev/stdout > " + file.string() + " 2>&1";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << readBytes(file);
+    EXPECT_NE(readBytes(file).find("\"frames\": 1"), std::string::npos) << readBytes(file);
 }

@@ -1,8 +1,13 @@
 // Recorded input: what a script means frame by frame, and scripts that are wrong must say
 // where (file:line) and why, never crash.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
 
 #include "candela/runtime/input_script.h"
 
@@ -88,7 +93,33 @@ TEST(InputScript, BadScriptsNameTheLineAndTheProblem) {
 TEST(InputScript, MissingFileIsAClearError) {
     std::string error;
     EXPECT_FALSE(InputScript::load("/nonexistent/dir/x.input", error).has_value());
-    EXPECT_EQ(error, "/nonexistent/dir/x.input: cannot open input script");
+    EXPECT_EQ(error, "/nonexistent/dir/x.input: cannot open input script: no such file");
+}
+
+// Issue 22: /dev/zero used to end in std::bad_alloc, a directory ran as an empty script, and
+// a FIFO would hang. Each is refused with the file named, before anything is read.
+TEST(InputScript, SpecialFilesAndHugeFilesAreRefusedBeforeReading) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("candela-input-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path fifo = dir / "fifo.input";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const std::filesystem::path huge = dir / "huge.input";
+    { std::ofstream(huge) << "0 down W\n"; }
+    std::filesystem::resize_file(huge, InputScript::kMaxFileBytes + 1);  // sparse
+    const std::pair<std::filesystem::path, std::string> cases[] = {
+        {"/dev/zero", "not a regular file (a character device)"},
+        {dir, "not a regular file (a directory)"},
+        {fifo, "not a regular file (a FIFO)"},
+        {huge, "over the limit of 16777216"}};
+    for (const auto& [path, problem] : cases) {
+        std::string error;
+        EXPECT_FALSE(InputScript::load(path, error).has_value()) << path;
+        EXPECT_NE(error.find(path.string() + ": cannot open input script: "), std::string::npos)
+            << error;
+        EXPECT_NE(error.find(problem), std::string::npos) << error;
+    }
+    std::filesystem::remove_all(dir);
 }
 
 TEST(InputScript, KeyNamesRoundTrip) {

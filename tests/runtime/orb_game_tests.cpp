@@ -10,6 +10,9 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
+
+#include "full_filesystem.h"
 
 namespace {
 
@@ -110,4 +113,25 @@ TEST(OrbGame, BadInputAndBadLevelsAreRefusedClearly) {
     r = runGame("--headless /nonexistent/level.scene.json");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("/nonexistent/level.scene.json"), std::string::npos) << r.output;
+}
+
+// Issue 22: the game state on a full disk (or /dev/full) is a failure naming the path and
+// the operating system's error, never a 0-byte file and exit 0.
+TEST(OrbGame, StateAndStatsOnAFullDiskFailClearly) {
+    std::vector<std::string> targets;
+    if (std::filesystem::exists("/dev/full")) targets.push_back("/dev/full");
+    CANDELA_SMALL_FILESYSTEM_OR_SKIP(disk);
+    disk->fill();
+    targets.push_back((disk->dir() / "state.json").string());
+    for (const std::string& target : targets) {
+        for (const char* option : {"--state", "--stats"}) {
+            RunResult r = runGame("--headless --size 32x24 --frames 2 --input " + kReplays +
+                                  "win.input " + option + " " + target);
+            EXPECT_EQ(r.exitCode, 1) << option << " " << target << "\n" << r.output;
+            EXPECT_NE(r.output.find(target + ": cannot write: No space left on device"),
+                      std::string::npos)
+                << r.output;
+        }
+    }
+    EXPECT_FALSE(std::filesystem::exists(disk->dir() / "state.json"));
 }

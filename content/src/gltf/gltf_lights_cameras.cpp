@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numbers>
 
+#include "candela/content/component_validation.h"
 #include "candela/content/light_units.h"
 #include "gltf_context.h"
 #include "gltf_values.h"
@@ -33,6 +34,16 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
     if (!toFiniteFloat(source.intensity, intensity) || intensity < 0) {
         context.warning(element, "intensity is negative or not finite; using 1");
         intensity = 1;
+    }
+    // Clamped before the candela -> lumens conversion, which would overflow to Inf.
+    const float maxIntensity =
+        light.type == LightType::Directional ? kMaxLux : candelaFromLumens(kMaxLumens);
+    if (intensity > maxIntensity) {
+        const char* unit = light.type == LightType::Directional ? " lux" : " cd";
+        context.warning(element, "intensity " + std::to_string(intensity) + unit +
+                                     " is beyond the limit of " + std::to_string(maxIntensity) +
+                                     unit + "; clamped");
+        intensity = maxIntensity;
     }
     if (light.type == LightType::Directional) {
         light.lux = intensity;  // glTF: lux for directional lights
@@ -71,6 +82,11 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
             context.warning(element + ".extras",
                             std::string(key) + " must be a finite number >= 0; ignored");
         }
+    }
+    // The rules the scene loader and the editor share; what is left to catch here is clamps
+    // (colour), as the values above were already made valid.
+    for (const ValueProblem& problem : validateLight(light)) {
+        context.warning(element, problem.field + ": " + problem.message);
     }
     return named;
 }

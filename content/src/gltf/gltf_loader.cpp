@@ -5,7 +5,7 @@
 #include <array>
 #include <sstream>
 
-#include "file_bytes.h"
+#include "candela/content/file_bytes.h"
 #include "glb_container.h"
 #include "gltf_context.h"
 #include "gltf_image_callback.h"

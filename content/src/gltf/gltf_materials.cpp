@@ -2,6 +2,7 @@
 // KHR_materials_specular, KHR_texture_transform) and the engine's `extras` -> Model::materials.
 #include <algorithm>
 
+#include "candela/content/component_validation.h"
 #include "gltf_context.h"
 #include "gltf_values.h"
 
@@ -203,6 +204,10 @@ Material convertMaterial(Context& context, const tinygltf::Material& source,
     }
     // Extras come last: an engine-specific value wins over what an extension implied.
     readEngineExtras(context, element + ".extras", source.extras, material);
+    // Shared with the scene loader: emission that would overflow the shaders is clamped.
+    for (const ValueProblem& problem : validateEmission(material)) {
+        context.warning(element, problem.field + ": " + problem.message);
+    }
     return material;
 }
 

@@ -1,7 +1,7 @@
 // Scene file I/O: bounded reads and atomic saves around the JSON reader/writer.
 #include "candela/content/scene_file.h"
-#include "atomic_file_write.h"
-#include "file_bytes.h"
+#include "candela/content/atomic_file_write.h"
+#include "candela/content/file_bytes.h"
 
 namespace candela::content {
 
@@ -19,11 +19,12 @@ std::optional<SceneDocument> loadSceneFile(const std::filesystem::path& path,
     return parseSceneJson(file.bytes, path.string(), diagnostics);
 }
 
-std::string saveSceneFile(const std::filesystem::path& path, const SceneDocument& scene) {
+std::string saveSceneFile(const std::filesystem::path& path, const SceneDocument& scene,
+                          AtomicWriteOptions options) {
     std::string error;
     const std::string text = sceneToJson(scene, error);
     if (!error.empty()) return path.string() + ": " + error;
-    return writeFileAtomically(path, text);
+    return writeFileAtomically(path, text, options);
 }
 
 }  // namespace candela::content

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "candela/content/component_validation.h"
 #include "candela/content/scene_file.h"
 #include "scene_json_names.h"
 
@@ -130,6 +131,18 @@ public:
         return true;
     }
 
+    // The shared component rules (component_validation.h): rejections are errors that drop
+    // the component, clamps are warnings.
+    void report(const std::string& p, const ValueProblems& problems) {
+        for (const ValueProblem& problem : problems) {
+            if (problem.clamped) {
+                warning(p + "/" + problem.field, problem.message);
+            } else {
+                error(p + "/" + problem.field, problem.message);
+            }
+        }
+    }
+
     // Runs `read` and reports whether it recorded no error, restoring the failure flag so
     // one bad component does not mark the next one bad.
     template <typename F>
@@ -146,6 +159,7 @@ public:
         numbers(j, p, "translation", t.translation);
         numbers(j, p, "rotation", t.rotation);
         numbers(j, p, "scale", t.scale);
+        report(p, validateRotation(t.rotation));
     }
 
     void textureRef(const json& parent, const std::string& p, const char* key, TextureRef& t) {
@@ -186,6 +200,7 @@ public:
         number(j, p, "subsurfaceOpacity", m.subsurfaceOpacity);
         numbers(j, p, "diffuseColor", m.diffuseColor);
         numbers(j, p, "specularColor", m.specularColor);
+        report(p, validateEmission(m));
     }
 
     void light(const json& j, const std::string& p, Light& l) {
@@ -198,10 +213,7 @@ public:
         number(j, p, "sourceLength", l.sourceLength);
         number(j, p, "innerConeAngle", l.innerConeAngle);
         number(j, p, "outerConeAngle", l.outerConeAngle);
-        if (l.attenuationRadius <= 0 || l.sourceRadius < 0 || l.sourceLength < 0 || l.lumens < 0 ||
-            l.lux < 0) {
-            error(p, "radii and intensities must not be negative (attenuationRadius > 0)");
-        }
+        report(p, validateLight(l));
     }
 
     void camera(const json& j, const std::string& p, Camera& c) {
@@ -216,6 +228,7 @@ public:
         number(j, p, "iso", c.iso);
         number(j, p, "manualEv100", c.manualEv100);
         number(j, p, "exposureCompensation", c.exposureCompensation);
+        report(p, validateCamera(c));
     }
 
     SceneEntity entity(const json& j, const std::string& p, std::size_t entityCount) {
@@ -274,6 +287,7 @@ public:
             if (clean([&] {
                     string(*s, p + "/sky", "exr", value.exrPath);
                     number(*s, p + "/sky", "intensity", value.intensity);
+                    report(p + "/sky", validateSky(value));
                 })) {
                 e.sky = value;
             }

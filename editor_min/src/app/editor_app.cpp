@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <optional>
+#include <string_view>
 
 #include "app/editor_script.h"
 #include "app/editor_ui.h"
@@ -51,6 +52,12 @@ struct FrameRequests {
     bool quit = false;
 };
 
+// `text` from `offset` on, without the blanks in front.
+std::string trimmedAfter(const std::string& text, size_t offset) {
+    const size_t begin = text.find_first_not_of(" \t", offset);
+    return begin == std::string::npos ? std::string() : text.substr(begin);
+}
+
 // Runs this frame's script step; false with `error` when it failed.
 bool runScriptStep(EditorScript& script, Session& session, render::GpuContext& context,
                    render::FrameSubmitter& submitter, FrameRequests& requests, std::string& error) {
@@ -70,9 +77,14 @@ bool runScriptStep(EditorScript& script, Session& session, render::GpuContext& c
         submitter.waitIdle();  // the old scene's GPU resources may still be in use
         session.reset(context, std::move(*opened));
     } else if (step->verb == "save") {
+        // `save --replace-read-only [<path>]`: the user's explicit yes for a read-only file.
+        constexpr std::string_view kReplaceReadOnly = "--replace-read-only";
+        std::string text = step->text;
+        const bool replaceReadOnly = text.starts_with(kReplaceReadOnly);
+        if (replaceReadOnly) text = trimmedAfter(text, kReplaceReadOnly.size());
         const std::filesystem::path path =
-            step->text.empty() ? session.opened.savePath : std::filesystem::path(step->text);
-        if (std::string why = scene.save(path); !why.empty()) {
+            text.empty() ? session.opened.savePath : std::filesystem::path(text);
+        if (std::string why = scene.save(path, replaceReadOnly); !why.empty()) {
             error = step->where + ": save: " + why;
             return false;
         }
@@ -187,9 +199,10 @@ int runEditor(const EditorOptions& options) {
                 inputs.scene.camera = drawEditorUi(
                     scene, ui, x.hasCamera ? x.camera : defaultCamera(float(w) / float(h)),
                     x.hasCamera, float(w), float(h));
-                if (ui.saveRequested) {
-                    ui.saveRequested = false;
-                    const std::string why = scene.save(session.opened.savePath);
+                if (ui.saveRequested || ui.saveOverReadOnlyRequested) {
+                    const std::string why =
+                        scene.save(session.opened.savePath, ui.saveOverReadOnlyRequested);
+                    ui.saveRequested = ui.saveOverReadOnlyRequested = false;
                     ui.status = why.empty() ? "saved " + session.opened.savePath.string() : why;
                 }
                 const ImDrawData* draw = layer.endFrame();

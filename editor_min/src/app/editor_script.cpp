@@ -1,6 +1,7 @@
 #include "app/editor_script.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <set>
@@ -8,6 +9,7 @@
 
 #include "candela/content/components/light.h"
 #include "candela/content/components/name.h"
+#include "candela/content/file_bytes.h"
 #include "model/editor_scene.h"
 #include "model/property_edits.h"
 #include "model/set_component_command.h"
@@ -35,14 +37,13 @@ const std::set<std::string>& knownVerbs() {
 
 std::optional<EditorScript> EditorScript::load(const std::filesystem::path& path,
                                                std::string& error) {
-    std::ifstream in(path);
-    if (!in) {
-        error = path.string() + ": cannot read the script";
+    content::FileBytes file = content::readFileBytes(path, kMaxFileBytes);
+    if (!file.error.empty()) {
+        error = path.string() + ": cannot read the script: " + file.error;
         return std::nullopt;
     }
-    std::stringstream text;
-    text << in.rdbuf();
-    return parse(text.str(), path.string(), error);
+    return parse(std::string(reinterpret_cast<const char*>(file.bytes.data()), file.bytes.size()),
+                 path.string(), error);
 }
 
 std::optional<EditorScript> EditorScript::parse(const std::string& text, const std::string& source,
@@ -149,8 +150,13 @@ bool runModelStep(EditorScene& scene, const ScriptStep& step, bool& handled, std
     std::unique_ptr<EditCommand> command;
     std::string why;
     if (step.verb == "set") {
-        command = propertyEdit(scene, selected, step.property, step.values, why);
+        std::string notice;
+        command = propertyEdit(scene, selected, step.property, step.values, why, &notice);
         if (!command) return fail(why);
+        if (!notice.empty()) {
+            std::fprintf(stderr, "%s: set: %s: clamped: %s\n", step.where.c_str(),
+                         step.property.c_str(), notice.c_str());
+        }
     } else if (step.verb == "rename") {
         command = setComponent(scene, selected, content::Name{step.text}, "Rename");
     } else if (step.verb == "duplicate") {

@@ -36,6 +36,8 @@ struct ScriptStep {
 
 class EditorScript {
 public:
+    // Larger files, and FIFOs, devices or directories, are refused naming the file.
+    static constexpr std::uint64_t kMaxFileBytes = 16ull * 1024 * 1024;
     static std::optional<EditorScript> load(const std::filesystem::path& path, std::string& error);
     static std::optional<EditorScript> parse(const std::string& text, const std::string& source,
                                              std::string& error);

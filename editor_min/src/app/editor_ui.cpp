@@ -44,6 +44,7 @@ float menuBar(EditorScene& scene, EditorUiState& state) {
     if (!ImGui::BeginMainMenuBar()) return height;
     if (ImGui::BeginMenu("File")) {
         if (ImGui::MenuItem("Save", "Ctrl+S")) state.saveRequested = true;
+        if (ImGui::MenuItem("Save over read-only file")) state.saveOverReadOnlyRequested = true;
         ImGui::Separator();
         if (ImGui::MenuItem("Quit")) state.quitRequested = true;
         ImGui::EndMenu();

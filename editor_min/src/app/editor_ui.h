@@ -16,6 +16,8 @@ struct EditorUiState {
     EditorCamera camera;
     std::string status;          // last save result, shown in the menu bar
     bool saveRequested = false;  // File > Save or Ctrl+S; the app saves and clears it
+    // File > Save over read-only file: the user's explicit yes to replacing a 0444 scene.
+    bool saveOverReadOnlyRequested = false;
     bool quitRequested = false;  // File > Quit
 };
 

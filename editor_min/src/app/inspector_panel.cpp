@@ -14,6 +14,7 @@
 #include "candela/content/components/name.h"
 #include "candela/ecs/transform.h"
 #include "candela/render/exposure.h"
+#include "model/edit_validation.h"
 #include "model/editor_scene.h"
 #include "model/material_editing.h"
 #include "model/set_component_command.h"
@@ -34,12 +35,26 @@ uint64_t mergeKey(EditorScene& scene, ecs::Entity e) {
     return (uint64_t(ImGui::GetItemID()) << 32) ^ scene.idOf(e) ^ 1u;
 }
 
+// Why the last edit was refused or clamped (shown at the bottom of the panel until the next
+// accepted edit without a notice).
+std::string editNotice;
+
 // Called right after a widget: commits `value` when the widget changed it, and ends the undo
-// step when the widget is released.
+// step when the widget is released. A value typed past a widget's range (Ctrl+click) goes
+// through the rules the scene loader applies: refused or clamped, with a notice.
 template <class T>
 void commit(EditorScene& scene, ecs::Entity e, bool changed, const T& value, const char* label) {
     record(label);
-    if (changed) scene.execute(setComponent(scene, e, value, label), mergeKey(scene, e));
+    if (changed) {
+        T checked = value;
+        const EditCheck check = checkEdit(checked);
+        editNotice = check.notice.empty()
+                         ? std::string()
+                         : std::string(check.accepted ? "Clamped: " : "Refused: ") + check.notice;
+        if (check.accepted) {
+            scene.execute(setComponent(scene, e, checked, label), mergeKey(scene, e));
+        }
+    }
     if (ImGui::IsItemDeactivated()) scene.commands().closeMerge();
 }
 
@@ -228,6 +243,11 @@ void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
     if (scene.registry().valid(e)) drawCamera(scene, e);
     if (scene.registry().valid(e)) drawMaterials(scene, e);
     if (scene.registry().valid(e)) drawAddComponent(scene, e);
+    if (!editNotice.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 170, 60, 255));
+        ImGui::TextWrapped("%s", editNotice.c_str());
+        ImGui::PopStyleColor();
+    }
     ImGui::PopItemWidth();
     ImGui::PopID();
     recording = nullptr;

@@ -42,7 +42,9 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
         // Saved scenes reference the glTF by its file name, relative to the scene file.
         opened.world->registry.view<content::MeshInstance>().each(
             [&](content::MeshInstance& mesh) { mesh.gltfPath = path.filename().string(); });
-        opened.world->addViewingDefaults();
+        for (const std::string& added : opened.world->addViewingDefaults()) {
+            std::fprintf(stderr, "candela-editor: %s: %s\n", path.c_str(), added.c_str());
+        }
         opened.background = kSkyRadiance;
         opened.savePath = path;
         opened.savePath.replace_extension(".scene.json");

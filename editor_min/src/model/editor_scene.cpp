@@ -97,8 +97,10 @@ std::string EditorScene::displayName(ecs::Entity e) const {
     return "entity " + std::to_string(idOf(e));
 }
 
-std::string EditorScene::save(const std::filesystem::path& path) {
-    std::string error = saveEditedScene(registry_, sourcePath_, path);
+std::string EditorScene::save(const std::filesystem::path& path, bool replaceReadOnly) {
+    std::string error =
+        saveEditedScene(registry_, sourcePath_, path,
+                        content::AtomicWriteOptions{.replaceReadOnly = replaceReadOnly});
     if (error.empty()) savedRevision_ = commands_.revision();
     return error;
 }

@@ -63,8 +63,8 @@ public:
     bool modified() const { return commands_.revision() != savedRevision_; }
     // Writes the scene file atomically (content::saveSceneFile). Asset paths are rewritten
     // relative to `path`'s directory when it differs from the source's. Empty on success, else
-    // the error naming the file.
-    std::string save(const std::filesystem::path& path);
+    // the error naming the file. A read-only file is refused unless `replaceReadOnly`.
+    std::string save(const std::filesystem::path& path, bool replaceReadOnly = false);
 
 private:
     ecs::Registry& registry_;

@@ -6,6 +6,7 @@
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
 #include "candela/ecs/transform.h"
+#include "model/edit_validation.h"
 #include "model/editor_scene.h"
 #include "model/material_editing.h"
 #include "model/set_component_command.h"
@@ -110,10 +111,23 @@ const Field<T>* lookup(const std::string& name, const Values& values, std::strin
     return &it->second;
 }
 
+// Applies the shared rules: false with `error` when refused; `notice` gets what was clamped.
+template <class T>
+bool accept(T& value, std::string& error, std::string* notice) {
+    EditCheck check = checkEdit(value);
+    if (!check.accepted) {
+        error = check.notice;
+        return false;
+    }
+    if (notice) *notice = check.notice;
+    return true;
+}
+
 template <class T>
 std::unique_ptr<EditCommand> componentEdit(EditorScene& scene, ecs::Entity e,
                                            const std::string& component, const std::string& name,
-                                           const Values& values, std::string& error) {
+                                           const Values& values, std::string& error,
+                                           std::string* notice) {
     const Field<T>* field = lookup<T>(name, values, error);
     if (!field) {
         if (error.empty()) error = "unknown property";
@@ -126,6 +140,7 @@ std::unique_ptr<EditCommand> componentEdit(EditorScene& scene, ecs::Entity e,
     }
     T edited = *current;
     field->set(edited, values);
+    if (!accept(edited, error, notice)) return nullptr;
     return setComponent<T>(scene, e, edited, "Set " + component + "." + name);
 }
 
@@ -146,8 +161,9 @@ std::vector<std::string> editablePropertyNames() {
 
 std::unique_ptr<EditCommand> propertyEdit(EditorScene& scene, ecs::Entity e,
                                           const std::string& property, const Values& values,
-                                          std::string& error) {
+                                          std::string& error, std::string* notice) {
     error.clear();
+    if (notice) notice->clear();
     std::unique_ptr<EditCommand> command;
     if (scene.idOf(e) == 0) {
         error = "no entity selected";
@@ -157,11 +173,12 @@ std::unique_ptr<EditCommand> propertyEdit(EditorScene& scene, ecs::Entity e,
     const std::string component = property.substr(0, dot);
     const std::string name = dot == std::string::npos ? std::string() : property.substr(dot + 1);
     if (component == "light") {
-        command = componentEdit<content::Light>(scene, e, component, name, values, error);
+        command = componentEdit<content::Light>(scene, e, component, name, values, error, notice);
     } else if (component == "camera") {
-        command = componentEdit<content::Camera>(scene, e, component, name, values, error);
+        command = componentEdit<content::Camera>(scene, e, component, name, values, error, notice);
     } else if (component == "transform") {
-        command = componentEdit<ecs::LocalTransform>(scene, e, component, name, values, error);
+        command =
+            componentEdit<ecs::LocalTransform>(scene, e, component, name, values, error, notice);
     } else if (component == "material") {
         const Field<content::Material>* field = lookup<content::Material>(name, values, error);
         if (!field) {
@@ -171,7 +188,7 @@ std::unique_ptr<EditCommand> propertyEdit(EditorScene& scene, ecs::Entity e,
         } else {
             content::Material material = effectiveMaterial(scene, e, 0);
             field->set(material, values);
-            command = setMaterial(scene, e, 0, material);
+            if (accept(material, error, notice)) command = setMaterial(scene, e, 0, material);
         }
     } else {
         error = "unknown property";

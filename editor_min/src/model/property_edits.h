@@ -17,9 +17,12 @@ class EditorScene;
 std::vector<std::string> editablePropertyNames();
 
 // Builds the command setting `property` of `e` to `values`; null with `error` saying why (unknown
-// property, wrong value count, the entity lacks the component).
+// property, wrong value count, the entity lacks the component, or a value the scene loader
+// would reject: model/edit_validation.h). A value the loader would clamp is clamped, and
+// `notice` (when given) says so.
 std::unique_ptr<EditCommand> propertyEdit(EditorScene& scene, ecs::Entity e,
                                           const std::string& property,
-                                          const std::vector<float>& values, std::string& error);
+                                          const std::vector<float>& values, std::string& error,
+                                          std::string* notice = nullptr);
 
 }  // namespace candela::editor

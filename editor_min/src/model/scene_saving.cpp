@@ -40,8 +40,9 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
 }
 
 std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path& source,
-                            const std::filesystem::path& target) {
-    return content::saveSceneFile(target, documentForSaving(registry, source, target));
+                            const std::filesystem::path& target,
+                            content::AtomicWriteOptions options) {
+    return content::saveSceneFile(target, documentForSaving(registry, source, target), options);
 }
 
 }  // namespace candela::editor

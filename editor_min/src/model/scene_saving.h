@@ -14,8 +14,10 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
                                          const std::filesystem::path& source,
                                          const std::filesystem::path& target);
 
-// Atomic save (content::saveSceneFile). Empty on success, else the error naming the file.
+// Atomic save (content::saveSceneFile). Empty on success, else the error naming the file. A
+// read-only target is refused unless `options.replaceReadOnly`.
 std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path& source,
-                            const std::filesystem::path& target);
+                            const std::filesystem::path& target,
+                            content::AtomicWriteOptions options = {});
 
 }  // namespace candela::editor

@@ -3,9 +3,10 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <vector>
 
+#include "candela/content/exr_image.h"
+#include "candela/content/file_bytes.h"
 #include "candela/render/gpu_context.h"
 #include "ibl/environment_cache.h"
 #include "ibl/environment_precompute.h"
@@ -22,19 +23,6 @@ constexpr VkDeviceSize kShBytes = 9 * 16;
 
 double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-std::optional<std::vector<std::byte>> readFileBytes(const std::filesystem::path& path) {
-    std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    std::ifstream in(path, std::ios::binary);
-    if (ec || !in) return std::nullopt;
-    std::vector<std::byte> bytes(size);
-    // An empty file reads nothing (and memcpy-like calls must not see its null data()).
-    if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size))) {
-        return std::nullopt;
-    }
-    return bytes;
 }
 
 content::EnvironmentMap uniformMap(float radiance) {
@@ -119,8 +107,13 @@ std::unique_ptr<Environment> Environment::load(GpuContext& context,
     };
 
     Clock::time_point start = Clock::now();
-    std::optional<std::vector<std::byte>> bytes = readFileBytes(exr);
-    if (!bytes) return fallback("cannot read the environment file");
+    // Type and size are checked before reading: a FIFO, a device or a 20 GB file is a clear
+    // error and the fallback sky, never a hang or an allocation failure.
+    content::FileBytes file = content::readFileBytes(exr, content::ExrLimits{}.maxFileBytes);
+    if (!file.error.empty()) {
+        return fallback("cannot read the environment file: " + file.error);
+    }
+    const std::vector<std::byte>* bytes = &file.bytes;
     uint64_t hash = contentHash(*bytes);
     double readMs = millisecondsSince(start);
 

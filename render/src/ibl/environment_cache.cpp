@@ -1,10 +1,10 @@
 #include "ibl/environment_cache.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+
+#include "candela/content/atomic_file_write.h"
 
 namespace candela::render {
 
@@ -110,29 +110,15 @@ std::string writeCachedEnvironment(const std::filesystem::path& path, const Cach
     h.prefilteredBytes = e.prefiltered.size();
     h.shBytes = e.irradianceSh.size();
     h.payloadChecksum = payloadChecksum(e);
-    // Unique per process, so two runs filling the cache at once never share a temporary.
-    std::filesystem::path temporary = path;
-    temporary += ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(&h), sizeof(h));
-        out.write(reinterpret_cast<const char*>(e.cube.data()), std::streamsize(e.cube.size()));
-        out.write(reinterpret_cast<const char*>(e.prefiltered.data()),
-                  std::streamsize(e.prefiltered.size()));
-        out.write(reinterpret_cast<const char*>(e.irradianceSh.data()),
-                  std::streamsize(e.irradianceSh.size()));
-        out.flush();
-        if (!out) {
-            std::filesystem::remove(temporary, ec);
-            return "cannot write " + temporary.string();
-        }
-    }
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        std::filesystem::remove(temporary, ec);
-        return "cannot rename into " + path.string();
-    }
-    return {};
+    std::string bytes;
+    bytes.reserve(sizeof(h) + e.cube.size() + e.prefiltered.size() + e.irradianceSh.size());
+    bytes.append(reinterpret_cast<const char*>(&h), sizeof(h));
+    bytes.append(reinterpret_cast<const char*>(e.cube.data()), e.cube.size());
+    bytes.append(reinterpret_cast<const char*>(e.prefiltered.data()), e.prefiltered.size());
+    bytes.append(reinterpret_cast<const char*>(e.irradianceSh.data()), e.irradianceSh.size());
+    // Atomic (unique temporary, fsync, rename), so two runs filling the cache at once, or a
+    // full disk, never leave a half-written entry behind.
+    return content::writeFileAtomically(path, bytes);
 }
 
 }  // namespace candela::render

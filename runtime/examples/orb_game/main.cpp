@@ -10,11 +10,11 @@
 // level (the same as --input); `run` is accepted so the golden-image harness can drive it.
 #include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "candela/content/atomic_file_write.h"
 #include "candela/content/diagnostics.h"
 #include "candela/ecs/transform.h"
 #include "candela/runtime/application.h"
@@ -37,9 +37,10 @@ bool parseUint(const std::string& text, uint32_t& value) {
     return ec == std::errc() && ptr == text.data() + text.size();
 }
 
-// The final game state as JSON, for tests and for anyone scripting the game.
-bool writeState(const std::string& path, const orb::GameState& s, uint32_t frames,
-                candela::ecs::Vec3 orbAt) {
+// The final game state as JSON, for tests and for anyone scripting the game. Returns the
+// error (path and OS error) or an empty string.
+std::string writeState(const std::string& path, const orb::GameState& s, uint32_t frames,
+                       candela::ecs::Vec3 orbAt) {
     nlohmann::json j = {{"status", orb::statusName(s.status)},
                         {"reason", s.reason},
                         {"score", s.score},
@@ -49,9 +50,7 @@ bool writeState(const std::string& path, const orb::GameState& s, uint32_t frame
                         {"elapsed_seconds", s.elapsedSeconds},
                         {"frames", frames},
                         {"orb_position", {orbAt.x, orbAt.y, orbAt.z}}};
-    std::ofstream out(path);
-    out << j.dump(2) << '\n';
-    return bool(out);
+    return candela::content::writeFileAtomically(path, j.dump(2) + '\n');
 }
 
 }  // namespace
@@ -142,8 +141,10 @@ int main(int argc, char** argv) {
         std::printf("%s: score %d, sparks %d/%d, %.2f s, %u frames\n",
                     orb::statusName(state->status), state->score, state->collected, state->total,
                     state->elapsedSeconds, app.framesRendered());
-        if (!statePath.empty() && !writeState(statePath, *state, app.framesRendered(), orbAt)) {
-            std::fprintf(stderr, "orb: %s: cannot write the game state\n", statePath.c_str());
+        if (statePath.empty()) return exitCode;
+        if (std::string error = writeState(statePath, *state, app.framesRendered(), orbAt);
+            !error.empty()) {
+            std::fprintf(stderr, "orb: %s\n", error.c_str());
             return exitCode == kExitOk ? kExitFailure : exitCode;
         }
     }

@@ -1,9 +1,11 @@
 #pragma once
 // The engine scene file: versioned JSON (nlohmann-json) listing entities and their components.
 // Assets are referenced by paths relative to the scene file. Saving then loading gives back
-// identical data, floats bit for bit. Saving is atomic: a temporary file in the same
-// directory is written, flushed to disk and renamed over the old file, so a crash leaves
-// either the old or the new scene, never a mix.
+// identical data, floats bit for bit. Saving is atomic (writeFileAtomically): a temporary file
+// in the same directory is written, flushed to disk and renamed over the old file, so a crash
+// or a full disk leaves either the old or the new scene, never a mix. The old file's mode and
+// owner are kept, a symbolic link is written through to its target, and a read-only file is
+// only replaced when the caller asks.
 //
 //   SceneDocument scene;
 //   SceneEntity& helmet = scene.entities.emplace_back();
@@ -19,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/content/atomic_file_write.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/scene_components.h"
@@ -77,6 +80,7 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
 std::string sceneToJson(const SceneDocument& scene, std::string& error);
 
 // Returns an empty string on success, else what went wrong (the old file is then untouched).
-std::string saveSceneFile(const std::filesystem::path& path, const SceneDocument& scene);
+std::string saveSceneFile(const std::filesystem::path& path, const SceneDocument& scene,
+                          AtomicWriteOptions options = {});
 
 }  // namespace candela::content

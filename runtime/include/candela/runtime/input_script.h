@@ -37,6 +37,9 @@ public:
     // Parses script text; `source` names it in errors ("file:line: problem").
     static std::optional<InputScript> parse(std::string_view text, const std::string& source,
                                             std::string& error);
+    // Scripts are text a person writes: larger files (and FIFOs, devices such as /dev/zero,
+    // directories) are refused with an error naming the file, before anything is read.
+    static constexpr std::uint64_t kMaxFileBytes = 16ull * 1024 * 1024;
     static std::optional<InputScript> load(const std::filesystem::path& path, std::string& error);
 
     // Applies the events of `frame` to `state` (after state.beginFrame()).

@@ -43,8 +43,10 @@ public:
     SceneBounds bounds();
 
     // A scene with no camera gets one looking at its bounds from the front-right, and a scene
-    // with no lights gets a sun and a fill, so any glTF shows up recognisably.
-    void addViewingDefaults();
+    // with neither lights nor a sky (a Sky component, or `externalSky` such as `--env`) gets a
+    // sun and a fill, so any glTF shows up recognisably; someone who passes a sky sees the sky
+    // alone. Returns one line per thing added, for the caller to print.
+    std::vector<std::string> addViewingDefaults(bool externalSky = false);
 
     void updateTransforms();
 

@@ -1,0 +1,52 @@
+#pragma once
+// One set of rules for the values a Light, Camera, Sky, rotation and material emission may
+// hold, shared by the scene-file loader, the glTF importer and the editor, so that the editor
+// never saves what the loader would then drop.
+//
+// Values outside their domain are rejected: a negative lumens, lux, colour or radius, an
+// attenuation radius of 0, a vertical field of view outside (0, pi), near not in front of far,
+// a zero quaternion, an empty sky path, spot cones that are inverted or outside [0, pi/2].
+// Finite but physically absurd magnitudes are clamped to the limits below, with a warning,
+// so that no product in the shaders can overflow to Inf and turn a frame into NaN.
+//
+//   ValueProblems problems = validateLight(light);  // may clamp fields of `light`
+//   for (const ValueProblem& p : problems) report(p.field, p.message, p.clamped);
+//   if (anyRejected(problems)) dropTheLight();
+#include <array>
+#include <string>
+#include <vector>
+
+#include "candela/content/components/camera.h"
+#include "candela/content/components/light.h"
+#include "candela/content/components/sky.h"
+#include "candela/content/material.h"
+
+namespace candela::content {
+
+// Far beyond any real lamp (a stadium floodlight is ~1e6 lm), yet small enough that intensity
+// x colour x BRDF x exposure stays finite in 32-bit floats.
+inline constexpr float kMaxLumens = 1e12f;
+inline constexpr float kMaxLux = 1e7f;                 // the sun at noon is ~1.2e5 lux
+inline constexpr float kMaxLightColorChannel = 1e3f;   // colour is a multiplier, normally <= 1
+inline constexpr float kMaxSkyIntensity = 1e6f;        // multiplies the sky's cd/m^2
+inline constexpr float kMaxEmissiveLuminance = 1e10f;  // cd/m^2; the sun's disc is ~1.6e9
+
+struct ValueProblem {
+    std::string field;     // as the scene file names it: "lumens", "verticalFov", "exr"
+    std::string message;   // what is wrong; for a clamp also the value used instead
+    bool clamped = false;  // true: clamped and usable; false: rejected
+};
+using ValueProblems = std::vector<ValueProblem>;
+
+bool anyRejected(const ValueProblems& problems);
+
+ValueProblems validateLight(Light& light);
+ValueProblems validateCamera(Camera& camera);
+ValueProblems validateSky(Sky& sky);
+// A unit quaternion x, y, z, w; a zero (or non-finite) one has no orientation.
+ValueProblems validateRotation(const std::array<float, 4>& rotation);
+// emissiveFactor x emissiveStrength: negative values and luminances over
+// kMaxEmissiveLuminance are clamped.
+ValueProblems validateEmission(Material& material);
+
+}  // namespace candela::content

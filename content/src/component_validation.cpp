@@ -1,0 +1,182 @@
+#include "candela/content/component_validation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <utility>
+
+#include "candela/content/light_units.h"
+
+namespace candela::content {
+
+namespace {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+
+std::string text(float value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", double(value));
+    return buffer;
+}
+
+void reject(ValueProblems& problems, const char* field, const std::string& message) {
+    problems.push_back({field, message, false});
+}
+
+// Clamps an absurdly large magnitude (Inf included) down to `limit`, with a warning.
+void clampAbove(ValueProblems& problems, const char* field, float& value, float limit,
+                const char* unit) {
+    if (!(value > limit)) return;
+    problems.push_back({field,
+                        text(value) + unit + " is beyond the limit of " + text(limit) + unit +
+                            "; using " + text(limit) + unit,
+                        true});
+    value = limit;
+}
+
+bool finite(float value) {
+    return std::isfinite(value);
+}
+
+}  // namespace
+
+bool anyRejected(const ValueProblems& problems) {
+    return std::any_of(problems.begin(), problems.end(),
+                       [](const ValueProblem& p) { return !p.clamped; });
+}
+
+ValueProblems validateLight(Light& light) {
+    ValueProblems problems;
+    for (float c : light.color) {
+        if (std::isnan(c) || c < 0) {
+            reject(problems, "color", "colour channels must be finite and not negative");
+            break;
+        }
+    }
+    for (float& c : light.color)
+        clampAbove(problems, "color", c, kMaxLightColorChannel, "");
+    if (std::isnan(light.lumens) || light.lumens < 0) {
+        reject(problems, "lumens", "must not be negative, got " + text(light.lumens));
+    }
+    clampAbove(problems, "lumens", light.lumens, kMaxLumens, " lm");
+    if (std::isnan(light.lux) || light.lux < 0) {
+        reject(problems, "lux", "must not be negative, got " + text(light.lux));
+    }
+    clampAbove(problems, "lux", light.lux, kMaxLux, " lux");
+    if (!finite(light.attenuationRadius) && light.attenuationRadius > 0) {
+        clampAbove(problems, "attenuationRadius", light.attenuationRadius, kMaxAttenuationRadius,
+                   " m");
+    } else if (!(light.attenuationRadius > 0)) {
+        reject(problems, "attenuationRadius",
+               "must be greater than 0, got " + text(light.attenuationRadius));
+    } else {
+        clampAbove(problems, "attenuationRadius", light.attenuationRadius, kMaxAttenuationRadius,
+                   " m");
+    }
+    if (!finite(light.sourceRadius) || light.sourceRadius < 0) {
+        reject(problems, "sourceRadius",
+               "must be finite and not negative, got " + text(light.sourceRadius));
+    }
+    if (!finite(light.sourceLength) || light.sourceLength < 0) {
+        reject(problems, "sourceLength",
+               "must be finite and not negative, got " + text(light.sourceLength));
+    }
+    if (light.type == LightType::Spot) {
+        const float inner = light.innerConeAngle;
+        const float outer = light.outerConeAngle;
+        if (!(outer > 0 && outer <= kPi / 2)) {
+            reject(problems, "outerConeAngle", "must be in (0, pi/2] radians, got " + text(outer));
+        } else if (!(inner >= 0)) {
+            reject(problems, "innerConeAngle", "must not be negative, got " + text(inner));
+        } else if (inner > outer) {
+            reject(problems, "innerConeAngle",
+                   "the inner cone (" + text(inner) + ") is wider than the outer cone (" +
+                       text(outer) + "): inverted spot cones");
+        }
+    }
+    return problems;
+}
+
+ValueProblems validateCamera(Camera& camera) {
+    ValueProblems problems;
+    if (camera.projection == Projection::Perspective) {
+        if (!(camera.verticalFov > 0 && camera.verticalFov < kPi)) {
+            reject(problems, "verticalFov",
+                   "must be between 0 and pi radians (exclusive), got " + text(camera.verticalFov));
+        }
+    } else if (!(camera.orthographicHalfHeight > 0) || !finite(camera.orthographicHalfHeight)) {
+        reject(problems, "orthographicHalfHeight",
+               "must be greater than 0, got " + text(camera.orthographicHalfHeight));
+    }
+    const bool orthographic = camera.projection == Projection::Orthographic;
+    if (!finite(camera.nearPlane) || camera.nearPlane < 0 ||
+        (!orthographic && camera.nearPlane == 0)) {
+        reject(problems, "nearPlane",
+               std::string(orthographic ? "must not be negative" : "must be greater than 0") +
+                   ", got " + text(camera.nearPlane));
+    } else if (!(camera.farPlane > camera.nearPlane)) {
+        reject(problems, "farPlane",
+               "must be beyond nearPlane (" + text(camera.nearPlane) + "), got " +
+                   text(camera.farPlane));
+    }
+    if (camera.exposureMode == ExposureMode::Physical) {
+        for (auto [field, value] :
+             {std::pair{"aperture", camera.aperture},
+              std::pair{"shutterSeconds", camera.shutterSeconds}, std::pair{"iso", camera.iso}}) {
+            if (!(value > 0) || !finite(value)) {
+                reject(problems, field, "must be greater than 0, got " + text(value));
+            }
+        }
+    }
+    return problems;
+}
+
+ValueProblems validateSky(Sky& sky) {
+    ValueProblems problems;
+    if (sky.exrPath.empty()) reject(problems, "exr", "the sky needs an OpenEXR file path");
+    if (std::isnan(sky.intensity) || sky.intensity < 0) {
+        reject(problems, "intensity", "must not be negative, got " + text(sky.intensity));
+    }
+    clampAbove(problems, "intensity", sky.intensity, kMaxSkyIntensity, "");
+    return problems;
+}
+
+ValueProblems validateRotation(const std::array<float, 4>& q) {
+    ValueProblems problems;
+    const float lengthSq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+    if (!(lengthSq > 1e-12f) || !finite(lengthSq)) {
+        reject(problems, "rotation", "a zero quaternion is not a rotation");
+    }
+    return problems;
+}
+
+ValueProblems validateEmission(Material& material) {
+    ValueProblems problems;
+    for (float& c : material.emissiveFactor) {
+        if (std::isnan(c) || c < 0) {
+            problems.push_back({"emissiveFactor", "negative emission; using 0", true});
+            c = 0;
+        }
+        clampAbove(problems, "emissiveFactor", c, kMaxEmissiveLuminance, "");
+    }
+    if (std::isnan(material.emissiveStrength) || material.emissiveStrength < 0) {
+        problems.push_back({"emissiveStrength", "negative emission; using 0", true});
+        material.emissiveStrength = 0;
+    }
+    const float brightest = std::max(
+        {material.emissiveFactor[0], material.emissiveFactor[1], material.emissiveFactor[2]});
+    // Compared as a division so that the product itself never overflows.
+    if (brightest > 0 && material.emissiveStrength > kMaxEmissiveLuminance / brightest) {
+        const float limit = kMaxEmissiveLuminance / brightest;
+        problems.push_back({"emissiveStrength",
+                            "emissiveFactor x emissiveStrength is beyond the limit of " +
+                                text(kMaxEmissiveLuminance) + " cd/m^2; using strength " +
+                                text(limit),
+                            true});
+        material.emissiveStrength = limit;
+    }
+    return problems;
+}
+
+}  // namespace candela::content

@@ -1,0 +1,44 @@
+#include "model/edit_validation.h"
+
+#include <array>
+
+#include "candela/content/component_validation.h"
+
+namespace candela::editor {
+
+namespace {
+
+// "lumens: must not be negative, got -1; attenuationRadius: ..." with the refusals first.
+EditCheck fromProblems(const content::ValueProblems& problems) {
+    EditCheck check;
+    check.accepted = !content::anyRejected(problems);
+    for (bool clamped : {false, true}) {
+        for (const content::ValueProblem& p : problems) {
+            if (p.clamped != clamped) continue;
+            if (!check.notice.empty()) check.notice += "; ";
+            check.notice += p.field + ": " + p.message;
+        }
+    }
+    return check;
+}
+
+}  // namespace
+
+EditCheck checkEdit(content::Light& value) {
+    return fromProblems(content::validateLight(value));
+}
+
+EditCheck checkEdit(content::Camera& value) {
+    return fromProblems(content::validateCamera(value));
+}
+
+EditCheck checkEdit(ecs::LocalTransform& value) {
+    const ecs::Quat& q = value.rotation;
+    return fromProblems(content::validateRotation(std::array<float, 4>{q.x, q.y, q.z, q.w}));
+}
+
+EditCheck checkEdit(content::Material& value) {
+    return fromProblems(content::validateEmission(value));
+}
+
+}  // namespace candela::editor
