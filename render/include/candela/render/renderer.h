@@ -15,13 +15,9 @@
 #include "candela/render/gpu_image.h"
 #include "candela/render/renderer_options.h"
 
-namespace candela::ecs {
-class JobSystem;
-}
-
 namespace candela::render {
 
-class DepthOccupancyPass;
+class ClusterLightLists;
 class ForwardTransparentPass;
 class EnvironmentBrdfLut;
 class EnvironmentPlaceholders;
@@ -32,13 +28,10 @@ class FrameSubmitter;
 class GBufferPass;
 class GpuContext;
 class GpuLightBuffer;
-class LightAssignmentPass;
 class LightingPass;
 class SceneResources;
 class TonemapPass;
 class TrianglePass;
-struct ClusterGrid;
-struct LightAssignment;
 
 class Renderer {
 public:
@@ -86,12 +79,7 @@ private:
     struct SceneHandles;
     // Declare the frame's passes; return the HDR target's last version.
     uint32_t declareScene(const FrameInputs& inputs, SceneResources& resources, uint32_t hdr);
-    void declareClusterAssignment(const FrameInputs& inputs, SceneResources& resources,
-                                  SceneHandles& h, bool blended);
     void uploadFrameData(const FrameInputs& inputs);
-    void assignLightsToClusters(const FrameInputs& inputs);
-    void prepareGpuAssignment(const FrameInputs& inputs);
-    void absorbGpuListUsage();
 
     GpuContext& context_;
     RendererOptions options_;
@@ -104,24 +92,11 @@ private:
     std::unique_ptr<FrameGraphExecutor> executor_;
     GpuBuffer cameraBuffer_;
     std::unique_ptr<GpuLightBuffer> lights_;
-    std::unique_ptr<ClusterGrid> grid_;
-    std::unique_ptr<LightAssignment> assignment_;
-    GpuBuffer occupancy_;      // uvec2 per tile, written by the GPU, read by the CPU
-    GpuBuffer clusterBounds_;  // view-space box of each occupied cluster's pixels
-    GpuBuffer depthRange_;     // measured depth range and the slicing derived from it
-    GpuBuffer clusterRanges_;  // offset, count per cluster
-    GpuBuffer lightIndices_;
-    GpuBuffer pairCounts_;  // uvec2 per lighting workgroup
+    std::unique_ptr<ClusterLightLists> clusters_;  // grid, cluster buffers, assignment
+    GpuBuffer pairCounts_;                         // uvec2 per lighting workgroup
     bool frameRecorded_ = false;
-    bool gpuAssignTimed_ = false;        // this frame assigned lights on the device
-    bool gpuListPending_ = false;        // its list usage is not read back yet
-    uint32_t gpuListCapacity_ = 0;       // index entries the device lists had this frame
-    uint32_t gpuListEntriesWanted_ = 0;  // what the next frame allocates
-    std::unique_ptr<ecs::JobSystem> jobs_;
     std::unique_ptr<TrianglePass> trianglePass_;
     std::unique_ptr<GBufferPass> gbufferPass_;
-    std::unique_ptr<DepthOccupancyPass> occupancyPass_;
-    std::unique_ptr<LightAssignmentPass> assignmentPass_;  // LightAssignmentDevice::Gpu only
     std::unique_ptr<LightingPass> lightingPass_;
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
