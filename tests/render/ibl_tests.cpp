@@ -1,6 +1,7 @@
 // Image-based lighting (issue 6): the environment BRDF LUT against a double-precision
 // integration of eq. 8, white furnaces, bad environment files, and the disk cache.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <chrono>
 #include <cmath>
@@ -255,6 +256,14 @@ TEST(IblEnvironment, SecondLoadReadsTheCacheAndACorruptEntryIsRebuilt) {
     EXPECT_TRUE(third.mentions("ignoring cache entry")) << third.toString();
     Diagnostics fourth;
     EXPECT_TRUE(load(fourth)->stats().fromCache);
+
+    // A FIFO in place of the entry (issue 22: readers check the type before opening) is
+    // ignored with a warning instead of blocking the open, and the sky is recomputed.
+    std::filesystem::remove(entry);
+    ASSERT_EQ(::mkfifo(entry.c_str(), 0600), 0);
+    Diagnostics fifth;
+    EXPECT_FALSE(load(fifth)->stats().fromCache);
+    EXPECT_TRUE(fifth.mentions("not a regular file")) << fifth.toString();
     EXPECT_EQ(context.validationMessages(), 0u);
 }
 

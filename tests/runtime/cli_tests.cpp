@@ -599,3 +599,21 @@ TEST(Cli, StatsToDevStdoutReachThePipeOrTheRedirectedFile) {
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << readBytes(file);
     EXPECT_NE(readBytes(file).find("\"frames\": 1"), std::string::npos) << readBytes(file);
 }
+
+// The IBL cache is an optimisation: on a full disk the run still renders (exit 0), warns with
+// the entry's path and the OS error, and leaves no partial entry for the next run to trip on.
+TEST(Cli, AFullCacheDiskIsAWarningAndLeavesNoPartialEntry) {
+    CANDELA_SMALL_FILESYSTEM_OR_SKIP(disk);
+    const auto cache = disk->dir() / "cache";
+    std::filesystem::create_directories(cache);
+    disk->fill();
+    RunResult r = runCandela(std::string("run ") + CANDELA_SOURCE_DIR +
+                                 "/tests/scenes/ibl_spheres_garden.scene.json --headless "
+                                 "--size 32x32 --frames 1",
+                             "CANDELA_CACHE_DIR=" + cache.string() + " ");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("environment cache not written"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(cache.string()), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
+    EXPECT_TRUE(std::filesystem::is_empty(cache)) << "a partial cache entry was left";
+}

@@ -57,8 +57,15 @@ std::filesystem::path environmentCachePath(const std::filesystem::path& director
 
 std::optional<CachedEnvironment> readCachedEnvironment(const std::filesystem::path& path,
                                                        std::string& problem) {
+    // Only a regular file is opened (a FIFO planted in the cache would block the open).
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        if (std::filesystem::exists(path, ec)) problem = "not a regular file";
+        return std::nullopt;
+    }
+    const std::uintmax_t fileBytes = std::filesystem::file_size(path, ec);
     std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
+    if (ec || !in) return std::nullopt;
     Header h{};
     if (!in.read(reinterpret_cast<char*>(&h), sizeof(h)) ||
         std::memcmp(h.magic, kMagic, sizeof(kMagic)) != 0 ||
@@ -73,6 +80,11 @@ std::optional<CachedEnvironment> readCachedEnvironment(const std::filesystem::pa
         h.cubeBytes == 0 || h.prefilteredBytes == 0 || h.cubeBytes > (uint64_t(1) << 32) ||
         h.prefilteredBytes > (uint64_t(1) << 32)) {
         problem = "header sizes are inconsistent";
+        return std::nullopt;
+    }
+    // Nothing is allocated for sizes the file cannot hold (a corrupt header).
+    if (fileBytes != sizeof(Header) + h.cubeBytes + h.prefilteredBytes + h.shBytes) {
+        problem = "truncated";
         return std::nullopt;
     }
     CachedEnvironment e;
