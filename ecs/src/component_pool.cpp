@@ -32,7 +32,7 @@ ComponentPool::~ComponentPool() {
 }
 
 void ComponentPool::addPage(std::uint32_t page) {
-    if (page >= pages_.size()) pages_.resize(page + 1, nullptr);
+    if (page >= pages_.size()) pages_.resize(page + 1, absentPage());
     auto entries = std::make_unique<std::uint32_t[]>(kPageSize);
     std::fill_n(entries.get(), kPageSize, kAbsent);
     pages_[page] = entries.get();

@@ -158,6 +158,31 @@ TEST(Registry, CheckedAccessRejectsStaleAndUnknownHandles) {
 #endif
 }
 
+// Unallocated sparse pages share one read-only page of "absent" entries: lookups through it
+// miss, and adding a component there allocates a page of the pool's own instead of writing
+// into the shared one (which another registry's pool would then see).
+TEST(Registry, LookupsThroughUnallocatedSparsePagesMiss) {
+    Registry a, b;
+    std::vector<Entity> entities;
+    for (int i = 0; i < 10000; ++i)
+        entities.push_back(a.create());
+    for (int i = 0; i < 10000; ++i)
+        (void)b.create();
+    a.emplace<Position>(entities[0]);
+    a.emplace<Position>(entities[9999]);  // pages 0 and 2 exist, page 1 does not
+    b.emplace<Position>(Entity(0, 0));
+    b.emplace<Position>(Entity(9999, 0));
+    EXPECT_EQ(a.tryGet<Position>(entities[5000]), nullptr);
+    EXPECT_FALSE(a.has<Position>(entities[5000]));
+    a.emplace<Position>(entities[5000], 5.0f, 0.0f, 0.0f);
+    EXPECT_EQ(a.get<Position>(entities[5000]).x, 5.0f);
+    EXPECT_EQ(a.storage<Position>().get(entities[5000]).x, 5.0f);
+    EXPECT_EQ(b.tryGet<Position>(Entity(5000, 0)), nullptr);
+    EXPECT_EQ(b.tryGet<Position>(Entity(5001, 0)), nullptr);
+    EXPECT_TRUE(a.remove<Position>(entities[5000]));
+    EXPECT_EQ(a.tryGet<Position>(entities[5000]), nullptr);
+}
+
 TEST(Registry, HooksFireExactlyOnce) {
     Registry registry;
     int added = 0, removed = 0;

@@ -22,7 +22,10 @@ namespace {
 constexpr float kRelativePad = 1e-4f;
 constexpr float kMagnitudePad = 1e-5f;
 
-// The bounding sphere lightBoundsInView gives the walk, built in world space.
+// A sphere around the one lightBoundsInView gives the walk, centred on the light's position:
+// equal for points, spheres and tubes; for cones (whose walk sphere sits on the axis) the
+// apex-centred sphere through it, so the bound needs no axis and holds whatever the view's
+// rotation does to it.
 void boundingSphere(const LightInstance& instance, glm::vec3& center, float& radius) {
     const content::Light& light = instance.light;
     const float range =
@@ -36,15 +39,10 @@ void boundingSphere(const LightInstance& instance, glm::vec3& center, float& rad
     }
     const float outer = std::clamp(light.outerConeAngle, 0.0f, 1.5707963f);
     if (light.type == content::LightType::Spot && outer < 1.4f) {
-        const glm::vec3 axis = glm::normalize(instance.direction);
+        // Walk sphere: radius range / (2 cos) at that distance along the axis, or radius
+        // range sin at range cos; apex-centred: distance plus radius.
         const float coneCos = std::cos(outer);
-        if (coneCos * coneCos >= 0.5f) {
-            radius = range / (2.0f * coneCos);
-            center = instance.position + axis * radius;
-        } else {
-            radius = range * std::sin(outer);
-            center = instance.position + axis * (range * coneCos);
-        }
+        radius = coneCos * coneCos >= 0.5f ? range / coneCos : range * (coneCos + std::sin(outer));
     }
 }
 

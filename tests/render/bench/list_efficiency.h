@@ -6,8 +6,10 @@
 //  - exact per-cluster lists: a light listed only where it reaches at least one of the
 //    cluster's pixels. No per-cluster bound (box, sphere, depth bitmask) can do better at
 //    this grid,
-//  - exact per-sub-tile lists: the same test per 8 x 8 px quarter of each 16 px cluster, i.e.
-//    what per-entry sub-tile masks in 16 px lists could reach.
+//  - per-quarter boxes: each list entry of a 16 px cluster carries a 4-bit mask of the 8 x 8 px
+//    quarters whose pixel box (view-space AABB, padded as the assignment pads) the light
+//    touches, and a pixel skips entries whose bit for its quarter is clear,
+//  - exact per-sub-tile lists: the exact test per quarter, the bound for such masks.
 // Point lights only (a pixel is lit when it lies strictly inside the attenuation radius, where
 // eq. 9's window is non-zero; the floor's lights all sit above it, so it faces them).
 #include <algorithm>
@@ -17,6 +19,7 @@
 #include <vector>
 
 #include "analytic_floor.h"
+#include "clustered/light_bounds.h"
 
 namespace candela::render::bench {
 
@@ -24,6 +27,8 @@ struct ListEfficiency {
     uint64_t litPairs = 0;
     double lists = 0.0;
     double exactPerCluster = 0.0;
+    double quarterBoxes = 0.0;
+    double quarterPlanes = 0.0;
     double exactPerSubTile = 0.0;
 };
 
@@ -62,7 +67,13 @@ inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
     std::sort(pixels.begin(), pixels.end(), [](const Pixel& a, const Pixel& b) {
         return a.cluster != b.cluster ? a.cluster < b.cluster : a.quarter < b.quarter;
     });
-    uint64_t evaluated = 0, exactCluster = 0, exactQuarter = 0, litPairs = 0;
+    uint64_t evaluated = 0, exactCluster = 0, exactQuarter = 0, quarterBoxes = 0, litPairs = 0;
+    uint64_t quarterPlanes = 0;
+    const float columnStep = (g.columnTangent[1] - g.columnTangent[0]) / float(g.tileSize);
+    const float rowStep = (g.rowTangent[1] - g.rowTangent[0]) / float(g.tileSize);
+    std::vector<LightBounds> bounds;
+    for (const LightInstance& l : lights)
+        bounds.push_back(lightBoundsInView(l, f.view));
     for (size_t begin = 0; begin < pixels.size();) {
         size_t end = begin;
         while (end < pixels.size() && pixels[end].cluster == pixels[begin].cluster)
@@ -78,6 +89,39 @@ inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
                 while (qEnd < end && pixels[qEnd].quarter == pixels[q].quarter)
                     ++qEnd;
                 bool inQuarter = false;
+                glm::vec3 lo(INFINITY), hi(-INFINITY);
+                for (size_t p = q; p < qEnd; ++p) {
+                    lo = glm::min(lo, f.pixels[pixels[p].index]);
+                    hi = glm::max(hi, f.pixels[pixels[p].index]);
+                }
+                const glm::vec3 pad(1e-4f * (1.0f - lo.z));  // as light_assignment.cpp
+                if (lightTouchesBox(bounds[i], lo - pad, hi + pad)) quarterBoxes += qEnd - q;
+                {
+                    // The cluster's (not the quarter's) box, and the quarter's four planes.
+                    const uint32_t cluster = pixels[q].cluster, tile = cluster % g.tileCount();
+                    const uint32_t tx = tile % g.tilesX, ty = tile / g.tilesX;
+                    const uint32_t quarter = pixels[q].quarter;
+                    const float* box = &f.pixelBounds[size_t(cluster) * 6];
+                    glm::vec3 blo(box[0], box[1], box[2]), bhi(box[3], box[4], box[5]);
+                    const glm::vec3 bpad(1e-4f * (1.0f - blo.z));
+                    const float half = float(g.tileSize / 2);
+                    const float left =
+                        quarter % 2 ? g.columnTangent[tx] + half * columnStep : g.columnTangent[tx];
+                    const float right = quarter % 2 ? g.columnTangent[tx + 1]
+                                                    : g.columnTangent[tx] + half * columnStep;
+                    const float top =
+                        quarter / 2 ? g.rowTangent[ty] + half * rowStep : g.rowTangent[ty];
+                    const float bottom =
+                        quarter / 2 ? g.rowTangent[ty + 1] : g.rowTangent[ty] + half * rowStep;
+                    const LightBounds& b = bounds[i];
+                    if (lightTouchesBox(b, blo - bpad, bhi + bpad) &&
+                        lightReachesPositiveSide(b, glm::normalize(glm::vec3(1, 0, left))) &&
+                        lightReachesPositiveSide(b, glm::normalize(glm::vec3(-1, 0, -right))) &&
+                        lightReachesPositiveSide(b, glm::normalize(glm::vec3(0, -1, -top))) &&
+                        lightReachesPositiveSide(b, glm::normalize(glm::vec3(0, 1, bottom)))) {
+                        quarterPlanes += qEnd - q;
+                    }
+                }
                 for (size_t p = q; p < qEnd; ++p) {
                     if (lit(f.pixels[pixels[p].index], i)) {
                         inQuarter = true;
@@ -97,6 +141,8 @@ inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
     const double lit1 = double(std::max<uint64_t>(litPairs, 1));
     e.lists = double(evaluated) / lit1;
     e.exactPerCluster = double(exactCluster) / lit1;
+    e.quarterBoxes = double(quarterBoxes) / lit1;
+    e.quarterPlanes = double(quarterPlanes) / lit1;
     e.exactPerSubTile = double(exactQuarter) / lit1;
     return e;
 }

@@ -5,6 +5,7 @@
 // moves the last element into the hole, so both are O(1) and iteration is a walk over plain
 // arrays. Groups (see registry.h) keep several pools in the same order so a multi-component
 // loop is as tight as a loop over separate std::vectors.
+#include <array>
 #include <atomic>
 #include <cassert>
 #include <cstddef>
@@ -75,8 +76,7 @@ public:
     std::uint32_t indexOf(Entity e) const noexcept {
         const std::uint32_t page = e.index() >> kPageBits;
         if (page >= pages_.size()) return kAbsent;
-        const std::uint32_t* entries = pages_[page];
-        return entries ? entries[e.index() & kPageMask] : kAbsent;
+        return pages_[page][e.index() & kPageMask];  // unallocated pages: absentPage()
     }
     bool contains(Entity e) const noexcept { return indexOf(e) != kAbsent; }
     // Dense position of an entity known to have the component (Storage<T>::get): no bounds
@@ -146,10 +146,21 @@ private:
 
     std::uint32_t& sparseEntry(std::uint32_t entityIndex) {
         const std::uint32_t page = entityIndex >> kPageBits;
-        if (page >= pages_.size() || pages_[page] == nullptr) addPage(page);
+        if (page >= pages_.size() || pages_[page] == absentPage()) addPage(page);
         return pages_[page][entityIndex & kPageMask];
     }
     void addPage(std::uint32_t page);
+    // A page of kAbsent entries standing in for every unallocated page, so a lookup needs no
+    // null test. Shared by all pools and never written: writes go through sparseEntry, which
+    // allocates first, or to the entries of entities the pool holds. Constant-initialised.
+    static std::uint32_t* absentPage() noexcept { return absentEntries_.data(); }
+    static constexpr std::array<std::uint32_t, kPageSize> makeAbsentPage() {
+        std::array<std::uint32_t, kPageSize> page{};
+        for (std::uint32_t& entry : page)
+            entry = kAbsent;
+        return page;
+    }
+    static inline std::array<std::uint32_t, kPageSize> absentEntries_ = makeAbsentPage();
     void grow();
     // Moves element `from` into the (vacated) position `to`.
     void relocate(std::uint32_t to, std::uint32_t from) noexcept {

@@ -309,8 +309,9 @@ bool Registry::remove(Entity e) {
     return true;
 }
 
+// Always inlined (with get): in a lookup loop the call would cost as much as the lookup.
 template <Component T>
-T* Registry::tryGet(Entity e) noexcept {
+[[gnu::always_inline]] inline T* Registry::tryGet(Entity e) noexcept {
     // Pools hold live entities only (destroy empties them first) and store full handles, so
     // "alive and has T" is "T's pool maps e's index to a slot holding exactly e": a stale
     // handle whose slot was reused carries another generation. One sparse-set lookup, no
@@ -328,7 +329,7 @@ const T* Registry::tryGet(Entity e) const noexcept {
 }
 
 template <Component T>
-T& Registry::get(Entity e) {
+[[gnu::always_inline]] inline T& Registry::get(Entity e) {
     T* component = tryGet<T>(e);
     if (component == nullptr) [[unlikely]] {
         checkAlive(e);
