@@ -59,6 +59,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;
+    json["light_list_grew"] = last.lightListGrew;
     json["culling_efficiency"] = cullingEfficiency(last);
     // Frame graph: each pass's median GPU milliseconds (a host pass: CPU) over the frames that
     // ran it, and the last frame's graph; record_ms + compile_ms is the graph's CPU cost.

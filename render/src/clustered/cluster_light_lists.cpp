@@ -95,7 +95,7 @@ void ClusterLightLists::assignOnCpu(const FrameInputs& inputs, RendererStats& st
     if (ensureHostBuffer(context_, lightIndices_,
                          assignment_->lightIndices.size() * sizeof(uint32_t)) &&
         !assignment_->lightIndices.empty()) {
-        ++stats.lightListOverflows;
+        ++stats.lightListGrew;
     }
     // A frame without lights has no list entries, and memcpy from an empty vector's null
     // data() is undefined even for 0 bytes (UBSan).
@@ -145,8 +145,13 @@ void ClusterLightLists::absorbDeviceListUsage(RendererStats& stats) {
     const uint32_t requested = assignmentPass_->requestedEntries();
     stats.lightClusterPairs = requested - assignment_->directionalCount;
     if (requested > gpuListCapacity_) {
-        ++stats.lightListOverflows;
+        ++stats.lightListGrew;
         gpuListEntriesWanted_ = requested + requested / 4;
+        // The clusters marked overflowed (count = ~0u, light_assignment_pass.h).
+        const auto* ranges = static_cast<const uint32_t*>(clusterRanges_.mapped());
+        for (uint32_t c = 0; c < grid_->clusterCount(); ++c) {
+            stats.lightListOverflows += ranges[2 * c + 1] == ~0u ? 1u : 0u;
+        }
     }
     stats.clustersOccupied = 0;
     const auto* masks = static_cast<const uint64_t*>(occupancy_.mapped());
@@ -170,7 +175,8 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
     ResourceHandle clusterBounds = g.importBuffer("cluster.bounds", &clusterBounds_);
     Lists lists;
     lists.depthRange = g.importBuffer("cluster.depth_range", &depthRange_);
-    lists.ranges = g.importBuffer("cluster.ranges", &clusterRanges_);
+    // The device path's overflowed clusters are counted on the CPU after the frame.
+    lists.ranges = g.importBuffer("cluster.ranges", &clusterRanges_, onDevice);
     lists.indices = g.importBuffer("cluster.light_indices", &lightIndices_);
     const ResourceHandle depth = in.depth;
     const glm::vec2 projectionScale = projectionScale_;

@@ -55,9 +55,12 @@ struct RendererStats {
     double lightingMs = 0.0;        // GPU timestamps around the lighting dispatch
     uint64_t lightEvaluations = 0;  // light-pixel pairs the shader evaluated (countLightPairs)
     uint64_t litPairs = 0;          // ... of which the light reaches the pixel
-    // Frames whose list buffer had to grow (nothing dropped: the CPU path sizes the buffer
-    // before lighting; on the GPU path the overflowed clusters evaluated every light).
-    uint32_t lightListOverflows = 0;
+    // Frames whose list buffer had to grow (the CPU path's first frame always does: it sizes
+    // the buffer exactly before lighting, and nothing is dropped).
+    uint32_t lightListGrew = 0;
+    // Clusters whose device-built list did not fit, so lighting evaluated every light there
+    // (slower, never wrong), summed over frames; the CPU path never overflows.
+    uint64_t lightListOverflows = 0;
     // The frame graph (--stats `passes`, `frame_graph`): each live pass's GPU milliseconds
     // (a host pass: CPU), in execution order.
     using PassTime = std::pair<std::string, double>;
