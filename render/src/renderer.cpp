@@ -321,18 +321,11 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
         p.read(hdr, Use::StorageRead);
         p.write(ldr, Use::StorageWrite);
     }
-    stats_.graphRecordMs = millisecondsSince(start);
+    const double recordMs = millisecondsSince(start);
     executor_->execute(g, submitter, cmd);
     frameRecorded_ = true;
-    const FrameGraphStats& graphStats = executor_->stats();
-    stats_.graphCompileMs = graphStats.compileMs;
-    stats_.graphReused = graphStats.reused;
-    stats_.graphPasses = graphStats.passes;
-    stats_.graphCulledPasses = graphStats.culledPasses;
-    stats_.graphResources = graphStats.resources;
-    stats_.graphBarriers = graphStats.barriers;
-    stats_.transientBytes = graphStats.transientBytes;
-    stats_.transientBytesUnaliased = graphStats.transientBytesUnaliased;
+    stats_.frameGraph = executor_->stats();
+    stats_.frameGraph.recordMs = recordMs;
     return cmd;
 }
 

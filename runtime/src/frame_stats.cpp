@@ -70,26 +70,27 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     }
     std::vector<double> compileMs;  // over the frames that compiled (the rest reused the graph)
     for (const render::RendererStats& f : stats.frames) {
-        if (!f.graphReused) compileMs.push_back(f.graphCompileMs);
+        if (!f.frameGraph.reused) compileMs.push_back(f.frameGraph.compileMs);
     }
     json["passes"] = nlohmann::json::object();
     for (const render::RendererStats::PassTime& pass : last.passMs) {
         json["passes"][pass.first] = median(passTimes[pass.first]);
     }
     json["frame_graph"] = {
-        {"passes", last.graphPasses},
-        {"culled_passes", last.graphCulledPasses},
-        {"resources", last.graphResources},
-        {"barriers", last.graphBarriers},
-        {"transient_bytes", last.transientBytes},
-        {"transient_bytes_unaliased", last.transientBytesUnaliased},
-        {"record_ms", median(collect(stats.frames, [](auto& f) { return f.graphRecordMs; }))},
+        {"passes", last.frameGraph.passes},
+        {"culled_passes", last.frameGraph.culledPasses},
+        {"resources", last.frameGraph.resources},
+        {"barriers", last.frameGraph.barriers},
+        {"transient_bytes", last.frameGraph.transientBytes},
+        {"transient_bytes_unaliased", last.frameGraph.transientBytesUnaliased},
+        {"record_ms", median(collect(stats.frames, [](auto& f) { return f.frameGraph.recordMs; }))},
         {"compile_ms", compileMs.empty() ? 0.0 : median(compileMs)},
         {"record_compile_ms",
-         median(collect(stats.frames, [](auto& f) { return f.graphRecordMs + f.graphCompileMs; }))},
+         median(collect(stats.frames,
+                        [](auto& f) { return f.frameGraph.recordMs + f.frameGraph.compileMs; }))},
         {"compiled_frames",
          std::count_if(stats.frames.begin(), stats.frames.end(),
-                       [](const render::RendererStats& f) { return !f.graphReused; })}};
+                       [](const render::RendererStats& f) { return !f.frameGraph.reused; })}};
     if (stats.environment) {
         const render::EnvironmentBuildStats& e = *stats.environment;
         json["environment"] = {{"source", e.source},

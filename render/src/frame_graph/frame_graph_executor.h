@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "candela/render/renderer_options.h"
 #include "frame_graph/frame_graph.h"
 #include "frame_graph/graph_resources.h"
 
@@ -34,17 +35,6 @@ private:
     VkCommandBuffer cmd_;
 };
 
-struct FrameGraphStats {
-    uint32_t passes = 0;  // live
-    uint32_t culledPasses = 0;
-    uint32_t resources = 0;
-    uint32_t barriers = 0;
-    uint64_t transientBytes = 0;           // the aliased pool
-    uint64_t transientBytesUnaliased = 0;  // separate allocations
-    double compileMs = 0.0;                // CPU, the last compile (0 when reused)
-    bool reused = false;                   // the cached compiled graph was used
-};
-
 class FrameGraphExecutor {
 public:
     explicit FrameGraphExecutor(GpuContext& context);
@@ -58,7 +48,7 @@ public:
     // Per live pass of the last executed frame: name and GPU milliseconds (host passes: CPU).
     // Call after that frame's submission completed.
     std::vector<std::pair<std::string, double>> passTimes();
-    const FrameGraphStats& stats() const { return stats_; }
+    const FrameGraphSummary& stats() const { return stats_; }
     std::string dot(const FrameGraph& graph) const { return frameGraphDot(graph, compiled_); }
 
 private:
@@ -71,7 +61,7 @@ private:
     uint64_t shape_ = 0;
     bool compiledValid_ = false;
     CompiledFrameGraph compiled_;
-    FrameGraphStats stats_;
+    FrameGraphSummary stats_;
     // Transients of the compiled shape: per resource, image (+ view) or buffer.
     struct Transient {
         VkImage image = VK_NULL_HANDLE;

@@ -43,6 +43,19 @@ struct RendererOptions {
     uint32_t referenceSamples = 2048;  // per pixel, for each of specular and diffuse
 };
 
+// The frame graph of the last frame (--stats `frame_graph`).
+struct FrameGraphSummary {
+    uint32_t passes = 0;  // live
+    uint32_t culledPasses = 0;
+    uint32_t resources = 0;
+    uint32_t barriers = 0;                 // image barriers + global memory barriers
+    uint64_t transientBytes = 0;           // the aliased transient pool
+    uint64_t transientBytesUnaliased = 0;  // the same transients in separate allocations
+    double recordMs = 0.0;                 // CPU: declaring the frame's passes
+    double compileMs = 0.0;                // CPU: compiling (0 when the cached graph was reused)
+    bool reused = false;                   // the cached compiled graph was used
+};
+
 // Measurements of the last completed frame (--stats fields).
 struct RendererStats {
     uint32_t lights = 0;
@@ -65,15 +78,7 @@ struct RendererStats {
     // (a host pass: CPU), in execution order.
     using PassTime = std::pair<std::string, double>;
     std::vector<PassTime> passMs;
-    uint32_t graphPasses = 0;
-    uint32_t graphCulledPasses = 0;
-    uint32_t graphResources = 0;
-    uint32_t graphBarriers = 0;
-    uint64_t transientBytes = 0;           // the aliased transient pool
-    uint64_t transientBytesUnaliased = 0;  // the same transients in separate allocations
-    double graphRecordMs = 0.0;            // CPU: declaring the frame's passes
-    double graphCompileMs = 0.0;           // CPU: compiling (0 when the cached graph was reused)
-    bool graphReused = false;
+    FrameGraphSummary frameGraph;
 };
 
 }  // namespace candela::render

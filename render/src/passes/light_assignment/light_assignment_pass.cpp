@@ -131,7 +131,10 @@ AssignDescriptors describe(const LightAssignmentPass::Inputs& in, const GpuBuffe
 }
 }  // namespace
 
-void LightAssignmentPass::recordCount(VkCommandBuffer cmd, const Inputs& in) const {
+// The count and write passes run the same per-light walk (assign_lights.comp), with the same
+// bindings; a specialization constant picks counting or writing.
+void LightAssignmentPass::recordWalk(VkCommandBuffer cmd, const Inputs& in,
+                                     const Pipeline& pipeline) const {
     const AssignDescriptors d = describe(in, clusterCounts_, usage_, previousMasks_);
     const VkWriteDescriptorSet writes[] = {
         storageBufferWrite(1, &d.lights), storageBufferWrite(2, &d.masks),
@@ -144,10 +147,14 @@ void LightAssignmentPass::recordCount(VkCommandBuffer cmd, const Inputs& in) con
                       {in.projectionScale.x, in.projectionScale.y},
                       in.lightCount,
                       in.lightCapacity};
-    countPipeline_.bind(cmd);
-    countPipeline_.pushDescriptors(cmd, writes);
-    countPipeline_.pushConstants(cmd, &assign, sizeof(assign));
+    pipeline.bind(cmd);
+    pipeline.pushDescriptors(cmd, writes);
+    pipeline.pushConstants(cmd, &assign, sizeof(assign));
     vkCmdDispatch(cmd, std::max(groups(in.lightCount), 1u), 1, 1);
+}
+
+void LightAssignmentPass::recordCount(VkCommandBuffer cmd, const Inputs& in) const {
+    recordWalk(cmd, in, countPipeline_);
 }
 
 void LightAssignmentPass::recordAllocate(VkCommandBuffer cmd, const Inputs& in) const {
@@ -164,22 +171,7 @@ void LightAssignmentPass::recordAllocate(VkCommandBuffer cmd, const Inputs& in) 
 }
 
 void LightAssignmentPass::recordWrite(VkCommandBuffer cmd, const Inputs& in) const {
-    const AssignDescriptors d = describe(in, clusterCounts_, usage_, previousMasks_);
-    const VkWriteDescriptorSet writes[] = {
-        storageBufferWrite(1, &d.lights), storageBufferWrite(2, &d.masks),
-        storageBufferWrite(3, &d.bounds), storageBufferWrite(4, &d.range),
-        storageBufferWrite(5, &d.counts), storageBufferWrite(6, &d.ranges),
-        storageBufferWrite(7, &d.indices)};
-    AssignPush assign{in.view,
-                      toGpu(*in.grid),
-                      {in.width, in.height},
-                      {in.projectionScale.x, in.projectionScale.y},
-                      in.lightCount,
-                      in.lightCapacity};
-    writePipeline_.bind(cmd);
-    writePipeline_.pushDescriptors(cmd, writes);
-    writePipeline_.pushConstants(cmd, &assign, sizeof(assign));
-    vkCmdDispatch(cmd, std::max(groups(in.lightCount), 1u), 1, 1);
+    recordWalk(cmd, in, writePipeline_);
 }
 
 void LightAssignmentPass::recordSort(VkCommandBuffer cmd, const Inputs& in) const {

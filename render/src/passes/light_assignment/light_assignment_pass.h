@@ -57,6 +57,8 @@ public:
     uint32_t requestedEntries() const;
 
 private:
+    void recordWalk(VkCommandBuffer cmd, const Inputs& inputs, const Pipeline& pipeline) const;
+
     GpuContext& context_;
     Pipeline countPipeline_;
     Pipeline writePipeline_;
