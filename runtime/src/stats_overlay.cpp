@@ -58,6 +58,12 @@ void StatsOverlay::record(VkCommandBuffer cmd, render::Renderer& renderer,
                         100.0 * cullingEfficiency(last));
             ImGui::Text("light assign %.2f ms, lighting %.2f ms", last.lightAssignMs,
                         last.lightingMs);
+            // The frame graph's passes in execution order (GPU ms; the CPU assignment's CPU ms).
+            if (ImGui::CollapsingHeader("passes")) {
+                for (const auto& [name, passMs] : last.passMs) {
+                    ImGui::Text("%-28s %7.2f ms", name.c_str(), passMs);
+                }
+            }
         }
         if (!frame.headless) ImGui::TextUnformatted("WASD/QE fly, shift fast, hold mouse: look");
     }
