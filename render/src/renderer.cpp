@@ -121,7 +121,7 @@ LightAssignmentDevice Renderer::resolveLightAssignment(const RendererOptions& op
                                                        const GpuContext& context) {
     if (options.lightAssignment != LightAssignmentDevice::Auto) return options.lightAssignment;
     // On a CPU device the "GPU" is the same cores: the job system's sort beats four compute
-    // dispatches there (render/README.md, "CPU vs compute light assignment").
+    // dispatches there (render/README.md, "CPU or compute assignment").
     return context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU
                ? LightAssignmentDevice::Cpu
                : LightAssignmentDevice::Gpu;
