@@ -17,6 +17,7 @@
 #include "candela/runtime/exit_code.h"
 #include "candela/runtime/frame_extraction.h"
 #include "candela/runtime/light_table.h"
+#include "candela/runtime/sky_loader.h"
 #include "candela/runtime/window.h"
 
 namespace candela::runtime {
@@ -74,30 +75,20 @@ struct Application::Session {
     std::map<std::uint32_t, std::vector<std::filesystem::path>> captures;
     std::vector<std::filesystem::path> capturesMissed;
     int exitCode = kExitOk;
-    std::optional<std::filesystem::path> skyFile;  // what resources' environment came from
+    SkyLoader sky;
 };
 
 // Loads the sky when the file named by the options or the world's Sky component changes
 // (cached precomputation makes a reload of a known sky cheap).
 void Application::updateSky(Session& s) {
-    std::optional<std::filesystem::path> wanted = options_.environment;
-    if (!wanted && !s.extracted.skyExrPath.empty()) {
-        wanted = world_->resolveAssetPath(s.extracted.skyExrPath);
-    }
-    if (wanted == s.skyFile) return;
-    s.skyFile = wanted;
-    if (!wanted) {
-        s.resources->setEnvironment(nullptr);
-        stats_.environment.reset();
+    if (!s.sky.update(*world_, s.extracted, *s.context, *s.submitter, *s.resources, "candela")) {
         return;
     }
-    content::Diagnostics diagnostics;
-    s.submitter->waitIdle();  // the previous sky may still be read by the last frame
-    s.resources->setEnvironment(render::Environment::load(*s.context, *wanted, diagnostics));
-    for (const content::Diagnostic& d : diagnostics.messages) {
-        std::fprintf(stderr, "candela: %s\n", content::formatDiagnostic(d).c_str());
+    if (s.resources->environment()) {
+        stats_.environment = s.resources->environment()->stats();
+    } else {
+        stats_.environment.reset();
     }
-    stats_.environment = s.resources->environment()->stats();
 }
 
 Application::Application(ApplicationOptions options)
@@ -151,6 +142,7 @@ int Application::runSession(bool headless, std::uint32_t frames) {
     input_ = InputState{};
     quitRequested_ = false;
     Session s;
+    s.sky = SkyLoader(options_.environment);
     std::string frameGraphDot;
     for (const FrameCapture& c : options_.captures) {
         if (c.frame == FrameCapture::kLastFrame && frames == 0) {

@@ -6,6 +6,8 @@
 
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +15,7 @@
 #include <sstream>
 #include <string>
 
+#include "candela/content/exr_image.h"
 #include "candela/content/scene_file.h"
 #include "full_filesystem.h"
 
@@ -145,6 +148,46 @@ TEST_F(EditorSession, LightEditIsSavedShownAndUndone) {
     EXPECT_LT(dimmed, lit * 0.8) << "before " << lit << ", after " << dimmed;
     // Undo brings the old light back (the renderer is deterministic).
     EXPECT_NEAR(undone.meanLuma(x0, y0, x1, y1), lit, 0.5);
+}
+
+// The editor renders what `candela run` renders: the same scene, camera and size give the same
+// HDR radiance, sky and image-based lighting included (the editor once showed this scene's
+// spheres black on grey: it never loaded the Sky component).
+TEST_F(EditorSession, ViewportMatchesCandelaRunWithASky) {
+    ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run through xvfb-run (ctest does)";
+    const fs::path scene =
+        fs::path(CANDELA_SOURCE_DIR) / "tests/scenes/ibl_spheres_garden.scene.json";
+    const fs::path editorExr = dir / "editor.exr";
+    const fs::path runExr = dir / "run.exr";
+    std::string errors;
+    ASSERT_EQ(runEditor(scene, "screenshot " + editorExr.string() + "\nquit\n", errors), 0)
+        << errors;
+    const std::string command = std::string("\"") + CANDELA_ENGINE + "\" run \"" + scene.string() +
+                                "\" --headless --size 640x360 --capture \"" + runExr.string() +
+                                "\" > /dev/null 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    content::Diagnostics diagnostics;
+    std::optional<content::ExrImage> editor = content::readExrImage(editorExr, diagnostics);
+    std::optional<content::ExrImage> run = content::readExrImage(runExr, diagnostics);
+    ASSERT_TRUE(editor && run);
+    ASSERT_EQ(editor->image.width, run->image.width);
+    ASSERT_EQ(editor->image.height, run->image.height);
+    double worst = 0.0;
+    for (size_t i = 0; i < run->image.rgba.size(); ++i) {
+        if (i % 4 == 3) continue;
+        const double a = editor->image.rgba[i], b = run->image.rgba[i];
+        worst = std::max(worst, std::abs(a - b) / std::max(std::abs(b), 1e-6));
+    }
+    std::printf("editor vs candela run: worst relative difference %.3g\n", worst);
+    EXPECT_LE(worst, 1e-4);
+    // Both show the garden sky behind the spheres, not the uniform clear colour a frame without
+    // a sky has: the top row varies across the image.
+    const float* left = editor->image.texel(0, 0);
+    size_t differing = 0;
+    for (uint32_t x = 0; x < editor->image.width; ++x) {
+        differing += std::abs(editor->image.texel(x, 0)[1] - left[1]) > 1e-3f ? 1u : 0u;
+    }
+    EXPECT_GT(differing, editor->image.width / 2);
 }
 
 TEST_F(EditorSession, AFailingScriptStepNamesTheLineAndFails) {

@@ -22,6 +22,7 @@
 #include "candela/render/swapchain.h"
 #include "candela/runtime/frame_extraction.h"
 #include "candela/runtime/light_table.h"
+#include "candela/runtime/sky_loader.h"
 #include "candela/ui/imgui_layer.h"
 #include "candela/ui/imgui_renderer.h"
 
@@ -37,10 +38,12 @@ struct Session {
     std::unique_ptr<render::SceneResources> resources;
     std::unique_ptr<runtime::LightTable> lights;
     runtime::ExtractedFrame extracted;
+    runtime::SkyLoader sky;  // the scene's Sky component, loaded as `candela run` does
 
     void reset(render::GpuContext& context, OpenedScene scene) {
         lights.reset();  // unhooks from the old registry before it goes
         extracted = {};
+        sky = runtime::SkyLoader();
         opened = std::move(scene);
         resources = std::make_unique<render::SceneResources>(context);
         lights = std::make_unique<runtime::LightTable>(opened.world->registry);
@@ -187,6 +190,9 @@ int runEditor(const EditorOptions& options) {
                                       *session.resources, float(w) / float(h), session.extracted);
                 const runtime::ExtractedFrame& x = session.extracted;
                 inputs.clearRadiance = session.opened.background;
+                inputs.scene.skyIntensity = x.skyIntensity;
+                session.sky.update(*session.opened.world, x, context, submitter, *session.resources,
+                                   "candela-editor");
                 inputs.scene.draws = x.draws;
                 inputs.scene.lights = x.lights;
                 inputs.scene.changedLights = x.changedLights;
