@@ -188,6 +188,25 @@ TEST(FrameGraph, AWriteIsVisibleToALaterPassOnlyThroughABarrier) {
     EXPECT_EQ(c.before[1].memoryDstAccess, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
+TEST(FrameGraph, OnePassMayUseABufferTwoWaysButNotAnImageInTwoLayouts) {
+    FrameGraph g;
+    ResourceHandle buffer = g.importBuffer("params", nullptr);
+    ResourceHandle image = g.importImage("target", nullptr, {}, {});
+    auto both = g.addPass("uniform_and_storage", PassKind::Device, nullptr);
+    both.read(buffer, Use::Uniform);
+    both.read(buffer, Use::StorageRead);
+    both.sideEffect();
+    EXPECT_EQ(compileError(g), "");
+    auto twoLayouts = g.addPass("sampled_and_attachment", PassKind::Device, nullptr);
+    twoLayouts.read(image, Use::Sampled);
+    twoLayouts.write(image, Use::ColorAttachment);
+    twoLayouts.sideEffect();
+    const std::string error = compileError(g);
+    EXPECT_NE(error.find("'sampled_and_attachment' uses 'target' in two image layouts"),
+              std::string::npos)
+        << error;
+}
+
 TEST(FrameGraph, AliasesTransientsWhoseLifetimesDoNotOverlap) {
     FrameGraph g;
     ResourceHandle out = g.importBuffer("out", nullptr);

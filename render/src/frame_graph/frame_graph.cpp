@@ -392,7 +392,8 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
             it->second.access |= info.access;
             it->second.writes |= info.writes;
             it->second.reads |= info.reads;
-            if (it->second.layout != info.layout) {
+            // Buffers have no layout: a uniform and a storage read of one buffer may share a pass.
+            if (resources[u.resource].image && it->second.layout != info.layout) {
                 throw FrameGraphError("frame graph: pass " + quoted(pass.name) + " uses " +
                                       quoted(resources[u.resource].name) +
                                       " in two image layouts at once");
@@ -403,7 +404,6 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
             const bool image = resources[r].image;
             const bool layoutChange = image && s.layout != use.layout;
             if (layoutChange) {
-                // Discarded contents: nothing to preserve unless this use reads them.
                 ImageBarrier b;
                 b.resource = r;
                 b.oldLayout = s.layout;
