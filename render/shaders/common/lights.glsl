@@ -5,6 +5,7 @@
 #define CANDELA_LIGHTS_GLSL
 
 #include "common/math.glsl"
+#include "common/specialization_ids.h"
 
 const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;
@@ -12,9 +13,9 @@ const uint kLightDirectional = 2u;
 
 // Light shapes compiled into this shader variant (SPEC "Model only what a scene needs"); the
 // renderer turns off the shapes its scene does not have, and the driver drops their code.
-layout(constant_id = 20) const bool kSphereLightsEnabled = true;
-layout(constant_id = 21) const bool kTubeLightsEnabled = true;
-layout(constant_id = 22) const bool kSpotLightsEnabled = true;
+layout(constant_id = SPEC_SPHERE_LIGHTS_ENABLED) const bool kSphereLightsEnabled = true;
+layout(constant_id = SPEC_TUBE_LIGHTS_ENABLED) const bool kTubeLightsEnabled = true;
+layout(constant_id = SPEC_SPOT_LIGHTS_ENABLED) const bool kSpotLightsEnabled = true;
 
 // The "+1" of eq. 9 is 1 cm^2 in UE4's centimetres: 1e-4 m^2 here. Without the conversion a
 // light 2 m away would be 20% too dark.

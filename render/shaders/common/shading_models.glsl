@@ -4,6 +4,7 @@
 #ifndef CANDELA_SHADING_MODELS_GLSL
 #define CANDELA_SHADING_MODELS_GLSL
 
+#include "common/specialization_ids.h"
 #include "common/brdf.glsl"
 #include "common/lights.glsl"
 
@@ -15,8 +16,9 @@ const uint kShadingLegacyDiffuseSpecular = 3u;
 
 // Shading models compiled into this shader variant; the renderer turns off those no material
 // in the scene uses. DefaultLit is always present (it is also the fallback).
-layout(constant_id = 10) const bool kSubsurfaceEnabled = true;
-layout(constant_id = 11) const bool kLegacyDiffuseSpecularEnabled = true;
+layout(constant_id = SPEC_SUBSURFACE_ENABLED) const bool kSubsurfaceEnabled = true;
+layout(constant_id = SPEC_LEGACY_DIFFUSE_SPECULAR_ENABLED) const bool kLegacyDiffuseSpecularEnabled =
+    true;
 
 struct Surface {
     vec3 baseColor;    // DefaultLit/Subsurface: base colour; Legacy: DiffuseColor

@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "common/specialization_ids.h"
 // Forward+ shading of alpha-blended (glTF BLEND) surfaces over the deferred result: the same
 // material evaluation as the G-buffer pass and the same lights, light code and cluster lists
 // as the deferred lighting pass, so a blended surface is lit exactly like an opaque one with
@@ -14,9 +15,9 @@
 #include "common/material.glsl"
 #include "common/shading_models.glsl"
 
-layout(constant_id = 30) const bool kClustered = true;
+layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
 // Image-based lighting as the deferred pass does it: 0 none, 1 split sum, 2 mobile.
-layout(constant_id = 32) const uint kIblMode = 0u;
+layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 
 layout(std430, binding = 16) readonly buffer ClusterRanges { uint clusterRanges[]; };
 layout(std430, binding = 17) readonly buffer LightIndices { uint lightIndices[]; };

@@ -9,6 +9,7 @@
 #include "candela/render/scene_resources.h"
 #include "clustered/cluster_grid.h"
 #include "clustered/gpu_cluster_params.h"
+#include "common/specialization_ids.h"
 #include "gbuffer_targets.h"
 #include "ibl/environment_descriptors.h"
 #include "mesh_vertex.h"
@@ -48,13 +49,6 @@ static_assert(kFirstTextureBinding + kTextureSlotCount <= kClusterRangesBinding)
 
 // Specialization constants shared with the lighting pass (shading_models.glsl, lights.glsl,
 // forward_transparent.frag).
-constexpr uint32_t kSubsurfaceConstant = 10;
-constexpr uint32_t kLegacyConstant = 11;
-constexpr uint32_t kSphereConstant = 20;
-constexpr uint32_t kTubeConstant = 21;
-constexpr uint32_t kSpotConstant = 22;
-constexpr uint32_t kClusteredConstant = 30;
-constexpr uint32_t kIblModeConstant = 32;
 
 void setMeshVertexInput(GraphicsPipelineDesc& desc) {
     desc.vertexSpirv = gbuffer_vert_spv;  // the G-buffer's vertex stage: same transform
@@ -114,17 +108,10 @@ ForwardTransparentPass::~ForwardTransparentPass() = default;
 
 void ForwardTransparentPass::buildShadingPipeline() {
     SpecializationConstants constants;
-    constants.set(kSubsurfaceConstant, features_.subsurface);
-    constants.set(kLegacyConstant, features_.legacyDiffuseSpecular);
-    constants.set(kSphereConstant, features_.sphereLights);
-    constants.set(kTubeConstant, features_.tubeLights);
-    constants.set(kSpotConstant, features_.spotLights);
-    constants.set(kClusteredConstant, features_.clustered);
+    setShadingConstants(constants, features_);
     // 0 none, 1 split sum, 2 mobile; the reference mode's per-pixel integration is for the
     // deferred pass's measurements: blended surfaces take the split sum under it.
-    constants.set(kIblModeConstant, !features_.ibl                      ? 0u
-                                    : *features_.ibl == IblMode::Mobile ? 2u
-                                                                        : 1u);
+    constants.set(SPEC_IBL_MODE, !features_.ibl ? 0u : *features_.ibl == IblMode::Mobile ? 2u : 1u);
 
     GraphicsPipelineDesc desc;
     setMeshVertexInput(desc);

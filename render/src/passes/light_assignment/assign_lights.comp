@@ -7,12 +7,13 @@
 // slice the tile range of its widest cross-section, per cell the row and column planes, the
 // occupancy bit and the box around the cluster's pixels.
 #include "common/clusters.glsl"
+#include "common/specialization_ids.h"
 #include "common/light_buffer.glsl"
 #include "common/light_cluster_tests.glsl"
 
 layout(local_size_x = 64) in;
 
-layout(constant_id = 0) const bool kWritePass = false;
+layout(constant_id = SPEC_ASSIGN_WRITE_PASS) const bool kWritePass = false;
 
 layout(std430, binding = 2) readonly buffer Occupancy { uvec2 tileMasks[]; };
 layout(std430, binding = 3) readonly buffer ClusterBounds { float clusterBounds[]; };

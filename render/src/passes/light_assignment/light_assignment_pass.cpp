@@ -5,6 +5,7 @@
 
 #include "candela/render/gpu_context.h"
 #include "clustered/gpu_cluster_params.h"
+#include "common/specialization_ids.h"
 #include "shaders/allocate_lists.comp.spv.h"
 #include "shaders/assign_lights.comp.spv.h"
 #include "shaders/sort_lists.comp.spv.h"
@@ -12,8 +13,6 @@
 namespace candela::render {
 
 namespace {
-
-constexpr uint32_t kWritePassConstant = 0;  // assign_lights.comp
 
 struct AssignPush {
     glm::mat4 view;
@@ -52,7 +51,7 @@ LightAssignmentPass::LightAssignmentPass(GpuContext& context) : context_(context
     };
     for (bool write : {false, true}) {
         SpecializationConstants constants;
-        constants.set(kWritePassConstant, write);
+        constants.set(SPEC_ASSIGN_WRITE_PASS, write);
         (write ? writePipeline_ : countPipeline_) = Pipeline::compute(
             context, assign_lights_comp_spv, assignBindings, sizeof(AssignPush), &constants);
     }

@@ -7,6 +7,7 @@
 // pixels show the sky.
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
+#include "common/specialization_ids.h"
 #include "common/ambient_lighting.glsl"
 #include "common/ibl.glsl"
 #include "common/light_buffer.glsl"
@@ -14,16 +15,16 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(constant_id = 30) const bool kClustered = true;
+layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
 // Stats variant: counts evaluated and lit light-pixel pairs per workgroup.
-layout(constant_id = 31) const bool kCountLightPairs = false;
+layout(constant_id = SPEC_COUNT_LIGHT_PAIRS) const bool kCountLightPairs = false;
 // Image-based lighting: none (no sky), split sum (prefiltered cube x LUT, eq. 7), mobile
 // (prefiltered cube x seed 001's analytic fit) or reference (eq. 6 by Monte Carlo per pixel).
 const uint kIblNone = 0u;
 const uint kIblSplitSum = 1u;
 const uint kIblMobile = 2u;
 const uint kIblReference = 3u;
-layout(constant_id = 32) const uint kIblMode = 0u;
+layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 
 layout(binding = 2) uniform sampler2D gbufferBaseColor;
 layout(binding = 3) uniform sampler2D gbufferNormalRoughMetal;

@@ -3,6 +3,7 @@
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_context.h"
 #include "clustered/gpu_cluster_params.h"
+#include "common/specialization_ids.h"
 #include "gbuffer_targets.h"
 #include "ibl/environment_descriptors.h"
 #include "shaders/lighting.comp.spv.h"
@@ -10,17 +11,6 @@
 namespace candela::render {
 
 namespace {
-// Specialization constant IDs declared in shading_models.glsl and lights.glsl.
-constexpr uint32_t kSubsurfaceConstant = 10;
-constexpr uint32_t kLegacyConstant = 11;
-constexpr uint32_t kSphereConstant = 20;
-constexpr uint32_t kTubeConstant = 21;
-constexpr uint32_t kSpotConstant = 22;
-// Declared in lighting.comp.
-constexpr uint32_t kClusteredConstant = 30;
-constexpr uint32_t kCountPairsConstant = 31;
-constexpr uint32_t kIblModeConstant = 32;
-
 struct Push {
     GpuClusterParams grid;
     uint32_t directionalCount;
@@ -57,6 +47,15 @@ std::vector<std::string> LightingFeatures::names() const {
     return out;
 }
 
+void setShadingConstants(SpecializationConstants& constants, const LightingFeatures& features) {
+    constants.set(SPEC_SUBSURFACE_ENABLED, features.subsurface);
+    constants.set(SPEC_LEGACY_DIFFUSE_SPECULAR_ENABLED, features.legacyDiffuseSpecular);
+    constants.set(SPEC_SPHERE_LIGHTS_ENABLED, features.sphereLights);
+    constants.set(SPEC_TUBE_LIGHTS_ENABLED, features.tubeLights);
+    constants.set(SPEC_SPOT_LIGHTS_ENABLED, features.spotLights);
+    constants.set(SPEC_CLUSTERED, features.clustered);
+}
+
 LightingPass::LightingPass(GpuContext& context)
     : context_(context), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {
     setFeatures({});
@@ -68,14 +67,9 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
     if (built_ && features == features_) return;
     features_ = features;
     SpecializationConstants constants;
-    constants.set(kSubsurfaceConstant, features.subsurface);
-    constants.set(kLegacyConstant, features.legacyDiffuseSpecular);
-    constants.set(kSphereConstant, features.sphereLights);
-    constants.set(kTubeConstant, features.tubeLights);
-    constants.set(kSpotConstant, features.spotLights);
-    constants.set(kClusteredConstant, features.clustered);
-    constants.set(kCountPairsConstant, features.countLightPairs);
-    constants.set(kIblModeConstant, iblModeConstant(features.ibl));
+    setShadingConstants(constants, features);
+    constants.set(SPEC_COUNT_LIGHT_PAIRS, features.countLightPairs);
+    constants.set(SPEC_IBL_MODE, iblModeConstant(features.ibl));
     const DescriptorBinding bindings[] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},

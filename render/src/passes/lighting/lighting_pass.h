@@ -34,6 +34,10 @@ struct LightingFeatures {
     std::vector<std::string> names() const;
 };
 
+// The shading models, light shapes and clustering of a variant as specialization constants
+// (common/specialization_ids.h): what the deferred and forward pipelines share.
+void setShadingConstants(SpecializationConstants& constants, const LightingFeatures& features);
+
 class LightingPass {
 public:
     explicit LightingPass(GpuContext& context);

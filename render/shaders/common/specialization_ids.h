@@ -1,0 +1,21 @@
+// Specialization-constant IDs, shared by the GLSL that declares them and the C++ that sets
+// them (valid in both languages): one number per switch, written once.
+#ifndef CANDELA_SPECIALIZATION_IDS_H
+#define CANDELA_SPECIALIZATION_IDS_H
+
+// Shading models a variant contains (shading_models.glsl).
+#define SPEC_SUBSURFACE_ENABLED 10
+#define SPEC_LEGACY_DIFFUSE_SPECULAR_ENABLED 11
+// Light shapes a variant contains (lights.glsl).
+#define SPEC_SPHERE_LIGHTS_ENABLED 20
+#define SPEC_TUBE_LIGHTS_ENABLED 21
+#define SPEC_SPOT_LIGHTS_ENABLED 22
+// Lighting and forward passes: clustered lists or brute force, pair counters, IBL mode
+// (0 none, 1 split sum, 2 mobile, 3 reference).
+#define SPEC_CLUSTERED 30
+#define SPEC_COUNT_LIGHT_PAIRS 31
+#define SPEC_IBL_MODE 32
+// assign_lights.comp: the counting or the writing walk.
+#define SPEC_ASSIGN_WRITE_PASS 40
+
+#endif
