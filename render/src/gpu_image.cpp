@@ -3,33 +3,15 @@
 #include <utility>
 
 #include "candela/render/gpu_context.h"
+#include "vk/image_creation.h"
 #include "vk/memory_allocator.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
 
-namespace {
-bool isDepthFormat(VkFormat format) {
-    return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM ||
-           format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
-}
-}  // namespace
-
 GpuImage::GpuImage(GpuContext& context, const ImageDesc& desc)
     : device_(context.device()), allocator_(&context.memoryAllocator()), desc_(desc) {
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.flags = desc.cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = desc.format;
-    info.extent = {desc.width, desc.height, 1};
-    info.mipLevels = desc.mipLevels;
-    info.arrayLayers = layers();
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = desc.usage;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    CANDELA_VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
+    image_ = createImage(device_, desc);
 
     try {
         memory_ = allocator_->allocateFor(image_, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
@@ -39,13 +21,8 @@ GpuImage::GpuImage(GpuContext& context, const ImageDesc& desc)
         throw;
     }
 
-    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    viewInfo.image = image_;
-    viewInfo.viewType = desc.cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D;
-    viewInfo.format = desc.format;
-    viewInfo.subresourceRange = {aspect(), 0, desc.mipLevels, 0, layers()};
     try {
-        CANDELA_VK_CHECK(vkCreateImageView(device_, &viewInfo, nullptr, &view_));
+        view_ = createWholeView(device_, image_, desc);
     } catch (...) {
         release();
         throw;
@@ -53,7 +30,7 @@ GpuImage::GpuImage(GpuContext& context, const ImageDesc& desc)
 }
 
 VkImageAspectFlags GpuImage::aspect() const {
-    return isDepthFormat(desc_.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+    return aspectOf(desc_.format);
 }
 
 GpuImage::~GpuImage() {

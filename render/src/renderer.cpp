@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 
@@ -10,6 +9,7 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/scene_resources.h"
 #include "clustered/cluster_light_lists.h"
+#include "cpu_clock.h"
 #include "frame_graph/frame_graph.h"
 #include "frame_graph/frame_graph_executor.h"
 #include "gbuffer_targets.h"
@@ -44,8 +44,6 @@ float exposureFromEv100(float ev100) {
 }
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // The shader variant a scene needs: only the shading models its drawn materials use and the
 // light shapes its lights have.
@@ -82,11 +80,6 @@ constexpr ImageState kDiscardAfterCopies{VK_IMAGE_LAYOUT_UNDEFINED,
                                          VK_PIPELINE_STAGE_2_TRANSFER_BIT, 0};
 constexpr ImageState kReadyToCopy{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                   VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
-constexpr VkPipelineStageFlags2 kRasterStages = kVertexStage | kFragmentStage;
-
-double millisecondsSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 }  // namespace
 
@@ -294,7 +287,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
 VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInputs& inputs,
                                       SceneResources* resources) {
     VkCommandBuffer cmd = submitter.begin();
-    const Clock::time_point start = Clock::now();
+    const CpuClock::time_point start = CpuClock::now();
     FrameGraph& g = *graph_;
     g.clear();
     ResourceHandle hdr = g.importImage("hdr", &hdr_, kDiscardAfterCopies, kReadyToCopy);

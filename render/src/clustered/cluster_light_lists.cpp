@@ -2,24 +2,19 @@
 
 #include <algorithm>
 #include <bit>
-#include <chrono>
 #include <cstring>
 #include <span>
 
 #include "candela/ecs/job_system.h"
 #include "candela/render/gpu_context.h"
 #include "clustered/light_assignment.h"
+#include "cpu_clock.h"
 #include "frame_graph/frame_graph_executor.h"
 #include "passes/depth_occupancy/depth_occupancy_pass.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/light_assignment/light_assignment_pass.h"
 
 namespace candela::render {
-
-namespace {
-using Clock = std::chrono::steady_clock;
-constexpr VkPipelineStageFlags2 kRasterStages = kVertexStage | kFragmentStage;
-}  // namespace
 
 bool ensureHostBuffer(GpuContext& context, GpuBuffer& buffer, VkDeviceSize bytes) {
     bytes = std::max<VkDeviceSize>(bytes, 16);
@@ -245,10 +240,9 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
         const FrameInputs* frame = in.frame;
         auto p =
             g.addPass("light_assignment_cpu", PassKind::Host, [this, frame, &stats](PassContext&) {
-                const Clock::time_point start = Clock::now();
+                const CpuClock::time_point start = CpuClock::now();
                 assignOnCpu(*frame, stats);
-                stats.lightAssignMs =
-                    std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+                stats.lightAssignMs = millisecondsSince(start);
             });
         p.read(tileMasks, Use::HostRead);
         p.read(clusterBounds, Use::HostRead);

@@ -18,10 +18,6 @@ void FrameGraph::PassBuilder::read(ResourceHandle h, Use use, VkPipelineStageFla
 ResourceHandle FrameGraph::PassBuilder::write(ResourceHandle h, Use use,
                                               VkPipelineStageFlags2 stages) {
     graph_.passes_[pass_].uses.push_back({h.id, h.version, use, stages});
-    if (h.id < graph_.resources_.size()) {
-        ResourceDecl& r = graph_.resources_[h.id];
-        r.versions = std::max(r.versions, h.version + 2);
-    }
     return {h.id, h.version + 1};
 }
 

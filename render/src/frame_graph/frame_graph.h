@@ -68,7 +68,6 @@ struct ResourceDecl {
     ImageState final;    // imported images: left in this state (layout UNDEFINED: as is)
     MemoryNeeds needs;   // transients
     bool hostReadsAfterFrame = false;  // imported buffers: read on the CPU once the frame ends
-    uint32_t versions = 1;
 };
 
 struct UseDecl {

@@ -1,23 +1,15 @@
 #include "frame_graph/frame_graph_executor.h"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "candela/render/frame_submitter.h"
 #include "candela/render/gpu_context.h"
+#include "cpu_clock.h"
+#include "vk/image_creation.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
-
-namespace {
-using Clock = std::chrono::steady_clock;
-
-bool isDepthFormat(VkFormat format) {
-    return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM ||
-           format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
-}
-}  // namespace
 
 ImageRef PassContext::image(ResourceHandle h) const {
     const ResourceDecl& r = graph_.resources()[h.id];
@@ -64,17 +56,7 @@ void FrameGraphExecutor::realize(FrameGraph& graph) {
         Transient& t = transients_[i];
         VkMemoryRequirements requirements{};
         if (r.image) {
-            VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-            info.imageType = VK_IMAGE_TYPE_2D;
-            info.format = r.imageDesc.format;
-            info.extent = {r.imageDesc.width, r.imageDesc.height, 1};
-            info.mipLevels = r.imageDesc.mipLevels;
-            info.arrayLayers = 1;
-            info.samples = VK_SAMPLE_COUNT_1_BIT;
-            info.tiling = VK_IMAGE_TILING_OPTIMAL;
-            info.usage = r.imageDesc.usage;
-            info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-            CANDELA_VK_CHECK(vkCreateImage(device, &info, nullptr, &t.image));
+            t.image = createImage(device, r.imageDesc);
             vkGetImageMemoryRequirements(device, t.image, &requirements);
         } else {
             VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -103,15 +85,7 @@ void FrameGraphExecutor::realize(FrameGraph& graph) {
         if (compiled_.lifetimes[i].first < 0) continue;  // culled: never bound, never used
         if (r.image) {
             CANDELA_VK_CHECK(vkBindImageMemory(device, t.image, pool_, compiled_.poolOffset[i]));
-            VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-            view.image = t.image;
-            view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-            view.format = r.imageDesc.format;
-            const VkImageAspectFlags aspect = isDepthFormat(r.imageDesc.format)
-                                                  ? VK_IMAGE_ASPECT_DEPTH_BIT
-                                                  : VK_IMAGE_ASPECT_COLOR_BIT;
-            view.subresourceRange = {aspect, 0, r.imageDesc.mipLevels, 0, 1};
-            CANDELA_VK_CHECK(vkCreateImageView(device, &view, nullptr, &t.view));
+            t.view = createWholeView(device, t.image, r.imageDesc);
         } else {
             CANDELA_VK_CHECK(vkBindBufferMemory(device, t.buffer, pool_, compiled_.poolOffset[i]));
         }
@@ -142,9 +116,8 @@ void FrameGraphExecutor::recordBarriers(VkCommandBuffer cmd, const FrameGraph& g
         barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         barrier.image = image.handle();
         const ImageDesc& desc = image.desc();
-        barrier.subresourceRange = {
-            isDepthFormat(desc.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT, 0,
-            desc.mipLevels, 0, desc.cube ? 6u : 1u};
+        barrier.subresourceRange = {aspectOf(desc.format), 0, desc.mipLevels, 0,
+                                    desc.cube ? 6u : 1u};
         images.push_back(barrier);
     }
     VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
@@ -161,12 +134,12 @@ void FrameGraphExecutor::execute(FrameGraph& graph, FrameSubmitter& submitter,
     stats_.reused = compiledValid_ && shape == shape_;
     stats_.compileMs = 0.0;
     if (!stats_.reused) {
-        const Clock::time_point start = Clock::now();
+        const CpuClock::time_point start = CpuClock::now();
         compiledValid_ = false;
         realize(graph);
         compiledValid_ = true;
         shape_ = shape;
-        stats_.compileMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        stats_.compileMs = millisecondsSince(start);
     }
     stats_.passes = uint32_t(compiled_.order.size());
     stats_.culledPasses = uint32_t(graph.passes().size() - compiled_.order.size());
@@ -196,10 +169,10 @@ void FrameGraphExecutor::execute(FrameGraph& graph, FrameSubmitter& submitter,
         if (pass.kind == PassKind::Host) {
             submitter.submit();
             submitter.waitIdle();
-            const Clock::time_point start = Clock::now();
+            const CpuClock::time_point start = CpuClock::now();
             PassContext context(*this, graph, VK_NULL_HANDLE);
             if (pass.execute) pass.execute(context);
-            hostMs_[i] = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+            hostMs_[i] = millisecondsSince(start);
             cmd = submitter.begin();
             continue;
         }

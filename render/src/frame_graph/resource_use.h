@@ -27,6 +27,8 @@ enum class Use : uint8_t {
 inline constexpr VkPipelineStageFlags2 kComputeStage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 inline constexpr VkPipelineStageFlags2 kFragmentStage = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 inline constexpr VkPipelineStageFlags2 kVertexStage = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT;
+// A draw's shaders: uniforms both the vertex and fragment stages read.
+inline constexpr VkPipelineStageFlags2 kRasterStages = kVertexStage | kFragmentStage;
 
 struct UseInfo {
     VkPipelineStageFlags2 stages = 0;

@@ -1,6 +1,5 @@
 #include "candela/render/environment.h"
 
-#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -8,6 +7,7 @@
 #include "candela/content/exr_image.h"
 #include "candela/content/file_bytes.h"
 #include "candela/render/gpu_context.h"
+#include "cpu_clock.h"
 #include "ibl/environment_cache.h"
 #include "ibl/environment_precompute.h"
 #include "vk/image_transfer.h"
@@ -17,13 +17,9 @@ namespace candela::render {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using Clock = CpuClock;
 constexpr uint32_t kTexelBytes = 8;  // RGBA16F
 constexpr VkDeviceSize kShBytes = 9 * 16;
-
-double millisecondsSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 content::EnvironmentMap uniformMap(float radiance) {
     content::EnvironmentMap map;

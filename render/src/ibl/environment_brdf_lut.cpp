@@ -1,9 +1,8 @@
 #include "ibl/environment_brdf_lut.h"
 
-#include <chrono>
-
 #include "candela/render/gpu_context.h"
 #include "candela/render/pipeline.h"
+#include "cpu_clock.h"
 #include "shaders/environment_brdf_lut.comp.spv.h"
 #include "vk/memory_barrier.h"
 #include "vk/sampler.h"
@@ -17,7 +16,7 @@ EnvironmentBrdfLut::EnvironmentBrdfLut(GpuContext& context)
               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
               MemoryLocation::HostVisible),
       sampler_(std::make_unique<Sampler>(context, SamplerDesc{VK_FILTER_LINEAR, false})) {
-    auto start = std::chrono::steady_clock::now();
+    const CpuClock::time_point start = CpuClock::now();
     const DescriptorBinding bindings[] = {
         {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT}};
     Pipeline pipeline = Pipeline::compute(context, environment_brdf_lut_comp_spv, bindings, 8);
@@ -49,8 +48,7 @@ EnvironmentBrdfLut::EnvironmentBrdfLut(GpuContext& context)
                         VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                         VK_ACCESS_2_SHADER_READ_BIT);
     });
-    buildMs_ =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    buildMs_ = millisecondsSince(start);
 }
 
 EnvironmentBrdfLut::~EnvironmentBrdfLut() = default;
