@@ -10,13 +10,16 @@ function(candela_add_shaders target)
   set(include_flags)
   foreach(dir ${ARG_INCLUDE_DIRS})
     list(APPEND include_flags -I${dir})
-    # .h: headers shared with C++ (common/specialization_ids.h).
+    # .h: headers shared with C++ (common/specialization_ids.h, common/shared_bindings.h).
     file(GLOB_RECURSE glsl_headers ${dir}/*.glsl ${dir}/*.h)
     list(APPEND shared_glsl ${glsl_headers})
   endforeach()
   set(headers)
   foreach(shader ${ARG_SHADERS})
     get_filename_component(abs ${shader} ABSOLUTE)
+    # Binding numbers of the shader's pass, shared with its C++ (<pass>_bindings.h beside it).
+    get_filename_component(shader_dir ${abs} DIRECTORY)
+    file(GLOB pass_headers ${shader_dir}/*_bindings.h)
     get_filename_component(file_name ${shader} NAME)
     string(REPLACE "." "_" var_name ${file_name})
     set(header ${out_dir}/${file_name}.spv.h)
@@ -24,7 +27,7 @@ function(candela_add_shaders target)
       OUTPUT ${header}
       COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.3 ${include_flags}
               --vn ${var_name}_spv -o ${header} ${abs}
-      DEPENDS ${abs} ${shared_glsl}
+      DEPENDS ${abs} ${shared_glsl} ${pass_headers}
       COMMENT "glslang ${file_name}"
       VERBATIM)
     list(APPEND headers ${header})

@@ -2,7 +2,9 @@
 #ifndef CANDELA_CAMERA_GLSL
 #define CANDELA_CAMERA_GLSL
 
-layout(std140, binding = 0) uniform CameraBlock {
+#include "common/shared_bindings.h"
+
+layout(std140, binding = CAMERA_BINDING) uniform CameraBlock {
     mat4 viewProjection;
     mat4 inverseViewProjection;
     vec4 cameraPosition;  // xyz, w unused

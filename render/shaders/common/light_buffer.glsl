@@ -1,11 +1,12 @@
 // The structure-of-arrays light buffer (render/src/lights/gpu_light_buffer.h): five vec4
-// streams of `capacity` lights each. A shader that includes this declares binding 1.
+// streams of `capacity` lights each. A shader that includes this declares LIGHT_BUFFER_BINDING.
 #ifndef CANDELA_LIGHT_BUFFER_GLSL
 #define CANDELA_LIGHT_BUFFER_GLSL
 
 #include "common/lights.glsl"
+#include "common/shared_bindings.h"
 
-layout(std430, binding = 1) readonly buffer LightData { vec4 lightData[]; };
+layout(std430, binding = LIGHT_BUFFER_BINDING) readonly buffer LightData { vec4 lightData[]; };
 
 Light loadLight(uint index, uint capacity) {
     vec4 s0 = lightData[index];

@@ -1,13 +1,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "ibl_bindings.h"
 // One mip of the environment cube from the mip above: a bilinear tap at the centre of each
 // destination texel is the average of the 2x2 source texels it covers.
 #include "common/ibl.glsl"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
-layout(binding = 0) uniform samplerCube source;  // a view of the mip above only
-layout(binding = 1, rgba16f) uniform writeonly image2DArray destination;
+layout(binding = IBL_BINDING_SOURCE) uniform samplerCube source;  // a view of the mip above only
+layout(binding = IBL_BINDING_DESTINATION, rgba16f) uniform writeonly image2DArray destination;
 
 layout(push_constant) uniform Push {
     uint faceSize;  // of the destination

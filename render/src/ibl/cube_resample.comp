@@ -1,13 +1,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "ibl_bindings.h"
 // Resamples a cube environment loaded from six faces (any size) into mip 0 of the
 // environment cube.
 #include "common/ibl.glsl"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
-layout(binding = 0) uniform samplerCube source;
-layout(binding = 1, rgba16f) uniform writeonly image2DArray cube;
+layout(binding = IBL_BINDING_SOURCE) uniform samplerCube source;
+layout(binding = IBL_BINDING_DESTINATION, rgba16f) uniform writeonly image2DArray cube;
 
 layout(push_constant) uniform Push {
     uint faceSize;

@@ -1,12 +1,13 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "ibl_bindings.h"
 // The environment BRDF LUT of eq. 8 over (NoV, roughness) at texel centres, packed as two
 // 16-bit UNORM values per texel (copied into an R16G16_UNORM image by the caller).
 #include "common/ibl.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 0) writeonly buffer Texels { uint texels[]; };
+layout(std430, binding = BRDF_LUT_BINDING_TEXELS) writeonly buffer Texels { uint texels[]; };
 
 layout(push_constant) uniform Push {
     uint size;

@@ -3,6 +3,7 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/pipeline.h"
 #include "cpu_clock.h"
+#include "ibl/ibl_bindings.h"
 #include "shaders/environment_brdf_lut.comp.spv.h"
 #include "vk/memory_barrier.h"
 #include "vk/sampler.h"
@@ -18,11 +19,11 @@ EnvironmentBrdfLut::EnvironmentBrdfLut(GpuContext& context)
       sampler_(std::make_unique<Sampler>(context, SamplerDesc{VK_FILTER_LINEAR, false})) {
     const CpuClock::time_point start = CpuClock::now();
     const DescriptorBinding bindings[] = {
-        {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT}};
+        {BRDF_LUT_BINDING_TEXELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT}};
     Pipeline pipeline = Pipeline::compute(context, environment_brdf_lut_comp_spv, bindings, 8);
     context.submitAndWait([&](VkCommandBuffer cmd) {
         VkDescriptorBufferInfo out{texels_.handle(), 0, VK_WHOLE_SIZE};
-        VkWriteDescriptorSet writes[] = {storageBufferWrite(0, &out)};
+        VkWriteDescriptorSet writes[] = {storageBufferWrite(BRDF_LUT_BINDING_TEXELS, &out)};
         struct {
             uint32_t size;
             uint32_t sampleCount;

@@ -9,6 +9,7 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/gpu_image.h"
 #include "candela/render/pipeline.h"
+#include "ibl/ibl_bindings.h"
 #include "shaders/cube_downsample.comp.spv.h"
 #include "shaders/cube_resample.comp.spv.h"
 #include "shaders/irradiance_sh.comp.spv.h"
@@ -27,12 +28,12 @@ constexpr float kMaxRadiance = 65000.0f;
 constexpr uint32_t kShFaceSize = 32;
 
 const DescriptorBinding kSampleAndWrite[] = {
-    {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+    {IBL_BINDING_SOURCE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {IBL_BINDING_DESTINATION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 const DescriptorBinding kSampleAndBuffer[] = {
-    {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-    {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {IBL_BINDING_SOURCE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {IBL_BINDING_DESTINATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 
 uint32_t groups(uint32_t size) {
@@ -138,7 +139,8 @@ void precomputeEnvironment(GpuContext& context, const content::EnvironmentMap& m
             VkDescriptorImageInfo in{sampler, input, VK_IMAGE_LAYOUT_GENERAL};
             if (input == source.view()) in.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
             VkDescriptorImageInfo out{VK_NULL_HANDLE, output, VK_IMAGE_LAYOUT_GENERAL};
-            VkWriteDescriptorSet writes[] = {sampledImageWrite(0, &in), storageImageWrite(1, &out)};
+            VkWriteDescriptorSet writes[] = {sampledImageWrite(IBL_BINDING_SOURCE, &in),
+                                             storageImageWrite(IBL_BINDING_DESTINATION, &out)};
             pipeline.bind(cmd);
             pipeline.pushDescriptors(cmd, writes);
             pipeline.pushConstants(cmd, push, pushBytes);
@@ -183,7 +185,8 @@ void precomputeEnvironment(GpuContext& context, const content::EnvironmentMap& m
         } shPush{std::max(cubeFace >> shMip, 1u), float(shMip)};
         VkDescriptorImageInfo in{trilinear.handle(), cube.view(), VK_IMAGE_LAYOUT_GENERAL};
         VkDescriptorBufferInfo out{irradianceSh.handle(), 0, VK_WHOLE_SIZE};
-        VkWriteDescriptorSet writes[] = {sampledImageWrite(0, &in), storageBufferWrite(1, &out)};
+        VkWriteDescriptorSet writes[] = {sampledImageWrite(IBL_BINDING_SOURCE, &in),
+                                         storageBufferWrite(IBL_BINDING_DESTINATION, &out)};
         projectSh.bind(cmd);
         projectSh.pushDescriptors(cmd, writes);
         projectSh.pushConstants(cmd, &shPush, sizeof(shPush));

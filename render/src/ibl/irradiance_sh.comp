@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "ibl_bindings.h"
 // Projects the environment onto order-2 spherical harmonics and convolves with the clamped
 // cosine, giving diffuse irradiance E(n) = sum A_l L_lm Y_lm(n) (Ramamoorthi and Hanrahan).
 // One workgroup: every thread sums a stride of the texels of one small mip, then the
@@ -9,8 +10,10 @@
 
 layout(local_size_x = 64) in;
 
-layout(binding = 0) uniform samplerCube environment;
-layout(std430, binding = 1) writeonly buffer Coefficients { vec4 coefficients[9]; };
+layout(binding = IBL_BINDING_SOURCE) uniform samplerCube environment;
+layout(std430, binding = IBL_BINDING_DESTINATION) writeonly buffer Coefficients {
+    vec4 coefficients[9];
+};
 
 layout(push_constant) uniform Push {
     uint faceSize;  // of the mip read

@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "ibl_bindings.h"
 // One roughness level of the prefiltered radiance cube (seed 000 PrefilterEnvMap, eq. 7's
 // first sum): GGX importance sampling with n = v = r, NoL weights, and filtered importance
 // sampling -- each sample reads the environment mip whose texel matches the solid angle the
@@ -8,8 +9,8 @@
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
-layout(binding = 0) uniform samplerCube environment;  // all mips, trilinear
-layout(binding = 1, rgba16f) uniform writeonly image2DArray destination;
+layout(binding = IBL_BINDING_SOURCE) uniform samplerCube environment;  // all mips, trilinear
+layout(binding = IBL_BINDING_DESTINATION, rgba16f) uniform writeonly image2DArray destination;
 
 layout(push_constant) uniform Push {
     uint faceSize;      // of the destination mip

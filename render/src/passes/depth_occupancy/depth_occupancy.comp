@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "depth_occupancy_bindings.h"
 // One workgroup per screen tile. For each depth slice of the tile: whether any pixel lies in
 // it (a 64-bit mask per tile) and the view-space box around those pixels. Light assignment
 // skips empty clusters and tests lights against the box of the surfaces actually there, so
@@ -8,14 +9,18 @@
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-layout(binding = 0) uniform sampler2D depthBuffer;
-layout(std430, binding = 1) writeonly buffer Occupancy { uvec2 tileMasks[]; };
+layout(binding = OCCUPANCY_BINDING_DEPTH) uniform sampler2D depthBuffer;
+layout(std430, binding = OCCUPANCY_BINDING_TILE_MASKS) writeonly buffer Occupancy {
+    uvec2 tileMasks[];
+};
 // Per cluster: min xyz, max xyz of its pixels in view space (unwritten where unoccupied).
-layout(std430, binding = 2) writeonly buffer ClusterBounds { float clusterBounds[]; };
+layout(std430, binding = OCCUPANCY_BINDING_CLUSTER_BOUNDS) writeonly buffer ClusterBounds {
+    float clusterBounds[];
+};
 // From depth_range.comp: [0] min, [1] max view depth (ordered bits); this pass writes the
 // slicing it derived into [2] sliceNear and [3] logRatio (float bits) for the CPU and the
 // lighting pass, so all three use bit-identical values.
-layout(std430, binding = 3) buffer DepthRange { uint range[]; };
+layout(std430, binding = OCCUPANCY_BINDING_DEPTH_RANGE) buffer DepthRange { uint range[]; };
 
 layout(push_constant) uniform Push {
     ClusterGridParams grid;

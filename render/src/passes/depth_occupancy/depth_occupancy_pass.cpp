@@ -4,6 +4,7 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/gpu_image.h"
 #include "clustered/gpu_cluster_params.h"
+#include "passes/depth_occupancy/depth_occupancy_bindings.h"
 #include "shaders/depth_occupancy.comp.spv.h"
 #include "shaders/depth_range.comp.spv.h"
 #include "vk/vk_check.h"
@@ -29,16 +30,21 @@ struct OccupancyPush {
 
 DepthOccupancyPass::DepthOccupancyPass(GpuContext& context) : context_(context) {
     const DescriptorBinding rangeBindings[] = {
-        {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {DEPTH_RANGE_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {DEPTH_RANGE_BINDING_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     };
     rangePipeline_ =
         Pipeline::compute(context, depth_range_comp_spv, rangeBindings, sizeof(RangePush));
     const DescriptorBinding occupancyBindings[] = {
-        {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {OCCUPANCY_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {OCCUPANCY_BINDING_TILE_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {OCCUPANCY_BINDING_CLUSTER_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {OCCUPANCY_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
     };
     occupancyPipeline_ = Pipeline::compute(context, depth_occupancy_comp_spv, occupancyBindings,
                                            sizeof(OccupancyPush));
@@ -66,8 +72,9 @@ void DepthOccupancyPass::recordMeasureRange(VkCommandBuffer cmd, const ImageRef&
     VkDescriptorImageInfo depthInfo{sampler_, depth.view(),
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorBufferInfo rangeInfo{depthRange.handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet rangeWrites[] = {sampledImageWrite(0, &depthInfo),
-                                                storageBufferWrite(1, &rangeInfo)};
+    const VkWriteDescriptorSet rangeWrites[] = {
+        sampledImageWrite(DEPTH_RANGE_BINDING_DEPTH, &depthInfo),
+        storageBufferWrite(DEPTH_RANGE_BINDING_RANGE, &rangeInfo)};
     RangePush rangePush{width, height, grid.nearPlane};
     rangePipeline_.bind(cmd);
     rangePipeline_.pushDescriptors(cmd, rangeWrites);
@@ -87,8 +94,10 @@ void DepthOccupancyPass::recordMarkOccupancy(VkCommandBuffer cmd, const ImageRef
     VkDescriptorBufferInfo maskInfo{outputs.tileMasks->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo boundsInfo{outputs.clusterBounds->handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {
-        sampledImageWrite(0, &depthInfo), storageBufferWrite(1, &maskInfo),
-        storageBufferWrite(2, &boundsInfo), storageBufferWrite(3, &rangeInfo)};
+        sampledImageWrite(OCCUPANCY_BINDING_DEPTH, &depthInfo),
+        storageBufferWrite(OCCUPANCY_BINDING_TILE_MASKS, &maskInfo),
+        storageBufferWrite(OCCUPANCY_BINDING_CLUSTER_BOUNDS, &boundsInfo),
+        storageBufferWrite(OCCUPANCY_BINDING_DEPTH_RANGE, &rangeInfo)};
     OccupancyPush push{toGpu(grid), width, height, {projectionScale.x, projectionScale.y}};
     occupancyPipeline_.bind(cmd);
     occupancyPipeline_.pushDescriptors(cmd, writes);

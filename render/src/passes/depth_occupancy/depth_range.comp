@@ -1,13 +1,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "depth_occupancy_bindings.h"
 // The nearest and farthest geometry in view depth: the cluster grid spends its slices there.
 #include "common/clusters.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 
-layout(binding = 0) uniform sampler2D depthBuffer;
+layout(binding = DEPTH_RANGE_BINDING_DEPTH) uniform sampler2D depthBuffer;
 // [0] min and [1] max view depth as ordered bits (cleared to 0xffffffff / 0 before).
-layout(std430, binding = 1) buffer DepthRange { uint range[]; };
+layout(std430, binding = DEPTH_RANGE_BINDING_RANGE) buffer DepthRange { uint range[]; };
 
 layout(push_constant) uniform Push {
     uvec2 size;

@@ -1,13 +1,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "forward_transparent_bindings.h"
 #include "common/specialization_ids.h"
 // Forward+ shading of alpha-blended (glTF BLEND) surfaces over the deferred result: the same
 // material evaluation as the G-buffer pass and the same lights, light code and cluster lists
 // as the deferred lighting pass, so a blended surface is lit exactly like an opaque one with
 // the same inputs. Output is straight alpha ("over", glTF 2.0 alphaMode BLEND): the pipeline
 // blends rgb with SRC_ALPHA, ONE_MINUS_SRC_ALPHA; emissive is part of the surface's colour.
-#define MATERIAL_BUFFER_BINDING 2
-#define MATERIAL_TEXTURE_BINDING 3
+#define MATERIAL_BUFFER_BINDING FORWARD_BINDING_MATERIALS
+#define MATERIAL_TEXTURE_BINDING FORWARD_BINDING_FIRST_TEXTURE
 #include "common/ambient_lighting.glsl"
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
@@ -19,14 +20,22 @@ layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
 // Image-based lighting as the deferred pass does it: 0 none, 1 split sum, 2 mobile.
 layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 
-layout(std430, binding = 16) readonly buffer ClusterRanges { uint clusterRanges[]; };
-layout(std430, binding = 17) readonly buffer LightIndices { uint lightIndices[]; };
+layout(std430, binding = FORWARD_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
+    uint clusterRanges[];
+};
+layout(std430, binding = FORWARD_BINDING_LIGHT_INDICES) readonly buffer LightIndices {
+    uint lightIndices[];
+};
 // The frame's slicing from depth_occupancy.comp ([2] sliceNear, [3] logRatio as float bits):
 // read here, as lists assigned on the device leave the host without it.
-layout(std430, binding = 18) readonly buffer DepthRange { uint depthRange[]; };
-layout(binding = 19) uniform samplerCube prefilteredCube;
-layout(binding = 20) uniform sampler2D environmentBrdfLut;
-layout(std430, binding = 21) readonly buffer IrradianceSh { vec4 irradianceSh[9]; };
+layout(std430, binding = FORWARD_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
+    uint depthRange[];
+};
+layout(binding = FORWARD_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
+layout(binding = FORWARD_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
+layout(std430, binding = FORWARD_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
+    vec4 irradianceSh[9];
+};
 
 // A cluster whose device-assigned list did not fit (light_assignment_pass.h): every light.
 const uint kListOverflow = 0xffffffffu;

@@ -13,6 +13,7 @@
 #include "gbuffer_targets.h"
 #include "ibl/environment_descriptors.h"
 #include "mesh_vertex.h"
+#include "passes/forward_transparent/forward_transparent_bindings.h"
 #include "shaders/forward_transparent.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
 #include "shaders/transparent_occupancy.frag.spv.h"
@@ -34,18 +35,7 @@ struct DrawPush {
     float prefilteredMipCount;
 };
 
-// Bindings of forward_transparent.frag.
-constexpr uint32_t kCameraBinding = 0;
-constexpr uint32_t kLightsBinding = 1;
-constexpr uint32_t kMaterialsBinding = 2;
-constexpr uint32_t kFirstTextureBinding = 3;
-constexpr uint32_t kClusterRangesBinding = 16;
-constexpr uint32_t kLightIndicesBinding = 17;
-constexpr uint32_t kDepthRangeBinding = 18;
-constexpr uint32_t kPrefilteredBinding = 19;
-constexpr uint32_t kBrdfLutBinding = 20;
-constexpr uint32_t kIrradianceShBinding = 21;
-static_assert(kFirstTextureBinding + kTextureSlotCount <= kClusterRangesBinding);
+static_assert(FORWARD_BINDING_FIRST_TEXTURE + kTextureSlotCount <= FORWARD_BINDING_CLUSTER_RANGES);
 
 // Specialization constants shared with the lighting pass (shading_models.glsl, lights.glsl,
 // forward_transparent.frag).
@@ -88,17 +78,22 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context)
     setMeshVertexInput(occupancy);
     occupancy.fragmentSpirv = transparent_occupancy_frag_spv;
     const DescriptorBinding occupancyBindings[] = {
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-        {1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+        {TRANSPARENT_OCCUPANCY_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {TRANSPARENT_OCCUPANCY_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {TRANSPARENT_OCCUPANCY_BINDING_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     occupancy_ = Pipeline::graphics(context, occupancy, occupancyBindings, sizeof(DrawPush));
 
     const DescriptorBinding mergeBindings[] = {
-        {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {MERGE_BINDING_TILE_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {MERGE_BINDING_CLUSTER_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {MERGE_BINDING_TRANSPARENT_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
     };
     merge_ = Pipeline::compute(context, transparent_occupancy_merge_comp_spv, mergeBindings,
                                sizeof(GpuClusterParams));
@@ -123,20 +118,27 @@ void ForwardTransparentPass::buildShadingPipeline() {
     desc.dynamicCullMode = true;
     desc.specialization = &constants;
     std::vector<DescriptorBinding> bindings = {
-        {kCameraBinding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
          VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-        {kLightsBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {kMaterialsBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {kClusterRangesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {kLightIndicesBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {kDepthRangeBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {kPrefilteredBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+        {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
-        {kBrdfLutBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {kIrradianceShBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_LIGHT_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_PREFILTERED, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_BRDF_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_IRRADIANCE_SH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
-        bindings.push_back({kFirstTextureBinding + slot, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+        bindings.push_back({FORWARD_BINDING_FIRST_TEXTURE + slot,
+                            VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                             VK_SHADER_STAGE_FRAGMENT_BIT});
     }
     shading_ = Pipeline::graphics(context_, desc, bindings, sizeof(DrawPush));
@@ -198,8 +200,10 @@ void ForwardTransparentPass::recordMarkOccupancy(VkCommandBuffer cmd, SceneResou
     VkDescriptorBufferInfo rangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo boundsInfo{in.bounds.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(0, &cameraInfo), sampledImageWrite(1, &depthInfo),
-        storageBufferWrite(2, &rangeInfo), storageBufferWrite(3, &boundsInfo)};
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        sampledImageWrite(TRANSPARENT_OCCUPANCY_BINDING_DEPTH, &depthInfo),
+        storageBufferWrite(TRANSPARENT_OCCUPANCY_BINDING_DEPTH_RANGE, &rangeInfo),
+        storageBufferWrite(TRANSPARENT_OCCUPANCY_BINDING_BOUNDS, &boundsInfo)};
     occupancy_.pushDescriptors(cmd, writes);
     DrawPush push{};
     push.grid = toGpu(grid);
@@ -222,9 +226,10 @@ void ForwardTransparentPass::recordMergeOccupancy(VkCommandBuffer cmd,
     VkDescriptorBufferInfo boundsInfo{in.bounds.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo maskInfo{in.tileMasks->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo clusterInfo{in.clusterBounds->handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet mergeWrites[] = {storageBufferWrite(0, &maskInfo),
-                                                storageBufferWrite(1, &clusterInfo),
-                                                storageBufferWrite(2, &boundsInfo)};
+    const VkWriteDescriptorSet mergeWrites[] = {
+        storageBufferWrite(MERGE_BINDING_TILE_MASKS, &maskInfo),
+        storageBufferWrite(MERGE_BINDING_CLUSTER_BOUNDS, &clusterInfo),
+        storageBufferWrite(MERGE_BINDING_TRANSPARENT_BOUNDS, &boundsInfo)};
     GpuClusterParams params = toGpu(grid);
     merge_.bind(cmd);
     merge_.pushDescriptors(cmd, mergeWrites);
@@ -274,19 +279,20 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
         const MaterialBinding& binding = resources.materialBinding(draw.material);
         std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
         std::vector<VkWriteDescriptorSet> writes = {
-            uniformBufferWrite(kCameraBinding, &cameraInfo),
-            storageBufferWrite(kLightsBinding, &lightInfo),
-            storageBufferWrite(kMaterialsBinding, &materialInfo),
-            storageBufferWrite(kClusterRangesBinding, &rangesInfo),
-            storageBufferWrite(kLightIndicesBinding, &indicesInfo),
-            storageBufferWrite(kDepthRangeBinding, &depthRangeInfo),
-            sampledImageWrite(kPrefilteredBinding, &in.environment->prefiltered),
-            sampledImageWrite(kBrdfLutBinding, &in.environment->brdfLut),
-            storageBufferWrite(kIrradianceShBinding, &in.environment->irradianceSh)};
+            uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+            storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
+            storageBufferWrite(FORWARD_BINDING_MATERIALS, &materialInfo),
+            storageBufferWrite(FORWARD_BINDING_CLUSTER_RANGES, &rangesInfo),
+            storageBufferWrite(FORWARD_BINDING_LIGHT_INDICES, &indicesInfo),
+            storageBufferWrite(FORWARD_BINDING_DEPTH_RANGE, &depthRangeInfo),
+            sampledImageWrite(FORWARD_BINDING_PREFILTERED, &in.environment->prefiltered),
+            sampledImageWrite(FORWARD_BINDING_BRDF_LUT, &in.environment->brdfLut),
+            storageBufferWrite(FORWARD_BINDING_IRRADIANCE_SH, &in.environment->irradianceSh)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-            writes.push_back(sampledImageWrite(kFirstTextureBinding + slot, &images[slot]));
+            writes.push_back(
+                sampledImageWrite(FORWARD_BINDING_FIRST_TEXTURE + slot, &images[slot]));
         }
         shading_.pushDescriptors(cmd, writes);
         vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided

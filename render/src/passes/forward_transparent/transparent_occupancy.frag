@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "forward_transparent_bindings.h"
 // Clustered light lists are built only for clusters that hold surfaces, from the G-buffer
 // depth (depth_occupancy.comp). Blended surfaces are not in the G-buffer, so this pass
 // rasterises them (in front of the opaque depth) and records, per cluster, the view-space box
@@ -8,12 +9,16 @@
 // would find no lights in its clusters.
 #include "common/clusters.glsl"
 
-layout(binding = 1) uniform sampler2D gbufferDepth;
+layout(binding = TRANSPARENT_OCCUPANCY_BINDING_DEPTH) uniform sampler2D gbufferDepth;
 // From depth_occupancy.comp: [2] sliceNear, [3] logRatio (float bits), the frame's slicing.
-layout(std430, binding = 2) readonly buffer DepthRange { uint range[]; };
+layout(std430, binding = TRANSPARENT_OCCUPANCY_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
+    uint range[];
+};
 // Ordered float bits (see orderedBits): mins of cluster c at [3c + axis], maxs at
 // [3 * clusterCount + 3c + axis]; cleared to 0xffffffff / 0 before the pass.
-layout(std430, binding = 3) buffer TransparentBounds { uint bounds[]; };
+layout(std430, binding = TRANSPARENT_OCCUPANCY_BINDING_BOUNDS) buffer TransparentBounds {
+    uint bounds[];
+};
 
 layout(push_constant) uniform Draw {
     mat4 world;

@@ -1,14 +1,19 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "forward_transparent_bindings.h"
 // Adds the clusters and boxes of blended fragments (transparent_occupancy.frag) to the opaque
 // occupancy (depth_occupancy.comp): one workgroup per tile, one invocation per slice.
 #include "common/clusters.glsl"
 
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 0) buffer Occupancy { uvec2 tileMasks[]; };
-layout(std430, binding = 1) buffer ClusterBounds { float clusterBounds[]; };
-layout(std430, binding = 2) readonly buffer TransparentBounds { uint bounds[]; };
+layout(std430, binding = MERGE_BINDING_TILE_MASKS) buffer Occupancy { uvec2 tileMasks[]; };
+layout(std430, binding = MERGE_BINDING_CLUSTER_BOUNDS) buffer ClusterBounds {
+    float clusterBounds[];
+};
+layout(std430, binding = MERGE_BINDING_TRANSPARENT_BOUNDS) readonly buffer TransparentBounds {
+    uint bounds[];
+};
 
 layout(push_constant) uniform Push {
     ClusterGridParams grid;

@@ -1,9 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "gbuffer_bindings.h"
 // Writes the G-buffer (layout in gbuffer_targets.h) and the emissive radiance into the HDR
 // target. Blended materials are drawn by the forward transparency pass instead.
-#define MATERIAL_BUFFER_BINDING 1
-#define MATERIAL_TEXTURE_BINDING 2
+#define MATERIAL_BUFFER_BINDING GBUFFER_BINDING_MATERIALS
+#define MATERIAL_TEXTURE_BINDING GBUFFER_BINDING_FIRST_TEXTURE
 #include "common/material.glsl"
 
 layout(push_constant) uniform Draw {

@@ -6,6 +6,7 @@
 #include "candela/render/scene_resources.h"
 #include "gbuffer_targets.h"
 #include "mesh_vertex.h"
+#include "passes/gbuffer/gbuffer_bindings.h"
 #include "shaders/gbuffer.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
 
@@ -17,8 +18,6 @@ struct DrawPush {
     glm::mat4 world;
     uint32_t material;
 };
-
-constexpr uint32_t kFirstTextureBinding = 2;
 
 }  // namespace
 
@@ -41,11 +40,13 @@ GBufferPass::GBufferPass(GpuContext& context) {
     desc.depthFormat = GBufferTargets::kDepthFormat;
     desc.dynamicCullMode = true;  // glTF: back faces of single-sided materials are not drawn
     std::vector<DescriptorBinding> bindings = {
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+        {GBUFFER_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
-        bindings.push_back({kFirstTextureBinding + slot, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+        bindings.push_back({GBUFFER_BINDING_FIRST_TEXTURE + slot,
+                            VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                             VK_SHADER_STAGE_FRAGMENT_BIT});
     }
     pipeline_ = Pipeline::graphics(context, desc, bindings, sizeof(DrawPush));
@@ -96,12 +97,14 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
         if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
         const MaterialBinding& binding = resources.materialBinding(draw.material);
         std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
-        std::vector<VkWriteDescriptorSet> writes = {uniformBufferWrite(0, &cameraInfo),
-                                                    storageBufferWrite(1, &materialInfo)};
+        std::vector<VkWriteDescriptorSet> writes = {
+            uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+            storageBufferWrite(GBUFFER_BINDING_MATERIALS, &materialInfo)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-            writes.push_back(sampledImageWrite(kFirstTextureBinding + slot, &images[slot]));
+            writes.push_back(
+                sampledImageWrite(GBUFFER_BINDING_FIRST_TEXTURE + slot, &images[slot]));
         }
         pipeline_.pushDescriptors(cmd, writes);
         vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided

@@ -1,4 +1,6 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
+#include "light_assignment_bindings.h"
 // One invocation per screen tile: reserves one contiguous block of the light index buffer for
 // the lists of the tile's occupied clusters (one atomic per tile, not per cluster), writes each
 // cluster's offset and count, and zeroes the counts so the write pass can use them as cursors.
@@ -11,15 +13,23 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 0) coherent buffer ClusterCounts { uint clusterCounts[]; };
-layout(std430, binding = 1) writeonly buffer ClusterRanges { uvec2 clusterRanges[]; };
+layout(std430, binding = ALLOCATE_BINDING_CLUSTER_COUNTS) coherent buffer ClusterCounts {
+    uint clusterCounts[];
+};
+layout(std430, binding = ALLOCATE_BINDING_CLUSTER_RANGES) writeonly buffer ClusterRanges {
+    uvec2 clusterRanges[];
+};
 // Index entries requested this frame; the host sets it to the directional light count, whose
 // indices lead the buffer. It keeps counting past the capacity, so the host learns the size
 // the frame needed.
-layout(std430, binding = 2) coherent buffer ListUsage { uint requested; };
-layout(std430, binding = 3) readonly buffer Occupancy { uvec2 tileMasks[]; };
+layout(std430, binding = ALLOCATE_BINDING_LIST_USAGE) coherent buffer ListUsage { uint requested; };
+layout(std430, binding = ALLOCATE_BINDING_OCCUPANCY) readonly buffer Occupancy {
+    uvec2 tileMasks[];
+};
 // Each tile's mask of the previous frame (this pass replaces it).
-layout(std430, binding = 4) buffer PreviousOccupancy { uvec2 previousMasks[]; };
+layout(std430, binding = ALLOCATE_BINDING_PREVIOUS_OCCUPANCY) buffer PreviousOccupancy {
+    uvec2 previousMasks[];
+};
 
 layout(push_constant) uniform Push {
     uint tileCount;

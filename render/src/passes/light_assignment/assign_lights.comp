@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "light_assignment_bindings.h"
 // Light-centric assignment, one invocation per light, run twice: the count pass adds the light
 // to the count of every cluster it touches, the write pass (after allocate_lists.comp gave
 // each cluster its range) stores the light's index there. The walk mirrors
@@ -15,13 +16,23 @@ layout(local_size_x = 64) in;
 
 layout(constant_id = SPEC_ASSIGN_WRITE_PASS) const bool kWritePass = false;
 
-layout(std430, binding = 2) readonly buffer Occupancy { uvec2 tileMasks[]; };
-layout(std430, binding = 3) readonly buffer ClusterBounds { float clusterBounds[]; };
-layout(std430, binding = 4) readonly buffer DepthRange { uint depthRange[]; };
+layout(std430, binding = ASSIGN_BINDING_OCCUPANCY) readonly buffer Occupancy { uvec2 tileMasks[]; };
+layout(std430, binding = ASSIGN_BINDING_CLUSTER_BOUNDS) readonly buffer ClusterBounds {
+    float clusterBounds[];
+};
+layout(std430, binding = ASSIGN_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
+    uint depthRange[];
+};
 // Count pass: lights per cluster. Write pass: the cursor into each cluster's range.
-layout(std430, binding = 5) coherent buffer ClusterCounts { uint clusterCounts[]; };
-layout(std430, binding = 6) readonly buffer ClusterRanges { uvec2 clusterRanges[]; };
-layout(std430, binding = 7) writeonly buffer LightIndices { uint lightIndices[]; };
+layout(std430, binding = ASSIGN_BINDING_CLUSTER_COUNTS) coherent buffer ClusterCounts {
+    uint clusterCounts[];
+};
+layout(std430, binding = ASSIGN_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
+    uvec2 clusterRanges[];
+};
+layout(std430, binding = ASSIGN_BINDING_LIGHT_INDICES) writeonly buffer LightIndices {
+    uint lightIndices[];
+};
 
 layout(push_constant) uniform Push {
     mat4 view;

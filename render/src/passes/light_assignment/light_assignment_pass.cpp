@@ -6,6 +6,7 @@
 #include "candela/render/gpu_context.h"
 #include "clustered/gpu_cluster_params.h"
 #include "common/specialization_ids.h"
+#include "passes/light_assignment/light_assignment_bindings.h"
 #include "shaders/allocate_lists.comp.spv.h"
 #include "shaders/assign_lights.comp.spv.h"
 #include "shaders/sort_lists.comp.spv.h"
@@ -41,13 +42,18 @@ uint32_t groups(uint32_t invocations) {
 
 LightAssignmentPass::LightAssignmentPass(GpuContext& context) : context_(context) {
     const DescriptorBinding assignBindings[] = {
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {ASSIGN_BINDING_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {ASSIGN_BINDING_CLUSTER_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {ASSIGN_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {ASSIGN_BINDING_CLUSTER_COUNTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {ASSIGN_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {ASSIGN_BINDING_LIGHT_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
     };
     for (bool write : {false, true}) {
         SpecializationConstants constants;
@@ -56,19 +62,27 @@ LightAssignmentPass::LightAssignmentPass(GpuContext& context) : context_(context
             context, assign_lights_comp_spv, assignBindings, sizeof(AssignPush), &constants);
     }
     const DescriptorBinding allocateBindings[] = {
-        {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {ALLOCATE_BINDING_CLUSTER_COUNTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {ALLOCATE_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {ALLOCATE_BINDING_LIST_USAGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {ALLOCATE_BINDING_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {ALLOCATE_BINDING_PREVIOUS_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
     };
     allocatePipeline_ =
         Pipeline::compute(context, allocate_lists_comp_spv, allocateBindings, sizeof(AllocatePush));
     const DescriptorBinding sortBindings[] = {
-        {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {SORT_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {SORT_BINDING_LIGHT_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {SORT_BINDING_CLUSTER_COUNTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {SORT_BINDING_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     };
     sortPipeline_ = Pipeline::compute(context, sort_lists_comp_spv, sortBindings, sizeof(SortPush));
     usage_ =
@@ -136,10 +150,13 @@ void LightAssignmentPass::recordWalk(VkCommandBuffer cmd, const Inputs& in,
                                      const Pipeline& pipeline) const {
     const AssignDescriptors d = describe(in, clusterCounts_, usage_, previousMasks_);
     const VkWriteDescriptorSet writes[] = {
-        storageBufferWrite(1, &d.lights), storageBufferWrite(2, &d.masks),
-        storageBufferWrite(3, &d.bounds), storageBufferWrite(4, &d.range),
-        storageBufferWrite(5, &d.counts), storageBufferWrite(6, &d.ranges),
-        storageBufferWrite(7, &d.indices)};
+        storageBufferWrite(LIGHT_BUFFER_BINDING, &d.lights),
+        storageBufferWrite(ASSIGN_BINDING_OCCUPANCY, &d.masks),
+        storageBufferWrite(ASSIGN_BINDING_CLUSTER_BOUNDS, &d.bounds),
+        storageBufferWrite(ASSIGN_BINDING_DEPTH_RANGE, &d.range),
+        storageBufferWrite(ASSIGN_BINDING_CLUSTER_COUNTS, &d.counts),
+        storageBufferWrite(ASSIGN_BINDING_CLUSTER_RANGES, &d.ranges),
+        storageBufferWrite(ASSIGN_BINDING_LIGHT_INDICES, &d.indices)};
     AssignPush assign{in.view,
                       toGpu(*in.grid),
                       {in.width, in.height},
@@ -159,9 +176,11 @@ void LightAssignmentPass::recordCount(VkCommandBuffer cmd, const Inputs& in) con
 void LightAssignmentPass::recordAllocate(VkCommandBuffer cmd, const Inputs& in) const {
     const AssignDescriptors d = describe(in, clusterCounts_, usage_, previousMasks_);
     const VkWriteDescriptorSet writes[] = {
-        storageBufferWrite(0, &d.counts), storageBufferWrite(1, &d.ranges),
-        storageBufferWrite(2, &d.usage), storageBufferWrite(3, &d.masks),
-        storageBufferWrite(4, &d.previous)};
+        storageBufferWrite(ALLOCATE_BINDING_CLUSTER_COUNTS, &d.counts),
+        storageBufferWrite(ALLOCATE_BINDING_CLUSTER_RANGES, &d.ranges),
+        storageBufferWrite(ALLOCATE_BINDING_LIST_USAGE, &d.usage),
+        storageBufferWrite(ALLOCATE_BINDING_OCCUPANCY, &d.masks),
+        storageBufferWrite(ALLOCATE_BINDING_PREVIOUS_OCCUPANCY, &d.previous)};
     AllocatePush allocate{in.grid->tileCount(), in.lightIndexCapacity};
     allocatePipeline_.bind(cmd);
     allocatePipeline_.pushDescriptors(cmd, writes);
@@ -176,8 +195,10 @@ void LightAssignmentPass::recordWrite(VkCommandBuffer cmd, const Inputs& in) con
 void LightAssignmentPass::recordSort(VkCommandBuffer cmd, const Inputs& in) const {
     const AssignDescriptors d = describe(in, clusterCounts_, usage_, previousMasks_);
     const VkWriteDescriptorSet writes[] = {
-        storageBufferWrite(0, &d.ranges), storageBufferWrite(1, &d.indices),
-        storageBufferWrite(2, &d.counts), storageBufferWrite(3, &d.masks)};
+        storageBufferWrite(SORT_BINDING_CLUSTER_RANGES, &d.ranges),
+        storageBufferWrite(SORT_BINDING_LIGHT_INDICES, &d.indices),
+        storageBufferWrite(SORT_BINDING_CLUSTER_COUNTS, &d.counts),
+        storageBufferWrite(SORT_BINDING_OCCUPANCY, &d.masks)};
     SortPush sort{in.grid->tileCount()};
     sortPipeline_.bind(cmd);
     sortPipeline_.pushDescriptors(cmd, writes);

@@ -1,4 +1,6 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
+#include "light_assignment_bindings.h"
 // One workgroup per screen tile, one invocation per depth slice: the write pass filled each
 // list in whatever order its atomics ran; sorting restores ascending light order, so the
 // clustered sum is the brute-force sum with zeros left out (the CPU path's order) and every
@@ -10,10 +12,14 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 0) readonly buffer ClusterRanges { uvec2 clusterRanges[]; };
-layout(std430, binding = 1) buffer LightIndices { uint lightIndices[]; };
-layout(std430, binding = 2) writeonly buffer ClusterCounts { uint clusterCounts[]; };
-layout(std430, binding = 3) readonly buffer Occupancy { uvec2 tileMasks[]; };
+layout(std430, binding = SORT_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
+    uvec2 clusterRanges[];
+};
+layout(std430, binding = SORT_BINDING_LIGHT_INDICES) buffer LightIndices { uint lightIndices[]; };
+layout(std430, binding = SORT_BINDING_CLUSTER_COUNTS) writeonly buffer ClusterCounts {
+    uint clusterCounts[];
+};
+layout(std430, binding = SORT_BINDING_OCCUPANCY) readonly buffer Occupancy { uvec2 tileMasks[]; };
 
 layout(push_constant) uniform Push {
     uint tileCount;

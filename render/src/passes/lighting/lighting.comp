@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "lighting_bindings.h"
 // Deferred lighting: reads the G-buffer and adds the lit radiance to the HDR target, which
 // holds emissive already. Clustered: each pixel evaluates its cluster's light list (plus the
 // directional lights); brute force: every light at every pixel, the reference. With an
@@ -26,31 +27,42 @@ const uint kIblMobile = 2u;
 const uint kIblReference = 3u;
 layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 
-layout(binding = 2) uniform sampler2D gbufferBaseColor;
-layout(binding = 3) uniform sampler2D gbufferNormalRoughMetal;
-layout(binding = 4) uniform sampler2D gbufferSpecularModel;
-layout(binding = 5) uniform sampler2D gbufferCustomData;
-layout(binding = 6) uniform sampler2D gbufferDepth;
-layout(binding = 7, rgba32f) uniform image2D hdrRadiance;
-layout(std430, binding = 8) readonly buffer ClusterRanges { uint clusterRanges[]; };
-layout(std430, binding = 9) readonly buffer LightIndices { uint lightIndices[]; };
+layout(binding = LIGHTING_BINDING_GBUFFER_BASE_COLOR) uniform sampler2D gbufferBaseColor;
+layout(binding = LIGHTING_BINDING_GBUFFER_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
+layout(binding = LIGHTING_BINDING_GBUFFER_SPECULAR_MODEL) uniform sampler2D gbufferSpecularModel;
+layout(binding = LIGHTING_BINDING_GBUFFER_CUSTOM_DATA) uniform sampler2D gbufferCustomData;
+layout(binding = LIGHTING_BINDING_GBUFFER_DEPTH) uniform sampler2D gbufferDepth;
+layout(binding = LIGHTING_BINDING_HDR, rgba32f) uniform image2D hdrRadiance;
+layout(std430, binding = LIGHTING_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
+    uint clusterRanges[];
+};
+layout(std430, binding = LIGHTING_BINDING_LIGHT_INDICES) readonly buffer LightIndices {
+    uint lightIndices[];
+};
 // Per workgroup: evaluated pairs, lit pairs (each fits 32 bits: 64 pixels x 2^26 lights).
-layout(std430, binding = 10) writeonly buffer PairCounts { uvec2 pairCounts[]; };
+layout(std430, binding = LIGHTING_BINDING_PAIR_COUNTS) writeonly buffer PairCounts {
+    uvec2 pairCounts[];
+};
 // The slicing the depth occupancy pass derived ([2] sliceNear, [3] logRatio as float bits):
 // read here rather than pushed, so lists assigned on the device need no host round trip.
-layout(std430, binding = 11) readonly buffer DepthRange { uint depthRange[]; };
+layout(std430, binding = LIGHTING_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
+    uint depthRange[];
+};
 
 // A cluster whose list did not fit the device-assigned index buffer (light_assignment_pass.h):
 // it evaluates every light instead, so no light is ever dropped.
 const uint kListOverflow = 0xffffffffu;
 
-layout(binding = 12) uniform samplerCube environmentCube;  // all mips
-layout(binding = 13) uniform samplerCube prefilteredCube;  // roughness per mip
-layout(binding = 14) uniform sampler2D environmentBrdfLut;
-layout(std430, binding = 15) readonly buffer IrradianceSh { vec4 irradianceSh[9]; };
+layout(binding = LIGHTING_BINDING_ENVIRONMENT) uniform samplerCube environmentCube;  // all mips
+// Roughness per mip.
+layout(binding = LIGHTING_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
+layout(binding = LIGHTING_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
+layout(std430, binding = LIGHTING_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
+    vec4 irradianceSh[9];
+};
 // Reference mode: luminance importance sampling of environmentCube's mip 0
 // (render/src/ibl/environment_sampling_table.h).
-layout(std430, binding = 16) readonly buffer EnvironmentSampling {
+layout(std430, binding = LIGHTING_BINDING_SAMPLING_TABLE) readonly buffer EnvironmentSampling {
     uint faceSize;
     uint texelCount;
     uint pad0;

@@ -6,6 +6,7 @@
 #include "common/specialization_ids.h"
 #include "gbuffer_targets.h"
 #include "ibl/environment_descriptors.h"
+#include "passes/lighting/lighting_bindings.h"
 #include "shaders/lighting.comp.spv.h"
 
 namespace candela::render {
@@ -71,23 +72,37 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
     constants.set(SPEC_COUNT_LIGHT_PAIRS, features.countLightPairs);
     constants.set(SPEC_IBL_MODE, iblModeConstant(features.ibl));
     const DescriptorBinding bindings[] = {
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {6, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-        {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {12, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {13, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {14, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {15, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {16, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_GBUFFER_BASE_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_GBUFFER_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_GBUFFER_SPECULAR_MODEL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_GBUFFER_CUSTOM_DATA, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_GBUFFER_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_LIGHT_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_PAIR_COUNTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_PREFILTERED, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_BRDF_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_IRRADIANCE_SH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_SAMPLING_TABLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
     };
     pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
     built_ = true;
@@ -114,15 +129,23 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
     VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
     const EnvironmentDescriptors& env = *in.environment;
     const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(0, &cameraInfo),         storageBufferWrite(1, &lightInfo),
-        sampledImageWrite(2, &images[0]),           sampledImageWrite(3, &images[1]),
-        sampledImageWrite(4, &images[2]),           sampledImageWrite(5, &images[3]),
-        sampledImageWrite(6, &images[4]),           storageImageWrite(7, &hdrInfo),
-        storageBufferWrite(8, &rangesInfo),         storageBufferWrite(9, &indicesInfo),
-        storageBufferWrite(10, &countsInfo),        storageBufferWrite(11, &depthRangeInfo),
-        sampledImageWrite(12, &env.environment),    sampledImageWrite(13, &env.prefiltered),
-        sampledImageWrite(14, &env.brdfLut),        storageBufferWrite(15, &env.irradianceSh),
-        storageBufferWrite(16, &env.samplingTable),
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
+        sampledImageWrite(LIGHTING_BINDING_GBUFFER_BASE_COLOR, &images[0]),
+        sampledImageWrite(LIGHTING_BINDING_GBUFFER_NORMAL, &images[1]),
+        sampledImageWrite(LIGHTING_BINDING_GBUFFER_SPECULAR_MODEL, &images[2]),
+        sampledImageWrite(LIGHTING_BINDING_GBUFFER_CUSTOM_DATA, &images[3]),
+        sampledImageWrite(LIGHTING_BINDING_GBUFFER_DEPTH, &images[4]),
+        storageImageWrite(LIGHTING_BINDING_HDR, &hdrInfo),
+        storageBufferWrite(LIGHTING_BINDING_CLUSTER_RANGES, &rangesInfo),
+        storageBufferWrite(LIGHTING_BINDING_LIGHT_INDICES, &indicesInfo),
+        storageBufferWrite(LIGHTING_BINDING_PAIR_COUNTS, &countsInfo),
+        storageBufferWrite(LIGHTING_BINDING_DEPTH_RANGE, &depthRangeInfo),
+        sampledImageWrite(LIGHTING_BINDING_ENVIRONMENT, &env.environment),
+        sampledImageWrite(LIGHTING_BINDING_PREFILTERED, &env.prefiltered),
+        sampledImageWrite(LIGHTING_BINDING_BRDF_LUT, &env.brdfLut),
+        storageBufferWrite(LIGHTING_BINDING_IRRADIANCE_SH, &env.irradianceSh),
+        storageBufferWrite(LIGHTING_BINDING_SAMPLING_TABLE, &env.samplingTable),
     };
     Push push{toGpu(*in.grid), in.directionalCount, in.skyIntensity, env.prefilteredMipCount,
               in.referenceSamples};

@@ -1,11 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "tonemap_bindings.h"
 // HDR scene radiance -> exposed, tonemapped, sRGB-encoded 8-bit output.
 #include "common/color.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(binding = 0, rgba32f) uniform readonly image2D hdrRadiance;
-layout(binding = 1, rgba8) uniform writeonly image2D ldrOutput;
+layout(binding = TONEMAP_BINDING_HDR, rgba32f) uniform readonly image2D hdrRadiance;
+layout(binding = TONEMAP_BINDING_LDR, rgba8) uniform writeonly image2D ldrOutput;
 
 layout(push_constant) uniform Push {
     float exposure;  // exposureFromEv100 on the CPU, so one number travels

@@ -1,14 +1,15 @@
 #include "passes/tonemap/tonemap_pass.h"
 
 #include "candela/render/gpu_image.h"
+#include "passes/tonemap/tonemap_bindings.h"
 #include "shaders/tonemap.comp.spv.h"
 
 namespace candela::render {
 
 TonemapPass::TonemapPass(GpuContext& context) {
     const DescriptorBinding bindings[] = {
-        {0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+        {TONEMAP_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+        {TONEMAP_BINDING_LDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
     };
     pipeline_ = Pipeline::compute(context, tonemap_comp_spv, bindings, sizeof(float));
 }
@@ -17,8 +18,8 @@ void TonemapPass::record(VkCommandBuffer cmd, const ImageRef& hdr, const ImageRe
                          float exposure) const {
     VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorImageInfo ldrInfo{VK_NULL_HANDLE, ldr.view(), VK_IMAGE_LAYOUT_GENERAL};
-    const VkWriteDescriptorSet writes[] = {storageImageWrite(0, &hdrInfo),
-                                           storageImageWrite(1, &ldrInfo)};
+    const VkWriteDescriptorSet writes[] = {storageImageWrite(TONEMAP_BINDING_HDR, &hdrInfo),
+                                           storageImageWrite(TONEMAP_BINDING_LDR, &ldrInfo)};
     pipeline_.bind(cmd);
     pipeline_.pushDescriptors(cmd, writes);
     pipeline_.pushConstants(cmd, &exposure, sizeof(exposure));

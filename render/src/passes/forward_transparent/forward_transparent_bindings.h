@@ -1,0 +1,30 @@
+// Bindings of the transparency shaders (forward_transparent.frag, transparent_occupancy.frag,
+// transparent_occupancy_merge.comp), shared by them and forward_transparent_pass.cpp (valid
+// in C++ and GLSL). Camera and lights: common/shared_bindings.h.
+#ifndef CANDELA_FORWARD_TRANSPARENT_BINDINGS_H
+#define CANDELA_FORWARD_TRANSPARENT_BINDINGS_H
+
+#include "common/shared_bindings.h"
+
+// forward_transparent.frag. Materials: common/material.glsl, the array then one sampler per
+// TextureSlot (FORWARD_BINDING_FIRST_TEXTURE up to FORWARD_BINDING_CLUSTER_RANGES).
+#define FORWARD_BINDING_MATERIALS 2
+#define FORWARD_BINDING_FIRST_TEXTURE 3
+#define FORWARD_BINDING_CLUSTER_RANGES 16
+#define FORWARD_BINDING_LIGHT_INDICES 17
+#define FORWARD_BINDING_DEPTH_RANGE 18
+#define FORWARD_BINDING_PREFILTERED 19
+#define FORWARD_BINDING_BRDF_LUT 20
+#define FORWARD_BINDING_IRRADIANCE_SH 21
+
+// transparent_occupancy.frag (camera in its vertex stage, gbuffer.vert).
+#define TRANSPARENT_OCCUPANCY_BINDING_DEPTH 1
+#define TRANSPARENT_OCCUPANCY_BINDING_DEPTH_RANGE 2
+#define TRANSPARENT_OCCUPANCY_BINDING_BOUNDS 3
+
+// transparent_occupancy_merge.comp.
+#define MERGE_BINDING_TILE_MASKS 0
+#define MERGE_BINDING_CLUSTER_BOUNDS 1
+#define MERGE_BINDING_TRANSPARENT_BOUNDS 2
+
+#endif

@@ -1,0 +1,12 @@
+// Bindings of gbuffer.vert and gbuffer.frag, shared by them and gbuffer_pass.cpp (valid in
+// C++ and GLSL). The camera: common/shared_bindings.h.
+#ifndef CANDELA_GBUFFER_BINDINGS_H
+#define CANDELA_GBUFFER_BINDINGS_H
+
+#include "common/shared_bindings.h"
+
+// common/material.glsl: the material array, then one sampler per TextureSlot.
+#define GBUFFER_BINDING_MATERIALS 1
+#define GBUFFER_BINDING_FIRST_TEXTURE 2
+
+#endif

@@ -1,0 +1,26 @@
+// Bindings of lighting.comp, shared by the shader and lighting_pass.cpp (valid in C++ and
+// GLSL). Camera and lights: common/shared_bindings.h.
+#ifndef CANDELA_LIGHTING_BINDINGS_H
+#define CANDELA_LIGHTING_BINDINGS_H
+
+#include "common/shared_bindings.h"
+
+// The G-buffer (gbuffer_targets.h order) and its depth.
+#define LIGHTING_BINDING_GBUFFER_BASE_COLOR 2
+#define LIGHTING_BINDING_GBUFFER_NORMAL 3
+#define LIGHTING_BINDING_GBUFFER_SPECULAR_MODEL 4
+#define LIGHTING_BINDING_GBUFFER_CUSTOM_DATA 5
+#define LIGHTING_BINDING_GBUFFER_DEPTH 6
+#define LIGHTING_BINDING_HDR 7
+#define LIGHTING_BINDING_CLUSTER_RANGES 8
+#define LIGHTING_BINDING_LIGHT_INDICES 9
+#define LIGHTING_BINDING_PAIR_COUNTS 10
+#define LIGHTING_BINDING_DEPTH_RANGE 11
+// Image-based lighting (ibl/environment_descriptors.h).
+#define LIGHTING_BINDING_ENVIRONMENT 12
+#define LIGHTING_BINDING_PREFILTERED 13
+#define LIGHTING_BINDING_BRDF_LUT 14
+#define LIGHTING_BINDING_IRRADIANCE_SH 15
+#define LIGHTING_BINDING_SAMPLING_TABLE 16
+
+#endif
