@@ -6,6 +6,7 @@
 #include <numbers>
 #include <utility>
 
+#include "candela/content/light_types.h"
 #include "candela/content/light_units.h"
 
 namespace candela::content {
@@ -46,43 +47,54 @@ bool anyRejected(const ValueProblems& problems) {
                        [](const ValueProblem& p) { return !p.clamped; });
 }
 
+// Each field by its rule in the light type table (content/light_types.h); cone angles
+// together, for the types that use them.
 ValueProblems validateLight(Light& light) {
     ValueProblems problems;
-    for (float c : light.color) {
-        if (std::isnan(c) || c < 0) {
-            reject(problems, "color", "colour channels must be finite and not negative");
-            break;
+    for (const LightFieldInfo& f : kLightFieldTable) {
+        const std::string unit = f.unit.empty() ? "" : " " + std::string(f.unit);
+        switch (f.rule) {
+            case LightFieldRule::ColorChannels: {
+                std::array<float, 3>& channels = light.*f.channels;
+                for (float c : channels) {
+                    if (std::isnan(c) || c < 0) {
+                        reject(problems, f.name, "colour channels must be finite and not negative");
+                        break;
+                    }
+                }
+                for (float& c : channels)
+                    clampAbove(problems, f.name, c, f.max, unit.c_str());
+                break;
+            }
+            case LightFieldRule::NonNegative: {
+                float& value = light.*f.scalar;
+                if (std::isnan(value) || value < 0) {
+                    reject(problems, f.name, "must not be negative, got " + text(value));
+                }
+                clampAbove(problems, f.name, value, f.max, unit.c_str());
+                break;
+            }
+            case LightFieldRule::Positive: {
+                float& value = light.*f.scalar;
+                if (!(value > 0)) {
+                    reject(problems, f.name, "must be greater than 0, got " + text(value));
+                } else {
+                    clampAbove(problems, f.name, value, f.max, unit.c_str());
+                }
+                break;
+            }
+            case LightFieldRule::FiniteNonNegative: {
+                const float value = light.*f.scalar;
+                if (!finite(value) || value < 0) {
+                    reject(problems, f.name, "must be finite and not negative, got " + text(value));
+                }
+                break;
+            }
+            case LightFieldRule::ConeAngle:
+                break;
         }
     }
-    for (float& c : light.color)
-        clampAbove(problems, "color", c, kMaxLightColorChannel, "");
-    if (std::isnan(light.lumens) || light.lumens < 0) {
-        reject(problems, "lumens", "must not be negative, got " + text(light.lumens));
-    }
-    clampAbove(problems, "lumens", light.lumens, kMaxLumens, " lm");
-    if (std::isnan(light.lux) || light.lux < 0) {
-        reject(problems, "lux", "must not be negative, got " + text(light.lux));
-    }
-    clampAbove(problems, "lux", light.lux, kMaxLux, " lux");
-    if (!finite(light.attenuationRadius) && light.attenuationRadius > 0) {
-        clampAbove(problems, "attenuationRadius", light.attenuationRadius, kMaxAttenuationRadius,
-                   " m");
-    } else if (!(light.attenuationRadius > 0)) {
-        reject(problems, "attenuationRadius",
-               "must be greater than 0, got " + text(light.attenuationRadius));
-    } else {
-        clampAbove(problems, "attenuationRadius", light.attenuationRadius, kMaxAttenuationRadius,
-                   " m");
-    }
-    if (!finite(light.sourceRadius) || light.sourceRadius < 0) {
-        reject(problems, "sourceRadius",
-               "must be finite and not negative, got " + text(light.sourceRadius));
-    }
-    if (!finite(light.sourceLength) || light.sourceLength < 0) {
-        reject(problems, "sourceLength",
-               "must be finite and not negative, got " + text(light.sourceLength));
-    }
-    if (light.type == LightType::Spot) {
+    if (usesField(light.type, LightField::OuterConeAngle)) {
         const float inner = light.innerConeAngle;
         const float outer = light.outerConeAngle;
         if (!(outer > 0 && outer <= kPi / 2)) {

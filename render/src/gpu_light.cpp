@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "candela/content/component_validation.h"
+#include "lights/gpu_light_types.h"
 
 namespace candela::render {
 
@@ -34,12 +35,11 @@ GpuLight packLight(const LightInstance& instance) {
     store(g.position, instance.position);
     float radius = std::max(finiteOr(l.attenuationRadius, 0.0f), 0.0f);
     g.invAttenuationRadius = 1.0f / std::max(radius, 1e-6f);
-    float photometric = l.type == content::LightType::Directional
-                            ? l.lux
-                            : l.lumens / (4.0f * std::numbers::pi_v<float>);  // lm -> cd
+    const bool inLux = content::lightTypeInfo(l.type).power == content::LightPower::Lux;
+    float photometric = inLux ? l.lux : l.lumens / (4.0f * std::numbers::pi_v<float>);  // lm -> cd
     photometric = std::max(finiteOr(photometric, 0.0f), 0.0f);
     // A zero attenuation radius means the light reaches nothing.
-    if (radius == 0.0f && l.type != content::LightType::Directional) photometric = 0.0f;
+    if (radius == 0.0f && !inEveryCluster(l)) photometric = 0.0f;
     // Capped in double at the brightest the loaders and the editor let through, so a light set
     // directly by code cannot overflow to Inf and make NaN texels either.
     constexpr double kMaxIntensity =
@@ -53,17 +53,7 @@ GpuLight packLight(const LightInstance& instance) {
     g.sourceLength = std::max(finiteOr(l.sourceLength, 0.0f), 0.0f);
     store(g.direction, unitOr(instance.direction, {0.0f, 0.0f, -1.0f}));
     store(g.tubeAxis, unitOr(instance.tubeAxis, {1.0f, 0.0f, 0.0f}));
-    switch (l.type) {
-        case content::LightType::Point:
-            g.type = 0;
-            break;
-        case content::LightType::Spot:
-            g.type = 1;
-            break;
-        case content::LightType::Directional:
-            g.type = 2;
-            break;
-    }
+    g.type = gpuLightType(l.type).gpuType;
     float outer = std::clamp(finiteOr(l.outerConeAngle, 0.0f), 0.0f, 1.5707963f);
     float inner = std::clamp(finiteOr(l.innerConeAngle, 0.0f), 0.0f, outer);
     float cosOuter = std::cos(outer);

@@ -18,6 +18,7 @@
 #include "ibl/environment_descriptors.h"
 #include "ibl/environment_sampling_table.h"
 #include "lights/gpu_light_buffer.h"
+#include "lights/gpu_light_types.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
@@ -66,10 +67,10 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
         }
     }
     for (const LightInstance& l : scene.lights) {
-        if (l.light.type == content::LightType::Directional) continue;
+        if (inEveryCluster(l.light)) continue;
         f.sphereLights |= l.light.sourceRadius > 0.0f;
         f.tubeLights |= l.light.sourceLength > 0.0f;
-        f.spotLights |= l.light.type == content::LightType::Spot;
+        f.lightTypes |= LightingFeatures::bit(l.light.type);
     }
     return f;
 }

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "candela/content/component_validation.h"
+#include "candela/content/light_types.h"
 #include "candela/content/light_units.h"
 #include "gltf_context.h"
 #include "gltf_values.h"
@@ -16,14 +17,15 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
     NamedLight named;
     named.name = source.name;
     Light& light = named.light;
-    if (source.type == "directional")
-        light.type = LightType::Directional;
-    else if (source.type == "spot")
-        light.type = LightType::Spot;
-    else if (source.type == "point")
-        light.type = LightType::Point;
+    // The glTF type names of the light type table (content/light_types.h).
+    const auto row =
+        std::find_if(kLightTypeTable.begin(), kLightTypeTable.end(),
+                     [&](const LightTypeInfo& t) { return source.type == t.gltfType; });
+    if (row != kLightTypeTable.end())
+        light.type = row->type;
     else
         context.error(element, "type '" + source.type + "' is unknown; treated as point");
+    const bool inLux = lightTypeInfo(light.type).power == LightPower::Lux;
 
     if (!source.color.empty() && !copyFactors(source.color, light.color)) {
         context.warning(element, "color is not 3 finite numbers; using white");
@@ -36,16 +38,15 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
         intensity = 1;
     }
     // Clamped before the candela -> lumens conversion, which would overflow to Inf.
-    const float maxIntensity =
-        light.type == LightType::Directional ? kMaxLux : candelaFromLumens(kMaxLumens);
+    const float maxIntensity = inLux ? kMaxLux : candelaFromLumens(kMaxLumens);
     if (intensity > maxIntensity) {
-        const char* unit = light.type == LightType::Directional ? " lux" : " cd";
+        const char* unit = inLux ? " lux" : " cd";
         context.warning(element, "intensity " + std::to_string(intensity) + unit +
                                      " is beyond the limit of " + std::to_string(maxIntensity) +
                                      unit + "; clamped");
         intensity = maxIntensity;
     }
-    if (light.type == LightType::Directional) {
+    if (inLux) {
         light.lux = intensity;  // glTF: lux for directional lights
     } else {
         light.lumens = lumensFromCandela(intensity);  // glTF: candela for point and spot
@@ -60,7 +61,7 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
         light.attenuationRadius = attenuationRadiusForIntensity(intensity, brightest);
     }
 
-    if (light.type == LightType::Spot) {
+    if (usesField(light.type, LightField::OuterConeAngle)) {
         float inner = 0;
         float outer = std::numbers::pi_v<float> / 4;
         toFiniteFloat(source.spot.innerConeAngle, inner);
@@ -71,16 +72,16 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
         light.outerConeAngle = outer;
     }
 
-    // Engine extension: sphere and tube lights (tube along the node's local X axis).
-    for (auto [key, field] : {std::pair{"sourceRadius", &light.sourceRadius},
-                              std::pair{"sourceLength", &light.sourceLength}}) {
-        if (!member(source.extras, key)) continue;
+    // Engine extension: the fields the light type table marks as glTF extras (sphere and
+    // tube lights; the tube lies along the node's local X axis).
+    for (const LightFieldInfo& f : kLightFieldTable) {
+        if (!f.gltfExtra || !member(source.extras, f.name)) continue;
         float v = 0;
-        if (readNumber(source.extras, key, v) && v >= 0) {
-            *field = v;
+        if (readNumber(source.extras, f.name, v) && v >= 0) {
+            light.*f.scalar = v;
         } else {
             context.warning(element + ".extras",
-                            std::string(key) + " must be a finite number >= 0; ignored");
+                            std::string(f.name) + " must be a finite number >= 0; ignored");
         }
     }
     // The rules the scene loader and the editor share; what is left to catch here is clamps

@@ -7,6 +7,7 @@
 
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
+#include "candela/content/light_types.h"
 #include "candela/content/material.h"
 
 namespace candela::content::scene {
@@ -16,9 +17,13 @@ inline constexpr std::string_view kFormatName = "candela.scene";
 template <typename E, std::size_t N>
 using EnumNames = std::array<std::pair<E, std::string_view>, N>;
 
-inline constexpr EnumNames<LightType, 3> kLightTypes{{{LightType::Point, "point"},
-                                                      {LightType::Spot, "spot"},
-                                                      {LightType::Directional, "directional"}}};
+// From the light type table (content/light_types.h).
+inline constexpr EnumNames<LightType, kLightTypeCount> kLightTypes = [] {
+    EnumNames<LightType, kLightTypeCount> names{};
+    for (std::size_t i = 0; i < kLightTypeCount; ++i)
+        names[i] = {kLightTypeTable[i].type, kLightTypeTable[i].name};
+    return names;
+}();
 inline constexpr EnumNames<Projection, 2> kProjections{
     {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}}};
 inline constexpr EnumNames<ExposureMode, 2> kExposureModes{

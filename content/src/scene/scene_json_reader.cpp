@@ -205,14 +205,14 @@ public:
 
     void light(const json& j, const std::string& p, Light& l) {
         enumeration(j, p, "type", kLightTypes, l.type);
-        numbers(j, p, "color", l.color);
-        number(j, p, "lumens", l.lumens);
-        number(j, p, "lux", l.lux);
-        number(j, p, "attenuationRadius", l.attenuationRadius);
-        number(j, p, "sourceRadius", l.sourceRadius);
-        number(j, p, "sourceLength", l.sourceLength);
-        number(j, p, "innerConeAngle", l.innerConeAngle);
-        number(j, p, "outerConeAngle", l.outerConeAngle);
+        // Every field of the light type table (content/light_types.h), whatever the type.
+        for (const LightFieldInfo& f : kLightFieldTable) {
+            if (f.channels) {
+                numbers(j, p, f.name, l.*f.channels);
+            } else {
+                number(j, p, f.name, l.*f.scalar);
+            }
+        }
         report(p, validateLight(l));
     }
 

@@ -77,15 +77,14 @@ struct Writer {
     }
 
     json light(const Light& l, const std::string& p) {
-        return {{"type", nameOf(kLightTypes, l.type)},
-                {"color", numbers(l.color, p + "/color")},
-                {"lumens", number(l.lumens, p + "/lumens")},
-                {"lux", number(l.lux, p + "/lux")},
-                {"attenuationRadius", number(l.attenuationRadius, p + "/attenuationRadius")},
-                {"sourceRadius", number(l.sourceRadius, p + "/sourceRadius")},
-                {"sourceLength", number(l.sourceLength, p + "/sourceLength")},
-                {"innerConeAngle", number(l.innerConeAngle, p + "/innerConeAngle")},
-                {"outerConeAngle", number(l.outerConeAngle, p + "/outerConeAngle")}};
+        json out = {{"type", nameOf(kLightTypes, l.type)}};
+        // Every field of the light type table (content/light_types.h), whatever the type.
+        for (const LightFieldInfo& f : kLightFieldTable) {
+            const std::string pointer = p + "/" + f.name;
+            out[f.name] =
+                f.channels ? numbers(l.*f.channels, pointer) : number(l.*f.scalar, pointer);
+        }
+        return out;
     }
 
     json camera(const Camera& c, const std::string& p) {

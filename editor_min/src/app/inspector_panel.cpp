@@ -4,6 +4,7 @@
 #include <imgui_internal.h>  // GetItemID (public from 1.87)
 #include <imgui_stdlib.h>
 
+#include <array>
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
 #include <string>
@@ -12,6 +13,7 @@
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/content/light_types.h"
 #include "candela/ecs/transform.h"
 #include "candela/render/exposure.h"
 #include "model/edit_validation.h"
@@ -108,34 +110,31 @@ void drawLight(EditorScene& scene, ecs::Entity e) {
     }
     if (!open) return;
     content::Light l = *current;
-    const char* types[] = {"Point", "Spot", "Directional"};
-    int type = int(l.type);
-    const bool typeChanged = ImGui::Combo("Type", &type, types, 3);
-    l.type = content::LightType(type);
+    // Types and fields from the light type table (content/light_types.h): each type shows the
+    // fields it uses, in the table's order.
+    std::array<const char*, content::kLightTypeCount> types{};
+    for (size_t i = 0; i < types.size(); ++i)
+        types[i] = content::kLightTypeTable[i].label;
+    int type = int(content::lightTypeIndex(l.type));
+    const bool typeChanged = ImGui::Combo("Type", &type, types.data(), int(types.size()));
+    l.type = content::kLightTypeTable[size_t(type)].type;
     commit(scene, e, typeChanged, l, "Set Light Type");
-    commit(scene, e, ImGui::ColorEdit3("Colour", l.color.data()), l, "Set Light Colour");
-    if (l.type == content::LightType::Directional) {
-        commit(scene, e, ImGui::DragFloat("Lux", &l.lux, 100.0f, 0.0f, 1.0e6f, "%.1f lx"), l,
-               "Set Lux");
-        return;
-    }
-    commit(scene, e, ImGui::DragFloat("Lumens", &l.lumens, 10.0f, 0.0f, 1.0e7f, "%.1f lm"), l,
-           "Set Lumens");
-    commit(scene, e,
-           ImGui::DragFloat("Attenuation radius", &l.attenuationRadius, 0.05f, 0.01f, 1.0e4f,
-                            "%.2f m"),
-           l, "Set Attenuation Radius");
-    commit(scene, e,
-           ImGui::DragFloat("Source radius", &l.sourceRadius, 0.005f, 0.0f, 100.0f, "%.3f m"), l,
-           "Set Source Radius");
-    commit(scene, e,
-           ImGui::DragFloat("Source length", &l.sourceLength, 0.01f, 0.0f, 100.0f, "%.3f m"), l,
-           "Set Source Length");
-    if (l.type == content::LightType::Spot) {
-        commit(scene, e, ImGui::SliderAngle("Inner cone", &l.innerConeAngle, 0.0f, 90.0f), l,
-               "Set Inner Cone");
-        commit(scene, e, ImGui::SliderAngle("Outer cone", &l.outerConeAngle, 0.0f, 90.0f), l,
-               "Set Outer Cone");
+    for (const content::LightFieldInfo& f : content::kLightFieldTable) {
+        if (!content::usesField(l.type, f.field)) continue;
+        bool changed = false;
+        switch (f.widget) {
+            case content::LightFieldWidget::Color:
+                changed = ImGui::ColorEdit3(f.label, (l.*f.channels).data());
+                break;
+            case content::LightFieldWidget::Drag:
+                changed = ImGui::DragFloat(f.label, &(l.*f.scalar), f.dragSpeed, f.dragMin,
+                                           f.dragMax, f.format);
+                break;
+            case content::LightFieldWidget::Angle:
+                changed = ImGui::SliderAngle(f.label, &(l.*f.scalar), f.dragMin, f.dragMax);
+                break;
+        }
+        commit(scene, e, changed, l, f.undoLabel);
     }
 }
 

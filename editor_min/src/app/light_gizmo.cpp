@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "candela/content/components/light.h"
+#include "candela/content/light_types.h"
 #include "candela/ecs/transform.h"
 #include "model/editor_scene.h"
 
@@ -75,13 +76,14 @@ void drawSelectedLight(const Projector& projector, ImDrawList* list, const conte
     const glm::vec3 forward = -z;  // spots and directional lights shine along -Z
     const float radius = light.attenuationRadius;
 
-    switch (light.type) {
-        case content::LightType::Point:
+    // The reach outline the light type table (content/light_types.h) gives the type.
+    switch (content::lightTypeInfo(light.type).outline) {
+        case content::LightOutline::FalloffSphere:
             projector.circle(list, position, x, y, radius, kRadiusColour);
             projector.circle(list, position, x, z, radius, kRadiusColour);
             projector.circle(list, position, y, z, radius, kRadiusColour);
             break;
-        case content::LightType::Spot: {
+        case content::LightOutline::Cone: {
             // The cone out to the attenuation radius: its end cap circle and four edges.
             for (float angle : {light.outerConeAngle, light.innerConeAngle}) {
                 const ImU32 colour = angle == light.outerConeAngle ? kRadiusColour : kInnerColour;
@@ -94,7 +96,7 @@ void drawSelectedLight(const Projector& projector, ImDrawList* list, const conte
             }
             break;
         }
-        case content::LightType::Directional:
+        case content::LightOutline::Direction:
             projector.line(list, position, position + forward * 2.0f, kRadiusColour);
             projector.circle(list, position + forward * 2.0f, x, y, 0.15f, kRadiusColour);
             break;

@@ -5,6 +5,7 @@
 
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
+#include "candela/content/light_types.h"
 #include "candela/ecs/transform.h"
 #include "model/edit_validation.h"
 #include "model/editor_scene.h"
@@ -26,23 +27,23 @@ struct Field {
 template <class T>
 const std::map<std::string, Field<T>>& fields();
 
+// The fields of the light type table (content/light_types.h), under their scene-file names.
 template <>
 const std::map<std::string, Field<content::Light>>& fields() {
     using L = content::Light;
-    static const std::map<std::string, Field<L>> table = {
-        {"lumens", {1, [](L& l, const Values& v) { l.lumens = v[0]; }}},
-        {"lux", {1, [](L& l, const Values& v) { l.lux = v[0]; }}},
-        {"color",
-         {3,
-          [](L& l, const Values& v) {
-              l.color = {v[0], v[1], v[2]};
-          }}},
-        {"attenuationRadius", {1, [](L& l, const Values& v) { l.attenuationRadius = v[0]; }}},
-        {"sourceRadius", {1, [](L& l, const Values& v) { l.sourceRadius = v[0]; }}},
-        {"sourceLength", {1, [](L& l, const Values& v) { l.sourceLength = v[0]; }}},
-        {"innerConeAngle", {1, [](L& l, const Values& v) { l.innerConeAngle = v[0]; }}},
-        {"outerConeAngle", {1, [](L& l, const Values& v) { l.outerConeAngle = v[0]; }}},
-    };
+    static const std::map<std::string, Field<L>> table = [] {
+        std::map<std::string, Field<L>> out;
+        for (const content::LightFieldInfo& f : content::kLightFieldTable) {
+            if (f.channels) {
+                out[f.name] = {3, [member = f.channels](L& l, const Values& v) {
+                                   l.*member = {v[0], v[1], v[2]};
+                               }};
+            } else {
+                out[f.name] = {1, [member = f.scalar](L& l, const Values& v) { l.*member = v[0]; }};
+            }
+        }
+        return out;
+    }();
     return table;
 }
 

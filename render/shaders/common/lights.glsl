@@ -4,12 +4,14 @@
 #ifndef CANDELA_LIGHTS_GLSL
 #define CANDELA_LIGHTS_GLSL
 
+#include "common/light_types.h"
 #include "common/math.glsl"
 #include "common/specialization_ids.h"
 
-const uint kLightPoint = 0u;
-const uint kLightSpot = 1u;
-const uint kLightDirectional = 2u;
+// Light type codes (common/light_types.h, written by render/src/gpu_light.cpp).
+const uint kLightPoint = LIGHT_TYPE_POINT;
+const uint kLightSpot = LIGHT_TYPE_SPOT;
+const uint kLightDirectional = LIGHT_TYPE_DIRECTIONAL;
 
 // Light shapes compiled into this shader variant (SPEC "Model only what a scene needs"); the
 // renderer turns off the shapes its scene does not have, and the driver drops their code.
@@ -199,6 +201,13 @@ LightIncidence evaluateDirectionalLight(Light light, vec3 N) {
     o.specularIlluminance = o.diffuseIlluminance;
     o.incidentIlluminance = light.intensity;
     return o;
+}
+
+// The incidence of any light: one function per light type, chosen by its type code. A new type
+// adds its function above and its case here (render/README.md "Adding a light type").
+LightIncidence evaluateLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
+    if (light.type == kLightDirectional) return evaluateDirectionalLight(light, N);
+    return evaluateLocalLight(light, P, N, R, alpha);  // point and spot, sphere and tube
 }
 
 #endif

@@ -10,6 +10,7 @@
 #include "clustered/light_assignment.h"
 #include "cpu_clock.h"
 #include "frame_graph/frame_graph_executor.h"
+#include "lights/gpu_light_types.h"
 #include "passes/depth_occupancy/depth_occupancy_pass.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/light_assignment/light_assignment_pass.h"
@@ -110,7 +111,7 @@ void ClusterLightLists::prepareDeviceAssignment(const FrameInputs& inputs, Rende
     std::vector<uint32_t>& directional = assignment_->lightIndices;
     directional.clear();
     for (uint32_t i = 0; i < lights.size(); ++i) {
-        if (lights[i].light.type == content::LightType::Directional) directional.push_back(i);
+        if (inEveryCluster(lights[i].light)) directional.push_back(i);
     }
     assignment_->directionalCount = uint32_t(directional.size());
     if (gpuListEntriesWanted_ == 0) {

@@ -8,6 +8,7 @@
 #include "candela/ecs/job_system.h"
 #include "clustered/light_bounds.h"
 #include "clustered/light_frustum_prepass.h"
+#include "lights/gpu_light_types.h"
 
 namespace candela::render {
 
@@ -176,7 +177,7 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
     out.lightIndices.clear();
     out.directionalCount = 0;
     for (uint32_t i = 0; i < lights.size(); ++i) {
-        if (lights[i].light.type == content::LightType::Directional) {
+        if (inEveryCluster(lights[i].light)) {
             out.lightIndices.push_back(i);
             ++out.directionalCount;
         }
@@ -221,7 +222,7 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
                 lightsInFrustum(grid, lights, first, last, view, list.frustum, list.visible);
             } else {
                 for (size_t i = first; i < last; ++i) {
-                    if (lights[i].light.type == content::LightType::Directional) continue;
+                    if (inEveryCluster(lights[i].light)) continue;
                     list.visible.push_back(uint32_t(i));
                 }
             }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "lights/gpu_light_types.h"
+
 namespace candela::render {
 
 namespace {
@@ -59,7 +61,7 @@ LightBounds lightBoundsInView(const LightInstance& instance, const glm::mat4& vi
     b.radius = range;
     const float outer = std::clamp(light.outerConeAngle, 0.0f, 1.5707963f);
     // Spots narrower than ~80 degrees get the cone test; wider ones gain little from it.
-    if (light.type == content::LightType::Spot && outer < 1.4f) {
+    if (gpuLightType(light.type).bounds == ClusterBounds::Cone && outer < 1.4f) {
         glm::vec3 axis = glm::normalize(glm::mat3(view) * instance.direction);
         b.shape = LightShape::Cone;
         b.segmentStart = position;

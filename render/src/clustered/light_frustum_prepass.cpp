@@ -1,4 +1,5 @@
 #include "clustered/light_frustum_prepass.h"
+#include "lights/gpu_light_types.h"
 
 #include <algorithm>
 #include <bit>
@@ -38,7 +39,7 @@ void boundingSphere(const LightInstance& instance, glm::vec3& center, float& rad
         return;
     }
     const float outer = std::clamp(light.outerConeAngle, 0.0f, 1.5707963f);
-    if (light.type == content::LightType::Spot && outer < 1.4f) {
+    if (gpuLightType(light.type).bounds == ClusterBounds::Cone && outer < 1.4f) {
         // Walk sphere: radius range / (2 cos) at that distance along the axis, or radius
         // range sin at range cos; apex-centred: distance plus radius.
         const float coneCos = std::cos(outer);
@@ -113,7 +114,7 @@ void lightsInFrustum(const ClusterGrid& grid, std::span<const LightInstance> lig
     const float translationScale =
         std::abs(view[3][0]) + std::abs(view[3][1]) + std::abs(view[3][2]);
     for (size_t i = first; i < last; ++i) {
-        if (lights[i].light.type == content::LightType::Directional) continue;
+        if (inEveryCluster(lights[i].light)) continue;
         glm::vec3 center;
         float radius;
         boundingSphere(lights[i], center, radius);

@@ -61,9 +61,7 @@ layout(location = 0) out vec4 outRadiance;  // cd/m^2, a = coverage
 
 vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha, uint index) {
     Light light = loadLight(index, camera.frameInfo.w);
-    LightIncidence incidence = light.type == kLightDirectional
-                                   ? evaluateDirectionalLight(light, N)
-                                   : evaluateLocalLight(light, P, N, R, alpha);
+    LightIncidence incidence = evaluateLight(light, P, N, R, alpha);
     return shadeSurface(surface, N, V, incidence);
 }
 

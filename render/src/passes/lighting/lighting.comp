@@ -110,9 +110,7 @@ struct PixelShading {
 
 void addLight(inout PixelShading px, uint lightIndex) {
     Light light = loadLight(lightIndex, camera.frameInfo.w);
-    LightIncidence incidence = light.type == kLightDirectional
-                                   ? evaluateDirectionalLight(light, px.N)
-                                   : evaluateLocalLight(light, px.P, px.N, px.R, px.alpha);
+    LightIncidence incidence = evaluateLight(light, px.P, px.N, px.R, px.alpha);
     px.radiance += shadeSurface(px.surface, px.N, px.V, incidence);
     if (kCountLightPairs) {
         px.evaluations += 1u;

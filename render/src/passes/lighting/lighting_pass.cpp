@@ -6,6 +6,7 @@
 #include "common/specialization_ids.h"
 #include "gbuffer_targets.h"
 #include "ibl/environment_descriptors.h"
+#include "lights/gpu_light_types.h"
 #include "passes/lighting/lighting_bindings.h"
 #include "shaders/lighting.comp.spv.h"
 
@@ -41,7 +42,9 @@ std::vector<std::string> LightingFeatures::names() const {
     if (legacyDiffuseSpecular) out.push_back("shading_legacy_diffuse_specular");
     if (sphereLights) out.push_back("lights_sphere");
     if (tubeLights) out.push_back("lights_tube");
-    if (spotLights) out.push_back("lights_spot");
+    for (const GpuLightTypeInfo& t : kGpuLightTypeTable) {
+        if (t.feature && (lightTypes & bit(t.type))) out.push_back(t.feature);
+    }
     out.push_back(clustered ? "light_culling_clustered" : "light_culling_brute_force");
     if (countLightPairs) out.push_back("light_pair_counters");
     if (ibl) out.push_back(std::string("ibl_") + iblModeName(*ibl));
@@ -53,7 +56,12 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
     constants.set(SPEC_LEGACY_DIFFUSE_SPECULAR_ENABLED, features.legacyDiffuseSpecular);
     constants.set(SPEC_SPHERE_LIGHTS_ENABLED, features.sphereLights);
     constants.set(SPEC_TUBE_LIGHTS_ENABLED, features.tubeLights);
-    constants.set(SPEC_SPOT_LIGHTS_ENABLED, features.spotLights);
+    for (const GpuLightTypeInfo& t : kGpuLightTypeTable) {
+        if (t.specialization != kNoSpecialization) {
+            constants.set(t.specialization,
+                          (features.lightTypes & LightingFeatures::bit(t.type)) != 0);
+        }
+    }
     constants.set(SPEC_CLUSTERED, features.clustered);
 }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/content/light_types.h"
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_image.h"
 #include "candela/render/pipeline.h"
@@ -25,11 +26,16 @@ struct LightingFeatures {
     bool legacyDiffuseSpecular = false;
     bool sphereLights = false;
     bool tubeLights = false;
-    bool spotLights = false;
+    // Bit lightTypeIndex(type) per light type present (lights/gpu_light_types.h gives the
+    // types whose code a variant can leave out).
+    uint32_t lightTypes = 0;
     bool clustered = true;
     bool countLightPairs = false;
     std::optional<IblMode> ibl;  // none without an environment
 
+    static constexpr uint32_t bit(content::LightType type) {
+        return 1u << content::lightTypeIndex(type);
+    }
     bool operator==(const LightingFeatures&) const = default;
     std::vector<std::string> names() const;
 };

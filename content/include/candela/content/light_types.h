@@ -1,0 +1,180 @@
+#pragma once
+// The content side of "one place per light type" (render/README.md "Adding a light type"):
+// what each LightType is called in scene files and glTF, which Light fields it uses, and how
+// every field is named, checked and edited. The scene reader and writer, the glTF importer,
+// validateLight and the editor's inspector, property edits and gizmo read these tables instead
+// of switching on the type. The render side's table is render/src/lights/gpu_light_types.h.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "candela/content/component_validation.h"
+#include "candela/content/components/light.h"
+#include "candela/content/light_units.h"
+
+namespace candela::content {
+
+// Every Light field a light type may use, in the order scene files list them.
+enum class LightField : std::uint8_t {
+    Color,
+    Lumens,
+    Lux,
+    AttenuationRadius,
+    SourceRadius,
+    SourceLength,
+    InnerConeAngle,
+    OuterConeAngle,
+};
+
+// How validateLight checks a field (the editor's limits follow from it too).
+enum class LightFieldRule : std::uint8_t {
+    ColorChannels,      // every channel finite and >= 0, capped at `max`
+    NonNegative,        // >= 0, capped at `max`
+    Positive,           // > 0, capped at `max` (+Inf becomes the cap)
+    FiniteNonNegative,  // finite and >= 0
+    ConeAngle,          // radians; inner and outer checked together, for types that use both
+};
+
+enum class LightFieldWidget : std::uint8_t { Color, Drag, Angle };
+
+struct LightFieldInfo {
+    LightField field;
+    const char* name;       // key in scene files, glTF extras and the editor's property edits
+    std::string_view unit;  // of the value, in messages ("lm"; empty for colour)
+    LightFieldRule rule;
+    float max;  // the cap of the capping rules
+    // Editor inspector: label, undo label, widget and its drag speed, range and format.
+    const char* label;
+    const char* undoLabel;
+    LightFieldWidget widget;
+    float dragSpeed, dragMin, dragMax;
+    const char* format;
+    bool gltfExtra;  // read from a KHR_lights_punctual light's extras (engine extension)
+    // The member: `scalar` for one number, `channels` for colour.
+    float Light::*scalar;
+    std::array<float, 3> Light::*channels;
+};
+
+inline constexpr std::array<LightFieldInfo, 8> kLightFieldTable{{
+    {LightField::Color, "color", "", LightFieldRule::ColorChannels, kMaxLightColorChannel, "Colour",
+     "Set Light Colour", LightFieldWidget::Color, 0, 0, 0, "", false, nullptr, &Light::color},
+    {LightField::Lumens, "lumens", "lm", LightFieldRule::NonNegative, kMaxLumens, "Lumens",
+     "Set Lumens", LightFieldWidget::Drag, 10.0f, 0.0f, 1.0e7f, "%.1f lm", false, &Light::lumens,
+     nullptr},
+    {LightField::Lux, "lux", "lux", LightFieldRule::NonNegative, kMaxLux, "Lux", "Set Lux",
+     LightFieldWidget::Drag, 100.0f, 0.0f, 1.0e6f, "%.1f lx", false, &Light::lux, nullptr},
+    {LightField::AttenuationRadius, "attenuationRadius", "m", LightFieldRule::Positive,
+     kMaxAttenuationRadius, "Attenuation radius", "Set Attenuation Radius", LightFieldWidget::Drag,
+     0.05f, 0.01f, 1.0e4f, "%.2f m", false, &Light::attenuationRadius, nullptr},
+    {LightField::SourceRadius, "sourceRadius", "m", LightFieldRule::FiniteNonNegative, 0,
+     "Source radius", "Set Source Radius", LightFieldWidget::Drag, 0.005f, 0.0f, 100.0f, "%.3f m",
+     true, &Light::sourceRadius, nullptr},
+    {LightField::SourceLength, "sourceLength", "m", LightFieldRule::FiniteNonNegative, 0,
+     "Source length", "Set Source Length", LightFieldWidget::Drag, 0.01f, 0.0f, 100.0f, "%.3f m",
+     true, &Light::sourceLength, nullptr},
+    {LightField::InnerConeAngle, "innerConeAngle", "rad", LightFieldRule::ConeAngle, 0,
+     "Inner cone", "Set Inner Cone", LightFieldWidget::Angle, 0, 0.0f, 90.0f, "", false,
+     &Light::innerConeAngle, nullptr},
+    {LightField::OuterConeAngle, "outerConeAngle", "rad", LightFieldRule::ConeAngle, 0,
+     "Outer cone", "Set Outer Cone", LightFieldWidget::Angle, 0, 0.0f, 90.0f, "", false,
+     &Light::outerConeAngle, nullptr},
+}};
+
+using LightFieldSet = std::uint32_t;
+
+constexpr LightFieldSet fieldBit(LightField field) {
+    return LightFieldSet(1) << unsigned(field);
+}
+
+template <class... Fields>
+constexpr LightFieldSet fieldSet(Fields... fields) {
+    return (fieldBit(fields) | ...);
+}
+
+// Which photometric quantity gives a type's power: luminous power (lumens; intensity
+// lm / 4 pi cd, glTF's intensity in cd) or illuminance (lux, glTF's intensity in lux).
+enum class LightPower : std::uint8_t { Lumens, Lux };
+
+// What the editor's gizmo outlines as the light's reach: the falloff sphere, the spot cone out
+// to the falloff radius, or the direction light travels. The source's own shape (sphere,
+// tube) is outlined from its fields.
+enum class LightOutline : std::uint8_t { FalloffSphere, Cone, Direction };
+
+struct LightTypeInfo {
+    LightType type;
+    const char* name;      // "type" in scene files
+    const char* label;     // the editor's type list
+    const char* gltfType;  // KHR_lights_punctual "type"
+    LightPower power;
+    LightFieldSet fields;  // what the inspector shows; validateLight checks cones only if used
+    LightOutline outline;
+};
+
+// One row per LightType, in enumerator order (checked below).
+inline constexpr std::array<LightTypeInfo, 3> kLightTypeTable{{
+    {LightType::Point, "point", "Point", "point", LightPower::Lumens,
+     fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
+              LightField::SourceRadius, LightField::SourceLength),
+     LightOutline::FalloffSphere},
+    {LightType::Spot, "spot", "Spot", "spot", LightPower::Lumens,
+     fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
+              LightField::SourceRadius, LightField::SourceLength, LightField::InnerConeAngle,
+              LightField::OuterConeAngle),
+     LightOutline::Cone},
+    {LightType::Directional, "directional", "Directional", "directional", LightPower::Lux,
+     fieldSet(LightField::Color, LightField::Lux), LightOutline::Direction},
+}};
+
+inline constexpr std::size_t kLightTypeCount = kLightTypeTable.size();
+
+// The compile-time check that kLightTypeTable covers every LightType: a new enumerator is a
+// -Wswitch error here (warnings are errors) until it gets a case, and the static_assert below
+// then fails until its row is in place.
+constexpr std::size_t lightTypeIndex(LightType type) {
+    switch (type) {
+        case LightType::Point:
+            return 0;
+        case LightType::Spot:
+            return 1;
+        case LightType::Directional:
+            return 2;
+    }
+    return kLightTypeCount;
+}
+
+constexpr bool lightTypeTableIsComplete() {
+    for (std::size_t i = 0; i < kLightTypeCount; ++i) {
+        if (lightTypeIndex(kLightTypeTable[i].type) != i) return false;
+        if (std::size_t(kLightTypeTable[i].type) != i) return false;
+    }
+    return true;
+}
+static_assert(lightTypeTableIsComplete(),
+              "kLightTypeTable needs one row per LightType, in enumerator order");
+
+constexpr bool lightFieldTableIsComplete() {
+    for (std::size_t i = 0; i < kLightFieldTable.size(); ++i) {
+        const LightFieldInfo& f = kLightFieldTable[i];
+        if (std::size_t(f.field) != i) return false;
+        if ((f.scalar == nullptr) == (f.channels == nullptr)) return false;
+    }
+    return true;
+}
+static_assert(lightFieldTableIsComplete(),
+              "kLightFieldTable needs one row per LightField, in enumerator order, each with "
+              "exactly one member");
+
+constexpr const LightTypeInfo& lightTypeInfo(LightType type) {
+    return kLightTypeTable[lightTypeIndex(type)];
+}
+
+constexpr const LightFieldInfo& lightFieldInfo(LightField field) {
+    return kLightFieldTable[std::size_t(field)];
+}
+
+constexpr bool usesField(LightType type, LightField field) {
+    return (lightTypeInfo(type).fields & fieldBit(field)) != 0;
+}
+
+}  // namespace candela::content

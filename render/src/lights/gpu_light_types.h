@@ -1,0 +1,65 @@
+#pragma once
+// The render side of "one place per light type" (README "Adding a light type"): how each
+// content::LightType is encoded for the shaders, which shader variant switch it needs, and how
+// clustered culling bounds it, on the CPU (clustered/light_bounds.cpp, the frustum pre-pass)
+// and the GPU (shaders/common/light_cluster_tests.glsl). The content side's table is
+// content/light_types.h; the shading is lights.glsl's evaluateLight.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "candela/content/light_types.h"
+#include "common/light_types.h"
+#include "common/specialization_ids.h"
+
+namespace candela::render {
+
+// What clustered culling bounds a light by.
+enum class ClusterBounds : uint8_t {
+    Everywhere,  // in every cluster's list (directional): listed once, ahead of the local lists
+    Falloff,     // the falloff sphere (eq. 9's window) around the source; a capsule for a tube
+    Cone,        // the spot cone out to the falloff radius (spots wider than ~80 degrees and
+                 // tubes are bounded as Falloff)
+};
+
+inline constexpr uint32_t kNoSpecialization = ~0u;
+
+struct GpuLightTypeInfo {
+    content::LightType type;
+    uint32_t gpuType;  // LIGHT_TYPE_* (common/light_types.h): what lights.glsl dispatches on
+    ClusterBounds bounds;
+    // The specialization constant that compiles the type's shading in (SPEC_*), and its name
+    // in --stats "features"; kNoSpecialization / nullptr for code every variant has.
+    uint32_t specialization;
+    const char* feature;
+};
+
+// One row per content::LightType, in enumerator order (checked below).
+inline constexpr std::array<GpuLightTypeInfo, content::kLightTypeCount> kGpuLightTypeTable{{
+    {content::LightType::Point, LIGHT_TYPE_POINT, ClusterBounds::Falloff, kNoSpecialization,
+     nullptr},
+    {content::LightType::Spot, LIGHT_TYPE_SPOT, ClusterBounds::Cone, SPEC_SPOT_LIGHTS_ENABLED,
+     "lights_spot"},
+    {content::LightType::Directional, LIGHT_TYPE_DIRECTIONAL, ClusterBounds::Everywhere,
+     kNoSpecialization, nullptr},
+}};
+
+constexpr bool gpuLightTypeTableIsComplete() {
+    for (std::size_t i = 0; i < kGpuLightTypeTable.size(); ++i) {
+        if (content::lightTypeIndex(kGpuLightTypeTable[i].type) != i) return false;
+    }
+    return true;
+}
+static_assert(gpuLightTypeTableIsComplete(),
+              "kGpuLightTypeTable needs one row per content::LightType, in enumerator order");
+
+constexpr const GpuLightTypeInfo& gpuLightType(content::LightType type) {
+    return kGpuLightTypeTable[content::lightTypeIndex(type)];
+}
+
+// Directional lights: no position and no falloff, so in every cluster.
+constexpr bool inEveryCluster(const content::Light& light) {
+    return gpuLightType(light.type).bounds == ClusterBounds::Everywhere;
+}
+
+}  // namespace candela::render

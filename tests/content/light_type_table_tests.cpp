@@ -1,0 +1,105 @@
+// The content side's light type table (content/light_types.h) drives the scene reader and
+// writer and validateLight: every type and every field it lists must survive a scene file and
+// be checked under its own name.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <span>
+#include <string>
+
+#include "candela/content/component_validation.h"
+#include "candela/content/light_types.h"
+#include "candela/content/scene_file.h"
+
+namespace candela::content {
+namespace {
+
+// A valid value for each field that differs from its default.
+float distinctValue(const LightFieldInfo& f) {
+    if (f.field == LightField::InnerConeAngle) return 0.3f;
+    if (f.field == LightField::OuterConeAngle) return 0.7f;
+    return 0.25f + 0.5f * float(f.field);
+}
+
+TEST(LightTypeTable, EveryTypeAndFieldRoundTripsThroughASceneFile) {
+    for (const LightTypeInfo& type : kLightTypeTable) {
+        SCOPED_TRACE(type.name);
+        Light light;
+        light.type = type.type;
+        for (const LightFieldInfo& f : kLightFieldTable) {
+            if (f.channels) {
+                light.*f.channels = {0.2f, 0.4f, 0.6f};
+            } else {
+                light.*f.scalar = distinctValue(f);
+            }
+        }
+        SceneDocument scene;
+        scene.entities.emplace_back().light = light;
+        std::string error;
+        const std::string text = sceneToJson(scene, error);
+        ASSERT_EQ(error, "");
+        EXPECT_NE(text.find('"' + std::string(type.name) + '"'), std::string::npos) << text;
+
+        Diagnostics diagnostics;
+        auto loaded =
+            parseSceneJson(std::as_bytes(std::span(text)), "lights.scene.json", diagnostics);
+        ASSERT_TRUE(loaded) << diagnostics.toString();
+        EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
+        ASSERT_EQ(loaded->entities.size(), 1u);
+        ASSERT_TRUE(loaded->entities[0].light);
+        const Light& back = *loaded->entities[0].light;
+        EXPECT_EQ(back.type, type.type);
+        for (const LightFieldInfo& f : kLightFieldTable) {
+            SCOPED_TRACE(f.name);
+            if (f.channels) {
+                EXPECT_EQ(std::memcmp((back.*f.channels).data(), (light.*f.channels).data(), 12),
+                          0);
+            } else {
+                EXPECT_EQ(back.*f.scalar, light.*f.scalar);
+            }
+        }
+    }
+}
+
+bool rejects(const ValueProblems& problems, const std::string& field) {
+    for (const ValueProblem& p : problems) {
+        if (!p.clamped && p.field == field) return true;
+    }
+    return false;
+}
+
+TEST(LightTypeTable, ValidateLightChecksEveryFieldUnderItsName) {
+    for (const LightFieldInfo& f : kLightFieldTable) {
+        SCOPED_TRACE(f.name);
+        Light light;
+        // Cones are checked for the types that use them only.
+        light.type = f.rule == LightFieldRule::ConeAngle ? LightType::Spot : LightType::Point;
+        if (f.channels) {
+            (light.*f.channels)[1] = -1.0f;
+        } else {
+            light.*f.scalar = -1.0f;
+        }
+        EXPECT_TRUE(rejects(validateLight(light), f.name));
+    }
+    for (const LightTypeInfo& type : kLightTypeTable) {
+        SCOPED_TRACE(type.name);
+        Light light;
+        light.type = type.type;
+        light.outerConeAngle = -1.0f;
+        EXPECT_EQ(rejects(validateLight(light), "outerConeAngle"),
+                  usesField(type.type, LightField::OuterConeAngle));
+    }
+}
+
+TEST(LightTypeTable, PowerFieldMatchesTheTypesPhotometricQuantity) {
+    for (const LightTypeInfo& type : kLightTypeTable) {
+        SCOPED_TRACE(type.name);
+        const LightField power =
+            type.power == LightPower::Lux ? LightField::Lux : LightField::Lumens;
+        EXPECT_TRUE(usesField(type.type, power));
+        EXPECT_TRUE(usesField(type.type, LightField::Color));
+    }
+}
+
+}  // namespace
+}  // namespace candela::content
