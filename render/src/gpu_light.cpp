@@ -54,6 +54,7 @@ GpuLight packLight(const LightInstance& instance) {
     store(g.direction, unitOr(instance.direction, {0.0f, 0.0f, -1.0f}));
     store(g.tubeAxis, unitOr(instance.tubeAxis, {1.0f, 0.0f, 0.0f}));
     g.type = gpuLightType(l.type).gpuType;
+    if (const auto encodeShape = gpuLightType(l.type).encodeShape) encodeShape(l, g.shape);
     float outer = std::clamp(finiteOr(l.outerConeAngle, 0.0f), 0.0f, 1.5707963f);
     float inner = std::clamp(finiteOr(l.innerConeAngle, 0.0f), 0.0f, outer);
     float cosOuter = std::cos(outer);

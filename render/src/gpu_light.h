@@ -17,7 +17,7 @@ struct GpuLight {
     uint32_t type;
     float spotScale;
     float spotOffset;
-    float pad[2];
+    float shape[2];  // per-type parameters (encodeShape in lights/gpu_light_types.h), else 0
 };
 static_assert(sizeof(GpuLight) == 80, "std430 layout of struct Light");
 

@@ -18,9 +18,9 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
     named.name = source.name;
     Light& light = named.light;
     // The glTF type names of the light type table (content/light_types.h).
-    const auto row =
-        std::find_if(kLightTypeTable.begin(), kLightTypeTable.end(),
-                     [&](const LightTypeInfo& t) { return source.type == t.gltfType; });
+    const auto row = std::find_if(
+        kLightTypeTable.begin(), kLightTypeTable.end(),
+        [&](const LightTypeInfo& t) { return t.gltfType && source.type == t.gltfType; });
     if (row != kLightTypeTable.end())
         light.type = row->type;
     else

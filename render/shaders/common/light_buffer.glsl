@@ -25,6 +25,7 @@ Light loadLight(uint index, uint capacity) {
     light.type = uint(s3.w);
     light.spotScale = s4.x;
     light.spotOffset = s4.y;
+    light.shape = s4.zw;
     return light;
 }
 

@@ -35,6 +35,7 @@ struct Light {
     uint type;
     float spotScale;             // 1 / (cos inner - cos outer)
     float spotOffset;            // -cos outer * spotScale
+    vec2 shape;                  // per-type parameters (render/src/lights/gpu_light_types.h)
 };
 
 // What a light delivers at a surface point, before the BRDF.

@@ -41,7 +41,7 @@ void GpuLightBuffer::write(uint32_t slot, const LightInstance& light) {
     stream[1][slot] = {g.intensity[0], g.intensity[1], g.intensity[2], g.sourceRadius};
     stream[2][slot] = {g.direction[0], g.direction[1], g.direction[2], g.sourceLength};
     stream[3][slot] = {g.tubeAxis[0], g.tubeAxis[1], g.tubeAxis[2], float(g.type)};
-    stream[4][slot] = {g.spotScale, g.spotOffset, 0.0f, 0.0f};
+    stream[4][slot] = {g.spotScale, g.spotOffset, g.shape[0], g.shape[1]};
 }
 
 }  // namespace candela::render

@@ -32,26 +32,34 @@ struct GpuLightTypeInfo {
     // in --stats "features"; kNoSpecialization / nullptr for code every variant has.
     uint32_t specialization;
     const char* feature;
+    // Parameters of the type's shape beyond the common record (position, direction, tube axis,
+    // source radius and length, spot cone), e.g. a rectangle's width and height: written to
+    // GpuLight::shape, read as Light.shape in lights.glsl. nullptr: none (zeros).
+    void (*encodeShape)(const content::Light& light, float shape[2]);
 };
 
 // One row per content::LightType, in enumerator order (checked below).
 inline constexpr std::array<GpuLightTypeInfo, content::kLightTypeCount> kGpuLightTypeTable{{
     {content::LightType::Point, LIGHT_TYPE_POINT, ClusterBounds::Falloff, kNoSpecialization,
-     nullptr},
+     nullptr, nullptr},
     {content::LightType::Spot, LIGHT_TYPE_SPOT, ClusterBounds::Cone, SPEC_SPOT_LIGHTS_ENABLED,
-     "lights_spot"},
+     "lights_spot", nullptr},
     {content::LightType::Directional, LIGHT_TYPE_DIRECTIONAL, ClusterBounds::Everywhere,
-     kNoSpecialization, nullptr},
+     kNoSpecialization, nullptr, nullptr},
 }};
 
 constexpr bool gpuLightTypeTableIsComplete() {
     for (std::size_t i = 0; i < kGpuLightTypeTable.size(); ++i) {
         if (content::lightTypeIndex(kGpuLightTypeTable[i].type) != i) return false;
+        for (std::size_t j = 0; j < i; ++j) {  // lights.glsl tells the types apart by code
+            if (kGpuLightTypeTable[j].gpuType == kGpuLightTypeTable[i].gpuType) return false;
+        }
     }
     return true;
 }
 static_assert(gpuLightTypeTableIsComplete(),
-              "kGpuLightTypeTable needs one row per content::LightType, in enumerator order");
+              "kGpuLightTypeTable needs one row per content::LightType, in enumerator order, "
+              "each with its own LIGHT_TYPE_* code");
 
 constexpr const GpuLightTypeInfo& gpuLightType(content::LightType type) {
     return kGpuLightTypeTable[content::lightTypeIndex(type)];

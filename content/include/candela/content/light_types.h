@@ -105,7 +105,7 @@ struct LightTypeInfo {
     LightType type;
     const char* name;      // "type" in scene files
     const char* label;     // the editor's type list
-    const char* gltfType;  // KHR_lights_punctual "type"
+    const char* gltfType;  // KHR_lights_punctual "type"; nullptr: none
     LightPower power;
     LightFieldSet fields;  // what the inspector shows; validateLight checks cones only if used
     LightOutline outline;
@@ -128,9 +128,12 @@ inline constexpr std::array<LightTypeInfo, 3> kLightTypeTable{{
 
 inline constexpr std::size_t kLightTypeCount = kLightTypeTable.size();
 
+// Not a LightType: what lightTypeIndex gives for a value outside the enumerators.
+inline constexpr std::size_t kNotALightType = ~std::size_t(0);
+
 // The compile-time check that kLightTypeTable covers every LightType: a new enumerator is a
-// -Wswitch error here (warnings are errors) until it gets a case, and the static_assert below
-// then fails until its row is in place.
+// -Wswitch error here (warnings are errors) until it gets a case, and with its case the
+// static_assert below fails until its row is in the table.
 constexpr std::size_t lightTypeIndex(LightType type) {
     switch (type) {
         case LightType::Point:
@@ -140,15 +143,15 @@ constexpr std::size_t lightTypeIndex(LightType type) {
         case LightType::Directional:
             return 2;
     }
-    return kLightTypeCount;
+    return kNotALightType;
 }
 
 constexpr bool lightTypeTableIsComplete() {
     for (std::size_t i = 0; i < kLightTypeCount; ++i) {
         if (lightTypeIndex(kLightTypeTable[i].type) != i) return false;
-        if (std::size_t(kLightTypeTable[i].type) != i) return false;
     }
-    return true;
+    // The enumerators are 0..count-1: the value after the last row is no LightType.
+    return lightTypeIndex(LightType(kLightTypeCount)) == kNotALightType;
 }
 static_assert(lightTypeTableIsComplete(),
               "kLightTypeTable needs one row per LightType, in enumerator order");

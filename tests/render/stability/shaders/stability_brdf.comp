@@ -116,7 +116,7 @@ void main() {
                   kEnvBrdfFitMax, caseIndex);
 
             Light sun = Light(vec3(0.0), 0.0, vec3(mat.intensity), 0.0, -L, 0.0, vec3(0.0, 0.0, 1.0),
-                              kLightDirectional, 0.0, 0.0);
+                              kLightDirectional, 0.0, 0.0, vec2(0.0));
             LightIncidence incidence = evaluateDirectionalLight(sun, N);
             tally3(t[kCheckSpecularGgx], specularGgx(specularColor, roughness, N, V, incidence),
                    0.0, kNoUpperBound, caseIndex);
