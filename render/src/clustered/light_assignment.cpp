@@ -88,6 +88,42 @@ void tileRange(const std::vector<float>& boundaries, float first0, float invStep
     }
 }
 
+// The box [lo, hi] padded for the lighting shader's own (world-space) reconstruction of the
+// points inside it.
+bool lightTouchesPixelBox(const LightBounds& b, glm::vec3 lo, glm::vec3 hi) {
+    const glm::vec3 pad(kPixelBoundsMargin * (1.0f - lo.z));
+    return lightTouchesBox(b, lo - pad, hi + pad);
+}
+
+// The quarter bits of a list entry for a light and a cluster's quarter boxes (0: the light
+// reaches none of its pixels). The exact test on the cluster's box (the quarters' union)
+// first: most lights that reach the cell's planes miss it, and then the four quarter tests are
+// skipped. The quarters test the light's bounding shape, which is the light for spheres and
+// cones and the bounding sphere for capsules: assign_lights.comp does the same without the
+// capsule's search loop (lavapipe's loop limit, see there), and the lists must be equal.
+uint32_t quarterMask(const LightBounds& b, const float* quarterBounds) {
+    glm::vec3 lo(quarterBounds[0], quarterBounds[1], quarterBounds[2]);
+    glm::vec3 hi(quarterBounds[3], quarterBounds[4], quarterBounds[5]);
+    for (uint32_t q = 1; q < 4; ++q) {
+        const float* box = quarterBounds + q * 6;
+        lo = glm::min(lo, glm::vec3(box[0], box[1], box[2]));
+        hi = glm::max(hi, glm::vec3(box[3], box[4], box[5]));
+    }
+    if (!lightTouchesPixelBox(b, lo, hi)) return 0;
+    LightBounds bounding = b;
+    if (bounding.shape == LightShape::Capsule) bounding.shape = LightShape::Sphere;
+    uint32_t mask = 0;
+    for (uint32_t q = 0; q < 4; ++q) {
+        const float* box = quarterBounds + q * 6;
+        if (box[0] > box[3]) continue;  // no pixel in this quarter
+        if (lightTouchesPixelBox(bounding, glm::vec3(box[0], box[1], box[2]),
+                                 glm::vec3(box[3], box[4], box[5]))) {
+            mask |= 1u << (LIGHT_ENTRY_QUARTER_SHIFT + q);
+        }
+    }
+    return mask;
+}
+
 void assignOne(const ClusterGrid& grid, const WalkTables& tables, const LightBounds& b,
                uint32_t lightIndex, const ClusterOccupancy& occupancy,
                const OccupiedNumbering& numbering, PairList& out) {
@@ -143,26 +179,21 @@ void assignOne(const ClusterGrid& grid, const WalkTables& tables, const LightBou
                     continue;
                 }
                 const uint32_t cluster = grid.clusterIndex(x, y, k);
-                glm::vec3 lo, hi;
+                uint32_t quarters = LIGHT_ENTRY_ALL_QUARTERS;
                 if (!occupancy.pixelBounds.empty()) {
-                    // The box around the cluster's pixels, padded for the lighting shader's
-                    // own (world-space) reconstruction of the same points.
-                    const float* bounds = &occupancy.pixelBounds[size_t(cluster) * 6];
-                    lo = glm::vec3(bounds[0], bounds[1], bounds[2]);
-                    hi = glm::vec3(bounds[3], bounds[4], bounds[5]);
-                    glm::vec3 pad(kPixelBoundsMargin * (1.0f - lo.z));
-                    lo -= pad;
-                    hi += pad;
+                    quarters = quarterMask(
+                        b, &occupancy.pixelBounds[size_t(cluster) * CLUSTER_BOUNDS_FLOATS]);
+                    if (quarters == 0) continue;
                 } else {
                     // The cell's view-space box (z is negative in front of the camera).
-                    lo = glm::vec3(std::min(left * z0, left * z1),
-                                   std::min(bottom * z0, bottom * z1), -z1);
-                    hi = glm::vec3(std::max(right * z0, right * z1), std::max(top * z0, top * z1),
-                                   -z0);
+                    const glm::vec3 lo(std::min(left * z0, left * z1),
+                                       std::min(bottom * z0, bottom * z1), -z1);
+                    const glm::vec3 hi(std::max(right * z0, right * z1),
+                                       std::max(top * z0, top * z1), -z0);
+                    if (!lightTouchesBox(b, lo, hi)) continue;
                 }
-                if (!lightTouchesBox(b, lo, hi)) continue;
                 out.cluster.push_back(numbering.compact(tile, k));
-                out.light.push_back(lightIndex);
+                out.light.push_back(lightIndex | quarters);
             }
         }
     }

@@ -13,6 +13,7 @@
 #include "candela/render/frame_scene.h"
 #include "clustered/cluster_grid.h"
 #include "clustered/light_frustum_prepass.h"
+#include "common/light_list_entry.h"
 
 namespace candela::ecs {
 class JobSystem;
@@ -21,7 +22,8 @@ class JobSystem;
 namespace candela::render {
 
 struct LightAssignment {
-    // Directional lights first (they reach every pixel), then every cluster's list.
+    // Directional lights first (they reach every pixel, plain indices), then every cluster's
+    // list of entries: light index | quarter mask (common/light_list_entry.h).
     std::vector<uint32_t> lightIndices;
     // Clusters whose range the last call wrote (the occupied ones); the next call resets
     // those it does not write again. Clear it when handing assignLights zeroed ranges.
@@ -53,7 +55,10 @@ struct LightAssignment {
 struct ClusterOccupancy {
     // One 64-bit mask per tile: bit k set when the tile has a pixel in slice k.
     std::span<const uint64_t> tileMasks;
-    // Per cluster, 6 floats: view-space min xyz and max xyz of its pixels (occupied only).
+    // Per cluster, CLUSTER_BOUNDS_FLOATS: per quarter of its tile (quarterOfPixel in
+    // clusters.glsl) the view-space min xyz and max xyz of its pixels, min > max for a quarter
+    // without any (occupied clusters only). Entries get the bits of the quarters whose box the
+    // light touches; without bounds every entry has all four.
     std::span<const float> pixelBounds;
 };
 
