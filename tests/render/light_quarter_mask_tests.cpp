@@ -4,6 +4,7 @@
 // hand-built cluster, and the analytic floors of the benchmarks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench/analytic_floor.h"
@@ -28,10 +29,12 @@ LightInstance pointAt(const glm::vec3& viewPosition, float radius) {
 
 // One 16 x 16 px tile, one slice: a single cluster whose four quarters hold a 1 m box of
 // pixels each, 10 m in front of the camera, one per screen corner (view space, y up).
+// bounds: the cluster's box, then its quarters' (light_list_entry.h).
 struct OneCluster {
     ClusterGrid grid;
     uint64_t tileMask = 1;
     float bounds[CLUSTER_BOUNDS_FLOATS];
+    float* quarters = bounds + CLUSTER_BOX_FLOATS;
 
     OneCluster() {
         const glm::mat4 projection = reverseZPerspective(glm::radians(60.0f), 1.0f, 0.05f);
@@ -41,16 +44,29 @@ struct OneCluster {
         for (uint32_t q = 0; q < 4; ++q) {
             const glm::vec3 centre(q % 2 ? 3.0f : -3.0f, q / 2 ? -3.0f : 3.0f, -10.0f);
             for (int c = 0; c < 3; ++c) {
-                bounds[q * 6 + c] = centre[c] - 0.5f;
-                bounds[q * 6 + 3 + c] = centre[c] + 0.5f;
+                quarters[q * 6 + c] = centre[c] - 0.5f;
+                quarters[q * 6 + 3 + c] = centre[c] + 0.5f;
+            }
+        }
+        updateClusterBox();
+    }
+    // The cluster's box is its quarters' union.
+    void updateClusterBox() {
+        for (int c = 0; c < 3; ++c) {
+            bounds[c] = kEmptyQuarterBound;
+            bounds[3 + c] = -kEmptyQuarterBound;
+            for (uint32_t q = 0; q < 4; ++q) {
+                bounds[c] = std::min(bounds[c], quarters[q * 6 + c]);
+                bounds[3 + c] = std::max(bounds[3 + c], quarters[q * 6 + 3 + c]);
             }
         }
     }
     void emptyQuarter(uint32_t q) {
         for (int c = 0; c < 3; ++c) {
-            bounds[q * 6 + c] = kEmptyQuarterBound;
-            bounds[q * 6 + 3 + c] = -kEmptyQuarterBound;
+            quarters[q * 6 + c] = kEmptyQuarterBound;
+            quarters[q * 6 + 3 + c] = -kEmptyQuarterBound;
         }
+        updateClusterBox();
     }
     // The cluster's list after assigning `lights` (entries: index | quarter bits).
     std::vector<uint32_t> list(const std::vector<LightInstance>& lights, bool withBounds = true) {

@@ -10,8 +10,13 @@
 #define LIGHT_ENTRY_INDEX_MASK 0x0FFFFFFFu
 #define LIGHT_ENTRY_QUARTER_SHIFT 28u
 #define LIGHT_ENTRY_ALL_QUARTERS 0xF0000000u
-// Floats per cluster in the cluster-bounds buffer: per quarter, min xyz then max xyz of its
-// pixels in view space; a quarter without pixels has min > max (kEmptyQuarterBound).
-#define CLUSTER_BOUNDS_FLOATS 24u
+// The boxes the masks come from, in the cluster-bounds buffer: first, for every cluster, min
+// xyz then max xyz of its pixels in view space (CLUSTER_BOX_FLOATS; the union of its quarters,
+// dense, as the per-cluster test reads it), then for every cluster the same per quarter
+// (CLUSTER_QUARTER_BOXES_FLOATS at clusterCount * CLUSTER_BOX_FLOATS + cluster * 24; a quarter
+// without pixels has min > max, kEmptyQuarterBound). Written for occupied clusters only.
+#define CLUSTER_BOX_FLOATS 6u
+#define CLUSTER_QUARTER_BOXES_FLOATS 24u
+#define CLUSTER_BOUNDS_FLOATS (CLUSTER_BOX_FLOATS + CLUSTER_QUARTER_BOXES_FLOATS)
 
 #endif

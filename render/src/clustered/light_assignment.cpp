@@ -96,20 +96,19 @@ bool lightTouchesPixelBox(const LightBounds& b, glm::vec3 lo, glm::vec3 hi) {
 }
 
 // The quarter bits of a list entry for a light and a cluster's quarter boxes (0: the light
-// reaches none of its pixels). The exact test on the cluster's box (the quarters' union)
-// first: most lights that reach the cell's planes miss it, and then the four quarter tests are
-// skipped. The quarters test the light's bounding shape, which is the light for spheres and
-// cones and the bounding sphere for capsules: assign_lights.comp does the same without the
-// capsule's search loop (lavapipe's loop limit, see there), and the lists must be equal.
-uint32_t quarterMask(const LightBounds& b, const float* quarterBounds) {
-    glm::vec3 lo(quarterBounds[0], quarterBounds[1], quarterBounds[2]);
-    glm::vec3 hi(quarterBounds[3], quarterBounds[4], quarterBounds[5]);
-    for (uint32_t q = 1; q < 4; ++q) {
-        const float* box = quarterBounds + q * 6;
-        lo = glm::min(lo, glm::vec3(box[0], box[1], box[2]));
-        hi = glm::max(hi, glm::vec3(box[3], box[4], box[5]));
+// reaches none of its pixels). The exact test on the cluster's box (the quarters' union, stored
+// densely beside them) first: most lights that reach the cell's planes miss it, and then the
+// four quarter tests are skipped. The quarters test the light's bounding shape, which is the light
+// for spheres and cones and the bounding sphere for capsules: assign_lights.comp does the same
+// without the capsule's search loop (lavapipe's loop limit, see there), and the lists must be
+// equal.
+uint32_t quarterMask(const LightBounds& b, const float* clusterBox, const float* quarterBounds,
+                     bool perQuarter) {
+    if (!lightTouchesPixelBox(b, glm::vec3(clusterBox[0], clusterBox[1], clusterBox[2]),
+                              glm::vec3(clusterBox[3], clusterBox[4], clusterBox[5]))) {
+        return 0;
     }
-    if (!lightTouchesPixelBox(b, lo, hi)) return 0;
+    if (!perQuarter) return LIGHT_ENTRY_ALL_QUARTERS;
     LightBounds bounding = b;
     if (bounding.shape == LightShape::Capsule) bounding.shape = LightShape::Sphere;
     uint32_t mask = 0;
@@ -126,7 +125,7 @@ uint32_t quarterMask(const LightBounds& b, const float* quarterBounds) {
 
 void assignOne(const ClusterGrid& grid, const WalkTables& tables, const LightBounds& b,
                uint32_t lightIndex, const ClusterOccupancy& occupancy,
-               const OccupiedNumbering& numbering, PairList& out) {
+               const OccupiedNumbering& numbering, bool quarterMasks, PairList& out) {
     const float centerDepth = -b.center.z;
     const float nearDepth = centerDepth - b.radius;
     const float farDepth = centerDepth + b.radius;
@@ -182,7 +181,10 @@ void assignOne(const ClusterGrid& grid, const WalkTables& tables, const LightBou
                 uint32_t quarters = LIGHT_ENTRY_ALL_QUARTERS;
                 if (!occupancy.pixelBounds.empty()) {
                     quarters = quarterMask(
-                        b, &occupancy.pixelBounds[size_t(cluster) * CLUSTER_BOUNDS_FLOATS]);
+                        b, &occupancy.pixelBounds[size_t(cluster) * CLUSTER_BOX_FLOATS],
+                        &occupancy.pixelBounds[size_t(grid.clusterCount()) * CLUSTER_BOX_FLOATS +
+                                               size_t(cluster) * CLUSTER_QUARTER_BOXES_FLOATS],
+                        quarterMasks);
                     if (quarters == 0) continue;
                 } else {
                     // The cell's view-space box (z is negative in front of the camera).
@@ -258,7 +260,7 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
             }
             for (uint32_t i : list.visible) {
                 assignOne(grid, tables, lightBoundsInView(lights[i], view), i, occupancy, numbering,
-                          list);
+                          out.quarterMasks, list);
             }
         }
     };

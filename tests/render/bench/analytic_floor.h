@@ -26,7 +26,7 @@ struct AnalyticFloorView {
     glm::mat4 view{1.0f};
     ClusterGrid grid;
     std::vector<uint64_t> tileMasks;
-    std::vector<float> pixelBounds;  // 4 quarter boxes per cluster, as ClusterOccupancy
+    std::vector<float> pixelBounds;  // cluster boxes, then 4 quarter boxes per cluster
     uint32_t width = 0, height = 0;
     std::vector<glm::vec3> pixels;  // view-space point per pixel; z == 0: background
 
@@ -71,8 +71,9 @@ inline AnalyticFloorView analyticFloorView(uint32_t width, uint32_t height, floa
     f.grid.setSlicing(sliceNear, std::log(std::max(maxDepth, sliceNear * 1.01f) / sliceNear) /
                                      float(f.grid.slices));
     f.tileMasks.assign(f.grid.tileCount(), 0);
-    // Every quarter starts empty (min > max), as depth_occupancy.comp writes them.
+    // Every box starts empty (min > max), as depth_occupancy.comp writes empty quarters.
     f.pixelBounds.resize(size_t(f.grid.clusterCount()) * CLUSTER_BOUNDS_FLOATS);
+    float* quarterBoxes = &f.pixelBounds[size_t(f.grid.clusterCount()) * CLUSTER_BOX_FLOATS];
     for (size_t i = 0; i < f.pixelBounds.size(); ++i)
         f.pixelBounds[i] = i % 6 < 3 ? kEmptyQuarterBound : -kEmptyQuarterBound;
     for (uint32_t py = 0; py < height; ++py) {
@@ -82,9 +83,14 @@ inline AnalyticFloorView analyticFloorView(uint32_t width, uint32_t height, floa
             const uint32_t tile = (py / tileSize) * f.grid.tilesX + px / tileSize;
             const uint32_t slice = f.grid.sliceOf(-p.z);
             f.tileMasks[tile] |= uint64_t(1) << slice;
-            float* box =
-                &f.pixelBounds[size_t(slice * f.grid.tileCount() + tile) * CLUSTER_BOUNDS_FLOATS +
-                               quarterOf(tileSize, px, py) * 6];
+            const size_t cluster = size_t(slice) * f.grid.tileCount() + tile;
+            float* box = &f.pixelBounds[cluster * CLUSTER_BOX_FLOATS];
+            float* quarter = &quarterBoxes[cluster * CLUSTER_QUARTER_BOXES_FLOATS +
+                                           quarterOf(tileSize, px, py) * 6];
+            for (int c = 0; c < 3; ++c) {
+                quarter[c] = std::min(quarter[c], p[c]);
+                quarter[3 + c] = std::max(quarter[3 + c], p[c]);
+            }
             for (int c = 0; c < 3; ++c) {
                 box[c] = std::min(box[c], p[c]);
                 box[3 + c] = std::max(box[3 + c], p[c]);

@@ -110,14 +110,8 @@ inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
                     const uint32_t cluster = pixels[q].cluster, tile = cluster % g.tileCount();
                     const uint32_t tx = tile % g.tilesX, ty = tile / g.tilesX;
                     const uint32_t quarter = pixels[q].quarter;
-                    // The union of the cluster's quarter boxes.
-                    const float* box = &f.pixelBounds[size_t(cluster) * CLUSTER_BOUNDS_FLOATS];
+                    const float* box = &f.pixelBounds[size_t(cluster) * CLUSTER_BOX_FLOATS];
                     glm::vec3 blo(box[0], box[1], box[2]), bhi(box[3], box[4], box[5]);
-                    for (int b = 1; b < 4; ++b) {
-                        blo = glm::min(blo, glm::vec3(box[6 * b], box[6 * b + 1], box[6 * b + 2]));
-                        bhi = glm::max(bhi,
-                                       glm::vec3(box[6 * b + 3], box[6 * b + 4], box[6 * b + 5]));
-                    }
                     const glm::vec3 bpad(1e-4f * (1.0f - blo.z));
                     const float half = float(g.tileSize / 2);
                     const float left =

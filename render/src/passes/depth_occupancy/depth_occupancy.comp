@@ -11,8 +11,9 @@ layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(binding = 0) uniform sampler2D depthBuffer;
 layout(std430, binding = 1) writeonly buffer Occupancy { uvec2 tileMasks[]; };
-// Per cluster, CLUSTER_BOUNDS_FLOATS: per quarter, min xyz and max xyz of its pixels in view
-// space, kEmptyQuarterBound-empty for a quarter without pixels (unwritten where unoccupied).
+// Per cluster, min xyz and max xyz of its pixels in view space, then per cluster and quarter
+// the same, kEmptyQuarterBound-empty for a quarter without pixels (light_list_entry.h;
+// unwritten where unoccupied).
 layout(std430, binding = 2) writeonly buffer ClusterBounds { float clusterBounds[]; };
 // From depth_range.comp: [0] min, [1] max view depth (ordered bits); this pass writes the
 // slicing it derived into [2] sliceNear and [3] logRatio (float bits) for the CPU and the
@@ -80,12 +81,25 @@ void main() {
     uint tileIndex = tile.y * push.grid.tilesX + tile.x;
     if (gl_LocalInvocationIndex == 0u) tileMasks[tileIndex] = uvec2(maskLow, maskHigh);
     uint tileCount = push.grid.tilesX * push.grid.tilesY;
+    uint clusterCount = tileCount * push.grid.slices;
     for (uint i = gl_LocalInvocationIndex; i < push.grid.slices * 4u; i += 256u) {
         uint slice = i / 4u;
         uint occupied = slice < 32u ? maskLow >> slice : maskHigh >> (slice - 32u);
         if ((occupied & 1u) == 0u) continue;  // nothing in this cluster
         uint cluster = slice * tileCount + tileIndex;
-        uint out_ = cluster * CLUSTER_BOUNDS_FLOATS + (i % 4u) * 6u;
+        if (i % 4u == 0u) {
+            // The cluster's box: its quarters' union (the cleared values are neutral).
+            for (uint c = 0u; c < 3u; ++c) {
+                uint lo = min(min(boundsMin[i * 3u + c], boundsMin[i * 3u + 3u + c]),
+                              min(boundsMin[i * 3u + 6u + c], boundsMin[i * 3u + 9u + c]));
+                uint hi = max(max(boundsMax[i * 3u + c], boundsMax[i * 3u + 3u + c]),
+                              max(boundsMax[i * 3u + 6u + c], boundsMax[i * 3u + 9u + c]));
+                clusterBounds[cluster * CLUSTER_BOX_FLOATS + c] = fromOrderedBits(lo);
+                clusterBounds[cluster * CLUSTER_BOX_FLOATS + 3u + c] = fromOrderedBits(hi);
+            }
+        }
+        uint out_ = clusterCount * CLUSTER_BOX_FLOATS + cluster * CLUSTER_QUARTER_BOXES_FLOATS +
+                    (i % 4u) * 6u;
         bool empty = boundsMax[i * 3u] == 0u;  // no pixel in this quarter
         for (uint c = 0u; c < 3u; ++c) {
             clusterBounds[out_ + c] =

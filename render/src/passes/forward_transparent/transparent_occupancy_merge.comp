@@ -40,10 +40,12 @@ void main() {
     }
     if (blended) {
         bool opaque = ((slice < 32u ? opaqueMask.x >> slice : opaqueMask.y >> (slice - 32u)) & 1u) != 0u;
+        vec3 unionLo = vec3(kEmptyQuarterBound), unionHi = vec3(-kEmptyQuarterBound);
         for (uint q = 0u; q < 4u; ++q) {
             uint box = 4u * cluster + q;
             bool empty = bounds[3u * (4u * clusterCount + box)] == 0u;
-            uint out_ = cluster * CLUSTER_BOUNDS_FLOATS + q * 6u;
+            uint out_ = clusterCount * CLUSTER_BOX_FLOATS + cluster * CLUSTER_QUARTER_BOXES_FLOATS +
+                        q * 6u;
             for (uint c = 0u; c < 3u; ++c) {
                 float lo = empty ? kEmptyQuarterBound : fromOrderedBits(bounds[3u * box + c]);
                 float hi = empty ? -kEmptyQuarterBound
@@ -55,7 +57,14 @@ void main() {
                 }
                 clusterBounds[out_ + c] = lo;
                 clusterBounds[out_ + 3u + c] = hi;
+                unionLo[c] = min(unionLo[c], lo);
+                unionHi[c] = max(unionHi[c], hi);
             }
+        }
+        // The cluster's box: the union of its quarters, blended and opaque.
+        for (uint c = 0u; c < 3u; ++c) {
+            clusterBounds[cluster * CLUSTER_BOX_FLOATS + c] = unionLo[c];
+            clusterBounds[cluster * CLUSTER_BOX_FLOATS + 3u + c] = unionHi[c];
         }
         if (slice < 32u) {
             atomicOr(addedLow, 1u << slice);

@@ -91,20 +91,17 @@ uint quarterBit(LightBounds b, uint at, uint q) {
 }
 
 // The entry's quarter bits for the cluster (0: the light reaches none of its pixels), as
-// quarterMask in light_assignment.cpp: the exact test on the quarters' union, then the
+// quarterMask in light_assignment.cpp: the exact test on the cluster's box, then the
 // bounding-shape test per quarter. Written without loops: llvmpipe (lavapipe) stops a shader's
 // loops after 65,535 iterations in total, counting at least one per loop entered even with
 // every lane inactive (the capsule search in lightTouchesBox); a light over every cluster of a
 // 256 x 256 frame already spends two per cluster, 32,768, and a loop per quarter test would
 // take it past the limit and silently drop clusters.
-uint quarterMask(LightBounds b, uint cluster) {
-    uint at = cluster * CLUSTER_BOUNDS_FLOATS;
-    vec3 lo = min(min(boundsMin(at), boundsMin(at + 6u)),
-                  min(boundsMin(at + 12u), boundsMin(at + 18u)));
-    vec3 hi = max(max(boundsMax(at), boundsMax(at + 6u)),
-                  max(boundsMax(at + 12u), boundsMax(at + 18u)));
+uint quarterMask(LightBounds b, uint cluster, uint clusterCount) {
+    vec3 lo = boundsMin(cluster * CLUSTER_BOX_FLOATS), hi = boundsMax(cluster * CLUSTER_BOX_FLOATS);
     vec3 pad = pixelBoxPad(lo);
     if (!lightTouchesBox(b, lo - pad, hi + pad)) return 0u;
+    uint at = clusterCount * CLUSTER_BOX_FLOATS + cluster * CLUSTER_QUARTER_BOXES_FLOATS;
     return quarterBit(b, at, 0u) | quarterBit(b, at + 6u, 1u) | quarterBit(b, at + 12u, 2u) |
            quarterBit(b, at + 18u, 3u);
 }
@@ -171,7 +168,7 @@ void main() {
                     continue;
                 }
                 const uint cluster = k * tileCount + tile;
-                const uint quarters = quarterMask(b, cluster);
+                const uint quarters = quarterMask(b, cluster, tileCount * slices);
                 if (quarters == 0u) continue;
                 emit(cluster, lightIndex | quarters);
             }
