@@ -109,18 +109,8 @@ uint32_t quarterMask(const LightBounds& b, const float* clusterBox, const float*
         return 0;
     }
     if (!perQuarter) return LIGHT_ENTRY_ALL_QUARTERS;
-    LightBounds bounding = b;
-    if (bounding.shape == LightShape::Capsule) bounding.shape = LightShape::Sphere;
-    uint32_t mask = 0;
-    for (uint32_t q = 0; q < 4; ++q) {
-        const float* box = quarterBounds + q * 6;
-        if (box[0] > box[3]) continue;  // no pixel in this quarter
-        if (lightTouchesPixelBox(bounding, glm::vec3(box[0], box[1], box[2]),
-                                 glm::vec3(box[3], box[4], box[5]))) {
-            mask |= 1u << (LIGHT_ENTRY_QUARTER_SHIFT + q);
-        }
-    }
-    return mask;
+    return boundingShapeTouchesBoxes(b, quarterBounds, 4, kPixelBoundsMargin)
+           << LIGHT_ENTRY_QUARTER_SHIFT;
 }
 
 void assignOne(const ClusterGrid& grid, const WalkTables& tables, const LightBounds& b,
