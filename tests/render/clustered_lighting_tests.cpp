@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "bench/analytic_floor.h"
 #include "test_scene.h"
 
 using namespace candela::render;
@@ -146,6 +147,9 @@ void expectClusteredMatchesBruteForce(size_t lightCount, uint32_t size) {
     EXPECT_LT(deviceStats.lightEvaluations, bruteStats.lightEvaluations);
     EXPECT_EQ(deviceStats.lightListOverflows, 0u);
     EXPECT_GT(deviceStats.lightClusterPairs, 0u);
+    // The same lists with the same quarter masks: as many entries, as many evaluated pairs.
+    EXPECT_EQ(deviceStats.lightClusterPairs, clusteredStats.lightClusterPairs);
+    EXPECT_EQ(deviceStats.lightEvaluations, clusteredStats.lightEvaluations);
     EXPECT_EQ(context.validationMessages(), 0u);
 }
 
@@ -269,6 +273,76 @@ TEST(ClusteredLighting, CullingEfficiencyOnAFloor) {
         EXPECT_LE(efficiency, 2.0);
     }
 }
+// Issue 22's mixed-size floor (the benchmark's `--scene mixed`) at a small size: the quarter
+// masks keep evaluated / lit under 1.5, the CPU and compute
+// assignments give the same entries and masks (same pairs, same evaluations, same image), and
+// the image is brute force's.
+TEST(ClusteredLighting, QuarterMasksOnTheMixedSizeFloor) {
+    GpuContext context(requiredValidation());
+    TestScene scene;
+    scene.width = 320;
+    scene.height = 180;
+    scene.add(candela::content::makePlane(candela::render::bench::kMixedSizeFloorHalfExtent, 8),
+              lambertWhite());
+    scene.lookAt({0.0f, 6.0f, 20.0f}, {0.0f, 0.0f, -20.0f}, {0.0f, 1.0f, 0.0f});
+    scene.lights = candela::render::bench::mixedSizeLights(1024);
+    RendererOptions cpu;
+    cpu.countLightPairs = true;
+    RendererOptions gpu = cpu;
+    gpu.lightAssignment = LightAssignmentDevice::Gpu;
+    RendererOptions bruteForce = cpu;
+    bruteForce.lightCulling = LightCulling::BruteForce;
+    RendererStats cpuStats, gpuStats, bruteStats;
+    CapturedFrame a = scene.render(context, cpu, &cpuStats);
+    CapturedFrame b = scene.render(context, gpu, &gpuStats);
+    CapturedFrame reference = scene.render(context, bruteForce, &bruteStats);
+    const double efficiency =
+        double(cpuStats.lightEvaluations) / double(std::max<uint64_t>(cpuStats.litPairs, 1));
+    std::printf("mixed-size floor, 320x180: evaluated / lit = %.3f, pairs %llu (GPU %llu)\n",
+                efficiency, (unsigned long long)cpuStats.lightClusterPairs,
+                (unsigned long long)gpuStats.lightClusterPairs);
+    EXPECT_GT(cpuStats.litPairs, 0u);
+    EXPECT_EQ(cpuStats.litPairs, bruteStats.litPairs);
+    EXPECT_LE(efficiency, 1.5);
+    EXPECT_EQ(gpuStats.lightClusterPairs, cpuStats.lightClusterPairs);
+    EXPECT_EQ(gpuStats.lightEvaluations, cpuStats.lightEvaluations);
+    EXPECT_EQ(gpuStats.litPairs, cpuStats.litPairs);
+    EXPECT_EQ(b.hdrRgb, a.hdrRgb);
+    EXPECT_LE(maxRelativeDifference(a, reference), 1e-4);
+    EXPECT_EQ(context.validationMessages(), 0u);
+}
+
+// One light reaching every cluster of a grid of spheres seen head-on at 256 x 256 (nothing
+// behind them, so the slices span the spheres' depth and most tiles hold many): both
+// assignment paths list it in every occupied cluster. (lavapipe ends a shader's loops after
+// 65,535 iterations in all; a compute walk that spent a few more per cluster silently dropped
+// clusters here.)
+TEST(ClusteredLighting, LightOverEveryClusterListedEverywhereOnBothPaths) {
+    GpuContext context(requiredValidation());
+    TestScene scene;
+    scene.width = 256;
+    scene.height = 256;
+    for (int i = 0; i < 49; ++i) {
+        const glm::vec3 at(float(i % 7) - 3.0f, float(i / 7) - 3.0f, 0.0f);
+        scene.add(candela::content::makeSphere(0.45f, 24, 12), lambertWhite(),
+                  glm::translate(glm::mat4(1.0f), at));
+    }
+    scene.lookAt({0.0f, 0.0f, 8.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
+    scene.lights.push_back(pointLight({-2.0f, 2.5f, 3.0f}, 6000.0f, 25.0f));
+    for (LightAssignmentDevice device : {LightAssignmentDevice::Cpu, LightAssignmentDevice::Gpu}) {
+        RendererOptions options;
+        options.lightAssignment = device;
+        RendererStats stats;
+        scene.render(context, options, &stats);
+        std::printf("%s: %llu pairs, %u occupied clusters\n",
+                    device == LightAssignmentDevice::Gpu ? "GPU" : "CPU",
+                    (unsigned long long)stats.lightClusterPairs, stats.clustersOccupied);
+        EXPECT_GT(stats.clustersOccupied, 4096u);
+        EXPECT_EQ(stats.lightClusterPairs, stats.clustersOccupied);
+    }
+    EXPECT_EQ(context.validationMessages(), 0u);
+}
+
 // The measurement behind the default tile size and slice count (render/README.md). Run with
 // --gtest_filter=*TileAndSliceSweep* --gtest_also_run_disabled_tests.
 TEST(ClusteredLighting, DISABLED_TileAndSliceSweep) {

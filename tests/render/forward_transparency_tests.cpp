@@ -227,6 +227,53 @@ TEST(ForwardTransparency, ClusteredLightsMatchBruteForceWithOnlyBlendedSurfaces)
     expectClusteredMatchesBruteForceOnBlendedSquare(false);
 }
 
+// A blended square 8 cm in front of an opaque floor, both in the same clusters, under small
+// lights that reach the square but not the floor: the quarter masks of the light lists must
+// come from the blended fragments too (the floor's pixel boxes alone would clear every bit),
+// so the forward pass's masked lookup finds the lights brute force gives it.
+TEST(ForwardTransparency, QuarterMasksHoldForBlendedSurfacesInFrontOfOpaqueOnes) {
+    GpuContext context(requiredValidation());
+    StackScene scene;
+    std::vector<uint32_t> order;
+    order.push_back(
+        scene.addPlane(200.0f, 0.92f, lit({1.0f, 1.0f, 1.0f, 1.0f}, AlphaMode::Opaque)));
+    order.push_back(scene.addPlane(1.5f, 1.0f, lit({0.2f, 0.6f, 1.0f, 0.5f}, AlphaMode::Blend)));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> xz(-1.5f, 1.5f), height(1.2f, 1.6f);
+    for (int i = 0; i < 96; ++i) {
+        const float y = height(rng);
+        // Radius between the distances to the square (y - 1) and to the floor (y - 0.92).
+        scene.lights.push_back(pointLight({xz(rng), y, xz(rng)}, 300.0f, y - 0.93f));
+    }
+    RendererOptions bruteForce;
+    bruteForce.lightCulling = LightCulling::BruteForce;
+    CapturedFrame reference = scene.render(context, order, bruteForce);
+    uint32_t litPixels = 0;
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x < kSize; ++x) {
+            const float* p = hdrPixel(reference, x, y);
+            litPixels += p[0] + p[1] + p[2] > 0.0f ? 1u : 0u;  // the square, where lights reach
+        }
+    }
+    EXPECT_GT(litPixels, 100u);
+    for (LightAssignmentDevice device : {LightAssignmentDevice::Cpu, LightAssignmentDevice::Gpu}) {
+        RendererOptions options;
+        options.lightAssignment = device;
+        CapturedFrame clustered = scene.render(context, order, options);
+        double worst = 0.0;
+        for (uint32_t y = 0; y < kSize; ++y) {
+            for (uint32_t x = 0; x < kSize; ++x) {
+                worst = std::max(worst, relativeDifference(hdrPixel(clustered, x, y),
+                                                           hdrPixel(reference, x, y)));
+            }
+        }
+        std::printf("%s lists vs brute force: worst relative difference %.3g, %u lit pixels\n",
+                    device == LightAssignmentDevice::Gpu ? "GPU" : "CPU", worst, litPixels);
+        EXPECT_LE(worst, 1e-4);
+    }
+    EXPECT_EQ(context.validationMessages(), 0u);
+}
+
 // Only frames with blended draws record the pass (and say so in --stats features).
 TEST(ForwardTransparency, RecordedOnlyForFramesWithBlendedDraws) {
     GpuContext context(requiredValidation());

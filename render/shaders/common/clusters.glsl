@@ -2,6 +2,8 @@
 #ifndef CANDELA_CLUSTERS_GLSL
 #define CANDELA_CLUSTERS_GLSL
 
+#include "common/light_list_entry.h"
+
 struct ClusterGridParams {
     uint tileSize;
     uint tilesX;
@@ -34,6 +36,29 @@ uint clusterOfPixel(ClusterGridParams grid, uvec2 pixel, float ndcDepth, float s
     uint slice = sliceOfDepth(sliceNear, logRatio, grid.slices, viewDepth);
     return (slice * grid.tilesY + tile.y) * grid.tilesX + tile.x;
 }
+
+// Which quarter of its screen tile a pixel lies in: (right half) + 2 * (lower half). List
+// entries carry one bit per quarter (light_list_entry.h); the occupancy pass boxes each
+// quarter's pixels, the assignment tests lights against those boxes.
+uint quarterOfPixel(uint tileSize, uvec2 pixel) {
+    uvec2 half_ = (pixel % tileSize) * 2u / tileSize;
+    return half_.x + 2u * half_.y;
+}
+
+// The bit a pixel's list entries must carry for it to evaluate their light.
+uint quarterBitOfPixel(ClusterGridParams grid, uvec2 pixel) {
+    return 1u << (LIGHT_ENTRY_QUARTER_SHIFT + quarterOfPixel(grid.tileSize, pixel));
+}
+
+// Light index of a list entry whose quarter bits include `quarterBit`, else kNoLight: the one
+// masked read the lighting and forward passes share.
+const uint kNoLight = 0xffffffffu;
+uint lightOfEntry(uint entry, uint quarterBit) {
+    return (entry & quarterBit) != 0u ? entry & LIGHT_ENTRY_INDEX_MASK : kNoLight;
+}
+
+// Bounds of a quarter without pixels: min above max on every axis, so it touches no light.
+const float kEmptyQuarterBound = 3.0e38;
 
 // Order-preserving float bits: uint atomics on them give float min/max.
 uint orderedBits(float f) {

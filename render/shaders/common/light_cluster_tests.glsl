@@ -95,15 +95,13 @@ float distanceSegmentBox(vec3 a, vec3 b, vec3 lo, vec3 hi) {
     return max(sqrt(distanceSqPointBox(a + (b - a) * (0.5 * (t0 + t1)), lo, hi)) - bracket, 0.0);
 }
 
-// Does the light reach the view-space box [lo, hi]?
-bool lightTouchesBox(LightBounds b, vec3 lo, vec3 hi) {
-    if (b.shape == kBoundsCapsule) {
-        return distanceSegmentBox(b.segmentStart, b.segmentEnd, lo, hi) <=
-               b.capsuleRadius + boundsSlack(b.radius);
-    }
+// Does the light's bounding sphere, and for a cone the cone, reach the view-space box
+// [lo, hi]? Exact for spheres and cones, conservative for capsules; loop-free (the quarter
+// tests of assign_lights.comp rely on that).
+bool boundingShapeTouchesBox(LightBounds b, vec3 lo, vec3 hi) {
     float r = b.radius + boundsSlack(b.radius);
     if (distanceSqPointBox(b.center, lo, hi) > r * r) return false;
-    if (b.shape == kBoundsSphere) return true;
+    if (b.shape != kBoundsCone) return true;
     // The box's bounding sphere against the cone (sphere-vs-cone with a flat cap).
     vec3 boxCenter = 0.5 * (lo + hi);
     float boxRadius = 0.5 * length(hi - lo) + boundsSlack(b.radius);
@@ -113,6 +111,15 @@ bool lightTouchesBox(LightBounds b, vec3 lo, vec3 hi) {
     if (b.coneCos * across - along * b.coneSin > boxRadius) return false;
     if (along > b.capsuleRadius + boxRadius) return false;
     return along >= -boxRadius;
+}
+
+// Does the light reach the view-space box [lo, hi]?
+bool lightTouchesBox(LightBounds b, vec3 lo, vec3 hi) {
+    if (b.shape == kBoundsCapsule) {
+        return distanceSegmentBox(b.segmentStart, b.segmentEnd, lo, hi) <=
+               b.capsuleRadius + boundsSlack(b.radius);
+    }
+    return boundingShapeTouchesBox(b, lo, hi);
 }
 
 // False when the light lies entirely on the negative side of the plane n.p = 0 (n unit).

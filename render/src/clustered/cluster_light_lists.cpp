@@ -4,6 +4,8 @@
 #include <bit>
 #include <cstring>
 #include <span>
+#include <stdexcept>
+#include <string>
 
 #include "candela/ecs/job_system.h"
 #include "candela/render/gpu_context.h"
@@ -76,7 +78,7 @@ void ClusterLightLists::assignOnCpu(const FrameInputs& inputs, RendererStats& st
     ClusterOccupancy occupancy;
     occupancy.tileMasks = {static_cast<const uint64_t*>(occupancy_.mapped()), grid_->tileCount()};
     occupancy.pixelBounds = {static_cast<const float*>(clusterBounds_.mapped()),
-                             size_t(grid_->clusterCount()) * 6};
+                             size_t(grid_->clusterCount()) * CLUSTER_BOUNDS_FLOATS};
     // Ranges are written in place, only for the clusters that changed (light_assignment.h): a
     // new buffer starts from zeros.
     if (ensureHostBuffer(context_, clusterRanges_, VkDeviceSize(grid_->clusterCount()) * 8)) {
@@ -165,7 +167,14 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
     const bool onDevice = device_ == LightAssignmentDevice::Gpu;
     assignedOnDevice_ = false;
     ensureHostBuffer(context_, occupancy_, VkDeviceSize(grid_->tileCount()) * 8);
-    ensureHostBuffer(context_, clusterBounds_, VkDeviceSize(grid_->clusterCount()) * 24);
+    ensureHostBuffer(context_, clusterBounds_,
+                     VkDeviceSize(grid_->clusterCount()) * CLUSTER_BOUNDS_FLOATS * sizeof(float));
+    // List entries keep the light index in 28 bits (common/light_list_entry.h).
+    if (in.frame->scene.lights.size() > size_t(LIGHT_ENTRY_INDEX_MASK) + 1) {
+        throw std::length_error(
+            "clustered lighting: " + std::to_string(in.frame->scene.lights.size()) +
+            " lights, over the 2^28 a light list entry can index");
+    }
     // Read on the CPU: by the host assignment pass, or (device path) for the stats.
     ResourceHandle tileMasks = g.importBuffer("cluster.tile_masks", &occupancy_, onDevice);
     ResourceHandle clusterBounds = g.importBuffer("cluster.bounds", &clusterBounds_);

@@ -85,7 +85,7 @@ private:
     std::unique_ptr<DepthOccupancyPass> occupancyPass_;
     std::unique_ptr<LightAssignmentPass> assignmentPass_;  // device assignment only
     GpuBuffer occupancy_;      // uvec2 per tile, written by the GPU, read by the CPU
-    GpuBuffer clusterBounds_;  // view-space box of each occupied cluster's pixels
+    GpuBuffer clusterBounds_;  // view-space box of each occupied cluster, then of its quarters
     GpuBuffer depthRange_;     // measured depth range and the slicing derived from it
     GpuBuffer clusterRanges_;  // offset, count per cluster
     GpuBuffer lightIndices_;

@@ -89,9 +89,34 @@ void tileRange(const std::vector<float>& boundaries, float first0, float invStep
     }
 }
 
+// The box [lo, hi] padded for the lighting shader's own (world-space) reconstruction of the
+// points inside it.
+bool lightTouchesPixelBox(const LightBounds& b, glm::vec3 lo, glm::vec3 hi) {
+    const glm::vec3 pad(kPixelBoundsMargin * (1.0f - lo.z));
+    return lightTouchesBox(b, lo - pad, hi + pad);
+}
+
+// The quarter bits of a list entry for a light and a cluster's quarter boxes (0: the light
+// reaches none of its pixels). The exact test on the cluster's box (the quarters' union, stored
+// densely beside them) first: most lights that reach the cell's planes miss it, and then the
+// four quarter tests are skipped. The quarters test the light's bounding shape, which is the light
+// for spheres and cones and the bounding sphere for capsules: assign_lights.comp does the same
+// without the capsule's search loop (lavapipe's loop limit, see there), and the lists must be
+// equal.
+uint32_t quarterMask(const LightBounds& b, const float* clusterBox, const float* quarterBounds,
+                     bool perQuarter) {
+    if (!lightTouchesPixelBox(b, glm::vec3(clusterBox[0], clusterBox[1], clusterBox[2]),
+                              glm::vec3(clusterBox[3], clusterBox[4], clusterBox[5]))) {
+        return 0;
+    }
+    if (!perQuarter) return LIGHT_ENTRY_ALL_QUARTERS;
+    return boundingShapeTouchesBoxes(b, quarterBounds, 4, kPixelBoundsMargin)
+           << LIGHT_ENTRY_QUARTER_SHIFT;
+}
+
 void assignOne(const ClusterGrid& grid, const WalkTables& tables, const LightBounds& b,
                uint32_t lightIndex, const ClusterOccupancy& occupancy,
-               const OccupiedNumbering& numbering, PairList& out) {
+               const OccupiedNumbering& numbering, bool quarterMasks, PairList& out) {
     const float centerDepth = -b.center.z;
     const float nearDepth = centerDepth - b.radius;
     const float farDepth = centerDepth + b.radius;
@@ -144,26 +169,24 @@ void assignOne(const ClusterGrid& grid, const WalkTables& tables, const LightBou
                     continue;
                 }
                 const uint32_t cluster = grid.clusterIndex(x, y, k);
-                glm::vec3 lo, hi;
+                uint32_t quarters = LIGHT_ENTRY_ALL_QUARTERS;
                 if (!occupancy.pixelBounds.empty()) {
-                    // The box around the cluster's pixels, padded for the lighting shader's
-                    // own (world-space) reconstruction of the same points.
-                    const float* bounds = &occupancy.pixelBounds[size_t(cluster) * 6];
-                    lo = glm::vec3(bounds[0], bounds[1], bounds[2]);
-                    hi = glm::vec3(bounds[3], bounds[4], bounds[5]);
-                    glm::vec3 pad(kPixelBoundsMargin * (1.0f - lo.z));
-                    lo -= pad;
-                    hi += pad;
+                    quarters = quarterMask(
+                        b, &occupancy.pixelBounds[size_t(cluster) * CLUSTER_BOX_FLOATS],
+                        &occupancy.pixelBounds[size_t(grid.clusterCount()) * CLUSTER_BOX_FLOATS +
+                                               size_t(cluster) * CLUSTER_QUARTER_BOXES_FLOATS],
+                        quarterMasks);
+                    if (quarters == 0) continue;
                 } else {
                     // The cell's view-space box (z is negative in front of the camera).
-                    lo = glm::vec3(std::min(left * z0, left * z1),
-                                   std::min(bottom * z0, bottom * z1), -z1);
-                    hi = glm::vec3(std::max(right * z0, right * z1), std::max(top * z0, top * z1),
-                                   -z0);
+                    const glm::vec3 lo(std::min(left * z0, left * z1),
+                                       std::min(bottom * z0, bottom * z1), -z1);
+                    const glm::vec3 hi(std::max(right * z0, right * z1),
+                                       std::max(top * z0, top * z1), -z0);
+                    if (!lightTouchesBox(b, lo, hi)) continue;
                 }
-                if (!lightTouchesBox(b, lo, hi)) continue;
                 out.cluster.push_back(numbering.compact(tile, k));
-                out.light.push_back(lightIndex);
+                out.light.push_back(lightIndex | quarters);
             }
         }
     }
@@ -228,7 +251,7 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
             }
             for (uint32_t i : list.visible) {
                 assignOne(grid, tables, lightBoundsInView(lights[i], view), i, occupancy, numbering,
-                          list);
+                          out.quarterMasks, list);
             }
         }
     };

@@ -13,6 +13,7 @@
 #include "candela/render/frame_scene.h"
 #include "clustered/cluster_grid.h"
 #include "clustered/light_frustum_prepass.h"
+#include "common/light_list_entry.h"
 
 namespace candela::ecs {
 class JobSystem;
@@ -21,7 +22,8 @@ class JobSystem;
 namespace candela::render {
 
 struct LightAssignment {
-    // Directional lights first (they reach every pixel), then every cluster's list.
+    // Directional lights first (they reach every pixel, plain indices), then every cluster's
+    // list of entries: light index | quarter mask (common/light_list_entry.h).
     std::vector<uint32_t> lightIndices;
     // Clusters whose range the last call wrote (the occupied ones); the next call resets
     // those it does not write again. Clear it when handing assignLights zeroed ranges.
@@ -34,6 +36,10 @@ struct LightAssignment {
     // The SIMD frustum pre-pass (light_frustum_prepass.h). It changes no list; off only to
     // measure what it saves and to test that it changes nothing.
     bool frustumPrepass = true;
+    // Per-quarter tests (ClusterOccupancy::pixelBounds). Off, every entry gets all four quarter
+    // bits after the test on the cluster's box: the lists as before the masks, only to measure
+    // what the masks cost and save.
+    bool quarterMasks = true;
 
     // Scratch kept between calls, so a warm frame allocates (and page-faults) nothing: per job,
     // the light-cluster pairs it found in ascending light order; per occupied cluster, the
@@ -53,7 +59,11 @@ struct LightAssignment {
 struct ClusterOccupancy {
     // One 64-bit mask per tile: bit k set when the tile has a pixel in slice k.
     std::span<const uint64_t> tileMasks;
-    // Per cluster, 6 floats: view-space min xyz and max xyz of its pixels (occupied only).
+    // Per cluster, CLUSTER_BOX_FLOATS: view-space min xyz and max xyz of its pixels; then per
+    // cluster, CLUSTER_QUARTER_BOXES_FLOATS: the same per quarter of its tile (quarterOfPixel
+    // in clusters.glsl), min > max for a quarter without any (occupied clusters only;
+    // common/light_list_entry.h). Entries get the bits of the quarters whose box the light
+    // touches; without bounds every entry has all four.
     std::span<const float> pixelBounds;
 };
 

@@ -108,6 +108,24 @@ bool lightTouchesBox(const LightBounds& b, const glm::vec3& lo, const glm::vec3&
     return true;
 }
 
+uint32_t boundingShapeTouchesBoxes(const LightBounds& b, const float* boxes, uint32_t count,
+                                   float padPerDepth) {
+    // Spheres (and capsules' bounding spheres) inline: this runs four times per listed pair.
+    const float r = b.radius + slack(b.radius);
+    uint32_t touched = 0;
+    for (uint32_t i = 0; i < count; ++i) {
+        const float* box = boxes + 6 * i;
+        if (box[0] > box[3]) continue;  // empty
+        const glm::vec3 lo(box[0], box[1], box[2]), hi(box[3], box[4], box[5]);
+        const glm::vec3 pad(padPerDepth * (1.0f - lo.z));
+        const bool reached = b.shape == LightShape::Cone
+                                 ? lightTouchesBox(b, lo - pad, hi + pad)
+                                 : distanceSqPointBox(b.center, lo - pad, hi + pad) <= r * r;
+        touched |= reached ? 1u << i : 0u;
+    }
+    return touched;
+}
+
 bool lightReachesPositiveSide(const LightBounds& b, const glm::vec3& n) {
     if (b.shape == LightShape::Capsule) {
         float nearest = std::max(glm::dot(n, b.segmentStart), glm::dot(n, b.segmentEnd));

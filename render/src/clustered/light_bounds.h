@@ -29,6 +29,14 @@ LightBounds lightBoundsInView(const LightInstance& light, const glm::mat4& view)
 // Does the light reach the axis-aligned box [boxMin, boxMax] (view space)?
 bool lightTouchesBox(const LightBounds& bounds, const glm::vec3& boxMin, const glm::vec3& boxMax);
 
+// Which of `count` boxes (6 floats apart: min xyz, max xyz; min.x > max.x for an empty box)
+// the light's bounding shape reaches, as bits from bit 0: the light itself for spheres and
+// cones, the bounding sphere for capsules (a cheap conservative test for many small boxes; the
+// quarter masks of light assignment). Each box is first widened on every side by
+// padPerDepth * (1 - min z), as the assignment pads pixel boxes.
+uint32_t boundingShapeTouchesBoxes(const LightBounds& bounds, const float* boxes, uint32_t count,
+                                   float padPerDepth);
+
 // False when the light lies entirely on the negative side of the plane n.p = 0 (n unit; the
 // tile side planes all pass through the camera).
 bool lightReachesPositiveSide(const LightBounds& bounds, const glm::vec3& planeNormal);

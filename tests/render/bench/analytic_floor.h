@@ -16,11 +16,17 @@
 
 namespace candela::render::bench {
 
+// As kEmptyQuarterBound and quarterOfPixel in common/clusters.glsl.
+constexpr float kEmptyQuarterBound = 3.0e38f;
+inline uint32_t quarterOf(uint32_t tileSize, uint32_t px, uint32_t py) {
+    return (px % tileSize) * 2 / tileSize + 2 * ((py % tileSize) * 2 / tileSize);
+}
+
 struct AnalyticFloorView {
     glm::mat4 view{1.0f};
     ClusterGrid grid;
     std::vector<uint64_t> tileMasks;
-    std::vector<float> pixelBounds;  // 6 per cluster, as ClusterOccupancy
+    std::vector<float> pixelBounds;  // cluster boxes, then 4 quarter boxes per cluster
     uint32_t width = 0, height = 0;
     std::vector<glm::vec3> pixels;  // view-space point per pixel; z == 0: background
 
@@ -65,8 +71,11 @@ inline AnalyticFloorView analyticFloorView(uint32_t width, uint32_t height, floa
     f.grid.setSlicing(sliceNear, std::log(std::max(maxDepth, sliceNear * 1.01f) / sliceNear) /
                                      float(f.grid.slices));
     f.tileMasks.assign(f.grid.tileCount(), 0);
-    f.pixelBounds.assign(size_t(f.grid.clusterCount()) * 6, 0.0f);
-    std::vector<bool> seen(f.grid.clusterCount(), false);
+    // Every box starts empty (min > max), as depth_occupancy.comp writes empty quarters.
+    f.pixelBounds.resize(size_t(f.grid.clusterCount()) * CLUSTER_BOUNDS_FLOATS);
+    float* quarterBoxes = &f.pixelBounds[size_t(f.grid.clusterCount()) * CLUSTER_BOX_FLOATS];
+    for (size_t i = 0; i < f.pixelBounds.size(); ++i)
+        f.pixelBounds[i] = i % 6 < 3 ? kEmptyQuarterBound : -kEmptyQuarterBound;
     for (uint32_t py = 0; py < height; ++py) {
         for (uint32_t px = 0; px < width; ++px) {
             const glm::vec3 p = points[size_t(py) * width + px];
@@ -74,11 +83,13 @@ inline AnalyticFloorView analyticFloorView(uint32_t width, uint32_t height, floa
             const uint32_t tile = (py / tileSize) * f.grid.tilesX + px / tileSize;
             const uint32_t slice = f.grid.sliceOf(-p.z);
             f.tileMasks[tile] |= uint64_t(1) << slice;
-            float* box = &f.pixelBounds[size_t(slice * f.grid.tileCount() + tile) * 6];
-            if (!seen[slice * f.grid.tileCount() + tile]) {
-                seen[slice * f.grid.tileCount() + tile] = true;
-                for (int c = 0; c < 3; ++c)
-                    box[c] = box[3 + c] = p[c];
+            const size_t cluster = size_t(slice) * f.grid.tileCount() + tile;
+            float* box = &f.pixelBounds[cluster * CLUSTER_BOX_FLOATS];
+            float* quarter = &quarterBoxes[cluster * CLUSTER_QUARTER_BOXES_FLOATS +
+                                           quarterOf(tileSize, px, py) * 6];
+            for (int c = 0; c < 3; ++c) {
+                quarter[c] = std::min(quarter[c], p[c]);
+                quarter[3 + c] = std::max(quarter[3 + c], p[c]);
             }
             for (int c = 0; c < 3; ++c) {
                 box[c] = std::min(box[c], p[c]);

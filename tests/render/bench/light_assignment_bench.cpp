@@ -1,13 +1,14 @@
 // candela-bench-light-assignment: the CPU light assignment alone (no GPU), on the light
 // culling benchmark's floor with an analytic depth buffer, with and without the frustum
-// pre-pass, alternating in the same process. Prints a markdown table of medians; it measures,
-// it never fails on a number.
+// pre-pass and with and without the quarter masks, alternating in the same process. Prints a
+// markdown table of medians; it measures, it never fails on a number.
 //
 //   build/bin/candela-bench-light-assignment [--size WxH] [--rounds N] [--calls N]
 //                                            [--max-lights N] [--workers N] [--efficiency]
 //
-// Each round times `calls` warm calls per mode (pre-pass off, then on) and keeps their
-// median; the table gives the median over rounds and the median of the per-round ratios.
+// Each round times `calls` warm calls per mode (pre-pass off, pre-pass on, pre-pass on without
+// quarter masks) and keeps their median; the table gives the median over rounds and the
+// median of the per-round ratios. The checksum is of the lists with both on.
 // --workers: job-system worker threads (default: one per core beyond the caller's; 0 runs the
 // assignment on the calling thread alone, steadier on a loaded machine).
 // --efficiency instead prints evaluated / lit pairs of the CPU lists on the floor and the
@@ -49,9 +50,9 @@ double median(std::vector<double> v) {
 
 void printEfficiency(candela::ecs::JobSystem& jobs) {
     std::printf(
-        "| scene | size | lights | evaluated / lit (CPU lists) | exact per 16 px cluster | "
-        "8 px quarter planes | 8 px quarter boxes | exact per 8 px quarter "
-        "|\n|---|---|---:|---:|---:|---:|---:|---:|\n");
+        "| scene | size | lights | evaluated / lit (CPU lists) | lists without quarter masks | "
+        "exact per 16 px cluster | 8 px quarter planes | 8 px quarter boxes | exact per 8 px "
+        "quarter |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
     enum class Scene { Floor, TestFloor, Mixed };
     struct Case {
         Scene scene;
@@ -77,9 +78,9 @@ void printEfficiency(candela::ecs::JobSystem& jobs) {
         LightAssignment assignment;
         assignLights(floor.grid, lights, floor.view, floor.occupancy(), &jobs, ranges, assignment);
         const ListEfficiency e = listEfficiency(floor, lights, assignment, ranges);
-        std::printf("| %s | %ux%u | %zu | %.2f | %.2f | %.2f | %.2f | %.2f |\n", name, c.width,
-                    c.height, c.lights, e.lists, e.exactPerCluster, e.quarterPlanes, e.quarterBoxes,
-                    e.exactPerSubTile);
+        std::printf("| %s | %ux%u | %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", name,
+                    c.width, c.height, c.lights, e.lists, e.listsUnmasked, e.exactPerCluster,
+                    e.quarterPlanes, e.quarterBoxes, e.exactPerSubTile);
         std::fflush(stdout);
     }
 }
@@ -112,17 +113,20 @@ int main(int argc, char** argv) {
                 width, height, jobs.threadCount(), rounds, calls);
     std::printf(
         "| lights | in frustum | pairs | without pre-pass ms | with pre-pass ms | with / without "
-        "| list checksum |\n|---:|---:|---:|---:|---:|---:|---|\n");
+        "| without quarter masks ms | masks: with / without | list checksum "
+        "|\n|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
     for (size_t count = 1024; count <= maxLights; count *= 4) {
         const AnalyticFloorView floor = analyticFloorView(width, height, floorHalfExtent(count));
         const std::vector<LightInstance> lights = floorLights(count);
         std::vector<uint32_t> ranges(size_t(floor.grid.clusterCount()) * 2, 0);
         LightAssignment assignment;
-        std::vector<double> without, with, ratio;
+        std::vector<double> without, with, ratio, unmasked, maskRatio;
         for (uint32_t r = 0; r < rounds; ++r) {
-            double perMode[2];
-            for (int mode = 0; mode < 2; ++mode) {
-                assignment.frustumPrepass = mode == 1;
+            double perMode[3];
+            // Modes: pre-pass off, unmasked, both on (last, so the checksum is of those lists).
+            for (int mode : {0, 2, 1}) {
+                assignment.frustumPrepass = mode != 0;
+                assignment.quarterMasks = mode != 2;
                 std::vector<double> times;
                 for (uint32_t c = 0; c <= calls; ++c) {  // the first call warms the scratch
                     auto start = std::chrono::steady_clock::now();
@@ -139,10 +143,12 @@ int main(int argc, char** argv) {
             without.push_back(perMode[0]);
             with.push_back(perMode[1]);
             ratio.push_back(perMode[1] / std::max(perMode[0], 1e-9));
+            unmasked.push_back(perMode[2]);
+            maskRatio.push_back(perMode[1] / std::max(perMode[2], 1e-9));
         }
-        std::printf("| %zu | %u | %u | %.3f | %.3f | %.2f | %016llx |\n", count,
+        std::printf("| %zu | %u | %u | %.3f | %.3f | %.2f | %.3f | %.2f | %016llx |\n", count,
                     assignment.lightsInFrustum, assignment.assignedPairs, median(without),
-                    median(with), median(ratio),
+                    median(with), median(ratio), median(unmasked), median(maskRatio),
                     (unsigned long long)listChecksum(assignment, ranges));
         std::fflush(stdout);
     }

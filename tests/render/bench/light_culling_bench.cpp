@@ -5,10 +5,11 @@
 // table; it measures, it never fails on a number.
 //
 //   build/bin/candela-bench-lights [--size WxH] [--max-lights N] [--brute-force-max N]
-//                                  [--repeat N] [--frames N] [--scene floor|mixed]
+//                                  [--repeat N] [--frames N] [--scene floor|mixed|test]
 //
 // --scene mixed: issue 22's mixed-size floor (a fixed floor patch, radii 1-3 m at 0.1-1.5 m)
-// instead of the constant-density floor.
+// instead of the constant-density floor; --scene test: the floor's lights on the fixed 100 m
+// plane of the CullingEfficiencyOnAFloor test.
 // --frames: frames each renderer draws; the last is timed (default 2: warm pipelines and
 // buffers; 1 times a fresh renderer's first frame, as the benchmark did before).
 #include <algorithm>
@@ -40,12 +41,15 @@ struct Row {
 };
 
 // Both scenes are shared with candela-bench-light-assignment (analytic_floor.h).
-TestScene floorScene(size_t count, uint32_t width, uint32_t height, bool mixedSizes) {
+TestScene floorScene(size_t count, uint32_t width, uint32_t height, bool mixedSizes,
+                     bool testFloor) {
     TestScene scene;
     scene.width = width;
     scene.height = height;
-    scene.add(candela::content::makePlane(
-                  mixedSizes ? kMixedSizeFloorHalfExtent : floorHalfExtent(count), 8),
+    scene.add(candela::content::makePlane(mixedSizes  ? kMixedSizeFloorHalfExtent
+                                          : testFloor ? 100.0f
+                                                      : floorHalfExtent(count),
+                                          8),
               lambertWhite());
     scene.lookAt({0.0f, 6.0f, 20.0f}, {0.0f, 0.0f, -20.0f}, {0.0f, 1.0f, 0.0f});
     scene.lights = mixedSizes ? mixedSizeLights(count) : floorLights(count);
@@ -62,7 +66,7 @@ double median(std::vector<double> v) {
 int main(int argc, char** argv) {
     uint32_t width = 1280, height = 720, repeat = 3, frames = 2;
     size_t maxLights = 65536, bruteForceMax = 1024;
-    bool mixedSizes = false;
+    bool mixedSizes = false, testFloor = false;
     for (int i = 1; i + 1 < argc; i += 2) {
         if (!std::strcmp(argv[i], "--size")) std::sscanf(argv[i + 1], "%ux%u", &width, &height);
         if (!std::strcmp(argv[i], "--max-lights"))
@@ -72,7 +76,10 @@ int main(int argc, char** argv) {
         }
         if (!std::strcmp(argv[i], "--repeat"))
             repeat = uint32_t(std::strtoul(argv[i + 1], nullptr, 10));
-        if (!std::strcmp(argv[i], "--scene")) mixedSizes = !std::strcmp(argv[i + 1], "mixed");
+        if (!std::strcmp(argv[i], "--scene")) {
+            mixedSizes = !std::strcmp(argv[i + 1], "mixed");
+            testFloor = !std::strcmp(argv[i + 1], "test");
+        }
         if (!std::strcmp(argv[i], "--frames")) {
             frames = std::max(1u, uint32_t(std::strtoul(argv[i + 1], nullptr, 10)));
         }
@@ -81,14 +88,17 @@ int main(int argc, char** argv) {
     contextOptions.validation = ValidationMode::Off;  // timing run
     GpuContext context(contextOptions);
     std::printf("device: %s, %s, %ux%u, medians of %u repetitions, frame %u of each\n\n",
-                context.deviceName().c_str(), mixedSizes ? "mixed-size floor" : "floor", width,
-                height, repeat, frames);
+                context.deviceName().c_str(),
+                mixedSizes  ? "mixed-size floor"
+                : testFloor ? "test floor"
+                            : "floor",
+                width, height, repeat, frames);
     std::printf(
         "| lights | CPU assign ms | GPU assign ms | GPU / CPU | lighting ms (CPU lists) | "
         "lighting ms (GPU lists) | evaluated / lit | brute-force lighting ms |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (size_t count = 16; count <= maxLights; count *= 4) {
-        TestScene scene = floorScene(count, width, height, mixedSizes);
+        TestScene scene = floorScene(count, width, height, mixedSizes, testFloor);
         Row row{count, 0, 0, 0, 0, 0, 0, -1};
         std::vector<double> cpuAssign, gpuAssign, ratio, cpuLighting, gpuLighting, brute;
         RendererOptions cpu, gpu;  // timing without pair counters

@@ -2,7 +2,10 @@
 // Culling efficiency of CPU light lists on an analytic floor (analytic_floor.h), with the two
 // bounds that say what tighter light/cluster tests could still gain: evaluated / lit
 // light-pixel pairs for
-//  - the lists assignLights built (what the lighting pass evaluates),
+//  - the lists assignLights built, entries skipped by pixels outside their quarter mask (what
+//    the lighting pass evaluates),
+//  - the same lists without the masks (every entry evaluated by the whole cluster, as before
+//    the masks),
 //  - exact per-cluster lists: a light listed only where it reaches at least one of the
 //    cluster's pixels. No per-cluster bound (box, sphere, depth bitmask) can do better at
 //    this grid,
@@ -25,7 +28,9 @@ namespace candela::render::bench {
 
 struct ListEfficiency {
     uint64_t litPairs = 0;
+    uint64_t maskedLitPairs = 0;  // lit pairs whose entry has the pixel's quarter bit
     double lists = 0.0;
+    double listsUnmasked = 0.0;
     double exactPerCluster = 0.0;
     double quarterBoxes = 0.0;
     double quarterPlanes = 0.0;
@@ -58,16 +63,16 @@ inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
             const glm::vec3& p = f.pixels[size_t(py) * f.width + px];
             if (p.z == 0.0f) continue;
             const uint32_t tile = (py / g.tileSize) * g.tilesX + px / g.tileSize;
-            const uint32_t half = g.tileSize / 2;
-            pixels.push_back({g.sliceOf(-p.z) * g.tileCount() + tile,
-                              (py % g.tileSize) / half * 2 + (px % g.tileSize) / half,
+            pixels.push_back({g.sliceOf(-p.z) * g.tileCount() + tile, quarterOf(g.tileSize, px, py),
                               py * f.width + px});
         }
     }
     std::sort(pixels.begin(), pixels.end(), [](const Pixel& a, const Pixel& b) {
         return a.cluster != b.cluster ? a.cluster < b.cluster : a.quarter < b.quarter;
     });
-    uint64_t evaluated = 0, exactCluster = 0, exactQuarter = 0, quarterBoxes = 0, litPairs = 0;
+    uint64_t maskedLit = 0;
+    uint64_t evaluated = 0, unmasked = 0, exactCluster = 0, exactQuarter = 0, quarterBoxes = 0,
+             litPairs = 0;
     uint64_t quarterPlanes = 0;
     const float columnStep = (g.columnTangent[1] - g.columnTangent[0]) / float(g.tileSize);
     const float rowStep = (g.rowTangent[1] - g.rowTangent[0]) / float(g.tileSize);
@@ -80,9 +85,13 @@ inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
             ++end;
         const uint32_t offset = ranges[size_t(pixels[begin].cluster) * 2];
         const uint32_t count = ranges[size_t(pixels[begin].cluster) * 2 + 1];
-        evaluated += uint64_t(count) * (end - begin);
+        unmasked += uint64_t(count) * (end - begin);
         for (uint32_t k = 0; k < count; ++k) {
-            const uint32_t i = assignment.lightIndices[offset + k];
+            const uint32_t entry = assignment.lightIndices[offset + k];
+            const uint32_t i = entry & LIGHT_ENTRY_INDEX_MASK;
+            for (size_t p = begin; p < end; ++p) {
+                evaluated += entry >> (LIGHT_ENTRY_QUARTER_SHIFT + pixels[p].quarter) & 1u;
+            }
             bool inCluster = false;
             for (size_t q = begin; q < end;) {
                 size_t qEnd = q;
@@ -101,7 +110,7 @@ inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
                     const uint32_t cluster = pixels[q].cluster, tile = cluster % g.tileCount();
                     const uint32_t tx = tile % g.tilesX, ty = tile / g.tilesX;
                     const uint32_t quarter = pixels[q].quarter;
-                    const float* box = &f.pixelBounds[size_t(cluster) * 6];
+                    const float* box = &f.pixelBounds[size_t(cluster) * CLUSTER_BOX_FLOATS];
                     glm::vec3 blo(box[0], box[1], box[2]), bhi(box[3], box[4], box[5]);
                     const glm::vec3 bpad(1e-4f * (1.0f - blo.z));
                     const float half = float(g.tileSize / 2);
@@ -126,6 +135,7 @@ inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
                     if (lit(f.pixels[pixels[p].index], i)) {
                         inQuarter = true;
                         ++litPairs;
+                        maskedLit += entry >> (LIGHT_ENTRY_QUARTER_SHIFT + pixels[p].quarter) & 1u;
                     }
                 }
                 if (inQuarter) exactQuarter += qEnd - q;
@@ -138,8 +148,10 @@ inline ListEfficiency listEfficiency(const AnalyticFloorView& f,
     }
     ListEfficiency e;
     e.litPairs = litPairs;
+    e.maskedLitPairs = maskedLit;
     const double lit1 = double(std::max<uint64_t>(litPairs, 1));
     e.lists = double(evaluated) / lit1;
+    e.listsUnmasked = double(unmasked) / lit1;
     e.exactPerCluster = double(exactCluster) / lit1;
     e.quarterBoxes = double(quarterBoxes) / lit1;
     e.quarterPlanes = double(quarterPlanes) / lit1;

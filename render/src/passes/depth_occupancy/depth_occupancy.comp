@@ -2,9 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 #include "depth_occupancy_bindings.h"
 // One workgroup per screen tile. For each depth slice of the tile: whether any pixel lies in
-// it (a 64-bit mask per tile) and the view-space box around those pixels. Light assignment
-// skips empty clusters and tests lights against the box of the surfaces actually there, so
-// light lists shrink to the depths present.
+// it (a 64-bit mask per tile) and, per quarter of the tile, the view-space box around those
+// pixels. Light assignment skips empty clusters and tests lights against the boxes of the
+// surfaces actually there, so light lists shrink to the depths present and each entry says
+// which quarters its light reaches (light_list_entry.h).
 #include "common/clusters.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -13,7 +14,9 @@ layout(binding = OCCUPANCY_BINDING_DEPTH) uniform sampler2D depthBuffer;
 layout(std430, binding = OCCUPANCY_BINDING_TILE_MASKS) writeonly buffer Occupancy {
     uvec2 tileMasks[];
 };
-// Per cluster: min xyz, max xyz of its pixels in view space (unwritten where unoccupied).
+// Per cluster, min xyz and max xyz of its pixels in view space, then per cluster and quarter
+// the same, kEmptyQuarterBound-empty for a quarter without pixels (light_list_entry.h;
+// unwritten where unoccupied).
 layout(std430, binding = OCCUPANCY_BINDING_CLUSTER_BOUNDS) writeonly buffer ClusterBounds {
     float clusterBounds[];
 };
@@ -32,15 +35,16 @@ const uint kMaxSlices = 64u;
 shared uint maskLow;
 shared uint maskHigh;
 // Order-preserving float bits (see orderedBits), so uint atomics give float min/max.
-shared uint boundsMin[kMaxSlices * 3u];
-shared uint boundsMax[kMaxSlices * 3u];
+// Per slice and quarter: [(slice * 4 + quarter) * 3 + axis].
+shared uint boundsMin[kMaxSlices * 12u];
+shared uint boundsMax[kMaxSlices * 12u];
 
 void main() {
     if (gl_LocalInvocationIndex == 0u) {
         maskLow = 0u;
         maskHigh = 0u;
     }
-    for (uint i = gl_LocalInvocationIndex; i < kMaxSlices * 3u; i += 256u) {
+    for (uint i = gl_LocalInvocationIndex; i < kMaxSlices * 12u; i += 256u) {
         boundsMin[i] = 0xffffffffu;
         boundsMax[i] = 0u;
     }
@@ -71,9 +75,10 @@ void main() {
             }
             vec2 ndc = (vec2(pixel) + 0.5) / vec2(push.size) * 2.0 - 1.0;
             vec3 view = vec3(ndc * depth / push.projectionScale, -depth);
+            uint box = (slice * 4u + quarterOfPixel(push.grid.tileSize, pixel)) * 3u;
             for (uint c = 0u; c < 3u; ++c) {
-                atomicMin(boundsMin[slice * 3u + c], orderedBits(view[c]));
-                atomicMax(boundsMax[slice * 3u + c], orderedBits(view[c]));
+                atomicMin(boundsMin[box + c], orderedBits(view[c]));
+                atomicMax(boundsMax[box + c], orderedBits(view[c]));
             }
         }
     }
@@ -81,12 +86,31 @@ void main() {
     uint tileIndex = tile.y * push.grid.tilesX + tile.x;
     if (gl_LocalInvocationIndex == 0u) tileMasks[tileIndex] = uvec2(maskLow, maskHigh);
     uint tileCount = push.grid.tilesX * push.grid.tilesY;
-    for (uint slice = gl_LocalInvocationIndex; slice < push.grid.slices; slice += 256u) {
-        if (boundsMax[slice * 3u] == 0u) continue;  // nothing in this cluster
+    uint clusterCount = tileCount * push.grid.slices;
+    for (uint i = gl_LocalInvocationIndex; i < push.grid.slices * 4u; i += 256u) {
+        uint slice = i / 4u;
+        uint occupied = slice < 32u ? maskLow >> slice : maskHigh >> (slice - 32u);
+        if ((occupied & 1u) == 0u) continue;  // nothing in this cluster
         uint cluster = slice * tileCount + tileIndex;
+        if (i % 4u == 0u) {
+            // The cluster's box: its quarters' union (the cleared values are neutral).
+            for (uint c = 0u; c < 3u; ++c) {
+                uint lo = min(min(boundsMin[i * 3u + c], boundsMin[i * 3u + 3u + c]),
+                              min(boundsMin[i * 3u + 6u + c], boundsMin[i * 3u + 9u + c]));
+                uint hi = max(max(boundsMax[i * 3u + c], boundsMax[i * 3u + 3u + c]),
+                              max(boundsMax[i * 3u + 6u + c], boundsMax[i * 3u + 9u + c]));
+                clusterBounds[cluster * CLUSTER_BOX_FLOATS + c] = fromOrderedBits(lo);
+                clusterBounds[cluster * CLUSTER_BOX_FLOATS + 3u + c] = fromOrderedBits(hi);
+            }
+        }
+        uint out_ = clusterCount * CLUSTER_BOX_FLOATS + cluster * CLUSTER_QUARTER_BOXES_FLOATS +
+                    (i % 4u) * 6u;
+        bool empty = boundsMax[i * 3u] == 0u;  // no pixel in this quarter
         for (uint c = 0u; c < 3u; ++c) {
-            clusterBounds[cluster * 6u + c] = fromOrderedBits(boundsMin[slice * 3u + c]);
-            clusterBounds[cluster * 6u + 3u + c] = fromOrderedBits(boundsMax[slice * 3u + c]);
+            clusterBounds[out_ + c] =
+                empty ? kEmptyQuarterBound : fromOrderedBits(boundsMin[i * 3u + c]);
+            clusterBounds[out_ + 3u + c] =
+                empty ? -kEmptyQuarterBound : fromOrderedBits(boundsMax[i * 3u + c]);
         }
     }
 }

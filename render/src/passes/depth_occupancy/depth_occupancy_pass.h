@@ -22,7 +22,7 @@ public:
 
     struct Outputs {
         const GpuBuffer* tileMasks;      // grid.tileCount() uvec2
-        const GpuBuffer* clusterBounds;  // grid.clusterCount() x 6 floats (occupied only)
+        const GpuBuffer* clusterBounds;  // grid.clusterCount() x CLUSTER_BOUNDS_FLOATS (occupied)
         const GpuBuffer* depthRange;     // 4 uints: min, max depth bits; sliceNear, logRatio
     };
     // Three frame-graph passes, in this order. clearRange: depthRange (TransferDst).

@@ -104,7 +104,7 @@ void main() {
                 radiance += lightRadiance(surface, P, N, V, R, alpha, lightIndices[i]);
             }
             // The cluster of this fragment; the transparency occupancy pass made sure it holds
-            // every light that reaches this depth.
+            // every light that reaches this depth, with the fragment's quarter in the masks.
             uint cluster = clusterOfPixel(draw.grid, uvec2(gl_FragCoord.xy), gl_FragCoord.z,
                                           uintBitsToFloat(depthRange[2]),
                                           uintBitsToFloat(depthRange[3]));
@@ -118,8 +118,12 @@ void main() {
                     }
                 }
             } else {
+                uint quarterBit = quarterBitOfPixel(draw.grid, uvec2(gl_FragCoord.xy));
                 for (uint i = 0u; i < count; ++i) {
-                    radiance += lightRadiance(surface, P, N, V, R, alpha, lightIndices[first + i]);
+                    uint light = lightOfEntry(lightIndices[first + i], quarterBit);
+                    if (light != kNoLight) {
+                        radiance += lightRadiance(surface, P, N, V, R, alpha, light);
+                    }
                 }
             }
         } else {

@@ -172,7 +172,8 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
 }
 
 VkDeviceSize ForwardTransparentPass::boundsBytes(const ClusterGrid& grid) {
-    return 2 * VkDeviceSize(grid.clusterCount()) * 3 * sizeof(uint32_t);
+    // Min and max xyz per cluster quarter (transparent_occupancy.frag).
+    return 2 * VkDeviceSize(grid.clusterCount()) * 4 * 3 * sizeof(uint32_t);
 }
 
 void ForwardTransparentPass::recordClearBounds(VkCommandBuffer cmd,

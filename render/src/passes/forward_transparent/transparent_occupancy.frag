@@ -3,10 +3,12 @@
 #include "forward_transparent_bindings.h"
 // Clustered light lists are built only for clusters that hold surfaces, from the G-buffer
 // depth (depth_occupancy.comp). Blended surfaces are not in the G-buffer, so this pass
-// rasterises them (in front of the opaque depth) and records, per cluster, the view-space box
-// around their fragments; transparent_occupancy_merge.comp then adds those clusters and boxes
-// to the opaque ones before light assignment. Without it a glass pane in front of empty space
-// would find no lights in its clusters.
+// rasterises them (in front of the opaque depth) and records, per cluster and quarter of its
+// tile, the view-space box around their fragments; transparent_occupancy_merge.comp then adds
+// those clusters and boxes to the opaque ones before light assignment. Without it a glass pane
+// in front of empty space would find no lights in its clusters, and a pane just in front of an
+// opaque surface would miss, in the quarter masks of its list entries, the lights that reach
+// the pane but not the surface behind it.
 #include "common/clusters.glsl"
 
 layout(binding = TRANSPARENT_OCCUPANCY_BINDING_DEPTH) uniform sampler2D gbufferDepth;
@@ -14,8 +16,9 @@ layout(binding = TRANSPARENT_OCCUPANCY_BINDING_DEPTH) uniform sampler2D gbufferD
 layout(std430, binding = TRANSPARENT_OCCUPANCY_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
     uint range[];
 };
-// Ordered float bits (see orderedBits): mins of cluster c at [3c + axis], maxs at
-// [3 * clusterCount + 3c + axis]; cleared to 0xffffffff / 0 before the pass.
+// Ordered float bits (see orderedBits), per quarter b = 4 * cluster + quarter: mins at
+// [3b + axis], maxs at [3 * (4 * clusterCount + b) + axis]; cleared to 0xffffffff / 0 before
+// the pass.
 layout(std430, binding = TRANSPARENT_OCCUPANCY_BINDING_BOUNDS) buffer TransparentBounds {
     uint bounds[];
 };
@@ -43,8 +46,9 @@ void main() {
     // The same pixel-centre reconstruction as depth_occupancy.comp.
     vec2 ndc = gl_FragCoord.xy / vec2(draw.size) * 2.0 - 1.0;
     vec3 view = vec3(ndc * depth / draw.projectionScale, -depth);
+    uint box = 4u * cluster + quarterOfPixel(draw.grid.tileSize, uvec2(pixel));
     for (uint c = 0u; c < 3u; ++c) {
-        atomicMin(bounds[3u * cluster + c], orderedBits(view[c]));
-        atomicMax(bounds[3u * (clusterCount + cluster) + c], orderedBits(view[c]));
+        atomicMin(bounds[3u * box + c], orderedBits(view[c]));
+        atomicMax(bounds[3u * (4u * clusterCount + box) + c], orderedBits(view[c]));
     }
 }

@@ -6,7 +6,8 @@
 // each cluster its range) stores the light's index there. The walk mirrors
 // render/src/clustered/light_assignment.cpp: slice range from the light's depth extent, per
 // slice the tile range of its widest cross-section, per cell the row and column planes, the
-// occupancy bit and the box around the cluster's pixels.
+// occupancy bit and the boxes around the pixels of the cluster's quarters, which give the
+// entry's quarter mask (light_list_entry.h).
 #include "common/clusters.glsl"
 #include "common/specialization_ids.h"
 #include "common/light_buffer.glsl"
@@ -78,7 +79,46 @@ bool tileSpan(float lo, float hi, float scale, uint pixels, uint tiles, out uint
     return true;
 }
 
-void emit(uint cluster, uint lightIndex) {
+// The box [lo, hi] padded for the lighting shader's own (world-space) reconstruction of the
+// points inside it.
+vec3 pixelBoxPad(vec3 lo) {
+    return vec3(kPixelBoundsMargin * (1.0 - lo.z));
+}
+
+vec3 boundsMin(uint at) {
+    return vec3(clusterBounds[at], clusterBounds[at + 1u], clusterBounds[at + 2u]);
+}
+vec3 boundsMax(uint at) {
+    return vec3(clusterBounds[at + 3u], clusterBounds[at + 4u], clusterBounds[at + 5u]);
+}
+
+// Quarter q's bit when the light's bounding shape touches its box (at: the box's first float).
+uint quarterBit(LightBounds b, uint at, uint q) {
+    vec3 lo = boundsMin(at), hi = boundsMax(at);
+    if (lo.x > hi.x) return 0u;  // no pixel in this quarter
+    vec3 pad = pixelBoxPad(lo);
+    return boundingShapeTouchesBox(b, lo - pad, hi + pad) ? 1u << (LIGHT_ENTRY_QUARTER_SHIFT + q)
+                                                          : 0u;
+}
+
+// The entry's quarter bits for the cluster (0: the light reaches none of its pixels), as
+// quarterMask in light_assignment.cpp: the exact test on the cluster's box, then the
+// bounding-shape test per quarter. Written without loops: llvmpipe (lavapipe) stops a shader's
+// loops after 65,535 iterations in total, counting at least one per loop entered even with
+// every lane inactive (the capsule search in lightTouchesBox); a light over every cluster of a
+// 256 x 256 frame already spends two per cluster, 32,768, and a loop per quarter test would
+// take it past the limit and silently drop clusters.
+uint quarterMask(LightBounds b, uint cluster, uint clusterCount) {
+    vec3 lo = boundsMin(cluster * CLUSTER_BOX_FLOATS), hi = boundsMax(cluster * CLUSTER_BOX_FLOATS);
+    vec3 pad = pixelBoxPad(lo);
+    if (!lightTouchesBox(b, lo - pad, hi + pad)) return 0u;
+    uint at = clusterCount * CLUSTER_BOX_FLOATS + cluster * CLUSTER_QUARTER_BOXES_FLOATS;
+    return quarterBit(b, at, 0u) | quarterBit(b, at + 6u, 1u) | quarterBit(b, at + 12u, 2u) |
+           quarterBit(b, at + 18u, 3u);
+}
+
+// `entry`: light index | quarter mask.
+void emit(uint cluster, uint entry) {
     if (!kWritePass) {
         atomicAdd(clusterCounts[cluster], 1u);
         return;
@@ -86,7 +126,7 @@ void emit(uint cluster, uint lightIndex) {
     uvec2 range = clusterRanges[cluster];
     if (range.y == kListOverflow) return;  // the lighting pass takes every light there
     uint slot = atomicAdd(clusterCounts[cluster], 1u);
-    lightIndices[range.x + slot] = lightIndex;
+    lightIndices[range.x + slot] = entry;
 }
 
 void main() {
@@ -139,16 +179,9 @@ void main() {
                     continue;
                 }
                 const uint cluster = k * tileCount + tile;
-                // The box around the cluster's pixels, padded for the lighting shader's own
-                // (world-space) reconstruction of the same points.
-                vec3 boxLo = vec3(clusterBounds[cluster * 6u], clusterBounds[cluster * 6u + 1u],
-                                  clusterBounds[cluster * 6u + 2u]);
-                vec3 boxHi = vec3(clusterBounds[cluster * 6u + 3u],
-                                  clusterBounds[cluster * 6u + 4u],
-                                  clusterBounds[cluster * 6u + 5u]);
-                vec3 pad = vec3(kPixelBoundsMargin * (1.0 - boxLo.z));
-                if (!lightTouchesBox(b, boxLo - pad, boxHi + pad)) continue;
-                emit(cluster, lightIndex);
+                const uint quarters = quarterMask(b, cluster, tileCount * slices);
+                if (quarters == 0u) continue;
+                emit(cluster, lightIndex | quarters);
             }
         }
     }

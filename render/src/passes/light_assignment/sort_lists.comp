@@ -5,10 +5,14 @@
 // list in whatever order its atomics ran; sorting restores ascending light order, so the
 // clustered sum is the brute-force sum with zeros left out (the CPU path's order) and every
 // frame is deterministic. Lists are short (tens of lights), so an insertion sort in place is
-// enough. It also zeroes the write cursors, so the counts start at zero next frame without a
+// enough; entries compare by light index (the low bits, under the quarter mask of
+// light_list_entry.h). It also zeroes the write cursors, so the counts start at zero next frame without a
 // fill. (A variant with one invocation walking all of a tile's clusters gave images that
 // changed run to run in the 16,384-light test on lavapipe, cause not found; one invocation
 // per cluster is deterministic there.)
+
+#extension GL_GOOGLE_include_directive : require
+#include "common/light_list_entry.h"
 
 layout(local_size_x = 64) in;
 
@@ -40,8 +44,9 @@ void main() {
     if (range.y == kListOverflow) return;
     for (uint i = range.x + 1u; i < range.x + range.y; ++i) {
         uint value = lightIndices[i];
+        uint key = value & LIGHT_ENTRY_INDEX_MASK;
         uint j = i;
-        while (j > range.x && lightIndices[j - 1u] > value) {
+        while (j > range.x && (lightIndices[j - 1u] & LIGHT_ENTRY_INDEX_MASK) > key) {
             lightIndices[j] = lightIndices[j - 1u];
             --j;
         }

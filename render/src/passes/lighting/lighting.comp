@@ -308,7 +308,12 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
                 }
             }
         } else {
-            for (uint i = 0u; i < count; ++i) addLight(px, lightIndices[first + i]);
+            // Only the entries whose light reaches the pixel's quarter of the tile.
+            uint quarterBit = quarterBitOfPixel(push.grid, uvec2(pixel));
+            for (uint i = 0u; i < count; ++i) {
+                uint light = lightOfEntry(lightIndices[first + i], quarterBit);
+                if (light != kNoLight) addLight(px, light);
+            }
         }
     } else {
         for (uint i = 0u; i < camera.frameInfo.z; ++i) addLight(px, i);
