@@ -106,7 +106,4 @@ private:
     std::string windowTitle_;
 };
 
-// CANDELA_VALIDATION=require|off|on (unset: on, i.e. IfPresent), as every test sets it.
-render::ValidationMode validationModeFromEnvironment();
-
 }  // namespace candela::runtime
