@@ -15,6 +15,7 @@
 #include "candela/ecs/transform.h"
 #include "candela/ecs/transform_propagation.h"
 #include "candela/ecs/view.h"
+#include "candela/runtime/debug_text.h"
 #include "unmarked_changes.h"
 
 namespace candela::runtime {
@@ -96,6 +97,10 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
 std::filesystem::path SceneWorld::resolveAssetPath(const std::string& stored) const {
     if (sceneFile_.empty()) return stored;
     return content::resolveScenePath(sceneFile_, stored);
+}
+
+DebugText& debugText(SceneWorld& world) {
+    return world.registry.resources().getOrEmplace<DebugText>();
 }
 
 struct SceneWorld::FrameChecks {

@@ -11,6 +11,9 @@
 #include <filesystem>
 #include <regex>
 #include <string>
+#include <vector>
+
+#include "image_files.h"
 
 namespace {
 
@@ -43,7 +46,62 @@ int scoreOf(const RunResult& r, unsigned frames) {
     return std::regex_search(r.output, m, line) ? std::stoi(m[1]) : -1;
 }
 
+// Pixels in [x0, x1) x [y0, y1) within `tolerance` levels of `rgb`.
+int countNear(const candela::golden::LdrImage& image, int x0, int y0, int x1, int y1,
+              std::array<int, 3> rgb, int tolerance) {
+    int count = 0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            const std::uint8_t* p = &image.rgb[(std::size_t(y) * image.width + x) * 3];
+            bool near = true;
+            for (int c = 0; c < 3; ++c)
+                near = near && std::abs(int(p[c]) - rgb[c]) <= tolerance;
+            count += near;
+        }
+    }
+    return count;
+}
+
+// The text region's pixels, to compare two captures' scores.
+std::vector<std::uint8_t> region(const candela::golden::LdrImage& image, int x0, int y0, int x1,
+                                 int y1) {
+    std::vector<std::uint8_t> out;
+    for (int y = y0; y < y1; ++y) {
+        const std::uint8_t* row = &image.rgb[(std::size_t(y) * image.width + x0) * 3];
+        out.insert(out.end(), row, row + (x1 - x0) * 3);
+    }
+    return out;
+}
+
 }  // namespace
+
+// The score is drawn on screen, headless too, so a capture shows it: the template prints
+// "SCORE N" at (16, 16), scale 2, in (1, 0.9, 0.3) with a black outline.
+TEST(MinimalGame, TheScoreIsDrawnIntoCaptures) {
+    const auto dir = std::filesystem::path(testing::TempDir()) / "candela_minimal_game";
+    std::filesystem::create_directories(dir);
+    const auto first = dir / "first.png", last = dir / "last.png";
+    RunResult start = runGame("--headless --size 256x144 --frames 1 --capture " + first.string());
+    ASSERT_EQ(start.exitCode, 0) << start.output;
+    RunResult played = runGame("--headless --size 256x144 --frames 150 --input " + kReplay +
+                               " --capture " + last.string());
+    ASSERT_EQ(played.exitCode, 0) << played.output;
+    ASSERT_GE(scoreOf(played, 150), 1) << played.output;
+    std::string error;
+    auto a = candela::golden::readLdrPng(first, error);
+    ASSERT_TRUE(a) << error;
+    auto b = candela::golden::readLdrPng(last, error);
+    ASSERT_TRUE(b) << error;
+    const std::array<int, 3> textColour{255, 230, 77};  // sRGB levels of (1, 0.9, 0.3)
+    // "SCORE 0": 7 characters of 6 x 2 pixels, 14 pixels tall, plus the outline.
+    const int x0 = 14, y0 = 14, x1 = 16 + 7 * 12 + 2, y1 = 16 + 14 + 2;
+    EXPECT_GE(countNear(*a, x0, y0, x1, y1, textColour, 2), 100);
+    EXPECT_GE(countNear(*a, x0, y0, x1, y1, {0, 0, 0}, 0), 100) << "the outline";
+    EXPECT_EQ(countNear(*a, 0, 72, 256, 144, textColour, 2), 0) << "nothing else is text";
+    // The digits follow the score: the two captures' text regions differ.
+    EXPECT_NE(region(*a, x0, y0, x1, y1), region(*b, x0, y0, x1, y1));
+    EXPECT_GE(countNear(*b, x0, y0, x1, y1, textColour, 2), 100);
+}
 
 TEST(MinimalGame, TheReplayScoresAndNoInputScoresNothing) {
     RunResult played = runGame("--headless --size 32x24 --frames 150 --input " + kReplay);

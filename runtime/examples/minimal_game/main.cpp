@@ -1,5 +1,5 @@
 // minimal-game: steer the white ball with WASD and touch the four orbiting lights; each touch
-// scores a point and sends that light half a turn away. The whole game is this file, the
+// scores a point and knocks that light ahead along its orbit. The whole game is this file, the
 // level (level.scene.json) and a CMakeLists.txt of find_package(Candela).
 //
 //   minimal-game                                  # a window (headless without a display)
@@ -11,15 +11,17 @@
 
 #include "candela/content/components/light.h"
 #include "candela/content/components/name.h"
+#include "candela/content/game_data.h"
 #include "candela/ecs/transform.h"
 #include "candela/runtime/application.h"
+#include "candela/runtime/debug_text.h"
 #include "candela/runtime/exit_code.h"
 
 using namespace candela;
 using runtime::Key;
 
 struct Orbit {  // a light circling the centre of the arena
-    float radius = 0, angle = 0, radiansPerSecond = 0.6f;
+    float radius = 0, angle = 0, radiansPerSecond = 0;
 };
 
 int main(int argc, char** argv) {
@@ -42,11 +44,11 @@ int main(int argc, char** argv) {
     registry.view<const content::Name, const ecs::LocalTransform>().each(
         [&](ecs::Entity e, const content::Name& name, const ecs::LocalTransform& t) {
             if (name.value == "ball") ball = e;
-            if (const auto* light = registry.tryGet<content::Light>(e);
-                light && light->type == content::LightType::Point) {
+            if (const auto* data = registry.tryGet<content::GameData>(e)) {  // the level's
+                const float speed = content::GameDataReader(*data).value("orbitSpeed", 0.0f);
                 orbiters.push_back({e,
                                     {std::hypot(t.position.x, t.position.z),
-                                     std::atan2(t.position.z, t.position.x)}});
+                                     std::atan2(t.position.z, t.position.x), speed}});
             }
         });
     for (auto& [e, orbit] : orbiters)
@@ -82,10 +84,10 @@ int main(int argc, char** argv) {
                 const ecs::Vec3 d = t.position - at;
                 if (std::hypot(d.x, d.z) < 0.8f) {
                     ++score;
-                    o.angle += 3.14159265f;  // away it goes
+                    o.angle += 2.0f;  // knocked ahead along its orbit
                 }
             });
-        app.setWindowTitle("Minimal game - score " + std::to_string(score));
+        runtime::debugText(world).print(16, 16, "SCORE " + std::to_string(score), {1, 0.9f, 0.3f});
     });
 
     const int exitCode = app.run();
