@@ -141,8 +141,10 @@ void SceneWorld::updateTransforms() {
         if (!registry.has<ecs::LocalTransform>(e)) registry.emplace<ecs::LocalTransform>(e);
         registry.emplace<ecs::WorldTransform>(e);
     }
-    checks_->lights.run(registry);
-    checks_->transforms.run(registry);
+    if (checkUnmarkedChanges) {
+        checks_->lights.run(registry);
+        checks_->transforms.run(registry);
+    }
     ecs::propagateTransforms(registry);
 }
 

@@ -123,4 +123,11 @@ TEST(Footguns, ATransformMovedWithoutMarkChangedStillPropagates) {
     ASSERT_EQ(drawnAt(world.registry, e, p), 1);
     EXPECT_EQ(p.z, -7.0f);
     EXPECT_NE(warned.find("LocalTransform of entity 'crate'"), std::string::npos) << warned;
+
+    // Turned off (a world too large to compare every frame), the rule is the caller's again.
+    world.checkUnmarkedChanges = false;
+    world.registry.get<ecs::LocalTransform>(e).position = {0.0f, 0.0f, 3.0f};
+    world.updateTransforms();
+    ASSERT_EQ(drawnAt(world.registry, e, p), 1);
+    EXPECT_EQ(p.z, -7.0f);
 }

@@ -62,9 +62,12 @@ public:
     //  - an entity with a MeshInstance, Light or Camera but no WorldTransform gets one (and an
     //    identity LocalTransform if it has none), so code that forgot them still draws it;
     //  - a Light or LocalTransform written without markChanged<T>() is found (its value moved
-    //    but its change tick did not), marked, and named once on stderr;
+    //    but its change tick did not), marked, and named once on stderr (one comparison per
+    //    light and transform: about 0.1 ms for 10,000 entities; checkUnmarkedChanges = false
+    //    skips it);
     //  - transforms propagate.
     void updateTransforms();
+    bool checkUnmarkedChanges = true;
 
 private:
     struct FrameChecks;
