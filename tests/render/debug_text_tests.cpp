@@ -63,6 +63,8 @@ TEST(DebugText, OffImageTextIsDroppedAndScaleAndCountAreBounded) {
     const std::vector<GlyphInstance> glyphs = layoutText(lines, 100, 100, 100);
     ASSERT_EQ(glyphs.size(), 1u);
     EXPECT_EQ(glyphs[0].scale, kTextMaxScale);
+    TextLine edge{2147483600, 2147483600, 8, {1, 1, 1}, "FAR\nAWAY"};  // no overflow
+    EXPECT_TRUE(layoutText({&edge, 1}, 100, 100, 100).empty());
     TextLine many{0, 0, 1, {1, 1, 1}, std::string(500, 'M')};
     EXPECT_EQ(layoutText({&many, 1}, 4096, 100, 64).size(), 64u);
 }

@@ -13,21 +13,22 @@ std::vector<GlyphInstance> layoutText(std::span<const TextLine> lines, std::uint
     std::vector<GlyphInstance> glyphs;
     for (const TextLine& line : lines) {
         const std::uint32_t scale = std::clamp(line.scale, 1u, kTextMaxScale);
-        const std::int32_t s = std::int32_t(scale);
-        std::int32_t x = line.x;
-        std::int32_t y = line.y;
+        // 64-bit positions: a line placed near the int32 limits must not overflow.
+        const std::int64_t s = scale;
+        std::int64_t x = line.x;
+        std::int64_t y = line.y;
         for (char c : line.text) {
             if (c == '\n') {
                 x = line.x;
                 y += kTextLineAdvance * s;
                 continue;
             }
-            const bool visible = x + 6 * s > 0 && y + 8 * s > 0 && x - s < std::int32_t(width) &&
-                                 y - s < std::int32_t(height);
+            const bool visible = x + 6 * s > 0 && y + 8 * s > 0 && x - s < std::int64_t(width) &&
+                                 y - s < std::int64_t(height);
             if (c != ' ' && visible) {
                 if (glyphs.size() == maxGlyphs) return glyphs;
-                glyphs.push_back({x,
-                                  y,
+                glyphs.push_back({std::int32_t(x),
+                                  std::int32_t(y),
                                   glyphIndex(c),
                                   scale,
                                   {line.color[0], line.color[1], line.color[2], 1.0f}});
