@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -40,10 +39,16 @@ RunResult runGame(const std::string& args) {
 const std::string kReplay = std::string(MINIMAL_GAME_DIR) + "/replays/collect.input";
 
 // The score the game prints when the run ends ("score N after F frames"); -1 if absent.
+// (Parsed by hand: std::regex trips GCC 12's maybe-uninitialized warning under ASan.)
 int scoreOf(const RunResult& r, unsigned frames) {
-    std::smatch m;
-    const std::regex line("score (\\d+) after " + std::to_string(frames) + " frames");
-    return std::regex_search(r.output, m, line) ? std::stoi(m[1]) : -1;
+    const std::string tail = " after " + std::to_string(frames) + " frames";
+    const size_t end = r.output.find(tail);
+    if (end == std::string::npos) return -1;
+    const size_t start = r.output.rfind("score ", end);
+    if (start == std::string::npos) return -1;
+    const std::string digits = r.output.substr(start + 6, end - start - 6);
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
+    return std::stoi(digits);
 }
 
 // Pixels in [x0, x1) x [y0, y1) within `tolerance` levels of `rgb`.
