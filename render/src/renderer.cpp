@@ -19,6 +19,7 @@
 #include "ibl/environment_sampling_table.h"
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
+#include "passes/debug_text/debug_text_pass.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
@@ -313,7 +314,22 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
                 tonemapPass_->record(ctx.cmd(), ctx.image(hdr), ctx.image(ldr), exposure);
             });
         p.read(hdr, Use::StorageRead);
-        p.write(ldr, Use::StorageWrite);
+        ldr = p.write(ldr, Use::StorageWrite);
+    }
+    if (!inputs.text.empty()) {
+        if (!debugTextPass_) debugTextPass_ = std::make_unique<DebugTextPass>(context_);
+        const uint32_t glyphs = debugTextPass_->prepare(inputs.text, width_, height_);
+        if (glyphs > 0) {
+            features_.push_back("debug_text");
+            const ResourceHandle text =
+                g.importBuffer("debug_text.glyphs", &debugTextPass_->buffer());
+            auto p =
+                g.addPass("debug_text", PassKind::Device, [this, ldr, glyphs](PassContext& ctx) {
+                    debugTextPass_->record(ctx.cmd(), ctx.image(ldr), glyphs);
+                });
+            p.read(text, Use::StorageRead);
+            p.write(ldr, Use::StorageReadWrite);  // draws over the tonemapped pixels
+        }
     }
     const double recordMs = millisecondsSince(start);
     executor_->execute(g, submitter, cmd);

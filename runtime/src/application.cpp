@@ -258,6 +258,7 @@ int Application::runSession(bool headless, std::uint32_t frames) {
                 frame_.scene.changedLights = s.extracted.changedLights;
                 frame_.scene.lightsRestructured = s.extracted.lightsRestructured;
                 frame_.scene.skyIntensity = s.extracted.skyIntensity;
+                frame_.text = std::move(s.extracted.text);
                 updateSky(s);
                 resources = s.resources.get();
             }

@@ -12,6 +12,7 @@
 #include "candela/content/components/sky.h"
 #include "candela/ecs/transform.h"
 #include "candela/render/exposure.h"
+#include "candela/runtime/debug_text.h"
 
 namespace candela::runtime {
 
@@ -64,6 +65,9 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                   float aspect, ExtractedFrame& out) {
     out.draws.clear();
     out.hasCamera = false;
+    // Debug text is per frame: taken from the world, which starts the next frame empty.
+    out.text.clear();
+    if (DebugText* text = registry.resources().tryGet<DebugText>()) out.text.swap(text->lines);
 
     registry.view<const ecs::WorldTransform, const content::MeshInstance>().each(
         [&](ecs::Entity e, const ecs::WorldTransform& transform,

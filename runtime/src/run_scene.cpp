@@ -20,22 +20,14 @@ std::filesystem::path eachFramePath(const std::filesystem::path& dir, uint32_t f
 int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>> layers) {
     std::string error;
     std::optional<LoadedScene> scene =
-        loadScene(options.scene, error, options.environment.has_value());
+        loadScene(options.scene, error, options.app.environment.has_value());
     if (!scene) {
         std::fprintf(stderr, "candela: %s\n", error.c_str());
         return kExitBadArguments;
     }
-    ApplicationOptions app;
-    app.width = options.width;
-    app.height = options.height;
-    app.headless = options.headless;
-    app.frames = options.frames;
-    if (options.stepSeconds) app.fixedStepSeconds = *options.stepSeconds;
-    for (const std::filesystem::path& capture : options.captures) {
-        app.captures.push_back({FrameCapture::kLastFrame, capture});
-    }
+    ApplicationOptions app = options.app;
     if (options.captureEach) {
-        if (options.frames == 0) {
+        if (app.frames == 0) {
             std::fprintf(stderr, "candela: --capture-each needs --frames N\n");
             return kExitBadArguments;
         }
@@ -46,27 +38,12 @@ int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>>
                          options.captureEach->c_str(), ec.message().c_str());
             return kExitBadArguments;
         }
-        for (uint32_t i = 0; i < options.frames; ++i) {
+        for (uint32_t i = 0; i < app.frames; ++i) {
             app.captures.push_back({i, eachFramePath(*options.captureEach, i)});
         }
     }
-    if (options.inputScript) {
-        app.inputScript = InputScript::load(*options.inputScript, error);
-        if (!app.inputScript) {
-            std::fprintf(stderr, "candela: %s\n", error.c_str());
-            return kExitBadArguments;
-        }
-    }
-    app.stats = options.stats;
-    app.frameGraph = options.frameGraph;
     // The overlay shows culling efficiency, which needs the pair counts too.
-    app.countLightPairs =
-        options.stats.has_value() || options.summary.has_value() || !layers.empty();
-    app.validation = options.validation;
-    app.lightCulling = options.lightCulling;
-    app.lightAssignment = options.lightAssignment;
-    app.environment = options.environment;
-    app.ibl = options.ibl;
+    app.countLightPairs = app.stats.has_value() || options.summary.has_value() || !layers.empty();
 
     const double step = app.fixedStepSeconds;
     Application application(std::move(app));

@@ -14,6 +14,9 @@
 #include "candela/content/scene_instantiation.h"
 #include "candela/ecs/transform.h"
 #include "candela/ecs/transform_propagation.h"
+#include "candela/ecs/view.h"
+#include "candela/runtime/debug_text.h"
+#include "unmarked_changes.h"
 
 namespace candela::runtime {
 
@@ -96,7 +99,52 @@ std::filesystem::path SceneWorld::resolveAssetPath(const std::string& stored) co
     return content::resolveScenePath(sceneFile_, stored);
 }
 
+DebugText& debugText(SceneWorld& world) {
+    return world.registry.resources().getOrEmplace<DebugText>();
+}
+
+struct SceneWorld::FrameChecks {
+    UnmarkedChangeCheck<content::Light> lights{"Light"};
+    UnmarkedChangeCheck<ecs::LocalTransform> transforms{"LocalTransform"};
+};
+
+SceneWorld::SceneWorld() : checks_(std::make_unique<FrameChecks>()) {}
+SceneWorld::~SceneWorld() = default;
+
+ecs::Entity SceneWorld::spawn(const std::string& name, const ecs::LocalTransform& at) {
+    const ecs::Entity e = registry.create();
+    if (!name.empty()) registry.emplace<content::Name>(e, content::Name{name});
+    registry.emplace<ecs::LocalTransform>(e, at);
+    registry.emplace<ecs::WorldTransform>(e);
+    return e;
+}
+
+namespace {
+
+// Entities with T but no WorldTransform, gathered first: adding inside a walk is refused.
+template <class T>
+void collectUnplaced(ecs::Registry& registry, std::vector<ecs::Entity>& out) {
+    registry.view<const T>(ecs::exclude<ecs::WorldTransform>).each([&](ecs::Entity e, const T&) {
+        out.push_back(e);
+    });
+}
+
+}  // namespace
+
 void SceneWorld::updateTransforms() {
+    std::vector<ecs::Entity> unplaced;
+    collectUnplaced<content::MeshInstance>(registry, unplaced);
+    collectUnplaced<content::Light>(registry, unplaced);
+    collectUnplaced<content::Camera>(registry, unplaced);
+    for (ecs::Entity e : unplaced) {
+        if (registry.has<ecs::WorldTransform>(e)) continue;  // had two of the three
+        if (!registry.has<ecs::LocalTransform>(e)) registry.emplace<ecs::LocalTransform>(e);
+        registry.emplace<ecs::WorldTransform>(e);
+    }
+    if (checkUnmarkedChanges) {
+        checks_->lights.run(registry);
+        checks_->transforms.run(registry);
+    }
     ecs::propagateTransforms(registry);
 }
 

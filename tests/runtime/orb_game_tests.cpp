@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -21,8 +22,15 @@ struct RunResult {
     std::string output;
 };
 
+// ORB_GAME_EXECUTABLE in the environment tests another build of the game (scripts/test runs
+// these tests against the game built outside the tree on an installed engine).
+std::string gameExecutable() {
+    const char* other = std::getenv("ORB_GAME_EXECUTABLE");
+    return other && *other ? other : ORB_GAME_EXECUTABLE;
+}
+
 RunResult runGame(const std::string& args) {
-    std::string command = std::string(ORB_GAME_EXECUTABLE) + " " + args + " 2>&1";
+    std::string command = gameExecutable() + " " + args + " 2>&1";
     RunResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;

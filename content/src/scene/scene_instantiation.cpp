@@ -4,6 +4,7 @@
 #include <candela/ecs/transform.h>
 #include <candela/ecs/view.h>
 
+#include "candela/content/builtin_meshes.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
 
@@ -49,7 +50,13 @@ std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDo
         const SceneEntity& source = scene.entities[i];
         const ecs::Entity e = createWithTransform(registry, source.name, source.transform);
         registry.emplace<SceneMember>(e, SceneMember{static_cast<std::uint32_t>(i)});
-        if (source.mesh) {
+        if (source.mesh && !source.mesh->builtin.empty()) {
+            // The reader accepted only known names.
+            const auto builtin = builtinMeshFromName(source.mesh->builtin);
+            registry.emplace<MeshInstance>(e,
+                                           MeshInstance{builtin ? &builtinMeshModel() : nullptr,
+                                                        builtin ? std::int32_t(*builtin) : -1, ""});
+        } else if (source.mesh) {
             std::shared_ptr<const Model> model =
                 cache.model(resolveScenePath(sceneFile, source.mesh->gltfPath), diagnostics);
             const std::int32_t mesh = source.mesh->meshIndex;
@@ -105,8 +112,13 @@ SceneDocument captureScene(ecs::Registry& registry) {
         if (const ecs::Entity p = ecs::parentOf(registry, e); p != ecs::kNullEntity) {
             if (auto it = indexOf.find(p.bits()); it != indexOf.end()) out.parent = it->second;
         }
-        if (const auto* mesh = registry.tryGet<MeshInstance>(e); mesh && !mesh->gltfPath.empty()) {
-            out.mesh = MeshReference{mesh->gltfPath, mesh->mesh};
+        if (const auto* mesh = registry.tryGet<MeshInstance>(e);
+            mesh && mesh->model == &builtinMeshModel()) {
+            MeshReference builtin;
+            builtin.builtin = builtinMeshName(BuiltinMesh(mesh->mesh));
+            out.mesh = builtin;
+        } else if (mesh && !mesh->gltfPath.empty()) {
+            out.mesh = MeshReference{mesh->gltfPath, mesh->mesh, ""};
         }
         if (const auto* overrides = registry.tryGet<MaterialOverrides>(e)) {
             out.materialOverrides = overrides->overrides;

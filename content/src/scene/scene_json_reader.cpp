@@ -2,9 +2,11 @@
 // malformed component is dropped (the entity stays), a malformed file yields nullopt.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "candela/content/builtin_meshes.h"
 #include "candela/content/component_validation.h"
 #include "candela/content/scene_file.h"
 #include "scene_json_names.h"
@@ -30,6 +32,24 @@ std::size_t nestingDepth(const json& root) {
         }
     }
     return deepest;
+}
+
+// The rotation that turns -Z (where cameras look and lights shine) towards `target`, +Y up:
+// yaw about +Y, then pitch about the rotated +X. False when the target is the position.
+bool lookAtRotation(const std::array<float, 3>& position, const std::array<float, 3>& target,
+                    std::array<float, 4>& rotation) {
+    const double dx = double(target[0]) - position[0];
+    const double dy = double(target[1]) - position[1];
+    const double dz = double(target[2]) - position[2];
+    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (!(length > 1e-6)) return false;
+    const double yaw = std::atan2(-dx, -dz);
+    const double pitch = std::asin(std::clamp(dy / length, -1.0, 1.0));
+    // q = yaw(Y) * pitch(X), with half angles.
+    const double cy = std::cos(yaw / 2), sy = std::sin(yaw / 2);
+    const double cp = std::cos(pitch / 2), sp = std::sin(pitch / 2);
+    rotation = {float(cy * sp), float(sy * cp), float(-sy * sp), float(cy * cp)};
+    return true;
 }
 
 class Reader {
@@ -160,6 +180,16 @@ public:
         numbers(j, p, "rotation", t.rotation);
         numbers(j, p, "scale", t.scale);
         report(p, validateRotation(t.rotation));
+        if (j.contains("lookAt")) {
+            if (j.contains("rotation")) {
+                return error(p + "/lookAt", "give \"rotation\" or \"lookAt\", not both");
+            }
+            std::array<float, 3> target{};
+            if (!clean([&] { numbers(j, p, "lookAt", target); })) return;
+            if (!lookAtRotation(t.translation, target, t.rotation)) {
+                error(p + "/lookAt", "the target is the entity's own position");
+            }
+        }
     }
 
     void textureRef(const json& parent, const std::string& p, const char* key, TextureRef& t) {
@@ -231,6 +261,33 @@ public:
         report(p, validateCamera(c));
     }
 
+    // A glTF's mesh, or a built-in one; "material" is primitive 0's material override.
+    void mesh(const json& m, const std::string& p, MeshReference& mesh,
+              std::optional<MaterialOverride>& material) {
+        string(m, p, "gltf", mesh.gltfPath);
+        integer(m, p, "mesh", mesh.meshIndex, 0, std::numeric_limits<std::int32_t>::max());
+        string(m, p, "builtin", mesh.builtin);
+        if (!mesh.builtin.empty()) {
+            if (m.contains("gltf") || m.contains("mesh")) {
+                error(p + "/builtin", "give \"gltf\" or \"builtin\", not both");
+            } else if (!builtinMeshFromName(mesh.builtin)) {
+                error(p + "/builtin",
+                      "'" + mesh.builtin + "' is not one of: " + std::string(builtinMeshNames()));
+            }
+        } else if (mesh.gltfPath.empty() && !m.contains("builtin")) {
+            error(p + "/gltf",
+                  "missing glTF path (or \"builtin\": " + std::string(builtinMeshNames()) + ")");
+        } else if (mesh.gltfPath.empty()) {
+            error(p + "/builtin", "expected a built-in mesh name");
+        }
+        if (const json* j = nullptr; object(m, p, "material", j)) {
+            MaterialOverride entry;
+            entry.primitive = 0;
+            this->material(*j, p + "/material", entry.material);
+            material = std::move(entry);
+        }
+    }
+
     SceneEntity entity(const json& j, const std::string& p, std::size_t entityCount) {
         SceneEntity e;
         if (!j.is_object()) {
@@ -247,13 +304,10 @@ public:
         integer(j, p, "parent", e.parent, -1, static_cast<std::int64_t>(entityCount) - 1);
         if (const json* m = nullptr; object(j, p, "mesh", m)) {
             MeshReference mesh;
-            if (clean([&] {
-                    string(*m, p + "/mesh", "gltf", mesh.gltfPath);
-                    integer(*m, p + "/mesh", "mesh", mesh.meshIndex, 0,
-                            std::numeric_limits<std::int32_t>::max());
-                    if (mesh.gltfPath.empty()) error(p + "/mesh/gltf", "missing glTF path");
-                })) {
+            std::optional<MaterialOverride> material;
+            if (clean([&] { this->mesh(*m, p + "/mesh", mesh, material); })) {
                 e.mesh = mesh;
+                if (material) e.materialOverrides.push_back(std::move(*material));
             }
         }
         if (auto it = j.find("materialOverrides"); it != j.end()) {

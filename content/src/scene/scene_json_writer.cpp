@@ -106,7 +106,11 @@ struct Writer {
     json entity(const SceneEntity& e, const std::string& p) {
         json out = {{"name", e.name}, {"transform", transform(e.transform, p + "/transform")}};
         if (e.parent != kNoIndex) out["parent"] = e.parent;
-        if (e.mesh) out["mesh"] = {{"gltf", e.mesh->gltfPath}, {"mesh", e.mesh->meshIndex}};
+        if (e.mesh && !e.mesh->builtin.empty()) {
+            out["mesh"] = {{"builtin", e.mesh->builtin}};
+        } else if (e.mesh) {
+            out["mesh"] = {{"gltf", e.mesh->gltfPath}, {"mesh", e.mesh->meshIndex}};
+        }
         if (!e.materialOverrides.empty()) {
             json overrides = json::array();
             for (std::size_t i = 0; i < e.materialOverrides.size(); ++i) {

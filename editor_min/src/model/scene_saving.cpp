@@ -33,7 +33,9 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
     const std::filesystem::path from = absoluteDirectory(source);
     const std::filesystem::path to = absoluteDirectory(target);
     for (content::SceneEntity& entity : document.entities) {
-        if (entity.mesh) entity.mesh->gltfPath = rebase(entity.mesh->gltfPath, from, to);
+        if (entity.mesh && entity.mesh->builtin.empty()) {
+            entity.mesh->gltfPath = rebase(entity.mesh->gltfPath, from, to);
+        }
         if (entity.sky) entity.sky->exrPath = rebase(entity.sky->exrPath, from, to);
     }
     return document;

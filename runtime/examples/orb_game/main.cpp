@@ -2,13 +2,12 @@
 // time runs out, without touching the red sentinels. Written only against the engine's public
 // headers (runtime, ecs, content), as a user's game would be.
 //
-//   candela-orb-game [run] [LEVEL.scene.json | REPLAY.input] [--headless] [--size WxH]
-//                    [--frames N] [--input SCRIPT] [--capture FILE.png|.exr]... [--stats FILE]
-//                    [--state FILE.json]
+//   candela-orb-game [run] [LEVEL.scene.json | REPLAY.input] [--state FILE.json]
+//                    [the standard flags: --headless --size WxH --frames N --input SCRIPT
+//                     --capture FILE.png|.exr --stats FILE.json ... (--help lists them)]
 //
 // Keys: WASD or arrows steer, R restarts. A REPLAY.input is recorded input for the default
 // level (the same as --input); `run` is accepted so the golden-image harness can drive it.
-#include <charconv>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -27,15 +26,7 @@ namespace {
 
 using namespace candela::runtime;
 
-constexpr const char* kUsage =
-    "usage: candela-orb-game [run] [LEVEL.scene.json | REPLAY.input] [--headless] [--size WxH]\n"
-    "                        [--frames N] [--input SCRIPT] [--capture FILE.png|.exr]...\n"
-    "                        [--stats FILE.json] [--state FILE.json]\n";
-
-bool parseUint(const std::string& text, uint32_t& value) {
-    auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && ptr == text.data() + text.size();
-}
+constexpr const char* kGameUsage = "[run] [LEVEL.scene.json | REPLAY.input] [--state FILE.json]";
 
 // The final game state as JSON, for tests and for anyone scripting the game. Returns the
 // error (path and OS error) or an empty string.
@@ -56,52 +47,28 @@ std::string writeState(const std::string& path, const orb::GameState& s, uint32_
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::vector<std::string> args(argv + 1, argv + argc);
-    if (!args.empty() && args[0] == "run") args.erase(args.begin());
-    ApplicationOptions options;
+    // `run` first is accepted so the golden-image harness can drive the game like `candela`.
+    std::vector<const char*> arguments(argv, argv + argc);
+    if (arguments.size() > 1 && std::string(arguments[1]) == "run")
+        arguments.erase(arguments.begin() + 1);
+    CommandLine command = ApplicationOptions::fromCommandLine(
+        int(arguments.size()), arguments.data(), OtherArguments::Keep, kGameUsage);
+    if (!command) return command.exitCode;
+    ApplicationOptions options = *command.options;
     options.title = "Orb";
-    options.validation = validationModeFromEnvironment();
     std::string level = ORB_GAME_DIR "/level.scene.json";
     std::string inputPath, statePath;
+    const std::vector<std::string>& args = command.arguments;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        auto value = [&]() -> const std::string* {
-            return i + 1 < args.size() ? &args[++i] : nullptr;
-        };
-        const std::string* v = nullptr;
-        if (a == "--help" || a == "-h") {
-            std::fputs(kUsage, stdout);
-            return kExitOk;
-        } else if (a == "--headless") {
-            options.headless = true;
-        } else if (a == "--size" && (v = value())) {
-            size_t x = v->find('x');
-            if (x == std::string::npos || !parseUint(v->substr(0, x), options.width) ||
-                !parseUint(v->substr(x + 1), options.height) || options.width == 0 ||
-                options.height == 0 || options.width > 16384 || options.height > 16384) {
-                std::fprintf(stderr, "orb: --size needs WxH (1..16384), got '%s'\n", v->c_str());
-                return kExitBadArguments;
-            }
-        } else if (a == "--frames" && (v = value())) {
-            if (!parseUint(*v, options.frames) || options.frames == 0) {
-                std::fprintf(stderr, "orb: --frames needs a positive integer, got '%s'\n",
-                             v->c_str());
-                return kExitBadArguments;
-            }
-        } else if (a == "--input" && (v = value())) {
-            inputPath = *v;
-        } else if (a == "--capture" && (v = value())) {
-            options.captures.push_back({FrameCapture::kLastFrame, *v});
-        } else if (a == "--stats" && (v = value())) {
-            options.stats = *v;
-        } else if (a == "--state" && (v = value())) {
-            statePath = *v;
+        if (a == "--state" && i + 1 < args.size()) {
+            statePath = args[++i];
         } else if (!a.empty() && a[0] != '-' && a.ends_with(".input")) {
-            inputPath = a;
+            inputPath = a;  // a replay: the same as --input
         } else if (!a.empty() && a[0] != '-') {
             level = a;
         } else {
-            std::fprintf(stderr, "orb: unknown or incomplete option '%s'\n%s", a.c_str(), kUsage);
+            std::fprintf(stderr, "orb: unknown or incomplete option '%s'\n", a.c_str());
             return kExitBadArguments;
         }
     }

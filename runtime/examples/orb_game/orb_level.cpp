@@ -151,7 +151,7 @@ std::string spawnLevel(candela::runtime::SceneWorld& world, const std::string& l
     const candela::content::Model& model = world.adoptModel(std::move(meshes.model));
     for (auto [e, mesh] : draws) {
         registry.emplace<candela::content::MeshInstance>(
-            e, candela::content::MeshInstance{&model, mesh});
+            e, candela::content::MeshInstance{&model, mesh, {}});
     }
     int32_t total = 0;
     registry.view<const Pickup>().each([&](const Pickup&) { ++total; });

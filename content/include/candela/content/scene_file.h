@@ -37,6 +37,7 @@ inline constexpr int kSceneFileVersion = 1;
 struct MeshReference {
     std::string gltfPath;        // relative to the scene file
     std::int32_t meshIndex = 0;  // into the glTF's meshes
+    std::string builtin;         // instead of a glTF: "plane", "box" or "sphere" (builtin_meshes.h)
 
     bool operator==(const MeshReference&) const = default;
 };

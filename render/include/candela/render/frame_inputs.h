@@ -2,8 +2,10 @@
 // What one frame asks of the renderer. Filled by the runtime from the scene each frame.
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "candela/render/frame_scene.h"
+#include "candela/render/text_overlay.h"
 
 namespace candela::render {
 
@@ -12,6 +14,8 @@ struct FrameInputs {
     FrameScene scene;  // meshes and lights; its camera also sets the exposure
     // Foundation test scene: one flat HDR triangle drawn instead of the scene's meshes.
     std::optional<std::array<float, 4>> testTriangleRadiance;
+    // Screen-space text drawn over the tonemapped image (text_overlay.h).
+    std::vector<TextLine> text;
 };
 
 }  // namespace candela::render

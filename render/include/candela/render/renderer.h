@@ -31,6 +31,7 @@ class GpuLightBuffer;
 class LightingPass;
 class SceneResources;
 class TonemapPass;
+class DebugTextPass;
 class TrianglePass;
 
 class Renderer {
@@ -100,6 +101,7 @@ private:
     std::unique_ptr<LightingPass> lightingPass_;
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
+    std::unique_ptr<DebugTextPass> debugTextPass_;  // made on the first frame with text
     std::unique_ptr<EnvironmentBrdfLut> brdfLut_;
     std::unique_ptr<EnvironmentPlaceholders> environmentPlaceholders_;
     std::unique_ptr<EnvironmentSamplingTable> samplingTable_;

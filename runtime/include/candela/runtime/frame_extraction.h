@@ -9,6 +9,7 @@
 #include "candela/ecs/registry.h"
 #include "candela/render/frame_scene.h"
 #include "candela/render/scene_resources.h"
+#include "candela/render/text_overlay.h"
 #include "candela/runtime/light_table.h"
 
 namespace candela::runtime {
@@ -22,6 +23,7 @@ struct ExtractedFrame {
     bool hasCamera = false;     // false: no entity has Camera + WorldTransform
     float skyIntensity = 1.0f;  // the Sky component's
     std::string skyExrPath;     // the Sky component's file as stored (empty: no sky)
+    std::vector<render::TextLine> text;  // the frame's DebugText lines (debug_text.h)
 
     // GPU materials made for scene-file material overrides, per entity; remade when the
     // entity's MaterialOverrides change.

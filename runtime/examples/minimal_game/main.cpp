@@ -1,0 +1,96 @@
+// minimal-game: steer the white ball with WASD and touch the four orbiting lights; each touch
+// scores a point and knocks that light ahead along its orbit. The whole game is this file, the
+// level (level.scene.json) and a CMakeLists.txt of find_package(Candela).
+//
+//   minimal-game                                  # a window (headless without a display)
+//   minimal-game --headless --frames 150 --input replays/collect.input --capture shot.png
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "candela/content/components/light.h"
+#include "candela/content/components/name.h"
+#include "candela/content/game_data.h"
+#include "candela/ecs/transform.h"
+#include "candela/runtime/application.h"
+#include "candela/runtime/debug_text.h"
+#include "candela/runtime/exit_code.h"
+
+using namespace candela;
+using runtime::Key;
+
+struct Orbit {  // a light circling the centre of the arena
+    float radius = 0, angle = 0, radiansPerSecond = 0;
+};
+
+int main(int argc, char** argv) {
+    // --headless --frames --size --input --capture --stats ... (--help lists them)
+    runtime::CommandLine command = runtime::ApplicationOptions::fromCommandLine(argc, argv);
+    if (!command) return command.exitCode;
+    command.options->title = "Minimal game";
+    runtime::Application app(*command.options);
+
+    content::Diagnostics diagnostics;
+    const bool loaded = app.world().loadSceneFile(LEVEL_FILE, diagnostics);
+    for (const content::Diagnostic& d : diagnostics.messages)
+        std::fprintf(stderr, "%s\n", content::formatDiagnostic(d).c_str());
+    if (!loaded) return runtime::kExitBadArguments;
+
+    // Find the ball and the lights first: adding components inside view().each is refused.
+    ecs::Registry& registry = app.world().registry;
+    ecs::Entity ball = ecs::kNullEntity;
+    std::vector<std::pair<ecs::Entity, Orbit>> orbiters;
+    registry.view<const content::Name, const ecs::LocalTransform>().each(
+        [&](ecs::Entity e, const content::Name& name, const ecs::LocalTransform& t) {
+            if (name.value == "ball") ball = e;
+            if (const auto* data = registry.tryGet<content::GameData>(e)) {  // the level's
+                const float speed = content::GameDataReader(*data).value("orbitSpeed", 0.0f);
+                orbiters.push_back({e,
+                                    {std::hypot(t.position.x, t.position.z),
+                                     std::atan2(t.position.z, t.position.x), speed}});
+            }
+        });
+    for (auto& [e, orbit] : orbiters)
+        registry.emplace<Orbit>(e, orbit);
+
+    app.addSystem("orbit", [](runtime::SceneWorld& world, const runtime::FrameContext& frame) {
+        world.registry.view<ecs::LocalTransform, Orbit>().each([&](ecs::Entity e,
+                                                                   ecs::LocalTransform& t,
+                                                                   Orbit& o) {
+            o.angle += o.radiansPerSecond * float(frame.deltaSeconds);
+            t.position = {o.radius * std::cos(o.angle), t.position.y, o.radius * std::sin(o.angle)};
+            world.registry.markChanged<ecs::LocalTransform>(e);  // so it is drawn there
+        });
+    });
+
+    int score = 0;
+    app.addSystem("player", [&](runtime::SceneWorld& world, const runtime::FrameContext& frame) {
+        const runtime::InputState& keys = frame.keys();
+        const ecs::Vec3 direction{float(keys.down(Key::D)) - float(keys.down(Key::A)), 0.0f,
+                                  float(keys.down(Key::S)) - float(keys.down(Key::W))};
+        const ecs::Vec3 at =
+            world.registry
+                .patch<ecs::LocalTransform>(
+                    ball,
+                    [&](ecs::LocalTransform& t) {  // patch: edit and mark changed in one
+                        t.position += direction * (5.0f * float(frame.deltaSeconds));
+                        t.position.x = std::fmax(-6.5f, std::fmin(6.5f, t.position.x));
+                        t.position.z = std::fmax(-6.5f, std::fmin(6.5f, t.position.z));
+                    })
+                .position;
+        world.registry.view<const ecs::LocalTransform, Orbit>().each(
+            [&](const ecs::LocalTransform& t, Orbit& o) {
+                const ecs::Vec3 d = t.position - at;
+                if (std::hypot(d.x, d.z) < 0.8f) {
+                    ++score;
+                    o.angle += 2.0f;  // knocked ahead along its orbit
+                }
+            });
+        runtime::debugText(world).print(16, 16, "SCORE " + std::to_string(score), {1, 0.9f, 0.3f});
+    });
+
+    const int exitCode = app.run();
+    std::printf("score %d after %u frames\n", score, app.framesRendered());
+    return exitCode;
+}

@@ -1,0 +1,92 @@
+#pragma once
+// What an Application run does: size, headless or windowed, frame count, captures, stats,
+// recorded input and the renderer's choices. Kept apart from application.h so a game's
+// option handling does not need the application loop.
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "candela/render/gpu_context.h"
+#include "candela/render/renderer_options.h"
+#include "candela/runtime/input_script.h"
+
+namespace candela::runtime {
+
+// Writes the frame rendered at `frame` (kLastFrame: the run's last) to `path` (.png or .exr).
+struct FrameCapture {
+    static constexpr std::uint32_t kLastFrame = std::numeric_limits<std::uint32_t>::max();
+    std::uint32_t frame = kLastFrame;
+    std::filesystem::path path;
+};
+
+struct CommandLine;
+
+// What a game does with command-line arguments that are not standard flags.
+enum class OtherArguments {
+    Refuse,  // an error naming the argument (a game with no flags of its own)
+    Keep,    // returned in CommandLine::arguments, in order, for the game to read
+};
+
+struct ApplicationOptions {
+    std::string title = "Candela";
+    std::uint32_t width = 1280;
+    std::uint32_t height = 720;
+    bool headless = false;                 // also headless when no display is found
+    std::uint32_t frames = 0;              // 0: until the window closes (headless: 1)
+    double fixedStepSeconds = 1.0 / 30.0;  // scene time per frame when headless
+    std::vector<FrameCapture> captures;
+    std::optional<std::filesystem::path> stats;       // per-run JSON (see frame_stats.h)
+    std::optional<std::filesystem::path> frameGraph;  // the last frame's graph as Graphviz
+    bool countLightPairs = false;  // renderer counts light-pixel pairs (stats' culling figures)
+    render::ValidationMode validation = render::ValidationMode::IfPresent;
+    render::LightCulling lightCulling = render::LightCulling::Clustered;
+    render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Auto;
+    // The sky (image-based lighting and background): this file if set, else the world's Sky
+    // component; a file that cannot be used gives a message and a neutral sky.
+    std::optional<std::filesystem::path> environment;
+    render::IblMode ibl = render::IblMode::SplitSum;
+    // Replayed instead of window input; with it, windowed runs use the fixed step too.
+    std::optional<InputScript> inputScript;
+    bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
+
+    // The standard flags every game gets (see standardFlagsUsage()): --headless, --frames N,
+    // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
+    // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl.
+    // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
+    // usage to stderr. Either way the result holds no options and the exit code to return:
+    //
+    //   auto command = candela::runtime::ApplicationOptions::fromCommandLine(argc, argv);
+    //   if (!command) return command.exitCode;
+    //
+    // `gameUsage` describes the game's own arguments (kept with OtherArguments::Keep) in the
+    // usage text. Validation defaults to CANDELA_VALIDATION, as every test sets it.
+    static CommandLine fromCommandLine(int argc, const char* const* argv,
+                                       OtherArguments others = OtherArguments::Refuse,
+                                       std::string_view gameUsage = {});
+    // The standard flags, one per line, for a usage message.
+    static std::string standardFlagsUsage();
+};
+
+struct CommandLine {
+    std::optional<ApplicationOptions> options;  // empty after --help or a bad argument
+    std::vector<std::string> arguments;         // the rest, with OtherArguments::Keep
+    std::string error;                          // the problem, when there was one
+    bool helpRequested = false;
+    int exitCode = 0;  // ExitCode to return when options is empty: ok after --help, else 2
+    explicit operator bool() const { return options.has_value(); }
+};
+
+// fromCommandLine without printing: `args` exclude the program name; `defaults` are the
+// options before any flag (e.g. a game's own size).
+CommandLine parseCommandLine(const std::vector<std::string>& args,
+                             OtherArguments others = OtherArguments::Refuse,
+                             ApplicationOptions defaults = {});
+
+// CANDELA_VALIDATION=require|off|on (unset: on, i.e. IfPresent), as every test sets it.
+render::ValidationMode validationModeFromEnvironment();
+
+}  // namespace candela::runtime

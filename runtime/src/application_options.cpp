@@ -1,0 +1,190 @@
+#include "candela/runtime/application_options.h"
+
+#include <charconv>
+#include <cstdio>
+#include <filesystem>
+
+#include "candela/runtime/exit_code.h"
+
+namespace candela::runtime {
+
+namespace {
+
+constexpr std::uint32_t kMaxDimension = 16384;
+
+bool parseUint(const std::string& text, std::uint32_t& value) {
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    return ec == std::errc() && ptr == end;
+}
+
+// "WxH" with both sides in 1..16384.
+bool parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& height) {
+    size_t x = text.find('x');
+    if (x == std::string::npos) return false;
+    return parseUint(text.substr(0, x), width) && parseUint(text.substr(x + 1), height) &&
+           width > 0 && height > 0 && width <= kMaxDimension && height <= kMaxDimension;
+}
+
+bool parseSeconds(const std::string& text, double& value) {
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    return ec == std::errc() && ptr == end && value >= 0.001 && value <= 60.0;
+}
+
+// One of `names` (spelled as on the command line) to its enum value.
+template <typename Enum, size_t N>
+bool parseChoice(const std::string& text, const std::pair<const char*, Enum> (&names)[N],
+                 Enum& value) {
+    for (const auto& [name, choice] : names) {
+        if (text == name) {
+            value = choice;
+            return true;
+        }
+    }
+    return false;
+}
+
+constexpr std::pair<const char*, render::LightCulling> kCullings[] = {
+    {"clustered", render::LightCulling::Clustered},
+    {"brute-force", render::LightCulling::BruteForce}};
+constexpr std::pair<const char*, render::LightAssignmentDevice> kAssignments[] = {
+    {"auto", render::LightAssignmentDevice::Auto},
+    {"cpu", render::LightAssignmentDevice::Cpu},
+    {"gpu", render::LightAssignmentDevice::Gpu}};
+constexpr std::pair<const char*, render::ValidationMode> kValidations[] = {
+    {"off", render::ValidationMode::Off},
+    {"on", render::ValidationMode::IfPresent},
+    {"require", render::ValidationMode::Required}};
+constexpr std::pair<const char*, render::IblMode> kIbls[] = {
+    {"split-sum", render::IblMode::SplitSum},
+    {"mobile", render::IblMode::Mobile},
+    {"reference", render::IblMode::Reference}};
+
+}  // namespace
+
+std::string ApplicationOptions::standardFlagsUsage() {
+    return "  --headless                render without a window (also when there is no display)\n"
+           "  --size WxH                image size (default 1280x720)\n"
+           "  --frames N                stop after N frames (headless default: 1)\n"
+           "  --input SCRIPT            replay recorded input (see input_script.h)\n"
+           "  --capture FILE.png|.exr   write the last frame (may repeat)\n"
+           "  --stats FILE.json         write per-run measurements\n"
+           "  --step SECONDS            scene time per frame when headless (default 1/30)\n"
+           "  --validation off|on|require\n"
+           "  --lights clustered|brute-force\n"
+           "  --light-assign auto|cpu|gpu\n"
+           "  --frame-graph FILE.dot    write the last frame's graph as Graphviz\n"
+           "  --env SKY.exr             light the scene with this sky\n"
+           "  --ibl split-sum|mobile|reference\n";
+}
+
+CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
+                             ApplicationOptions defaults) {
+    CommandLine result;
+    ApplicationOptions options = std::move(defaults);
+    auto fail = [&](std::string message) {
+        result.error = std::move(message);
+        result.exitCode = kExitBadArguments;
+        return result;
+    };
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        std::string v;
+        auto value = [&]() {
+            if (i + 1 >= args.size()) return false;
+            v = args[++i];
+            return true;
+        };
+        if (arg == "--help" || arg == "-h") {
+            result.helpRequested = true;
+            result.exitCode = kExitOk;
+            return result;
+        } else if (arg == "--headless") {
+            options.headless = true;
+        } else if (arg == "--size") {
+            if (!value() || !parseSize(v, options.width, options.height)) {
+                return fail("--size needs WxH with both sides between 1 and 16384, got '" + v +
+                            "'");
+            }
+        } else if (arg == "--frames") {
+            if (!value() || !parseUint(v, options.frames) || options.frames == 0) {
+                return fail("--frames needs a positive integer, got '" + v + "'");
+            }
+        } else if (arg == "--capture") {
+            if (!value()) return fail("--capture needs a file name ending in .exr or .png");
+            std::string ext = std::filesystem::path(v).extension().string();
+            if (ext != ".exr" && ext != ".png") {
+                return fail("--capture file must end in .exr or .png: '" + v + "'");
+            }
+            options.captures.push_back({FrameCapture::kLastFrame, v});
+        } else if (arg == "--stats") {
+            if (!value()) return fail("--stats needs a file name");
+            options.stats = v;
+        } else if (arg == "--input") {
+            if (!value()) return fail("--input needs an input script (see input_script.h)");
+            std::string error;
+            options.inputScript = InputScript::load(v, error);
+            if (!options.inputScript) return fail(error);
+        } else if (arg == "--step") {
+            if (!value() || !parseSeconds(v, options.fixedStepSeconds)) {
+                return fail("--step needs seconds per frame, a number between 0.001 and 60, got '" +
+                            v + "'");
+            }
+        } else if (arg == "--frame-graph") {
+            if (!value()) return fail("--frame-graph needs a file name (FILE.dot)");
+            options.frameGraph = v;
+        } else if (arg == "--lights") {
+            if (!value() || !parseChoice(v, kCullings, options.lightCulling)) {
+                return fail("--lights needs clustered or brute-force, got '" + v + "'");
+            }
+        } else if (arg == "--light-assign") {
+            if (!value() || !parseChoice(v, kAssignments, options.lightAssignment)) {
+                return fail("--light-assign needs auto, cpu or gpu, got '" + v + "'");
+            }
+        } else if (arg == "--validation") {
+            if (!value() || !parseChoice(v, kValidations, options.validation)) {
+                return fail("--validation needs off, on or require, got '" + v + "'");
+            }
+        } else if (arg == "--env") {
+            if (!value()) return fail("--env needs an OpenEXR file");
+            options.environment = v;
+        } else if (arg == "--ibl") {
+            if (!value() || !parseChoice(v, kIbls, options.ibl)) {
+                return fail("--ibl needs split-sum, mobile or reference, got '" + v + "'");
+            }
+        } else if (others == OtherArguments::Keep) {
+            result.arguments.push_back(arg);
+        } else if (!arg.empty() && arg[0] == '-') {
+            return fail("unknown option '" + arg + "'");
+        } else {
+            return fail("unexpected argument '" + arg + "'");
+        }
+    }
+    result.options = std::move(options);
+    return result;
+}
+
+CommandLine ApplicationOptions::fromCommandLine(int argc, const char* const* argv,
+                                                OtherArguments others, std::string_view gameUsage) {
+    std::vector<std::string> args;
+    for (int i = 1; i < argc; ++i)
+        args.emplace_back(argv[i]);
+    const std::string program =
+        argc > 0 ? std::filesystem::path(argv[0]).filename().string() : "game";
+    ApplicationOptions defaults;
+    defaults.validation = validationModeFromEnvironment();
+    CommandLine result = parseCommandLine(args, others, std::move(defaults));
+    if (result.options) return result;
+    std::string usage = "usage: " + program + " [options]";
+    if (!gameUsage.empty()) usage += " " + std::string(gameUsage);
+    usage += "\noptions:\n" + standardFlagsUsage();
+    if (result.helpRequested) {
+        std::fputs(usage.c_str(), stdout);
+    } else {
+        std::fprintf(stderr, "%s: %s\n%s", program.c_str(), result.error.c_str(), usage.c_str());
+    }
+    return result;
+}
+
+}  // namespace candela::runtime

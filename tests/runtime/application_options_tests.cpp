@@ -1,0 +1,98 @@
+// The standard flags every game gets from ApplicationOptions::fromCommandLine: each flag lands
+// in its option, a game's own arguments are kept or refused, and bad values name the flag.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "candela/runtime/application_options.h"
+#include "candela/runtime/exit_code.h"
+
+using namespace candela::runtime;
+
+namespace {
+
+std::string parseError(const std::vector<std::string>& args) {
+    CommandLine result = parseCommandLine(args);
+    EXPECT_FALSE(result.options.has_value());
+    EXPECT_EQ(result.exitCode, kExitBadArguments);
+    return result.error;
+}
+
+}  // namespace
+
+TEST(ApplicationOptions, StandardFlagsSetTheirOptions) {
+    const std::filesystem::path script =
+        std::filesystem::temp_directory_path() / "candela_options_test.input";
+    std::ofstream(script) << "0 hold D 5\n";
+    CommandLine result =
+        parseCommandLine({"--headless", "--frames", "42", "--size", "320x200", "--input",
+                          script.string(), "--capture", "a.png", "--capture", "b.exr", "--stats",
+                          "s.json", "--step", "0.5", "--lights", "brute-force", "--ibl", "mobile"});
+    ASSERT_TRUE(result) << result.error;
+    const ApplicationOptions& o = *result.options;
+    EXPECT_TRUE(o.headless);
+    EXPECT_EQ(o.frames, 42u);
+    EXPECT_EQ(o.width, 320u);
+    EXPECT_EQ(o.height, 200u);
+    ASSERT_TRUE(o.inputScript.has_value());
+    InputState input;
+    o.inputScript->apply(0, input);
+    EXPECT_TRUE(input.down(Key::D));
+    ASSERT_EQ(o.captures.size(), 2u);
+    EXPECT_EQ(o.captures[0].path, "a.png");
+    EXPECT_EQ(o.captures[1].frame, FrameCapture::kLastFrame);
+    EXPECT_EQ(o.stats, std::filesystem::path("s.json"));
+    EXPECT_DOUBLE_EQ(o.fixedStepSeconds, 0.5);
+    EXPECT_EQ(o.lightCulling, candela::render::LightCulling::BruteForce);
+    EXPECT_EQ(o.ibl, candela::render::IblMode::Mobile);
+    EXPECT_TRUE(result.arguments.empty());
+    std::filesystem::remove(script);
+}
+
+TEST(ApplicationOptions, DefaultsSurviveWhenNoFlagIsGiven) {
+    ApplicationOptions defaults;
+    defaults.width = 640;
+    defaults.title = "Mine";
+    CommandLine result = parseCommandLine({}, OtherArguments::Refuse, defaults);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result.options->width, 640u);
+    EXPECT_EQ(result.options->title, "Mine");
+    EXPECT_FALSE(result.options->headless);
+}
+
+TEST(ApplicationOptions, AGamesOwnArgumentsAreKeptInOrderOrRefused) {
+    CommandLine kept =
+        parseCommandLine({"level.json", "--headless", "--state", "out.json"}, OtherArguments::Keep);
+    ASSERT_TRUE(kept) << kept.error;
+    EXPECT_TRUE(kept.options->headless);
+    EXPECT_EQ(kept.arguments, (std::vector<std::string>{"level.json", "--state", "out.json"}));
+
+    EXPECT_EQ(parseError({"--state", "out.json"}), "unknown option '--state'");
+    EXPECT_EQ(parseError({"level.json"}), "unexpected argument 'level.json'");
+}
+
+TEST(ApplicationOptions, BadValuesNameTheFlagAndTheValue) {
+    EXPECT_NE(parseError({"--size", "12"}).find("--size needs WxH"), std::string::npos);
+    EXPECT_NE(parseError({"--size", "0x10"}).find("'0x10'"), std::string::npos);
+    EXPECT_NE(parseError({"--frames", "0"}).find("--frames needs a positive integer"),
+              std::string::npos);
+    EXPECT_NE(parseError({"--frames"}).find("--frames"), std::string::npos);
+    EXPECT_NE(parseError({"--capture", "x.jpg"}).find(".exr or .png: 'x.jpg'"), std::string::npos);
+    EXPECT_NE(parseError({"--lights", "fast"}).find("got 'fast'"), std::string::npos);
+    EXPECT_NE(parseError({"--input", "/no/such/replay.input"}).find("/no/such/replay.input"),
+              std::string::npos);
+}
+
+TEST(ApplicationOptions, HelpAsksForTheUsageAndSucceeds) {
+    CommandLine result = parseCommandLine({"--frames", "3", "--help"});
+    EXPECT_FALSE(result);
+    EXPECT_TRUE(result.helpRequested);
+    EXPECT_EQ(result.exitCode, kExitOk);
+    for (const char* flag :
+         {"--headless", "--frames", "--size", "--input", "--capture", "--stats"}) {
+        EXPECT_NE(ApplicationOptions::standardFlagsUsage().find(flag), std::string::npos) << flag;
+    }
+}

@@ -1,0 +1,144 @@
+// The minimal game template (runtime/examples/minimal_game) replayed headless: the recorded
+// input scores, no input scores nothing, replays repeat exactly, and the standard flags work.
+// MINIMAL_GAME_EXECUTABLE in the environment tests another build of it (scripts/test: the
+// template built outside the tree against the installed engine).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "image_files.h"
+
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string output;
+};
+
+RunResult runGame(const std::string& args) {
+    const char* other = std::getenv("MINIMAL_GAME_EXECUTABLE");
+    const std::string exe = other && *other ? other : MINIMAL_GAME_EXECUTABLE;
+    const std::string command = exe + " " + args + " 2>&1";
+    RunResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer{};
+    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
+        result.output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
+    return result;
+}
+
+const std::string kReplay = std::string(MINIMAL_GAME_DIR) + "/replays/collect.input";
+
+// The score the game prints when the run ends ("score N after F frames"); -1 if absent.
+// (Parsed by hand: std::regex trips GCC 12's maybe-uninitialized warning under ASan.)
+int scoreOf(const RunResult& r, unsigned frames) {
+    const std::string tail = " after " + std::to_string(frames) + " frames";
+    const size_t end = r.output.find(tail);
+    if (end == std::string::npos) return -1;
+    const size_t start = r.output.rfind("score ", end);
+    if (start == std::string::npos) return -1;
+    const std::string digits = r.output.substr(start + 6, end - start - 6);
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
+    return std::stoi(digits);
+}
+
+// Pixels in [x0, x1) x [y0, y1) within `tolerance` levels of `rgb`.
+int countNear(const candela::golden::LdrImage& image, int x0, int y0, int x1, int y1,
+              std::array<int, 3> rgb, int tolerance) {
+    int count = 0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            const std::uint8_t* p = &image.rgb[(std::size_t(y) * image.width + x) * 3];
+            bool near = true;
+            for (int c = 0; c < 3; ++c)
+                near = near && std::abs(int(p[c]) - rgb[c]) <= tolerance;
+            count += near;
+        }
+    }
+    return count;
+}
+
+// The text region's pixels, to compare two captures' scores.
+std::vector<std::uint8_t> region(const candela::golden::LdrImage& image, int x0, int y0, int x1,
+                                 int y1) {
+    std::vector<std::uint8_t> out;
+    for (int y = y0; y < y1; ++y) {
+        const std::uint8_t* row = &image.rgb[(std::size_t(y) * image.width + x0) * 3];
+        out.insert(out.end(), row, row + (x1 - x0) * 3);
+    }
+    return out;
+}
+
+}  // namespace
+
+// The score is drawn on screen, headless too, so a capture shows it: the template prints
+// "SCORE N" at (16, 16), scale 2, in (1, 0.9, 0.3) with a black outline.
+TEST(MinimalGame, TheScoreIsDrawnIntoCaptures) {
+    const auto dir = std::filesystem::path(testing::TempDir()) / "candela_minimal_game";
+    std::filesystem::create_directories(dir);
+    const auto first = dir / "first.png", last = dir / "last.png";
+    RunResult start = runGame("--headless --size 256x144 --frames 1 --capture " + first.string());
+    ASSERT_EQ(start.exitCode, 0) << start.output;
+    RunResult played = runGame("--headless --size 256x144 --frames 150 --input " + kReplay +
+                               " --capture " + last.string());
+    ASSERT_EQ(played.exitCode, 0) << played.output;
+    ASSERT_GE(scoreOf(played, 150), 1) << played.output;
+    std::string error;
+    auto a = candela::golden::readLdrPng(first, error);
+    ASSERT_TRUE(a) << error;
+    auto b = candela::golden::readLdrPng(last, error);
+    ASSERT_TRUE(b) << error;
+    const std::array<int, 3> textColour{255, 230, 77};  // sRGB levels of (1, 0.9, 0.3)
+    // "SCORE 0": 7 characters of 6 x 2 pixels, 14 pixels tall, plus the outline.
+    const int x0 = 14, y0 = 14, x1 = 16 + 7 * 12 + 2, y1 = 16 + 14 + 2;
+    EXPECT_GE(countNear(*a, x0, y0, x1, y1, textColour, 2), 100);
+    EXPECT_GE(countNear(*a, x0, y0, x1, y1, {0, 0, 0}, 0), 100) << "the outline";
+    EXPECT_EQ(countNear(*a, 0, 72, 256, 144, textColour, 2), 0) << "nothing else is text";
+    // The digits follow the score: the two captures' text regions differ.
+    EXPECT_NE(region(*a, x0, y0, x1, y1), region(*b, x0, y0, x1, y1));
+    EXPECT_GE(countNear(*b, x0, y0, x1, y1, textColour, 2), 100);
+}
+
+TEST(MinimalGame, TheReplayScoresAndNoInputScoresNothing) {
+    RunResult played = runGame("--headless --size 32x24 --frames 150 --input " + kReplay);
+    ASSERT_EQ(played.exitCode, 0) << played.output;
+    EXPECT_GE(scoreOf(played, 150), 3) << played.output;
+    RunResult idle = runGame("--headless --size 32x24 --frames 150");
+    ASSERT_EQ(idle.exitCode, 0) << idle.output;
+    EXPECT_EQ(scoreOf(idle, 150), 0) << idle.output;
+}
+
+TEST(MinimalGame, ReplaysAreDeterministic) {
+    RunResult a = runGame("--headless --size 32x24 --frames 120 --input " + kReplay);
+    RunResult b = runGame("--headless --size 32x24 --frames 120 --input " + kReplay);
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    EXPECT_GE(scoreOf(a, 120), 1) << a.output;
+    EXPECT_EQ(scoreOf(a, 120), scoreOf(b, 120));
+}
+
+TEST(MinimalGame, StandardFlagsAreCheckedAndListed) {
+    RunResult bad = runGame("--frames zero");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find("minimal-game: --frames needs a positive integer, got 'zero'"),
+              std::string::npos)
+        << bad.output;
+    RunResult unknown = runGame("--level x.json");
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_NE(unknown.output.find("unknown option '--level'"), std::string::npos) << unknown.output;
+    RunResult help = runGame("--help");
+    EXPECT_EQ(help.exitCode, 0) << help.output;
+    for (const char* flag : {"--headless", "--frames", "--size", "--input", "--capture", "--stats"})
+        EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
+    RunResult missing = runGame("--headless --input /no/such/replay.input");
+    EXPECT_EQ(missing.exitCode, 2);
+    EXPECT_NE(missing.output.find("/no/such/replay.input"), std::string::npos) << missing.output;
+}
