@@ -178,6 +178,7 @@ int Application::runSession(bool headless, std::uint32_t frames) {
         rendererOptions.lightAssignment = options_.lightAssignment;
         rendererOptions.countLightPairs = options_.countLightPairs;
         rendererOptions.ibl = options_.ibl;
+        rendererOptions.brdf = options_.brdf;
         s.renderer = std::make_unique<render::Renderer>(*s.context, options_.width, options_.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);

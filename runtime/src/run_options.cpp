@@ -44,6 +44,7 @@ std::string runUsage() {
            "                   [--capture-each DIR] [--summary FILE.md] [--input SCRIPT]\n"
            "                   [--overlay|--no-overlay]\n"
            "                   [--env SKY.exr] [--ibl split-sum|mobile|reference]\n"
+           "                   [--brdf ue4|energy-conserving]\n"
            "       candela demo [same options]\n";
 }
 
@@ -149,6 +150,14 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
                 options.ibl = render::IblMode::Reference;
             else
                 return fail("--ibl needs split-sum, mobile or reference, got '" + v + "'");
+        } else if (arg == "--brdf") {
+            if (!value(v)) return fail("--brdf needs ue4 or energy-conserving");
+            if (v == "ue4")
+                options.brdf = render::BrdfModel::Ue4;
+            else if (v == "energy-conserving")
+                options.brdf = render::BrdfModel::EnergyConserving;
+            else
+                return fail("--brdf needs ue4 or energy-conserving, got '" + v + "'");
         } else if (!arg.empty() && arg[0] == '-') {
             return fail("unknown option '" + arg + "'");
         } else if (options.scene.empty()) {

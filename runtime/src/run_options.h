@@ -30,6 +30,7 @@ struct RunOptions {
     std::optional<bool> overlay;  // --overlay / --no-overlay (default: demo in a window)
     std::optional<std::filesystem::path> environment;  // --env: overrides the scene's sky
     render::IblMode ibl = render::IblMode::SplitSum;
+    std::optional<render::BrdfModel> brdf;  // --brdf; unset: the scene file's, else the default
 };
 
 struct ParseResult {

@@ -67,6 +67,14 @@ int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>>
     app.lightAssignment = options.lightAssignment;
     app.environment = options.environment;
     app.ibl = options.ibl;
+    // --brdf, else the scene file's "brdf", else the default (energy-conserving).
+    if (options.brdf) {
+        app.brdf = *options.brdf;
+    } else if (scene->world && scene->world->sceneBrdf()) {
+        app.brdf = *scene->world->sceneBrdf() == content::SceneBrdf::Ue4
+                       ? render::BrdfModel::Ue4
+                       : render::BrdfModel::EnergyConserving;
+    }
 
     const double step = app.fixedStepSeconds;
     Application application(std::move(app));

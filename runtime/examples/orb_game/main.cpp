@@ -4,7 +4,7 @@
 //
 //   candela-orb-game [run] [LEVEL.scene.json | REPLAY.input] [--headless] [--size WxH]
 //                    [--frames N] [--input SCRIPT] [--capture FILE.png|.exr]... [--stats FILE]
-//                    [--state FILE.json]
+//                    [--state FILE.json] [--brdf ue4|energy-conserving]
 //
 // Keys: WASD or arrows steer, R restarts. A REPLAY.input is recorded input for the default
 // level (the same as --input); `run` is accepted so the golden-image harness can drive it.
@@ -30,7 +30,8 @@ using namespace candela::runtime;
 constexpr const char* kUsage =
     "usage: candela-orb-game [run] [LEVEL.scene.json | REPLAY.input] [--headless] [--size WxH]\n"
     "                        [--frames N] [--input SCRIPT] [--capture FILE.png|.exr]...\n"
-    "                        [--stats FILE.json] [--state FILE.json]\n";
+    "                        [--stats FILE.json] [--state FILE.json]\n"
+    "                        [--brdf ue4|energy-conserving]\n";
 
 bool parseUint(const std::string& text, uint32_t& value) {
     auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -96,6 +97,16 @@ int main(int argc, char** argv) {
             options.stats = *v;
         } else if (a == "--state" && (v = value())) {
             statePath = *v;
+        } else if (a == "--brdf" && (v = value())) {
+            if (*v == "ue4") {
+                options.brdf = candela::render::BrdfModel::Ue4;
+            } else if (*v == "energy-conserving") {
+                options.brdf = candela::render::BrdfModel::EnergyConserving;
+            } else {
+                std::fprintf(stderr, "orb: --brdf needs ue4 or energy-conserving, got '%s'\n",
+                             v->c_str());
+                return kExitBadArguments;
+            }
         } else if (!a.empty() && a[0] != '-' && a.ends_with(".input")) {
             inputPath = a;
         } else if (!a.empty() && a[0] != '-') {

@@ -44,6 +44,7 @@ std::vector<std::string> LightingFeatures::names() const {
     out.push_back(clustered ? "light_culling_clustered" : "light_culling_brute_force");
     if (countLightPairs) out.push_back("light_pair_counters");
     if (ibl) out.push_back(std::string("ibl_") + iblModeName(*ibl));
+    out.push_back(brdf == BrdfModel::Ue4 ? "brdf_ue4" : "brdf_energy_conserving");
     return out;
 }
 
@@ -54,6 +55,7 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
     constants.set(SPEC_TUBE_LIGHTS_ENABLED, features.tubeLights);
     constants.set(SPEC_SPOT_LIGHTS_ENABLED, features.spotLights);
     constants.set(SPEC_CLUSTERED, features.clustered);
+    constants.set(SPEC_ENERGY_CONSERVING, features.brdf == BrdfModel::EnergyConserving);
 }
 
 LightingPass::LightingPass(GpuContext& context)
