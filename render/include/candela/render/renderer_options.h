@@ -50,7 +50,7 @@ struct RendererOptions {
     // --stats turns it on).
     bool countLightPairs = false;
     IblMode ibl = IblMode::SplitSum;
-    BrdfModel brdf = BrdfModel::Ue4;
+    BrdfModel brdf = BrdfModel::EnergyConserving;
     uint32_t referenceSamples = 2048;  // per pixel, for each of specular and diffuse
 };
 

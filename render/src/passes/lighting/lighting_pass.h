@@ -29,7 +29,7 @@ struct LightingFeatures {
     bool clustered = true;
     bool countLightPairs = false;
     std::optional<IblMode> ibl;  // none without an environment
-    BrdfModel brdf = BrdfModel::Ue4;
+    BrdfModel brdf = BrdfModel::EnergyConserving;
 
     bool operator==(const LightingFeatures&) const = default;
     std::vector<std::string> names() const;

@@ -66,7 +66,7 @@ struct ApplicationOptions {
     // component; a file that cannot be used gives a message and a neutral sky.
     std::optional<std::filesystem::path> environment;
     render::IblMode ibl = render::IblMode::SplitSum;
-    render::BrdfModel brdf = render::BrdfModel::Ue4;
+    render::BrdfModel brdf = render::BrdfModel::EnergyConserving;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
