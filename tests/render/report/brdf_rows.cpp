@@ -50,9 +50,10 @@ void addFresnelRow(ReportContext& context, const Cost& costSg, const Cost& costP
          "Schlick (1 - VoH)^5", metric, worst, "abs", where, formatShaderCost(costSg, costPow5)});
 }
 
-// `function` evaluates (approximation, exact height-correlated Smith) on the device.
-void addVisibilityRow(ReportContext& context, ValueFunction function, const char* name,
-                      const Cost& costApproximation, const Cost& costSmith) {
+// `function` evaluates (approximation, exact height-correlated Smith) on the device. Returns
+// the worst relative error.
+double addVisibilityRow(ReportContext& context, ValueFunction function, const char* name,
+                        const Cost& costApproximation, const Cost& costSmith) {
     const int roughnessSteps = context.budget.quick ? 8 : 50;
     const int angleSteps = context.budget.quick ? 16 : 128;
     std::vector<ValueSample> samples;
@@ -91,6 +92,7 @@ void addVisibilityRow(ReportContext& context, ValueFunction function, const char
                   roughnessSteps, angleSteps, formatNumber(worstMid).c_str());
     context.report.rows.push_back({name, "height-correlated Smith GGX (exact)", metric, worst,
                                    "rel", where, formatShaderCost(costApproximation, costSmith)});
+    return worst;
 }
 
 // Projected area of D: the integral of D(h) NoH over the hemisphere is 1 for any alpha. With
@@ -175,20 +177,21 @@ void addBrdfRows(ReportContext& context) {
         "not cheaper than pow5's four multiplications on this device; the SG exponent was "
         "chosen for GPUs, where exp2 is a single special-function instruction. The error "
         "column shows what it costs in accuracy.");
-    addVisibilityRow(context, ValueFunction::Visibility,
-                     "Vis: Schlick-Smith, k = alpha / 2 (eq. 4; `--brdf ue4`)", ns[2], ns[3]);
-    addVisibilityRow(context, ValueFunction::VisibilityFast,
-                     "Vis: height-correlated Smith, Hammon's linear form (Filament's fast Vis)",
-                     ns[4], ns[3]);
+    const double schlick =
+        addVisibilityRow(context, ValueFunction::Visibility,
+                         "Vis: Schlick-Smith, k = alpha / 2 (eq. 4; `--brdf ue4`)", ns[2], ns[3]);
+    const double hammon = addVisibilityRow(
+        context, ValueFunction::VisibilityFast,
+        "Vis: height-correlated Smith, Hammon's linear form (Filament's fast Vis)", ns[4], ns[3]);
     context.report.notes.push_back(
         "Visibility for the energy-conserving BRDF (`--brdf energy-conserving`, the default): "
-        "the exact height-correlated Smith term itself, measured above as the reference of "
-        "both approximations. Schlick-Smith is off by up to 96% at grazing angles (and 44% "
-        "with NoV, NoL >= 0.2) and loses the most energy at high roughness; Hammon's form "
-        "halves neither error nor cost enough to matter: the exact term costs two square roots "
-        "per light, about 0.1 ns here, and is what the LUT's height-correlated pair and the "
-        "multiple-scattering compensation are integrated with, so direct and image-based "
-        "light agree. `--brdf ue4` keeps Schlick-Smith.");
+        "the exact height-correlated Smith term, the reference of both Vis rows. Schlick-Smith "
+        "is off it by up to " +
+        formatNumber(100.0 * schlick) + "% and Hammon's linear form by up to " +
+        formatNumber(100.0 * hammon) +
+        "%; the exact term costs two square roots per light (cost column), and the LUT's "
+        "height-correlated pair and the multiple-scattering compensation are integrated with "
+        "it, so direct and image-based light agree. `--brdf ue4` keeps Schlick-Smith.");
     addGgxNote(context);
 }
 
