@@ -139,8 +139,8 @@ void main() {
     surface.specular = 0.5;
     surface.shadingModel = kShadingDefaultLit;
     surface.customData = vec4(0.0);
-    // The energy-conserving BRDF's compensation at its largest: E_ss's floor in the LUT is about
-    // 0.35 (roughness 1, grazing); 0.1 leaves margin.
+    // The energy-conserving BRDF's compensation beyond its largest: E_ss's floor in the LUT is
+    // 0.307 (roughness 1, NoV 1); 0.1 leaves margin.
     surface.directionalAlbedo = 0.1;
 
     Tally t[kCheckCount];
