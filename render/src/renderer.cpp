@@ -41,6 +41,10 @@ const char* iblModeName(IblMode mode) {
     return "unknown";
 }
 
+const char* brdfModelName(BrdfModel model) {
+    return model == BrdfModel::Ue4 ? "ue4" : "energy-conserving";
+}
+
 float exposureFromEv100(float ev100) {
     return 1.0f / (1.2f * std::exp2(ev100));
 }
@@ -54,6 +58,7 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     LightingFeatures f;
     f.clustered = options.lightCulling == LightCulling::Clustered;
     f.countLightPairs = options.countLightPairs;
+    f.brdf = options.brdf;
     if (resources.environment()) f.ibl = options.ibl;
     for (const DrawItem& draw : scene.draws) {
         switch (resources.material(draw.material).shadingModel) {
@@ -168,8 +173,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     FrameGraph& g = *graph_;
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
     lightingPass_->setFeatures(features);
-    // The environment BRDF LUT is the same for every sky: built once, when first needed.
-    if (features.ibl && !brdfLut_) brdfLut_ = std::make_unique<EnvironmentBrdfLut>(context_);
+    // The environment BRDF LUT is the same for every sky: built once, when first needed (the
+    // energy-conserving BRDF reads its directional albedo for every light, sky or not).
+    const bool needsLut = features.ibl || features.brdf == BrdfModel::EnergyConserving;
+    if (needsLut && !brdfLut_) brdfLut_ = std::make_unique<EnvironmentBrdfLut>(context_);
     // The reference mode also samples the sky by luminance: a table per environment.
     if (features.ibl == IblMode::Reference &&
         (!samplingTable_ || samplingTable_->source() != resources.environment())) {

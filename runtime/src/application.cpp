@@ -51,6 +51,16 @@ bool displayAvailable() {
     return (display && *display) || (wayland && *wayland);
 }
 
+// --brdf, else the scene file's "brdf", else the energy-conserving default.
+render::BrdfModel brdfFor(const ApplicationOptions& options, const SceneWorld* world) {
+    if (options.brdf) return *options.brdf;
+    if (world && world->sceneBrdf()) {
+        return *world->sceneBrdf() == content::SceneBrdf::Ue4 ? render::BrdfModel::Ue4
+                                                              : render::BrdfModel::EnergyConserving;
+    }
+    return render::BrdfModel::EnergyConserving;
+}
+
 }  // namespace
 
 render::ValidationMode validationModeFromEnvironment() {
@@ -178,6 +188,7 @@ int Application::runSession(bool headless, std::uint32_t frames) {
         rendererOptions.lightAssignment = options_.lightAssignment;
         rendererOptions.countLightPairs = options_.countLightPairs;
         rendererOptions.ibl = options_.ibl;
+        rendererOptions.brdf = brdfFor(options_, world_.get());
         s.renderer = std::make_unique<render::Renderer>(*s.context, options_.width, options_.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);

@@ -61,6 +61,9 @@ constexpr std::pair<const char*, render::IblMode> kIbls[] = {
     {"mobile", render::IblMode::Mobile},
     {"reference", render::IblMode::Reference}};
 
+constexpr std::pair<const char*, render::BrdfModel> kBrdfs[] = {
+    {"ue4", render::BrdfModel::Ue4}, {"energy-conserving", render::BrdfModel::EnergyConserving}};
+
 }  // namespace
 
 std::string ApplicationOptions::standardFlagsUsage() {
@@ -76,7 +79,8 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --light-assign auto|cpu|gpu\n"
            "  --frame-graph FILE.dot    write the last frame's graph as Graphviz\n"
            "  --env SKY.exr             light the scene with this sky\n"
-           "  --ibl split-sum|mobile|reference\n";
+           "  --ibl split-sum|mobile|reference\n"
+           "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -153,6 +157,12 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
             if (!value() || !parseChoice(v, kIbls, options.ibl)) {
                 return fail("--ibl needs split-sum, mobile or reference, got '" + v + "'");
             }
+        } else if (arg == "--brdf") {
+            render::BrdfModel brdf{};
+            if (!value() || !parseChoice(v, kBrdfs, brdf)) {
+                return fail("--brdf needs ue4 or energy-conserving, got '" + v + "'");
+            }
+            options.brdf = brdf;
         } else if (others == OtherArguments::Keep) {
             result.arguments.push_back(arg);
         } else if (!arg.empty() && arg[0] == '-') {

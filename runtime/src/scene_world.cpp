@@ -91,6 +91,7 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     if (!scene) return false;
     content::instantiateScene(registry, *scene, path, cache_, diagnostics);
     sceneFile_ = path;
+    sceneBrdf_ = scene->brdf;
     return true;
 }
 

@@ -137,6 +137,34 @@ TEST(SceneFile, SaveLoadSaveRoundTripsBitExactly) {
     EXPECT_EQ(sceneToJson(*loaded, error), sceneToJson(original, error));
 }
 
+// Issue 26: the top-level "brdf" survives save and load; a misspelt value is an error naming
+// the file and /brdf, and the scene still loads with the engine's default.
+TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {
+    SceneDocument scene = exampleScene();
+    scene.brdf = SceneBrdf::Ue4;
+    std::string error;
+    const std::string text = sceneToJson(scene, error);
+    ASSERT_EQ(error, "");
+    EXPECT_NE(text.find("\"brdf\": \"ue4\""), std::string::npos) << text;
+    Diagnostics diagnostics;
+    auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "ue4.scene.json", diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_EQ(loaded->brdf, SceneBrdf::Ue4);
+    EXPECT_FALSE(exampleScene().brdf.has_value());
+
+    const std::string bad =
+        R"({"format": "candela.scene", "version": 1, "brdf": "phong", "entities": []})";
+    Diagnostics badDiagnostics;
+    auto fallback =
+        parseSceneJson(std::as_bytes(std::span(bad)), "phong.scene.json", badDiagnostics);
+    ASSERT_TRUE(fallback);
+    EXPECT_FALSE(fallback->brdf.has_value());
+    EXPECT_TRUE(badDiagnostics.hasErrors());
+    EXPECT_TRUE(badDiagnostics.mentions("phong.scene.json")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("/brdf")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("energy-conserving")) << badDiagnostics.toString();
+}
+
 TEST(SceneFile, RefusesToSaveNonFiniteValuesAndKeepsTheOldFile) {
     const auto path = testing::tempPath("level.scene.json");
     ASSERT_EQ(saveSceneFile(path, exampleScene()), "");

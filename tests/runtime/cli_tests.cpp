@@ -424,6 +424,49 @@ TEST(Cli, BadSkyFileGivesAClearErrorAndTheNeutralSky) {
     EXPECT_TRUE(stats["environment"]["fallback"].get<bool>());
 }
 
+// Issue 26: --brdf picks the BRDF (stats `features`), a scene file's "brdf" does when the
+// flag is absent, the flag wins over it, and the two BRDFs give different images.
+TEST(Cli, BrdfFlagAndSceneSettingChooseTheBrdf) {
+    auto dir = tempDir();
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/sphere_grid_point.scene.json";
+    std::string text = readBytes(scene);
+    const size_t open = text.find('{');
+    ASSERT_NE(open, std::string::npos);
+    text.insert(open + 1, "\n  \"brdf\": \"ue4\",");
+    // In the temp folder: the glTF paths, relative to tests/scenes, made absolute.
+    const std::string relativeAssets = "../../../shared/assets";
+    for (size_t at = text.find(relativeAssets); at != std::string::npos;
+         at = text.find(relativeAssets, at)) {
+        text.replace(at, relativeAssets.size(), CANDELA_SHARED_ASSETS);
+    }
+    const std::filesystem::path ue4Scene = dir / "brdf_ue4.scene.json";
+    std::ofstream(ue4Scene) << text;
+    auto features = [&](const std::string& name, const std::string& args) {
+        RunResult r = runCandela("run " + args + " --headless --size 32x32 --stats " +
+                                 (dir / (name + ".json")).string() + " --capture " +
+                                 (dir / (name + ".exr")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return nlohmann::json::parse(readBytes(dir / (name + ".json")))["features"]
+            .get<std::vector<std::string>>();
+    };
+    auto has = [](const std::vector<std::string>& f, const char* name) {
+        return std::find(f.begin(), f.end(), name) != f.end();
+    };
+    EXPECT_TRUE(has(features("default", scene), "brdf_energy_conserving"));
+    EXPECT_TRUE(has(features("flag", scene + " --brdf ue4"), "brdf_ue4"));
+    EXPECT_TRUE(has(features("setting", ue4Scene.string()), "brdf_ue4"));
+    EXPECT_TRUE(has(features("override", ue4Scene.string() + " --brdf energy-conserving"),
+                    "brdf_energy_conserving"));
+    EXPECT_EQ(readBytes(dir / "flag.exr"), readBytes(dir / "setting.exr"));
+    EXPECT_EQ(readBytes(dir / "default.exr"), readBytes(dir / "override.exr"));
+    EXPECT_NE(readBytes(dir / "default.exr"), readBytes(dir / "flag.exr"));
+
+    RunResult bad = runCandela(kTriangle + "--brdf phong");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("ue4 or energy-conserving"), std::string::npos) << bad.output;
+}
+
 TEST(Cli, UnknownIblModeIsRejected) {
     RunResult r = runCandela(kTriangle + "--ibl fancy");
     EXPECT_EQ(r.exitCode, 2);

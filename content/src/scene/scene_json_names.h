@@ -9,6 +9,7 @@
 #include "candela/content/components/light.h"
 #include "candela/content/light_types.h"
 #include "candela/content/material.h"
+#include "candela/content/scene_file.h"
 
 namespace candela::content::scene {
 
@@ -37,6 +38,9 @@ inline constexpr EnumNames<AlphaMode, 3> kAlphaModes{
     {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}}};
 inline constexpr EnumNames<ColorSpace, 2> kColorSpaces{
     {{ColorSpace::Srgb, "srgb"}, {ColorSpace::Linear, "linear"}}};
+
+inline constexpr EnumNames<SceneBrdf, 2> kSceneBrdfs{
+    {{SceneBrdf::Ue4, "ue4"}, {SceneBrdf::EnergyConserving, "energy-conserving"}}};
 
 template <typename E, std::size_t N>
 std::string_view nameOf(const EnumNames<E, N>& names, E value) {

@@ -452,6 +452,13 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         return std::nullopt;
     }
     SceneDocument scene;
+    if (root.contains("brdf")) {
+        // A misspelt value is reported and the default kept: the scene still loads.
+        SceneBrdf brdf = SceneBrdf::EnergyConserving;
+        if (reader.clean([&] { reader.enumeration(root, "", "brdf", kSceneBrdfs, brdf); })) {
+            scene.brdf = brdf;
+        }
+    }
     scene.entities.reserve(entities->size());
     for (std::size_t i = 0; i < entities->size(); ++i) {
         scene.entities.push_back(

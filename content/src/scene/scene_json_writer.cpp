@@ -149,8 +149,9 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     }
     error = writer.error;
     if (!error.empty()) return {};
-    const json document = {
+    json document = {
         {"format", kFormatName}, {"version", kSceneFileVersion}, {"entities", std::move(entities)}};
+    if (scene.brdf) document["brdf"] = std::string(nameOf(kSceneBrdfs, *scene.brdf));
     try {
         return document.dump(2) + "\n";
     } catch (const nlohmann::json::exception& e) {  // e.g. a name that is not valid UTF-8

@@ -12,7 +12,8 @@
 vec3 environmentAmbient(Surface s, vec3 N, vec3 V, vec4 sh[9], samplerCube prefilteredCube,
                         float prefilteredMipCount, sampler2D environmentBrdfLut, bool mobile) {
     AmbientTerms t = ambientTermsOf(s);
-    vec3 diffuse = t.diffuseColor * (1.0 / PI) * shIrradiance(sh, N);
+    vec3 irradiance = shIrradiance(sh, N);
+    vec3 diffuse = t.diffuseColor * (1.0 / PI) * irradiance;
     if (any(greaterThan(t.transmittedColor, vec3(0.0)))) {
         diffuse += t.transmittedColor * (1.0 / PI) * shIrradiance(sh, -N);
     }
@@ -31,7 +32,14 @@ vec3 environmentAmbient(Surface s, vec3 N, vec3 V, vec4 sh[9], samplerCube prefi
         environmentBrdf =
             environmentBrdfFromLut(environmentBrdfLut, t.specularColor, s.roughness, NoV);
     }
-    return diffuse + prefiltered * environmentBrdf;
+    vec3 ambient = diffuse + prefiltered * environmentBrdf;
+    if (kEnergyConserving) {
+        float albedo = mobile ? envBrdfApproxDirectionalAlbedo(s.roughness, NoV)
+                              : specularDirectionalAlbedo(environmentBrdfLut, s.roughness, NoV);
+        ambient += multipleScatteringEnvironmentBrdf(environmentBrdf, t.specularColor, albedo) *
+                   irradiance * (1.0 / PI);
+    }
+    return ambient;
 }
 
 #endif

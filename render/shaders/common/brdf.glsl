@@ -4,6 +4,12 @@
 #define CANDELA_BRDF_GLSL
 
 #include "common/math.glsl"
+#include "common/specialization_ids.h"
+
+// The BRDF a variant shades with (`--brdf`, RendererOptions::brdf). false: seed 000 exactly
+// (Schlick-Smith visibility, single scattering). true: height-correlated Smith visibility and
+// multiple-scattering energy compensation (render/README.md "BRDF").
+layout(constant_id = SPEC_ENERGY_CONSERVING) const bool kEnergyConserving = true;
 
 // Roughness is clamped to this before alpha = roughness^2, only for analytic lights: at 0 the
 // GGX lobe of a point light is a Dirac delta (D = inf at NoH = 1). 0.02 keeps
@@ -43,6 +49,31 @@ float visibilitySmithGgxCorrelated(float alpha, float NoV, float NoL) {
     return 0.5 / max(lambdaV + lambdaL, 1e-12);
 }
 
+// The visibility term of the variant's BRDF: exact height-correlated Smith when energy-
+// conserving (docs/speed-vs-error.md compares the candidates), else eq. 4.
+float visibilitySmith(float alpha, float NoV, float NoL) {
+    if (kEnergyConserving) return visibilitySmithGgxCorrelated(alpha, NoV, NoL);
+    return visibilitySmithSchlick(alpha, NoV, NoL);
+}
+
+// Hammon 2017's linear form of the height-correlated term (Filament's "fast" visibility): the
+// sqrt of each Lambda replaced by its linear interpolation in alpha. Measured only.
+float visibilitySmithGgxCorrelatedFast(float alpha, float NoV, float NoL) {
+    float lambdaV = NoL * (NoV * (1.0 - alpha) + alpha);
+    float lambdaL = NoV * (NoL * (1.0 - alpha) + alpha);
+    return 0.5 / max(lambdaV + lambdaL, 1e-12);
+}
+
+// Multiple-scattering energy compensation of a single-scattering specular lobe (Kulla and
+// Conty 2017; the form of Fdez-Aguera 2019 and Filament): a white lobe whose directional albedo
+// is E_ss loses 1 - E_ss to the bounces single scattering ignores; scaling it by 1 / E_ss puts
+// that energy back, and for a coloured F0 the scale 1 + F0 (1 / E_ss - 1) grows with F0, so
+// every bounce is tinted again and coloured metals keep (and deepen) their hue.
+// directionalAlbedo: E_ss at the surface's NoV and roughness, F0 = 1 (the LUT's scale + bias).
+vec3 multipleScatteringCompensation(vec3 specularColor, float directionalAlbedo) {
+    return 1.0 + specularColor * (1.0 / max(directionalAlbedo, 1e-3) - 1.0);
+}
+
 // eq. 5: Schlick Fresnel with the spherical-Gaussian exponent. A specular colour under 2%
 // reflectance is treated as pre-baked shadowing (saturate(50 * F0.g)), as UE4 does.
 vec3 fresnelSchlickSg(vec3 specularColor, float VoH) {
@@ -57,13 +88,18 @@ vec3 fresnelSchlickPow5(vec3 specularColor, float VoH) {
     return saturate(50.0 * specularColor.g) * fc + (1.0 - fc) * specularColor;
 }
 
-// Seed 001: analytic environment BRDF (scale, bias) for mobile, replacing the eq. 8 LUT.
-vec3 envBrdfApprox(vec3 specularColor, float roughness, float NoV) {
+// Seed 001's fit of the environment BRDF's (scale, bias), replacing the eq. 8 LUT.
+vec2 envBrdfApproxScaleBias(float roughness, float NoV) {
     const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
     const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
     vec4 r = roughness * c0 + c1;
     float a004 = min(r.x * r.x, exp2(-9.28 * NoV)) * r.x + r.y;
-    vec2 ab = vec2(-1.04, 1.04) * a004 + r.zw;
+    return vec2(-1.04, 1.04) * a004 + r.zw;
+}
+
+// Seed 001: analytic environment BRDF for mobile, replacing the eq. 8 LUT.
+vec3 envBrdfApprox(vec3 specularColor, float roughness, float NoV) {
+    vec2 ab = envBrdfApproxScaleBias(roughness, NoV);
     // max(): toward roughness 1 and NoV 1 the fit's bias goes negative (seed 001:
     // EnvBRDFApprox(F0, 1, 1) = 0.4524 F0 - 0.0024), i.e. a negative reflectance for any F0
     // channel under 0.0053 (Specular 0, dark or saturated metals). Found by

@@ -133,6 +133,19 @@ float visibleNormalSampleWeight(float alpha, float NoV, float NoL) {
     return smithG1Schlick(alpha, NoV) * smithG1Schlick(alpha, NoL) / smithG1Ggx(alpha, NoV);
 }
 
+// The same weight with exact height-correlated Smith, G2 = 4 NoL NoV Vis: the energy-
+// conserving BRDF's visibility.
+float visibleNormalSampleWeightCorrelated(float alpha, float NoV, float NoL) {
+    return 4.0 * NoL * NoV * visibilitySmithGgxCorrelated(alpha, NoV, NoL) /
+           smithG1Ggx(alpha, NoV);
+}
+
+// The weight for the visibility term the variant shades with (visibilitySmith).
+float visibleNormalSampleWeightShaded(float alpha, float NoV, float NoL) {
+    if (kEnergyConserving) return visibleNormalSampleWeightCorrelated(alpha, NoV, NoL);
+    return visibleNormalSampleWeight(alpha, NoV, NoL);
+}
+
 // (scale, bias) of F0 in the integral of the specular BRDF over a white environment (eq. 8):
 // the same D, Vis (eq. 4) and pow5 Fresnel split, by sampling visible normals. The LUT
 // stores this over (NoV, roughness).
@@ -153,11 +166,97 @@ vec2 integrateEnvironmentBrdf(float roughness, float NoV, uint sampleCount) {
     return ab / float(sampleCount);
 }
 
+// integrateEnvironmentBrdf with exact height-correlated Smith visibility: the LUT's second
+// pair, for the energy-conserving BRDF. NoV down to 1e-7: near-mirrors' albedo still rises
+// between NoV = 1e-4 and 0 (to ~1: only facets facing a grazing view are visible, and they
+// reflect upward), and compensating by the value at 1e-4 gave them up to 1.8% more than the
+// light at NoV = 0. alpha floored at kMinRoughness^2 as for analytic lights, whose lobe this
+// E_ss compensates (below it fp32 visible-normal sampling at grazing views falls apart; the
+// albedo there is 1 within 1e-3 either way).
+vec2 integrateEnvironmentBrdfCorrelated(float roughness, float NoV, uint sampleCount) {
+    NoV = max(NoV, 1e-7);
+    vec3 V = vec3(sqrt(1.0 - NoV * NoV), 0.0, NoV);
+    float alpha = alphaFromRoughness(roughness);
+    vec2 ab = vec2(0.0);
+    for (uint i = 0u; i < sampleCount; ++i) {
+        vec3 H = importanceSampleGgxVisible(hammersley(i, sampleCount, vec2(0.0)), alpha, V);
+        float VoH = dot(V, H);
+        float NoL = 2.0 * VoH * H.z - V.z;
+        if (NoL <= 0.0 || VoH <= 0.0) continue;
+        float weight = visibleNormalSampleWeightCorrelated(alpha, NoV, NoL);
+        // VoH rounds to just over 1 at some texels, and pow() of a negative base is NaN (one
+        // texel of this pair came out 0 before the clamp).
+        float fc = pow(max(1.0 - VoH, 0.0), 5.0);
+        ab += vec2(1.0 - fc, fc) * weight;
+    }
+    return ab / float(sampleCount);
+}
+
+// The LUT's height-correlated pair (.ba) is laid out on its own grid: texel (x, y) holds
+// NoV = (x / (n - 1))^2 and roughness = y / (n - 1), so the first and last texels sit on
+// NoV = 0 and 1 and roughness 0 and 1, and sqrt spacing resolves the steep grazing end. At
+// texel centres NoV = (x + 0.5) / n (the .rg pair's grid) the directional albedo at
+// NoV < 0.004 was extrapolated flat, and compensating by it gave 2% to 11% more than the
+// light at grazing angles (tests/render/stability WhiteFurnace).
+vec2 correlatedLutTexelParameters(uvec2 texel, uint size) {
+    float u = float(texel.x) / float(size - 1u);
+    return vec2(u * u, float(texel.y) / float(size - 1u));  // (NoV, roughness)
+}
+
+vec2 correlatedLutCoordinates(float roughness, float NoV, vec2 size) {
+    vec2 grid = vec2(sqrt(saturate(NoV)), saturate(roughness));
+    return (grid * (size - 1.0) + 0.5) / size;
+}
+
+// The LUT's (scale, bias) for the variant's visibility term: .rg Schlick-Smith (eq. 4),
+// .ba height-correlated Smith.
+vec2 environmentBrdfScaleBias(sampler2D lut, float roughness, float NoV) {
+    if (kEnergyConserving) {
+        vec2 uv = correlatedLutCoordinates(roughness, NoV, vec2(textureSize(lut, 0)));
+        return textureLod(lut, uv, 0.0).ba;
+    }
+    return textureLod(lut, vec2(NoV, roughness), 0.0).rg;
+}
+
 // Split-sum specular reflectance (eq. 7's second factor) from the LUT, with the 2% rule of
 // eq. 5 on the bias as the direct lighting has it.
 vec3 environmentBrdfFromLut(sampler2D lut, vec3 specularColor, float roughness, float NoV) {
-    vec2 ab = textureLod(lut, vec2(NoV, roughness), 0.0).rg;
+    vec2 ab = environmentBrdfScaleBias(lut, roughness, NoV);
     return specularColor * ab.x + saturate(50.0 * specularColor.g) * ab.y;
+}
+
+// E_ss: directional albedo of the single-scattering specular lobe for F0 = 1 at (NoV,
+// roughness), what multipleScatteringCompensation needs for analytic lights: the LUT's
+// height-correlated scale + bias, one read per pixel (not per light), on the mobile path too:
+// seed 001's fit as E_ss is up to 26% low at NoV = 1 and 2.2x low at grazing angles for this
+// lobe, and compensating by it made surfaces reflect up to 2.2x the light (tests/render/
+// stability WhiteFurnace). 1 (no compensation) for the UE4 BRDF.
+float specularDirectionalAlbedo(sampler2D lut, float roughness, float NoV) {
+    if (!kEnergyConserving) return 1.0;
+    vec2 ab = environmentBrdfScaleBias(lut, roughness, NoV);
+    return ab.x + ab.y;
+}
+
+// The mobile path's analytic equivalent for image-based light: seed 001's fit of (scale,
+// bias) summed, the E_ss of the fit's own single scattering, so the fit's F_ss E_ss plus the
+// multiple scattering built on it reflect exactly 1 for a white metal in a white furnace.
+float envBrdfApproxDirectionalAlbedo(float roughness, float NoV) {
+    vec2 ab = envBrdfApproxScaleBias(roughness, NoV);
+    return ab.x + ab.y;
+}
+
+// Fdez-Aguera 2019: what an environment adds through multiple scattering, per unit of the
+// cosine-weighted mean radiance (irradiance / pi). singleScattering: the split sum's
+// F_ss E_ss (F0 A + B); E_ss: its white value (A + B). The 1 - E_ss the first bounce misses
+// leaves tinted by the average Fresnel F_avg at each further bounce (a geometric series), and
+// leaves nearly diffusely, hence the irradiance rather than the prefiltered lobe. A white
+// metal gets E_ss + (1 - E_ss) = 1 in a uniform sky.
+vec3 multipleScatteringEnvironmentBrdf(vec3 singleScattering, vec3 specularColor,
+                                       float directionalAlbedo) {
+    float Ems = 1.0 - saturate(directionalAlbedo);
+    vec3 Favg = specularColor + (1.0 - specularColor) * (1.0 / 21.0);
+    vec3 Fms = singleScattering * Favg / (1.0 - Ems * Favg);
+    return Fms * Ems;
 }
 
 // Seed 001's mobile path: the analytic fit, and its cheaper non-metal form when the material

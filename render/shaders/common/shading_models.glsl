@@ -27,9 +27,13 @@ struct Surface {
     float specular;    // UE4 "Specular", 0.5 -> F0 0.04
     uint shadingModel;
     vec4 customData;   // Subsurface: colour + opacity; Legacy: SpecularColor
+    // E_ss of the specular lobe at this view (specularDirectionalAlbedo), read by the energy-
+    // conserving BRDF's multiple-scattering compensation; 1 leaves the lobe as it is.
+    float directionalAlbedo;
 };
 
-// Cook-Torrance specular (eq. 2) for the representative direction of the incidence.
+// Cook-Torrance specular (eq. 2) for the representative direction of the incidence: single
+// scattering, with the variant's visibility term (visibilitySmith).
 vec3 specularGgx(vec3 specularColor, float roughness, vec3 N, vec3 V, LightIncidence inc) {
     float alpha = alphaFromRoughness(roughness);
     vec3 H = safeNormalize(V + inc.specularL);
@@ -38,15 +42,25 @@ vec3 specularGgx(vec3 specularColor, float roughness, vec3 N, vec3 V, LightIncid
     float NoH = saturate(dot(N, H));
     float VoH = saturate(dot(V, H));
     float d = distributionGgx(alpha * alpha, NoH);
-    float vis = visibilitySmithSchlick(alpha, NoV, NoL);
+    float vis = visibilitySmith(alpha, NoV, NoL);
     return d * vis * fresnelSchlickSg(specularColor, VoH) * inc.specularIlluminance;
+}
+
+// specularGgx plus, for the energy-conserving BRDF, the energy of the further bounces
+// (multipleScatteringCompensation): every light shape goes through here.
+vec3 specularLobe(Surface s, vec3 specularColor, vec3 N, vec3 V, LightIncidence inc) {
+    vec3 specular = specularGgx(specularColor, s.roughness, N, V, inc);
+    if (kEnergyConserving) {
+        specular *= multipleScatteringCompensation(specularColor, s.directionalAlbedo);
+    }
+    return specular;
 }
 
 vec3 shadeDefaultLit(Surface s, vec3 N, vec3 V, LightIncidence inc) {
     vec3 diffuseColor = s.baseColor * (1.0 - s.metallic);
     vec3 specularColor = mix(vec3(0.08 * s.specular), s.baseColor, s.metallic);
     return diffuseLambert(diffuseColor) * inc.diffuseIlluminance +
-           specularGgx(specularColor, s.roughness, N, V, inc);
+           specularLobe(s, specularColor, N, V, inc);
 }
 
 // Thin translucent matter: DefaultLit on the lit side plus light that passes through.
@@ -74,7 +88,7 @@ vec3 shadeLegacyDiffuseSpecular(Surface s, vec3 N, vec3 V, LightIncidence inc) {
         return diffuseLambert(diffuseColor + specularColor * 0.45) * inc.diffuseIlluminance;
     }
     return diffuseLambert(diffuseColor) * inc.diffuseIlluminance +
-           specularGgx(specularColor, s.roughness, N, V, inc);
+           specularLobe(s, specularColor, N, V, inc);
 }
 
 // What a shading model reflects of an environment: the same colours its direct lighting uses,

@@ -11,9 +11,9 @@
 namespace candela::render {
 
 EnvironmentBrdfLut::EnvironmentBrdfLut(GpuContext& context)
-    : image_(context, {VK_FORMAT_R16G16_UNORM, kSize, kSize, 1, false,
+    : image_(context, {VK_FORMAT_R16G16B16A16_UNORM, kSize, kSize, 1, false,
                        VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
-      texels_(context, VkDeviceSize(kSize) * kSize * 4,
+      texels_(context, VkDeviceSize(kSize) * kSize * 8,
               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
               MemoryLocation::HostVisible),
       sampler_(std::make_unique<Sampler>(context, SamplerDesc{VK_FILTER_LINEAR, false})) {

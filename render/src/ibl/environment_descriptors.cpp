@@ -14,7 +14,7 @@ constexpr VkImageLayout kRead = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 EnvironmentPlaceholders::EnvironmentPlaceholders(GpuContext& context)
     : cube_(context, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1, true,
                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
-      lut_(context, {VK_FORMAT_R16G16_UNORM, 1, 1, 1, false,
+      lut_(context, {VK_FORMAT_R16G16B16A16_UNORM, 1, 1, 1, false,
                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
       buffer_(context, 9 * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryLocation::Device),
       sampler_(std::make_unique<Sampler>(context, SamplerDesc{})) {
@@ -48,10 +48,10 @@ EnvironmentDescriptors EnvironmentPlaceholders::describe(const Environment* envi
     d.brdfLut = {sampler_->handle(), lut_.view(), kRead};
     d.irradianceSh = {buffer_.handle(), 0, VK_WHOLE_SIZE};
     d.samplingTable = d.irradianceSh;
+    if (lut) d.brdfLut = {lut->sampler(), lut->image().view(), kRead};
     if (environment && lut) {
         d.environment = {environment->sampler(), environment->cube().view(), kRead};
         d.prefiltered = {environment->sampler(), environment->prefiltered().view(), kRead};
-        d.brdfLut = {lut->sampler(), lut->image().view(), kRead};
         d.irradianceSh = {environment->irradianceSh().handle(), 0, VK_WHOLE_SIZE};
         d.prefilteredMipCount = float(environment->prefiltered().desc().mipLevels);
     }

@@ -19,7 +19,7 @@ class Sampler;
 struct EnvironmentDescriptors {
     VkDescriptorImageInfo environment;     // cube with mips (background, reference mode)
     VkDescriptorImageInfo prefiltered;     // roughness per mip
-    VkDescriptorImageInfo brdfLut;         // eq. 8, R16G16
+    VkDescriptorImageInfo brdfLut;         // eq. 8, R16G16B16A16
     VkDescriptorBufferInfo irradianceSh;   // 9 vec4
     VkDescriptorBufferInfo samplingTable;  // the reference mode's luminance CDF
     float prefilteredMipCount = 1.0f;
@@ -32,8 +32,8 @@ public:
     EnvironmentPlaceholders(const EnvironmentPlaceholders&) = delete;
     EnvironmentPlaceholders& operator=(const EnvironmentPlaceholders&) = delete;
 
-    // The environment's descriptors where given (all of environment and lut, or neither);
-    // placeholders for the rest.
+    // The environment's descriptors where given, the LUT's where given (the energy-conserving
+    // BRDF reads it without a sky too); placeholders for the rest.
     EnvironmentDescriptors describe(const Environment* environment, const EnvironmentBrdfLut* lut,
                                     const GpuBuffer* samplingTable) const;
 

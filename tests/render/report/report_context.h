@@ -31,5 +31,6 @@ void addAreaLightRows(ReportContext& context);
 void addFalloffRow(ReportContext& context);
 void addSplitSumRow(ReportContext& context);
 void addClusteredRow(ReportContext& context);
+void addBrdfEnergyRows(ReportContext& context);
 
 }  // namespace candela::report

@@ -22,13 +22,14 @@ using namespace candela::report;
 
 namespace {
 
-// The LUT as the renderer computes it, unpacked from R16G16 UNORM to (scale, bias).
+// The LUT as the renderer computes it, its Schlick-Smith pair (eq. 4, the UE4 BRDF) unpacked
+// from 16-bit UNORM to (scale, bias).
 std::vector<float> environmentBrdfLut(render::GpuContext& context) {
     render::EnvironmentBrdfLut lut(context);
     const uint32_t n = render::EnvironmentBrdfLut::kSize;
     std::vector<float> values(size_t(n) * n * 2);
     for (size_t i = 0; i < size_t(n) * n; ++i) {
-        const uint32_t packed = lut.packedTexels()[i];
+        const uint32_t packed = lut.packedSchlick(uint32_t(i));
         values[2 * i] = float((packed & 0xFFFFu) / 65535.0);
         values[2 * i + 1] = float((packed >> 16) / 65535.0);
     }
@@ -76,6 +77,7 @@ int main(int argc, char** argv) {
         section("falloff", [&] { addFalloffRow(context); });
         section("image-based lighting", [&] { addSplitSumRow(context); });
         section("clustered lights", [&] { addClusteredRow(context); });
+        section("energy-conserving BRDF", [&] { addBrdfEnergyRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());

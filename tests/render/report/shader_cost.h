@@ -27,6 +27,8 @@ enum class CostFunction : uint32_t {
     SphereMonteCarlo = 11,
     TubeRepresentative = 12,
     TubeMonteCarlo = 13,
+    VisSmithGgxFast = 14,
+    MultipleScattering = 15,
 };
 
 struct CostJob {

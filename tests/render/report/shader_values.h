@@ -19,6 +19,7 @@ enum class ValueFunction : uint32_t {
     Falloff = 4,
     Ggx = 5,
     AreaLight = 6,
+    VisibilityFast = 7,
 };
 
 struct ValueSample {

@@ -56,8 +56,13 @@ struct SceneEntity {
     std::string gameDataJson;
 };
 
+// The specular BRDF a scene asks for (top-level "brdf": "ue4" or "energy-conserving"); the
+// command line's --brdf overrides it. Mirrors render::BrdfModel (content does not see render).
+enum class SceneBrdf { Ue4, EnergyConserving };
+
 struct SceneDocument {
     std::vector<SceneEntity> entities;
+    std::optional<SceneBrdf> brdf;  // unset: the engine's default (energy-conserving)
 };
 
 // Where an asset path stored in a scene file points: relative paths are relative to the

@@ -26,6 +26,16 @@ enum class IblMode {
 };
 const char* iblModeName(IblMode mode);  // "split_sum", "mobile", "reference"
 
+// The specular BRDF (`--brdf`, the scene file's "brdf"; render/README.md "BRDF").
+enum class BrdfModel {
+    // Seed 000 exactly: GGX, Schlick-Smith visibility (k = alpha / 2), single scattering.
+    Ue4,
+    // GGX with height-correlated Smith visibility and multiple-scattering energy compensation
+    // (rough metals keep their energy): the default.
+    EnergyConserving,
+};
+const char* brdfModelName(BrdfModel model);  // "ue4", "energy-conserving"
+
 struct RendererOptions {
     LightCulling lightCulling = LightCulling::Clustered;
     LightAssignmentDevice lightAssignment = LightAssignmentDevice::Auto;
@@ -40,6 +50,7 @@ struct RendererOptions {
     // --stats turns it on).
     bool countLightPairs = false;
     IblMode ibl = IblMode::SplitSum;
+    BrdfModel brdf = BrdfModel::EnergyConserving;
     uint32_t referenceSamples = 2048;  // per pixel, for each of specular and diffuse
 };
 

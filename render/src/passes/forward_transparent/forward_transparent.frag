@@ -90,6 +90,8 @@ void main() {
         vec3 V = safeNormalize(camera.cameraPosition.xyz - P);
         vec3 R = reflect(-V, N);
         float alpha = alphaFromRoughness(s.roughness);
+        surface.directionalAlbedo =
+            specularDirectionalAlbedo(environmentBrdfLut, s.roughness, saturate(dot(N, V)));
 
         if (kIblMode != 0u) {
             vec4 sh[9] = irradianceSh;

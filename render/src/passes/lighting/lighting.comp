@@ -220,7 +220,7 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
             }
             specular += textureLod(environmentCube, Lw, 0.0).rgb *
                         fresnelSchlickSg(t.specularColor, VoH) *
-                        (visibleNormalSampleWeight(alpha, NoV, L.z) * misWeight);
+                        (visibleNormalSampleWeightShaded(alpha, NoV, L.z) * misWeight);
         }
         // BRDF sample of the diffuse (and transmitted) lobe; pdf = cos / pi.
         vec3 C = frame * cosineSampleHemisphere(xi);
@@ -246,7 +246,7 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
                 float D = stableGgx(a2, transpose(frame) * He);
                 float brdfPdf = D * smithG1Ggx(alpha, NoV) / (4.0 * NoV);
                 specular += radiance * fresnelSchlickSg(t.specularColor, VoHe) *
-                            (D * visibilitySmithSchlick(alpha, NoV, NoL) * NoL /
+                            (D * visibilitySmith(alpha, NoV, NoL) * NoL /
                              (brdfPdf + environmentPdfE));
             }
         } else if (transmits && NoL < 0.0) {
@@ -254,7 +254,17 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
             transmitted += radiance * (-NoL / PI) / (lambertPdf + environmentPdfE);
         }
     }
-    return (specular + diffuse * t.diffuseColor + transmitted * t.transmittedColor) / float(n);
+    vec3 ambient = specular + diffuse * t.diffuseColor + transmitted * t.transmittedColor;
+    if (kEnergyConserving) {
+        // Multiple scattering as the split sum models it (Fdez-Aguera 2019), on the integrated
+        // single scattering of the LUT and this pixel's own cosine-weighted sky (diffuse / n).
+        vec3 singleScattering = environmentBrdfFromLut(environmentBrdfLut, t.specularColor,
+                                                       px.surface.roughness, NoV);
+        ambient += multipleScatteringEnvironmentBrdf(singleScattering, t.specularColor,
+                                                     px.surface.directionalAlbedo) *
+                   diffuse;
+    }
+    return ambient / float(n);
 }
 
 // Ambient light of the environment on the pixel's surface (cd/m^2 before sky intensity).
@@ -288,6 +298,8 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
     px.V = safeNormalize(camera.cameraPosition.xyz - px.P);
     px.R = reflect(-px.V, px.N);
     px.alpha = alphaFromRoughness(px.surface.roughness);
+    px.surface.directionalAlbedo = specularDirectionalAlbedo(
+        environmentBrdfLut, px.surface.roughness, saturate(dot(px.N, px.V)));
 
     if (kIblMode != kIblNone) {
         float occlusion = texelFetch(gbufferBaseColor, pixel, 0).a;

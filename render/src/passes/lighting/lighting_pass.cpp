@@ -48,6 +48,7 @@ std::vector<std::string> LightingFeatures::names() const {
     out.push_back(clustered ? "light_culling_clustered" : "light_culling_brute_force");
     if (countLightPairs) out.push_back("light_pair_counters");
     if (ibl) out.push_back(std::string("ibl_") + iblModeName(*ibl));
+    out.push_back(brdf == BrdfModel::Ue4 ? "brdf_ue4" : "brdf_energy_conserving");
     return out;
 }
 
@@ -63,6 +64,7 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
         }
     }
     constants.set(SPEC_CLUSTERED, features.clustered);
+    constants.set(SPEC_ENERGY_CONSERVING, features.brdf == BrdfModel::EnergyConserving);
 }
 
 LightingPass::LightingPass(GpuContext& context)

@@ -32,6 +32,7 @@ struct LightingFeatures {
     bool clustered = true;
     bool countLightPairs = false;
     std::optional<IblMode> ibl;  // none without an environment
+    BrdfModel brdf = BrdfModel::EnergyConserving;
 
     static constexpr uint32_t bit(content::LightType type) {
         return 1u << content::lightTypeIndex(type);

@@ -49,13 +49,16 @@ struct ApplicationOptions {
     // component; a file that cannot be used gives a message and a neutral sky.
     std::optional<std::filesystem::path> environment;
     render::IblMode ibl = render::IblMode::SplitSum;
+    // --brdf; unset: the world's scene-file "brdf", else energy-conserving.
+    std::optional<render::BrdfModel> brdf;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
 
     // The standard flags every game gets (see standardFlagsUsage()): --headless, --frames N,
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
-    // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl.
+    // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
+    // --brdf.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

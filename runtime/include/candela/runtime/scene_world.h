@@ -3,12 +3,14 @@
 // what makes a bare model viewable (a camera framing it, lights when it has none).
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "candela/content/asset_cache.h"
 #include "candela/content/diagnostics.h"
 #include "candela/content/model.h"
+#include "candela/content/scene_file.h"
 #include "candela/ecs/registry.h"
 #include "candela/ecs/transform.h"
 
@@ -45,6 +47,8 @@ public:
     // Where an asset path stored in a component (a Sky's file) points: relative to the last
     // scene file loaded, else as it is.
     std::filesystem::path resolveAssetPath(const std::string& stored) const;
+    // The BRDF the last scene file loaded asks for ("brdf"), if it names one.
+    std::optional<content::SceneBrdf> sceneBrdf() const { return sceneBrdf_; }
 
     // Keeps a model alive for the lifetime of the world and returns it.
     const content::Model& adoptModel(std::unique_ptr<content::Model> model);
@@ -75,6 +79,7 @@ private:
     std::vector<std::unique_ptr<content::Model>> models_;
     content::AssetCache cache_;
     std::filesystem::path sceneFile_;
+    std::optional<content::SceneBrdf> sceneBrdf_;
 };
 
 }  // namespace candela::runtime

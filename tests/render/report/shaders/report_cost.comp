@@ -26,6 +26,8 @@ const uint kSphereRepresentative = 10u;
 const uint kSphereMonteCarlo = 11u;
 const uint kTubeRepresentative = 12u;
 const uint kTubeMonteCarlo = 13u;
+const uint kVisSmithGgxFast = 14u;
+const uint kMultipleScattering = 15u;
 
 layout(std430, binding = 0) writeonly buffer Sums {
     float sums[];
@@ -114,6 +116,12 @@ void main() {
             break;
         case kTubeMonteCarlo:
             TIMED_LOOP(tubeSpecularMonteCarlo(TUBE_LIGHT, AREA_VIEW, 0.1 + 0.9 * y, samples, i));
+            break;
+        case kVisSmithGgxFast:
+            TIMED_LOOP(visibilitySmithGgxCorrelatedFast(y * y + 4e-4, x, z));
+            break;
+        case kMultipleScattering:
+            TIMED_LOOP(multipleScatteringCompensation(vec3(z), 0.3 + 0.7 * y).x);
             break;
         default: break;
     }

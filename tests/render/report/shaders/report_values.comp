@@ -20,6 +20,7 @@ const uint kGgx = 5u;               // a.x a2, a.y NoH -> (D)
 // a.xyz light position, a.w sourceRadius, b.xyz V, b.w sourceLength, c.x roughness, c.yzw
 // tube axis -> (representative-point specular)
 const uint kAreaLight = 6u;
+const uint kVisibilityFast = 7u;    // a.x alpha, a.y NoV, a.z NoL -> (Hammon's fast form, exact)
 
 struct Sample {
     vec4 a;
@@ -68,6 +69,9 @@ vec2 evaluate(Sample s) {
             light.spotOffset = 0.0;
             return vec2(representativePointSpecular(light, s.b.xyz, s.c.x), 0.0);
         }
+        case kVisibilityFast:
+            return vec2(visibilitySmithGgxCorrelatedFast(s.a.x, s.a.y, s.a.z),
+                        visibilitySmithGgxCorrelated(s.a.x, s.a.y, s.a.z));
         default: return vec2(0.0);
     }
 }

@@ -94,6 +94,10 @@ void main() {
             s.specular = mat.specular;
             s.shadingModel = mat.shadingModel;
             s.customData = mat.customData;
+            // A plausible E_ss (seed 001's fit; the lighting pass reads the LUT), so the
+            // energy-conserving BRDF's compensation is exercised over the whole grid.
+            vec2 albedoTerms = envBrdfApproxScaleBias(roughness, NoV);
+            s.directionalAlbedo = albedoTerms.x + albedoTerms.y;
             vec3 specularColor = mix(vec3(0.08 * s.specular), s.baseColor, s.metallic);
 
             tally(t[kCheckAlpha], alpha, kMinAlpha, 1.0, caseIndex);

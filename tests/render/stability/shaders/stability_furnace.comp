@@ -5,7 +5,11 @@
 // come from a fixed Hammersley set through visible-normal sampling (Heitz 2018) with a GGX
 // density written here, not the shared D, so the shared D is what gets integrated; the
 // estimator stays bounded even at NoV = 0. The same cell also integrates the projected NDF
-// integral of D * NoH over the hemisphere, which must be exactly 1.
+// integral of D * NoH over the hemisphere, which must be exactly 1. For the energy-conserving
+// BRDF it also integrates the lobe with height-correlated Smith for a set of F0 and scales it
+// by multipleScatteringCompensation, with E_ss from the engine's LUT (given per cell by the
+// host) and from seed 001's fit (the mobile path): what a surface reflects of a white
+// furnace, which must not exceed 1.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/brdf.glsl"
@@ -14,12 +18,18 @@
 layout(local_size_x = 64) in;
 
 layout(std430, binding = 1) readonly buffer Axes {
-    float axisValues[];  // roughness values, then NoV values
+    float axisValues[];  // roughness values, then NoV values, then E_ss from the LUT per cell
 };
 // Per cell: albedo with visibilitySmithSchlick, with visibilitySmithGgxCorrelated,
 // integral of D * NoH, and the alpha used.
 layout(std430, binding = 2) writeonly buffer Cells {
     vec4 cells[];
+};
+// Per cell and F0 of kF0: compensated albedo with E_ss from the LUT, then from the fit.
+const uint kF0Count = 6u;
+const float kF0[kF0Count] = float[](0.01, 0.02, 0.04, 0.25, 0.5, 1.0);
+layout(std430, binding = 3) writeonly buffer Compensated {
+    vec2 compensated[];
 };
 
 layout(push_constant) uniform Grid {
@@ -32,6 +42,7 @@ layout(push_constant) uniform Grid {
 const uint kCheckFurnaceSample = 0u;  // every per-sample integrand: finite and >= 0
 
 shared vec3 partialSums[64];
+shared float partialLobes[kF0Count][64];
 
 float radicalInverseBase2(uint i) {
     return float(bitfieldReverse(i)) * 2.3283064365386963e-10;  // / 2^32
@@ -87,6 +98,8 @@ void main() {
 
     Tally t = newTally();
     vec3 sums = vec3(0.0);
+    float lobes[kF0Count];
+    for (uint k = 0u; k < kF0Count; ++k) lobes[k] = 0.0;
     for (uint i = lane; i < sampleCount; i += 64u) {
         // Visible-normal sampling (Heitz 2018): stretch V, sample the projected hemisphere
         // disk, unstretch. Density of L: G1(V) D(H) / (4 NoV).
@@ -118,6 +131,11 @@ void main() {
                 contributionSchlick = dTimesFNoL * visibilitySmithSchlick(alpha, NoV, NoL) / pdfL;
                 contributionCorrelated =
                     dTimesFNoL * visibilitySmithGgxCorrelated(alpha, NoV, NoL) / pdfL;
+                float lobe = distributionGgx(a2, NoH) * NoL *
+                             visibilitySmithGgxCorrelated(alpha, NoV, NoL) / pdfL;
+                for (uint k = 0u; k < kF0Count; ++k) {
+                    lobes[k] += lobe * fresnelSchlickSg(vec3(kF0[k]), VoH).x;
+                }
             }
         }
         uint caseIndex = cell * sampleCount + i;
@@ -133,13 +151,28 @@ void main() {
     flushTally(kCheckFurnaceSample, t);
 
     partialSums[lane] = sums;
+    for (uint k = 0u; k < kF0Count; ++k) partialLobes[k][lane] = lobes[k];
     barrier();
     for (uint width = 32u; width > 0u; width /= 2u) {
-        if (lane < width) partialSums[lane] += partialSums[lane + width];
+        if (lane < width) {
+            partialSums[lane] += partialSums[lane + width];
+            for (uint k = 0u; k < kF0Count; ++k) {
+                partialLobes[k][lane] += partialLobes[k][lane + width];
+            }
+        }
         barrier();
     }
     if (lane == 0u) {
         vec3 total = partialSums[0];
         cells[cell] = vec4(total.xy / float(sampleCount), total.z, alpha);
+        float albedoLut = axisValues[roughnessCount + viewCount + cell];
+        vec2 fit = envBrdfApproxScaleBias(roughness, NoV);
+        for (uint k = 0u; k < kF0Count; ++k) {
+            float single = partialLobes[k][0] / float(sampleCount);
+            vec3 f0 = vec3(kF0[k]);
+            compensated[cell * kF0Count + k] =
+                single * vec2(multipleScatteringCompensation(f0, albedoLut).x,
+                              multipleScatteringCompensation(f0, fit.x + fit.y).x);
+        }
     }
 }

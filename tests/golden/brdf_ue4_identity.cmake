@@ -1,0 +1,58 @@
+# `--brdf ue4` reproduces seed 000 exactly: renders every golden whose seed-000 captures are
+# recorded in HASHES (SHA-256 of the expected .exr and .png before the energy-conserving BRDF
+# became the default) with `--brdf ue4` and requires byte-identical files. A golden added later
+# (no recorded hash) is skipped with a note.
+#
+#   cmake -DBUILD_DIR=<build> -DHASHES=brdf_ue4_seed000.sha256 -DOUT=<dir> -P brdf_ue4_identity.cmake
+cmake_minimum_required(VERSION 3.25)
+file(STRINGS "${HASHES}" lines)
+foreach(line IN LISTS lines)
+  if(line MATCHES "^([0-9a-f]+)  (.+)$")
+    set("recorded_${CMAKE_MATCH_2}" "${CMAKE_MATCH_1}")
+  endif()
+endforeach()
+if(NOT DEFINED ENV{CANDELA_VALIDATION})
+  set(ENV{CANDELA_VALIDATION} require)
+endif()
+file(GLOB configs "${BUILD_DIR}/golden/*/golden.cmake")
+set(failures "")
+set(checked 0)
+foreach(config IN LISTS configs)
+  include("${config}")
+  if(NOT DEFINED "recorded_${GOLDEN_NAME}.exr")
+    message(STATUS "${GOLDEN_NAME}: no seed-000 hash recorded, skipped")
+    continue()
+  endif()
+  set(exr "${OUT}/${GOLDEN_NAME}.exr")
+  set(png "${OUT}/${GOLDEN_NAME}.png")
+  file(REMOVE "${exr}" "${png}")
+  file(MAKE_DIRECTORY "${OUT}")
+  execute_process(
+    COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
+            --frames "${GOLDEN_FRAMES}" --brdf ue4 --capture "${exr}" --capture "${png}"
+    RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  if(NOT result EQUAL 0)
+    message("${output}")
+    list(APPEND failures "${GOLDEN_NAME} (engine exit ${result})")
+    continue()
+  endif()
+  foreach(capture "${exr}" "${png}")
+    cmake_path(GET capture FILENAME file)
+    file(SHA256 "${capture}" actual)
+    if(actual STREQUAL "${recorded_${file}}")
+      message(STATUS "${file}: byte-identical to seed 000's golden")
+    else()
+      list(APPEND failures "${file} (sha256 ${actual}, seed 000 ${recorded_${file}})")
+    endif()
+  endforeach()
+  math(EXPR checked "${checked} + 1")
+endforeach()
+if(checked EQUAL 0)
+  message(FATAL_ERROR "no golden was checked: build the tree first (golden configs in "
+                      "${BUILD_DIR}/golden/)")
+endif()
+if(failures)
+  string(REPLACE ";" "\n  " list "${failures}")
+  message(FATAL_ERROR "--brdf ue4 differs from seed 000:\n  ${list}")
+endif()
+message(STATUS "--brdf ue4: ${checked} goldens byte-identical to seed 000")
