@@ -211,11 +211,11 @@ TEST_F(EditorSession, AnOpenedSceneReplacesTheWorldAsCandelaRunShowsIt) {
         fs::path(CANDELA_SOURCE_DIR) / "tests/scenes/ibl_spheres_garden.scene.json";
     const fs::path editorExr = dir / "editor.exr";
     std::string errors;
-    ASSERT_EQ(runEditor(kScene,
-                        "open " + garden.string() + "\nscreenshot " + editorExr.string() +
-                            "\nquit\n",
-                        errors),
-              0)
+    ASSERT_EQ(
+        runEditor(kScene,
+                  "open " + garden.string() + "\nscreenshot " + editorExr.string() + "\nquit\n",
+                  errors),
+        0)
         << errors;
     std::optional<content::ExrImage> editor;
     const double worst = differenceFromCandelaRun(garden, editorExr, editor);
