@@ -358,16 +358,18 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
     session = &s;
     struct EndOfSession {  // session points at `s` only while it exists
         Impl& impl;
+        Session& s;
         ~EndOfSession() {
             impl.session = nullptr;
-            if (impl.worldPending) {  // handed over during the last frame: take it now
+            if (impl.worldPending) {   // handed over during the last frame: take it now
+                s.lightTable.reset();  // unhooks from the old registry before it goes
                 impl.worldPending = false;
                 impl.scheduler.reset();
                 impl.world = std::move(impl.pendingWorld);
                 impl.schedulerStale = true;
             }
         }
-    } endOfSession{*this};
+    } endOfSession{*this, s};
     s.sky = SkyLoader(options.environment);
     std::string frameGraphDot;
     for (const FrameCapture& c : options.captures) {
