@@ -288,8 +288,6 @@ namespace {
 
 Use graphUse(TargetUse use) {
     switch (use) {
-        case TargetUse::Sampled:
-            return Use::Sampled;
         case TargetUse::StorageRead:
             return Use::StorageRead;
         case TargetUse::StorageWrite:
@@ -300,15 +298,13 @@ Use graphUse(TargetUse use) {
             return Use::ColorAttachment;
         case TargetUse::TransferSrc:
             return Use::TransferSrc;
-        case TargetUse::TransferDst:
-            return Use::TransferDst;
     }
-    return Use::Sampled;
+    return Use::StorageRead;
 }
 
-// Sampling may happen in a draw's fragment shader or a compute shader; storage is compute.
-VkPipelineStageFlags2 graphStages(TargetUse use) {
-    return use == TargetUse::Sampled ? (kFragmentStage | kComputeStage) : kComputeStage;
+// Storage uses happen in compute shaders; the other uses ignore the stages.
+VkPipelineStageFlags2 graphStages(TargetUse) {
+    return kComputeStage;
 }
 
 }  // namespace

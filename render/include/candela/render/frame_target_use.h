@@ -11,14 +11,14 @@ enum class FrameTarget : std::uint8_t {
     Ldr,  // RGBA8 tonemapped, sRGB-encoded values (what the window shows, PNG captures)
 };
 
+// What both targets are created for (storage, colour attachment, transfer source); sampling
+// either or copying into it would need usage flags they do not have.
 enum class TargetUse : std::uint8_t {
-    Sampled,           // read through a sampler (fragment or compute shader)
-    StorageRead,       // storage image read in a compute shader
+    StorageRead,       // storage image read in a compute shader (imageLoad)
     StorageWrite,      // storage image written in a compute shader (previous contents discarded)
     StorageReadWrite,  // read and written in a compute shader
     ColorAttachment,   // drawn onto (loaded, blended, stored)
     TransferSrc,       // copied from
-    TransferDst,       // copied or cleared into
 };
 
 struct TargetAccess {
