@@ -1,5 +1,6 @@
 # Preprocesses each header a game may include, alone, with the engine's include flags, and fails
-# if Vulkan's vulkan_core.h is pulled in. Run by ctest (runtime.game_headers_without_vulkan):
+# if Vulkan's vulkan_core.h (or GLM, the renderer's math library) is pulled in. Run by ctest
+# (runtime.game_headers_without_vulkan):
 #   cmake -DCOMPILER=... -DINCLUDES="dir|dir|..." -DSOURCE_DIR=... -P check_game_headers.cmake
 # The headers are every header under runtime/include, ecs/include and content/include except
 # the engine-side ones below, which tools built into the engine (the `candela` executable, the
@@ -36,10 +37,12 @@ foreach(header IN LISTS headers)
     list(APPEND failed "${header}: does not preprocess alone: ${err}")
   elseif(out MATCHES "vulkan_core\\.h")
     list(APPEND failed "${header}: includes vulkan_core.h")
+  elseif(out MATCHES "/glm/")
+    list(APPEND failed "${header}: includes GLM (render math, games use ecs/transform_math.h)")
   endif()
 endforeach()
 if(failed)
   list(JOIN failed "\n  " text)
-  message(FATAL_ERROR "game headers that need Vulkan (or do not stand alone):\n  ${text}")
+  message(FATAL_ERROR "game headers that need Vulkan or GLM (or do not stand alone):\n  ${text}")
 endif()
-message(STATUS "${count} game headers preprocess without vulkan_core.h")
+message(STATUS "${count} game headers preprocess without vulkan_core.h and GLM")
