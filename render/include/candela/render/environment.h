@@ -33,7 +33,6 @@ struct EnvironmentCacheOptions {
 // folder under the system temp directory.
 std::filesystem::path defaultEnvironmentCacheDirectory();
 
-
 class Environment {
 public:
     // Radiance of the neutral sky used when a file cannot be loaded, in cd/m^2 (an overcast
