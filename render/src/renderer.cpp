@@ -293,8 +293,38 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     return h.hdr.version;
 }
 
+namespace {
+
+Use graphUse(TargetUse use) {
+    switch (use) {
+        case TargetUse::StorageRead:
+            return Use::StorageRead;
+        case TargetUse::StorageWrite:
+            return Use::StorageWrite;
+        case TargetUse::StorageReadWrite:
+            return Use::StorageReadWrite;
+        case TargetUse::ColorAttachment:
+            return Use::ColorAttachment;
+        case TargetUse::TransferSrc:
+            return Use::TransferSrc;
+    }
+    return Use::StorageRead;
+}
+
+// Storage uses happen in compute shaders; the other uses ignore the stages.
+VkPipelineStageFlags2 graphStages(TargetUse) {
+    return kComputeStage;
+}
+
+}  // namespace
+
+VkImageLayout Renderer::targetLayout(TargetUse use) {
+    return useInfo(graphUse(use), graphStages(use)).layout;
+}
+
 VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInputs& inputs,
-                                      SceneResources* resources) {
+                                      SceneResources* resources,
+                                      std::span<const ExtraPass> extraPasses) {
     VkCommandBuffer cmd = submitter.begin();
     const CpuClock::time_point start = CpuClock::now();
     FrameGraph& g = *graph_;
@@ -336,6 +366,20 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
                 });
             p.read(text, Use::StorageRead);
             p.write(ldr, Use::StorageReadWrite);  // draws over the tonemapped pixels
+        }
+    }
+    for (const ExtraPass& extra : extraPasses) {
+        auto p = g.addPass(extra.name, PassKind::Device,
+                           [record = extra.record](PassContext& ctx) { record(ctx.cmd()); });
+        p.sideEffect();  // asked for by the caller: kept even when it only reads
+        for (const TargetAccess& access : extra.uses) {
+            ResourceHandle& target = access.target == FrameTarget::Hdr ? hdr : ldr;
+            const Use use = graphUse(access.use);
+            if (useInfo(use, graphStages(access.use)).writes) {
+                target = p.write(target, use, graphStages(access.use));
+            } else {
+                p.read(target, use, graphStages(access.use));
+            }
         }
     }
     const double recordMs = millisecondsSince(start);

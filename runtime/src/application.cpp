@@ -2,23 +2,30 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <map>
+#include <mutex>
 
 #include "candela/content/atomic_file_write.h"
+#include "candela/ecs/transform_system.h"
 #include "candela/render/frame_capture.h"
+#include "candela/render/frame_inputs.h"
 #include "candela/render/frame_submitter.h"
+#include "candela/render/gpu_context.h"
 #include "candela/render/renderer.h"
 #include "candela/render/scene_resources.h"
 #include "candela/render/swapchain.h"
 #include "candela/runtime/exit_code.h"
 #include "candela/runtime/frame_extraction.h"
+#include "candela/runtime/layer_pass_context.h"
 #include "candela/runtime/light_table.h"
 #include "candela/runtime/sky_loader.h"
 #include "candela/runtime/window.h"
+#include "window_surface.h"
 
 namespace candela::runtime {
 
@@ -72,13 +79,29 @@ render::ValidationMode validationModeFromEnvironment() {
     return render::ValidationMode::IfPresent;
 }
 
-struct Application::Session {
+const render::GpuImage& LayerPassContext::image(render::FrameTarget target) const {
+    return target == render::FrameTarget::Hdr ? renderer_.hdrTarget() : renderer_.ldrTarget();
+}
+
+std::uint32_t LayerPassContext::width() const {
+    return renderer_.width();
+}
+
+std::uint32_t LayerPassContext::height() const {
+    return renderer_.height();
+}
+
+namespace {
+
+// What exists only while run() runs: the device, the renderer and what they hold.
+struct Session {
     std::unique_ptr<render::GpuContext> context;
     std::unique_ptr<render::Renderer> renderer;
     std::unique_ptr<render::FrameSubmitter> submitter;
     std::unique_ptr<render::SceneResources> resources;
     std::unique_ptr<LightTable> lightTable;
     std::unique_ptr<render::FrameReadback> readback;
+    std::uint32_t readbackWidth = 0, readbackHeight = 0;
     std::unique_ptr<Window> window;
     ExtractedFrame extracted;
     // Captures wanted per frame index (kLastFrame resolved to the run's last frame).
@@ -88,39 +111,209 @@ struct Application::Session {
     SkyLoader sky;
 };
 
+struct SystemEntry {
+    std::string name;
+    ecs::Phase phase;
+    System fn;
+    SystemDeclaration declaration;
+};
+
+}  // namespace
+
+struct Application::Impl {
+    ApplicationOptions options;
+    std::unique_ptr<SceneWorld> world;
+    std::unique_ptr<SceneWorld> pendingWorld;
+    bool worldPending = false;
+    render::FrameInputs frame;
+    // Stable addresses: addSystem hands out references to the declarations.
+    std::vector<std::unique_ptr<SystemEntry>> systems;
+    ecs::JobSystem jobs;
+    std::unique_ptr<ecs::Scheduler> scheduler;  // on world's registry; rebuilt when stale
+    bool schedulerStale = true;
+    FrameContext current;  // what systems get this frame
+    std::vector<std::shared_ptr<FrameLayer>> layers;
+    std::vector<FrameCallback> frameStart;
+    std::vector<RenderCallback> beforeRender;
+    std::vector<std::filesystem::path> capturesNow;  // captureFrame() for the current frame
+    InputState input;
+    FrameStats stats;
+    std::atomic<bool> quitRequested = false;
+    std::mutex titleMutex;
+    std::string windowTitle;
+    Session* session = nullptr;  // while running
+
+    explicit Impl(ApplicationOptions o)
+        : options(std::move(o)), world(std::make_unique<SceneWorld>()) {}
+
+    void rebuildScheduler();
+    void runSystems(const FrameContext& context);
+    void swapWorld();
+    void updateSky(Session& session);
+    int runSession(bool headless, std::uint32_t frames);
+};
+
+// The scheduler is bound to one registry: made again for a new world, replaying the systems'
+// declarations. Transform propagation (SceneWorld::updateTransforms: missing WorldTransforms
+// added, unmarked changes caught, then propagation) is exclusive, so it may add components and
+// sort the transform pools into propagation order, as it always has.
+void Application::Impl::rebuildScheduler() {
+    scheduler.reset();
+    schedulerStale = false;
+    if (!world) return;
+    scheduler = std::make_unique<ecs::Scheduler>(world->registry, jobs);
+    scheduler
+        ->addSystem("propagate transforms", ecs::Phase::PostUpdate,
+                    [this](ecs::SystemContext&) { world->updateTransforms(); })
+        .reads<ecs::LocalTransform, ecs::HierarchyNode>()
+        .writes<ecs::WorldTransform>()
+        .exclusive();
+    for (const auto& entry : systems) {
+        const System* fn = &entry->fn;
+        auto builder = scheduler->addSystem(
+            entry->name, entry->phase, [this, fn](ecs::SystemContext&) { (*fn)(*world, current); });
+        entry->declaration.applyTo(builder);
+    }
+}
+
+void Application::Impl::runSystems(const FrameContext& context) {
+    if (!world) return;
+    if (schedulerStale) rebuildScheduler();
+    current = context;
+    scheduler->run();
+}
+
+// A world handed over during the run replaces the old one between frames: the GPU is idle
+// (every frame waits for its submission), and what referred to the old registry goes first.
+void Application::Impl::swapWorld() {
+    if (!worldPending) return;
+    worldPending = false;
+    Session& s = *session;
+    s.submitter->waitIdle();
+    s.lightTable.reset();  // unhooks from the old registry before it goes
+    s.extracted = {};
+    s.sky = SkyLoader(options.environment);
+    s.resources = std::make_unique<render::SceneResources>(*s.context);
+    scheduler.reset();
+    world = std::move(pendingWorld);
+    schedulerStale = true;
+}
+
 // Loads the sky when the file named by the options or the world's Sky component changes
 // (cached precomputation makes a reload of a known sky cheap).
-void Application::updateSky(Session& s) {
-    if (!s.sky.update(*world_, s.extracted, *s.context, *s.submitter, *s.resources, "candela")) {
+void Application::Impl::updateSky(Session& s) {
+    if (!s.sky.update(*world, s.extracted, *s.context, *s.submitter, *s.resources, "candela")) {
         return;
     }
     if (s.resources->environment()) {
-        stats_.environment = s.resources->environment()->stats();
+        stats.environment = s.resources->environment()->stats();
     } else {
-        stats_.environment.reset();
+        stats.environment.reset();
     }
 }
 
 Application::Application(ApplicationOptions options)
-    : options_(std::move(options)), world_(std::make_unique<SceneWorld>()) {}
+    : impl_(std::make_unique<Impl>(std::move(options))) {}
 
 Application::~Application() = default;
 
+SceneWorld& Application::world() {
+    return *impl_->world;
+}
+
+bool Application::hasWorld() const {
+    return impl_->world != nullptr;
+}
+
 void Application::setWorld(std::unique_ptr<SceneWorld> world) {
-    world_ = std::move(world);
+    if (impl_->session) {
+        impl_->pendingWorld = std::move(world);
+        impl_->worldPending = true;
+        return;
+    }
+    impl_->scheduler.reset();
+    impl_->world = std::move(world);
+    impl_->schedulerStale = true;
+}
+
+render::FrameInputs& Application::frameInputs() {
+    return impl_->frame;
+}
+
+void Application::setClearRadiance(const std::array<float, 4>& radiance) {
+    impl_->frame.clearRadiance = radiance;
 }
 
 void Application::addSystem(std::string name, System system) {
-    systems_.emplace_back(std::move(name), std::move(system));
+    addSystem(std::move(name), ecs::Phase::Update, std::move(system)).exclusive();
+}
+
+SystemDeclaration& Application::addSystem(std::string name, ecs::Phase phase, System system) {
+    impl_->systems.push_back(std::make_unique<SystemEntry>(
+        SystemEntry{std::move(name), phase, std::move(system), SystemDeclaration{}}));
+    impl_->schedulerStale = true;
+    return impl_->systems.back()->declaration;
+}
+
+std::string Application::describeSystems() {
+    // Declarations made after addSystem returned count too: always plan afresh.
+    impl_->rebuildScheduler();
+    return impl_->scheduler ? impl_->scheduler->describe() : std::string();
+}
+
+void Application::update(const FrameContext& frame) {
+    FrameContext context = frame;
+    InputState none;
+    if (!context.input) context.input = &none;
+    impl_->schedulerStale = true;  // declarations may have grown since the last plan
+    impl_->runSystems(context);
 }
 
 void Application::addLayer(std::shared_ptr<FrameLayer> layer) {
-    layers_.push_back(std::move(layer));
+    impl_->layers.push_back(std::move(layer));
+}
+
+void Application::onFrameStart(FrameCallback callback) {
+    impl_->frameStart.push_back(std::move(callback));
+}
+
+void Application::onBeforeRender(RenderCallback callback) {
+    impl_->beforeRender.push_back(std::move(callback));
+}
+
+void Application::captureFrame(std::filesystem::path path) {
+    impl_->capturesNow.push_back(std::move(path));
+}
+
+void Application::requestQuit() {
+    impl_->quitRequested = true;
+}
+
+void Application::setWindowTitle(std::string title) {
+    const std::lock_guard lock(impl_->titleMutex);
+    impl_->windowTitle = std::move(title);
+}
+
+const ApplicationOptions& Application::options() const {
+    return impl_->options;
+}
+
+const FrameStats& Application::stats() const {
+    return impl_->stats;
+}
+
+const InputState& Application::input() const {
+    return impl_->input;
+}
+
+std::uint32_t Application::framesRendered() const {
+    return std::uint32_t(impl_->stats.frameMs.size());
 }
 
 int Application::run() {
+    const ApplicationOptions& options = impl_->options;
     std::vector<std::filesystem::path> outputs;
-    for (const FrameCapture& c : options_.captures) {
+    for (const FrameCapture& c : options.captures) {
         std::string ext = c.path.extension().string();
         if (ext != ".png" && ext != ".exr") {
             std::fprintf(stderr, "candela: %s: captures must end in .png or .exr\n",
@@ -129,32 +322,68 @@ int Application::run() {
         }
         outputs.push_back(c.path);
     }
-    if (options_.stats) outputs.push_back(*options_.stats);
-    if (options_.frameGraph) outputs.push_back(*options_.frameGraph);
+    if (options.stats) outputs.push_back(*options.stats);
+    if (options.frameGraph) outputs.push_back(*options.frameGraph);
     for (const std::filesystem::path& path : outputs) {
         if (std::string e = checkWritable(path); !e.empty()) {
             std::fprintf(stderr, "candela: %s\n", e.c_str());
             return kExitBadArguments;
         }
     }
-    bool headless = options_.headless || !displayAvailable();
-    if (!options_.headless && headless) {
+    bool headless = options.headless || !displayAvailable();
+    if (!options.headless && headless) {
         std::fprintf(stderr, "candela: no display found, rendering headless\n");
     }
-    std::uint32_t frames = options_.frames != 0 ? options_.frames : (headless ? 1 : 0);
-    return runSession(headless, frames);
+    std::uint32_t frames = options.frames != 0 ? options.frames : (headless ? 1 : 0);
+    return impl_->runSession(headless, frames);
 }
 
-int Application::runSession(bool headless, std::uint32_t frames) {
-    stats_ = FrameStats{};
-    stats_.width = options_.width;
-    stats_.height = options_.height;
-    input_ = InputState{};
-    quitRequested_ = false;
+namespace {
+
+// The layers' passes for this frame (layers with no uses add none).
+std::vector<render::ExtraPass> layerPasses(const std::vector<std::shared_ptr<FrameLayer>>& layers,
+                                           const render::Renderer& renderer) {
+    std::vector<render::ExtraPass> passes;
+    for (const auto& layer : layers) {
+        std::vector<render::TargetAccess> uses = layer->uses();
+        if (uses.empty()) continue;
+        FrameLayer* raw = layer.get();
+        const render::Renderer* r = &renderer;
+        passes.push_back({layer->name(), std::move(uses), [raw, r](VkCommandBuffer cmd) {
+                              LayerPassContext pass(cmd, *r);
+                              raw->record(pass);
+                          }});
+    }
+    return passes;
+}
+
+}  // namespace
+
+int Application::Impl::runSession(bool headless, std::uint32_t frames) {
+    stats = FrameStats{};
+    stats.width = options.width;
+    stats.height = options.height;
+    input = InputState{};
+    quitRequested = false;
     Session s;
-    s.sky = SkyLoader(options_.environment);
+    session = &s;
+    struct EndOfSession {  // session points at `s` only while it exists
+        Impl& impl;
+        Session& s;
+        ~EndOfSession() {
+            impl.session = nullptr;
+            if (impl.worldPending) {   // handed over during the last frame: take it now
+                s.lightTable.reset();  // unhooks from the old registry before it goes
+                impl.worldPending = false;
+                impl.scheduler.reset();
+                impl.world = std::move(impl.pendingWorld);
+                impl.schedulerStale = true;
+            }
+        }
+    } endOfSession{*this, s};
+    s.sky = SkyLoader(options.environment);
     std::string frameGraphDot;
-    for (const FrameCapture& c : options_.captures) {
+    for (const FrameCapture& c : options.captures) {
         if (c.frame == FrameCapture::kLastFrame && frames == 0) {
             s.capturesMissed.push_back(c.path);  // an open-ended window has no last frame
             continue;
@@ -167,59 +396,60 @@ int Application::runSession(bool headless, std::uint32_t frames) {
         }
         s.captures[at].push_back(c.path);
     }
+    // Without captures asked for up front the render follows the window's size.
+    const bool fixedRenderSize = !s.captures.empty();
     // A script (or a headless run) uses the fixed step, so its frames repeat exactly.
-    const bool fixedStep = headless || options_.inputScript.has_value();
+    const bool fixedStep = headless || options.inputScript.has_value();
     try {
         render::GpuContextOptions gpuOptions;
-        gpuOptions.validation = options_.validation;
+        gpuOptions.validation = options.validation;
         if (const char* preferred = std::getenv("CANDELA_DEVICE")) {
             gpuOptions.preferredDevice = preferred;
         }
         if (!headless) {
             gpuOptions.instanceExtensions = Window::requiredInstanceExtensions();
             gpuOptions.swapchain = true;
-            s.window = std::make_unique<Window>(options_.width, options_.height, options_.title);
-            if (!options_.inputScript) s.window->setInputTarget(&input_);
-            if (options_.captureCursor) s.window->setCursorCaptured(true);
+            s.window = std::make_unique<Window>(options.width, options.height, options.title);
+            if (!options.inputScript) s.window->setInputTarget(&input);
+            if (options.captureCursor) s.window->setCursorCaptured(true);
         }
         s.context = std::make_unique<render::GpuContext>(gpuOptions);
         render::RendererOptions rendererOptions;
-        rendererOptions.lightCulling = options_.lightCulling;
-        rendererOptions.lightAssignment = options_.lightAssignment;
-        rendererOptions.countLightPairs = options_.countLightPairs;
-        rendererOptions.ibl = options_.ibl;
-        rendererOptions.brdf = brdfFor(options_, world_.get());
-        s.renderer = std::make_unique<render::Renderer>(*s.context, options_.width, options_.height,
+        rendererOptions.lightCulling = options.lightCulling;
+        rendererOptions.lightAssignment = options.lightAssignment;
+        rendererOptions.countLightPairs = options.countLightPairs;
+        rendererOptions.ibl = options.ibl;
+        rendererOptions.brdf = brdfFor(options, world.get());
+        s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
         s.resources = std::make_unique<render::SceneResources>(*s.context);
-        stats_.device = s.context->deviceName();
-        if (!s.captures.empty()) {
-            s.readback = std::make_unique<render::FrameReadback>(*s.context, options_.width,
-                                                                 options_.height);
-        }
-        for (auto& layer : layers_)
+        stats.device = s.context->deviceName();
+        for (auto& layer : layers)
             layer->start(*s.context, s.window.get());
 
         VkSurfaceKHR surface = VK_NULL_HANDLE;
         std::unique_ptr<render::Swapchain> swapchain;
         if (s.window) {
-            surface = s.window->createSurface(s.context->instance());
-            swapchain = std::make_unique<render::Swapchain>(*s.context, surface, options_.width,
-                                                            options_.height);
+            surface = createWindowSurface(*s.window, s.context->instance());
+            swapchain = std::make_unique<render::Swapchain>(*s.context, surface, options.width,
+                                                            options.height);
         }
         const Clock::time_point runStart = Clock::now();
         double previousSeconds = 0.0;
         for (std::uint32_t i = 0; frames == 0 || i < frames; ++i) {
             Clock::time_point start = Clock::now();
-            input_.beginFrame();
+            input.beginFrame();
             if (s.window) s.window->pollEvents();
-            if (options_.inputScript) options_.inputScript->apply(i, input_);
-            if (input_.closeRequested || quitRequested_) break;
+            if (options.inputScript) options.inputScript->apply(i, input);
+            if (input.closeRequested || quitRequested) break;
             if (s.window && s.window->shouldClose()) break;
-            if (s.window && !windowTitle_.empty()) {
-                s.window->setTitle(windowTitle_);
-                windowTitle_.clear();
+            if (s.window) {
+                const std::lock_guard lock(titleMutex);
+                if (!windowTitle.empty()) {
+                    s.window->setTitle(windowTitle);
+                    windowTitle.clear();
+                }
             }
 
             uint32_t imageIndex = 0;
@@ -229,8 +459,7 @@ int Application::runSession(bool headless, std::uint32_t frames) {
                     s.window->framebufferSize(w, h);
                     s.submitter->waitIdle();
                     swapchain->recreate(w, h);
-                    // Without captures the render follows the window.
-                    if (s.captures.empty()) s.renderer->resize(w, h);
+                    if (!fixedRenderSize) s.renderer->resize(w, h);
                 }
                 s.submitter->waitIdle();
                 if (!swapchain->acquire(s.submitter->imageAvailable(), imageIndex)) {
@@ -242,42 +471,62 @@ int Application::runSession(bool headless, std::uint32_t frames) {
                 }
             }
 
-            FrameContext frame;
-            frame.frame = i;
-            frame.seconds = fixedStep
-                                ? double(i) * options_.fixedStepSeconds
-                                : std::chrono::duration<double>(Clock::now() - runStart).count();
-            frame.deltaSeconds = fixedStep ? (i == 0 ? 0.0 : options_.fixedStepSeconds)
-                                           : frame.seconds - previousSeconds;
-            previousSeconds = frame.seconds;
-            frame.input = &input_;
-            frame.headless = headless;
-            frame.width = s.renderer->width();
-            frame.height = s.renderer->height();
+            FrameContext frameContext;
+            frameContext.frame = i;
+            frameContext.seconds =
+                fixedStep ? double(i) * options.fixedStepSeconds
+                          : std::chrono::duration<double>(Clock::now() - runStart).count();
+            frameContext.deltaSeconds = fixedStep ? (i == 0 ? 0.0 : options.fixedStepSeconds)
+                                                  : frameContext.seconds - previousSeconds;
+            previousSeconds = frameContext.seconds;
+            frameContext.input = &input;
+            frameContext.headless = headless;
+            frameContext.width = s.renderer->width();
+            frameContext.height = s.renderer->height();
+
+            for (auto& callback : frameStart)
+                callback(frameContext);
+            swapWorld();
 
             render::SceneResources* resources = nullptr;
-            if (world_) {
-                for (auto& [name, system] : systems_)
-                    system(*world_, frame);
-                world_->updateTransforms();
+            if (world) {
+                runSystems(frameContext);
                 float aspect = float(s.renderer->width()) / float(s.renderer->height());
-                if (!s.lightTable) s.lightTable = std::make_unique<LightTable>(world_->registry);
-                extractFrame(world_->registry, *s.lightTable, *s.resources, aspect, s.extracted);
-                frame_.scene.camera = s.extracted.camera;
-                frame_.scene.draws = s.extracted.draws;
-                frame_.scene.lights = s.extracted.lights;
-                frame_.scene.changedLights = s.extracted.changedLights;
-                frame_.scene.lightsRestructured = s.extracted.lightsRestructured;
-                frame_.scene.skyIntensity = s.extracted.skyIntensity;
-                frame_.text = std::move(s.extracted.text);
+                if (!s.lightTable) s.lightTable = std::make_unique<LightTable>(world->registry);
+                extractFrame(world->registry, *s.lightTable, *s.resources, aspect, s.extracted);
+                frame.scene.camera = s.extracted.camera;
+                frame.scene.draws = s.extracted.draws;
+                frame.scene.lights = s.extracted.lights;
+                frame.scene.changedLights = s.extracted.changedLights;
+                frame.scene.lightsRestructured = s.extracted.lightsRestructured;
+                frame.scene.skyIntensity = s.extracted.skyIntensity;
+                frame.text = std::move(s.extracted.text);
                 updateSky(s);
                 resources = s.resources.get();
             }
-            VkCommandBuffer cmd = s.renderer->recordFrame(*s.submitter, frame_, resources);
-            for (auto& layer : layers_)
-                layer->record(cmd, *s.renderer, frame, stats_);
-            auto wanted = s.captures.find(i);
-            if (wanted != s.captures.end()) s.readback->recordCopy(cmd, *s.renderer);
+            for (auto& callback : beforeRender)
+                callback(frame, s.extracted, frameContext);
+            for (auto& layer : layers)
+                layer->prepare(frameContext, stats);
+
+            const std::vector<render::ExtraPass> passes = layerPasses(layers, *s.renderer);
+            VkCommandBuffer cmd = s.renderer->recordFrame(*s.submitter, frame, resources, passes);
+            std::vector<std::filesystem::path> wanted = std::move(capturesNow);
+            capturesNow.clear();
+            if (auto at = s.captures.find(i); at != s.captures.end()) {
+                wanted.insert(wanted.end(), at->second.begin(), at->second.end());
+                s.captures.erase(at);
+            }
+            if (!wanted.empty()) {
+                if (!s.readback || s.readbackWidth != s.renderer->width() ||
+                    s.readbackHeight != s.renderer->height()) {
+                    s.readbackWidth = s.renderer->width();
+                    s.readbackHeight = s.renderer->height();
+                    s.readback = std::make_unique<render::FrameReadback>(
+                        *s.context, s.readbackWidth, s.readbackHeight);
+                }
+                s.readback->recordCopy(cmd, *s.renderer);
+            }
             if (s.window) {
                 swapchain->recordBlit(cmd, s.renderer->ldrTarget(), imageIndex);
                 s.submitter->submit(s.submitter->imageAvailable(),
@@ -292,15 +541,15 @@ int Application::runSession(bool headless, std::uint32_t frames) {
                 s.submitter->submit();
             }
             s.submitter->waitIdle();
-            stats_.frameMs.push_back(millisecondsSince(start));
-            stats_.addRendererStats(s.renderer->collectStats());
-            if (wanted != s.captures.end()) {
+            stats.frameMs.push_back(millisecondsSince(start));
+            stats.addRendererStats(s.renderer->collectStats());
+            if (!wanted.empty()) {
                 render::CapturedFrame captured = s.readback->read();
                 if (size_t bad = captured.nonFiniteHdrValues()) {
                     std::fprintf(stderr, "candela: warning: capture holds %zu NaN/Inf values\n",
                                  bad);
                 }
-                for (const std::filesystem::path& path : wanted->second) {
+                for (const std::filesystem::path& path : wanted) {
                     if (std::string e = render::writeCapture(path, captured); !e.empty()) {
                         std::fprintf(stderr, "candela: %s\n", e.c_str());
                         s.exitCode = kExitFailure;
@@ -308,23 +557,22 @@ int Application::runSession(bool headless, std::uint32_t frames) {
                         std::printf("captured %s\n", path.c_str());
                     }
                 }
-                s.captures.erase(wanted);
             }
         }
         s.submitter->waitIdle();
-        for (auto& layer : layers_)
+        for (auto& layer : layers)
             layer->stop();
         swapchain.reset();
         if (surface != VK_NULL_HANDLE) vkDestroySurfaceKHR(s.context->instance(), surface, nullptr);
         if (s.window) s.window->setInputTarget(nullptr);
-        stats_.features = s.renderer->features();
-        if (options_.frameGraph) frameGraphDot = s.renderer->frameGraphDot();
-        stats_.validationMessages = s.context->validationMessages();
+        stats.features = s.renderer->features();
+        if (options.frameGraph) frameGraphDot = s.renderer->frameGraphDot();
+        stats.validationMessages = s.context->validationMessages();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "candela: %s\n", e.what());
         // Layers hold device objects: they go before the device does.
         if (s.submitter) {
-            for (auto& layer : layers_) {
+            for (auto& layer : layers) {
                 try {
                     s.submitter->waitIdle();
                     layer->stop();
@@ -341,24 +589,24 @@ int Application::runSession(bool headless, std::uint32_t frames) {
     }
     if (!s.capturesMissed.empty()) {
         std::fprintf(stderr, "candela: run ended after %u frames; nothing captured for %s\n",
-                     framesRendered(), s.capturesMissed.front().c_str());
+                     std::uint32_t(stats.frameMs.size()), s.capturesMissed.front().c_str());
         s.exitCode = kExitFailure;
     }
-    if (options_.frameGraph) {
-        if (std::string e = content::writeFileAtomically(*options_.frameGraph, frameGraphDot);
+    if (options.frameGraph) {
+        if (std::string e = content::writeFileAtomically(*options.frameGraph, frameGraphDot);
             !e.empty()) {
             std::fprintf(stderr, "candela: %s\n", e.c_str());
             s.exitCode = kExitFailure;
         }
     }
-    if (options_.stats) {
-        if (std::string e = writeStatsJson(*options_.stats, stats_); !e.empty()) {
+    if (options.stats) {
+        if (std::string e = writeStatsJson(*options.stats, stats); !e.empty()) {
             std::fprintf(stderr, "candela: %s\n", e.c_str());
             s.exitCode = kExitFailure;
         }
     }
-    if (stats_.validationMessages > 0 && options_.validation == render::ValidationMode::Required) {
-        std::fprintf(stderr, "candela: %u validation messages\n", stats_.validationMessages);
+    if (stats.validationMessages > 0 && options.validation == render::ValidationMode::Required) {
+        std::fprintf(stderr, "candela: %u validation messages\n", stats.validationMessages);
         s.exitCode = kExitValidation;
     }
     return s.exitCode;

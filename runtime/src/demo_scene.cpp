@@ -14,6 +14,7 @@
 #include "candela/content/procedural_mesh.h"
 #include "candela/ecs/hierarchy.h"
 #include "candela/ecs/transform.h"
+#include "candela/runtime/application.h"
 #include "candela/runtime/fly_camera.h"
 
 namespace candela::runtime {
@@ -378,14 +379,23 @@ void updateDemoCamera(SceneWorld& world, const FrameContext& frame) {
                     return;
                 }
             }
-            if (demo.flying) return;  // updateFlyCameras moves it
+            if (demo.flying) return;  // the fly camera system moves it
             CameraPose pose = demoCameraPath().pose(frame.seconds);
             local.position = pose.position;
             local.rotation = pose.rotation;
             world.registry.markChanged<ecs::LocalTransform>(e);
         });
     if (takeOver != ecs::kNullEntity) world.registry.emplace<FlyCamera>(takeOver, fly);
-    updateFlyCameras(world, frame);
+}
+
+void addDemoSystems(Application& app) {
+    app.addSystem(
+           "demo lights", ecs::Phase::Update,
+           [](SceneWorld& world, const FrameContext& f) { animateDemoLights(world, f.seconds); })
+        .reads<DriftingLight>()
+        .writes<ecs::LocalTransform>();
+    app.addSystem("demo camera", updateDemoCamera);
+    addFlyCameraSystem(app);
 }
 
 }  // namespace candela::runtime

@@ -14,6 +14,8 @@
 
 namespace candela::runtime {
 
+class Application;
+
 // A dim blue night behind the scene, cd/m^2 (until the renderer draws the Sky component).
 inline constexpr std::array<float, 4> kDemoBackgroundRadiance = {0.02f, 0.03f, 0.06f, 1.0f};
 
@@ -30,7 +32,12 @@ const CameraPath& demoCameraPath();
 void animateDemoLights(SceneWorld& world, double seconds);
 
 // Headless: places the camera on the path at the frame's time. In a window: the path plays
-// until a movement key or mouse button is used, then the camera flies (fly_camera.h).
+// until a movement key or mouse button is used, then the camera becomes a FlyCamera (moved by
+// the fly camera system, fly_camera.h).
 void updateDemoCamera(SceneWorld& world, const FrameContext& frame);
+
+// The demo's systems, in this order: the drifting lights (declared: they read their drift and
+// write LocalTransform), the camera (exclusive: taking over adds a FlyCamera), fly cameras.
+void addDemoSystems(Application& app);
 
 }  // namespace candela::runtime

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "candela/ecs/transform.h"
+#include "candela/runtime/application.h"
 
 namespace candela::runtime {
 
@@ -40,6 +41,11 @@ void updateFlyCameras(SceneWorld& world, const FrameContext& frame) {
                 world.registry.markChanged<ecs::LocalTransform>(e);
             }
         });
+}
+
+void addFlyCameraSystem(Application& app) {
+    app.addSystem("fly cameras", ecs::Phase::Update, updateFlyCameras)
+        .writes<FlyCamera, ecs::LocalTransform>();
 }
 
 }  // namespace candela::runtime

@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
+#include "candela/runtime/scene_source.h"
 #include "run_summary.h"
-#include "scene_source.h"
 
 namespace candela::runtime {
 
@@ -49,8 +49,7 @@ int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>>
     Application application(std::move(app));
     application.setWorld(std::move(scene->world));
     application.frameInputs() = scene->frame;
-    for (auto& [name, system] : scene->systems)
-        application.addSystem(name, std::move(system));
+    if (scene->addSystems) scene->addSystems(application);
     for (auto& layer : layers)
         application.addLayer(std::move(layer));
     int exitCode = application.run();

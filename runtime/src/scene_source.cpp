@@ -1,4 +1,4 @@
-#include "scene_source.h"
+#include "candela/runtime/scene_source.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -44,10 +44,7 @@ std::optional<LoadedScene> loadScene(const std::string& scene, std::string& erro
         loaded.world = std::make_unique<SceneWorld>();
         content::Diagnostics diagnostics;
         buildDemoScene(*loaded.world, diagnostics);
-        loaded.systems.emplace_back("demo lights", [](SceneWorld& world, const FrameContext& f) {
-            animateDemoLights(world, f.seconds);
-        });
-        loaded.systems.emplace_back("demo camera", updateDemoCamera);
+        loaded.addSystems = addDemoSystems;
         printDiagnostics(diagnostics);
         loaded.frame.clearRadiance = kDemoBackgroundRadiance;
         return loaded;

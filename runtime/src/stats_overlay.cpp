@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "candela/render/renderer.h"
+#include "candela/runtime/layer_pass_context.h"
 #include "candela/runtime/window.h"
 #include "candela/ui/imgui_layer.h"
 #include "candela/ui/imgui_renderer.h"
@@ -33,11 +33,14 @@ void StatsOverlay::start(render::GpuContext& context, Window* window) {
     imgui_ = std::make_unique<ui::ImGuiRenderer>(context);
 }
 
-void StatsOverlay::record(VkCommandBuffer cmd, render::Renderer& renderer,
-                          const FrameContext& frame, const FrameStats& stats) {
+std::vector<render::TargetAccess> StatsOverlay::uses() const {
+    if (!layer_) return {};
+    return {{render::FrameTarget::Ldr, render::TargetUse::ColorAttachment}};
+}
+
+void StatsOverlay::prepare(const FrameContext& frame, const FrameStats& stats) {
     if (!layer_) return;
-    layer_->beginFrame(float(renderer.width()), float(renderer.height()),
-                       float(frame.deltaSeconds));
+    layer_->beginFrame(float(frame.width), float(frame.height), float(frame.deltaSeconds));
     ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f));
     ImGui::SetNextWindowBgAlpha(0.6f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
@@ -68,11 +71,16 @@ void StatsOverlay::record(VkCommandBuffer cmd, render::Renderer& renderer,
         if (!frame.headless) ImGui::TextUnformatted("WASD/QE fly, shift fast, hold mouse: look");
     }
     ImGui::End();
-    ImDrawData* draw = layer_->endFrame();
-    imgui_->record(cmd, *draw, renderer.ldrTarget(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+    draw_ = layer_->endFrame();
+}
+
+void StatsOverlay::record(LayerPassContext& pass) {
+    if (draw_)
+        imgui_->recordInPass(pass.commandBuffer(), *draw_, pass.image(render::FrameTarget::Ldr));
 }
 
 void StatsOverlay::stop() {
+    draw_ = nullptr;
     imgui_.reset();
     layer_.reset();
 }

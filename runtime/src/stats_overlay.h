@@ -6,6 +6,8 @@
 
 #include "candela/runtime/application.h"
 
+struct ImDrawData;
+
 namespace candela::ui {
 class ImGuiLayer;
 class ImGuiRenderer;
@@ -19,15 +21,18 @@ public:
     explicit StatsOverlay(bool headlessToo);
     ~StatsOverlay() override;
 
+    std::string name() const override { return "stats_overlay"; }
     void start(render::GpuContext& context, Window* window) override;
-    void record(VkCommandBuffer cmd, render::Renderer& renderer, const FrameContext& frame,
-                const FrameStats& stats) override;
+    std::vector<render::TargetAccess> uses() const override;
+    void prepare(const FrameContext& frame, const FrameStats& stats) override;
+    void record(LayerPassContext& pass) override;
     void stop() override;
 
 private:
     bool headlessToo_;
     std::unique_ptr<ui::ImGuiLayer> layer_;
     std::unique_ptr<ui::ImGuiRenderer> imgui_;
+    const ImDrawData* draw_ = nullptr;  // prepare()'s, valid until the next prepare()
 };
 
 }  // namespace candela::runtime

@@ -42,14 +42,6 @@ Window::~Window() {
     if (window_) glfwDestroyWindow(window_);
 }
 
-VkSurfaceKHR Window::createSurface(VkInstance instance) {
-    VkSurfaceKHR surface = VK_NULL_HANDLE;
-    if (glfwCreateWindowSurface(instance, window_, nullptr, &surface) != VK_SUCCESS) {
-        throw std::runtime_error("GLFW could not create a Vulkan surface for the window");
-    }
-    return surface;
-}
-
 bool Window::shouldClose() const {
     return glfwWindowShouldClose(window_);
 }

@@ -86,6 +86,33 @@ protected:
         return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     }
 
+    // Renders `scene` with `candela run` at the editor's size and returns the worst relative
+    // difference of the editor's EXR screenshot from it (RGB); `editor` gets the screenshot.
+    double differenceFromCandelaRun(const fs::path& scene, const fs::path& editorExr,
+                                    std::optional<content::ExrImage>& editor) {
+        const fs::path runExr = dir / "run.exr";
+        const std::string command = std::string("\"") + CANDELA_ENGINE + "\" run \"" +
+                                    scene.string() + "\" --headless --size 640x360 --capture \"" +
+                                    runExr.string() + "\" > /dev/null 2>&1";
+        EXPECT_EQ(std::system(command.c_str()), 0);
+        content::Diagnostics diagnostics;
+        editor = content::readExrImage(editorExr, diagnostics);
+        std::optional<content::ExrImage> run = content::readExrImage(runExr, diagnostics);
+        if (!editor || !run || editor->image.width != run->image.width ||
+            editor->image.height != run->image.height) {
+            ADD_FAILURE() << "missing or differently sized captures";
+            editor.reset();
+            return 1.0;
+        }
+        double worst = 0.0;
+        for (size_t i = 0; i < run->image.rgba.size(); ++i) {
+            if (i % 4 == 3) continue;
+            const double a = editor->image.rgba[i], b = run->image.rgba[i];
+            worst = std::max(worst, std::abs(a - b) / std::max(std::abs(b), 1e-6));
+        }
+        return worst;
+    }
+
     fs::path dir;
 };
 
@@ -158,26 +185,12 @@ TEST_F(EditorSession, ViewportMatchesCandelaRunWithASky) {
     const fs::path scene =
         fs::path(CANDELA_SOURCE_DIR) / "tests/scenes/ibl_spheres_garden.scene.json";
     const fs::path editorExr = dir / "editor.exr";
-    const fs::path runExr = dir / "run.exr";
     std::string errors;
     ASSERT_EQ(runEditor(scene, "screenshot " + editorExr.string() + "\nquit\n", errors), 0)
         << errors;
-    const std::string command = std::string("\"") + CANDELA_ENGINE + "\" run \"" + scene.string() +
-                                "\" --headless --size 640x360 --capture \"" + runExr.string() +
-                                "\" > /dev/null 2>&1";
-    ASSERT_EQ(std::system(command.c_str()), 0);
-    content::Diagnostics diagnostics;
-    std::optional<content::ExrImage> editor = content::readExrImage(editorExr, diagnostics);
-    std::optional<content::ExrImage> run = content::readExrImage(runExr, diagnostics);
-    ASSERT_TRUE(editor && run);
-    ASSERT_EQ(editor->image.width, run->image.width);
-    ASSERT_EQ(editor->image.height, run->image.height);
-    double worst = 0.0;
-    for (size_t i = 0; i < run->image.rgba.size(); ++i) {
-        if (i % 4 == 3) continue;
-        const double a = editor->image.rgba[i], b = run->image.rgba[i];
-        worst = std::max(worst, std::abs(a - b) / std::max(std::abs(b), 1e-6));
-    }
+    std::optional<content::ExrImage> editor;
+    const double worst = differenceFromCandelaRun(scene, editorExr, editor);
+    ASSERT_TRUE(editor);
     std::printf("editor vs candela run: worst relative difference %.3g\n", worst);
     EXPECT_LE(worst, 1e-4);
     // Both show the garden sky behind the spheres, not the uniform clear colour a frame without
@@ -188,6 +201,26 @@ TEST_F(EditorSession, ViewportMatchesCandelaRunWithASky) {
         differing += std::abs(editor->image.texel(x, 0)[1] - left[1]) > 1e-3f ? 1u : 0u;
     }
     EXPECT_GT(differing, editor->image.width / 2);
+}
+
+// Opening another scene from the editor hands the application a new world mid-run: the next
+// frame shows that scene as `candela run` renders it, nothing of the first one left.
+TEST_F(EditorSession, AnOpenedSceneReplacesTheWorldAsCandelaRunShowsIt) {
+    ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run through xvfb-run (ctest does)";
+    const fs::path garden =
+        fs::path(CANDELA_SOURCE_DIR) / "tests/scenes/ibl_spheres_garden.scene.json";
+    const fs::path editorExr = dir / "editor.exr";
+    std::string errors;
+    ASSERT_EQ(
+        runEditor(kScene,
+                  "open " + garden.string() + "\nscreenshot " + editorExr.string() + "\nquit\n",
+                  errors),
+        0)
+        << errors;
+    std::optional<content::ExrImage> editor;
+    const double worst = differenceFromCandelaRun(garden, editorExr, editor);
+    std::printf("opened scene vs candela run: worst relative difference %.3g\n", worst);
+    EXPECT_LE(worst, 1e-4);
 }
 
 TEST_F(EditorSession, AFailingScriptStepNamesTheLineAndFails) {

@@ -176,14 +176,21 @@ TEST(Cli, DemoHasHundredsOfLightsAndCullsThem) {
 }
 
 // The stats overlay (ImGui) draws in the top-left corner only: with --overlay the frame
-// changes there and nowhere else (the window shows it by default; headless needs --overlay).
+// changes there and nowhere else (the window shows it by default; headless needs --overlay),
+// and it is a pass of the frame graph.
 TEST(Cli, DemoOverlayDrawsOnlyItsCorner) {
     auto dir = tempDir();
     const std::string args = "demo --headless --size 640x360 --frames 2 --capture ";
     RunResult plain = runCandela(args + (dir / "plain.png").string());
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
-    RunResult overlay = runCandela(args + (dir / "overlay.png").string() + " --overlay");
+    RunResult overlay = runCandela(args + (dir / "overlay.png").string() + " --overlay" +
+                                   " --frame-graph " + (dir / "overlay.dot").string());
     ASSERT_EQ(overlay.exitCode, 0) << overlay.output;
+    // The overlay is a FrameLayer: a pass of the frame graph of its own, after tonemapping.
+    std::ifstream dotFile(dir / "overlay.dot");
+    const std::string dot((std::istreambuf_iterator<char>(dotFile)),
+                          std::istreambuf_iterator<char>());
+    EXPECT_NE(dot.find("stats_overlay"), std::string::npos) << dot;
     std::string error;
     auto a = candela::golden::readLdrPng(dir / "plain.png", error);
     ASSERT_TRUE(a) << error;

@@ -99,6 +99,24 @@ void ImGuiRenderer::ensureCapacity(render::GpuBuffer& buffer, VkDeviceSize bytes
 void ImGuiRenderer::record(VkCommandBuffer cmd, const ImDrawData& data,
                            const render::GpuImage& target, VkImageLayout layout) {
     if (data.TotalVtxCount <= 0 || data.CmdListsCount <= 0) return;
+    // Whatever wrote or read the target before (tonemap, copies) finishes first.
+    render::transitionImage(
+        cmd, target, layout, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+        VK_ACCESS_2_MEMORY_WRITE_BIT | VK_ACCESS_2_MEMORY_READ_BIT,
+        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+        VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    recordInPass(cmd, data, target);
+    render::transitionImage(cmd, target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, layout,
+                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+                            VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                            VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+}
+
+void ImGuiRenderer::recordInPass(VkCommandBuffer cmd, const ImDrawData& data,
+                                 const render::GpuImage& target) {
+    if (data.TotalVtxCount <= 0 || data.CmdListsCount <= 0) return;
     const uint32_t width = target.desc().width;
     const uint32_t height = target.desc().height;
 
@@ -117,14 +135,6 @@ void ImGuiRenderer::record(VkCommandBuffer cmd, const ImDrawData& data,
         vertexOut += list->VtxBuffer.Size;
         indexOut += list->IdxBuffer.Size;
     }
-
-    // Whatever wrote or read the target before (tonemap, copies) finishes first.
-    render::transitionImage(
-        cmd, target, layout, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-        VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-        VK_ACCESS_2_MEMORY_WRITE_BIT | VK_ACCESS_2_MEMORY_READ_BIT,
-        VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-        VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
 
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     color.imageView = target.view();
@@ -197,12 +207,6 @@ void ImGuiRenderer::record(VkCommandBuffer cmd, const ImDrawData& data,
         indexBase += uint32_t(list->IdxBuffer.Size);
     }
     vkCmdEndRendering(cmd);
-
-    render::transitionImage(cmd, target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, layout,
-                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                            VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                            VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
 }
 
 }  // namespace candela::ui

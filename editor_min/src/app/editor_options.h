@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "candela/render/gpu_context.h"
+#include "candela/render/validation_mode.h"
 
 namespace candela::editor {
 

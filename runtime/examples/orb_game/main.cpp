@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "orb: %s\n", error.c_str());
         return kExitBadArguments;
     }
-    app.frameInputs().clearRadiance = {0.002f, 0.002f, 0.004f, 1.0f};  // a dark night
+    app.setClearRadiance({0.002f, 0.002f, 0.004f, 1.0f});  // a dark night
     orb::addOrbSystems(app);
 
     const int exitCode = app.run();

@@ -228,31 +228,47 @@ void animateSystem(SceneWorld& world, const FrameContext& f) {
 }
 
 void addOrbSystems(candela::runtime::Application& app) {
-    app.addSystem("restart", restartSystem);
-    app.addSystem("steer", steerSystem);
-    app.addSystem("patrol", patrolSystem);
-    app.addSystem("collect", collectSystem);
-    app.addSystem("referee", refereeSystem);
-    app.addSystem("animate", animateSystem);
+    using candela::content::Light;
+    using candela::ecs::Phase;
+    // Each declares what it touches: the scheduler keeps the order below between systems that
+    // share something one of them writes, and runs the rest side by side (animate and hud).
+    app.addSystem("restart", Phase::Update, restartSystem)
+        .writes<GameState, Orb, Pickup, LocalTransform, Light>();
+    app.addSystem("steer", Phase::Update, steerSystem)
+        .reads<GameState, Wall>()
+        .writes<Orb, LocalTransform>();
+    app.addSystem("patrol", Phase::Update, patrolSystem)
+        .reads<GameState, Hazard>()
+        .writes<LocalTransform>();
+    app.addSystem("collect", Phase::Update, collectSystem)
+        .reads<Orb>()
+        .writes<GameState, Pickup, LocalTransform, Light>();
+    app.addSystem("referee", Phase::Update, refereeSystem)
+        .reads<Orb, Hazard, LocalTransform>()
+        .writes<GameState, Light>();
+    app.addSystem("animate", Phase::Update, animateSystem).reads<Pickup>().writes<LocalTransform>();
     // The HUD: the window title, rewritten only when what it says changes.
-    app.addSystem("hud", [&app, last = std::string()](SceneWorld& world,
-                                                      const FrameContext&) mutable {
-        const GameState* s = gameState(world);
-        if (!s) return;
-        char title[160];
-        if (s->status == Status::Playing) {
-            std::snprintf(title, sizeof title, "Orb - score %d - sparks %d/%d - %.0f s left",
-                          s->score, s->collected, s->total,
-                          std::ceil(std::max(0.0, s->timeLimitSeconds - s->elapsedSeconds)));
-        } else {
-            std::snprintf(title, sizeof title, "Orb - you %s (%s), score %d - press R to restart",
-                          statusName(s->status), s->reason.c_str(), s->score);
-        }
-        if (last != title) {
-            last = title;
-            app.setWindowTitle(title);
-        }
-    });
+    app.addSystem("hud", Phase::Update,
+                  [&app, last = std::string()](SceneWorld& world, const FrameContext&) mutable {
+                      const GameState* s = gameState(world);
+                      if (!s) return;
+                      char title[160];
+                      if (s->status == Status::Playing) {
+                          std::snprintf(
+                              title, sizeof title, "Orb - score %d - sparks %d/%d - %.0f s left",
+                              s->score, s->collected, s->total,
+                              std::ceil(std::max(0.0, s->timeLimitSeconds - s->elapsedSeconds)));
+                      } else {
+                          std::snprintf(title, sizeof title,
+                                        "Orb - you %s (%s), score %d - press R to restart",
+                                        statusName(s->status), s->reason.c_str(), s->score);
+                      }
+                      if (last != title) {
+                          last = title;
+                          app.setWindowTitle(title);
+                      }
+                  })
+        .reads<GameState>();
 }
 
 }  // namespace orb

@@ -1,6 +1,8 @@
 #pragma once
-// The game's logic, one system per rule. Each runs every frame in the order addOrbSystems
-// adds them: restart, steer, patrol, collect, referee, animate.
+// The game's logic, one system per rule, run every frame on the engine's scheduler. Each
+// declares the components it reads and writes (addOrbSystems): systems that conflict run in
+// the order added (restart, steer, patrol, collect, referee, animate, hud); animate and hud
+// share nothing they write and run side by side.
 #include "candela/runtime/application.h"
 
 namespace orb {

@@ -15,6 +15,7 @@
 
 #include "candela/content/diagnostics.h"
 #include "candela/content/environment_map.h"
+#include "candela/render/environment_stats.h"
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_image.h"
 
@@ -31,20 +32,6 @@ struct EnvironmentCacheOptions {
 // $CANDELA_CACHE_DIR, else $XDG_CACHE_HOME/candela, else $HOME/.cache/candela, else a
 // folder under the system temp directory.
 std::filesystem::path defaultEnvironmentCacheDirectory();
-
-struct EnvironmentBuildStats {
-    std::string source;  // the file, or "uniform"
-    uint64_t contentHash = 0;
-    bool fromCache = false;
-    bool fallback = false;      // the file could not be used: neutral uniform sky instead
-    double readMs = 0.0;        // reading and hashing the file
-    double decodeMs = 0.0;      // OpenEXR decode (0 on a cache hit)
-    double precomputeMs = 0.0;  // cube, mips, prefiltering, SH on the device (0 when cached)
-    double cacheMs = 0.0;       // writing the cache file, or reading and uploading it
-    uint32_t cubeFaceSize = 0;
-    uint32_t prefilteredFaceSize = 0;
-    uint32_t prefilteredMipCount = 0;
-};
 
 class Environment {
 public:

@@ -11,16 +11,11 @@
 #include <vector>
 
 #include "candela/render/memory_allocation.h"
+#include "candela/render/validation_mode.h"
 
 namespace candela::render {
 
 class MemoryAllocator;
-
-enum class ValidationMode {
-    Off,        // no layer
-    IfPresent,  // enable the Khronos layer when it is installed
-    Required,   // fail to start without it (tests)
-};
 
 struct GpuContextOptions {
     ValidationMode validation = ValidationMode::IfPresent;

@@ -6,11 +6,14 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "candela/render/frame_inputs.h"
+#include "candela/render/frame_target_use.h"
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_image.h"
 #include "candela/render/renderer_options.h"
@@ -34,6 +37,16 @@ class TonemapPass;
 class DebugTextPass;
 class TrianglePass;
 
+// A pass recorded after tonemapping by someone outside the renderer (runtime FrameLayers: the
+// editor's UI, the stats overlay). The graph orders it after the passes that wrote what it
+// uses, places its barriers, and hands `record` the frame's command buffer with each target in
+// targetLayout(use).
+struct ExtraPass {
+    std::string name;
+    std::vector<TargetAccess> uses;
+    std::function<void(VkCommandBuffer)> record;
+};
+
 class Renderer {
 public:
     Renderer(GpuContext& context, uint32_t width, uint32_t height,
@@ -52,9 +65,13 @@ public:
     // new command buffer; device assignment records everything into one. Returns the open command
     // buffer holding the rest of the frame: the caller may append (capture copy, swapchain blit)
     // and submits it. Afterwards both targets are in TRANSFER_SRC_OPTIMAL. `resources` holds what
-    // the draws refer to (null: no meshes).
+    // the draws refer to (null: no meshes). `extraPasses` run after tonemapping, in order.
     VkCommandBuffer recordFrame(FrameSubmitter& submitter, const FrameInputs& inputs,
-                                SceneResources* resources);
+                                SceneResources* resources,
+                                std::span<const ExtraPass> extraPasses = {});
+
+    // The layout a target is in while an ExtraPass uses it so.
+    static VkImageLayout targetLayout(TargetUse use);
 
     // Reads the GPU-side measurements of the last frame; call once its submission completed.
     const RendererStats& collectStats();

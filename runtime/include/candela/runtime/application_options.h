@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "candela/render/gpu_context.h"
+#include "candela/render/validation_mode.h"
 #include "candela/render/renderer_options.h"
 #include "candela/runtime/input_script.h"
 

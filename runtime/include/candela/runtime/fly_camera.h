@@ -7,6 +7,8 @@
 
 namespace candela::runtime {
 
+class Application;
+
 // Put next to a Camera and a LocalTransform; the system owns the entity's rotation.
 struct FlyCamera {
     float yaw = 0.0f;    // radians about +Y; 0 looks along -Z
@@ -21,5 +23,9 @@ ecs::Quat flyCameraRotation(float yaw, float pitch);
 
 // Moves every FlyCamera entity by the frame's input.
 void updateFlyCameras(SceneWorld& world, const FrameContext& frame);
+
+// Adds updateFlyCameras as an Update system that declares what it touches (writes FlyCamera
+// and LocalTransform), so systems that share neither run beside it.
+void addFlyCameraSystem(Application& app);
 
 }  // namespace candela::runtime

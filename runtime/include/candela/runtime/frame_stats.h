@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "candela/render/environment.h"
+#include "candela/render/environment_stats.h"
 #include "candela/render/renderer_options.h"
 
 namespace candela::runtime {

@@ -1,8 +1,6 @@
 #pragma once
-// A GLFW window with a Vulkan surface. Only the runtime knows about GLFW; input reaches
-// games as InputState.
-#include <vulkan/vulkan.h>
-
+// A GLFW window (its Vulkan surface: window_surface.h, inside the runtime). Only the runtime
+// knows about GLFW; input reaches games as InputState.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,7 +21,6 @@ public:
 
     static std::vector<std::string> requiredInstanceExtensions();
 
-    VkSurfaceKHR createSurface(VkInstance instance);
     bool shouldClose() const;
     void pollEvents() const;
     // Blocks while minimised (0x0), so the swapchain is never created with a zero extent.

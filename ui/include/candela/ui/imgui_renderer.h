@@ -5,10 +5,8 @@
 // VkRenderPass and descriptor pools, while every Candela pass uses dynamic rendering and push
 // descriptors; this is about 200 lines.
 //
-//   VkCommandBuffer cmd = renderer.recordFrame(submitter, inputs, resources);
-//   imguiRenderer.record(cmd, *layer.endFrame(), renderer.ldrTarget(),
-//                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);  // the UI lands in captures too
-//   swapchain.recordBlit(cmd, renderer.ldrTarget(), imageIndex);
+// In the engine's frame it is a frame-graph pass (a runtime FrameLayer declaring the LDR target
+// as a colour attachment) that calls recordInPass; record() is for an image outside a graph.
 #include <imgui.h>
 #include <vulkan/vulkan.h>
 
@@ -37,6 +35,9 @@ public:
     // (FrameSubmitter::begin waits for it). Draws nothing for empty draw data.
     void record(VkCommandBuffer cmd, const ImDrawData& data, const render::GpuImage& target,
                 VkImageLayout layout);
+    // The same inside a frame-graph pass: `target` is already in COLOR_ATTACHMENT_OPTIMAL and
+    // the graph placed the barriers around the pass, so none is recorded here.
+    void recordInPass(VkCommandBuffer cmd, const ImDrawData& data, const render::GpuImage& target);
 
 private:
     void uploadFontAtlas();

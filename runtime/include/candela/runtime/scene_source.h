@@ -1,5 +1,7 @@
 #pragma once
-// Turns the `<scene>` argument into what the frame loop draws.
+// Turns a `<scene>` argument (a scene file, a glTF, builtin:demo, builtin:triangle) into what
+// the frame loop draws: the one place `candela run` and the editor open scenes. Engine-side
+// (render types): games load their levels through SceneWorld instead.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -18,8 +20,8 @@ struct LoadedScene {
     std::string name;
     render::FrameInputs frame;          // background; the test triangle for builtin:triangle
     std::unique_ptr<SceneWorld> world;  // entities to draw; null for builtin:triangle
-    // The scene's own systems (animation, camera), run every frame in this order.
-    std::vector<std::pair<std::string, System>> systems;
+    // Adds the scene's own systems (animation, camera) to an application; null: none.
+    std::function<void(Application&)> addSystems;
 };
 
 // Returns the scene, or nullopt with `error` naming the scene and the problem. Problems that
