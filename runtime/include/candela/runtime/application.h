@@ -53,8 +53,6 @@ namespace candela::runtime {
 
 struct ExtractedFrame;
 
-};
-
 using System = std::function<void(SceneWorld&, const FrameContext&)>;
 // Runs once per frame after input is gathered, before systems (scripts, scene switching).
 using FrameCallback = std::function<void(const FrameContext&)>;
