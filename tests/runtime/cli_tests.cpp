@@ -19,27 +19,16 @@
 #include "candela/content/exr_image.h"
 #include "full_filesystem.h"
 #include "image_files.h"
+#include "run_command.h"
 
 namespace {
 
-struct RunResult {
-    int exitCode = -1;
-    std::string output;  // stdout and stderr together
-};
+using candela::testing::runCommand;
+using candela::testing::RunResult;
 
 // `environment`: variable assignments for the shell to put before the command.
 RunResult runCandela(const std::string& args, const std::string& environment = "") {
-    std::string command = environment + std::string(CANDELA_EXECUTABLE) + " " + args + " 2>&1";
-    RunResult result;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
-        result.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    // A crash (signal) leaves exitCode at -1 so tests see it as a failure, not a code.
-    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
-    return result;
+    return runCommand(environment + std::string(CANDELA_EXECUTABLE) + " " + args);
 }
 
 std::string readBytes(const std::filesystem::path& path) {

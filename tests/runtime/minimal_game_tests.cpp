@@ -13,27 +13,18 @@
 #include <vector>
 
 #include "image_files.h"
+#include "run_command.h"
 
 namespace {
 
-struct RunResult {
-    int exitCode = -1;
-    std::string output;
-};
+using candela::testing::runCommand;
+using candela::testing::RunResult;
 
+// MINIMAL_GAME_EXECUTABLE in the environment tests another build of the game (scripts/test runs
+// these tests against the template built outside the tree on an installed engine).
 RunResult runGame(const std::string& args) {
     const char* other = std::getenv("MINIMAL_GAME_EXECUTABLE");
-    const std::string exe = other && *other ? other : MINIMAL_GAME_EXECUTABLE;
-    const std::string command = exe + " " + args + " 2>&1";
-    RunResult result;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
-        result.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
-    return result;
+    return runCommand(std::string(other && *other ? other : MINIMAL_GAME_EXECUTABLE) + " " + args);
 }
 
 const std::string kReplay = std::string(MINIMAL_GAME_DIR) + "/replays/collect.input";

@@ -14,13 +14,12 @@
 #include <vector>
 
 #include "full_filesystem.h"
+#include "run_command.h"
 
 namespace {
 
-struct RunResult {
-    int exitCode = -1;
-    std::string output;
-};
+using candela::testing::runCommand;
+using candela::testing::RunResult;
 
 // ORB_GAME_EXECUTABLE in the environment tests another build of the game (scripts/test runs
 // these tests against the game built outside the tree on an installed engine).
@@ -30,16 +29,7 @@ std::string gameExecutable() {
 }
 
 RunResult runGame(const std::string& args) {
-    std::string command = gameExecutable() + " " + args + " 2>&1";
-    RunResult result;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    std::array<char, 4096> buffer{};
-    while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
-        result.output.append(buffer.data(), n);
-    int status = pclose(pipe);
-    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
-    return result;
+    return runCommand(gameExecutable() + " " + args);
 }
 
 std::filesystem::path tempDir() {
