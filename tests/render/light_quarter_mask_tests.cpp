@@ -6,10 +6,13 @@
 
 #include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
+#include <random>
 
 #include "bench/analytic_floor.h"
 #include "bench/list_efficiency.h"
 #include "candela/ecs/job_system.h"
+#include "clustered/light_bounds.h"
+#include "clustered/quarter_box_test.h"
 
 using namespace candela::render;
 using namespace candela::render::bench;
@@ -138,4 +141,65 @@ TEST(LightQuarterMask, FloorsEvaluateAtMostOneAndAHalfPairsPerLitPair) {
         EXPECT_LE(e.lists, 1.5);
         EXPECT_LT(e.lists, e.listsUnmasked);
     }
+}
+
+// The walk's four-wide quarter test (quarter_box_test.h) gives the masks the scalar per-box
+// test gives, bit for bit: random spheres, capsules and cones against random clusters with one
+// to four occupied quarters, many of them grazing (radius near the distance), each mask only
+// for a light that passed the cluster box test, as in the walk.
+TEST(LightQuarterMask, FourWideTestEqualsTheScalarOne) {
+    std::mt19937 rng(22);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    auto in = [&](float lo, float hi) { return lo + (hi - lo) * unit(rng); };
+    constexpr float kPad = 1e-4f;  // as light_assignment.cpp's kPixelBoundsMargin
+    uint32_t compared = 0, partial = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        // One cluster: its quarters (some empty) and their union, in the buffer's layout.
+        float bounds[CLUSTER_BOUNDS_FLOATS];
+        float* quarters = bounds + CLUSTER_BOX_FLOATS;
+        const glm::vec3 centre(in(-4.0f, 4.0f), in(-4.0f, 4.0f), in(-40.0f, -1.0f));
+        uint32_t occupied = 0;
+        while (occupied == 0)
+            occupied = uint32_t(rng() & 15u);
+        for (int c = 0; c < 3; ++c) {
+            bounds[c] = kEmptyQuarterBound;
+            bounds[3 + c] = -kEmptyQuarterBound;
+        }
+        for (uint32_t q = 0; q < 4; ++q) {
+            for (int c = 0; c < 3; ++c) {
+                const float a = centre[c] + in(-1.0f, 1.0f), b = centre[c] + in(-1.0f, 1.0f);
+                const bool has = occupied >> q & 1u;
+                quarters[q * 6 + c] = has ? std::min(a, b) : kEmptyQuarterBound;
+                quarters[q * 6 + 3 + c] = has ? std::max(a, b) : -kEmptyQuarterBound;
+                bounds[c] = std::min(bounds[c], quarters[q * 6 + c]);
+                bounds[3 + c] = std::max(bounds[3 + c], quarters[q * 6 + 3 + c]);
+            }
+        }
+        LightInstance light;
+        const uint32_t kind = uint32_t(rng() % 3);
+        light.light.type =
+            kind == 2 ? candela::content::LightType::Spot : candela::content::LightType::Point;
+        light.position = centre + glm::vec3(in(-3.0f, 3.0f), in(-3.0f, 3.0f), in(-3.0f, 3.0f));
+        light.light.attenuationRadius = in(0.05f, 3.0f);
+        if (kind == 1) {
+            light.light.sourceLength = in(0.1f, 2.0f);
+            light.tubeAxis = glm::normalize(glm::vec3(in(-1, 1), in(-1, 1), in(-1, 1)) + 1e-3f);
+        }
+        if (kind == 2) {
+            light.light.outerConeAngle = in(0.1f, 1.3f);
+            light.direction = glm::normalize(glm::vec3(in(-1, 1), in(-1, 1), in(-1, 1)) + 1e-3f);
+        }
+        const LightBounds b = lightBoundsInView(light, glm::mat4(1.0f));
+        const glm::vec3 lo(bounds[0], bounds[1], bounds[2]), hi(bounds[3], bounds[4], bounds[5]);
+        const glm::vec3 pad(kPad * (1.0f - lo.z));
+        if (!lightTouchesBox(b, lo - pad, hi + pad)) continue;
+        const uint32_t expected = boundingShapeTouchesBoxes(b, quarters, 4, kPad);
+        ASSERT_EQ(quarterBoxesTouched(b, quarters, kPad), expected)
+            << "trial " << trial << " shape " << int(b.shape) << " occupied " << occupied;
+        ++compared;
+        partial += expected != 0 && expected != occupied;
+    }
+    // Enough cases, and enough where some occupied quarter is missed, to mean something.
+    EXPECT_GT(compared, 2000u);
+    EXPECT_GT(partial, 200u);
 }

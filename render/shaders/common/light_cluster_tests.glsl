@@ -54,7 +54,7 @@ LightBounds lightBoundsInView(Light light, mat4 view) {
     }
     float coneCos = clamp(-light.spotOffset / light.spotScale, 0.0, 1.0);
     // Spots narrower than ~80 degrees (cos 1.4 rad) get the cone test, as on the CPU.
-    if (light.type == kLightSpot && coneCos > 0.16996714) {
+    if (lightBoundsKind(light.type) == kLightBoundsCone && coneCos > 0.16996714) {
         vec3 axis = normalize(mat3(view) * light.direction);
         b.shape = kBoundsCone;
         b.segmentEnd = axis;

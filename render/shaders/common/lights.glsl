@@ -13,6 +13,20 @@ const uint kLightPoint = LIGHT_TYPE_POINT;
 const uint kLightSpot = LIGHT_TYPE_SPOT;
 const uint kLightDirectional = LIGHT_TYPE_DIRECTIONAL;
 
+// What clustered culling bounds a light type by (common/light_types.h; the render light-type
+// table's `bounds`): culling asks for the kind, never for a type.
+const uint kLightBoundsEverywhere = LIGHT_BOUNDS_EVERYWHERE;
+const uint kLightBoundsFalloff = LIGHT_BOUNDS_FALLOFF;
+const uint kLightBoundsCone = LIGHT_BOUNDS_CONE;
+const uint kLightBoundsByType[LIGHT_TYPE_COUNT] = uint[](LIGHT_BOUNDS_BY_TYPE);
+uint lightBoundsKind(uint type) {
+    return kLightBoundsByType[min(type, uint(LIGHT_TYPE_COUNT) - 1u)];
+}
+// Directional lights: listed once for every pixel, ahead of the cluster lists.
+bool lightInEveryCluster(uint type) {
+    return lightBoundsKind(type) == kLightBoundsEverywhere;
+}
+
 // Light shapes compiled into this shader variant (SPEC "Model only what a scene needs"); the
 // renderer turns off the shapes its scene does not have, and the driver drops their code.
 layout(constant_id = SPEC_SPHERE_LIGHTS_ENABLED) const bool kSphereLightsEnabled = true;

@@ -8,6 +8,7 @@
 #include "candela/ecs/job_system.h"
 #include "clustered/light_bounds.h"
 #include "clustered/light_frustum_prepass.h"
+#include "clustered/quarter_box_test.h"
 #include "lights/gpu_light_types.h"
 
 namespace candela::render {
@@ -110,8 +111,7 @@ uint32_t quarterMask(const LightBounds& b, const float* clusterBox, const float*
         return 0;
     }
     if (!perQuarter) return LIGHT_ENTRY_ALL_QUARTERS;
-    return boundingShapeTouchesBoxes(b, quarterBounds, 4, kPixelBoundsMargin)
-           << LIGHT_ENTRY_QUARTER_SHIFT;
+    return quarterBoxesTouched(b, quarterBounds, kPixelBoundsMargin) << LIGHT_ENTRY_QUARTER_SHIFT;
 }
 
 void assignOne(const ClusterGrid& grid, const WalkTables& tables, const LightBounds& b,

@@ -111,7 +111,7 @@ bool lightTouchesBox(const LightBounds& b, const glm::vec3& lo, const glm::vec3&
 uint32_t boundingShapeTouchesBoxes(const LightBounds& b, const float* boxes, uint32_t count,
                                    float padPerDepth) {
     // Spheres (and capsules' bounding spheres) inline: this runs four times per listed pair.
-    const float r = b.radius + slack(b.radius);
+    const float r = paddedBoundingRadius(b);
     uint32_t touched = 0;
     for (uint32_t i = 0; i < count; ++i) {
         const float* box = boxes + 6 * i;
@@ -124,6 +124,10 @@ uint32_t boundingShapeTouchesBoxes(const LightBounds& b, const float* boxes, uin
         touched |= reached ? 1u << i : 0u;
     }
     return touched;
+}
+
+float paddedBoundingRadius(const LightBounds& b) {
+    return b.radius + slack(b.radius);
 }
 
 bool lightReachesPositiveSide(const LightBounds& b, const glm::vec3& n) {

@@ -37,6 +37,9 @@ bool lightTouchesBox(const LightBounds& bounds, const glm::vec3& boxMin, const g
 uint32_t boundingShapeTouchesBoxes(const LightBounds& bounds, const float* boxes, uint32_t count,
                                    float padPerDepth);
 
+// The bounding sphere's radius with the float slack every sphere test here adds.
+float paddedBoundingRadius(const LightBounds& bounds);
+
 // False when the light lies entirely on the negative side of the plane n.p = 0 (n unit; the
 // tile side planes all pass through the camera).
 bool lightReachesPositiveSide(const LightBounds& bounds, const glm::vec3& planeNormal);

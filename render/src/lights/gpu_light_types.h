@@ -14,12 +14,16 @@
 
 namespace candela::render {
 
-// What clustered culling bounds a light by.
+// What clustered culling bounds a light by; the GLSL reads the same kinds by type code
+// (LIGHT_BOUNDS_* in common/light_types.h).
 enum class ClusterBounds : uint8_t {
-    Everywhere,  // in every cluster's list (directional): listed once, ahead of the local lists
-    Falloff,     // the falloff sphere (eq. 9's window) around the source; a capsule for a tube
-    Cone,        // the spot cone out to the falloff radius (spots wider than ~80 degrees and
-                 // tubes are bounded as Falloff)
+    // In every cluster's list (directional): listed once, ahead of the local lists.
+    Everywhere = LIGHT_BOUNDS_EVERYWHERE,
+    // The falloff sphere (eq. 9's window) around the source; a capsule for a tube.
+    Falloff = LIGHT_BOUNDS_FALLOFF,
+    // The spot cone out to the falloff radius (spots wider than ~80 degrees and tubes are
+    // bounded as Falloff).
+    Cone = LIGHT_BOUNDS_CONE,
 };
 
 inline constexpr uint32_t kNoSpecialization = ~0u;
@@ -49,8 +53,19 @@ inline constexpr std::array<GpuLightTypeInfo, content::kLightTypeCount> kGpuLigh
 }};
 
 constexpr bool gpuLightTypeTableIsComplete() {
+    // The shaders' view of the bounds, by type code (common/light_types.h).
+    constexpr uint32_t kShaderBounds[] = {LIGHT_BOUNDS_BY_TYPE};
+    if (std::size(kShaderBounds) != kGpuLightTypeTable.size() ||
+        LIGHT_TYPE_COUNT != kGpuLightTypeTable.size()) {
+        return false;
+    }
     for (std::size_t i = 0; i < kGpuLightTypeTable.size(); ++i) {
         if (content::lightTypeIndex(kGpuLightTypeTable[i].type) != i) return false;
+        const uint32_t code = kGpuLightTypeTable[i].gpuType;
+        if (code >= LIGHT_TYPE_COUNT ||
+            kShaderBounds[code] != uint32_t(kGpuLightTypeTable[i].bounds)) {
+            return false;
+        }
         for (std::size_t j = 0; j < i; ++j) {  // lights.glsl tells the types apart by code
             if (kGpuLightTypeTable[j].gpuType == kGpuLightTypeTable[i].gpuType) return false;
         }
@@ -59,7 +74,8 @@ constexpr bool gpuLightTypeTableIsComplete() {
 }
 static_assert(gpuLightTypeTableIsComplete(),
               "kGpuLightTypeTable needs one row per content::LightType, in enumerator order, "
-              "each with its own LIGHT_TYPE_* code");
+              "each with its own LIGHT_TYPE_* code below LIGHT_TYPE_COUNT and the cluster bounds "
+              "LIGHT_BOUNDS_BY_TYPE gives that code (common/light_types.h)");
 
 constexpr const GpuLightTypeInfo& gpuLightType(content::LightType type) {
     return kGpuLightTypeTable[content::lightTypeIndex(type)];

@@ -115,7 +115,7 @@ void main() {
             if (count == kListOverflow) {
                 for (uint i = 0u; i < camera.frameInfo.z; ++i) {
                     // Stream 3's w is the light type (light_buffer.glsl).
-                    if (uint(lightData[3u * camera.frameInfo.w + i].w) != kLightDirectional) {
+                    if (!lightInEveryCluster(uint(lightData[3u * camera.frameInfo.w + i].w))) {
                         radiance += lightRadiance(surface, P, N, V, R, alpha, i);
                     }
                 }

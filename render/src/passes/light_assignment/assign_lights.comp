@@ -133,7 +133,7 @@ void main() {
     uint lightIndex = gl_GlobalInvocationID.x;
     if (lightIndex >= push.lightCount) return;
     Light light = loadLight(lightIndex, push.lightCapacity);
-    if (light.type == kLightDirectional) return;  // listed once for every pixel
+    if (lightInEveryCluster(light.type)) return;  // listed once for every pixel
     sliceNear = uintBitsToFloat(depthRange[2]);
     logRatio = uintBitsToFloat(depthRange[3]);
     LightBounds b = lightBoundsInView(light, push.view);

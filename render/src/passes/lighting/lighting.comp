@@ -315,7 +315,7 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
         if (count == kListOverflow) {
             for (uint i = 0u; i < camera.frameInfo.z; ++i) {
                 // Stream 3's w is the light type (light_buffer.glsl).
-                if (uint(lightData[3u * camera.frameInfo.w + i].w) != kLightDirectional) {
+                if (!lightInEveryCluster(uint(lightData[3u * camera.frameInfo.w + i].w))) {
                     addLight(px, i);
                 }
             }
