@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
+#include "candela/render/environment.h"
 #include "candela/render/frame_submitter.h"
 #include "candela/render/gpu_context.h"
 #include "candela/render/scene_resources.h"
@@ -176,7 +178,17 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     // The environment BRDF LUT is the same for every sky: built once, when first needed (the
     // energy-conserving BRDF reads its directional albedo for every light, sky or not).
     const bool needsLut = features.ibl || features.brdf == BrdfModel::EnergyConserving;
-    if (needsLut && !brdfLut_) brdfLut_ = std::make_unique<EnvironmentBrdfLut>(context_);
+    // Its texels come from the environment cache folder after the first run (390 ms of
+    // lavapipe otherwise); a cache problem is a warning and a rebuild.
+    if (needsLut && !brdfLut_) {
+        std::vector<std::string> warnings;
+        brdfLut_ =
+            EnvironmentBrdfLut::loadOrBuild(context_, defaultEnvironmentCacheDirectory(), warnings);
+        for (const std::string& w : warnings)
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
+        stats_.brdfLutSource = brdfLut_->sourceName();
+        stats_.brdfLutMs = brdfLut_->buildMs();
+    }
     // The reference mode also samples the sky by luminance: a table per environment.
     if (features.ibl == IblMode::Reference &&
         (!samplingTable_ || samplingTable_->source() != resources.environment())) {

@@ -91,6 +91,9 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
         {"compiled_frames",
          std::count_if(stats.frames.begin(), stats.frames.end(),
                        [](const render::RendererStats& f) { return !f.frameGraph.reused; })}};
+    if (!last.brdfLutSource.empty()) {
+        json["brdf_lut"] = {{"source", last.brdfLutSource}, {"ms", last.brdfLutMs}};
+    }
     if (stats.environment) {
         const render::EnvironmentBuildStats& e = *stats.environment;
         json["environment"] = {{"source", e.source},

@@ -44,6 +44,10 @@ uint64_t payloadChecksum(const CachedEnvironment& e) {
 
 }  // namespace
 
+uint64_t fnv1a64(const void* data, size_t bytes, uint64_t hash) {
+    return fnv1a(data, bytes, hash);
+}
+
 uint64_t contentHash(std::span<const std::byte> bytes) {
     uint64_t h = fnv1a(bytes.data(), bytes.size(), kFnvOffset);
     return fnv1a(&kEnvironmentPrecomputeVersion, sizeof(kEnvironmentPrecomputeVersion), h);

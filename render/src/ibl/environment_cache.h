@@ -19,6 +19,9 @@ namespace candela::render {
 constexpr uint32_t kEnvironmentPrecomputeVersion = 1;
 
 uint64_t contentHash(std::span<const std::byte> bytes);
+// FNV-1a 64 continued from `hash` (the cache files' key and payload checksum).
+constexpr uint64_t kFnv1aOffset = 1469598103934665603ull;
+uint64_t fnv1a64(const void* data, size_t bytes, uint64_t hash = kFnv1aOffset);
 
 struct CachedEnvironment {
     EnvironmentSizes sizes{};

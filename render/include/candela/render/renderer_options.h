@@ -90,6 +90,10 @@ struct RendererStats {
     using PassTime = std::pair<std::string, double>;
     std::vector<PassTime> passMs;
     FrameGraphSummary frameGraph;
+    // The environment BRDF LUT (--stats `brdf_lut`): "built", "disk_cache" or "process_cache"
+    // (empty until a frame needed it), and the milliseconds it took to build or load.
+    std::string brdfLutSource;
+    double brdfLutMs = 0.0;
 };
 
 }  // namespace candela::render
