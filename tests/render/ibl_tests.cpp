@@ -167,6 +167,120 @@ TEST(EnvironmentBrdfLut, MatchesDoublePrecisionEq8AtEveryTexel) {
     EXPECT_EQ(context.validationMessages(), 0u);
 }
 
+namespace {
+
+std::vector<uint8_t> lutImageBytes(GpuContext& context, const EnvironmentBrdfLut& lut) {
+    return readImage(context, lut.image(), 8, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+std::string fileBytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void writeBytes(const std::filesystem::path& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+bool anyWarningContains(const std::vector<std::string>& warnings, const std::string& text) {
+    return std::any_of(warnings.begin(), warnings.end(),
+                       [&](const std::string& w) { return w.find(text) != std::string::npos; });
+}
+
+}  // namespace
+
+// The first renderer builds the LUT and writes it to the cache folder; a renderer of this
+// process reuses its texels, and another process (here: another folder holding the same
+// file) reads them from disk. Every way yields the freshly built image, texel for texel.
+TEST(EnvironmentBrdfLutCache, LoadsFromDiskAndProcessEqualToTheBuiltLut) {
+    GpuContext& context = sharedContext();
+    const EnvironmentBrdfLut built(context);
+    const std::vector<uint8_t> expected = lutImageBytes(context, built);
+    const std::filesystem::path dir = freshDirectory("brdf_lut_cache");
+    std::vector<std::string> warnings;
+
+    std::unique_ptr<EnvironmentBrdfLut> first =
+        EnvironmentBrdfLut::loadOrBuild(context, dir, warnings);
+    EXPECT_EQ(first->source(), EnvironmentBrdfLut::Source::Built);
+    EXPECT_TRUE(std::filesystem::is_regular_file(EnvironmentBrdfLut::cachePath(dir)));
+    std::unique_ptr<EnvironmentBrdfLut> again =
+        EnvironmentBrdfLut::loadOrBuild(context, dir, warnings);
+    EXPECT_EQ(again->source(), EnvironmentBrdfLut::Source::ProcessCache);
+
+    const std::filesystem::path other = freshDirectory("brdf_lut_cache_copy");
+    std::filesystem::copy_file(EnvironmentBrdfLut::cachePath(dir),
+                               EnvironmentBrdfLut::cachePath(other));
+    std::unique_ptr<EnvironmentBrdfLut> fromDisk =
+        EnvironmentBrdfLut::loadOrBuild(context, other, warnings);
+    EXPECT_EQ(fromDisk->source(), EnvironmentBrdfLut::Source::DiskCache);
+    std::printf(
+        "BRDF LUT: built in %.1f ms, loaded from disk in %.2f ms, from the process in %.2f ms\n",
+        first->buildMs(), fromDisk->buildMs(), again->buildMs());
+    EXPECT_TRUE(warnings.empty()) << warnings.front();
+
+    for (const EnvironmentBrdfLut* lut : {first.get(), again.get(), fromDisk.get()}) {
+        EXPECT_EQ(std::memcmp(lut->packedTexels(), built.packedTexels(),
+                              size_t(EnvironmentBrdfLut::kSize) * EnvironmentBrdfLut::kSize * 8),
+                  0)
+            << lut->sourceName();
+        EXPECT_EQ(lutImageBytes(context, *lut), expected) << lut->sourceName();
+    }
+    EXPECT_EQ(context.validationMessages(), 0u);
+}
+
+// A flipped payload byte (checksum) or a truncated file is noticed, warned about, rebuilt
+// and rewritten whole.
+TEST(EnvironmentBrdfLutCache, CorruptOrTruncatedEntryIsRebuiltWithAWarning) {
+    GpuContext& context = sharedContext();
+    const std::filesystem::path good = freshDirectory("brdf_lut_good");
+    std::vector<std::string> warnings;
+    std::unique_ptr<EnvironmentBrdfLut> built =
+        EnvironmentBrdfLut::loadOrBuild(context, good, warnings);
+    const std::string original = fileBytes(EnvironmentBrdfLut::cachePath(good));
+    ASSERT_GT(original.size(), 1000u);
+
+    struct Damage {
+        const char* name;
+        std::string bytes;
+        const char* problem;
+    };
+    std::string flipped = original;
+    flipped[original.size() / 2] ^= 0x40;
+    const Damage damages[] = {
+        {"corrupt", flipped, "checksum mismatch"},
+        {"truncated", original.substr(0, original.size() - 100), "wrong size"}};
+    for (const Damage& d : damages) {
+        const std::filesystem::path dir = freshDirectory(std::string("brdf_lut_") + d.name);
+        const std::filesystem::path path = EnvironmentBrdfLut::cachePath(dir);
+        writeBytes(path, d.bytes);
+        warnings.clear();
+        std::unique_ptr<EnvironmentBrdfLut> lut =
+            EnvironmentBrdfLut::loadOrBuild(context, dir, warnings);
+        EXPECT_EQ(lut->source(), EnvironmentBrdfLut::Source::Built) << d.name;
+        EXPECT_TRUE(anyWarningContains(warnings, d.problem)) << d.name;
+        EXPECT_TRUE(anyWarningContains(warnings, path.string())) << d.name;
+        EXPECT_EQ(fileBytes(path), original) << d.name << ": the entry is rewritten";
+        EXPECT_EQ(lutImageBytes(context, *lut), lutImageBytes(context, *built)) << d.name;
+    }
+    EXPECT_EQ(context.validationMessages(), 0u);
+}
+
+// A cache folder that cannot be created (a file stands in its way) costs a warning and the
+// build, never the LUT.
+TEST(EnvironmentBrdfLutCache, UnwritableCacheFolderStillBuildsTheLut) {
+    GpuContext& context = sharedContext();
+    const std::filesystem::path blocker = freshDirectory("brdf_lut_blocked") / "not_a_folder";
+    writeBytes(blocker, "x");
+    std::vector<std::string> warnings;
+    std::unique_ptr<EnvironmentBrdfLut> lut =
+        EnvironmentBrdfLut::loadOrBuild(context, blocker / "cache", warnings);
+    EXPECT_EQ(lut->source(), EnvironmentBrdfLut::Source::Built);
+    EXPECT_TRUE(anyWarningContains(warnings, "not written"));
+    const EnvironmentBrdfLut built(context);
+    EXPECT_EQ(lutImageBytes(context, *lut), lutImageBytes(context, built));
+    EXPECT_EQ(context.validationMessages(), 0u);
+}
+
 TEST(IblFurnace, WhiteLambertSphereInUniformSkyRendersRadianceOne) {
     GpuContext& context = sharedContext();
     std::shared_ptr<const Environment> sky = Environment::uniform(context, 1.0f);

@@ -160,7 +160,9 @@ EnvironmentBrdfLut::EnvironmentBrdfLut(GpuContext& context)
 EnvironmentBrdfLut::EnvironmentBrdfLut(GpuContext& context, const uint32_t* cachedTexels,
                                        Source source)
     : image_(context, {kFormat, kSize, kSize, 1, false,
-                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
+                       // TRANSFER_SRC: tests read the image back to compare cached and built.
+                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT}),
       texels_(context, VkDeviceSize(kSize) * kSize * 8,
               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
               MemoryLocation::HostVisible),
