@@ -390,6 +390,9 @@ TEST(Cli, SkyLightsTheSceneAndIsCachedAcrossRuns) {
     EXPECT_FALSE(first["environment"]["from_cache"].get<bool>());
     EXPECT_TRUE(second["environment"]["from_cache"].get<bool>());
     EXPECT_EQ(second["environment"]["precompute_ms"].get<double>(), 0.0);
+    // The environment BRDF LUT is cached in the same folder: built once, then read.
+    EXPECT_EQ(first["brdf_lut"]["source"].get<std::string>(), "built");
+    EXPECT_EQ(second["brdf_lut"]["source"].get<std::string>(), "disk_cache");
     // The cache holds exactly what the device computed: the same image either way.
     EXPECT_EQ(readBytes(dir / "first.exr"), readBytes(dir / "second.exr"));
 
@@ -401,6 +404,28 @@ TEST(Cli, SkyLightsTheSceneAndIsCachedAcrossRuns) {
     // --env replaces the scene's sky; the image changes.
     run("studio", "--env " + std::string(CANDELA_SHARED_ASSETS) + "/env/studio_small_03_1k.exr");
     EXPECT_NE(readBytes(dir / "studio.exr"), readBytes(dir / "first.exr"));
+}
+
+// A cache folder that cannot be created (a file stands in its way) costs warnings, never the
+// render: the same image as with a working cache.
+TEST(Cli, UnwritableCacheFolderStillRendersTheSameImage) {
+    auto dir = tempDir() / "unwritable_cache";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "blocker") << "x";
+    const std::string scene = std::string("run ") + CANDELA_SOURCE_DIR +
+                              "/tests/scenes/spot_light.scene.json --headless --size 32x32 "
+                              "--frames 1 --capture ";
+    RunResult blocked =
+        runCandela(scene + (dir / "blocked.exr").string(),
+                   "CANDELA_CACHE_DIR=" + (dir / "blocker" / "cache").string() + " ");
+    EXPECT_EQ(blocked.exitCode, 0) << blocked.output;
+    EXPECT_NE(blocked.output.find("BRDF LUT cache not written"), std::string::npos)
+        << blocked.output;
+    RunResult cached = runCandela(scene + (dir / "cached.exr").string(),
+                                  "CANDELA_CACHE_DIR=" + (dir / "cache").string() + " ");
+    EXPECT_EQ(cached.exitCode, 0) << cached.output;
+    EXPECT_EQ(readBytes(dir / "blocked.exr"), readBytes(dir / "cached.exr"));
 }
 
 TEST(Cli, BadSkyFileGivesAClearErrorAndTheNeutralSky) {
