@@ -240,6 +240,16 @@ TEST_F(EditorModel, SaveWritesEditsHierarchyAndRebasedAssetPaths) {
     EXPECT_TRUE(scene->modified());
 }
 
+// The scene-wide "brdf" is no entity's component: a save must not drop it (it did before).
+TEST_F(EditorModel, SaveKeepsTheScenesBrdfSetting) {
+    EXPECT_FALSE(saveAndLoad(dir / "saved" / "none.scene.json").brdf.has_value());
+    scene->setSceneBrdf(content::SceneBrdf::Ue4);
+    ASSERT_TRUE(setLumens("lamp", 900.0f));
+    const content::SceneDocument doc = saveAndLoad(dir / "saved" / "ue4.scene.json");
+    ASSERT_TRUE(doc.brdf.has_value());
+    EXPECT_EQ(*doc.brdf, content::SceneBrdf::Ue4);
+}
+
 TEST_F(EditorModel, SavingIntoAMissingDirectoryFailsNamingTheFileAndKeepsModified) {
     ASSERT_TRUE(setLumens("lamp", 1600.0f));
     const fs::path bad = dir / "no_such_dir" / "x.scene.json";

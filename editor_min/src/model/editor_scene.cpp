@@ -99,7 +99,7 @@ std::string EditorScene::displayName(ecs::Entity e) const {
 
 std::string EditorScene::save(const std::filesystem::path& path, bool replaceReadOnly) {
     std::string error =
-        saveEditedScene(registry_, sourcePath_, path,
+        saveEditedScene(registry_, sourcePath_, path, sceneBrdf_,
                         content::AtomicWriteOptions{.replaceReadOnly = replaceReadOnly});
     if (error.empty()) savedRevision_ = commands_.revision();
     return error;

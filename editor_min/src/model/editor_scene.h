@@ -5,10 +5,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "candela/content/scene_file.h"
 #include "candela/ecs/entity.h"
 #include "candela/ecs/registry.h"
 #include "model/command_stack.h"
@@ -25,6 +27,8 @@ public:
 
     ecs::Registry& registry() { return registry_; }
     const std::filesystem::path& sourcePath() const { return sourcePath_; }
+    // The opened file's scene-wide "brdf" (unset: none), written back by save().
+    void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneBrdf_ = brdf; }
 
     // Gives every entity an EditorId and makes it a scene member (so it is saved): call after
     // loading and after anything outside the editor adds entities.
@@ -74,6 +78,7 @@ private:
     uint64_t selected_ = 0;
     CommandStack commands_;
     uint64_t savedRevision_ = 0;
+    std::optional<content::SceneBrdf> sceneBrdf_;
 };
 
 }  // namespace candela::editor

@@ -43,8 +43,11 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
 
 std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path& source,
                             const std::filesystem::path& target,
+                            std::optional<content::SceneBrdf> brdf,
                             content::AtomicWriteOptions options) {
-    return content::saveSceneFile(target, documentForSaving(registry, source, target), options);
+    content::SceneDocument document = documentForSaving(registry, source, target);
+    document.brdf = brdf;
+    return content::saveSceneFile(target, document, options);
 }
 
 }  // namespace candela::editor

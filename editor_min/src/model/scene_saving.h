@@ -1,6 +1,7 @@
 #pragma once
 // Saving the edited registry as an engine scene file.
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "candela/content/scene_file.h"
@@ -15,9 +16,11 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
                                          const std::filesystem::path& target);
 
 // Atomic save (content::saveSceneFile). Empty on success, else the error naming the file. A
-// read-only target is refused unless `options.replaceReadOnly`.
+// read-only target is refused unless `options.replaceReadOnly`. `brdf` is the scene-wide
+// "brdf" setting (not an entity), kept as the opened file had it.
 std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path& source,
                             const std::filesystem::path& target,
+                            std::optional<content::SceneBrdf> brdf,
                             content::AtomicWriteOptions options = {});
 
 }  // namespace candela::editor
