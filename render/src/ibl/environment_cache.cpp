@@ -26,31 +26,26 @@ struct Header {
     uint64_t payloadChecksum;
 };
 
-constexpr uint64_t kFnvOffset = 1469598103934665603ull;
 constexpr uint64_t kFnvPrime = 1099511628211ull;
 
-uint64_t fnv1a(const void* data, size_t bytes, uint64_t hash) {
+uint64_t payloadChecksum(const CachedEnvironment& e) {
+    uint64_t h = fnv1a64(e.cube.data(), e.cube.size());
+    h = fnv1a64(e.prefiltered.data(), e.prefiltered.size(), h);
+    return fnv1a64(e.irradianceSh.data(), e.irradianceSh.size(), h);
+}
+
+}  // namespace
+
+uint64_t fnv1a64(const void* data, size_t bytes, uint64_t hash) {
     const auto* p = static_cast<const unsigned char*>(data);
     for (size_t i = 0; i < bytes; ++i)
         hash = (hash ^ p[i]) * kFnvPrime;
     return hash;
 }
 
-uint64_t payloadChecksum(const CachedEnvironment& e) {
-    uint64_t h = fnv1a(e.cube.data(), e.cube.size(), kFnvOffset);
-    h = fnv1a(e.prefiltered.data(), e.prefiltered.size(), h);
-    return fnv1a(e.irradianceSh.data(), e.irradianceSh.size(), h);
-}
-
-}  // namespace
-
-uint64_t fnv1a64(const void* data, size_t bytes, uint64_t hash) {
-    return fnv1a(data, bytes, hash);
-}
-
 uint64_t contentHash(std::span<const std::byte> bytes) {
-    uint64_t h = fnv1a(bytes.data(), bytes.size(), kFnvOffset);
-    return fnv1a(&kEnvironmentPrecomputeVersion, sizeof(kEnvironmentPrecomputeVersion), h);
+    const uint64_t h = fnv1a64(bytes.data(), bytes.size());
+    return fnv1a64(&kEnvironmentPrecomputeVersion, sizeof(kEnvironmentPrecomputeVersion), h);
 }
 
 std::filesystem::path environmentCachePath(const std::filesystem::path& directory, uint64_t hash) {
