@@ -146,24 +146,32 @@ float visibleNormalSampleWeightShaded(float alpha, float NoV, float NoL) {
     return visibleNormalSampleWeight(alpha, NoV, NoL);
 }
 
-// (scale, bias) of F0 in the integral of the specular BRDF over a white environment (eq. 8):
-// the same D, Vis (eq. 4) and pow5 Fresnel split, by sampling visible normals. The LUT
-// stores this over (NoV, roughness).
-vec2 integrateEnvironmentBrdf(float roughness, float NoV, uint sampleCount) {
-    NoV = max(NoV, 1e-4);
+// The sample loop of eq. 8 both LUT pairs share: (scale, bias) of F0 by sampling visible
+// normals, with Schlick-Smith (eq. 4) or, `heightCorrelated`, exact height-correlated Smith in
+// the weight.
+vec2 integrateVisibleNormals(float alpha, float NoV, uint sampleCount, bool heightCorrelated) {
     vec3 V = vec3(sqrt(1.0 - NoV * NoV), 0.0, NoV);
-    float alpha = roughness * roughness;
     vec2 ab = vec2(0.0);
     for (uint i = 0u; i < sampleCount; ++i) {
         vec3 H = importanceSampleGgxVisible(hammersley(i, sampleCount, vec2(0.0)), alpha, V);
         float VoH = dot(V, H);
         float NoL = 2.0 * VoH * H.z - V.z;
         if (NoL <= 0.0 || VoH <= 0.0) continue;
-        float weight = visibleNormalSampleWeight(alpha, NoV, NoL);
-        float fc = pow(1.0 - VoH, 5.0);
+        float weight = heightCorrelated ? visibleNormalSampleWeightCorrelated(alpha, NoV, NoL)
+                                        : visibleNormalSampleWeight(alpha, NoV, NoL);
+        // VoH rounds to just over 1 at some texels, and pow() of a negative base is NaN (one
+        // texel of the height-correlated pair came out 0 before the clamp).
+        float fc = pow(max(1.0 - VoH, 0.0), 5.0);
         ab += vec2(1.0 - fc, fc) * weight;
     }
     return ab / float(sampleCount);
+}
+
+// (scale, bias) of F0 in the integral of the specular BRDF over a white environment (eq. 8):
+// the same D, Vis (eq. 4) and pow5 Fresnel split, by sampling visible normals. The LUT
+// stores this over (NoV, roughness).
+vec2 integrateEnvironmentBrdf(float roughness, float NoV, uint sampleCount) {
+    return integrateVisibleNormals(roughness * roughness, max(NoV, 1e-4), sampleCount, false);
 }
 
 // integrateEnvironmentBrdf with exact height-correlated Smith visibility: the LUT's second
@@ -174,22 +182,8 @@ vec2 integrateEnvironmentBrdf(float roughness, float NoV, uint sampleCount) {
 // E_ss compensates (below it fp32 visible-normal sampling at grazing views falls apart; the
 // albedo there is 1 within 1e-3 either way).
 vec2 integrateEnvironmentBrdfCorrelated(float roughness, float NoV, uint sampleCount) {
-    NoV = max(NoV, 1e-7);
-    vec3 V = vec3(sqrt(1.0 - NoV * NoV), 0.0, NoV);
-    float alpha = alphaFromRoughness(roughness);
-    vec2 ab = vec2(0.0);
-    for (uint i = 0u; i < sampleCount; ++i) {
-        vec3 H = importanceSampleGgxVisible(hammersley(i, sampleCount, vec2(0.0)), alpha, V);
-        float VoH = dot(V, H);
-        float NoL = 2.0 * VoH * H.z - V.z;
-        if (NoL <= 0.0 || VoH <= 0.0) continue;
-        float weight = visibleNormalSampleWeightCorrelated(alpha, NoV, NoL);
-        // VoH rounds to just over 1 at some texels, and pow() of a negative base is NaN (one
-        // texel of this pair came out 0 before the clamp).
-        float fc = pow(max(1.0 - VoH, 0.0), 5.0);
-        ab += vec2(1.0 - fc, fc) * weight;
-    }
-    return ab / float(sampleCount);
+    return integrateVisibleNormals(alphaFromRoughness(roughness), max(NoV, 1e-7), sampleCount,
+                                   true);
 }
 
 // The LUT's height-correlated pair (.ba) is laid out on its own grid: texel (x, y) holds
