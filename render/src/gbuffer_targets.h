@@ -6,6 +6,9 @@
 //   specularModel   RGBA8_UNORM  r specular, g shading model ID / 255 (exact for IDs < 256)
 //   customData      RGBA8_UNORM  Subsurface colour + opacity, or Legacy SpecularColor
 //   depth           D32_SFLOAT   reverse-Z (see CameraView)
+//   motion          RG16_SFLOAT  screen-space motion, current - previous texture coordinates
+//                                (motion_vectors.glsl); 0 where nothing is drawn. Also
+//                                written (alpha-blended) by the forward transparency pass.
 // Emissive goes straight into the HDR target, which the lighting pass then adds to.
 #include <array>
 #include <cstdint>
@@ -22,6 +25,8 @@ struct GBufferTargets {
         "gbuffer.base_color", "gbuffer.normal_rough_metal", "gbuffer.specular_model",
         "gbuffer.custom_data"};
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+    static constexpr VkFormat kMotionFormat = VK_FORMAT_R16G16_SFLOAT;
+    static constexpr const char* kMotionName = "gbuffer.motion";
 
     static ImageDesc colorDesc(size_t index, uint32_t width, uint32_t height) {
         return {kColorFormats[index],
@@ -38,8 +43,15 @@ struct GBufferTargets {
             false,        VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
     }
 
+    static ImageDesc motionDesc(uint32_t width, uint32_t height) {
+        return {kMotionFormat, width,
+                height,        1,
+                false,         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
+    }
+
     std::array<ImageRef, 4> color;
     ImageRef depth;
+    ImageRef motion;
 };
 
 }  // namespace candela::render

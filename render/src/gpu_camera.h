@@ -10,6 +10,9 @@ struct GpuCamera {
     glm::mat4 inverseViewProjection;
     glm::vec4 cameraPosition;
     glm::uvec4 frameInfo;  // width, height, light count, unused
+    glm::mat4 unjitteredViewProjection;
+    glm::mat4 previousViewProjection;  // unjittered
+    glm::vec4 jitter;                  // xy: this frame's (pixels), zw: the previous frame's
 };
 
 }  // namespace candela::render

@@ -21,10 +21,13 @@
 #include "ibl/environment_sampling_table.h"
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
+#include "passes/bloom/bloom_pass.h"
 #include "passes/debug_text/debug_text_pass.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
+#include "passes/fxaa/fxaa_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
+#include "passes/taa/taa_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "vk/vk_check.h"
@@ -39,6 +42,18 @@ const char* iblModeName(IblMode mode) {
             return "mobile";
         case IblMode::Reference:
             return "reference";
+    }
+    return "unknown";
+}
+
+const char* antiAliasingName(AntiAliasing aa) {
+    switch (aa) {
+        case AntiAliasing::Off:
+            return "off";
+        case AntiAliasing::Fxaa:
+            return "fxaa";
+        case AntiAliasing::Taa:
+            return "taa";
     }
     return "unknown";
 }
@@ -112,6 +127,9 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     environmentPlaceholders_ = std::make_unique<EnvironmentPlaceholders>(context_);
     transparentPass_ = std::make_unique<ForwardTransparentPass>(context_);
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
+    if (options_.aa == AntiAliasing::Taa) taaPass_ = std::make_unique<TaaPass>(context_);
+    if (options_.aa == AntiAliasing::Fxaa) fxaaPass_ = std::make_unique<FxaaPass>(context_);
+    if (options_.bloomStrength > 0.0f) bloomPass_ = std::make_unique<BloomPass>(context_);
 }
 
 Renderer::~Renderer() {
@@ -137,9 +155,22 @@ void Renderer::resize(uint32_t width, uint32_t height) {
 
 void Renderer::createTargets() {
     // RGBA32F, not 16F: captures are compared at 1e-4..1e-5 relative, below half precision.
-    hdr_ = GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
-                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
-                                   VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+    // Transfer destination: TAA copies its resolve back into it.
+    hdr_ =
+        GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+    if (options_.aa == AntiAliasing::Taa) {
+        // RGBA32F like the target it is copied into; alpha counts the samples it holds.
+        for (GpuImage& h : history_) {
+            h = GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
+                                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                        VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+        }
+    }
+    historyValid_ = false;
+    hasPreviousFrame_ = false;
+    frameIndex_ = 0;
     // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
     ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
@@ -154,19 +185,45 @@ void Renderer::uploadFrameData(const FrameInputs& inputs) {
     const CameraView& view = scene.camera;
     clusters_->setView(view, width_, height_);
 
+    // TAA: the projection moves by a sub-pixel offset from a fixed Halton sequence, so a static
+    // image gathers kJitterPhases different samples per pixel (deterministic for goldens).
+    glm::vec2 jitter(0.0f);
+    if (options_.aa == AntiAliasing::Taa) {
+        jitter = {TaaPass::jitterX(frameIndex_), TaaPass::jitterY(frameIndex_)};
+    }
+    glm::mat4 jitterNdc(1.0f);
+    jitterNdc[3][0] = 2.0f * jitter.x / float(width_);
+    jitterNdc[3][1] = 2.0f * jitter.y / float(height_);
+    const glm::mat4 unjittered = view.projection * view.view;
     GpuCamera camera{};
-    camera.viewProjection = view.projection * view.view;
+    camera.viewProjection = jitterNdc * unjittered;
     camera.inverseViewProjection = glm::inverse(camera.viewProjection);
     camera.cameraPosition = glm::vec4(view.position, 1.0f);
     camera.frameInfo = glm::uvec4(width_, height_, lights_->count(), lights_->capacity());
+    camera.unjitteredViewProjection = unjittered;
+    camera.previousViewProjection = hasPreviousFrame_ ? previousViewProjection_ : unjittered;
+    camera.jitter = glm::vec4(jitter, previousJitter_);
     std::memcpy(cameraBuffer_.mapped(), &camera, sizeof(camera));
+    previousViewProjection_ = unjittered;
+    previousJitter_ = jitter;
+    hasPreviousFrame_ = true;
+    ++frameIndex_;
+
+    // Each draw's world matrix last frame: given by the caller (moving objects), else its
+    // current one (no motion of its own).
+    ensureHostBuffer(context_, previousWorlds_,
+                     std::max<size_t>(scene.draws.size(), 1) * sizeof(glm::mat4));
+    auto* previous = static_cast<glm::mat4*>(previousWorlds_.mapped());
+    const bool given = scene.previousWorlds.size() == scene.draws.size();
+    for (size_t i = 0; i < scene.draws.size(); ++i)
+        previous[i] = given ? scene.previousWorlds[i] : scene.draws[i].world;
 }
 
 // The handles of one frame's scene passes. Passes capture resource ids by value; the
 // versions they read are declared through the builder.
 struct Renderer::SceneHandles {
     std::array<ResourceHandle, 4> color;
-    ResourceHandle depth, hdr, camera, lights;
+    ResourceHandle depth, motion, hdr, camera, lights;
     ClusterLightLists::Lists clusters;
 };
 
@@ -197,8 +254,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     features_ = features.names();
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
-    const bool blended = transparentPass_->prepare(inputs.scene, resources, features);
     uploadFrameData(inputs);
+    const bool blended =
+        transparentPass_->prepare(inputs.scene, resources, features, previousWorlds_);
     stats_.lights = lights_->count();
     stats_.lightsRewritten = lights_->rewrittenLastUpdate();
     stats_.lightAssignMs = 0.0;
@@ -211,6 +269,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                    GBufferTargets::colorDesc(i, width_, height_));
     }
     h.depth = g.createImage("gbuffer.depth", GBufferTargets::depthDesc(width_, height_));
+    h.motion =
+        g.createImage(GBufferTargets::kMotionName, GBufferTargets::motionDesc(width_, height_));
     h.camera = g.importBuffer("camera", &cameraBuffer_);
     h.lights = g.importBuffer("lights", &lights_->buffer());
     const ResourceHandle pairCounts =
@@ -222,18 +282,21 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         for (size_t i = 0; i < targets.color.size(); ++i)
             targets.color[i] = ctx.image(ids.color[i]);
         targets.depth = ctx.image(ids.depth);
+        targets.motion = ctx.image(ids.motion);
         return targets;
     };
     {
-        auto p = g.addPass("gbuffer", PassKind::Device,
-                           [this, gbufferViews, ids, &inputs, &resources](PassContext& ctx) {
-                               gbufferPass_->record(ctx.cmd(), gbufferViews(ctx),
-                                                    ctx.image(ids.hdr), inputs.clearRadiance,
-                                                    inputs.scene, resources, cameraBuffer_);
-                           });
+        auto p =
+            g.addPass("gbuffer", PassKind::Device,
+                      [this, gbufferViews, ids, &inputs, &resources](PassContext& ctx) {
+                          gbufferPass_->record(ctx.cmd(), gbufferViews(ctx), ctx.image(ids.hdr),
+                                               inputs.clearRadiance, inputs.scene, resources,
+                                               cameraBuffer_, previousWorlds_);
+                      });
         p.read(h.camera, Use::Uniform, kRasterStages);
         for (ResourceHandle& c : h.color)
             c = p.write(c, Use::ColorAttachment);
+        h.motion = p.write(h.motion, Use::ColorAttachment);
         h.depth = p.write(h.depth, Use::DepthWrite);
         h.hdr = p.write(h.hdr, Use::ColorAttachment);
     }
@@ -282,15 +345,16 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
     if (blended) {
-        auto p = g.addPass("forward_transparent", PassKind::Device,
-                           [this, ids, environment, skyIntensity, &resources](PassContext& ctx) {
-                               transparentPass_->recordShading(
-                                   ctx.cmd(), resources,
-                                   {ctx.image(ids.hdr), ctx.image(ids.depth), &cameraBuffer_,
-                                    &lights_->buffer(), &clusters_->ranges(), &clusters_->indices(),
-                                    &clusters_->depthRange(), &clusters_->grid(),
-                                    clusters_->directionalCount(), &environment, skyIntensity});
-                           });
+        auto p =
+            g.addPass("forward_transparent", PassKind::Device,
+                      [this, ids, environment, skyIntensity, &resources](PassContext& ctx) {
+                          transparentPass_->recordShading(
+                              ctx.cmd(), resources,
+                              {ctx.image(ids.hdr), ctx.image(ids.motion), ctx.image(ids.depth),
+                               &cameraBuffer_, &lights_->buffer(), &clusters_->ranges(),
+                               &clusters_->indices(), &clusters_->depthRange(), &clusters_->grid(),
+                               clusters_->directionalCount(), &environment, skyIntensity});
+                      });
         p.read(h.depth, Use::DepthRead);
         p.read(h.camera, Use::Uniform, kRasterStages);
         p.read(h.lights, Use::StorageRead, kFragmentStage);
@@ -300,8 +364,11 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             p.read(h.clusters.depthRange, Use::StorageRead, kFragmentStage);
         }
         h.hdr = p.write(h.hdr, Use::ColorAttachment);
+        h.motion = p.write(h.motion, Use::ColorAttachment);
         features_.push_back("forward_transparency");
     }
+    motionId_ = h.motion.id;
+    motionVersion_ = h.motion.version;
     return h.hdr.version;
 }
 
@@ -355,15 +422,40 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     } else {
         hdr.version = declareScene(inputs, *resources, hdr.id);
     }
-    features_.push_back("tonemap_aces");
     const float exposure = exposureFromEv100(inputs.scene.camera.ev100);
+    if (taaPass_ && features_[0] != "test_triangle") {
+        hdr.version = declareTaa(hdr.id, hdr.version, exposure);
+    } else {
+        historyValid_ = false;  // a frame without history breaks the sequence
+    }
+    if (bloomPass_ && features_[0] != "test_triangle") {
+        hdr.version = declareBloom(hdr.id, hdr.version);
+    }
+    features_.push_back("tonemap_aces");
     {
-        auto p =
-            g.addPass("tonemap", PassKind::Device, [this, hdr, ldr, exposure](PassContext& ctx) {
-                tonemapPass_->record(ctx.cmd(), ctx.image(hdr), ctx.image(ldr), exposure);
+        // FXAA reads the tonemapped image from a transient and writes the LDR target.
+        ResourceHandle tonemapped = ldr;
+        if (fxaaPass_) {
+            tonemapped = g.createImage("fxaa.input",
+                                       {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
+                                        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
+        }
+        auto p = g.addPass(
+            "tonemap", PassKind::Device, [this, hdr, tonemapped, exposure](PassContext& ctx) {
+                tonemapPass_->record(ctx.cmd(), ctx.image(hdr), ctx.image(tonemapped), exposure);
             });
         p.read(hdr, Use::StorageRead);
-        ldr = p.write(ldr, Use::StorageWrite);
+        tonemapped = p.write(tonemapped, Use::StorageWrite);
+        if (fxaaPass_) {
+            features_.push_back("fxaa");
+            auto f = g.addPass("fxaa", PassKind::Device, [this, tonemapped, ldr](PassContext& ctx) {
+                fxaaPass_->record(ctx.cmd(), ctx.image(tonemapped), ctx.image(ldr));
+            });
+            f.read(tonemapped, Use::Sampled);
+            ldr = f.write(ldr, Use::StorageWrite);
+        } else {
+            ldr = tonemapped;
+        }
     }
     if (!inputs.text.empty()) {
         if (!debugTextPass_) debugTextPass_ = std::make_unique<DebugTextPass>(context_);
@@ -402,12 +494,92 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     return cmd;
 }
 
+uint32_t Renderer::declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposure) {
+    FrameGraph& g = *graph_;
+    features_.push_back("taa");
+    // The history written last frame is read in the state that frame left it in; the other
+    // image's contents (the frame before's) are discarded.
+    constexpr ImageState kSampledByCompute{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                           VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+    constexpr ImageState kDiscard{VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                  0};
+    const GpuImage& readImage = history_[historyWrite_ ^ 1u];
+    const GpuImage& writeImage = history_[historyWrite_];
+    const ResourceHandle history = g.importImage(
+        "taa.history", &readImage, historyValid_ ? kSampledByCompute : kDiscard, ImageState{});
+    ResourceHandle resolved =
+        g.importImage("taa.resolved", &writeImage, kDiscard, kSampledByCompute);
+    ResourceHandle hdr{hdrId, hdrVersion};
+    const ResourceHandle motion{motionId_, motionVersion_};
+    const TaaPass::Settings settings{exposure, options_.taaMinimumBlend, historyValid_,
+                                     options_.taaSharpness};
+    {
+        auto p = g.addPass("taa", PassKind::Device,
+                           [this, hdr, motion, history, resolved, settings](PassContext& ctx) {
+                               taaPass_->recordResolve(ctx.cmd(), ctx.image(hdr), ctx.image(motion),
+                                                       ctx.image(history), ctx.image(resolved),
+                                                       settings);
+                           });
+        p.read(hdr, Use::StorageRead);
+        p.read(motion, Use::Sampled);
+        p.read(history, Use::Sampled);
+        resolved = p.write(resolved, Use::StorageWrite);
+    }
+    {
+        auto p = g.addPass("taa_copy", PassKind::Device, [hdr, resolved](PassContext& ctx) {
+            TaaPass::recordCopy(ctx.cmd(), ctx.image(resolved), ctx.image(hdr));
+        });
+        p.read(resolved, Use::TransferSrc);
+        hdr = p.write(hdr, Use::TransferDst);
+    }
+    historyWrite_ ^= 1u;
+    historyValid_ = true;
+    return hdr.version;
+}
+
+uint32_t Renderer::declareBloom(uint32_t hdrId, uint32_t hdrVersion) {
+    FrameGraph& g = *graph_;
+    features_.push_back("bloom");
+    const uint32_t levelCount = BloomPass::levelCount(width_, height_);
+    std::array<ResourceHandle, BLOOM_MAX_LEVELS> levels{};
+    ResourceHandle source{hdrId, hdrVersion};
+    for (uint32_t i = 0; i < levelCount; ++i) {
+        ResourceHandle level = g.createImage("bloom.level" + std::to_string(i),
+                                             BloomPass::levelDesc(i, width_, height_));
+        auto p = g.addPass("bloom_down" + std::to_string(i), PassKind::Device,
+                           [this, source, level](PassContext& ctx) {
+                               bloomPass_->recordDownsample(ctx.cmd(), ctx.image(source),
+                                                            ctx.image(level));
+                           });
+        p.read(source, Use::StorageRead);
+        levels[i] = p.write(level, Use::StorageWrite);
+        source = levels[i];
+    }
+    ResourceHandle hdr{hdrId, hdrVersion};
+    const float strength = options_.bloomStrength;
+    auto p = g.addPass("bloom_composite", PassKind::Device,
+                       [this, hdr, levels, levelCount, strength](PassContext& ctx) {
+                           std::array<ImageRef, BLOOM_MAX_LEVELS> images{};
+                           for (uint32_t i = 0; i < levelCount; ++i)
+                               images[i] = ctx.image(levels[i]);
+                           bloomPass_->recordComposite(ctx.cmd(), ctx.image(hdr), images,
+                                                       levelCount, strength);
+                       });
+    for (uint32_t i = 0; i < levelCount; ++i)
+        p.read(levels[i], Use::Sampled);
+    hdr = p.write(hdr, Use::StorageReadWrite);
+    return hdr.version;
+}
+
 std::string Renderer::frameGraphDot() const {
     return executor_->dot(*graph_);
 }
 
 const RendererStats& Renderer::collectStats() {
     stats_.lightingMs = 0.0;
+    stats_.taaMs = 0.0;
+    stats_.bloomMs = 0.0;
     stats_.passMs.clear();
     if (!frameRecorded_) return stats_;
     const bool onDevice = clusters_->assignedOnDevice();
@@ -416,6 +588,8 @@ const RendererStats& Renderer::collectStats() {
     stats_.passMs = executor_->passTimes();
     for (const auto& [name, ms] : stats_.passMs) {
         if (name == "lighting") stats_.lightingMs = ms;
+        if (name == "taa" || name == "taa_copy") stats_.taaMs += ms;
+        if (name.starts_with("bloom_")) stats_.bloomMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
     }
     stats_.lightEvaluations = 0;

@@ -68,6 +68,23 @@ render::BrdfModel brdfFor(const ApplicationOptions& options, const SceneWorld* w
     return render::BrdfModel::EnergyConserving;
 }
 
+// --aa, else the scene file's "aa", else TAA: it cut edge error the most for its cost
+// (render/README.md "Antialiasing").
+render::AntiAliasing antiAliasingFor(const ApplicationOptions& options, const SceneWorld* world) {
+    if (options.aa) return *options.aa;
+    if (world && world->sceneAntiAliasing()) {
+        switch (*world->sceneAntiAliasing()) {
+            case content::SceneAntiAliasing::Off:
+                return render::AntiAliasing::Off;
+            case content::SceneAntiAliasing::Fxaa:
+                return render::AntiAliasing::Fxaa;
+            case content::SceneAntiAliasing::Taa:
+                return render::AntiAliasing::Taa;
+        }
+    }
+    return render::AntiAliasing::Taa;
+}
+
 }  // namespace
 
 render::ValidationMode validationModeFromEnvironment() {
@@ -420,6 +437,11 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         rendererOptions.countLightPairs = options.countLightPairs;
         rendererOptions.ibl = options.ibl;
         rendererOptions.brdf = brdfFor(options, world.get());
+        rendererOptions.aa = antiAliasingFor(options, world.get());
+        rendererOptions.bloomStrength = options.bloom ? *options.bloom
+                                        : world && world->sceneBloom()
+                                            ? *world->sceneBloom()
+                                            : ApplicationOptions::kDefaultBloom;
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
@@ -496,6 +518,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                 extractFrame(world->registry, *s.lightTable, *s.resources, aspect, s.extracted);
                 frame.scene.camera = s.extracted.camera;
                 frame.scene.draws = s.extracted.draws;
+                frame.scene.previousWorlds = s.extracted.previousWorlds;
                 frame.scene.lights = s.extracted.lights;
                 frame.scene.changedLights = s.extracted.changedLights;
                 frame.scene.lightsRestructured = s.extracted.lightsRestructured;

@@ -26,6 +26,12 @@ bool parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& hei
            width > 0 && height > 0 && width <= kMaxDimension && height <= kMaxDimension;
 }
 
+bool parseFraction(const std::string& text, float& value) {
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    return ec == std::errc() && ptr == end && value >= 0.0f && value <= 1.0f;
+}
+
 bool parseSeconds(const std::string& text, double& value) {
     const char* end = text.data() + text.size();
     auto [ptr, ec] = std::from_chars(text.data(), end, value);
@@ -61,6 +67,11 @@ constexpr std::pair<const char*, render::IblMode> kIbls[] = {
     {"mobile", render::IblMode::Mobile},
     {"reference", render::IblMode::Reference}};
 
+constexpr std::pair<const char*, render::AntiAliasing> kAntiAliasing[] = {
+    {"off", render::AntiAliasing::Off},
+    {"fxaa", render::AntiAliasing::Fxaa},
+    {"taa", render::AntiAliasing::Taa}};
+
 constexpr std::pair<const char*, render::BrdfModel> kBrdfs[] = {
     {"ue4", render::BrdfModel::Ue4}, {"energy-conserving", render::BrdfModel::EnergyConserving}};
 
@@ -80,7 +91,10 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --frame-graph FILE.dot    write the last frame's graph as Graphviz\n"
            "  --env SKY.exr             light the scene with this sky\n"
            "  --ibl split-sum|mobile|reference\n"
-           "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n";
+           "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n"
+           "  --aa off|fxaa|taa         antialiasing (default: the scene file's, else taa)\n"
+           "  --bloom FRACTION          radiance scattered into glare, 0 (off) to 1\n"
+           "                            (default: the scene file's, else 0.04)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -163,6 +177,18 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--brdf needs ue4 or energy-conserving, got '" + v + "'");
             }
             options.brdf = brdf;
+        } else if (arg == "--aa") {
+            render::AntiAliasing aa{};
+            if (!value() || !parseChoice(v, kAntiAliasing, aa)) {
+                return fail("--aa needs off, fxaa or taa, got '" + v + "'");
+            }
+            options.aa = aa;
+        } else if (arg == "--bloom") {
+            float bloom = 0.0f;
+            if (!value() || !parseFraction(v, bloom)) {
+                return fail("--bloom needs a fraction from 0 (off) to 1, got '" + v + "'");
+            }
+            options.bloom = bloom;
         } else if (others == OtherArguments::Keep) {
             result.arguments.push_back(arg);
         } else if (!arg.empty() && arg[0] == '-') {

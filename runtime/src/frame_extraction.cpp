@@ -64,6 +64,8 @@ const ExtractedFrame::OverrideMaterials* overrideMaterials(ecs::Registry& regist
 void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneResources& resources,
                   float aspect, ExtractedFrame& out) {
     out.draws.clear();
+    out.previousWorlds.clear();
+    out.lastWorldNext.clear();
     out.hasCamera = false;
     // Debug text is per frame: taken from the world, which starts the next frame empty.
     out.text.clear();
@@ -81,6 +83,9 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                 return;
             }
             uint32_t first = uploaded.firstPrimitiveOfMesh[instance.mesh];
+            auto last = out.lastWorld.find(e.bits());
+            const glm::mat4 previousWorld = last != out.lastWorld.end() ? last->second : world;
+            out.lastWorldNext[e.bits()] = world;
             const ExtractedFrame::OverrideMaterials* overrides =
                 overrideMaterials(registry, e, *instance.model, resources, out);
             for (uint32_t p = 0; p < uploaded.primitiveCountOfMesh[instance.mesh]; ++p) {
@@ -91,8 +96,11 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                     }
                 }
                 out.draws.push_back({first + p, material, world});
+                out.previousWorlds.push_back(previousWorld);
             }
         });
+
+    out.lastWorld.swap(out.lastWorldNext);
 
     lights.update();
     out.lights = lights.lights();

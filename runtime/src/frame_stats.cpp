@@ -56,6 +56,8 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["light_assign_ms"] =
         median(collect(stats.frames, [](auto& f) { return f.lightAssignMs; }));
     json["lighting_ms"] = median(collect(stats.frames, [](auto& f) { return f.lightingMs; }));
+    json["taa_ms"] = median(collect(stats.frames, [](auto& f) { return f.taaMs; }));
+    json["bloom_ms"] = median(collect(stats.frames, [](auto& f) { return f.bloomMs; }));
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;

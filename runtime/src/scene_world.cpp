@@ -92,6 +92,8 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     content::instantiateScene(registry, *scene, path, cache_, diagnostics);
     sceneFile_ = path;
     sceneBrdf_ = scene->brdf;
+    sceneAntiAliasing_ = scene->aa;
+    sceneBloom_ = scene->bloom;
     return true;
 }
 

@@ -165,6 +165,32 @@ TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("energy-conserving")) << badDiagnostics.toString();
 }
 
+// Issue 24: the top-level "aa" and "bloom" survive save and load; bad values are named.
+TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
+    SceneDocument scene = exampleScene();
+    scene.aa = SceneAntiAliasing::Fxaa;
+    scene.bloom = 0.0f;  // the scene turns bloom off
+    std::string error;
+    const std::string text = sceneToJson(scene, error);
+    ASSERT_EQ(error, "");
+    Diagnostics diagnostics;
+    auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "aa.scene.json", diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_EQ(loaded->aa, SceneAntiAliasing::Fxaa);
+    EXPECT_EQ(loaded->bloom, 0.0f);
+
+    const std::string bad = R"({"format": "candela.scene", "version": 1, "aa": "msaa8",
+                               "bloom": 3, "entities": []})";
+    Diagnostics badDiagnostics;
+    auto fallback = parseSceneJson(std::as_bytes(std::span(bad)), "bad.scene.json", badDiagnostics);
+    ASSERT_TRUE(fallback);
+    EXPECT_FALSE(fallback->aa.has_value());
+    EXPECT_FALSE(fallback->bloom.has_value());
+    EXPECT_TRUE(badDiagnostics.mentions("bad.scene.json")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("/aa")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("/bloom")) << badDiagnostics.toString();
+}
+
 TEST(SceneFile, RefusesToSaveNonFiniteValuesAndKeepsTheOldFile) {
     const auto path = testing::tempPath("level.scene.json");
     ASSERT_EQ(saveSceneFile(path, exampleScene()), "");

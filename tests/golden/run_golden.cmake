@@ -44,9 +44,19 @@ endforeach()
 file(REMOVE "${exr}" "${png}" "${stats}")
 file(MAKE_DIRECTORY "${GOLDEN_OUTPUT_DIR}")
 
+# Pinned: antialiasing and bloom off (the application's defaults are TAA, whose jitter and
+# history make the image depend on the frame count, and a little bloom), so these images keep
+# testing one unfiltered sample per pixel of the scene's radiance.
+if(NOT GOLDEN_AA)
+  set(GOLDEN_AA off)
+endif()
+if(NOT DEFINED GOLDEN_BLOOM)
+  set(GOLDEN_BLOOM 0)
+endif()
 execute_process(
   COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
           --frames "${GOLDEN_FRAMES}" --capture "${exr}" --capture "${png}" --stats "${stats}"
+          --aa "${GOLDEN_AA}" --bloom "${GOLDEN_BLOOM}"
   RESULT_VARIABLE engine_result OUTPUT_VARIABLE engine_output ERROR_VARIABLE engine_output)
 message("${engine_output}")
 if(engine_result EQUAL 3)

@@ -86,6 +86,21 @@ TEST(ApplicationOptions, BadValuesNameTheFlagAndTheValue) {
               std::string::npos);
 }
 
+TEST(ApplicationOptions, AntiAliasingAndBloomFlags) {
+    CommandLine result = parseCommandLine({"--aa", "fxaa", "--bloom", "0.1"});
+    ASSERT_TRUE(result) << result.error;
+    EXPECT_EQ(result.options->aa, candela::render::AntiAliasing::Fxaa);
+    EXPECT_EQ(result.options->bloom, 0.1f);
+    CommandLine none = parseCommandLine({});
+    ASSERT_TRUE(none);
+    EXPECT_FALSE(none.options->aa.has_value());  // the scene file's, else TAA
+    EXPECT_FALSE(none.options->bloom.has_value());
+    EXPECT_NE(parseError({"--aa", "smaa"}).find("--aa needs off, fxaa or taa, got 'smaa'"),
+              std::string::npos);
+    EXPECT_NE(parseError({"--bloom", "2"}).find("--bloom needs a fraction"), std::string::npos);
+    EXPECT_NE(parseError({"--bloom", "-0.1"}).find("got '-0.1'"), std::string::npos);
+}
+
 TEST(ApplicationOptions, HelpAsksForTheUsageAndSucceeds) {
     CommandLine result = parseCommandLine({"--frames", "3", "--help"});
     EXPECT_FALSE(result);

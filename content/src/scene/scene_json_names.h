@@ -41,6 +41,10 @@ inline constexpr EnumNames<ColorSpace, 2> kColorSpaces{
 
 inline constexpr EnumNames<SceneBrdf, 2> kSceneBrdfs{
     {{SceneBrdf::Ue4, "ue4"}, {SceneBrdf::EnergyConserving, "energy-conserving"}}};
+inline constexpr EnumNames<SceneAntiAliasing, 3> kSceneAntiAliasing{
+    {{SceneAntiAliasing::Off, "off"},
+     {SceneAntiAliasing::Fxaa, "fxaa"},
+     {SceneAntiAliasing::Taa, "taa"}}};
 
 template <typename E, std::size_t N>
 std::string_view nameOf(const EnumNames<E, N>& names, E value) {

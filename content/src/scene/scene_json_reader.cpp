@@ -459,6 +459,22 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             scene.brdf = brdf;
         }
     }
+    if (root.contains("bloom")) {
+        float bloom = 0.0f;
+        if (reader.clean([&] { reader.number(root, "", "bloom", bloom); })) {
+            if (bloom >= 0.0f && bloom <= 1.0f) {
+                scene.bloom = bloom;
+            } else {
+                reader.clean([&] { reader.error("/bloom", "expected a fraction from 0 to 1"); });
+            }
+        }
+    }
+    if (root.contains("aa")) {
+        SceneAntiAliasing aa = SceneAntiAliasing::Taa;
+        if (reader.clean([&] { reader.enumeration(root, "", "aa", kSceneAntiAliasing, aa); })) {
+            scene.aa = aa;
+        }
+    }
     scene.entities.reserve(entities->size());
     for (std::size_t i = 0; i < entities->size(); ++i) {
         scene.entities.push_back(

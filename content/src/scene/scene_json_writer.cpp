@@ -152,6 +152,8 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     json document = {
         {"format", kFormatName}, {"version", kSceneFileVersion}, {"entities", std::move(entities)}};
     if (scene.brdf) document["brdf"] = std::string(nameOf(kSceneBrdfs, *scene.brdf));
+    if (scene.aa) document["aa"] = std::string(nameOf(kSceneAntiAliasing, *scene.aa));
+    if (scene.bloom) document["bloom"] = *scene.bloom;
     try {
         return document.dump(2) + "\n";
     } catch (const nlohmann::json::exception& e) {  // e.g. a name that is not valid UTF-8

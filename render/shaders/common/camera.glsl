@@ -9,6 +9,11 @@ layout(std140, binding = CAMERA_BINDING) uniform CameraBlock {
     mat4 inverseViewProjection;
     vec4 cameraPosition;  // xyz, w unused
     uvec4 frameInfo;      // x, y: target size; z: light count; w: unused
+    // Motion vectors: this frame's and the previous frame's view-projection without the TAA
+    // jitter (viewProjection above has it), so a static pixel has zero motion.
+    mat4 unjitteredViewProjection;
+    mat4 previousViewProjection;
+    vec4 jitter;  // xy: this frame's jitter in pixels, zw: the previous frame's
 } camera;
 
 #endif

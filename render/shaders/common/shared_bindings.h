@@ -7,5 +7,9 @@
 #define CAMERA_BINDING 0
 // light_buffer.glsl.
 #define LIGHT_BUFFER_BINDING 1
+// gbuffer.vert: each draw's previous-frame world matrix (motion vectors), indexed by
+// gl_InstanceIndex (the draw's index in FrameScene::draws, passed as firstInstance). Above every
+// pass's own numbers so the vertex stage can join any mesh pipeline.
+#define PREVIOUS_WORLDS_BINDING 30
 
 #endif

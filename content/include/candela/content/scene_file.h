@@ -60,9 +60,17 @@ struct SceneEntity {
 // command line's --brdf overrides it. Mirrors render::BrdfModel (content does not see render).
 enum class SceneBrdf { Ue4, EnergyConserving };
 
+// The antialiasing a scene asks for (top-level "aa": "off", "fxaa" or "taa"); the command
+// line's --aa overrides it. Mirrors render::AntiAliasing.
+enum class SceneAntiAliasing { Off, Fxaa, Taa };
+
 struct SceneDocument {
     std::vector<SceneEntity> entities;
-    std::optional<SceneBrdf> brdf;  // unset: the engine's default (energy-conserving)
+    std::optional<SceneBrdf> brdf;        // unset: the engine's default (energy-conserving)
+    std::optional<SceneAntiAliasing> aa;  // unset: the engine's default (taa)
+    // Top-level "bloom": the fraction of radiance the lens scatters into glare, 0 to 1; 0
+    // turns bloom off. Unset: the engine's default.
+    std::optional<float> bloom;
 };
 
 // Where an asset path stored in a scene file points: relative paths are relative to the

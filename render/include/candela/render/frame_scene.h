@@ -37,6 +37,9 @@ struct LightInstance {
 struct FrameScene {
     CameraView camera;
     std::span<const DrawItem> draws;
+    // Motion vectors: each draw's world matrix in the previous frame, in the order of `draws`.
+    // Empty (or another size): no draw moved by itself; camera motion is always accounted for.
+    std::span<const glm::mat4> previousWorlds;
     std::span<const LightInstance> lights;
     // Light slots whose data changed since the previous frame. When lightsRestructured is set
     // (lights added or removed, or the caller does not track changes) every light is rewritten.

@@ -5,8 +5,10 @@
 //   tonemap. The graph orders the passes and places every barrier (render/README.md).
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <glm/glm.hpp>
 #include <memory>
 #include <span>
 #include <string>
@@ -34,6 +36,9 @@ class GpuLightBuffer;
 class LightingPass;
 class SceneResources;
 class TonemapPass;
+class TaaPass;
+class FxaaPass;
+class BloomPass;
 class DebugTextPass;
 class TrianglePass;
 
@@ -98,6 +103,10 @@ private:
     // Declare the frame's passes; return the HDR target's last version.
     uint32_t declareScene(const FrameInputs& inputs, SceneResources& resources, uint32_t hdr);
     void uploadFrameData(const FrameInputs& inputs);
+    // TAA after the scene's passes: resolve into the history, copy back into the HDR target.
+    uint32_t declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposure);
+    // Bloom on the HDR target: the pyramid's passes and the composite (in place).
+    uint32_t declareBloom(uint32_t hdrId, uint32_t hdrVersion);
 
     GpuContext& context_;
     RendererOptions options_;
@@ -112,6 +121,21 @@ private:
     std::unique_ptr<GpuLightBuffer> lights_;
     std::unique_ptr<ClusterLightLists> clusters_;  // grid, cluster buffers, assignment
     GpuBuffer pairCounts_;                         // uvec2 per lighting workgroup
+    // Motion vectors: each draw's previous world matrix, the previous unjittered
+    // view-projection and jitter; TAA: the two history images (read one, write the other).
+    GpuBuffer previousWorlds_;
+    glm::mat4 previousViewProjection_{1.0f};
+    glm::vec2 previousJitter_{0.0f};
+    bool hasPreviousFrame_ = false;
+    uint32_t frameIndex_ = 0;  // scene frames since creation or resize: the jitter phase
+    std::array<GpuImage, 2> history_;
+    uint32_t historyWrite_ = 0;
+    bool historyValid_ = false;
+    uint32_t motionId_ = UINT32_MAX;  // this frame's gbuffer.motion in the graph
+    uint32_t motionVersion_ = 0;
+    std::unique_ptr<TaaPass> taaPass_;
+    std::unique_ptr<FxaaPass> fxaaPass_;
+    std::unique_ptr<BloomPass> bloomPass_;
     bool frameRecorded_ = false;
     std::unique_ptr<TrianglePass> trianglePass_;
     std::unique_ptr<GBufferPass> gbufferPass_;

@@ -36,6 +36,14 @@ enum class BrdfModel {
 };
 const char* brdfModelName(BrdfModel model);  // "ue4", "energy-conserving"
 
+// Antialiasing (`--aa`, the scene file's "aa"; render/README.md "Antialiasing").
+enum class AntiAliasing {
+    Off,   // one sample per pixel
+    Fxaa,  // post-process, after tonemapping: no history, no jitter
+    Taa,   // temporal: jittered projection, history reprojected with the motion vectors
+};
+const char* antiAliasingName(AntiAliasing aa);  // "off", "fxaa", "taa"
+
 struct RendererOptions {
     LightCulling lightCulling = LightCulling::Clustered;
     LightAssignmentDevice lightAssignment = LightAssignmentDevice::Auto;
@@ -52,6 +60,15 @@ struct RendererOptions {
     IblMode ibl = IblMode::SplitSum;
     BrdfModel brdf = BrdfModel::EnergyConserving;
     uint32_t referenceSamples = 2048;  // per pixel, for each of specular and diffuse
+    // Off here so a renderer made by a test renders one plain sample per pixel; the
+    // application's default is ApplicationOptions' (TAA).
+    AntiAliasing aa = AntiAliasing::Off;
+    float taaMinimumBlend = 1.0f / 16.0f;  // lowest weight of a new sample (taa.comp)
+    float taaSharpness = 0.0f;             // 0: no sharpening
+    // Bloom: the fraction of each pixel's radiance spread over a wide glare kernel (energy-
+    // conserving: the frame's total is unchanged). 0: off (here, so tests render without it;
+    // the application's default is ApplicationOptions').
+    float bloomStrength = 0.0f;
 };
 
 // The frame graph of the last frame (--stats `frame_graph`).
@@ -94,6 +111,8 @@ struct RendererStats {
     // (empty until a frame needed it), and the milliseconds it took to build or load.
     std::string brdfLutSource;
     double brdfLutMs = 0.0;
+    double taaMs = 0.0;    // GPU: the TAA resolve and its copy back (--stats taa_ms)
+    double bloomMs = 0.0;  // GPU: the bloom pyramid and composite (--stats bloom_ms)
 };
 
 }  // namespace candela::render

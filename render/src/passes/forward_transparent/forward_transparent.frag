@@ -14,6 +14,7 @@
 #include "common/clusters.glsl"
 #include "common/light_buffer.glsl"
 #include "common/material.glsl"
+#include "common/motion_vectors.glsl"
 #include "common/shading_models.glsl"
 
 layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
@@ -56,8 +57,11 @@ layout(location = 1) in vec4 inTangent;
 layout(location = 2) in vec2 inUv0;
 layout(location = 3) in vec2 inUv1;
 layout(location = 4) in vec4 inColor;
+layout(location = 5) in vec4 inCurrentClip;
+layout(location = 6) in vec4 inPreviousClip;
 
 layout(location = 0) out vec4 outRadiance;  // cd/m^2, a = coverage
+layout(location = 1) out vec4 outMotion;    // gbuffer.motion, blended by the same coverage
 
 vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha, uint index) {
     Light light = loadLight(index, camera.frameInfo.w);
@@ -135,4 +139,5 @@ void main() {
         }
     }
     outRadiance = vec4(radiance, saturate(s.baseColor.a));
+    outMotion = vec4(screenMotion(inCurrentClip, inPreviousClip), 0.0, outRadiance.a);
 }

@@ -53,12 +53,13 @@ void setMeshVertexInput(GraphicsPipelineDesc& desc) {
     };
 }
 
-void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh) {
+// firstInstance: the draw's index in FrameScene::draws, gbuffer.vert's previous-world index.
+void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, uint32_t drawIndex) {
     VkDeviceSize offset = 0;
     VkBuffer vertexBuffer = mesh.vertices.handle();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+    vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
 }
 
 void setViewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
@@ -79,6 +80,7 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context)
     occupancy.fragmentSpirv = transparent_occupancy_frag_spv;
     const DescriptorBinding occupancyBindings[] = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+        {PREVIOUS_WORLDS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
         {TRANSPARENT_OCCUPANCY_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {TRANSPARENT_OCCUPANCY_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
@@ -111,7 +113,8 @@ void ForwardTransparentPass::buildShadingPipeline() {
     GraphicsPipelineDesc desc;
     setMeshVertexInput(desc);
     desc.fragmentSpirv = forward_transparent_frag_spv;
-    desc.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};  // the HDR target
+    desc.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT,  // the HDR target
+                         GBufferTargets::kMotionFormat};
     desc.depthFormat = GBufferTargets::kDepthFormat;
     desc.depthWrite = false;  // blended surfaces neither hide nor sort each other by depth
     desc.alphaBlend = true;
@@ -120,6 +123,7 @@ void ForwardTransparentPass::buildShadingPipeline() {
     std::vector<DescriptorBinding> bindings = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
          VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+        {PREVIOUS_WORLDS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
         {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -146,9 +150,12 @@ void ForwardTransparentPass::buildShadingPipeline() {
 }
 
 bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& resources,
-                                     const LightingFeatures& features) {
+                                     const LightingFeatures& features,
+                                     const GpuBuffer& previousWorlds) {
+    previousWorlds_ = &previousWorlds;
     order_.clear();
     sorted_.clear();
+    sortedIndex_.clear();
     for (uint32_t i = 0; i < uint32_t(scene.draws.size()); ++i) {
         const DrawItem& draw = scene.draws[i];
         if (resources.material(draw.material).alphaMode != content::AlphaMode::Blend) continue;
@@ -162,8 +169,10 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
     // sort's implementation.
     std::stable_sort(order_.begin(), order_.end(),
                      [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (const auto& [depth, index] : order_)
+    for (const auto& [depth, index] : order_) {
         sorted_.push_back(scene.draws[index]);
+        sortedIndex_.push_back(index);
+    }
     if (!built_ || !(features == features_)) {
         features_ = features;
         buildShadingPipeline();
@@ -200,8 +209,10 @@ void ForwardTransparentPass::recordMarkOccupancy(VkCommandBuffer cmd, SceneResou
                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorBufferInfo rangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo boundsInfo{in.bounds.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo previousInfo{previousWorlds_->handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(PREVIOUS_WORLDS_BINDING, &previousInfo),
         sampledImageWrite(TRANSPARENT_OCCUPANCY_BINDING_DEPTH, &depthInfo),
         storageBufferWrite(TRANSPARENT_OCCUPANCY_BINDING_DEPTH_RANGE, &rangeInfo),
         storageBufferWrite(TRANSPARENT_OCCUPANCY_BINDING_BOUNDS, &boundsInfo)};
@@ -212,11 +223,12 @@ void ForwardTransparentPass::recordMarkOccupancy(VkCommandBuffer cmd, SceneResou
     push.size[1] = height;
     push.projectionScale[0] = in.projectionScale.x;
     push.projectionScale[1] = in.projectionScale.y;
-    for (const DrawItem& draw : sorted_) {
+    for (size_t i = 0; i < sorted_.size(); ++i) {
+        const DrawItem& draw = sorted_[i];
         push.world = draw.world;
         push.material = draw.material;
         occupancy_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources.mesh(draw.mesh));
+        drawMesh(cmd, resources.mesh(draw.mesh), sortedIndex_[i]);
     }
     vkCmdEndRendering(cmd);
 }
@@ -242,11 +254,14 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
                                            const ShadingInputs& in) const {
     const uint32_t width = in.hdr.desc().width;
     const uint32_t height = in.hdr.desc().height;
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = in.hdr.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    std::array<VkRenderingAttachmentInfo, 2> colors{};
+    for (size_t i = 0; i < colors.size(); ++i) {
+        colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+        colors[i].imageView = i == 0 ? in.hdr.view() : in.motion.view();
+        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    }
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depth.imageView = in.depth.view();
     depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
@@ -255,8 +270,8 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = {{0, 0}, {width, height}};
     rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
+    rendering.colorAttachmentCount = uint32_t(colors.size());
+    rendering.pColorAttachments = colors.data();
     rendering.pDepthAttachment = &depth;
     vkCmdBeginRendering(cmd, &rendering);
     setViewport(cmd, width, height);
@@ -269,6 +284,7 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
     VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo previousInfo{previousWorlds_->handle(), 0, VK_WHOLE_SIZE};
     DrawPush push{};
     push.directionalCount = in.directionalCount;
     push.grid = toGpu(*in.grid);
@@ -276,11 +292,13 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
     push.size[1] = height;
     push.skyIntensity = in.skyIntensity;
     push.prefilteredMipCount = in.environment->prefilteredMipCount;
-    for (const DrawItem& draw : sorted_) {
+    for (size_t i = 0; i < sorted_.size(); ++i) {
+        const DrawItem& draw = sorted_[i];
         const MaterialBinding& binding = resources.materialBinding(draw.material);
         std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
         std::vector<VkWriteDescriptorSet> writes = {
             uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+            storageBufferWrite(PREVIOUS_WORLDS_BINDING, &previousInfo),
             storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
             storageBufferWrite(FORWARD_BINDING_MATERIALS, &materialInfo),
             storageBufferWrite(FORWARD_BINDING_CLUSTER_RANGES, &rangesInfo),
@@ -302,7 +320,7 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
         push.world = draw.world;
         push.material = draw.material;
         shading_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources.mesh(draw.mesh));
+        drawMesh(cmd, resources.mesh(draw.mesh), sortedIndex_[i]);
     }
     vkCmdEndRendering(cmd);
 }

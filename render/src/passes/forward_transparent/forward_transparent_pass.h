@@ -32,8 +32,10 @@ public:
     // Collects the frame's blended draws, sorted back to front by the view depth of their
     // bounds centre, and selects the shader variant. False when there are none: the frame then
     // records nothing of this pass.
+    // `previousWorlds` (one mat4 per scene draw, gbuffer.vert's motion vectors) is bound by
+    // every draw this frame records.
     bool prepare(const FrameScene& scene, SceneResources& resources,
-                 const LightingFeatures& features);
+                 const LightingFeatures& features, const GpuBuffer& previousWorlds);
     size_t drawCount() const { return sorted_.size(); }
 
     // Clustered culling only: three frame-graph passes after DepthOccupancyPass and before its
@@ -59,10 +61,12 @@ public:
                              const OccupancyInputs& in) const;
     void recordMergeOccupancy(VkCommandBuffer cmd, const OccupancyInputs& in) const;
 
-    // After the lighting pass: hdr is a ColorAttachment (blended over), depth a DepthRead
-    // attachment; the light lists and depthRange are read in the fragment shader.
+    // After the lighting pass: hdr and motion are ColorAttachments (blended over: a pane's
+    // motion weighs by its coverage), depth a DepthRead attachment; the light lists and
+    // depthRange are read in the fragment shader.
     struct ShadingInputs {
         ImageRef hdr;
+        ImageRef motion;
         ImageRef depth;
         const GpuBuffer* camera;
         const GpuBuffer* lights;
@@ -82,6 +86,8 @@ private:
 
     GpuContext& context_;
     std::vector<DrawItem> sorted_;
+    std::vector<uint32_t> sortedIndex_;  // each sorted draw's index in FrameScene::draws
+    const GpuBuffer* previousWorlds_ = nullptr;
     std::vector<std::pair<float, uint32_t>> order_;  // (view depth, draw index) scratch
     LightingFeatures features_;
     bool built_ = false;

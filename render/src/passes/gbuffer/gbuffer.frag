@@ -6,6 +6,7 @@
 #define MATERIAL_BUFFER_BINDING GBUFFER_BINDING_MATERIALS
 #define MATERIAL_TEXTURE_BINDING GBUFFER_BINDING_FIRST_TEXTURE
 #include "common/material.glsl"
+#include "common/motion_vectors.glsl"
 
 layout(push_constant) uniform Draw {
     mat4 world;
@@ -17,12 +18,15 @@ layout(location = 1) in vec4 inTangent;
 layout(location = 2) in vec2 inUv0;
 layout(location = 3) in vec2 inUv1;
 layout(location = 4) in vec4 inColor;
+layout(location = 5) in vec4 inCurrentClip;
+layout(location = 6) in vec4 inPreviousClip;
 
 layout(location = 0) out vec4 outBaseColor;  // rgb, a = occlusion
 layout(location = 1) out vec4 outNormalRoughMetal;  // oct normal xy, roughness, metallic
 layout(location = 2) out vec4 outSpecularModel;  // specular, shading model / 255
 layout(location = 3) out vec4 outCustomData;
 layout(location = 4) out vec4 outEmissive;  // HDR radiance, cd/m^2
+layout(location = 5) out vec2 outMotion;    // gbuffer.motion (motion_vectors.glsl)
 
 void main() {
     MaterialUv uv = materialGradients(inUv0, inUv1);
@@ -36,4 +40,5 @@ void main() {
     outSpecularModel = vec4(s.specular, float(s.shadingModel) / 255.0, 0.0, 0.0);
     outCustomData = s.customData;
     outEmissive = vec4(s.emissive, 1.0);
+    outMotion = screenMotion(inCurrentClip, inPreviousClip);
 }

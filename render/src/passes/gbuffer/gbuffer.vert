@@ -1,6 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "common/camera.glsl"
+// The vertex stage of every mesh pass (G-buffer, forward transparency and its occupancy).
+// Besides the jittered position it passes on where the vertex is in clip space this frame and
+// was last frame, both without jitter, for the motion vectors (motion_vectors.glsl).
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -14,11 +17,18 @@ layout(push_constant) uniform Draw {
     uint material;
 } draw;
 
+// One matrix per draw, indexed by gl_InstanceIndex (= the draw's firstInstance).
+layout(std430, binding = PREVIOUS_WORLDS_BINDING) readonly buffer PreviousWorlds {
+    mat4 previousWorlds[];
+};
+
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec4 outTangent;
 layout(location = 2) out vec2 outUv0;
 layout(location = 3) out vec2 outUv1;
 layout(location = 4) out vec4 outColor;
+layout(location = 5) out vec4 outCurrentClip;
+layout(location = 6) out vec4 outPreviousClip;
 
 void main() {
     vec4 worldPosition = draw.world * vec4(inPosition, 1.0);
@@ -30,4 +40,11 @@ void main() {
     outUv1 = inUv1;
     outColor = inColor;
     gl_Position = camera.viewProjection * worldPosition;
+    // Skinning / morph hook: a deformed mesh's previous-frame local position goes here in
+    // place of inPosition (a previous-position vertex stream, render/README.md "Motion
+    // vectors"); rigid meshes move only by their world matrix.
+    vec3 previousLocalPosition = inPosition;
+    outCurrentClip = camera.unjitteredViewProjection * worldPosition;
+    outPreviousClip = camera.previousViewProjection *
+                      (previousWorlds[gl_InstanceIndex] * vec4(previousLocalPosition, 1.0));
 }

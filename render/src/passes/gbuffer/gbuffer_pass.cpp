@@ -37,10 +37,12 @@ GBufferPass::GBufferPass(GpuContext& context) {
     desc.colorFormats.assign(GBufferTargets::kColorFormats.begin(),
                              GBufferTargets::kColorFormats.end());
     desc.colorFormats.push_back(VK_FORMAT_R32G32B32A32_SFLOAT);  // HDR (emissive)
+    desc.colorFormats.push_back(GBufferTargets::kMotionFormat);
     desc.depthFormat = GBufferTargets::kDepthFormat;
     desc.dynamicCullMode = true;  // glTF: back faces of single-sided materials are not drawn
     std::vector<DescriptorBinding> bindings = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+        {PREVIOUS_WORLDS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
         {GBUFFER_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
     };
@@ -54,13 +56,16 @@ GBufferPass::GBufferPass(GpuContext& context) {
 
 void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
                          const std::array<float, 4>& clearRadiance, const FrameScene& scene,
-                         SceneResources& resources, const GpuBuffer& cameraBuffer) const {
+                         SceneResources& resources, const GpuBuffer& cameraBuffer,
+                         const GpuBuffer& previousWorlds) const {
     const uint32_t width = hdr.desc().width;
     const uint32_t height = hdr.desc().height;
-    std::array<VkRenderingAttachmentInfo, 5> colors{};
+    std::array<VkRenderingAttachmentInfo, 6> colors{};
     for (size_t i = 0; i < colors.size(); ++i) {
         colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-        colors[i].imageView = i < 4 ? targets.color[i].view() : hdr.view();
+        colors[i].imageView = i < 4    ? targets.color[i].view()
+                              : i == 4 ? hdr.view()
+                                       : targets.motion.view();
         colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
         colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -90,7 +95,9 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     const GpuBuffer& materials = resources.materialBuffer();
     VkDescriptorBufferInfo cameraInfo{cameraBuffer.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo materialInfo{materials.handle(), 0, VK_WHOLE_SIZE};
-    for (const DrawItem& draw : scene.draws) {
+    VkDescriptorBufferInfo previousInfo{previousWorlds.handle(), 0, VK_WHOLE_SIZE};
+    for (uint32_t drawIndex = 0; drawIndex < uint32_t(scene.draws.size()); ++drawIndex) {
+        const DrawItem& draw = scene.draws[drawIndex];
         const GpuMesh& mesh = resources.mesh(draw.mesh);
         if (mesh.indexCount == 0) continue;
         // Blended surfaces are drawn by the forward transparency pass.
@@ -99,6 +106,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
         std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
         std::vector<VkWriteDescriptorSet> writes = {
             uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+            storageBufferWrite(PREVIOUS_WORLDS_BINDING, &previousInfo),
             storageBufferWrite(GBUFFER_BINDING_MATERIALS, &materialInfo)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
@@ -116,7 +124,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
         VkBuffer vertexBuffer = mesh.vertices.handle();
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+        // firstInstance: the draw's index, which gbuffer.vert reads its previous world by.
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
     }
     vkCmdEndRendering(cmd);
 }

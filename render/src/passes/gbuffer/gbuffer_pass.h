@@ -14,11 +14,13 @@ struct GBufferTargets;
 class GBufferPass {
 public:
     explicit GBufferPass(GpuContext& context);
-    // Colour, HDR and depth in attachment-optimal layouts (frame graph: ColorAttachment,
-    // DepthWrite); all are cleared.
+    // Colour, motion, HDR and depth in attachment-optimal layouts (frame graph:
+    // ColorAttachment, DepthWrite); all are cleared. `previousWorlds`: one mat4 per scene draw
+    // (the draw's world matrix in the previous frame), for the motion vectors.
     void record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
                 const std::array<float, 4>& clearRadiance, const FrameScene& scene,
-                SceneResources& resources, const GpuBuffer& cameraBuffer) const;
+                SceneResources& resources, const GpuBuffer& cameraBuffer,
+                const GpuBuffer& previousWorlds) const;
 
 private:
     Pipeline pipeline_;

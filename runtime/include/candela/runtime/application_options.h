@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "candela/render/validation_mode.h"
 #include "candela/render/renderer_options.h"
+#include "candela/render/validation_mode.h"
 #include "candela/runtime/input_script.h"
 
 namespace candela::runtime {
@@ -51,6 +51,11 @@ struct ApplicationOptions {
     render::IblMode ibl = render::IblMode::SplitSum;
     // --brdf; unset: the world's scene-file "brdf", else energy-conserving.
     std::optional<render::BrdfModel> brdf;
+    // --aa; unset: the world's scene-file "aa", else TAA (render/README.md "Antialiasing").
+    std::optional<render::AntiAliasing> aa;
+    // --bloom; unset: the world's scene-file "bloom", else kDefaultBloom.
+    std::optional<float> bloom;
+    static constexpr float kDefaultBloom = 0.04f;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
@@ -58,7 +63,7 @@ struct ApplicationOptions {
     // The standard flags every game gets (see standardFlagsUsage()): --headless, --frames N,
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
-    // --brdf.
+    // --brdf, --aa, --bloom.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

@@ -16,13 +16,18 @@ namespace candela::runtime {
 
 struct ExtractedFrame {
     std::vector<render::DrawItem> draws;
-    std::span<const render::LightInstance> lights;  // the light table's slots
+    // Motion vectors: each draw's world matrix in the previous frame (its current one when the
+    // entity is new), parallel to `draws`; kept per entity between frames.
+    std::vector<glm::mat4> previousWorlds;
+    std::unordered_map<uint64_t, glm::mat4> lastWorld;      // per entity, last frame
+    std::unordered_map<uint64_t, glm::mat4> lastWorldNext;  // being filled this frame
+    std::span<const render::LightInstance> lights;          // the light table's slots
     std::span<const uint32_t> changedLights;
     bool lightsRestructured = true;
     render::CameraView camera;
-    bool hasCamera = false;     // false: no entity has Camera + WorldTransform
-    float skyIntensity = 1.0f;  // the Sky component's
-    std::string skyExrPath;     // the Sky component's file as stored (empty: no sky)
+    bool hasCamera = false;              // false: no entity has Camera + WorldTransform
+    float skyIntensity = 1.0f;           // the Sky component's
+    std::string skyExrPath;              // the Sky component's file as stored (empty: no sky)
     std::vector<render::TextLine> text;  // the frame's DebugText lines (debug_text.h)
 
     // GPU materials made for scene-file material overrides, per entity; remade when the

@@ -49,6 +49,12 @@ public:
     std::filesystem::path resolveAssetPath(const std::string& stored) const;
     // The BRDF the last scene file loaded asks for ("brdf"), if it names one.
     std::optional<content::SceneBrdf> sceneBrdf() const { return sceneBrdf_; }
+    // The antialiasing the last scene file loaded asks for ("aa"), if it names one.
+    std::optional<content::SceneAntiAliasing> sceneAntiAliasing() const {
+        return sceneAntiAliasing_;
+    }
+    // The bloom strength the last scene file asks for ("bloom"; 0: off), if it sets one.
+    std::optional<float> sceneBloom() const { return sceneBloom_; }
 
     // Keeps a model alive for the lifetime of the world and returns it.
     const content::Model& adoptModel(std::unique_ptr<content::Model> model);
@@ -80,6 +86,8 @@ private:
     content::AssetCache cache_;
     std::filesystem::path sceneFile_;
     std::optional<content::SceneBrdf> sceneBrdf_;
+    std::optional<content::SceneAntiAliasing> sceneAntiAliasing_;
+    std::optional<float> sceneBloom_;
 };
 
 }  // namespace candela::runtime
