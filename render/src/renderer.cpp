@@ -23,6 +23,8 @@
 #include "lights/gpu_light_types.h"
 #include "passes/bloom/bloom_pass.h"
 #include "passes/debug_text/debug_text_pass.h"
+#include "passes/exposure/exposure_bindings.h"
+#include "passes/exposure/exposure_pass.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/fxaa/fxaa_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
@@ -130,6 +132,13 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     if (options_.aa == AntiAliasing::Taa) taaPass_ = std::make_unique<TaaPass>(context_);
     if (options_.aa == AntiAliasing::Fxaa) fxaaPass_ = std::make_unique<FxaaPass>(context_);
     if (options_.bloomStrength > 0.0f) bloomPass_ = std::make_unique<BloomPass>(context_);
+    if (options_.exposure == ExposureMode::Auto) {
+        histogramPass_ = std::make_unique<ExposureHistogramPass>(context_);
+        histogram_ =
+            GpuBuffer(context_, HISTOGRAM_BINS * sizeof(uint32_t),
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      MemoryLocation::HostVisible);
+    }
 }
 
 Renderer::~Renderer() {
@@ -422,12 +431,19 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     } else {
         hdr.version = declareScene(inputs, *resources, hdr.id);
     }
-    const float exposure = exposureFromEv100(inputs.scene.camera.ev100);
+    // Auto exposure reads the histogram of the previous frame, which begin() waited for.
+    const bool sceneFrame = features_[0] != "test_triangle";
+    float ev100 = inputs.scene.camera.ev100;
+    stats_.exposureEv100 = ev100;
+    stats_.adaptedEv100 = ev100;
+    if (histogramPass_ && sceneFrame) ev100 = autoExposureEv100(inputs);
+    const float exposure = exposureFromEv100(ev100);
     if (taaPass_ && features_[0] != "test_triangle") {
         hdr.version = declareTaa(hdr.id, hdr.version, exposure);
     } else {
         historyValid_ = false;  // a frame without history breaks the sequence
     }
+    if (histogramPass_ && sceneFrame) declareHistogram(hdr.id, hdr.version);
     if (bloomPass_ && features_[0] != "test_triangle") {
         hdr.version = declareBloom(hdr.id, hdr.version);
     }
@@ -536,6 +552,43 @@ uint32_t Renderer::declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposur
     historyWrite_ ^= 1u;
     historyValid_ = true;
     return hdr.version;
+}
+
+float Renderer::autoExposureEv100(const FrameInputs& inputs) {
+    const AutoExposureSettings& settings = options_.autoExposure;
+    if (histogramWritten_) {
+        const auto* bins = static_cast<const uint32_t*>(histogram_.mapped());
+        const std::optional<float> metered = meterEv100(std::span(bins, HISTOGRAM_BINS), settings);
+        if (metered) {
+            stats_.exposureEv100 = *metered;
+            // The first metered frame starts adapted; later ones move towards the meter.
+            adaptedEv100_ =
+                adaptedEv100_ ? adaptEv100(*adaptedEv100_, *metered, inputs.deltaSeconds, settings)
+                              : adaptEv100(0.0f, *metered, 1.0e9f, settings);
+        }
+    }
+    if (!adaptedEv100_) return inputs.scene.camera.ev100;  // nothing metered yet
+    stats_.adaptedEv100 = *adaptedEv100_;
+    return *adaptedEv100_;
+}
+
+void Renderer::declareHistogram(uint32_t hdrId, uint32_t hdrVersion) {
+    FrameGraph& g = *graph_;
+    features_.push_back("auto_exposure");
+    const ResourceHandle hdr{hdrId, hdrVersion};
+    ResourceHandle histogram = g.importBuffer("exposure.histogram", &histogram_, true);
+    {
+        auto p = g.addPass("exposure_clear", PassKind::Device, [this](PassContext& ctx) {
+            vkCmdFillBuffer(ctx.cmd(), histogram_.handle(), 0, VK_WHOLE_SIZE, 0u);
+        });
+        histogram = p.write(histogram, Use::TransferDst);
+    }
+    auto p = g.addPass("exposure_histogram", PassKind::Device, [this, hdr](PassContext& ctx) {
+        histogramPass_->record(ctx.cmd(), ctx.image(hdr), histogram_);
+    });
+    p.read(hdr, Use::StorageRead);
+    p.write(histogram, Use::StorageReadWrite);
+    histogramWritten_ = true;
 }
 
 uint32_t Renderer::declareBloom(uint32_t hdrId, uint32_t hdrVersion) {

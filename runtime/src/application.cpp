@@ -442,6 +442,14 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                                         : world && world->sceneBloom()
                                             ? *world->sceneBloom()
                                             : ApplicationOptions::kDefaultBloom;
+        const bool sceneAuto = world && world->sceneExposure() == content::SceneExposure::Auto;
+        rendererOptions.exposure = options.exposure ? *options.exposure
+                                   : sceneAuto      ? render::ExposureMode::Auto
+                                                    : render::ExposureMode::Manual;
+        rendererOptions.autoExposure.compensation =
+            options.exposureCompensation                  ? *options.exposureCompensation
+            : world && world->sceneExposureCompensation() ? *world->sceneExposureCompensation()
+                                                          : 0.0f;
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
@@ -519,6 +527,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                 frame.scene.camera = s.extracted.camera;
                 frame.scene.draws = s.extracted.draws;
                 frame.scene.previousWorlds = s.extracted.previousWorlds;
+                frame.deltaSeconds = float(frameContext.deltaSeconds);
                 frame.scene.lights = s.extracted.lights;
                 frame.scene.changedLights = s.extracted.changedLights;
                 frame.scene.lightsRestructured = s.extracted.lightsRestructured;

@@ -1,6 +1,7 @@
 #include "candela/runtime/application_options.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -72,6 +73,9 @@ constexpr std::pair<const char*, render::AntiAliasing> kAntiAliasing[] = {
     {"fxaa", render::AntiAliasing::Fxaa},
     {"taa", render::AntiAliasing::Taa}};
 
+constexpr std::pair<const char*, render::ExposureMode> kExposures[] = {
+    {"manual", render::ExposureMode::Manual}, {"auto", render::ExposureMode::Auto}};
+
 constexpr std::pair<const char*, render::BrdfModel> kBrdfs[] = {
     {"ue4", render::BrdfModel::Ue4}, {"energy-conserving", render::BrdfModel::EnergyConserving}};
 
@@ -94,7 +98,10 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n"
            "  --aa off|fxaa|taa         antialiasing (default: the scene file's, else taa)\n"
            "  --bloom FRACTION          radiance scattered into glare, 0 (off) to 1\n"
-           "                            (default: the scene file's, else 0.04)\n";
+           "                            (default: the scene file's, else 0.04)\n"
+           "  --exposure manual|auto    the camera's EV100, or metered and adapted\n"
+           "                            (default: the scene file's, else manual)\n"
+           "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -189,6 +196,21 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--bloom needs a fraction from 0 (off) to 1, got '" + v + "'");
             }
             options.bloom = bloom;
+        } else if (arg == "--exposure") {
+            render::ExposureMode exposure{};
+            if (!value() || !parseChoice(v, kExposures, exposure)) {
+                return fail("--exposure needs manual or auto, got '" + v + "'");
+            }
+            options.exposure = exposure;
+        } else if (arg == "--exposure-compensation") {
+            float compensation = 0.0f;
+            if (!value()) return fail("--exposure-compensation needs a number of EV");
+            const char* end = v.data() + v.size();
+            auto [ptr, ec] = std::from_chars(v.data(), end, compensation);
+            if (ec != std::errc() || ptr != end || std::abs(compensation) > 16.0f) {
+                return fail("--exposure-compensation needs EV from -16 to 16, got '" + v + "'");
+            }
+            options.exposureCompensation = compensation;
         } else if (others == OtherArguments::Keep) {
             result.arguments.push_back(arg);
         } else if (!arg.empty() && arg[0] == '-') {

@@ -94,6 +94,8 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     sceneBrdf_ = scene->brdf;
     sceneAntiAliasing_ = scene->aa;
     sceneBloom_ = scene->bloom;
+    sceneExposure_ = scene->exposure;
+    sceneExposureCompensation_ = scene->exposureCompensation;
     return true;
 }
 

@@ -170,6 +170,8 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     SceneDocument scene = exampleScene();
     scene.aa = SceneAntiAliasing::Fxaa;
     scene.bloom = 0.0f;  // the scene turns bloom off
+    scene.exposure = SceneExposure::Auto;
+    scene.exposureCompensation = -0.5f;
     std::string error;
     const std::string text = sceneToJson(scene, error);
     ASSERT_EQ(error, "");
@@ -178,6 +180,8 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     ASSERT_TRUE(loaded) << diagnostics.toString();
     EXPECT_EQ(loaded->aa, SceneAntiAliasing::Fxaa);
     EXPECT_EQ(loaded->bloom, 0.0f);
+    EXPECT_EQ(loaded->exposure, SceneExposure::Auto);
+    EXPECT_EQ(loaded->exposureCompensation, -0.5f);
 
     const std::string bad = R"({"format": "candela.scene", "version": 1, "aa": "msaa8",
                                "bloom": 3, "entities": []})";

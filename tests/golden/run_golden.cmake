@@ -53,10 +53,11 @@ endif()
 if(NOT DEFINED GOLDEN_BLOOM)
   set(GOLDEN_BLOOM 0)
 endif()
+# And the camera's manual exposure, not the metered one.
 execute_process(
   COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
           --frames "${GOLDEN_FRAMES}" --capture "${exr}" --capture "${png}" --stats "${stats}"
-          --aa "${GOLDEN_AA}" --bloom "${GOLDEN_BLOOM}"
+          --aa "${GOLDEN_AA}" --bloom "${GOLDEN_BLOOM}" --exposure manual
   RESULT_VARIABLE engine_result OUTPUT_VARIABLE engine_output ERROR_VARIABLE engine_output)
 message("${engine_output}")
 if(engine_result EQUAL 3)

@@ -86,6 +86,16 @@ TEST(ApplicationOptions, BadValuesNameTheFlagAndTheValue) {
               std::string::npos);
 }
 
+TEST(ApplicationOptions, ExposureFlags) {
+    CommandLine result = parseCommandLine({"--exposure", "auto", "--exposure-compensation", "1.5"});
+    ASSERT_TRUE(result) << result.error;
+    EXPECT_EQ(result.options->exposure, candela::render::ExposureMode::Auto);
+    EXPECT_EQ(result.options->exposureCompensation, 1.5f);
+    EXPECT_NE(parseError({"--exposure", "fast"}).find("--exposure needs manual or auto"),
+              std::string::npos);
+    EXPECT_NE(parseError({"--exposure-compensation", "x"}).find("got 'x'"), std::string::npos);
+}
+
 TEST(ApplicationOptions, AntiAliasingAndBloomFlags) {
     CommandLine result = parseCommandLine({"--aa", "fxaa", "--bloom", "0.1"});
     ASSERT_TRUE(result) << result.error;

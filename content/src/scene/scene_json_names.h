@@ -41,6 +41,8 @@ inline constexpr EnumNames<ColorSpace, 2> kColorSpaces{
 
 inline constexpr EnumNames<SceneBrdf, 2> kSceneBrdfs{
     {{SceneBrdf::Ue4, "ue4"}, {SceneBrdf::EnergyConserving, "energy-conserving"}}};
+inline constexpr EnumNames<SceneExposure, 2> kSceneExposures{
+    {{SceneExposure::Manual, "manual"}, {SceneExposure::Auto, "auto"}}};
 inline constexpr EnumNames<SceneAntiAliasing, 3> kSceneAntiAliasing{
     {{SceneAntiAliasing::Off, "off"},
      {SceneAntiAliasing::Fxaa, "fxaa"},

@@ -469,6 +469,19 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             }
         }
     }
+    if (root.contains("exposure")) {
+        SceneExposure exposure = SceneExposure::Manual;
+        if (reader.clean(
+                [&] { reader.enumeration(root, "", "exposure", kSceneExposures, exposure); })) {
+            scene.exposure = exposure;
+        }
+    }
+    if (root.contains("exposure_compensation")) {
+        float compensation = 0.0f;
+        if (reader.clean([&] { reader.number(root, "", "exposure_compensation", compensation); })) {
+            scene.exposureCompensation = compensation;
+        }
+    }
     if (root.contains("aa")) {
         SceneAntiAliasing aa = SceneAntiAliasing::Taa;
         if (reader.clean([&] { reader.enumeration(root, "", "aa", kSceneAntiAliasing, aa); })) {

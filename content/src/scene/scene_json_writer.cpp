@@ -154,6 +154,9 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     if (scene.brdf) document["brdf"] = std::string(nameOf(kSceneBrdfs, *scene.brdf));
     if (scene.aa) document["aa"] = std::string(nameOf(kSceneAntiAliasing, *scene.aa));
     if (scene.bloom) document["bloom"] = *scene.bloom;
+    if (scene.exposure)
+        document["exposure"] = std::string(nameOf(kSceneExposures, *scene.exposure));
+    if (scene.exposureCompensation) document["exposure_compensation"] = *scene.exposureCompensation;
     try {
         return document.dump(2) + "\n";
     } catch (const nlohmann::json::exception& e) {  // e.g. a name that is not valid UTF-8

@@ -64,6 +64,10 @@ enum class SceneBrdf { Ue4, EnergyConserving };
 // line's --aa overrides it. Mirrors render::AntiAliasing.
 enum class SceneAntiAliasing { Off, Fxaa, Taa };
 
+// Where the exposure comes from (top-level "exposure": "manual", the camera's EV100, or "auto",
+// metered and adapted); --exposure overrides it. Mirrors render::ExposureMode.
+enum class SceneExposure { Manual, Auto };
+
 struct SceneDocument {
     std::vector<SceneEntity> entities;
     std::optional<SceneBrdf> brdf;        // unset: the engine's default (energy-conserving)
@@ -71,6 +75,8 @@ struct SceneDocument {
     // Top-level "bloom": the fraction of radiance the lens scatters into glare, 0 to 1; 0
     // turns bloom off. Unset: the engine's default.
     std::optional<float> bloom;
+    std::optional<SceneExposure> exposure;      // unset: manual
+    std::optional<float> exposureCompensation;  // "exposure_compensation", EV (auto only)
 };
 
 // Where an asset path stored in a scene file points: relative paths are relative to the

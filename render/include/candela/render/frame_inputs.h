@@ -16,6 +16,8 @@ struct FrameInputs {
     std::optional<std::array<float, 4>> testTriangleRadiance;
     // Screen-space text drawn over the tonemapped image (text_overlay.h).
     std::vector<TextLine> text;
+    // Scene time since the previous frame: how far automatic exposure adapts.
+    float deltaSeconds = 1.0f / 30.0f;
 };
 
 }  // namespace candela::render

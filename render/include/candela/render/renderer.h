@@ -10,6 +10,7 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -39,6 +40,7 @@ class TonemapPass;
 class TaaPass;
 class FxaaPass;
 class BloomPass;
+class ExposureHistogramPass;
 class DebugTextPass;
 class TrianglePass;
 
@@ -107,6 +109,9 @@ private:
     uint32_t declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposure);
     // Bloom on the HDR target: the pyramid's passes and the composite (in place).
     uint32_t declareBloom(uint32_t hdrId, uint32_t hdrVersion);
+    // Auto exposure: meters last frame's histogram, adapts, and returns this frame's EV100.
+    float autoExposureEv100(const FrameInputs& inputs);
+    void declareHistogram(uint32_t hdrId, uint32_t hdrVersion);
 
     GpuContext& context_;
     RendererOptions options_;
@@ -136,6 +141,10 @@ private:
     std::unique_ptr<TaaPass> taaPass_;
     std::unique_ptr<FxaaPass> fxaaPass_;
     std::unique_ptr<BloomPass> bloomPass_;
+    std::unique_ptr<ExposureHistogramPass> histogramPass_;
+    GpuBuffer histogram_;  // host-visible: read back at the start of the next frame
+    bool histogramWritten_ = false;
+    std::optional<float> adaptedEv100_;  // unset until the first metered frame
     bool frameRecorded_ = false;
     std::unique_ptr<TrianglePass> trianglePass_;
     std::unique_ptr<GBufferPass> gbufferPass_;

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "candela/render/auto_exposure.h"
+
 namespace candela::render {
 
 enum class LightCulling {
@@ -44,6 +46,12 @@ enum class AntiAliasing {
 };
 const char* antiAliasingName(AntiAliasing aa);  // "off", "fxaa", "taa"
 
+// Where a frame's exposure comes from (`--exposure`, the scene file's "exposure").
+enum class ExposureMode {
+    Manual,  // the camera's EV100 (aperture, shutter, ISO): the default, and the goldens'
+    Auto,    // metered from the frame's luminance histogram and adapted over time
+};
+
 struct RendererOptions {
     LightCulling lightCulling = LightCulling::Clustered;
     LightAssignmentDevice lightAssignment = LightAssignmentDevice::Auto;
@@ -69,6 +77,8 @@ struct RendererOptions {
     // conserving: the frame's total is unchanged). 0: off (here, so tests render without it;
     // the application's default is ApplicationOptions').
     float bloomStrength = 0.0f;
+    ExposureMode exposure = ExposureMode::Manual;
+    AutoExposureSettings autoExposure;
 };
 
 // The frame graph of the last frame (--stats `frame_graph`).
@@ -113,6 +123,10 @@ struct RendererStats {
     double brdfLutMs = 0.0;
     double taaMs = 0.0;    // GPU: the TAA resolve and its copy back (--stats taa_ms)
     double bloomMs = 0.0;  // GPU: the bloom pyramid and composite (--stats bloom_ms)
+    // The EV100 metered from the last read histogram (--stats exposure_ev100; auto exposure
+    // only, else the camera's), and the adapted EV100 the frame was exposed with.
+    float exposureEv100 = 0.0f;
+    float adaptedEv100 = 0.0f;
 };
 
 }  // namespace candela::render

@@ -56,6 +56,9 @@ struct ApplicationOptions {
     // --bloom; unset: the world's scene-file "bloom", else kDefaultBloom.
     std::optional<float> bloom;
     static constexpr float kDefaultBloom = 0.04f;
+    // --exposure, --exposure-compensation; unset: the scene file's, else manual and 0 EV.
+    std::optional<render::ExposureMode> exposure;
+    std::optional<float> exposureCompensation;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
@@ -63,7 +66,7 @@ struct ApplicationOptions {
     // The standard flags every game gets (see standardFlagsUsage()): --headless, --frames N,
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
-    // --brdf, --aa, --bloom.
+    // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

@@ -55,6 +55,9 @@ public:
     }
     // The bloom strength the last scene file asks for ("bloom"; 0: off), if it sets one.
     std::optional<float> sceneBloom() const { return sceneBloom_; }
+    // The exposure mode and compensation the last scene file asks for, if it sets them.
+    std::optional<content::SceneExposure> sceneExposure() const { return sceneExposure_; }
+    std::optional<float> sceneExposureCompensation() const { return sceneExposureCompensation_; }
 
     // Keeps a model alive for the lifetime of the world and returns it.
     const content::Model& adoptModel(std::unique_ptr<content::Model> model);
@@ -88,6 +91,8 @@ private:
     std::optional<content::SceneBrdf> sceneBrdf_;
     std::optional<content::SceneAntiAliasing> sceneAntiAliasing_;
     std::optional<float> sceneBloom_;
+    std::optional<content::SceneExposure> sceneExposure_;
+    std::optional<float> sceneExposureCompensation_;
 };
 
 }  // namespace candela::runtime
