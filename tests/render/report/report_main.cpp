@@ -78,6 +78,7 @@ int main(int argc, char** argv) {
         section("image-based lighting", [&] { addSplitSumRow(context); });
         section("clustered lights", [&] { addClusteredRow(context); });
         section("energy-conserving BRDF", [&] { addBrdfEnergyRows(context); });
+        section("antialiasing", [&] { addAntialiasingRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());

@@ -24,7 +24,8 @@ void ExposureHistogramPass::record(VkCommandBuffer cmd, const ImageRef& hdr,
         storageBufferWrite(EXPOSURE_BINDING_HISTOGRAM, &histogramInfo)};
     pipeline_.bind(cmd);
     pipeline_.pushDescriptors(cmd, writes);
-    vkCmdDispatch(cmd, (hdr.desc().width + 15) / 16, (hdr.desc().height + 15) / 16, 1);
+    // One invocation per 2x2 pixels (luminance_histogram.comp).
+    vkCmdDispatch(cmd, (hdr.desc().width + 31) / 32, (hdr.desc().height + 31) / 32, 1);
 }
 
 }  // namespace candela::render
