@@ -32,6 +32,7 @@
 #include "passes/taa/taa_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
+#include "vk/image_transfer.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -170,11 +171,17 @@ void Renderer::createTargets() {
                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
     if (options_.aa == AntiAliasing::Taa) {
-        // RGBA32F like the target it is copied into; alpha counts the samples it holds.
+        // RGBA32F like the target it is copied into; alpha counts the samples it holds. Both
+        // start cleared and shader-readable, so every frame imports them in the same states
+        // and the compiled graph is reused from the second frame on (the first frame ignores
+        // the history through a push constant, not a different graph).
+        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
         for (GpuImage& h : history_) {
-            h = GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
-                                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                        VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+            h = GpuImage(context_,
+                         {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
+                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+            writeImage(context_, h, 16, zeros.data());
         }
     }
     historyValid_ = false;
@@ -513,8 +520,8 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
 uint32_t Renderer::declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposure) {
     FrameGraph& g = *graph_;
     features_.push_back("taa");
-    // The history written last frame is read in the state that frame left it in; the other
-    // image's contents (the frame before's) are discarded.
+    // The history written last frame is read in the state that frame left it in (created in
+    // it: createTargets); the other image's contents (the frame before's) are discarded.
     constexpr ImageState kSampledByCompute{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
@@ -522,8 +529,8 @@ uint32_t Renderer::declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposur
                                   0};
     const GpuImage& readImage = history_[historyWrite_ ^ 1u];
     const GpuImage& writeImage = history_[historyWrite_];
-    const ResourceHandle history = g.importImage(
-        "taa.history", &readImage, historyValid_ ? kSampledByCompute : kDiscard, ImageState{});
+    const ResourceHandle history =
+        g.importImage("taa.history", &readImage, kSampledByCompute, ImageState{});
     ResourceHandle resolved =
         g.importImage("taa.resolved", &writeImage, kDiscard, kSampledByCompute);
     ResourceHandle hdr{hdrId, hdrVersion};
