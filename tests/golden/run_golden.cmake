@@ -50,7 +50,7 @@ file(MAKE_DIRECTORY "${GOLDEN_OUTPUT_DIR}")
 if(NOT GOLDEN_AA)
   set(GOLDEN_AA off)
 endif()
-if(NOT DEFINED GOLDEN_BLOOM)
+if(GOLDEN_BLOOM STREQUAL "")
   set(GOLDEN_BLOOM 0)
 endif()
 # And the camera's manual exposure, not the metered one.
