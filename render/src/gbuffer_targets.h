@@ -6,6 +6,12 @@
 //   specularModel   RGBA8_UNORM  r specular, g shading model ID / 255 (exact for IDs < 256)
 //   customData      RGBA8_UNORM  Subsurface colour + opacity, or Legacy SpecularColor
 //   depth           D32_SFLOAT   reverse-Z (see CameraView)
+// Only in frames whose materials use KHR_materials_anisotropy or KHR_materials_clearcoat
+// (both created when either is used; gbuffer_extended.frag writes them):
+//   anisotropy      RG16_UNORM   r: angle of the anisotropy direction in [0, pi) from the first
+//                                axis of tangentFrame(decoded N) / pi (0.0027 degree steps;
+//                                T and -T give the same lobe), g: strength
+//   clearCoat       RGBA16_UNORM factor, roughness, octahedral coat normal xy (as the normal)
 // Emissive goes straight into the HDR target, which the lighting pass then adds to.
 #include <array>
 #include <cstdint>
@@ -22,6 +28,8 @@ struct GBufferTargets {
         "gbuffer.base_color", "gbuffer.normal_rough_metal", "gbuffer.specular_model",
         "gbuffer.custom_data"};
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+    static constexpr VkFormat kAnisotropyFormat = VK_FORMAT_R16G16_UNORM;
+    static constexpr VkFormat kClearCoatFormat = VK_FORMAT_R16G16B16A16_UNORM;
 
     static ImageDesc colorDesc(size_t index, uint32_t width, uint32_t height) {
         return {kColorFormats[index],
@@ -30,6 +38,10 @@ struct GBufferTargets {
                 1,
                 false,
                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
+    }
+    static ImageDesc extensionDesc(VkFormat format, uint32_t width, uint32_t height) {
+        return {format, width, height,
+                1,      false, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
     }
     static ImageDesc depthDesc(uint32_t width, uint32_t height) {
         return {
@@ -40,6 +52,9 @@ struct GBufferTargets {
 
     std::array<ImageRef, 4> color;
     ImageRef depth;
+    bool extended = false;  // anisotropy and clearCoat exist
+    ImageRef anisotropy;
+    ImageRef clearCoat;
 };
 
 }  // namespace candela::render

@@ -15,13 +15,14 @@ class GBufferPass {
 public:
     explicit GBufferPass(GpuContext& context);
     // Colour, HDR and depth in attachment-optimal layouts (frame graph: ColorAttachment,
-    // DepthWrite); all are cleared.
+    // DepthWrite); all are cleared. targets.extended picks gbuffer_extended.frag.
     void record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
                 const std::array<float, 4>& clearRadiance, const FrameScene& scene,
                 SceneResources& resources, const GpuBuffer& cameraBuffer) const;
 
 private:
     Pipeline pipeline_;
+    Pipeline extendedPipeline_;  // also writes targets.anisotropy and targets.clearCoat
 };
 
 }  // namespace candela::render
