@@ -220,8 +220,10 @@ float stableGgx(float a2, vec3 tangentH) {
 // frame[1], normal frame[2], reflectance F0. As referenceAmbient's specular lobe (visible
 // normals and the sky's luminance, balance heuristic), with the anisotropic D, G1 and
 // visibility (which are the isotropic ones when alpha.x == alpha.y, up to rounding). For the
-// anisotropic lobe and the clear coat, whose approximations it measures.
-vec3 referenceGgxLobe(mat3 frame, vec2 alpha, vec3 F0, vec3 V, ivec2 pixel) {
+// anisotropic lobe and the clear coat, whose approximations it measures. `albedo`: the lobe's
+// own directional albedo from its visible-normal samples, F0 = 1 (x) and with F0 (yzw), what
+// the multiple-scattering term needs instead of the isotropic LUT's.
+vec3 referenceGgxLobe(mat3 frame, vec2 alpha, vec3 F0, vec3 V, ivec2 pixel, out vec4 albedo) {
     vec3 tangentV = transpose(frame) * V;
     tangentV.z = max(tangentV.z, 1e-4);
     float NoV = tangentV.z;
@@ -229,6 +231,7 @@ vec3 referenceGgxLobe(mat3 frame, vec2 alpha, vec3 F0, vec3 V, ivec2 pixel) {
     vec2 offsetEnvironment = pixelHash(pixel + ivec2(50021, 1299709));
     float g1V = smithG1GgxAnisotropic(alpha, tangentV);
     vec3 specular = vec3(0.0);
+    albedo = vec4(0.0);
     uint n = push.referenceSamples;
     for (uint i = 0u; i < n; ++i) {
         vec3 H = importanceSampleGgxVisibleAnisotropic(hammersley(i, n, offset), alpha, tangentV);
@@ -242,6 +245,7 @@ vec3 referenceGgxLobe(mat3 frame, vec2 alpha, vec3 F0, vec3 V, ivec2 pixel) {
                                                                 tangentV.y, NoV, L.x, L.y, L.z);
             // f NoL / pdf = F G2 / G1(V), G2 = 4 NoV NoL Vis
             float weight = 4.0 * NoV * L.z * vis / g1V;
+            albedo += vec4(weight, fresnelSchlickSg(F0, VoH) * weight);
             specular += textureLod(environmentCube, Lw, 0.0).rgb * fresnelSchlickSg(F0, VoH) *
                         (weight * pdf / (pdf + environmentPdf(Lw)));
         }
@@ -259,14 +263,17 @@ vec3 referenceGgxLobe(mat3 frame, vec2 alpha, vec3 F0, vec3 V, ivec2 pixel) {
                     fresnelSchlickSg(F0, saturate(dot(tangentV, He))) *
                     (D * vis * tangentL.z / (brdfPdf + environmentPdfE));
     }
+    albedo /= float(n);
     return specular / float(n);
 }
 
 // The clear coat's reflection of the sky by Monte Carlo (reference mode), factor included.
 vec3 referenceClearCoat(PixelShading px, ivec2 pixel) {
     float alpha = alphaFromRoughness(px.surface.clearCoatRoughness);
+    vec4 albedo;
     return px.surface.clearCoat * referenceGgxLobe(tangentFrame(px.surface.clearCoatN),
-                                                   vec2(alpha), vec3(kClearCoatF0), px.V, pixel);
+                                                   vec2(alpha), vec3(kClearCoatF0), px.V, pixel,
+                                                   albedo);
 }
 
 // Eq. 6 by Monte Carlo per pixel, for measuring the approximations only. Each iteration
@@ -339,11 +346,12 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
             transmitted += radiance * (-NoL / PI) / (lambertPdf + environmentPdfE);
         }
     }
+    vec4 anisotropicAlbedo = vec4(0.0);
     if (!isotropic) {
         vec3 T = px.surface.anisotropyT;
         vec2 anisotropicAlpha = anisotropicAlphas(px.surface.roughness, px.surface.anisotropy);
         specular = referenceGgxLobe(mat3(T, cross(px.N, T), px.N), anisotropicAlpha,
-                                    t.specularColor, px.V, pixel) *
+                                    t.specularColor, px.V, pixel, anisotropicAlbedo) *
                    float(n);  // divided by n with the rest below
     }
     vec3 ambient = specular + diffuse * t.diffuseColor + transmitted * t.transmittedColor;
@@ -352,8 +360,13 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
         // single scattering of the LUT and this pixel's own cosine-weighted sky (diffuse / n).
         vec3 singleScattering = environmentBrdfFromLut(environmentBrdfLut, t.specularColor,
                                                        px.surface.roughness, NoV);
+        float directionalAlbedo = px.surface.directionalAlbedo;
+        if (!isotropic) {  // the anisotropic lobe's own albedo, not the isotropic LUT's
+            singleScattering = anisotropicAlbedo.yzw;
+            directionalAlbedo = anisotropicAlbedo.x;
+        }
         ambient += multipleScatteringEnvironmentBrdf(singleScattering, t.specularColor,
-                                                     px.surface.directionalAlbedo) *
+                                                     directionalAlbedo) *
                    diffuse;
     }
     return ambient / float(n);
