@@ -19,7 +19,8 @@ function(candela_add_shaders target)
     get_filename_component(abs ${shader} ABSOLUTE)
     # Binding numbers of the shader's pass, shared with its C++ (<pass>_bindings.h beside it).
     get_filename_component(shader_dir ${abs} DIRECTORY)
-    file(GLOB pass_headers ${shader_dir}/*_bindings.h)
+    # and any GLSL the pass's shaders share (gbuffer_fragment.glsl: one body, two variants).
+    file(GLOB pass_headers ${shader_dir}/*_bindings.h ${shader_dir}/*.glsl)
     get_filename_component(file_name ${shader} NAME)
     string(REPLACE "." "_" var_name ${file_name})
     set(header ${out_dir}/${file_name}.spv.h)

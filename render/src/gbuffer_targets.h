@@ -9,6 +9,12 @@
 //   motion          RG16_SFLOAT  screen-space motion, current - previous texture coordinates
 //                                (motion_vectors.glsl); 0 where nothing is drawn. Also
 //                                written (alpha-blended) by the forward transparency pass.
+// Only in frames whose materials use KHR_materials_anisotropy or KHR_materials_clearcoat
+// (both created when either is used; gbuffer_extended.frag writes them):
+//   anisotropy      RG16_UNORM   r: angle of the anisotropy direction in [0, pi) from the first
+//                                axis of tangentFrame(decoded N) / pi (0.0027 degree steps;
+//                                T and -T give the same lobe), g: strength
+//   clearCoat       RGBA16_UNORM factor, roughness, octahedral coat normal xy (as the normal)
 // Emissive goes straight into the HDR target, which the lighting pass then adds to.
 #include <array>
 #include <cstdint>
@@ -27,6 +33,8 @@ struct GBufferTargets {
     static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
     static constexpr VkFormat kMotionFormat = VK_FORMAT_R16G16_SFLOAT;
     static constexpr const char* kMotionName = "gbuffer.motion";
+    static constexpr VkFormat kAnisotropyFormat = VK_FORMAT_R16G16_UNORM;
+    static constexpr VkFormat kClearCoatFormat = VK_FORMAT_R16G16B16A16_UNORM;
 
     static ImageDesc colorDesc(size_t index, uint32_t width, uint32_t height) {
         return {kColorFormats[index],
@@ -35,6 +43,10 @@ struct GBufferTargets {
                 1,
                 false,
                 VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
+    }
+    static ImageDesc extensionDesc(VkFormat format, uint32_t width, uint32_t height) {
+        return {format, width, height,
+                1,      false, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
     }
     static ImageDesc depthDesc(uint32_t width, uint32_t height) {
         return {
@@ -52,6 +64,9 @@ struct GBufferTargets {
     std::array<ImageRef, 4> color;
     ImageRef depth;
     ImageRef motion;
+    bool extended = false;  // anisotropy and clearCoat exist
+    ImageRef anisotropy;
+    ImageRef clearCoat;
 };
 
 }  // namespace candela::render

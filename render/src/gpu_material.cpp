@@ -64,6 +64,16 @@ GpuMaterial packMaterial(const content::Material& m) {
     g.transforms[4] = packTransform(m.emissiveTexture);
     g.transforms[5] = packTransform(m.specularTexture);
     g.transforms[6] = packTransform(m.specularColorTexture);
+    g.transforms[7] = packTransform(m.anisotropyTexture);
+    g.transforms[8] = packTransform(m.clearcoatTexture);
+    g.transforms[9] = packTransform(m.clearcoatRoughnessTexture);
+    g.transforms[10] = packTransform(m.clearcoatNormalTexture);
+    g.anisotropy[0] = m.anisotropyStrength;
+    g.anisotropy[1] = std::cos(m.anisotropyRotation);
+    g.anisotropy[2] = std::sin(m.anisotropyRotation);
+    g.clearcoat[0] = m.clearcoatFactor;
+    g.clearcoat[1] = m.clearcoatRoughnessFactor;
+    g.clearcoat[2] = m.clearcoatNormalScale;
     const auto& c = m.specularColorFactor;
     const float largest = std::max({c[0], c[1], c[2]});
     for (int i = 0; i < 3; ++i)

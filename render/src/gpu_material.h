@@ -30,7 +30,11 @@ struct GpuMaterial {
     // max(this.rgb * specularColorTexture.rgb); rgb = specularColorFactor / its largest
     // channel, so untextured (white) slots leave `specular` exactly as it is.
     float specularColorScale[4];
-    GpuTextureTransform transforms[7];  // TextureSlot order
+    // KHR_materials_anisotropy: strength, cos and sin of the rotation; 0 strength: isotropic.
+    float anisotropy[4];
+    // KHR_materials_clearcoat: factor, roughness, normal scale; 0 factor: no coat.
+    float clearcoat[4];
+    GpuTextureTransform transforms[11];  // TextureSlot order
 };
 static_assert(sizeof(GpuMaterial) % 16 == 0, "std430 array stride");
 

@@ -81,7 +81,12 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     f.brdf = options.brdf;
     if (resources.environment()) f.ibl = options.ibl;
     for (const DrawItem& draw : scene.draws) {
-        switch (resources.material(draw.material).shadingModel) {
+        const content::Material& material = resources.material(draw.material);
+        if (material.alphaMode != content::AlphaMode::Blend) {
+            f.anisotropy |= material.anisotropic();
+            f.clearCoat |= material.clearCoated();
+        }
+        switch (material.shadingModel) {
             case content::ShadingModel::Subsurface:
                 f.subsurface = true;
                 break;
@@ -241,6 +246,8 @@ struct Renderer::SceneHandles {
     std::array<ResourceHandle, 4> color;
     ResourceHandle depth, motion, hdr, camera, lights;
     ClusterLightLists::Lists clusters;
+    bool extended = false;  // the anisotropy and clear-coat targets (gbuffer_targets.h)
+    ResourceHandle anisotropy, clearCoat;
 };
 
 uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resources,
@@ -250,7 +257,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     lightingPass_->setFeatures(features);
     // The environment BRDF LUT is the same for every sky: built once, when first needed (the
     // energy-conserving BRDF reads its directional albedo for every light, sky or not).
-    const bool needsLut = features.ibl || features.brdf == BrdfModel::EnergyConserving;
+    const bool needsLut =
+        features.ibl || features.brdf == BrdfModel::EnergyConserving || features.clearCoat;
     // Its texels come from the environment cache folder after the first run (390 ms of
     // lavapipe otherwise); a cache problem is a warning and a rebuild.
     if (needsLut && !brdfLut_) {
@@ -287,6 +295,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     h.depth = g.createImage("gbuffer.depth", GBufferTargets::depthDesc(width_, height_));
     h.motion =
         g.createImage(GBufferTargets::kMotionName, GBufferTargets::motionDesc(width_, height_));
+    h.extended = features.materialExtensions();
+    if (h.extended) {
+        h.anisotropy = g.createImage(
+            "gbuffer.anisotropy",
+            GBufferTargets::extensionDesc(GBufferTargets::kAnisotropyFormat, width_, height_));
+        h.clearCoat = g.createImage(
+            "gbuffer.clear_coat",
+            GBufferTargets::extensionDesc(GBufferTargets::kClearCoatFormat, width_, height_));
+    }
     h.camera = g.importBuffer("camera", &cameraBuffer_);
     h.lights = g.importBuffer("lights", &lights_->buffer());
     const ResourceHandle pairCounts =
@@ -299,6 +316,11 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             targets.color[i] = ctx.image(ids.color[i]);
         targets.depth = ctx.image(ids.depth);
         targets.motion = ctx.image(ids.motion);
+        targets.extended = ids.extended;
+        if (ids.extended) {
+            targets.anisotropy = ctx.image(ids.anisotropy);
+            targets.clearCoat = ctx.image(ids.clearCoat);
+        }
         return targets;
     };
     {
@@ -315,6 +337,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.motion = p.write(h.motion, Use::ColorAttachment);
         h.depth = p.write(h.depth, Use::DepthWrite);
         h.hdr = p.write(h.hdr, Use::ColorAttachment);
+        if (h.extended) {
+            h.anisotropy = p.write(h.anisotropy, Use::ColorAttachment);
+            h.clearCoat = p.write(h.clearCoat, Use::ColorAttachment);
+        }
     }
     if (features.clustered) {
         h.clusters = clusters_->declare(g,
@@ -350,6 +376,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         for (ResourceHandle c : h.color)
             p.read(c, Use::Sampled);
         p.read(h.depth, Use::Sampled);
+        if (h.extended) {
+            p.read(h.anisotropy, Use::Sampled);
+            p.read(h.clearCoat, Use::Sampled);
+        }
         p.read(h.camera, Use::Uniform);
         p.read(h.lights, Use::StorageRead);
         if (features.clustered) {

@@ -192,6 +192,7 @@ uint32_t SceneResources::addMaterial(const content::Material& material) {
     MaterialBinding binding{};
     std::fill(std::begin(binding.textures), std::end(binding.textures), whiteTexture_);
     binding.textures[kNormalSlot] = flatNormalTexture_;
+    binding.textures[kClearcoatNormalSlot] = flatNormalTexture_;
     return addMaterialWithTextures(material, binding);
 }
 
@@ -233,6 +234,14 @@ uint32_t SceneResources::addModelMaterial(const content::Model& model, UploadedM
     binding.textures[kSpecularSlot] = textureFor(model, uploaded, m.specularTexture, whiteTexture_);
     binding.textures[kSpecularColorSlot] =
         textureFor(model, uploaded, m.specularColorTexture, whiteTexture_);
+    binding.textures[kAnisotropySlot] =
+        textureFor(model, uploaded, m.anisotropyTexture, whiteTexture_);
+    binding.textures[kClearcoatSlot] =
+        textureFor(model, uploaded, m.clearcoatTexture, whiteTexture_);
+    binding.textures[kClearcoatRoughnessSlot] =
+        textureFor(model, uploaded, m.clearcoatRoughnessTexture, whiteTexture_);
+    binding.textures[kClearcoatNormalSlot] =
+        textureFor(model, uploaded, m.clearcoatNormalTexture, flatNormalTexture_);
     return addMaterialWithTextures(m, binding);
 }
 

@@ -216,6 +216,16 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     const int32_t cord = meshes->add(content::makeBox({0.008f, 0.6f, 0.008f}),
                                      material({0.05f, 0.05f, 0.05f}, 0.0f, 0.6f));
 
+    // Issue 21: brushed metal (KHR_materials_anisotropy, stretched along the sphere's
+    // tangents, which run around it) and car paint (KHR_materials_clearcoat over a red base).
+    content::Material brushedMetal = material({0.91f, 0.92f, 0.92f}, 1.0f, 0.3f);
+    brushedMetal.anisotropyStrength = 0.8f;
+    const int32_t brushedSphere = meshes->add(content::makeSphere(0.35f), brushedMetal);
+    content::Material carPaint = material({0.5f, 0.02f, 0.03f}, 0.0f, 0.5f);
+    carPaint.clearcoatFactor = 1.0f;
+    carPaint.clearcoatRoughnessFactor = 0.03f;
+    const int32_t paintSphere = meshes->add(content::makeSphere(0.35f), carPaint);
+
     const content::Model& model = world.adoptModel(
         std::unique_ptr<content::Model>(new content::Model(std::move(meshes->model))));
     auto draw = [&](ecs::Entity e, int32_t mesh) {
@@ -260,6 +270,9 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
         float z = i % 2 ? 4.4f : 3.6f;
         draw(place(registry, "sphere", {x, 0.28f, z}), spheres[i]);
     }
+
+    draw(place(registry, "brushed metal sphere", {3.4f, 0.35f, 4.0f}), brushedSphere);
+    draw(place(registry, "car paint sphere", {4.3f, 0.35f, 4.0f}), paintSphere);
 
     // Toon figures (Legacy diffuse/specular): a snowman and a ball, left of the helmet.
     draw(place(registry, "toon body", {-2.3f, 0.42f, 0.0f}), toonBody);

@@ -231,6 +231,64 @@ TEST(GltfFeatures, MaterialExtensionsAndEngineExtras) {
     EXPECT_EQ(legacy.specularColor, (std::array<float, 3>{0.2f, 0.2f, 0.2f}));
 }
 
+// Issue 21: KHR_materials_anisotropy and KHR_materials_clearcoat, values and textures; values
+// outside [0, 1] are clamped with a warning naming the material.
+TEST(GltfFeatures, AnisotropyAndClearcoatExtensions) {
+    json doc = quadDocument();
+    doc["extensionsUsed"] = {"KHR_materials_anisotropy", "KHR_materials_clearcoat"};
+    doc["extensionsRequired"] = {"KHR_materials_anisotropy", "KHR_materials_clearcoat"};
+    doc["images"] = json::array({{{"uri", "data:image/png;base64,AAAA"}}});
+    doc["textures"] = json::array({{{"source", 0}}});
+    doc["materials"] = json::array({
+        {{"name", "brushed"},
+         {"extensions",
+          {{"KHR_materials_anisotropy",
+            {{"anisotropyStrength", 0.6},
+             {"anisotropyRotation", 0.5},
+             {"anisotropyTexture", {{"index", 0}, {"texCoord", 1}}}}}}}},
+        {{"name", "paint"},
+         {"extensions",
+          {{"KHR_materials_clearcoat",
+            {{"clearcoatFactor", 0.8},
+             {"clearcoatRoughnessFactor", 0.1},
+             {"clearcoatTexture", {{"index", 0}}},
+             {"clearcoatRoughnessTexture", {{"index", 0}}},
+             {"clearcoatNormalTexture", {{"index", 0}, {"scale", 0.5}}}}}}}},
+        {{"name", "out of range"},
+         {"extensions",
+          {{"KHR_materials_anisotropy", {{"anisotropyStrength", 3.0}}},
+           {"KHR_materials_clearcoat", {{"clearcoatFactor", -1.0}}}}}},
+        {{"name", "plain"}},
+    });
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    ASSERT_EQ(m->materials.size(), 4u);
+    const Material& brushed = m->materials[0];
+    EXPECT_TRUE(brushed.anisotropic());
+    EXPECT_FALSE(brushed.clearCoated());
+    EXPECT_FLOAT_EQ(brushed.anisotropyStrength, 0.6f);
+    EXPECT_FLOAT_EQ(brushed.anisotropyRotation, 0.5f);
+    EXPECT_TRUE(brushed.anisotropyTexture.present());
+    EXPECT_EQ(brushed.anisotropyTexture.texCoord, 1u);
+    EXPECT_EQ(brushed.anisotropyTexture.colorSpace, ColorSpace::Linear);
+    const Material& paint = m->materials[1];
+    EXPECT_TRUE(paint.clearCoated());
+    EXPECT_FALSE(paint.anisotropic());
+    EXPECT_FLOAT_EQ(paint.clearcoatFactor, 0.8f);
+    EXPECT_FLOAT_EQ(paint.clearcoatRoughnessFactor, 0.1f);
+    EXPECT_TRUE(paint.clearcoatTexture.present());
+    EXPECT_TRUE(paint.clearcoatRoughnessTexture.present());
+    EXPECT_TRUE(paint.clearcoatNormalTexture.present());
+    EXPECT_FLOAT_EQ(paint.clearcoatNormalScale, 0.5f);
+    const Material& clamped = m->materials[2];
+    EXPECT_FLOAT_EQ(clamped.anisotropyStrength, 1.0f);
+    EXPECT_FLOAT_EQ(clamped.clearcoatFactor, 0.0f);
+    EXPECT_TRUE(diagnostics.mentions("materials[2]")) << diagnostics.toString();
+    EXPECT_FALSE(m->materials[3].anisotropic());
+    EXPECT_FALSE(m->materials[3].clearCoated());
+}
+
 TEST(GltfFeatures, CamerasMatricesStripsU8IndicesAndVertexColours) {
     json doc = quadDocument();
     testing::BinaryBuffer buffer;

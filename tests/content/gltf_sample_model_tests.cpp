@@ -174,5 +174,31 @@ TEST(GltfSampleModels, BoxHasAHierarchyAndBoxTexturedADecodedTexture) {
     EXPECT_EQ(textured.materials[0].baseColorTexture.colorSpace, ColorSpace::Srgb);
 }
 
+// Issue 21: the Khronos test models of the two extensions load with their grids intact.
+TEST(GltfSampleModels, AnisotropyStrengthTestHasItsStrengthGrid) {
+    Model m = loadClean("AnisotropyStrengthTest");
+    std::set<float> strengths;
+    for (const Material& mat : m.materials)
+        strengths.insert(mat.anisotropyStrength);
+    EXPECT_EQ(strengths.size(), 7u) << "strength 0 to 1 in sixths";
+    EXPECT_EQ(*strengths.begin(), 0.0f);
+    EXPECT_EQ(*strengths.rbegin(), 1.0f);
+}
+
+TEST(GltfSampleModels, ClearCoatTestHasFactorsTexturesAndCoatNormals) {
+    Model m = loadClean("ClearCoatTest");
+    int coated = 0, coatTextures = 0, coatNormals = 0, coatRoughnessTextures = 0;
+    for (const Material& mat : m.materials) {
+        coated += mat.clearCoated();
+        coatTextures += mat.clearcoatTexture.present();
+        coatNormals += mat.clearcoatNormalTexture.present();
+        coatRoughnessTextures += mat.clearcoatRoughnessTexture.present();
+    }
+    EXPECT_GE(coated, 5);
+    EXPECT_GE(coatTextures, 1);
+    EXPECT_GE(coatNormals, 1);
+    EXPECT_GE(coatRoughnessTextures, 1);
+}
+
 }  // namespace
 }  // namespace candela::content

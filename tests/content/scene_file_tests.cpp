@@ -137,6 +137,39 @@ TEST(SceneFile, SaveLoadSaveRoundTripsBitExactly) {
     EXPECT_EQ(sceneToJson(*loaded, error), sceneToJson(original, error));
 }
 
+// Issue 21: material overrides keep the anisotropy and clear-coat fields through save and load;
+// a material without them writes none of their keys (older files re-save byte for byte).
+TEST(SceneFile, MaterialExtensionsRoundTripAndAreOnlyWrittenWhenUsed) {
+    SceneDocument scene = exampleScene();
+    std::string error;
+    const std::string plain = sceneToJson(scene, error);
+    EXPECT_EQ(plain.find("anisotropy"), std::string::npos);
+    EXPECT_EQ(plain.find("clearcoat"), std::string::npos);
+
+    Material& m = scene.entities[1].materialOverrides[0].material;
+    m.anisotropyStrength = 0.75f;
+    m.anisotropyRotation = 0.3f;
+    m.anisotropyTexture.texture = 2;
+    m.clearcoatFactor = 0.9f;
+    m.clearcoatRoughnessFactor = 0.05f;
+    m.clearcoatNormalTexture.texture = 3;
+    m.clearcoatNormalScale = 0.5f;
+    const auto path = testing::tempPath("coated.scene.json");
+    ASSERT_EQ(saveSceneFile(path, scene), "");
+    Diagnostics diagnostics;
+    auto loaded = loadSceneFile(path, diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    const Material& r = loaded->entities[1].materialOverrides[0].material;
+    EXPECT_EQ(r.anisotropyStrength, 0.75f);
+    EXPECT_EQ(r.anisotropyRotation, 0.3f);
+    EXPECT_EQ(r.anisotropyTexture.texture, 2);
+    EXPECT_EQ(r.clearcoatFactor, 0.9f);
+    EXPECT_EQ(r.clearcoatRoughnessFactor, 0.05f);
+    EXPECT_EQ(r.clearcoatNormalTexture.texture, 3);
+    EXPECT_EQ(r.clearcoatNormalScale, 0.5f);
+    EXPECT_EQ(sceneToJson(*loaded, error), sceneToJson(scene, error));
+}
+
 // Issue 26: the top-level "brdf" survives save and load; a misspelt value is an error naming
 // the file and /brdf, and the scene still loads with the engine's default.
 TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {

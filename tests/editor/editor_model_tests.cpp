@@ -370,6 +370,21 @@ TEST_F(EditorModel, MaterialEditsWriteOverridesAndKeepTheModelMaterial) {
     ASSERT_TRUE(scene->undo());
     EXPECT_FALSE(registry.has<content::MaterialOverrides>(floor));
     EXPECT_EQ(effectiveMaterial(*scene, floor, 0).roughnessFactor, 0.8f);
+
+    // Issue 21: the material extensions edit and undo like any other field.
+    ASSERT_TRUE(scene->execute(propertyEdit(*scene, floor, "material.anisotropy", {0.7f}, error)));
+    ASSERT_TRUE(scene->execute(propertyEdit(*scene, floor, "material.clearcoat", {1.0f}, error)));
+    ASSERT_TRUE(
+        scene->execute(propertyEdit(*scene, floor, "material.clearcoatRoughness", {0.1f}, error)));
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).anisotropyStrength, 0.7f);
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).clearcoatFactor, 1.0f);
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).clearcoatRoughnessFactor, 0.1f);
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).clearcoatRoughnessFactor, 0.0f);
+    ASSERT_TRUE(scene->undo());
+    EXPECT_FALSE(effectiveMaterial(*scene, floor, 0).clearCoated());
+    ASSERT_TRUE(scene->undo());
+    EXPECT_FALSE(effectiveMaterial(*scene, floor, 0).anisotropic());
 }
 
 }  // namespace

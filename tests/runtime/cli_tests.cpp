@@ -120,8 +120,9 @@ TEST(Cli, DemoRendersHeadlessWithEveryFeature) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     nlohmann::json stats = nlohmann::json::parse(readBytes(dir / "demo.json"));
     auto features = stats["features"].get<std::vector<std::string>>();
-    for (const char* expected : {"shading_subsurface", "shading_legacy_diffuse_specular",
-                                 "lights_sphere", "lights_tube"}) {
+    for (const char* expected :
+         {"shading_subsurface", "shading_legacy_diffuse_specular", "lights_sphere", "lights_tube",
+          "material_anisotropy", "material_clear_coat"}) {
         EXPECT_NE(std::find(features.begin(), features.end(), expected), features.end())
             << expected;
     }
@@ -680,4 +681,31 @@ TEST(Cli, AFullCacheDiskIsAWarningAndLeavesNoPartialEntry) {
     EXPECT_NE(r.output.find(cache.string()), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("No space left on device"), std::string::npos) << r.output;
     EXPECT_TRUE(std::filesystem::is_empty(cache)) << "a partial cache entry was left";
+}
+
+// Issue 21: anisotropy and clear coat are compiled into the frames whose materials use them
+// (stats `features`: material_anisotropy, material_clear_coat) and out of the others.
+TEST(Cli, MaterialExtensionFeaturesOnlyInFramesThatUseThem) {
+    auto dir = tempDir();
+    auto features = [&](const std::string& name) {
+        const std::string scene =
+            std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/" + name + ".scene.json";
+        RunResult r = runCandela("run " + scene + " --headless --size 32x32 --stats " +
+                                 (dir / (name + ".json")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return nlohmann::json::parse(readBytes(dir / (name + ".json")))["features"]
+            .get<std::vector<std::string>>();
+    };
+    auto has = [](const std::vector<std::string>& f, const char* name) {
+        return std::find(f.begin(), f.end(), name) != f.end();
+    };
+    const auto plain = features("sphere_grid_point");
+    EXPECT_FALSE(has(plain, "material_anisotropy"));
+    EXPECT_FALSE(has(plain, "material_clear_coat"));
+    const auto brushed = features("anisotropy_strength");
+    EXPECT_TRUE(has(brushed, "material_anisotropy"));
+    EXPECT_FALSE(has(brushed, "material_clear_coat"));
+    const auto coated = features("clear_coat");
+    EXPECT_FALSE(has(coated, "material_anisotropy"));
+    EXPECT_TRUE(has(coated, "material_clear_coat"));
 }

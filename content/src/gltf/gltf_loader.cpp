@@ -15,8 +15,9 @@ namespace candela::content {
 namespace {
 
 constexpr std::array kSupportedExtensions = {
-    "KHR_lights_punctual",   "KHR_materials_emissive_strength", "KHR_materials_unlit",
-    "KHR_texture_transform", "KHR_materials_specular",
+    "KHR_lights_punctual",     "KHR_materials_emissive_strength", "KHR_materials_unlit",
+    "KHR_texture_transform",   "KHR_materials_specular",          "KHR_materials_anisotropy",
+    "KHR_materials_clearcoat",
 };
 
 bool isSupported(const std::string& extension) {

@@ -1,5 +1,6 @@
 // glTF materials (core, KHR_materials_emissive_strength, KHR_materials_unlit,
-// KHR_materials_specular, KHR_texture_transform) and the engine's `extras` -> Model::materials.
+// KHR_materials_specular, KHR_materials_anisotropy, KHR_materials_clearcoat,
+// KHR_texture_transform) and the engine's `extras` -> Model::materials.
 #include <algorithm>
 
 #include "candela/content/component_validation.h"
@@ -106,6 +107,56 @@ void readSpecularExtension(Context& context, const std::string& element, const t
     }
 }
 
+void readAnisotropyExtension(Context& context, const std::string& element,
+                             const tinygltf::Value& ext, Material& material) {
+    float strength = 0;
+    if (member(ext, "anisotropyStrength") && !readNumber(ext, "anisotropyStrength", strength)) {
+        context.warning(element, "anisotropyStrength is not a finite number; using 0");
+    }
+    material.anisotropyStrength = std::clamp(strength, 0.0f, 1.0f);
+    if (strength != material.anisotropyStrength) {
+        context.warning(element, "anisotropyStrength " + std::to_string(strength) +
+                                     " is outside [0, 1]; clamped");
+    }
+    if (member(ext, "anisotropyRotation") &&
+        !readNumber(ext, "anisotropyRotation", material.anisotropyRotation)) {
+        context.warning(element, "anisotropyRotation is not a finite number; using 0");
+    }
+    if (const tinygltf::Value* t = member(ext, "anisotropyTexture")) {
+        material.anisotropyTexture =
+            makeTextureRef(context, element + ".anisotropyTexture", *t, ColorSpace::Linear);
+    }
+}
+
+void readClearcoatExtension(Context& context, const std::string& element,
+                            const tinygltf::Value& ext, Material& material) {
+    auto unit = [&](const char* key, float& out) {
+        if (!member(ext, key)) return;
+        float v = 0;
+        if (!readNumber(ext, key, v)) {
+            context.warning(element, std::string(key) + " is not a finite number; using 0");
+            return;
+        }
+        out = std::clamp(v, 0.0f, 1.0f);
+        if (out != v) context.warning(element, std::string(key) + " is outside [0, 1]; clamped");
+    };
+    unit("clearcoatFactor", material.clearcoatFactor);
+    unit("clearcoatRoughnessFactor", material.clearcoatRoughnessFactor);
+    if (const tinygltf::Value* t = member(ext, "clearcoatTexture")) {
+        material.clearcoatTexture =
+            makeTextureRef(context, element + ".clearcoatTexture", *t, ColorSpace::Linear);
+    }
+    if (const tinygltf::Value* t = member(ext, "clearcoatRoughnessTexture")) {
+        material.clearcoatRoughnessTexture =
+            makeTextureRef(context, element + ".clearcoatRoughnessTexture", *t, ColorSpace::Linear);
+    }
+    if (const tinygltf::Value* t = member(ext, "clearcoatNormalTexture")) {
+        material.clearcoatNormalTexture =
+            makeTextureRef(context, element + ".clearcoatNormalTexture", *t, ColorSpace::Linear);
+        readNumber(*t, "scale", material.clearcoatNormalScale);
+    }
+}
+
 void readEngineExtras(Context& context, const std::string& element, const tinygltf::Value& extras,
                       Material& material) {
     if (!extras.IsObject()) return;
@@ -201,6 +252,14 @@ Material convertMaterial(Context& context, const tinygltf::Material& source,
     if (auto it = extensions.find("KHR_materials_specular"); it != extensions.end()) {
         readSpecularExtension(context, element + ".extensions.KHR_materials_specular", it->second,
                               material);
+    }
+    if (auto it = extensions.find("KHR_materials_anisotropy"); it != extensions.end()) {
+        readAnisotropyExtension(context, element + ".extensions.KHR_materials_anisotropy",
+                                it->second, material);
+    }
+    if (auto it = extensions.find("KHR_materials_clearcoat"); it != extensions.end()) {
+        readClearcoatExtension(context, element + ".extensions.KHR_materials_clearcoat", it->second,
+                               material);
     }
     // Extras come last: an engine-specific value wins over what an extension implied.
     readEngineExtras(context, element + ".extras", source.extras, material);

@@ -230,6 +230,15 @@ public:
         number(j, p, "subsurfaceOpacity", m.subsurfaceOpacity);
         numbers(j, p, "diffuseColor", m.diffuseColor);
         numbers(j, p, "specularColor", m.specularColor);
+        number(j, p, "anisotropyStrength", m.anisotropyStrength);
+        number(j, p, "anisotropyRotation", m.anisotropyRotation);
+        textureRef(j, p, "anisotropyTexture", m.anisotropyTexture);
+        number(j, p, "clearcoatFactor", m.clearcoatFactor);
+        textureRef(j, p, "clearcoatTexture", m.clearcoatTexture);
+        number(j, p, "clearcoatRoughnessFactor", m.clearcoatRoughnessFactor);
+        textureRef(j, p, "clearcoatRoughnessTexture", m.clearcoatRoughnessTexture);
+        textureRef(j, p, "clearcoatNormalTexture", m.clearcoatNormalTexture);
+        number(j, p, "clearcoatNormalScale", m.clearcoatNormalScale);
         report(p, validateEmission(m));
     }
 

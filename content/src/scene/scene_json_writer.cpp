@@ -45,6 +45,29 @@ struct Writer {
     }
 
     json material(const Material& m, const std::string& p) {
+        json out = baseMaterial(m, p);
+        // The extensions only when used, so files of materials without them stay as they were.
+        if (m.anisotropic() || m.anisotropyTexture.present()) {
+            out["anisotropyStrength"] = number(m.anisotropyStrength, p + "/anisotropyStrength");
+            out["anisotropyRotation"] = number(m.anisotropyRotation, p + "/anisotropyRotation");
+            out["anisotropyTexture"] = textureRef(m.anisotropyTexture, p + "/anisotropyTexture");
+        }
+        if (m.clearCoated() || m.clearcoatTexture.present()) {
+            out["clearcoatFactor"] = number(m.clearcoatFactor, p + "/clearcoatFactor");
+            out["clearcoatTexture"] = textureRef(m.clearcoatTexture, p + "/clearcoatTexture");
+            out["clearcoatRoughnessFactor"] =
+                number(m.clearcoatRoughnessFactor, p + "/clearcoatRoughnessFactor");
+            out["clearcoatRoughnessTexture"] =
+                textureRef(m.clearcoatRoughnessTexture, p + "/clearcoatRoughnessTexture");
+            out["clearcoatNormalTexture"] =
+                textureRef(m.clearcoatNormalTexture, p + "/clearcoatNormalTexture");
+            out["clearcoatNormalScale"] =
+                number(m.clearcoatNormalScale, p + "/clearcoatNormalScale");
+        }
+        return out;
+    }
+
+    json baseMaterial(const Material& m, const std::string& p) {
         return {
             {"name", m.name},
             {"shadingModel", nameOf(kShadingModels, m.shadingModel)},

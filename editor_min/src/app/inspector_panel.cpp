@@ -204,6 +204,15 @@ void drawMaterials(EditorScene& scene, ecs::Entity e) {
                 edited(ImGui::SliderFloat("Subsurface opacity", &m.subsurfaceOpacity, 0.0f, 1.0f));
             }
             edited(ImGui::ColorEdit3("Emissive", m.emissiveFactor.data()));
+            if (m.shadingModel != content::ShadingModel::Unlit) {
+                // KHR_materials_anisotropy and KHR_materials_clearcoat (0: off, and compiled
+                // out of frames that use neither).
+                edited(ImGui::SliderFloat("Anisotropy", &m.anisotropyStrength, 0.0f, 1.0f));
+                edited(ImGui::SliderAngle("Anisotropy rotation", &m.anisotropyRotation));
+                edited(ImGui::SliderFloat("Clear coat", &m.clearcoatFactor, 0.0f, 1.0f));
+                edited(ImGui::SliderFloat("Clear coat roughness", &m.clearcoatRoughnessFactor, 0.0f,
+                                          1.0f));
+            }
             if (primitives > 1) ImGui::TreePop();
         }
         ImGui::PopID();

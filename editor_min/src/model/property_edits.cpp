@@ -96,6 +96,11 @@ const std::map<std::string, Field<content::Material>>& fields() {
         {"metallic", {1, [](M& m, const Values& v) { m.metallicFactor = v[0]; }}},
         {"roughness", {1, [](M& m, const Values& v) { m.roughnessFactor = v[0]; }}},
         {"specular", {1, [](M& m, const Values& v) { m.specular = v[0]; }}},
+        {"anisotropy", {1, [](M& m, const Values& v) { m.anisotropyStrength = v[0]; }}},
+        {"anisotropyRotation", {1, [](M& m, const Values& v) { m.anisotropyRotation = v[0]; }}},
+        {"clearcoat", {1, [](M& m, const Values& v) { m.clearcoatFactor = v[0]; }}},
+        {"clearcoatRoughness",
+         {1, [](M& m, const Values& v) { m.clearcoatRoughnessFactor = v[0]; }}},
     };
     return table;
 }

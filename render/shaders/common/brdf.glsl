@@ -41,6 +41,42 @@ float visibilitySmithSchlick(float alpha, float NoV, float NoL) {
     return 0.25 / (gv * gl);
 }
 
+// Anisotropic GGX (seed 000 section 2.2.1, Burley 2012's D_GGXaniso): alphaT along the tangent
+// T, alphaB along the bitangent B; ToH, BoH, NoH are H in the frame (T, B, N). The seed's
+//   D = 1 / (pi aT aB d^2),  d = ToH^2 / aT^2 + BoH^2 / aB^2 + NoH^2
+// is multiplied through by aT aB here: D = aT aB / (pi s^2), s = ToH^2 aB/aT + BoH^2 aT/aB +
+// aT aB NoH^2. For aT == aB both ratios are exactly 1, so s = ToH^2 + BoH^2 + a2 NoH^2: the
+// isotropic D in its tangent-space form (distributionGgxTangent), to the last bit, and no
+// 1 - NoH^2 cancellation for narrow lobes. alphaT, alphaB > 0.
+float distributionGgxAnisotropic(float alphaT, float alphaB, float ToH, float BoH, float NoH) {
+    float s = ToH * ToH * (alphaB / alphaT) + BoH * BoH * (alphaT / alphaB) +
+              alphaT * alphaB * NoH * NoH;
+    return alphaT * alphaB / (PI * s * s);
+}
+
+// Eq. 3 from H's components in the frame (T, B, N): 1 - NoH^2 = ToH^2 + BoH^2 exactly.
+float distributionGgxTangent(float a2, float ToH, float BoH, float NoH) {
+    float s = ToH * ToH + BoH * BoH + a2 * NoH * NoH;
+    return a2 / (PI * s * s);
+}
+
+// Height-correlated Smith visibility for the anisotropic GGX (Heitz 2014, eq. 99 folded with
+// 1 / (4 NoL NoV)): Lambda of a direction w is (sqrt(1 + (aT^2 w.t^2 + aB^2 w.b^2) / w.n^2) - 1)
+// / 2. For aT == aB = a, aT^2 ToV^2 + aB^2 BoV^2 = a^2 (1 - NoV^2): visibilitySmithGgxCorrelated.
+float visibilitySmithGgxCorrelatedAnisotropic(float alphaT, float alphaB, float ToV, float BoV,
+                                              float NoV, float ToL, float BoL, float NoL) {
+    float lambdaV = NoL * length(vec3(alphaT * ToV, alphaB * BoV, NoV));
+    float lambdaL = NoV * length(vec3(alphaT * ToL, alphaB * BoL, NoL));
+    return 0.5 / max(lambdaV + lambdaL, 1e-12);
+}
+
+// KHR_materials_anisotropy's roughness pair: alpha along the anisotropy direction grows with
+// the strength, alpha across it stays the material's: (mix(alpha, 1, strength^2), alpha).
+vec2 anisotropicAlphas(float roughness, float strength) {
+    float alpha = alphaFromRoughness(roughness);
+    return vec2(mix(alpha, 1.0, strength * strength), alpha);
+}
+
 // Exact height-correlated Smith GGX visibility, the reference eq. 4 approximates.
 float visibilitySmithGgxCorrelated(float alpha, float NoV, float NoL) {
     float a2 = alpha * alpha;

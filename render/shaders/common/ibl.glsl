@@ -39,16 +39,6 @@ vec3 cosineSampleHemisphere(vec2 xi) {
     return vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - xi.x, 0.0)));
 }
 
-// Orthonormal basis with N as +Z (Frisvad's construction, revised for N.z near -1).
-mat3 tangentFrame(vec3 N) {
-    float s = N.z >= 0.0 ? 1.0 : -1.0;
-    float a = -1.0 / (s + N.z);
-    float b = N.x * N.y * a;
-    vec3 t = vec3(1.0 + s * N.x * N.x * a, s * b, -s * N.x);
-    vec3 bt = vec3(b, s + N.y * N.y * a, -N.y);
-    return mat3(t, bt, N);
-}
-
 // World direction through (s, t) in [0, 1]^2 of Vulkan cube face `face` (+X,-X,+Y,-Y,+Z,-Z;
 // t = 0 is the top row). The inverse of the spec's face selection, as content's
 // cubeFaceDirection(), so CPU and GPU agree on every texel.
@@ -125,6 +115,27 @@ vec3 importanceSampleGgxVisible(vec2 xi, float alpha, vec3 V) {
     float t2 = mix(sqrt(max(1.0 - t1 * t1, 0.0)), r * sin(phi), s);
     vec3 Nh = t1 * T1 + t2 * T2 + sqrt(max(1.0 - t1 * t1 - t2 * t2, 0.0)) * Vh;
     return safeNormalize(vec3(alpha * Nh.x, alpha * Nh.y, max(Nh.z, 1e-7)));
+}
+
+// importanceSampleGgxVisible for an anisotropic lobe: alpha.x along +X, alpha.y along +Y.
+vec3 importanceSampleGgxVisibleAnisotropic(vec2 xi, vec2 alpha, vec3 V) {
+    vec3 Vh = normalize(vec3(alpha.x * V.x, alpha.y * V.y, V.z));
+    float lengthSquared = Vh.x * Vh.x + Vh.y * Vh.y;
+    vec3 T1 = lengthSquared > 0.0 ? vec3(-Vh.y, Vh.x, 0.0) * inversesqrt(lengthSquared)
+                                  : vec3(1.0, 0.0, 0.0);
+    vec3 T2 = cross(Vh, T1);
+    float r = sqrt(xi.x);
+    float phi = 2.0 * PI * xi.y;
+    float t1 = r * cos(phi);
+    float s = 0.5 * (1.0 + Vh.z);
+    float t2 = mix(sqrt(max(1.0 - t1 * t1, 0.0)), r * sin(phi), s);
+    vec3 Nh = t1 * T1 + t2 * T2 + sqrt(max(1.0 - t1 * t1 - t2 * t2, 0.0)) * Vh;
+    return safeNormalize(vec3(alpha.x * Nh.x, alpha.y * Nh.y, max(Nh.z, 1e-7)));
+}
+
+// Exact Smith G1 of the anisotropic GGX for a direction in the lobe's frame.
+float smithG1GgxAnisotropic(vec2 alpha, vec3 X) {
+    return 2.0 * X.z / (X.z + length(vec3(alpha.x * X.x, alpha.y * X.y, X.z)));
 }
 
 // Weight of one visible-normal sample in the specular integral, without F:
@@ -266,6 +277,29 @@ vec3 environmentBrdfMobile(vec3 specularColor, float roughness, float NoV, bool 
 // roughness m / (mipCount - 1).
 float prefilteredMipOfRoughness(float roughness, float mipCount) {
     return saturate(roughness) * (mipCount - 1.0);
+}
+
+// --- Anisotropic image-based light ------------------------------------------------------------
+
+// The prefiltered cube and the LUT are isotropic; an anisotropic lobe is approximated by
+// bending the normal before reflecting (the "bent reflection vector" of Revie 2011 and
+// McAuley 2015). The lobe is stretched along T (alphaT > alphaB): its mirror directions fan
+// out in the plane of T and N. Bending N toward the normal, within that plane, that faces V
+// most (V without its component along B) moves R the way the stretched highlight moves on a
+// brushed surface. The bend grows with the lobe's eccentricity (alphaT - alphaB) /
+// (alphaT + alphaB): 0 for an isotropic lobe, 1 for a line. The cube and the LUT are then read
+// at the lobe's mean roughness, sqrt((alphaT + alphaB) / 2) (anisotropicAmbientRoughness).
+vec3 anisotropicReflection(vec3 N, vec3 V, vec3 T, vec2 alpha) {
+    vec3 B = cross(N, T);
+    vec3 facing = V - B * dot(V, B);  // in the plane of T and N
+    if (dot(facing, facing) < 1e-12) return reflect(-V, N);
+    float bend = (alpha.x - alpha.y) / max(alpha.x + alpha.y, 1e-7);
+    vec3 bentN = safeNormalize(mix(N, normalize(facing), saturate(bend)));
+    return reflect(-V, bentN);
+}
+
+float anisotropicAmbientRoughness(vec2 alpha) {
+    return sqrt(0.5 * (alpha.x + alpha.y));
 }
 
 // --- Diffuse irradiance: order-2 spherical harmonics ----------------------------------------

@@ -28,7 +28,9 @@ struct Material {
     uint shadingModel;
     uint pad;
     vec4 specularColorScale;  // see gpu_material.h
-    TextureTransform transforms[7];
+    vec4 anisotropy;  // strength, cos(rotation), sin(rotation)
+    vec4 clearcoat;   // factor, roughness, normal scale
+    TextureTransform transforms[11];
 };
 
 layout(std430, binding = MATERIAL_BUFFER_BINDING) readonly buffer Materials {
@@ -41,6 +43,10 @@ layout(binding = MATERIAL_TEXTURE_BINDING + 3) uniform sampler2D occlusionTextur
 layout(binding = MATERIAL_TEXTURE_BINDING + 4) uniform sampler2D emissiveTexture;
 layout(binding = MATERIAL_TEXTURE_BINDING + 5) uniform sampler2D specularTexture;
 layout(binding = MATERIAL_TEXTURE_BINDING + 6) uniform sampler2D specularColorTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 7) uniform sampler2D anisotropyTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 8) uniform sampler2D clearcoatTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 9) uniform sampler2D clearcoatRoughnessTexture;
+layout(binding = MATERIAL_TEXTURE_BINDING + 10) uniform sampler2D clearcoatNormalTexture;
 
 // A material evaluated at one fragment.
 struct MaterialSample {
@@ -53,6 +59,16 @@ struct MaterialSample {
     vec3 emissive;  // cd/m^2
     vec4 customData;
     uint shadingModel;
+};
+
+// KHR_materials_anisotropy and KHR_materials_clearcoat at one fragment (evaluateMaterialLayers
+// below): only the G-buffer variant that has targets for them evaluates these.
+struct MaterialExtensions {
+    float anisotropy;     // strength, 0: isotropic
+    vec3 anisotropyT;     // unit direction of the stretched lobe, orthogonal to the shading N
+    float clearCoat;      // 0: no coat
+    float clearCoatRoughness;
+    vec3 clearCoatN;      // the coat's own normal (its normal map, else the geometric normal)
 };
 
 // UV gradients, taken once per fragment in uniform control flow (materialGradients), so the
@@ -124,6 +140,58 @@ MaterialSample evaluateMaterial(Material m, MaterialUv uv, vec4 baseColor, vec3 
     s.customData = clamp(m.customData, 0.0, 1.0);
     s.shadingModel = m.shadingModel;
     return s;
+}
+
+// The anisotropy direction and the clear coat. `tangent` as evaluateMaterial's; `N` the shading
+// normal it returned (the stretched direction is made orthogonal to it, as KHR's
+// anisotropicB = cross(N, anisotropicT) implies).
+MaterialExtensions evaluateMaterialExtensions(Material m, MaterialUv uv, vec3 normal,
+                                              vec4 tangent, bool frontFacing, vec3 N) {
+    MaterialExtensions e;
+    vec3 geometricN = safeNormalize(normal);
+    if (!frontFacing) geometricN = -geometricN;
+    vec3 T, B;
+    if (dot(tangent.xyz, tangent.xyz) > 0.0) {
+        T = safeNormalize(tangent.xyz - geometricN * dot(geometricN, tangent.xyz));
+        B = cross(geometricN, T) * (tangent.w < 0.0 ? -1.0 : 1.0);
+    } else {
+        mat3 frame = tangentFrame(geometricN);
+        T = frame[0];
+        B = frame[1];
+    }
+
+    // KHR_materials_anisotropy: direction = rotation(anisotropyRotation) * (texture.rg * 2 - 1),
+    // (1, 0) without a texture; strength *= texture.b.
+    e.anisotropy = m.anisotropy.x;
+    vec2 direction = vec2(1.0, 0.0);
+    if (m.transforms[7].present != 0u) {
+        vec3 t = sampleSlot(anisotropyTexture, m.transforms[7], uv).rgb;
+        direction = t.rg * 2.0 - 1.0;
+        e.anisotropy *= t.b;
+    }
+    direction = mat2(m.anisotropy.y, m.anisotropy.z, -m.anisotropy.z, m.anisotropy.y) * direction;
+    vec3 stretched = T * direction.x + B * direction.y;
+    stretched -= N * dot(N, stretched);
+    e.anisotropy = dot(stretched, stretched) > 1e-12 ? saturate(e.anisotropy) : 0.0;
+    e.anisotropyT = safeNormalize(stretched);
+
+    e.clearCoat = m.clearcoat.x;
+    if (m.transforms[8].present != 0u) {
+        e.clearCoat *= sampleSlot(clearcoatTexture, m.transforms[8], uv).r;
+    }
+    e.clearCoat = saturate(e.clearCoat);
+    e.clearCoatRoughness = m.clearcoat.y;
+    if (m.transforms[9].present != 0u) {
+        e.clearCoatRoughness *= sampleSlot(clearcoatRoughnessTexture, m.transforms[9], uv).g;
+    }
+    e.clearCoatRoughness = saturate(e.clearCoatRoughness);
+    e.clearCoatN = geometricN;
+    if (m.transforms[10].present != 0u) {
+        vec3 n = sampleSlot(clearcoatNormalTexture, m.transforms[10], uv).xyz * 2.0 - 1.0;
+        n.xy *= m.clearcoat.z;
+        e.clearCoatN = safeNormalize(mat3(T, B, geometricN) * n);
+    }
+    return e;
 }
 
 #endif

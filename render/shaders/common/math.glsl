@@ -29,4 +29,14 @@ vec3 octDecode(vec2 e) {
     return safeNormalize(n);
 }
 
+// Orthonormal basis with N as +Z (Frisvad's construction, revised for N.z near -1).
+mat3 tangentFrame(vec3 N) {
+    float s = N.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + N.z);
+    float b = N.x * N.y * a;
+    vec3 t = vec3(1.0 + s * N.x * N.x * a, s * b, -s * N.x);
+    vec3 bt = vec3(b, s + N.y * N.y * a, -N.y);
+    return mat3(t, bt, N);
+}
+
 #endif

@@ -19,6 +19,14 @@ const uint kShadingLegacyDiffuseSpecular = 3u;
 layout(constant_id = SPEC_SUBSURFACE_ENABLED) const bool kSubsurfaceEnabled = true;
 layout(constant_id = SPEC_LEGACY_DIFFUSE_SPECULAR_ENABLED) const bool kLegacyDiffuseSpecularEnabled =
     true;
+// Material extensions (KHR_materials_anisotropy, KHR_materials_clearcoat): on only in deferred
+// variants whose frame has a material using them, so other frames compile them out (and the
+// forward pass, which never sets them, shades blended surfaces without them).
+layout(constant_id = SPEC_ANISOTROPY_ENABLED) const bool kAnisotropyEnabled = false;
+layout(constant_id = SPEC_CLEAR_COAT_ENABLED) const bool kClearCoatEnabled = false;
+
+// Clear coat: a dielectric of IOR 1.5 (KHR_materials_clearcoat), F0 = 0.04.
+const float kClearCoatF0 = 0.04;
 
 struct Surface {
     vec3 baseColor;    // DefaultLit/Subsurface: base colour; Legacy: DiffuseColor
@@ -30,7 +38,40 @@ struct Surface {
     // E_ss of the specular lobe at this view (specularDirectionalAlbedo), read by the energy-
     // conserving BRDF's multiple-scattering compensation; 1 leaves the lobe as it is.
     float directionalAlbedo;
+    // Read only by variants with kAnisotropyEnabled / kClearCoatEnabled (surfaceWithout-
+    // Extensions sets the neutral values).
+    float anisotropy;    // KHR strength: alpha along anisotropyT mix(alpha, 1, strength^2)
+    vec3 anisotropyT;    // unit, orthogonal to N
+    float clearCoat;     // coat factor
+    float clearCoatRoughness;
+    vec3 clearCoatN;
 };
+
+void clearSurfaceExtensions(inout Surface s) {
+    s.anisotropy = 0.0;
+    s.anisotropyT = vec3(1.0, 0.0, 0.0);
+    s.clearCoat = 0.0;
+    s.clearCoatRoughness = 0.0;
+    s.clearCoatN = vec3(0.0, 0.0, 1.0);
+}
+
+// The anisotropic GGX lobe (brdf.glsl distributionGgxAnisotropic with its height-correlated
+// visibility) for the representative direction of the incidence, in the frame (T, B, N).
+vec3 specularGgxAnisotropic(vec3 specularColor, Surface s, vec3 N, vec3 V, LightIncidence inc) {
+    vec2 alpha = anisotropicAlphas(s.roughness, s.anisotropy);
+    vec3 L = inc.specularL;
+    vec3 H = safeNormalize(V + L);
+    vec3 T = s.anisotropyT;
+    vec3 B = cross(N, T);
+    float NoV = saturate(dot(N, V));
+    float NoL = saturate(dot(N, L));
+    float d = distributionGgxAnisotropic(alpha.x, alpha.y, dot(T, H), dot(B, H),
+                                         saturate(dot(N, H)));
+    float vis = visibilitySmithGgxCorrelatedAnisotropic(alpha.x, alpha.y, dot(T, V), dot(B, V),
+                                                        NoV, dot(T, L), dot(B, L), NoL);
+    return d * vis * fresnelSchlickSg(specularColor, saturate(dot(V, H))) *
+           inc.specularIlluminance;
+}
 
 // Cook-Torrance specular (eq. 2) for the representative direction of the incidence: single
 // scattering, with the variant's visibility term (visibilitySmith).
@@ -49,7 +90,9 @@ vec3 specularGgx(vec3 specularColor, float roughness, vec3 N, vec3 V, LightIncid
 // specularGgx plus, for the energy-conserving BRDF, the energy of the further bounces
 // (multipleScatteringCompensation): every light shape goes through here.
 vec3 specularLobe(Surface s, vec3 specularColor, vec3 N, vec3 V, LightIncidence inc) {
-    vec3 specular = specularGgx(specularColor, s.roughness, N, V, inc);
+    vec3 specular = kAnisotropyEnabled && s.anisotropy > 0.0
+                        ? specularGgxAnisotropic(specularColor, s, N, V, inc)
+                        : specularGgx(specularColor, s.roughness, N, V, inc);
     if (kEnergyConserving) {
         specular *= multipleScatteringCompensation(specularColor, s.directionalAlbedo);
     }
@@ -116,6 +159,22 @@ AmbientTerms ambientTermsOf(Surface s) {
         }
     }
     return t;
+}
+
+// The clear coat's own lobe, for an incidence evaluated at its normal (s.clearCoatN) and
+// roughness: the coat factor times a dielectric GGX lobe with the variant's visibility. What
+// it reflects it takes from the layers below: they are scaled by clearCoatAttenuation.
+vec3 clearCoatLobe(Surface s, vec3 V, LightIncidence coatIncidence) {
+    return s.clearCoat * specularGgx(vec3(kClearCoatF0), s.clearCoatRoughness, s.clearCoatN, V,
+                                     coatIncidence);
+}
+
+// What reaches the base through the coat and back: 1 - factor x the coat's directional albedo
+// E_c(NoV) (the split sum's F0 A + B at the coat's roughness, `coatScaleBias` = (A, B)), so
+// base + coat never reflect more than the base alone could (a white furnace gives at most
+// (1 - c E_c) + c E_c = 1; tests/render/ibl_tests.cpp ClearCoatFurnace).
+float clearCoatAttenuation(Surface s, vec2 coatScaleBias) {
+    return 1.0 - s.clearCoat * saturate(kClearCoatF0 * coatScaleBias.x + coatScaleBias.y);
 }
 
 vec3 shadeSurface(Surface s, vec3 N, vec3 V, LightIncidence inc) {

@@ -8,6 +8,10 @@
 #define SPEC_LEGACY_DIFFUSE_SPECULAR_ENABLED 11
 // The BRDF (brdf.glsl, --brdf): seed 000's UE4 terms (false) or energy-conserving (true).
 #define SPEC_ENERGY_CONSERVING 12
+// Material extensions a variant contains (shading_models.glsl): KHR_materials_anisotropy and
+// KHR_materials_clearcoat.
+#define SPEC_ANISOTROPY_ENABLED 13
+#define SPEC_CLEAR_COAT_ENABLED 14
 // Light shapes a variant contains (lights.glsl).
 #define SPEC_SPHERE_LIGHTS_ENABLED 20
 #define SPEC_TUBE_LIGHTS_ENABLED 21

@@ -33,5 +33,6 @@ void addSplitSumRow(ReportContext& context);
 void addClusteredRow(ReportContext& context);
 void addBrdfEnergyRows(ReportContext& context);
 void addAntialiasingRows(ReportContext& context);
+void addMaterialRows(ReportContext& context);
 
 }  // namespace candela::report

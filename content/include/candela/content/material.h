@@ -63,6 +63,26 @@ struct Material {
     // Legacy diffuse/specular model (extras): used directly, not derived from metallic.
     std::array<float, 3> diffuseColor{0.8f, 0.8f, 0.8f};
     std::array<float, 3> specularColor{0.04f, 0.04f, 0.04f};
+
+    // KHR_materials_anisotropy: the GGX lobe stretched along a direction in the tangent plane,
+    // alpha along it mix(alpha, 1, strength^2). The direction is the tangent rotated by
+    // `anisotropyRotation` (radians, counter-clockwise toward the bitangent), then by the
+    // texture's RG (a direction, [0, 1] -> [-1, 1]); the texture's B scales the strength.
+    float anisotropyStrength = 0;  // [0, 1]; 0: isotropic (compiled out of frames without it)
+    float anisotropyRotation = 0;
+    TextureRef anisotropyTexture;  // linear
+
+    // KHR_materials_clearcoat: a second, dielectric (F0 0.04) GGX lobe over the base, whose
+    // Fresnel takes its share of the light from everything under it.
+    float clearcoatFactor = 0;    // [0, 1]; 0: no coat (compiled out of frames without it)
+    TextureRef clearcoatTexture;  // linear; R scales the factor
+    float clearcoatRoughnessFactor = 0;
+    TextureRef clearcoatRoughnessTexture;  // linear; G scales the roughness
+    TextureRef clearcoatNormalTexture;     // linear, tangent space; none: the geometric normal
+    float clearcoatNormalScale = 1;
+
+    bool anisotropic() const { return anisotropyStrength > 0; }
+    bool clearCoated() const { return clearcoatFactor > 0; }
 };
 
 }  // namespace candela::content

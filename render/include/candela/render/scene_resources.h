@@ -47,8 +47,12 @@ enum TextureSlot : uint32_t {
     kNormalSlot,
     kOcclusionSlot,
     kEmissiveSlot,
-    kSpecularSlot,       // KHR_materials_specular specularTexture (A)
-    kSpecularColorSlot,  // KHR_materials_specular specularColorTexture (RGB, sRGB)
+    kSpecularSlot,            // KHR_materials_specular specularTexture (A)
+    kSpecularColorSlot,       // KHR_materials_specular specularColorTexture (RGB, sRGB)
+    kAnisotropySlot,          // KHR_materials_anisotropy (RG direction, B strength)
+    kClearcoatSlot,           // KHR_materials_clearcoat clearcoatTexture (R)
+    kClearcoatRoughnessSlot,  // KHR_materials_clearcoat clearcoatRoughnessTexture (G)
+    kClearcoatNormalSlot,     // KHR_materials_clearcoat clearcoatNormalTexture
     kTextureSlotCount
 };
 

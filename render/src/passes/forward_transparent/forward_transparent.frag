@@ -78,6 +78,7 @@ void main() {
     vec3 radiance = s.emissive;
     if (s.shadingModel != kShadingUnlit) {
         Surface surface;
+        clearSurfaceExtensions(surface);
         surface.baseColor = s.baseColor.rgb;
         surface.roughness = s.roughness;
         surface.metallic = s.metallic;

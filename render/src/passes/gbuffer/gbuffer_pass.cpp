@@ -9,6 +9,7 @@
 #include "passes/gbuffer/gbuffer_bindings.h"
 #include "shaders/gbuffer.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
+#include "shaders/gbuffer_extended.frag.spv.h"
 
 namespace candela::render {
 
@@ -52,6 +53,10 @@ GBufferPass::GBufferPass(GpuContext& context) {
                             VK_SHADER_STAGE_FRAGMENT_BIT});
     }
     pipeline_ = Pipeline::graphics(context, desc, bindings, sizeof(DrawPush));
+    desc.fragmentSpirv = gbuffer_extended_frag_spv;
+    desc.colorFormats.push_back(GBufferTargets::kAnisotropyFormat);
+    desc.colorFormats.push_back(GBufferTargets::kClearCoatFormat);
+    extendedPipeline_ = Pipeline::graphics(context, desc, bindings, sizeof(DrawPush));
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
@@ -60,12 +65,15 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
                          const GpuBuffer& previousWorlds) const {
     const uint32_t width = hdr.desc().width;
     const uint32_t height = hdr.desc().height;
-    std::array<VkRenderingAttachmentInfo, 6> colors{};
-    for (size_t i = 0; i < colors.size(); ++i) {
+    std::array<VkRenderingAttachmentInfo, 8> colors{};
+    const uint32_t colorCount = targets.extended ? 8u : 6u;
+    for (size_t i = 0; i < colorCount; ++i) {
         colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
         colors[i].imageView = i < 4    ? targets.color[i].view()
                               : i == 4 ? hdr.view()
-                                       : targets.motion.view();
+                              : i == 5 ? targets.motion.view()
+                              : i == 6 ? targets.anisotropy.view()
+                                       : targets.clearCoat.view();
         colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
         colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -81,7 +89,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
     rendering.renderArea = {{0, 0}, {width, height}};
     rendering.layerCount = 1;
-    rendering.colorAttachmentCount = uint32_t(colors.size());
+    rendering.colorAttachmentCount = colorCount;
     rendering.pColorAttachments = colors.data();
     rendering.pDepthAttachment = &depth;
 
@@ -90,7 +98,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     VkRect2D scissor{{0, 0}, {width, height}};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    pipeline_.bind(cmd);
+    const Pipeline& pipeline = targets.extended ? extendedPipeline_ : pipeline_;
+    pipeline.bind(cmd);
 
     const GpuBuffer& materials = resources.materialBuffer();
     VkDescriptorBufferInfo cameraInfo{cameraBuffer.handle(), 0, VK_WHOLE_SIZE};
@@ -114,12 +123,12 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
             writes.push_back(
                 sampledImageWrite(GBUFFER_BINDING_FIRST_TEXTURE + slot, &images[slot]));
         }
-        pipeline_.pushDescriptors(cmd, writes);
+        pipeline.pushDescriptors(cmd, writes);
         vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided
                                   ? VK_CULL_MODE_NONE
                                   : VK_CULL_MODE_BACK_BIT);
         DrawPush push{draw.world, draw.material};
-        pipeline_.pushConstants(cmd, &push, sizeof(push));
+        pipeline.pushConstants(cmd, &push, sizeof(push));
         VkDeviceSize offset = 0;
         VkBuffer vertexBuffer = mesh.vertices.handle();
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);

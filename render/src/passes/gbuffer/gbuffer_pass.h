@@ -17,6 +17,7 @@ public:
     // Colour, motion, HDR and depth in attachment-optimal layouts (frame graph:
     // ColorAttachment, DepthWrite); all are cleared. `previousWorlds`: one mat4 per scene draw
     // (the draw's world matrix in the previous frame), for the motion vectors.
+    // targets.extended picks gbuffer_extended.frag (anisotropy and clear-coat targets too).
     void record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
                 const std::array<float, 4>& clearRadiance, const FrameScene& scene,
                 SceneResources& resources, const GpuBuffer& cameraBuffer,
@@ -24,6 +25,7 @@ public:
 
 private:
     Pipeline pipeline_;
+    Pipeline extendedPipeline_;  // also writes targets.anisotropy and targets.clearCoat
 };
 
 }  // namespace candela::render

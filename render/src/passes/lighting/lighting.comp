@@ -32,6 +32,9 @@ layout(binding = LIGHTING_BINDING_GBUFFER_NORMAL) uniform sampler2D gbufferNorma
 layout(binding = LIGHTING_BINDING_GBUFFER_SPECULAR_MODEL) uniform sampler2D gbufferSpecularModel;
 layout(binding = LIGHTING_BINDING_GBUFFER_CUSTOM_DATA) uniform sampler2D gbufferCustomData;
 layout(binding = LIGHTING_BINDING_GBUFFER_DEPTH) uniform sampler2D gbufferDepth;
+// Read only by variants with anisotropy / clear coat (gbuffer_targets.h has the packing).
+layout(binding = LIGHTING_BINDING_GBUFFER_ANISOTROPY) uniform sampler2D gbufferAnisotropy;
+layout(binding = LIGHTING_BINDING_GBUFFER_CLEAR_COAT) uniform sampler2D gbufferClearCoat;
 layout(binding = LIGHTING_BINDING_HDR, rgba32f) uniform image2D hdrRadiance;
 layout(std430, binding = LIGHTING_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
     uint clusterRanges[];
@@ -93,6 +96,20 @@ Surface decodeSurface(ivec2 pixel, out vec3 N) {
     s.shadingModel = uint(gb2.g * 255.0 + 0.5);
     s.customData = texelFetch(gbufferCustomData, pixel, 0);
     N = octDecode(gb1.xy);
+    clearSurfaceExtensions(s);
+    if (kAnisotropyEnabled) {
+        vec2 anisotropy = texelFetch(gbufferAnisotropy, pixel, 0).rg;
+        s.anisotropy = anisotropy.g;
+        float angle = anisotropy.r * PI;  // from tangentFrame(N)'s first axis
+        mat3 frame = tangentFrame(N);
+        s.anisotropyT = frame[0] * cos(angle) + frame[1] * sin(angle);
+    }
+    if (kClearCoatEnabled) {
+        vec4 coat = texelFetch(gbufferClearCoat, pixel, 0);
+        s.clearCoat = coat.r;
+        s.clearCoatRoughness = coat.g;
+        s.clearCoatN = octDecode(coat.ba);
+    }
     return s;
 }
 
@@ -103,6 +120,11 @@ struct PixelShading {
     vec3 V;
     vec3 R;
     float alpha;
+    // Clear coat (kClearCoatEnabled and a coated pixel): its reflection vector and alpha, and
+    // the share of light the layers below keep (clearCoatAttenuation).
+    vec3 coatR;
+    float coatAlpha;
+    float coatAttenuation;
     vec3 radiance;
     uint evaluations;
     uint litPairs;
@@ -111,7 +133,15 @@ struct PixelShading {
 void addLight(inout PixelShading px, uint lightIndex) {
     Light light = loadLight(lightIndex, camera.frameInfo.w);
     LightIncidence incidence = evaluateLight(light, px.P, px.N, px.R, px.alpha);
-    px.radiance += shadeSurface(px.surface, px.N, px.V, incidence);
+    if (kClearCoatEnabled && px.surface.clearCoat > 0.0) {
+        // The coat sees the light from its own normal and roughness: a second incidence.
+        LightIncidence coat =
+            evaluateLight(light, px.P, px.surface.clearCoatN, px.coatR, px.coatAlpha);
+        px.radiance += shadeSurface(px.surface, px.N, px.V, incidence) * px.coatAttenuation +
+                       clearCoatLobe(px.surface, px.V, coat);
+    } else {
+        px.radiance += shadeSurface(px.surface, px.N, px.V, incidence);
+    }
     if (kCountLightPairs) {
         px.evaluations += 1u;
         px.litPairs += any(greaterThan(incidence.incidentIlluminance, vec3(0.0))) ? 1u : 0u;
@@ -186,6 +216,66 @@ float stableGgx(float a2, vec3 tangentH) {
     return a2 / (PI * d * d);
 }
 
+// Eq. 6's specular part for one GGX lobe by Monte Carlo: alpha.x along frame[0], alpha.y along
+// frame[1], normal frame[2], reflectance F0. As referenceAmbient's specular lobe (visible
+// normals and the sky's luminance, balance heuristic), with the anisotropic D, G1 and
+// visibility (which are the isotropic ones when alpha.x == alpha.y, up to rounding). For the
+// anisotropic lobe and the clear coat, whose approximations it measures. `albedo`: the lobe's
+// own directional albedo from its visible-normal samples, F0 = 1 (x) and with F0 (yzw), what
+// the multiple-scattering term needs instead of the isotropic LUT's.
+vec3 referenceGgxLobe(mat3 frame, vec2 alpha, vec3 F0, vec3 V, ivec2 pixel, out vec4 albedo) {
+    vec3 tangentV = transpose(frame) * V;
+    tangentV.z = max(tangentV.z, 1e-4);
+    float NoV = tangentV.z;
+    vec2 offset = pixelHash(pixel + ivec2(3571, 7793));
+    vec2 offsetEnvironment = pixelHash(pixel + ivec2(50021, 1299709));
+    float g1V = smithG1GgxAnisotropic(alpha, tangentV);
+    vec3 specular = vec3(0.0);
+    albedo = vec4(0.0);
+    uint n = push.referenceSamples;
+    for (uint i = 0u; i < n; ++i) {
+        vec3 H = importanceSampleGgxVisibleAnisotropic(hammersley(i, n, offset), alpha, tangentV);
+        float VoH = dot(tangentV, H);
+        vec3 L = 2.0 * VoH * H - tangentV;
+        if (L.z > 0.0 && VoH > 0.0) {
+            vec3 Lw = frame * L;
+            float D = distributionGgxAnisotropic(alpha.x, alpha.y, H.x, H.y, H.z);
+            float pdf = D * g1V / (4.0 * NoV);
+            float vis = visibilitySmithGgxCorrelatedAnisotropic(alpha.x, alpha.y, tangentV.x,
+                                                                tangentV.y, NoV, L.x, L.y, L.z);
+            // f NoL / pdf = F G2 / G1(V), G2 = 4 NoV NoL Vis
+            float weight = 4.0 * NoV * L.z * vis / g1V;
+            albedo += vec4(weight, fresnelSchlickSg(F0, VoH) * weight);
+            specular += textureLod(environmentCube, Lw, 0.0).rgb * fresnelSchlickSg(F0, VoH) *
+                        (weight * pdf / (pdf + environmentPdf(Lw)));
+        }
+        float environmentPdfE;
+        vec3 E = sampleEnvironment(hammersley(i, n, offsetEnvironment), environmentPdfE);
+        if (environmentPdfE <= 0.0) continue;
+        vec3 tangentL = transpose(frame) * E;
+        if (tangentL.z <= 0.0) continue;
+        vec3 He = safeNormalize(tangentV + tangentL);
+        float D = distributionGgxAnisotropic(alpha.x, alpha.y, He.x, He.y, He.z);
+        float vis = visibilitySmithGgxCorrelatedAnisotropic(
+            alpha.x, alpha.y, tangentV.x, tangentV.y, NoV, tangentL.x, tangentL.y, tangentL.z);
+        float brdfPdf = D * g1V / (4.0 * NoV);
+        specular += textureLod(environmentCube, E, 0.0).rgb *
+                    fresnelSchlickSg(F0, saturate(dot(tangentV, He))) *
+                    (D * vis * tangentL.z / (brdfPdf + environmentPdfE));
+    }
+    albedo /= float(n);
+    return specular / float(n);
+}
+
+// The clear coat's reflection of the sky by Monte Carlo (reference mode), factor included.
+vec3 referenceClearCoat(PixelShading px, ivec2 pixel) {
+    float alpha = alphaFromRoughness(px.surface.clearCoatRoughness);
+    vec4 albedo;
+    return px.surface.clearCoat * referenceGgxLobe(tangentFrame(px.surface.clearCoatN),
+                                                   vec2(alpha), vec3(kClearCoatF0), px.V, pixel,
+                                                   albedo);
+}
+
 // Eq. 6 by Monte Carlo per pixel, for measuring the approximations only. Each iteration
 // draws one direction from the BRDF (GGX visible normals for the specular lobe, cosine for
 // the diffuse and transmitted parts) and one from the environment's luminance, weighted by
@@ -203,6 +293,8 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
     float NoV = tangentV.z;
     bool transmits = any(greaterThan(t.transmittedColor, vec3(0.0)));
     vec3 specular = vec3(0.0), diffuse = vec3(0.0), transmitted = vec3(0.0);
+    // An anisotropic pixel's specular lobe is integrated by referenceGgxLobe instead.
+    bool isotropic = !(kAnisotropyEnabled && px.surface.anisotropy > 0.0);
     uint n = push.referenceSamples;
     for (uint i = 0u; i < n; ++i) {
         vec2 xi = hammersley(i, n, offset);
@@ -211,7 +303,7 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
         vec3 H = importanceSampleGgxVisible(xi, alpha, tangentV);
         float VoH = dot(tangentV, H);
         vec3 L = 2.0 * VoH * H - tangentV;
-        if (L.z > 0.0 && VoH > 0.0) {
+        if (isotropic && L.z > 0.0 && VoH > 0.0) {
             vec3 Lw = frame * L;
             float misWeight = 1.0;  // a mirror's lobe is a delta: BRDF sampling only
             if (alpha > 0.0) {
@@ -240,7 +332,7 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
         if (NoL > 0.0) {
             float lambertPdf = NoL / PI;
             diffuse += radiance * (NoL / PI) / (lambertPdf + environmentPdfE);
-            if (alpha > 0.0) {
+            if (isotropic && alpha > 0.0) {
                 vec3 He = safeNormalize(px.V + E);
                 float VoHe = saturate(dot(px.V, He));
                 float D = stableGgx(a2, transpose(frame) * He);
@@ -254,14 +346,27 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
             transmitted += radiance * (-NoL / PI) / (lambertPdf + environmentPdfE);
         }
     }
+    vec4 anisotropicAlbedo = vec4(0.0);
+    if (!isotropic) {
+        vec3 T = px.surface.anisotropyT;
+        vec2 anisotropicAlpha = anisotropicAlphas(px.surface.roughness, px.surface.anisotropy);
+        specular = referenceGgxLobe(mat3(T, cross(px.N, T), px.N), anisotropicAlpha,
+                                    t.specularColor, px.V, pixel, anisotropicAlbedo) *
+                   float(n);  // divided by n with the rest below
+    }
     vec3 ambient = specular + diffuse * t.diffuseColor + transmitted * t.transmittedColor;
     if (kEnergyConserving) {
         // Multiple scattering as the split sum models it (Fdez-Aguera 2019), on the integrated
         // single scattering of the LUT and this pixel's own cosine-weighted sky (diffuse / n).
         vec3 singleScattering = environmentBrdfFromLut(environmentBrdfLut, t.specularColor,
                                                        px.surface.roughness, NoV);
+        float directionalAlbedo = px.surface.directionalAlbedo;
+        if (!isotropic) {  // the anisotropic lobe's own albedo, not the isotropic LUT's
+            singleScattering = anisotropicAlbedo.yzw;
+            directionalAlbedo = anisotropicAlbedo.x;
+        }
         ambient += multipleScatteringEnvironmentBrdf(singleScattering, t.specularColor,
-                                                     px.surface.directionalAlbedo) *
+                                                     directionalAlbedo) *
                    diffuse;
     }
     return ambient / float(n);
@@ -269,11 +374,31 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
 
 // Ambient light of the environment on the pixel's surface (cd/m^2 before sky intensity).
 vec3 ambientRadiance(PixelShading px, ivec2 pixel) {
-    if (kIblMode == kIblReference) return referenceAmbient(ambientTermsOf(px.surface), px, pixel);
-    vec4 sh[9] = irradianceSh;
-    return environmentAmbient(px.surface, px.N, px.V, sh, prefilteredCube,
-                              push.prefilteredMipCount, environmentBrdfLut,
-                              kIblMode == kIblMobile);
+    vec3 ambient;
+    if (kIblMode == kIblReference) {
+        ambient = referenceAmbient(ambientTermsOf(px.surface), px, pixel);
+    } else {
+        vec4 sh[9] = irradianceSh;
+        ambient = environmentAmbient(px.surface, px.N, px.V, sh, prefilteredCube,
+                                     push.prefilteredMipCount, environmentBrdfLut,
+                                     kIblMode == kIblMobile);
+    }
+    if (kClearCoatEnabled && px.surface.clearCoat > 0.0) {
+        vec3 coat = kIblMode == kIblReference
+                        ? referenceClearCoat(px, pixel)
+                        : clearCoatAmbient(px.surface, px.V, prefilteredCube,
+                                           push.prefilteredMipCount, environmentBrdfLut,
+                                           kIblMode == kIblMobile);
+        // The mobile path's coat reflects by seed 001's fit: it takes what the fit gives it.
+        float attenuation = px.coatAttenuation;
+        if (kIblMode == kIblMobile) {
+            attenuation = clearCoatAttenuation(
+                px.surface, envBrdfApproxScaleBias(px.surface.clearCoatRoughness,
+                                                   saturate(dot(px.surface.clearCoatN, px.V))));
+        }
+        ambient = ambient * attenuation + coat;
+    }
+    return ambient;
 }
 
 void shadePixel(ivec2 pixel, inout PixelShading px) {
@@ -300,6 +425,14 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
     px.alpha = alphaFromRoughness(px.surface.roughness);
     px.surface.directionalAlbedo = specularDirectionalAlbedo(
         environmentBrdfLut, px.surface.roughness, saturate(dot(px.N, px.V)));
+    if (kClearCoatEnabled && px.surface.clearCoat > 0.0) {
+        vec3 coatN = px.surface.clearCoatN;
+        px.coatR = reflect(-px.V, coatN);
+        px.coatAlpha = alphaFromRoughness(px.surface.clearCoatRoughness);
+        px.coatAttenuation = clearCoatAttenuation(
+            px.surface, environmentBrdfScaleBias(environmentBrdfLut, px.surface.clearCoatRoughness,
+                                                 saturate(dot(coatN, px.V))));
+    }
 
     if (kIblMode != kIblNone) {
         float occlusion = texelFetch(gbufferBaseColor, pixel, 0).a;

@@ -22,5 +22,8 @@
 #define LIGHTING_BINDING_BRDF_LUT 14
 #define LIGHTING_BINDING_IRRADIANCE_SH 15
 #define LIGHTING_BINDING_SAMPLING_TABLE 16
+// gbuffer_targets.h's optional targets (the base colour image stands in without them).
+#define LIGHTING_BINDING_GBUFFER_ANISOTROPY 17
+#define LIGHTING_BINDING_GBUFFER_CLEAR_COAT 18
 
 #endif

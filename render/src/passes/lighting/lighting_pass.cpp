@@ -49,6 +49,8 @@ std::vector<std::string> LightingFeatures::names() const {
     if (countLightPairs) out.push_back("light_pair_counters");
     if (ibl) out.push_back(std::string("ibl_") + iblModeName(*ibl));
     out.push_back(brdf == BrdfModel::Ue4 ? "brdf_ue4" : "brdf_energy_conserving");
+    if (anisotropy) out.push_back("material_anisotropy");
+    if (clearCoat) out.push_back("material_clear_coat");
     return out;
 }
 
@@ -67,6 +69,12 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
     constants.set(SPEC_ENERGY_CONSERVING, features.brdf == BrdfModel::EnergyConserving);
 }
 
+void setMaterialExtensionConstants(SpecializationConstants& constants,
+                                   const LightingFeatures& features) {
+    constants.set(SPEC_ANISOTROPY_ENABLED, features.anisotropy);
+    constants.set(SPEC_CLEAR_COAT_ENABLED, features.clearCoat);
+}
+
 LightingPass::LightingPass(GpuContext& context)
     : context_(context), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {
     setFeatures({});
@@ -81,6 +89,7 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
     setShadingConstants(constants, features);
     constants.set(SPEC_COUNT_LIGHT_PAIRS, features.countLightPairs);
     constants.set(SPEC_IBL_MODE, iblModeConstant(features.ibl));
+    setMaterialExtensionConstants(constants, features);
     const DescriptorBinding bindings[] = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -113,6 +122,10 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
          VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHTING_BINDING_SAMPLING_TABLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_GBUFFER_ANISOTROPY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_GBUFFER_CLEAR_COAT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
     };
     pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
     built_ = true;
@@ -129,12 +142,21 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
     VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo countsInfo{in.pairCounts->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
-    std::array<VkDescriptorImageInfo, 5> images{};
+    std::array<VkDescriptorImageInfo, 7> images{};
     for (size_t i = 0; i < 4; ++i) {
         images[i] = {pointSampler_.handle(), in.gbuffer->color[i].view(),
                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
     images[4] = {pointSampler_.handle(), in.gbuffer->depth.view(),
+                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    // Without the optional targets the variant never reads these bindings; any sampled image
+    // keeps the descriptors valid.
+    const bool extended = in.gbuffer->extended;
+    images[5] = {pointSampler_.handle(),
+                 extended ? in.gbuffer->anisotropy.view() : in.gbuffer->color[0].view(),
+                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    images[6] = {pointSampler_.handle(),
+                 extended ? in.gbuffer->clearCoat.view() : in.gbuffer->color[0].view(),
                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
     const EnvironmentDescriptors& env = *in.environment;
@@ -156,6 +178,8 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
         sampledImageWrite(LIGHTING_BINDING_BRDF_LUT, &env.brdfLut),
         storageBufferWrite(LIGHTING_BINDING_IRRADIANCE_SH, &env.irradianceSh),
         storageBufferWrite(LIGHTING_BINDING_SAMPLING_TABLE, &env.samplingTable),
+        sampledImageWrite(LIGHTING_BINDING_GBUFFER_ANISOTROPY, &images[5]),
+        sampledImageWrite(LIGHTING_BINDING_GBUFFER_CLEAR_COAT, &images[6]),
     };
     Push push{toGpu(*in.grid), in.directionalCount, in.skyIntensity, env.prefilteredMipCount,
               in.referenceSamples};

@@ -33,6 +33,9 @@ struct LightingFeatures {
     bool countLightPairs = false;
     std::optional<IblMode> ibl;  // none without an environment
     BrdfModel brdf = BrdfModel::EnergyConserving;
+    bool anisotropy = false;  // a drawn opaque material has KHR_materials_anisotropy
+    bool clearCoat = false;   // ... KHR_materials_clearcoat
+    bool materialExtensions() const { return anisotropy || clearCoat; }
 
     static constexpr uint32_t bit(content::LightType type) {
         return 1u << content::lightTypeIndex(type);
@@ -44,6 +47,9 @@ struct LightingFeatures {
 // The shading models, light shapes and clustering of a variant as specialization constants
 // (common/specialization_ids.h): what the deferred and forward pipelines share.
 void setShadingConstants(SpecializationConstants& constants, const LightingFeatures& features);
+// Anisotropy and clear coat: the deferred pass only (blended surfaces shade without them).
+void setMaterialExtensionConstants(SpecializationConstants& constants,
+                                   const LightingFeatures& features);
 
 class LightingPass {
 public:
