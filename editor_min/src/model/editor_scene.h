@@ -29,6 +29,14 @@ public:
     const std::filesystem::path& sourcePath() const { return sourcePath_; }
     // The opened file's scene-wide "brdf" (unset: none), written back by save().
     void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneBrdf_ = brdf; }
+    // The opened file's scene-wide "aa", "bloom", "exposure" and "exposure_compensation" (the
+    // other fields of `settings` are ignored), written back by save().
+    void setSceneFrameSettings(const content::SceneDocument& settings) {
+        frameSettings_.aa = settings.aa;
+        frameSettings_.bloom = settings.bloom;
+        frameSettings_.exposure = settings.exposure;
+        frameSettings_.exposureCompensation = settings.exposureCompensation;
+    }
 
     // Gives every entity an EditorId and makes it a scene member (so it is saved): call after
     // loading and after anything outside the editor adds entities.
@@ -79,6 +87,7 @@ private:
     CommandStack commands_;
     uint64_t savedRevision_ = 0;
     std::optional<content::SceneBrdf> sceneBrdf_;
+    content::SceneDocument frameSettings_;  // only its frame settings are used
 };
 
 }  // namespace candela::editor
