@@ -73,6 +73,8 @@ public:
 
     // True when edits were made (or undone) since the last successful save.
     bool modified() const { return commands_.revision() != savedRevision_; }
+    // Changes with every edit, undo and redo.
+    uint64_t revision() const { return commands_.revision(); }
     // Writes the scene file atomically (content::saveSceneFile). Asset paths are rewritten
     // relative to `path`'s directory when it differs from the source's. Empty on success, else
     // the error naming the file. A read-only file is refused unless `replaceReadOnly`.
