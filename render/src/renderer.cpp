@@ -200,6 +200,13 @@ void Renderer::createTargets() {
                      VkDeviceSize(LightingPass::workgroupCount(width_, height_)) * 8);
 }
 
+void Renderer::restartTemporalHistory() {
+    historyValid_ = false;
+    hasPreviousFrame_ = false;
+    frameIndex_ = 0;
+    adaptedEv100_.reset();
+}
+
 void Renderer::uploadFrameData(const FrameInputs& inputs) {
     const FrameScene& scene = inputs.scene;
     lights_->update(context_, scene.lights, scene.changedLights, scene.lightsRestructured);

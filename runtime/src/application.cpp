@@ -209,6 +209,7 @@ void Application::Impl::swapWorld() {
     s.submitter->waitIdle();
     s.lightTable.reset();  // unhooks from the old registry before it goes
     s.extracted = {};
+    s.renderer->restartTemporalHistory();  // nothing of the old world's frames carries over
     s.sky = SkyLoader(options.environment);
     s.resources = std::make_unique<render::SceneResources>(*s.context);
     scheduler.reset();
@@ -300,6 +301,11 @@ void Application::onBeforeRender(RenderCallback callback) {
 
 void Application::captureFrame(std::filesystem::path path) {
     impl_->capturesNow.push_back(std::move(path));
+}
+
+void Application::restartTemporalHistory() {
+    if (impl_->session && impl_->session->renderer)
+        impl_->session->renderer->restartTemporalHistory();
 }
 
 void Application::requestQuit() {

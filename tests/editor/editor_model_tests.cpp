@@ -250,6 +250,22 @@ TEST_F(EditorModel, SaveKeepsTheScenesBrdfSetting) {
     EXPECT_EQ(*doc.brdf, content::SceneBrdf::Ue4);
 }
 
+// Issue 24: so are "aa", "bloom", "exposure" and "exposure_compensation".
+TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
+    content::SceneDocument settings;
+    settings.aa = content::SceneAntiAliasing::Fxaa;
+    settings.bloom = 0.0f;
+    settings.exposure = content::SceneExposure::Auto;
+    settings.exposureCompensation = 0.5f;
+    scene->setSceneFrameSettings(settings);
+    ASSERT_TRUE(setLumens("lamp", 900.0f));
+    const content::SceneDocument doc = saveAndLoad(dir / "saved" / "settings.scene.json");
+    EXPECT_EQ(doc.aa, content::SceneAntiAliasing::Fxaa);
+    EXPECT_EQ(doc.bloom, 0.0f);
+    EXPECT_EQ(doc.exposure, content::SceneExposure::Auto);
+    EXPECT_EQ(doc.exposureCompensation, 0.5f);
+}
+
 TEST_F(EditorModel, SavingIntoAMissingDirectoryFailsNamingTheFileAndKeepsModified) {
     ASSERT_TRUE(setLumens("lamp", 1600.0f));
     const fs::path bad = dir / "no_such_dir" / "x.scene.json";

@@ -709,3 +709,41 @@ TEST(Cli, MaterialExtensionFeaturesOnlyInFramesThatUseThem) {
     EXPECT_FALSE(has(coated, "material_anisotropy"));
     EXPECT_TRUE(has(coated, "material_clear_coat"));
 }
+
+// Issue 24: --aa, --bloom and --exposure reach the renderer and --stats reports taa_ms,
+// bloom_ms and exposure_ev100; the scene file's "aa" is used when no flag is given.
+TEST(Cli, AntialiasingBloomAndExposureFlagsAndStats) {
+    auto dir = tempDir();
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/sphere_grid_point.scene.json";
+    auto stats = [&](const std::string& name, const std::string& args) {
+        RunResult r = runCandela("run " + args + " --headless --size 32x32 --frames 3 --stats " +
+                                 (dir / (name + ".json")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return nlohmann::json::parse(readBytes(dir / (name + ".json")));
+    };
+    auto has = [](const nlohmann::json& json, const char* feature) {
+        const auto f = json["features"].get<std::vector<std::string>>();
+        return std::find(f.begin(), f.end(), feature) != f.end();
+    };
+    const nlohmann::json defaults = stats("default", scene);
+    EXPECT_TRUE(has(defaults, "taa"));
+    EXPECT_TRUE(has(defaults, "bloom"));
+    EXPECT_FALSE(has(defaults, "auto_exposure"));  // manual unless asked
+    EXPECT_GT(defaults["taa_ms"].get<double>(), 0.0);
+    EXPECT_GT(defaults["bloom_ms"].get<double>(), 0.0);
+    const nlohmann::json fxaa =
+        stats("fxaa", scene + " --aa fxaa --bloom 0 --exposure auto --exposure-compensation 1");
+    EXPECT_TRUE(has(fxaa, "fxaa"));
+    EXPECT_FALSE(has(fxaa, "taa"));
+    EXPECT_FALSE(has(fxaa, "bloom"));
+    EXPECT_TRUE(has(fxaa, "auto_exposure"));
+    EXPECT_EQ(fxaa["taa_ms"].get<double>(), 0.0);
+    // Metered from the frame, not the camera's; adapted one stop below it (compensation +1).
+    EXPECT_NEAR(fxaa["exposure_adapted_ev100"].get<double>(),
+                fxaa["exposure_ev100"].get<double>() - 1.0, 0.05);
+
+    RunResult bad = runCandela(kTriangle + "--aa msaa");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("--aa needs off, fxaa or taa"), std::string::npos) << bad.output;
+}

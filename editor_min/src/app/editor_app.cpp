@@ -58,9 +58,16 @@ public:
         show(std::move(opened));
         app_.addLayer(layer_);
         app_.onFrameStart([this](const runtime::FrameContext&) { runScriptStep(); });
-        app_.onBeforeRender(
-            [this](render::FrameInputs& inputs, const runtime::ExtractedFrame& x,
-                   const runtime::FrameContext& frame) { drawUi(inputs, x, frame); });
+        app_.onBeforeRender([this](render::FrameInputs& inputs, const runtime::ExtractedFrame& x,
+                                   const runtime::FrameContext& frame) {
+            drawUi(inputs, x, frame);
+            // An edit (or undo) shows at once, with nothing of the old state blended in
+            // by TAA's history.
+            if (scene_->revision() != shownRevision_) {
+                shownRevision_ = scene_->revision();
+                app_.restartTemporalHistory();
+            }
+        });
     }
 
     int exitCode() const { return exitCode_; }
@@ -138,6 +145,7 @@ private:
     std::unique_ptr<EditorScene> scene_;
     std::filesystem::path savePath_;
     EditorUiState ui_;
+    uint64_t shownRevision_ = 0;
     int exitCode_ = kEditorOk;
 };
 

@@ -39,6 +39,12 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     opened.world->updateTransforms();
     opened.scene = std::make_unique<EditorScene>(opened.world->registry, path);
     opened.scene->setSceneBrdf(opened.world->sceneBrdf());
+    content::SceneDocument frameSettings;
+    frameSettings.aa = opened.world->sceneAntiAliasing();
+    frameSettings.bloom = opened.world->sceneBloom();
+    frameSettings.exposure = opened.world->sceneExposure();
+    frameSettings.exposureCompensation = opened.world->sceneExposureCompensation();
+    opened.scene->setSceneFrameSettings(frameSettings);
     return opened;
 }
 

@@ -29,6 +29,14 @@ public:
     const std::filesystem::path& sourcePath() const { return sourcePath_; }
     // The opened file's scene-wide "brdf" (unset: none), written back by save().
     void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneBrdf_ = brdf; }
+    // The opened file's scene-wide "aa", "bloom", "exposure" and "exposure_compensation" (the
+    // other fields of `settings` are ignored), written back by save().
+    void setSceneFrameSettings(const content::SceneDocument& settings) {
+        frameSettings_.aa = settings.aa;
+        frameSettings_.bloom = settings.bloom;
+        frameSettings_.exposure = settings.exposure;
+        frameSettings_.exposureCompensation = settings.exposureCompensation;
+    }
 
     // Gives every entity an EditorId and makes it a scene member (so it is saved): call after
     // loading and after anything outside the editor adds entities.
@@ -65,6 +73,8 @@ public:
 
     // True when edits were made (or undone) since the last successful save.
     bool modified() const { return commands_.revision() != savedRevision_; }
+    // Changes with every edit, undo and redo.
+    uint64_t revision() const { return commands_.revision(); }
     // Writes the scene file atomically (content::saveSceneFile). Asset paths are rewritten
     // relative to `path`'s directory when it differs from the source's. Empty on success, else
     // the error naming the file. A read-only file is refused unless `replaceReadOnly`.
@@ -79,6 +89,7 @@ private:
     CommandStack commands_;
     uint64_t savedRevision_ = 0;
     std::optional<content::SceneBrdf> sceneBrdf_;
+    content::SceneDocument frameSettings_;  // only its frame settings are used
 };
 
 }  // namespace candela::editor

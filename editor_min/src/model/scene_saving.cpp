@@ -44,9 +44,16 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
 std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path& source,
                             const std::filesystem::path& target,
                             std::optional<content::SceneBrdf> brdf,
-                            content::AtomicWriteOptions options) {
+                            content::AtomicWriteOptions options,
+                            const content::SceneDocument* frameSettings) {
     content::SceneDocument document = documentForSaving(registry, source, target);
     document.brdf = brdf;
+    if (frameSettings) {
+        document.aa = frameSettings->aa;
+        document.bloom = frameSettings->bloom;
+        document.exposure = frameSettings->exposure;
+        document.exposureCompensation = frameSettings->exposureCompensation;
+    }
     return content::saveSceneFile(target, document, options);
 }
 

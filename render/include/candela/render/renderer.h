@@ -80,6 +80,11 @@ public:
     // The layout a target is in while an ExtraPass uses it so.
     static VkImageLayout targetLayout(TargetUse use);
 
+    // A cut: the next frame starts TAA's history and jitter sequence afresh, has no motion from
+    // the previous camera, and meters its exposure without adapting from the old one. Call
+    // when the scene was replaced or changed at once (an editor's edit).
+    void restartTemporalHistory();
+
     // Reads the GPU-side measurements of the last frame; call once its submission completed.
     const RendererStats& collectStats();
 

@@ -71,7 +71,8 @@ void main() {
         }
     }
     if (push.sharpness > 0.0) {
-        // Unsharp mask against the 4-neighbour mean, kept inside the neighbourhood's range.
+        // Unsharp mask against the 4-neighbour mean (no negative radiance); the clip below
+        // still bounds the history by the unsharpened neighbourhood.
         vec3 sharpened = centre + push.sharpness * (centre - 0.25 * crossSum);
         centre = max(sharpened, vec3(0.0));
     }

@@ -98,6 +98,10 @@ public:
     // Captures the frame being made (called before it records: from onFrameStart, a system or
     // onBeforeRender) to `path` (.png: what the window shows; .exr: scene radiance).
     void captureFrame(std::filesystem::path path);
+    // A cut for the frame being made (called before it records): temporal antialiasing,
+    // motion vectors and exposure adaptation start afresh (Renderer::restartTemporalHistory).
+    // A world handed over with setWorld gets one by itself.
+    void restartTemporalHistory();
     // Ends the run after the current frame (e.g. from a system; safe from parallel systems).
     // The other calls that change the application (setWorld, captureFrame, addSystem) belong
     // in callbacks or exclusive systems, not in systems that run in parallel.
