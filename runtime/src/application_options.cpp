@@ -64,6 +64,11 @@ constexpr std::pair<const char*, render::IblMode> kIbls[] = {
 constexpr std::pair<const char*, render::BrdfModel> kBrdfs[] = {
     {"ue4", render::BrdfModel::Ue4}, {"energy-conserving", render::BrdfModel::EnergyConserving}};
 
+constexpr std::pair<const char*, render::AoMode> kAoModes[] = {
+    {"off", render::AoMode::Off},
+    {"gtao", render::AoMode::Gtao},
+    {"reference", render::AoMode::Reference}};
+
 }  // namespace
 
 std::string ApplicationOptions::standardFlagsUsage() {
@@ -80,7 +85,9 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --frame-graph FILE.dot    write the last frame's graph as Graphviz\n"
            "  --env SKY.exr             light the scene with this sky\n"
            "  --ibl split-sum|mobile|reference\n"
-           "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n";
+           "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n"
+           "  --ao off|gtao|reference   sky light occlusion (default: the scene file's, else "
+           "off)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -163,6 +170,12 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--brdf needs ue4 or energy-conserving, got '" + v + "'");
             }
             options.brdf = brdf;
+        } else if (arg == "--ao") {
+            render::AoMode ao{};
+            if (!value() || !parseChoice(v, kAoModes, ao)) {
+                return fail("--ao needs off, gtao or reference, got '" + v + "'");
+            }
+            options.ao = ao;
         } else if (others == OtherArguments::Keep) {
             result.arguments.push_back(arg);
         } else if (!arg.empty() && arg[0] == '-') {

@@ -56,6 +56,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["light_assign_ms"] =
         median(collect(stats.frames, [](auto& f) { return f.lightAssignMs; }));
     json["lighting_ms"] = median(collect(stats.frames, [](auto& f) { return f.lightingMs; }));
+    json["ao_ms"] = median(collect(stats.frames, [](auto& f) { return f.aoMs; }));
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;

@@ -92,6 +92,7 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     content::instantiateScene(registry, *scene, path, cache_, diagnostics);
     sceneFile_ = path;
     sceneBrdf_ = scene->brdf;
+    sceneAmbientOcclusion_ = scene->ambientOcclusion;
     return true;
 }
 

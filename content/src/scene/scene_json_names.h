@@ -42,6 +42,10 @@ inline constexpr EnumNames<ColorSpace, 2> kColorSpaces{
 inline constexpr EnumNames<SceneBrdf, 2> kSceneBrdfs{
     {{SceneBrdf::Ue4, "ue4"}, {SceneBrdf::EnergyConserving, "energy-conserving"}}};
 
+inline constexpr EnumNames<SceneAoMode, 3> kSceneAoModes{{{SceneAoMode::Off, "off"},
+                                                          {SceneAoMode::Gtao, "gtao"},
+                                                          {SceneAoMode::Reference, "reference"}}};
+
 template <typename E, std::size_t N>
 std::string_view nameOf(const EnumNames<E, N>& names, E value) {
     for (const auto& [v, name] : names) {

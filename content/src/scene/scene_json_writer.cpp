@@ -152,6 +152,18 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     json document = {
         {"format", kFormatName}, {"version", kSceneFileVersion}, {"entities", std::move(entities)}};
     if (scene.brdf) document["brdf"] = std::string(nameOf(kSceneBrdfs, *scene.brdf));
+    if (scene.ambientOcclusion) {
+        const SceneAmbientOcclusion& ao = *scene.ambientOcclusion;
+        json settings = {
+            {"radius", writer.number(ao.radius, "/ambient_occlusion/radius")},
+            {"intensity", writer.number(ao.intensity, "/ambient_occlusion/intensity")}};
+        if (ao.mode) settings["mode"] = std::string(nameOf(kSceneAoModes, *ao.mode));
+        document["ambient_occlusion"] = std::move(settings);
+        if (!writer.error.empty()) {
+            error = writer.error;
+            return {};
+        }
+    }
     try {
         return document.dump(2) + "\n";
     } catch (const nlohmann::json::exception& e) {  // e.g. a name that is not valid UTF-8

@@ -39,6 +39,7 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     opened.world->updateTransforms();
     opened.scene = std::make_unique<EditorScene>(opened.world->registry, path);
     opened.scene->setSceneBrdf(opened.world->sceneBrdf());
+    opened.scene->setSceneAmbientOcclusion(opened.world->sceneAmbientOcclusion());
     return opened;
 }
 

@@ -99,9 +99,12 @@ std::string EditorScene::displayName(ecs::Entity e) const {
 
 std::string EditorScene::save(const std::filesystem::path& path, bool replaceReadOnly) {
     std::string error =
-        saveEditedScene(registry_, sourcePath_, path, sceneBrdf_,
+        saveEditedScene(registry_, sourcePath_, path, sceneBrdf_, sceneAmbientOcclusion_,
                         content::AtomicWriteOptions{.replaceReadOnly = replaceReadOnly});
-    if (error.empty()) savedRevision_ = commands_.revision();
+    if (error.empty()) {
+        savedRevision_ = commands_.revision();
+        settingsEdited_ = false;
+    }
     return error;
 }
 

@@ -29,6 +29,20 @@ public:
     const std::filesystem::path& sourcePath() const { return sourcePath_; }
     // The opened file's scene-wide "brdf" (unset: none), written back by save().
     void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneBrdf_ = brdf; }
+    // The scene-wide "ambient_occlusion" (unset: none), edited in the inspector when nothing is
+    // selected, sent to the renderer every frame and written back by save(). Radius and
+    // intensity show at once; a mode change applies when the scene is next opened (the mode
+    // chooses the renderer's passes and shader variant).
+    const std::optional<content::SceneAmbientOcclusion>& sceneAmbientOcclusion() const {
+        return sceneAmbientOcclusion_;
+    }
+    // Edits that are not undo steps (scene-wide settings are not entities); marks the scene
+    // modified.
+    void setSceneAmbientOcclusion(std::optional<content::SceneAmbientOcclusion> settings,
+                                  bool edited = false) {
+        sceneAmbientOcclusion_ = settings;
+        if (edited) settingsEdited_ = true;
+    }
 
     // Gives every entity an EditorId and makes it a scene member (so it is saved): call after
     // loading and after anything outside the editor adds entities.
@@ -64,7 +78,7 @@ public:
     const CommandStack& commands() const { return commands_; }
 
     // True when edits were made (or undone) since the last successful save.
-    bool modified() const { return commands_.revision() != savedRevision_; }
+    bool modified() const { return commands_.revision() != savedRevision_ || settingsEdited_; }
     // Writes the scene file atomically (content::saveSceneFile). Asset paths are rewritten
     // relative to `path`'s directory when it differs from the source's. Empty on success, else
     // the error naming the file. A read-only file is refused unless `replaceReadOnly`.
@@ -79,6 +93,8 @@ private:
     CommandStack commands_;
     uint64_t savedRevision_ = 0;
     std::optional<content::SceneBrdf> sceneBrdf_;
+    std::optional<content::SceneAmbientOcclusion> sceneAmbientOcclusion_;
+    bool settingsEdited_ = false;  // since the last save
 };
 
 }  // namespace candela::editor

@@ -44,9 +44,11 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
 std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path& source,
                             const std::filesystem::path& target,
                             std::optional<content::SceneBrdf> brdf,
+                            std::optional<content::SceneAmbientOcclusion> ambientOcclusion,
                             content::AtomicWriteOptions options) {
     content::SceneDocument document = documentForSaving(registry, source, target);
     document.brdf = brdf;
+    document.ambientOcclusion = ambientOcclusion;
     return content::saveSceneFile(target, document, options);
 }
 

@@ -17,10 +17,12 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
 
 // Atomic save (content::saveSceneFile). Empty on success, else the error naming the file. A
 // read-only target is refused unless `options.replaceReadOnly`. `brdf` is the scene-wide
-// "brdf" setting (not an entity), kept as the opened file had it.
+// "brdf" setting (not an entity), kept as the opened file had it; `ambientOcclusion` the
+// scene-wide "ambient_occlusion" (as opened, with the inspector's edits).
 std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path& source,
                             const std::filesystem::path& target,
                             std::optional<content::SceneBrdf> brdf,
+                            std::optional<content::SceneAmbientOcclusion> ambientOcclusion,
                             content::AtomicWriteOptions options = {});
 
 }  // namespace candela::editor

@@ -7,39 +7,80 @@
 #include "common/ibl.glsl"
 #include "common/shading_models.glsl"
 
+// The environment's diffuse (and transmitted) light for a surface lit from around
+// `diffuseNormal` (N, or the bent normal of ambient occlusion).
+vec3 environmentDiffuse(AmbientTerms t, vec3 diffuseNormal, vec3 N, vec4 sh[9]) {
+    vec3 diffuse = t.diffuseColor * (1.0 / PI) * shIrradiance(sh, diffuseNormal);
+    if (any(greaterThan(t.transmittedColor, vec3(0.0)))) {
+        diffuse += t.transmittedColor * (1.0 / PI) * shIrradiance(sh, -N);
+    }
+    return diffuse;
+}
+
+// Split-sum (or mobile) specular reflectance of the environment for the surface at NoV.
+vec3 environmentSpecularBrdf(Surface s, AmbientTerms t, float NoV, sampler2D environmentBrdfLut,
+                             bool mobile) {
+    if (mobile) {
+        // G-buffer Specular is 8-bit: 0.5 arrives as 128 / 255.
+        bool defaultNonmetal = s.shadingModel == kShadingDefaultLit && s.metallic == 0.0 &&
+                               abs(s.specular - 0.5) < 1.0 / 255.0;
+        return environmentBrdfMobile(t.specularColor, s.roughness, NoV, defaultNonmetal);
+    }
+    return environmentBrdfFromLut(environmentBrdfLut, t.specularColor, s.roughness, NoV);
+}
+
+// Multiple scattering the energy-conserving BRDF adds, per unit of irradiance / pi.
+vec3 environmentMultipleScattering(Surface s, AmbientTerms t, vec3 environmentBrdf, float NoV,
+                                   sampler2D environmentBrdfLut, bool mobile) {
+    float albedo = mobile ? envBrdfApproxDirectionalAlbedo(s.roughness, NoV)
+                          : specularDirectionalAlbedo(environmentBrdfLut, s.roughness, NoV);
+    return multipleScatteringEnvironmentBrdf(environmentBrdf, t.specularColor, albedo);
+}
+
+vec3 prefilteredRadiance(Surface s, vec3 R, samplerCube prefilteredCube,
+                         float prefilteredMipCount) {
+    return textureLod(prefilteredCube, R,
+                      prefilteredMipOfRoughness(s.roughness, prefilteredMipCount))
+        .rgb;
+}
+
 // Radiance (before the sky intensity and occlusion) the environment reflects toward V.
 // `sh`: irradiance coefficients (irradiance_sh.comp); `prefilteredCube`: roughness per mip.
 vec3 environmentAmbient(Surface s, vec3 N, vec3 V, vec4 sh[9], samplerCube prefilteredCube,
                         float prefilteredMipCount, sampler2D environmentBrdfLut, bool mobile) {
     AmbientTerms t = ambientTermsOf(s);
-    vec3 irradiance = shIrradiance(sh, N);
-    vec3 diffuse = t.diffuseColor * (1.0 / PI) * irradiance;
-    if (any(greaterThan(t.transmittedColor, vec3(0.0)))) {
-        diffuse += t.transmittedColor * (1.0 / PI) * shIrradiance(sh, -N);
-    }
+    vec3 diffuse = environmentDiffuse(t, N, N, sh);
     float NoV = saturate(dot(N, V));
-    vec3 R = reflect(-V, N);
-    vec3 prefiltered =
-        textureLod(prefilteredCube, R, prefilteredMipOfRoughness(s.roughness, prefilteredMipCount))
-            .rgb;
-    vec3 environmentBrdf;
-    if (mobile) {
-        // G-buffer Specular is 8-bit: 0.5 arrives as 128 / 255.
-        bool defaultNonmetal = s.shadingModel == kShadingDefaultLit && s.metallic == 0.0 &&
-                               abs(s.specular - 0.5) < 1.0 / 255.0;
-        environmentBrdf = environmentBrdfMobile(t.specularColor, s.roughness, NoV, defaultNonmetal);
-    } else {
-        environmentBrdf =
-            environmentBrdfFromLut(environmentBrdfLut, t.specularColor, s.roughness, NoV);
-    }
+    vec3 prefiltered = prefilteredRadiance(s, reflect(-V, N), prefilteredCube, prefilteredMipCount);
+    vec3 environmentBrdf = environmentSpecularBrdf(s, t, NoV, environmentBrdfLut, mobile);
     vec3 ambient = diffuse + prefiltered * environmentBrdf;
     if (kEnergyConserving) {
-        float albedo = mobile ? envBrdfApproxDirectionalAlbedo(s.roughness, NoV)
-                              : specularDirectionalAlbedo(environmentBrdfLut, s.roughness, NoV);
-        ambient += multipleScatteringEnvironmentBrdf(environmentBrdf, t.specularColor, albedo) *
-                   irradiance * (1.0 / PI);
+        ambient += environmentMultipleScattering(s, t, environmentBrdf, NoV, environmentBrdfLut,
+                                                 mobile) *
+                   shIrradiance(sh, N) * (1.0 / PI);
     }
     return ambient;
+}
+
+// environmentAmbient under ambient occlusion: the diffuse light arrives around the bent normal
+// and is scaled by `diffuseVisibility` (multi-bounce corrected), the specular (and its
+// multiple scattering, which leaves the same lobe) by `specularVisibility`.
+vec3 occludedEnvironmentAmbient(Surface s, vec3 N, vec3 bentNormal, vec3 V, vec4 sh[9],
+                                samplerCube prefilteredCube, float prefilteredMipCount,
+                                sampler2D environmentBrdfLut, bool mobile,
+                                vec3 diffuseVisibility, float specularVisibility) {
+    AmbientTerms t = ambientTermsOf(s);
+    vec3 diffuse = environmentDiffuse(t, bentNormal, N, sh);
+    float NoV = saturate(dot(N, V));
+    vec3 prefiltered = prefilteredRadiance(s, reflect(-V, N), prefilteredCube, prefilteredMipCount);
+    vec3 environmentBrdf = environmentSpecularBrdf(s, t, NoV, environmentBrdfLut, mobile);
+    vec3 specular = prefiltered * environmentBrdf;
+    if (kEnergyConserving) {
+        specular += environmentMultipleScattering(s, t, environmentBrdf, NoV, environmentBrdfLut,
+                                                  mobile) *
+                    shIrradiance(sh, N) * (1.0 / PI);
+    }
+    return diffuse * diffuseVisibility + specular * specularVisibility;
 }
 
 #endif

@@ -60,9 +60,22 @@ struct SceneEntity {
 // command line's --brdf overrides it. Mirrors render::BrdfModel (content does not see render).
 enum class SceneBrdf { Ue4, EnergyConserving };
 
+// Occlusion of the sky's light (top-level "ambient_occlusion": {"mode", "radius",
+// "intensity"}); the command line's --ao overrides the mode. Mirrors render::AoMode.
+enum class SceneAoMode { Off, Gtao, Reference };
+
+struct SceneAmbientOcclusion {
+    std::optional<SceneAoMode> mode;  // unset: the engine's default
+    float radius = 1.5f;              // metres, > 0
+    float intensity = 1.0f;           // 0..1
+
+    bool operator==(const SceneAmbientOcclusion&) const = default;
+};
+
 struct SceneDocument {
     std::vector<SceneEntity> entities;
     std::optional<SceneBrdf> brdf;  // unset: the engine's default (energy-conserving)
+    std::optional<SceneAmbientOcclusion> ambientOcclusion;  // unset: defaults
 };
 
 // Where an asset path stored in a scene file points: relative paths are relative to the

@@ -22,5 +22,9 @@
 #define LIGHTING_BINDING_BRDF_LUT 14
 #define LIGHTING_BINDING_IRRADIANCE_SH 15
 #define LIGHTING_BINDING_SAMPLING_TABLE 16
+// Ambient occlusion (passes/ambient_occlusion): (bent normal, visibility), and the reference's
+// specular visibility.
+#define LIGHTING_BINDING_AMBIENT_OCCLUSION 17
+#define LIGHTING_BINDING_SPECULAR_OCCLUSION 18
 
 #endif

@@ -33,6 +33,7 @@ struct LightingFeatures {
     bool countLightPairs = false;
     std::optional<IblMode> ibl;  // none without an environment
     BrdfModel brdf = BrdfModel::EnergyConserving;
+    AoMode ao = AoMode::Off;  // only with ibl
 
     static constexpr uint32_t bit(content::LightType type) {
         return 1u << content::lightTypeIndex(type);
@@ -73,6 +74,11 @@ public:
         const EnvironmentDescriptors* environment;  // the sky, or placeholders
         float skyIntensity = 1.0f;
         uint32_t referenceSamples = 0;
+        // Sampled; unused (placeholders bound) when the variant has no ambient occlusion.
+        std::optional<ImageRef> ambientOcclusion;
+        std::optional<ImageRef> specularOcclusion;  // the reference mode's only
+        float aoIntensity = 1.0f;
+        bool aoMultiBounce = true;
     };
     void record(VkCommandBuffer cmd, const Inputs& inputs) const;
     static uint32_t workgroupCount(uint32_t width, uint32_t height);

@@ -51,6 +51,8 @@ struct ApplicationOptions {
     render::IblMode ibl = render::IblMode::SplitSum;
     // --brdf; unset: the world's scene-file "brdf", else energy-conserving.
     std::optional<render::BrdfModel> brdf;
+    // --ao; unset: the world's scene-file "ambient_occlusion" mode, else off.
+    std::optional<render::AoMode> ao;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
@@ -58,7 +60,7 @@ struct ApplicationOptions {
     // The standard flags every game gets (see standardFlagsUsage()): --headless, --frames N,
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
-    // --brdf.
+    // --brdf, --ao.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

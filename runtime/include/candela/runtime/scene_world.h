@@ -49,6 +49,14 @@ public:
     std::filesystem::path resolveAssetPath(const std::string& stored) const;
     // The BRDF the last scene file loaded asks for ("brdf"), if it names one.
     std::optional<content::SceneBrdf> sceneBrdf() const { return sceneBrdf_; }
+    // The scene file's "ambient_occlusion" (mode, radius, intensity), if it has one; the
+    // renderer reads radius and intensity every frame, so an editor's change shows at once.
+    const std::optional<content::SceneAmbientOcclusion>& sceneAmbientOcclusion() const {
+        return sceneAmbientOcclusion_;
+    }
+    void setSceneAmbientOcclusion(std::optional<content::SceneAmbientOcclusion> settings) {
+        sceneAmbientOcclusion_ = settings;
+    }
 
     // Keeps a model alive for the lifetime of the world and returns it.
     const content::Model& adoptModel(std::unique_ptr<content::Model> model);
@@ -80,6 +88,7 @@ private:
     content::AssetCache cache_;
     std::filesystem::path sceneFile_;
     std::optional<content::SceneBrdf> sceneBrdf_;
+    std::optional<content::SceneAmbientOcclusion> sceneAmbientOcclusion_;
 };
 
 }  // namespace candela::runtime
