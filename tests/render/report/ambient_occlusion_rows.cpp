@@ -110,8 +110,8 @@ void addAmbientOcclusionRows(ReportContext& context) {
         }
     }
 
-    // Specular occlusion: a black glossy floor (specular only), GTAO's cone-cone estimate
-    // against the reference's rays drawn from the GGX lobe.
+    // Specular occlusion: a black glossy floor (specular only), GTAO's estimate from its
+    // visibility against the reference's rays drawn from the GGX lobe.
     for (float roughness :
          quick ? std::vector<float>{0.5f} : std::vector<float>{0.2f, 0.5f, 0.8f}) {
         content::Material glossy = lambertWhite();
@@ -127,7 +127,7 @@ void addAmbientOcclusionRows(ReportContext& context) {
         const ShareError e =
             shareError(specularScene, gtao.frame, reference.frame, specularOff.frame);
         char name[96], metric[240], where[96];
-        std::snprintf(name, sizeof(name), "GTAO specular occlusion (cone-cone), roughness %.1f",
+        std::snprintf(name, sizeof(name), "GTAO specular occlusion (from visibility), roughness %.1f",
                       roughness);
         std::snprintf(metric, sizeof(metric),
                       "mean |occluded / unoccluded specular - reference| where the reference is "

@@ -24,6 +24,26 @@ layout(push_constant) uniform Push {
     float thickness;
 } push;
 
+// The depth at a point of the screen, interpolated between the four nearest texels: reverse-Z
+// depth is linear in screen space across a plane, so a floor seen at a grazing angle gives its
+// exact depth between texel centres. Nearest texel (which rounds a whole texel's depth step,
+// and counted half of a glossy lobe's rays on far floor as blocked by the floor itself) only
+// where a texel is sky.
+float interpolatedDepth(vec2 pixel, vec2 size) {
+    vec2 p = clamp(pixel - 0.5, vec2(0.0), size - 1.0);
+    ivec2 base = ivec2(floor(p));
+    ivec2 far = min(base + 1, ivec2(size) - 1);
+    vec2 f = p - vec2(base);
+    float d00 = texelFetch(gbufferDepth, base, 0).r;
+    float d10 = texelFetch(gbufferDepth, ivec2(far.x, base.y), 0).r;
+    float d01 = texelFetch(gbufferDepth, ivec2(base.x, far.y), 0).r;
+    float d11 = texelFetch(gbufferDepth, far, 0).r;
+    if (min(min(d00, d10), min(d01, d11)) <= 0.0) {
+        return texelFetch(gbufferDepth, ivec2(pixel), 0).r;
+    }
+    return mix(mix(d00, d10, f.x), mix(d01, d11, f.x), f.y);
+}
+
 // Whether the ray from P along L hits the depth buffer's surfaces within the radius. Rays
 // leaving the screen or passing behind the camera count as escaping: nothing is known there.
 bool rayOccluded(vec3 P, vec3 L, float jitter) {
@@ -34,7 +54,7 @@ bool rayOccluded(vec3 P, vec3 L, float jitter) {
         if (clip.w <= 1e-6) return false;
         vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * size;
         if (any(lessThan(pixel, vec2(0.0))) || any(greaterThanEqual(pixel, size))) return false;
-        float depth = texelFetch(gbufferDepth, ivec2(pixel), 0).r;
+        float depth = interpolatedDepth(pixel, size);
         if (depth <= 0.0) continue;
         // Reverse-Z, infinite far: clip.z is the near plane distance, depth = near / distance.
         float surfaceDistance = clip.z / depth;

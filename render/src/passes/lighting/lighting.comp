@@ -27,7 +27,7 @@ const uint kIblSplitSum = 1u;
 const uint kIblMobile = 2u;
 const uint kIblReference = 3u;
 layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
-// Ambient occlusion of the sky's light: none, GTAO (specular by the cone-cone approximation)
+// Ambient occlusion of the sky's light: none, GTAO (specular occlusion from the visibility)
 // or the ray-marched reference (specular visibility measured too).
 const uint kAoOff = 0u;
 const uint kAoGtao = 1u;
@@ -298,8 +298,8 @@ vec3 occludedAmbientRadiance(PixelShading px, ivec2 pixel, float occlusion) {
         specularVisibility = mix(1.0, saturate(texelFetch(specularOcclusion, pixel, 0).r),
                                  push.aoIntensity);
     } else {
-        specularVisibility =
-            coneConeSpecularOcclusion(bentNormal, visibility, px.R, px.surface.roughness);
+        specularVisibility = specularOcclusionFromVisibility(
+            visibility, saturate(dot(px.N, px.V)), px.surface.roughness);
     }
     // The material's occlusion (baked from the mesh's own shape) and the screen-space one see
     // the same nearby geometry: the minimum, not the product, so a crease is not darkened
