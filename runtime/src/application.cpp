@@ -68,7 +68,8 @@ render::BrdfModel brdfFor(const ApplicationOptions& options, const SceneWorld* w
     return render::BrdfModel::EnergyConserving;
 }
 
-// --ao, else the scene file's "ambient_occlusion" mode, else off.
+// --ao, else the scene file's "ambient_occlusion" mode, else GTAO (render/README.md
+// "Ambient occlusion" gives the measurements behind the default).
 render::AoMode aoFor(const ApplicationOptions& options, const SceneWorld* world) {
     if (options.ao) return *options.ao;
     if (world && world->sceneAmbientOcclusion() && world->sceneAmbientOcclusion()->mode) {
@@ -81,7 +82,7 @@ render::AoMode aoFor(const ApplicationOptions& options, const SceneWorld* world)
                 return render::AoMode::Reference;
         }
     }
-    return render::AoMode::Off;
+    return render::AoMode::Gtao;
 }
 
 }  // namespace

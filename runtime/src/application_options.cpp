@@ -87,7 +87,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --ibl split-sum|mobile|reference\n"
            "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n"
            "  --ao off|gtao|reference   sky light occlusion (default: the scene file's, else "
-           "off)\n";
+           "gtao)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,

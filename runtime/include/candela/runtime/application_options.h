@@ -51,7 +51,7 @@ struct ApplicationOptions {
     render::IblMode ibl = render::IblMode::SplitSum;
     // --brdf; unset: the world's scene-file "brdf", else energy-conserving.
     std::optional<render::BrdfModel> brdf;
-    // --ao; unset: the world's scene-file "ambient_occlusion" mode, else off.
+    // --ao; unset: the world's scene-file "ambient_occlusion" mode, else gtao.
     std::optional<render::AoMode> ao;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
