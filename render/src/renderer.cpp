@@ -22,6 +22,7 @@
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
 #include "passes/bloom/bloom_pass.h"
+#include "passes/ambient_occlusion/ambient_occlusion_pass.h"
 #include "passes/debug_text/debug_text_pass.h"
 #include "passes/exposure/exposure_bindings.h"
 #include "passes/exposure/exposure_pass.h"
@@ -61,6 +62,18 @@ const char* antiAliasingName(AntiAliasing aa) {
     return "unknown";
 }
 
+const char* aoModeName(AoMode mode) {
+    switch (mode) {
+        case AoMode::Off:
+            return "off";
+        case AoMode::Gtao:
+            return "gtao";
+        case AoMode::Reference:
+            return "reference";
+    }
+    return "unknown";
+}
+
 const char* brdfModelName(BrdfModel model) {
     return model == BrdfModel::Ue4 ? "ue4" : "energy-conserving";
 }
@@ -80,6 +93,8 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     f.countLightPairs = options.countLightPairs;
     f.brdf = options.brdf;
     if (resources.environment()) f.ibl = options.ibl;
+    // Occlusion of the sky's light: nothing to occlude without a sky.
+    if (f.ibl) f.ao = options.ao;
     for (const DrawItem& draw : scene.draws) {
         const content::Material& material = resources.material(draw.material);
         if (material.alphaMode != content::AlphaMode::Blend) {
@@ -357,13 +372,72 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                         stats_);
     }
 
+    // Ambient occlusion between the G-buffer and lighting: GTAO and its denoise, or the
+    // reference. (Frames without it declare nothing: no pass, no images.)
+    std::optional<ResourceHandle> occlusion, specularOcclusion;
+    if (features.ao != AoMode::Off) {
+        if (!aoPass_) aoPass_ = std::make_unique<AmbientOcclusionPass>(context_);
+        AmbientOcclusionPass::Inputs aoInputs{{}, {}, &cameraBuffer_, options_.aoSettings};
+        aoInputs.settings.radius = std::max(inputs.scene.aoRadius, 1e-3f);
+        aoInputs.settings.intensity = inputs.scene.aoIntensity;
+        const ResourceHandle normal = h.color[1];
+        auto declareInputs = [&](FrameGraph::PassBuilder& p) {
+            p.read(h.depth, Use::Sampled);
+            p.read(normal, Use::Sampled);
+            p.read(h.camera, Use::Uniform);
+        };
+        ResourceHandle raw =
+            g.createImage("ao.raw", AmbientOcclusionPass::occlusionDesc(width_, height_));
+        if (features.ao == AoMode::Gtao) {
+            auto p = g.addPass("ambient_occlusion_gtao", PassKind::Device,
+                               [this, ids, normal, raw, aoInputs](PassContext& ctx) {
+                                   AmbientOcclusionPass::Inputs in = aoInputs;
+                                   in.depth = ctx.image(ids.depth);
+                                   in.normalRoughMetal = ctx.image(normal);
+                                   aoPass_->recordGtao(ctx.cmd(), in, ctx.image(raw));
+                               });
+            declareInputs(p);
+            raw = p.write(raw, Use::StorageWrite);
+            ResourceHandle filtered =
+                g.createImage("ao.filtered", AmbientOcclusionPass::occlusionDesc(width_, height_));
+            auto d = g.addPass("ambient_occlusion_denoise", PassKind::Device,
+                               [this, ids, normal, raw, filtered, aoInputs](PassContext& ctx) {
+                                   AmbientOcclusionPass::Inputs in = aoInputs;
+                                   in.depth = ctx.image(ids.depth);
+                                   in.normalRoughMetal = ctx.image(normal);
+                                   aoPass_->recordDenoise(ctx.cmd(), in, ctx.image(raw),
+                                                          ctx.image(filtered));
+                               });
+            declareInputs(d);
+            d.read(raw, Use::Sampled);
+            occlusion = d.write(filtered, Use::StorageWrite);
+        } else {
+            ResourceHandle specular =
+                g.createImage("ao.specular", AmbientOcclusionPass::specularDesc(width_, height_));
+            auto p = g.addPass("ambient_occlusion_reference", PassKind::Device,
+                               [this, ids, normal, raw, specular, aoInputs](PassContext& ctx) {
+                                   AmbientOcclusionPass::Inputs in = aoInputs;
+                                   in.depth = ctx.image(ids.depth);
+                                   in.normalRoughMetal = ctx.image(normal);
+                                   aoPass_->recordReference(ctx.cmd(), in, ctx.image(raw),
+                                                            ctx.image(specular));
+                               });
+            declareInputs(p);
+            occlusion = p.write(raw, Use::StorageWrite);
+            specularOcclusion = p.write(specular, Use::StorageWrite);
+        }
+    }
+    const float aoIntensity = std::clamp(inputs.scene.aoIntensity, 0.0f, 1.0f);
+    const bool aoMultiBounce = options_.aoSettings.multiBounce;
+
     const EnvironmentDescriptors environment = environmentPlaceholders_->describe(
         features.ibl ? resources.environment() : nullptr, brdfLut_.get(),
         samplingTable_ && features.ibl == IblMode::Reference ? &samplingTable_->buffer() : nullptr);
     const float skyIntensity = inputs.scene.skyIntensity;
     {
         auto p = g.addPass("lighting", PassKind::Device,
-                           [this, gbufferViews, ids, environment, skyIntensity](PassContext& ctx) {
+                           [this, gbufferViews, ids, environment, skyIntensity, occlusion,
+                            specularOcclusion, aoIntensity, aoMultiBounce](PassContext& ctx) {
                                const GBufferTargets targets = gbufferViews(ctx);
                                LightingPass::Inputs lighting{&targets,
                                                              ctx.image(ids.hdr),
@@ -378,6 +452,12 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                lighting.environment = &environment;
                                lighting.skyIntensity = skyIntensity;
                                lighting.referenceSamples = options_.referenceSamples;
+                               if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
+                               if (specularOcclusion) {
+                                   lighting.specularOcclusion = ctx.image(*specularOcclusion);
+                               }
+                               lighting.aoIntensity = aoIntensity;
+                               lighting.aoMultiBounce = aoMultiBounce;
                                lightingPass_->record(ctx.cmd(), lighting);
                            });
         for (ResourceHandle c : h.color)
@@ -389,6 +469,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
         p.read(h.camera, Use::Uniform);
         p.read(h.lights, Use::StorageRead);
+        if (occlusion) p.read(*occlusion, Use::Sampled);
+        if (specularOcclusion) p.read(*specularOcclusion, Use::Sampled);
         if (features.clustered) {
             p.read(h.clusters.ranges, Use::StorageRead);
             p.read(h.clusters.indices, Use::StorageRead);
@@ -677,6 +759,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.lightingMs = 0.0;
     stats_.taaMs = 0.0;
     stats_.bloomMs = 0.0;
+    stats_.aoMs = 0.0;
     stats_.passMs.clear();
     if (!frameRecorded_) return stats_;
     const bool onDevice = clusters_->assignedOnDevice();
@@ -687,6 +770,7 @@ const RendererStats& Renderer::collectStats() {
         if (name == "lighting") stats_.lightingMs = ms;
         if (name == "taa" || name == "taa_copy") stats_.taaMs += ms;
         if (name.starts_with("bloom_")) stats_.bloomMs += ms;
+        if (name.starts_with("ambient_occlusion_")) stats_.aoMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
     }
     stats_.lightEvaluations = 0;

@@ -85,6 +85,23 @@ render::AntiAliasing antiAliasingFor(const ApplicationOptions& options, const Sc
     return render::AntiAliasing::Taa;
 }
 
+// --ao, else the scene file's "ambient_occlusion" mode, else GTAO (render/README.md
+// "Ambient occlusion" gives the measurements behind the default).
+render::AoMode aoFor(const ApplicationOptions& options, const SceneWorld* world) {
+    if (options.ao) return *options.ao;
+    if (world && world->sceneAmbientOcclusion() && world->sceneAmbientOcclusion()->mode) {
+        switch (*world->sceneAmbientOcclusion()->mode) {
+            case content::SceneAoMode::Off:
+                return render::AoMode::Off;
+            case content::SceneAoMode::Gtao:
+                return render::AoMode::Gtao;
+            case content::SceneAoMode::Reference:
+                return render::AoMode::Reference;
+        }
+    }
+    return render::AoMode::Gtao;
+}
+
 }  // namespace
 
 render::ValidationMode validationModeFromEnvironment() {
@@ -456,6 +473,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             options.exposureCompensation                  ? *options.exposureCompensation
             : world && world->sceneExposureCompensation() ? *world->sceneExposureCompensation()
                                                           : 0.0f;
+        rendererOptions.ao = aoFor(options, world.get());
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
@@ -538,6 +556,10 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                 frame.scene.changedLights = s.extracted.changedLights;
                 frame.scene.lightsRestructured = s.extracted.lightsRestructured;
                 frame.scene.skyIntensity = s.extracted.skyIntensity;
+                if (const auto& ao = world->sceneAmbientOcclusion()) {
+                    frame.scene.aoRadius = ao->radius;
+                    frame.scene.aoIntensity = ao->intensity;
+                }
                 frame.text = std::move(s.extracted.text);
                 updateSky(s);
                 resources = s.resources.get();

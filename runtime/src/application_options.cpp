@@ -79,6 +79,11 @@ constexpr std::pair<const char*, render::ExposureMode> kExposures[] = {
 constexpr std::pair<const char*, render::BrdfModel> kBrdfs[] = {
     {"ue4", render::BrdfModel::Ue4}, {"energy-conserving", render::BrdfModel::EnergyConserving}};
 
+constexpr std::pair<const char*, render::AoMode> kAoModes[] = {
+    {"off", render::AoMode::Off},
+    {"gtao", render::AoMode::Gtao},
+    {"reference", render::AoMode::Reference}};
+
 }  // namespace
 
 std::string ApplicationOptions::standardFlagsUsage() {
@@ -101,7 +106,9 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "                            (default: the scene file's, else 0.04)\n"
            "  --exposure manual|auto    the camera's EV100, or metered and adapted\n"
            "                            (default: the scene file's, else manual)\n"
-           "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n";
+           "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n"
+           "  --ao off|gtao|reference   sky light occlusion (default: the scene file's, else "
+           "gtao)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -211,6 +218,12 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--exposure-compensation needs EV from -16 to 16, got '" + v + "'");
             }
             options.exposureCompensation = compensation;
+        } else if (arg == "--ao") {
+            render::AoMode ao{};
+            if (!value() || !parseChoice(v, kAoModes, ao)) {
+                return fail("--ao needs off, gtao or reference, got '" + v + "'");
+            }
+            options.ao = ao;
         } else if (others == OtherArguments::Keep) {
             result.arguments.push_back(arg);
         } else if (!arg.empty() && arg[0] == '-') {

@@ -61,6 +61,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     // The last frame's metered EV100 (auto exposure; else the camera's) and the one it used.
     json["exposure_ev100"] = last.exposureEv100;
     json["exposure_adapted_ev100"] = last.adaptedEv100;
+    json["ao_ms"] = median(collect(stats.frames, [](auto& f) { return f.aoMs; }));
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;

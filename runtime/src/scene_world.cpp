@@ -96,6 +96,7 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     sceneBloom_ = scene->bloom;
     sceneExposure_ = scene->exposure;
     sceneExposureCompensation_ = scene->exposureCompensation;
+    sceneAmbientOcclusion_ = scene->ambientOcclusion;
     return true;
 }
 

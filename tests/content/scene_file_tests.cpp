@@ -228,6 +228,40 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("/bloom")) << badDiagnostics.toString();
 }
 
+// Issue 25: the top-level "ambient_occlusion" (mode, radius, intensity) survives save and
+// load; bad values are errors naming the file and the field, and the scene still loads with
+// the defaults for them.
+TEST(SceneFile, AmbientOcclusionSettingRoundTripsAndBadValuesAreNamed) {
+    SceneDocument scene = exampleScene();
+    scene.ambientOcclusion = SceneAmbientOcclusion{SceneAoMode::Reference, 2.5f, 0.75f};
+    std::string error;
+    const std::string text = sceneToJson(scene, error);
+    ASSERT_EQ(error, "");
+    EXPECT_NE(text.find("\"ambient_occlusion\""), std::string::npos) << text;
+    Diagnostics diagnostics;
+    auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "ao.scene.json", diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_EQ(loaded->ambientOcclusion, scene.ambientOcclusion);
+    EXPECT_FALSE(exampleScene().ambientOcclusion.has_value());
+
+    const std::string bad = R"({"format": "candela.scene", "version": 1, "entities": [],
+        "ambient_occlusion": {"mode": "ssao", "radius": -1, "intensity": 2}})";
+    Diagnostics badDiagnostics;
+    auto fallback =
+        parseSceneJson(std::as_bytes(std::span(bad)), "bad_ao.scene.json", badDiagnostics);
+    ASSERT_TRUE(fallback);
+    ASSERT_TRUE(fallback->ambientOcclusion.has_value());
+    EXPECT_FALSE(fallback->ambientOcclusion->mode.has_value());
+    EXPECT_EQ(fallback->ambientOcclusion->radius, SceneAmbientOcclusion{}.radius);
+    EXPECT_EQ(fallback->ambientOcclusion->intensity, SceneAmbientOcclusion{}.intensity);
+    EXPECT_TRUE(badDiagnostics.mentions("bad_ao.scene.json")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("/ambient_occlusion/mode")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("gtao")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("/ambient_occlusion/radius")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("/ambient_occlusion/intensity"))
+        << badDiagnostics.toString();
+}
+
 TEST(SceneFile, RefusesToSaveNonFiniteValuesAndKeepsTheOldFile) {
     const auto path = testing::tempPath("level.scene.json");
     ASSERT_EQ(saveSceneFile(path, exampleScene()), "");

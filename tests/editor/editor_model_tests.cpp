@@ -266,6 +266,22 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     EXPECT_EQ(doc.exposureCompensation, 0.5f);
 }
 
+// Issue 25: the scene-wide "ambient_occlusion" the inspector edits is saved, and an edit of
+// it marks the scene modified until the save.
+TEST_F(EditorModel, SaveKeepsTheScenesAmbientOcclusionSetting) {
+    EXPECT_FALSE(saveAndLoad(dir / "saved" / "no_ao.scene.json").ambientOcclusion.has_value());
+    EXPECT_FALSE(scene->modified());
+    scene->setSceneAmbientOcclusion(
+        content::SceneAmbientOcclusion{content::SceneAoMode::Gtao, 0.8f, 0.5f}, true);
+    EXPECT_TRUE(scene->modified());
+    const content::SceneDocument doc = saveAndLoad(dir / "saved" / "ao.scene.json");
+    EXPECT_FALSE(scene->modified());
+    ASSERT_TRUE(doc.ambientOcclusion.has_value());
+    EXPECT_EQ(doc.ambientOcclusion->mode, content::SceneAoMode::Gtao);
+    EXPECT_EQ(doc.ambientOcclusion->radius, 0.8f);
+    EXPECT_EQ(doc.ambientOcclusion->intensity, 0.5f);
+}
+
 TEST_F(EditorModel, SavingIntoAMissingDirectoryFailsNamingTheFileAndKeepsModified) {
     ASSERT_TRUE(setLumens("lamp", 1600.0f));
     const fs::path bad = dir / "no_such_dir" / "x.scene.json";

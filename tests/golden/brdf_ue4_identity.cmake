@@ -1,7 +1,7 @@
 # `--brdf ue4` reproduces seed 000 exactly: renders every golden whose seed-000 captures are
 # recorded in HASHES (SHA-256 of the expected .exr and .png before the energy-conserving BRDF
 # became the default) with `--brdf ue4` and requires byte-identical files. A golden added later
-# (no recorded hash) is skipped with a note.
+# (no recorded hash) is skipped with a note. Seed 000 had no ambient occlusion: `--ao off`.
 #
 #   cmake -DBUILD_DIR=<build> -DHASHES=brdf_ue4_seed000.sha256 -DOUT=<dir> -P brdf_ue4_identity.cmake
 cmake_minimum_required(VERSION 3.25)
@@ -29,7 +29,7 @@ foreach(config IN LISTS configs)
   file(MAKE_DIRECTORY "${OUT}")
   execute_process(
     COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
-            --frames "${GOLDEN_FRAMES}" --brdf ue4 --capture "${exr}" --capture "${png}"
+            --frames "${GOLDEN_FRAMES}" --brdf ue4 --ao off --capture "${exr}" --capture "${png}"
     RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
   if(NOT result EQUAL 0)
     message("${output}")

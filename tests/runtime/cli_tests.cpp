@@ -489,6 +489,53 @@ TEST(Cli, BrdfFlagAndSceneSettingChooseTheBrdf) {
     EXPECT_NE(bad.output.find("ue4 or energy-conserving"), std::string::npos) << bad.output;
 }
 
+// Issue 25: --ao picks the ambient occlusion (stats `features`, `ao_ms`, the passes in the
+// graph), a scene file's "ambient_occlusion" mode does when the flag is absent, off declares
+// no AO pass, and a bad value is refused.
+TEST(Cli, AoFlagAndSceneSettingChooseTheAmbientOcclusion) {
+    auto dir = tempDir();
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/ibl_shading_models.scene.json";
+    std::string text = readBytes(scene);
+    const size_t open = text.find('{');
+    ASSERT_NE(open, std::string::npos);
+    text.insert(open + 1, "\n  \"ambient_occlusion\": {\"mode\": \"off\"},");
+    const std::string relativeAssets = "../../../shared/assets";
+    for (size_t at = text.find(relativeAssets); at != std::string::npos;
+         at = text.find(relativeAssets, at)) {
+        text.replace(at, relativeAssets.size(), CANDELA_SHARED_ASSETS);
+    }
+    const std::filesystem::path offScene = dir / "ao_off.scene.json";
+    std::ofstream(offScene) << text;
+    auto stats = [&](const std::string& name, const std::string& args) {
+        RunResult r = runCandela("run " + args + " --headless --size 32x32 --stats " +
+                                 (dir / (name + ".json")).string() + " --capture " +
+                                 (dir / (name + ".exr")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return nlohmann::json::parse(readBytes(dir / (name + ".json")));
+    };
+    auto has = [](const nlohmann::json& s, const char* name) {
+        const auto f = s["features"].get<std::vector<std::string>>();
+        return std::find(f.begin(), f.end(), name) != f.end();
+    };
+    const nlohmann::json gtao = stats("gtao", scene + " --ao gtao");
+    EXPECT_TRUE(has(gtao, "ao_gtao"));
+    EXPECT_GT(gtao["ao_ms"].get<double>(), 0.0);
+    EXPECT_TRUE(gtao["passes"].contains("ambient_occlusion_gtao")) << gtao["passes"].dump();
+    const nlohmann::json off = stats("setting", offScene.string());
+    EXPECT_FALSE(has(off, "ao_gtao"));
+    EXPECT_EQ(off["ao_ms"].get<double>(), 0.0);
+    EXPECT_FALSE(off["passes"].contains("ambient_occlusion_gtao"));
+    EXPECT_TRUE(has(stats("reference", offScene.string() + " --ao reference"), "ao_reference"));
+    EXPECT_TRUE(has(stats("flag", scene + " --ao off"), "brdf_energy_conserving"));
+    EXPECT_EQ(readBytes(dir / "flag.exr"), readBytes(dir / "setting.exr"));
+    EXPECT_NE(readBytes(dir / "gtao.exr"), readBytes(dir / "flag.exr"));
+
+    RunResult bad = runCandela(kTriangle + "--ao ssao");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("off, gtao or reference"), std::string::npos) << bad.output;
+}
+
 TEST(Cli, UnknownIblModeIsRejected) {
     RunResult r = runCandela(kTriangle + "--ibl fancy");
     EXPECT_EQ(r.exitCode, 2);

@@ -48,6 +48,10 @@ inline constexpr EnumNames<SceneAntiAliasing, 3> kSceneAntiAliasing{
      {SceneAntiAliasing::Fxaa, "fxaa"},
      {SceneAntiAliasing::Taa, "taa"}}};
 
+inline constexpr EnumNames<SceneAoMode, 3> kSceneAoModes{{{SceneAoMode::Off, "off"},
+                                                          {SceneAoMode::Gtao, "gtao"},
+                                                          {SceneAoMode::Reference, "reference"}}};
+
 template <typename E, std::size_t N>
 std::string_view nameOf(const EnumNames<E, N>& names, E value) {
     for (const auto& [v, name] : names) {

@@ -497,6 +497,35 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             scene.aa = aa;
         }
     }
+    const json* ao = nullptr;
+    if (reader.object(root, "", "ambient_occlusion", ao)) {
+        // Like "brdf": a bad value is reported and its default kept; the scene still loads.
+        SceneAmbientOcclusion settings;
+        SceneAoMode mode = SceneAoMode::Gtao;
+        if (ao->contains("mode") && reader.clean([&] {
+                reader.enumeration(*ao, "/ambient_occlusion", "mode", kSceneAoModes, mode);
+            })) {
+            settings.mode = mode;
+        }
+        float radius = settings.radius;
+        if (reader.clean([&] { reader.number(*ao, "/ambient_occlusion", "radius", radius); })) {
+            if (radius > 0.0f) {
+                settings.radius = radius;
+            } else {
+                reader.error("/ambient_occlusion/radius", "must be greater than 0 (metres)");
+            }
+        }
+        float intensity = settings.intensity;
+        if (reader.clean(
+                [&] { reader.number(*ao, "/ambient_occlusion", "intensity", intensity); })) {
+            if (intensity >= 0.0f && intensity <= 1.0f) {
+                settings.intensity = intensity;
+            } else {
+                reader.error("/ambient_occlusion/intensity", "must be between 0 and 1");
+            }
+        }
+        scene.ambientOcclusion = settings;
+    }
     scene.entities.reserve(entities->size());
     for (std::size_t i = 0; i < entities->size(); ++i) {
         scene.entities.push_back(

@@ -180,6 +180,18 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     if (scene.exposure)
         document["exposure"] = std::string(nameOf(kSceneExposures, *scene.exposure));
     if (scene.exposureCompensation) document["exposure_compensation"] = *scene.exposureCompensation;
+    if (scene.ambientOcclusion) {
+        const SceneAmbientOcclusion& ao = *scene.ambientOcclusion;
+        json settings = {
+            {"radius", writer.number(ao.radius, "/ambient_occlusion/radius")},
+            {"intensity", writer.number(ao.intensity, "/ambient_occlusion/intensity")}};
+        if (ao.mode) settings["mode"] = std::string(nameOf(kSceneAoModes, *ao.mode));
+        document["ambient_occlusion"] = std::move(settings);
+        if (!writer.error.empty()) {
+            error = writer.error;
+            return {};
+        }
+    }
     try {
         return document.dump(2) + "\n";
     } catch (const nlohmann::json::exception& e) {  // e.g. a name that is not valid UTF-8

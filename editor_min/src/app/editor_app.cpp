@@ -130,6 +130,11 @@ private:
         layer_->beginFrame(w, h, float(frame.deltaSeconds));
         inputs.scene.camera = drawEditorUi(
             *scene_, ui_, x.hasCamera ? x.camera : defaultCamera(w / h), x.hasCamera, w, h);
+        // The inspector's ambient occlusion edits show in this very frame.
+        if (const auto& ao = scene_->sceneAmbientOcclusion()) {
+            inputs.scene.aoRadius = ao->radius;
+            inputs.scene.aoIntensity = ao->intensity;
+        }
         if (ui_.saveRequested || ui_.saveOverReadOnlyRequested) {
             const std::string why = scene_->save(savePath_, ui_.saveOverReadOnlyRequested);
             ui_.saveRequested = ui_.saveOverReadOnlyRequested = false;

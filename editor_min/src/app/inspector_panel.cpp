@@ -4,6 +4,7 @@
 #include <imgui_internal.h>  // GetItemID (public from 1.87)
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <glm/gtc/quaternion.hpp>
@@ -234,10 +235,41 @@ void drawAddComponent(EditorScene& scene, ecs::Entity e) {
 
 }  // namespace
 
+// Scene-wide settings, shown when no entity is selected: ambient occlusion of the sky's light
+// (the scene file's "ambient_occlusion").
+void drawSceneSettings(EditorScene& scene) {
+    if (!ImGui::CollapsingHeader("Ambient occlusion", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    content::SceneAmbientOcclusion ao =
+        scene.sceneAmbientOcclusion().value_or(content::SceneAmbientOcclusion{});
+    bool changed = false;
+    static constexpr const char* kModes[] = {"default", "off", "gtao", "reference"};
+    int mode = ao.mode ? int(*ao.mode) + 1 : 0;
+    if (ImGui::Combo("Mode", &mode, kModes, 4)) {
+        ao.mode = mode == 0 ? std::nullopt
+                            : std::optional<content::SceneAoMode>(content::SceneAoMode(mode - 1));
+        changed = true;
+    }
+    record("AO mode");
+    changed |= ImGui::DragFloat("Radius (m)", &ao.radius, 0.01f, 0.05f, 10.0f);
+    record("AO radius");
+    changed |= ImGui::SliderFloat("Intensity", &ao.intensity, 0.0f, 1.0f);
+    record("AO intensity");
+    ao.radius = std::clamp(ao.radius, 0.05f, 10.0f);  // the same rules as the scene loader
+    ao.intensity = std::clamp(ao.intensity, 0.0f, 1.0f);
+    if (changed) scene.setSceneAmbientOcclusion(ao, true);
+    ImGui::TextDisabled("Mode applies when the scene is next opened");
+}
+
 void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
     const ecs::Entity e = scene.selected();
     if (e == ecs::kNullEntity) {
         ImGui::TextDisabled("Nothing selected");
+        recording = state.layout;
+        if (recording) recording->clear();
+        ImGui::PushItemWidth(-110.0f);
+        drawSceneSettings(scene);
+        ImGui::PopItemWidth();
+        recording = nullptr;
         return;
     }
     recording = state.layout;

@@ -45,6 +45,7 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     frameSettings.exposure = opened.world->sceneExposure();
     frameSettings.exposureCompensation = opened.world->sceneExposureCompensation();
     opened.scene->setSceneFrameSettings(frameSettings);
+    opened.scene->setSceneAmbientOcclusion(opened.world->sceneAmbientOcclusion());
     return opened;
 }
 

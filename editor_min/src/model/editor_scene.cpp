@@ -98,10 +98,13 @@ std::string EditorScene::displayName(ecs::Entity e) const {
 }
 
 std::string EditorScene::save(const std::filesystem::path& path, bool replaceReadOnly) {
-    std::string error = saveEditedScene(
-        registry_, sourcePath_, path, sceneBrdf_,
-        content::AtomicWriteOptions{.replaceReadOnly = replaceReadOnly}, &frameSettings_);
-    if (error.empty()) savedRevision_ = commands_.revision();
+    std::string error =
+        saveEditedScene(registry_, sourcePath_, path, sceneSettings_,
+                        content::AtomicWriteOptions{.replaceReadOnly = replaceReadOnly});
+    if (error.empty()) {
+        savedRevision_ = commands_.revision();
+        settingsEdited_ = false;
+    }
     return error;
 }
 

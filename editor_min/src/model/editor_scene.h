@@ -28,14 +28,28 @@ public:
     ecs::Registry& registry() { return registry_; }
     const std::filesystem::path& sourcePath() const { return sourcePath_; }
     // The opened file's scene-wide "brdf" (unset: none), written back by save().
-    void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneBrdf_ = brdf; }
+    void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneSettings_.brdf = brdf; }
     // The opened file's scene-wide "aa", "bloom", "exposure" and "exposure_compensation" (the
     // other fields of `settings` are ignored), written back by save().
     void setSceneFrameSettings(const content::SceneDocument& settings) {
-        frameSettings_.aa = settings.aa;
-        frameSettings_.bloom = settings.bloom;
-        frameSettings_.exposure = settings.exposure;
-        frameSettings_.exposureCompensation = settings.exposureCompensation;
+        sceneSettings_.aa = settings.aa;
+        sceneSettings_.bloom = settings.bloom;
+        sceneSettings_.exposure = settings.exposure;
+        sceneSettings_.exposureCompensation = settings.exposureCompensation;
+    }
+    // The scene-wide "ambient_occlusion" (unset: none), edited in the inspector when nothing is
+    // selected, sent to the renderer every frame and written back by save(). Radius and
+    // intensity show at once; a mode change applies when the scene is next opened (the mode
+    // chooses the renderer's passes and shader variant).
+    const std::optional<content::SceneAmbientOcclusion>& sceneAmbientOcclusion() const {
+        return sceneSettings_.ambientOcclusion;
+    }
+    // Edits that are not undo steps (scene-wide settings are not entities); marks the scene
+    // modified.
+    void setSceneAmbientOcclusion(std::optional<content::SceneAmbientOcclusion> settings,
+                                  bool edited = false) {
+        sceneSettings_.ambientOcclusion = settings;
+        if (edited) settingsEdited_ = true;
     }
 
     // Gives every entity an EditorId and makes it a scene member (so it is saved): call after
@@ -72,7 +86,7 @@ public:
     const CommandStack& commands() const { return commands_; }
 
     // True when edits were made (or undone) since the last successful save.
-    bool modified() const { return commands_.revision() != savedRevision_; }
+    bool modified() const { return commands_.revision() != savedRevision_ || settingsEdited_; }
     // Changes with every edit, undo and redo.
     uint64_t revision() const { return commands_.revision(); }
     // Writes the scene file atomically (content::saveSceneFile). Asset paths are rewritten
@@ -88,8 +102,9 @@ private:
     uint64_t selected_ = 0;
     CommandStack commands_;
     uint64_t savedRevision_ = 0;
-    std::optional<content::SceneBrdf> sceneBrdf_;
-    content::SceneDocument frameSettings_;  // only its frame settings are used
+    // The scene-wide settings (every field of a SceneDocument but its entities).
+    content::SceneDocument sceneSettings_;
+    bool settingsEdited_ = false;  // since the last save
 };
 
 }  // namespace candela::editor

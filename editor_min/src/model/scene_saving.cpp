@@ -43,17 +43,15 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
 
 std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path& source,
                             const std::filesystem::path& target,
-                            std::optional<content::SceneBrdf> brdf,
-                            content::AtomicWriteOptions options,
-                            const content::SceneDocument* frameSettings) {
+                            const content::SceneDocument& settings,
+                            content::AtomicWriteOptions options) {
     content::SceneDocument document = documentForSaving(registry, source, target);
-    document.brdf = brdf;
-    if (frameSettings) {
-        document.aa = frameSettings->aa;
-        document.bloom = frameSettings->bloom;
-        document.exposure = frameSettings->exposure;
-        document.exposureCompensation = frameSettings->exposureCompensation;
-    }
+    document.brdf = settings.brdf;
+    document.aa = settings.aa;
+    document.bloom = settings.bloom;
+    document.exposure = settings.exposure;
+    document.exposureCompensation = settings.exposureCompensation;
+    document.ambientOcclusion = settings.ambientOcclusion;
     return content::saveSceneFile(target, document, options);
 }
 

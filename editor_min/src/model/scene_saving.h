@@ -16,13 +16,13 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
                                          const std::filesystem::path& target);
 
 // Atomic save (content::saveSceneFile). Empty on success, else the error naming the file. A
-// read-only target is refused unless `options.replaceReadOnly`. `brdf` is the scene-wide
-// "brdf" setting (not an entity), kept as the opened file had it; so are `frameSettings`'
-// "aa", "bloom", "exposure" and "exposure_compensation" when given.
+// read-only target is refused unless `options.replaceReadOnly`. The scene-wide
+// "brdf", "aa", "bloom", "exposure", "exposure_compensation" and "ambient_occlusion" settings
+// come from `settings` (every field but its entities): they are not entities, so the registry
+// does not hold them; the editor keeps them as the opened file had them, with its edits.
 std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path& source,
                             const std::filesystem::path& target,
-                            std::optional<content::SceneBrdf> brdf,
-                            content::AtomicWriteOptions options = {},
-                            const content::SceneDocument* frameSettings = nullptr);
+                            const content::SceneDocument& settings,
+                            content::AtomicWriteOptions options = {});
 
 }  // namespace candela::editor

@@ -7,46 +7,100 @@
 #include "common/ibl.glsl"
 #include "common/shading_models.glsl"
 
+// The environment's diffuse (and transmitted) light for a surface lit from around
+// `diffuseNormal` (N, or the bent normal of ambient occlusion).
+vec3 environmentDiffuse(AmbientTerms t, vec3 diffuseNormal, vec3 N, vec4 sh[9]) {
+    vec3 diffuse = t.diffuseColor * (1.0 / PI) * shIrradiance(sh, diffuseNormal);
+    if (any(greaterThan(t.transmittedColor, vec3(0.0)))) {
+        diffuse += t.transmittedColor * (1.0 / PI) * shIrradiance(sh, -N);
+    }
+    return diffuse;
+}
+
+// The direction and roughness at which the split sum reads the cube and the LUT: R and the
+// surface's roughness, or for an anisotropic surface the bent reflection vector and the lobe's
+// mean roughness.
+struct AmbientSpecularLobe {
+    vec3 R;
+    float roughness;
+};
+
+AmbientSpecularLobe ambientSpecularLobe(Surface s, vec3 N, vec3 V) {
+    AmbientSpecularLobe lobe = AmbientSpecularLobe(reflect(-V, N), s.roughness);
+    if (kAnisotropyEnabled && s.anisotropy > 0.0) {
+        vec2 alpha = anisotropicAlphas(s.roughness, s.anisotropy);
+        lobe.R = anisotropicReflection(N, V, s.anisotropyT, alpha);
+        lobe.roughness = anisotropicAmbientRoughness(alpha);
+    }
+    return lobe;
+}
+
+// Split-sum (or mobile) specular reflectance of the environment for the lobe at NoV.
+vec3 environmentSpecularBrdf(Surface s, AmbientTerms t, AmbientSpecularLobe lobe, float NoV,
+                             sampler2D environmentBrdfLut, bool mobile) {
+    if (mobile) {
+        // G-buffer Specular is 8-bit: 0.5 arrives as 128 / 255.
+        bool defaultNonmetal = s.shadingModel == kShadingDefaultLit && s.metallic == 0.0 &&
+                               abs(s.specular - 0.5) < 1.0 / 255.0;
+        return environmentBrdfMobile(t.specularColor, lobe.roughness, NoV, defaultNonmetal);
+    }
+    return environmentBrdfFromLut(environmentBrdfLut, t.specularColor, lobe.roughness, NoV);
+}
+
+// Multiple scattering the energy-conserving BRDF adds, per unit of irradiance / pi.
+vec3 environmentMultipleScattering(AmbientTerms t, AmbientSpecularLobe lobe, vec3 environmentBrdf,
+                                   float NoV, sampler2D environmentBrdfLut, bool mobile) {
+    float albedo = mobile ? envBrdfApproxDirectionalAlbedo(lobe.roughness, NoV)
+                          : specularDirectionalAlbedo(environmentBrdfLut, lobe.roughness, NoV);
+    return multipleScatteringEnvironmentBrdf(environmentBrdf, t.specularColor, albedo);
+}
+
+vec3 prefilteredRadiance(AmbientSpecularLobe lobe, samplerCube prefilteredCube,
+                         float prefilteredMipCount) {
+    return textureLod(prefilteredCube, lobe.R,
+                      prefilteredMipOfRoughness(lobe.roughness, prefilteredMipCount))
+        .rgb;
+}
+
 // Radiance (before the sky intensity and occlusion) the environment reflects toward V.
 // `sh`: irradiance coefficients (irradiance_sh.comp); `prefilteredCube`: roughness per mip.
 vec3 environmentAmbient(Surface s, vec3 N, vec3 V, vec4 sh[9], samplerCube prefilteredCube,
                         float prefilteredMipCount, sampler2D environmentBrdfLut, bool mobile) {
     AmbientTerms t = ambientTermsOf(s);
-    vec3 irradiance = shIrradiance(sh, N);
-    vec3 diffuse = t.diffuseColor * (1.0 / PI) * irradiance;
-    if (any(greaterThan(t.transmittedColor, vec3(0.0)))) {
-        diffuse += t.transmittedColor * (1.0 / PI) * shIrradiance(sh, -N);
-    }
+    vec3 diffuse = environmentDiffuse(t, N, N, sh);
     float NoV = saturate(dot(N, V));
-    vec3 R = reflect(-V, N);
-    // The split sum reads the cube and the LUT at this roughness (anisotropic: the lobe's mean).
-    float roughness = s.roughness;
-    if (kAnisotropyEnabled && s.anisotropy > 0.0) {
-        vec2 alpha = anisotropicAlphas(s.roughness, s.anisotropy);
-        R = anisotropicReflection(N, V, s.anisotropyT, alpha);
-        roughness = anisotropicAmbientRoughness(alpha);
-    }
-    vec3 prefiltered =
-        textureLod(prefilteredCube, R, prefilteredMipOfRoughness(roughness, prefilteredMipCount))
-            .rgb;
-    vec3 environmentBrdf;
-    if (mobile) {
-        // G-buffer Specular is 8-bit: 0.5 arrives as 128 / 255.
-        bool defaultNonmetal = s.shadingModel == kShadingDefaultLit && s.metallic == 0.0 &&
-                               abs(s.specular - 0.5) < 1.0 / 255.0;
-        environmentBrdf = environmentBrdfMobile(t.specularColor, roughness, NoV, defaultNonmetal);
-    } else {
-        environmentBrdf =
-            environmentBrdfFromLut(environmentBrdfLut, t.specularColor, roughness, NoV);
-    }
+    AmbientSpecularLobe lobe = ambientSpecularLobe(s, N, V);
+    vec3 prefiltered = prefilteredRadiance(lobe, prefilteredCube, prefilteredMipCount);
+    vec3 environmentBrdf = environmentSpecularBrdf(s, t, lobe, NoV, environmentBrdfLut, mobile);
     vec3 ambient = diffuse + prefiltered * environmentBrdf;
     if (kEnergyConserving) {
-        float albedo = mobile ? envBrdfApproxDirectionalAlbedo(roughness, NoV)
-                              : specularDirectionalAlbedo(environmentBrdfLut, roughness, NoV);
-        ambient += multipleScatteringEnvironmentBrdf(environmentBrdf, t.specularColor, albedo) *
-                   irradiance * (1.0 / PI);
+        ambient += environmentMultipleScattering(t, lobe, environmentBrdf, NoV,
+                                                 environmentBrdfLut, mobile) *
+                   shIrradiance(sh, N) * (1.0 / PI);
     }
     return ambient;
+}
+
+// environmentAmbient under ambient occlusion: the diffuse light arrives around the bent normal
+// and is scaled by `diffuseVisibility` (multi-bounce corrected), the specular (and its
+// multiple scattering, which leaves the same lobe) by `specularVisibility`.
+vec3 occludedEnvironmentAmbient(Surface s, vec3 N, vec3 bentNormal, vec3 V, vec4 sh[9],
+                                samplerCube prefilteredCube, float prefilteredMipCount,
+                                sampler2D environmentBrdfLut, bool mobile,
+                                vec3 diffuseVisibility, float specularVisibility) {
+    AmbientTerms t = ambientTermsOf(s);
+    vec3 diffuse = environmentDiffuse(t, bentNormal, N, sh);
+    float NoV = saturate(dot(N, V));
+    AmbientSpecularLobe lobe = ambientSpecularLobe(s, N, V);
+    vec3 prefiltered = prefilteredRadiance(lobe, prefilteredCube, prefilteredMipCount);
+    vec3 environmentBrdf = environmentSpecularBrdf(s, t, lobe, NoV, environmentBrdfLut, mobile);
+    vec3 specular = prefiltered * environmentBrdf;
+    if (kEnergyConserving) {
+        specular += environmentMultipleScattering(t, lobe, environmentBrdf, NoV,
+                                                  environmentBrdfLut, mobile) *
+                    shIrradiance(sh, N) * (1.0 / PI);
+    }
+    return diffuse * diffuseVisibility + specular * specularVisibility;
 }
 
 // The clear coat's reflection of the environment by the split sum (or seed 001's fit on the

@@ -21,6 +21,8 @@
 #define SPEC_CLUSTERED 30
 #define SPEC_COUNT_LIGHT_PAIRS 31
 #define SPEC_IBL_MODE 32
+// Lighting pass: ambient occlusion of the sky's light (0 off, 1 GTAO, 2 reference).
+#define SPEC_AMBIENT_OCCLUSION 33
 // assign_lights.comp: the counting or the writing walk.
 #define SPEC_ASSIGN_WRITE_PASS 40
 

@@ -34,5 +34,6 @@ void addClusteredRow(ReportContext& context);
 void addBrdfEnergyRows(ReportContext& context);
 void addAntialiasingRows(ReportContext& context);
 void addMaterialRows(ReportContext& context);
+void addAmbientOcclusionRows(ReportContext& context);
 
 }  // namespace candela::report

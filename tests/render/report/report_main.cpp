@@ -2,11 +2,12 @@
 // each approximation's error against a reference and its cost against the reference's,
 // measured in this run on this machine. scripts/report regenerates docs/speed-vs-error.md.
 //
-//   build/bin/candela-report [--out FILE] [--quick] [--only SECTION]
+//   build/bin/candela-report [--out FILE] [--quick] [--section NAME]
 //
+// --section: only the sections whose name contains NAME (checking one section without
+// running the others).
 // --quick: coarse grids and one repetition (the ctest smoke test); the numbers are then only
-// good for checking that every row is produced. --only: the sections whose name contains
-// SECTION (checking one section without running the others).
+// good for checking that every row is produced.
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -38,7 +39,7 @@ std::vector<float> environmentBrdfLut(render::GpuContext& context) {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: candela-report [--out FILE] [--quick] [--only SECTION]\n");
+    std::fprintf(stderr, "usage: candela-report [--out FILE] [--quick] [--section NAME]\n");
     return 2;
 }
 
@@ -51,10 +52,10 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) {
             budget.quick = true;
-        } else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) {
-            only = argv[++i];
         } else if (!std::strcmp(argv[i], "--out") && i + 1 < argc) {
             outPath = argv[++i];
+        } else if (!std::strcmp(argv[i], "--section") && i + 1 < argc) {
+            only = argv[++i];
         } else {
             return usage();
         }
@@ -71,7 +72,7 @@ int main(int argc, char** argv) {
             budget.quick ? "quick (smoke test: coarse grids, numbers not meaningful)" : "full";
         ReportContext context{harness, cost, budget, report};
         auto section = [&](const char* name, auto&& run) {
-            if (!only.empty() && std::string(name).find(only) == std::string::npos) return;
+            if (std::string(name).find(only) == std::string::npos) return;
             std::fprintf(stderr, "candela-report: %s\n", name);
             run();
         };
@@ -85,6 +86,7 @@ int main(int argc, char** argv) {
         section("energy-conserving BRDF", [&] { addBrdfEnergyRows(context); });
         section("antialiasing", [&] { addAntialiasingRows(context); });
         section("material extensions", [&] { addMaterialRows(context); });
+        section("ambient occlusion", [&] { addAmbientOcclusionRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());

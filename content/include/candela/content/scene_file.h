@@ -68,6 +68,18 @@ enum class SceneAntiAliasing { Off, Fxaa, Taa };
 // metered and adapted); --exposure overrides it. Mirrors render::ExposureMode.
 enum class SceneExposure { Manual, Auto };
 
+// Occlusion of the sky's light (top-level "ambient_occlusion": {"mode", "radius",
+// "intensity"}); the command line's --ao overrides the mode. Mirrors render::AoMode.
+enum class SceneAoMode { Off, Gtao, Reference };
+
+struct SceneAmbientOcclusion {
+    std::optional<SceneAoMode> mode;  // unset: the engine's default
+    float radius = 1.5f;              // metres, > 0
+    float intensity = 1.0f;           // 0..1
+
+    bool operator==(const SceneAmbientOcclusion&) const = default;
+};
+
 struct SceneDocument {
     std::vector<SceneEntity> entities;
     std::optional<SceneBrdf> brdf;        // unset: the engine's default (energy-conserving)
@@ -77,6 +89,7 @@ struct SceneDocument {
     std::optional<float> bloom;
     std::optional<SceneExposure> exposure;      // unset: manual
     std::optional<float> exposureCompensation;  // "exposure_compensation", EV (auto only)
+    std::optional<SceneAmbientOcclusion> ambientOcclusion;  // unset: defaults
 };
 
 // Where an asset path stored in a scene file points: relative paths are relative to the

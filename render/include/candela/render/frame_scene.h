@@ -48,6 +48,10 @@ struct FrameScene {
     // Multiplies the environment's radiance (SceneResources::environment()), for the sky
     // background and image-based lighting alike.
     float skyIntensity = 1.0f;
+    // The scene's ambient occlusion reach (metres) and strength (0..1), when the renderer's
+    // AoMode is on.
+    float aoRadius = 1.5f;  // render/README.md "Ambient occlusion": why 1.5
+    float aoIntensity = 1.0f;
 };
 
 }  // namespace candela::render

@@ -35,6 +35,7 @@ class GBufferPass;
 class GpuContext;
 class GpuLightBuffer;
 class LightingPass;
+class AmbientOcclusionPass;
 class SceneResources;
 class TonemapPass;
 class TaaPass;
@@ -154,6 +155,7 @@ private:
     std::unique_ptr<TrianglePass> trianglePass_;
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<LightingPass> lightingPass_;
+    std::unique_ptr<AmbientOcclusionPass> aoPass_;  // made on the first frame with AO
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<DebugTextPass> debugTextPass_;  // made on the first frame with text

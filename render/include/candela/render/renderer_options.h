@@ -52,6 +52,29 @@ enum class ExposureMode {
     Auto,    // metered from the frame's luminance histogram and adapted over time
 };
 
+// Occlusion of the sky's light (`--ao`, the scene file's "ambient_occlusion"; render/README.md
+// "Ambient occlusion"). Only with image-based lighting: analytic lights have their own shadows.
+enum class AoMode {
+    Off,        // no pass in the graph, no AO code in the lighting variant
+    Gtao,       // ground-truth-based AO (Jimenez et al. 2016) with bent normals and a denoise
+    Reference,  // many rays per pixel marched against the depth buffer: for measurement only
+};
+const char* aoModeName(AoMode mode);  // "off", "gtao", "reference"
+
+// What the AO passes do. radius and intensity come from the scene (FrameScene) each frame.
+struct AmbientOcclusionSettings {
+    float radius = 1.5f;              // metres the horizon search (and the reference's rays) reach
+    float intensity = 1.0f;           // 0: no occlusion, 1: as measured
+    uint32_t slices = 4;              // GTAO screen-space directions per pixel
+    uint32_t steps = 8;               // GTAO samples per side of a slice
+    uint32_t referenceRays = 256;     // per pixel, for each of diffuse and specular
+    uint32_t referenceSteps = 24;     // per ray
+    float referenceThickness = 1.0f;  // metres behind the depth buffer a surface is solid
+    // Jimenez et al.'s multi-bounce fit, which assumes occluders as bright as the surface;
+    // off only to measure visibility itself (a black occluder on a white floor).
+    bool multiBounce = true;
+};
+
 struct RendererOptions {
     LightCulling lightCulling = LightCulling::Clustered;
     LightAssignmentDevice lightAssignment = LightAssignmentDevice::Auto;
@@ -79,6 +102,9 @@ struct RendererOptions {
     float bloomStrength = 0.0f;
     ExposureMode exposure = ExposureMode::Manual;
     AutoExposureSettings autoExposure;
+    AoMode ao = AoMode::Off;
+    // The pass settings other than radius and intensity (those are the scene's, per frame).
+    AmbientOcclusionSettings aoSettings;
 };
 
 // The frame graph of the last frame (--stats `frame_graph`).
@@ -104,6 +130,7 @@ struct RendererStats {
     double lightAssignMs = 0.0;     // CPU: assignment and list upload (not the geometry wait);
                                     // GPU: timestamps around the assignment passes
     double lightingMs = 0.0;        // GPU timestamps around the lighting dispatch
+    double aoMs = 0.0;              // GPU timestamps around the ambient occlusion passes
     uint64_t lightEvaluations = 0;  // light-pixel pairs the shader evaluated (countLightPairs)
     uint64_t litPairs = 0;          // ... of which the light reaches the pixel
     // Frames whose list buffer had to grow (the CPU path's first frame always does: it sizes

@@ -10,6 +10,7 @@
 #include "common/clusters.glsl"
 #include "common/specialization_ids.h"
 #include "common/ambient_lighting.glsl"
+#include "common/ambient_occlusion.glsl"
 #include "common/ibl.glsl"
 #include "common/light_buffer.glsl"
 #include "common/shading_models.glsl"
@@ -26,6 +27,12 @@ const uint kIblSplitSum = 1u;
 const uint kIblMobile = 2u;
 const uint kIblReference = 3u;
 layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
+// Ambient occlusion of the sky's light: none, GTAO (specular occlusion from the visibility)
+// or the ray-marched reference (specular visibility measured too).
+const uint kAoOff = 0u;
+const uint kAoGtao = 1u;
+const uint kAoReference = 2u;
+layout(constant_id = SPEC_AMBIENT_OCCLUSION) const uint kAoMode = 0u;
 
 layout(binding = LIGHTING_BINDING_GBUFFER_BASE_COLOR) uniform sampler2D gbufferBaseColor;
 layout(binding = LIGHTING_BINDING_GBUFFER_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
@@ -72,6 +79,8 @@ layout(std430, binding = LIGHTING_BINDING_SAMPLING_TABLE) readonly buffer Enviro
     uint pad1;
     vec2 cdfAndProbability[];
 } environmentSampling;
+layout(binding = LIGHTING_BINDING_AMBIENT_OCCLUSION) uniform sampler2D ambientOcclusion;
+layout(binding = LIGHTING_BINDING_SPECULAR_OCCLUSION) uniform sampler2D specularOcclusion;
 
 layout(push_constant) uniform Push {
     ClusterGridParams grid;
@@ -79,6 +88,8 @@ layout(push_constant) uniform Push {
     float skyIntensity;
     float prefilteredMipCount;
     uint referenceSamples;
+    float aoIntensity;
+    uint aoMultiBounce;  // 0: visibility as measured (tests of visibility itself)
 } push;
 
 shared uint groupEvaluations;
@@ -373,6 +384,7 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
 }
 
 // Ambient light of the environment on the pixel's surface (cd/m^2 before sky intensity).
+// Without ambient occlusion, before the material's occlusion (the caller applies it).
 vec3 ambientRadiance(PixelShading px, ivec2 pixel) {
     vec3 ambient;
     if (kIblMode == kIblReference) {
@@ -399,6 +411,38 @@ vec3 ambientRadiance(PixelShading px, ivec2 pixel) {
         ambient = ambient * attenuation + coat;
     }
     return ambient;
+}
+
+// With ambient occlusion, combined with the material's `occlusion` (G-buffer alpha).
+vec3 occludedAmbientRadiance(PixelShading px, ivec2 pixel, float occlusion) {
+    vec4 ao = texelFetch(ambientOcclusion, pixel, 0);
+    float visibility = mix(1.0, saturate(ao.w), push.aoIntensity);
+    vec3 bentNormal = safeNormalize(ao.xyz);
+    float specularVisibility;
+    if (kAoMode == kAoReference) {
+        specularVisibility = mix(1.0, saturate(texelFetch(specularOcclusion, pixel, 0).r),
+                                 push.aoIntensity);
+    } else {
+        specularVisibility = specularOcclusionFromVisibility(
+            visibility, saturate(dot(px.N, px.V)), px.surface.roughness);
+    }
+    // The material's occlusion (baked from the mesh's own shape) and the screen-space one see
+    // the same nearby geometry: the minimum, not the product, so a crease is not darkened
+    // twice.
+    visibility = min(visibility, occlusion);
+    specularVisibility = min(specularVisibility, occlusion);
+    AmbientTerms t = ambientTermsOf(px.surface);
+    vec3 diffuseVisibility = push.aoMultiBounce != 0u
+                                 ? multiBounceOcclusion(visibility, t.diffuseColor)
+                                 : vec3(visibility);
+    if (kIblMode == kIblReference) {
+        return referenceAmbient(t, px, pixel) * diffuseVisibility;
+    }
+    vec4 sh[9] = irradianceSh;
+    return occludedEnvironmentAmbient(px.surface, px.N, bentNormal, px.V, sh, prefilteredCube,
+                                      push.prefilteredMipCount, environmentBrdfLut,
+                                      kIblMode == kIblMobile, diffuseVisibility,
+                                      specularVisibility);
 }
 
 void shadePixel(ivec2 pixel, inout PixelShading px) {
@@ -436,7 +480,11 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
 
     if (kIblMode != kIblNone) {
         float occlusion = texelFetch(gbufferBaseColor, pixel, 0).a;
-        px.radiance += ambientRadiance(px, pixel) * (occlusion * push.skyIntensity);
+        if (kAoMode == kAoOff) {
+            px.radiance += ambientRadiance(px, pixel) * (occlusion * push.skyIntensity);
+        } else {
+            px.radiance += occludedAmbientRadiance(px, pixel, occlusion) * push.skyIntensity;
+        }
     }
 
     if (kClustered) {

@@ -25,5 +25,9 @@
 // gbuffer_targets.h's optional targets (the base colour image stands in without them).
 #define LIGHTING_BINDING_GBUFFER_ANISOTROPY 17
 #define LIGHTING_BINDING_GBUFFER_CLEAR_COAT 18
+// Ambient occlusion (passes/ambient_occlusion): (bent normal, visibility), and the reference's
+// specular visibility.
+#define LIGHTING_BINDING_AMBIENT_OCCLUSION 19
+#define LIGHTING_BINDING_SPECULAR_OCCLUSION 20
 
 #endif

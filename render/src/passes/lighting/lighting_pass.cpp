@@ -19,6 +19,8 @@ struct Push {
     float skyIntensity;
     float prefilteredMipCount;
     uint32_t referenceSamples;
+    float aoIntensity;
+    uint32_t aoMultiBounce;
 };
 
 // Values of kIblMode in lighting.comp.
@@ -51,6 +53,7 @@ std::vector<std::string> LightingFeatures::names() const {
     out.push_back(brdf == BrdfModel::Ue4 ? "brdf_ue4" : "brdf_energy_conserving");
     if (anisotropy) out.push_back("material_anisotropy");
     if (clearCoat) out.push_back("material_clear_coat");
+    if (ao != AoMode::Off) out.push_back(std::string("ao_") + aoModeName(ao));
     return out;
 }
 
@@ -90,6 +93,7 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
     constants.set(SPEC_COUNT_LIGHT_PAIRS, features.countLightPairs);
     constants.set(SPEC_IBL_MODE, iblModeConstant(features.ibl));
     setMaterialExtensionConstants(constants, features);
+    constants.set(SPEC_AMBIENT_OCCLUSION, uint32_t(features.ao));
     const DescriptorBinding bindings[] = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -126,6 +130,10 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
          VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHTING_BINDING_GBUFFER_CLEAR_COAT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_AMBIENT_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_SPECULAR_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
     };
     pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
     built_ = true;
@@ -160,6 +168,18 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
     const EnvironmentDescriptors& env = *in.environment;
+    // Without ambient occlusion the variant never reads these: any 2D image will do, and the
+    // LUT (or its placeholder) is always at hand.
+    VkDescriptorImageInfo occlusionInfo = env.brdfLut;
+    VkDescriptorImageInfo specularOcclusionInfo = env.brdfLut;
+    if (in.ambientOcclusion) {
+        occlusionInfo = {pointSampler_.handle(), in.ambientOcclusion->view(),
+                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
+    if (in.specularOcclusion) {
+        specularOcclusionInfo = {pointSampler_.handle(), in.specularOcclusion->view(),
+                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
         storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
@@ -180,9 +200,12 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
         storageBufferWrite(LIGHTING_BINDING_SAMPLING_TABLE, &env.samplingTable),
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_ANISOTROPY, &images[5]),
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_CLEAR_COAT, &images[6]),
+        sampledImageWrite(LIGHTING_BINDING_AMBIENT_OCCLUSION, &occlusionInfo),
+        sampledImageWrite(LIGHTING_BINDING_SPECULAR_OCCLUSION, &specularOcclusionInfo),
     };
-    Push push{toGpu(*in.grid), in.directionalCount, in.skyIntensity, env.prefilteredMipCount,
-              in.referenceSamples};
+    Push push{toGpu(*in.grid),           in.directionalCount, in.skyIntensity,
+              env.prefilteredMipCount,   in.referenceSamples, in.aoIntensity,
+              in.aoMultiBounce ? 1u : 0u};
     pipeline_.bind(cmd);
     pipeline_.pushDescriptors(cmd, writes);
     pipeline_.pushConstants(cmd, &push, sizeof(push));

@@ -36,6 +36,7 @@ struct LightingFeatures {
     bool anisotropy = false;  // a drawn opaque material has KHR_materials_anisotropy
     bool clearCoat = false;   // ... KHR_materials_clearcoat
     bool materialExtensions() const { return anisotropy || clearCoat; }
+    AoMode ao = AoMode::Off;  // only with ibl
 
     static constexpr uint32_t bit(content::LightType type) {
         return 1u << content::lightTypeIndex(type);
@@ -79,6 +80,11 @@ public:
         const EnvironmentDescriptors* environment;  // the sky, or placeholders
         float skyIntensity = 1.0f;
         uint32_t referenceSamples = 0;
+        // Sampled; unused (placeholders bound) when the variant has no ambient occlusion.
+        std::optional<ImageRef> ambientOcclusion;
+        std::optional<ImageRef> specularOcclusion;  // the reference mode's only
+        float aoIntensity = 1.0f;
+        bool aoMultiBounce = true;
     };
     void record(VkCommandBuffer cmd, const Inputs& inputs) const;
     static uint32_t workgroupCount(uint32_t width, uint32_t height);

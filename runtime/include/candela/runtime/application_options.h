@@ -59,6 +59,8 @@ struct ApplicationOptions {
     // --exposure, --exposure-compensation; unset: the scene file's, else manual and 0 EV.
     std::optional<render::ExposureMode> exposure;
     std::optional<float> exposureCompensation;
+    // --ao; unset: the world's scene-file "ambient_occlusion" mode, else gtao.
+    std::optional<render::AoMode> ao;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
@@ -67,6 +69,7 @@ struct ApplicationOptions {
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
     // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
+    // --brdf, --ao.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

@@ -58,6 +58,14 @@ public:
     // The exposure mode and compensation the last scene file asks for, if it sets them.
     std::optional<content::SceneExposure> sceneExposure() const { return sceneExposure_; }
     std::optional<float> sceneExposureCompensation() const { return sceneExposureCompensation_; }
+    // The scene file's "ambient_occlusion" (mode, radius, intensity), if it has one; the
+    // renderer reads radius and intensity every frame, so an editor's change shows at once.
+    const std::optional<content::SceneAmbientOcclusion>& sceneAmbientOcclusion() const {
+        return sceneAmbientOcclusion_;
+    }
+    void setSceneAmbientOcclusion(std::optional<content::SceneAmbientOcclusion> settings) {
+        sceneAmbientOcclusion_ = settings;
+    }
 
     // Keeps a model alive for the lifetime of the world and returns it.
     const content::Model& adoptModel(std::unique_ptr<content::Model> model);
@@ -93,6 +101,7 @@ private:
     std::optional<float> sceneBloom_;
     std::optional<content::SceneExposure> sceneExposure_;
     std::optional<float> sceneExposureCompensation_;
+    std::optional<content::SceneAmbientOcclusion> sceneAmbientOcclusion_;
 };
 
 }  // namespace candela::runtime

@@ -1,0 +1,116 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "ambient_occlusion_bindings.h"
+// Ground-truth-based ambient occlusion (Jimenez et al. 2016) from the G-buffer's depth and
+// normals: per pixel, `slices` screen-space directions; along each, the highest horizon on
+// both sides within `radius` metres; between the two horizons, the cosine-weighted visible
+// arc integrated analytically against the normal projected into the slice, and the bent
+// normal (the mean visible direction) likewise. Writes (world bent normal, visibility).
+#include "common/ambient_occlusion.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = AO_BINDING_DEPTH) uniform sampler2D gbufferDepth;
+layout(binding = AO_BINDING_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
+layout(binding = AO_BINDING_OUTPUT, rgba16f) uniform writeonly image2D aoOutput;
+
+layout(push_constant) uniform Push {
+    float radius;
+    uint slices;
+    uint steps;
+    float thickness;  // unused here (the reference's)
+} push;
+
+// cos of the horizon seen from P along one side of the slice: samples farther than the
+// radius fade to the side's lowest horizon (the tangent plane's), Jimenez et al.'s falloff.
+float horizonCosine(vec3 P, vec3 V, vec2 pixelCentre, vec2 direction, float radiusPixels,
+                    float jitter, float lowCosine) {
+    float best = lowCosine;
+    vec2 size = vec2(camera.frameInfo.xy);
+    for (uint j = 0u; j < push.steps; ++j) {
+        float s = (float(j) + jitter) / float(push.steps);
+        // Quadratic spacing: more samples near the pixel, where contact occlusion lives;
+        // at least one pixel away so a pixel never samples itself.
+        float offset = max(s * s * radiusPixels, float(j) + 1.0);
+        vec2 samplePixel = floor(pixelCentre + direction * offset) + 0.5;
+        if (any(lessThan(samplePixel, vec2(0.0))) || any(greaterThanEqual(samplePixel, size)))
+            break;
+        float depth = texelFetch(gbufferDepth, ivec2(samplePixel), 0).r;
+        if (depth <= 0.0) continue;  // sky: no occluder
+        vec3 delta = aoWorldFromDepth(samplePixel, depth) - P;
+        float distance = length(delta);
+        if (distance < 1e-5) continue;
+        float sampleCosine = dot(delta / distance, V);
+        // Full weight to 0.7 radius, none past the radius.
+        float weight = saturate((push.radius - distance) / (0.3 * push.radius));
+        best = max(best, mix(lowCosine, sampleCosine, weight));
+    }
+    return best;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    uvec2 size = camera.frameInfo.xy;
+    if (pixel.x >= int(size.x) || pixel.y >= int(size.y)) return;
+    float depth = texelFetch(gbufferDepth, pixel, 0).r;
+    vec3 N = octDecode(texelFetch(gbufferNormalRoughMetal, pixel, 0).xy);
+    if (depth <= 0.0) {
+        imageStore(aoOutput, pixel, vec4(N, 1.0));
+        return;
+    }
+    vec2 centre = vec2(pixel) + 0.5;
+    vec3 P = aoWorldFromDepth(centre, depth);
+    vec3 V = safeNormalize(camera.cameraPosition.xyz - P);
+    // One pixel's width at P's depth, for the radius in pixels.
+    float pixelWorld = length(aoWorldFromDepth(centre + vec2(1.0, 0.0), depth) - P);
+    float radiusPixels = push.radius / max(pixelWorld, 1e-8);
+    vec2 noise = aoPixelNoise(pixel);
+
+    float visibility = 0.0;
+    vec3 bent = vec3(0.0);
+    float weightSum = 0.0;
+    for (uint i = 0u; i < push.slices; ++i) {
+        float phi = (float(i) + noise.x) * PI / float(push.slices);
+        vec2 direction = vec2(cos(phi), sin(phi));
+        // The world direction that moving along `direction` on screen takes at P's depth,
+        // made perpendicular to V: with V it spans the slice plane.
+        vec3 along = aoWorldFromDepth(centre + direction, depth) - P;
+        vec3 sliceTangent = safeNormalize(along - dot(along, V) * V);
+        vec3 axis = safeNormalize(cross(sliceTangent, V));
+        vec3 projectedN = N - axis * dot(N, axis);
+        float projectedLength = length(projectedN);
+        if (projectedLength < 1e-4) continue;
+        float cosN = saturate(dot(projectedN, V) / projectedLength);
+        float n = sign(dot(projectedN, sliceTangent)) * acos(cosN);
+        // Horizons as angles from V, positive toward +direction; never below the tangent
+        // plane's (n +- pi/2).
+        float cosPositive = horizonCosine(P, V, centre, direction, radiusPixels, noise.y,
+                                          cos(n + 0.5 * PI));
+        float cosNegative = horizonCosine(P, V, centre, -direction, radiusPixels, noise.y,
+                                          cos(n - 0.5 * PI));
+        float h1 = acos(clamp(cosPositive, -1.0, 1.0));
+        float h0 = -acos(clamp(cosNegative, -1.0, 1.0));
+        h0 = n + clamp(h0 - n, -0.5 * PI, 0.5 * PI);
+        h1 = n + clamp(h1 - n, -0.5 * PI, 0.5 * PI);
+        float sinN = sin(n);
+        // Cosine-weighted visible arc: the integral of cos(h - n) |sin h| over [h0, h1].
+        float arc0 = (cosN + 2.0 * h0 * sinN - cos(2.0 * h0 - n)) * 0.25;
+        float arc1 = (cosN + 2.0 * h1 * sinN - cos(2.0 * h1 - n)) * 0.25;
+        visibility += projectedLength * (arc0 + arc1);
+        // Mean visible direction in the slice, in (sliceTangent, V) coordinates.
+        float t0 = (6.0 * sin(h0 - n) - sin(3.0 * h0 - n) + 6.0 * sin(h1 - n) - sin(3.0 * h1 - n) +
+                    16.0 * sinN - 3.0 * (sin(h0 + n) + sin(h1 + n))) / 12.0;
+        float t1 = (-cos(3.0 * h0 - n) - cos(3.0 * h1 - n) + 8.0 * cos(n) -
+                    3.0 * (cos(h0 + n) + cos(h1 + n))) / 12.0;
+        bent += (sliceTangent * t0 + V * t1) * projectedLength;
+        weightSum += projectedLength;
+    }
+    // Not clamped to 1 here: a few slices over- and underestimate an open plane seen at an
+    // angle, and the denoise's average of both is unbiased only if neither is clipped.
+    visibility = weightSum > 0.0 ? max(visibility / float(push.slices), 0.0) : 1.0;
+    // A bent normal behind the surface (grazing views) would light it from below: keep it
+    // in N's hemisphere.
+    bent = safeNormalize(bent);
+    if (dot(bent, N) < 0.05 || weightSum <= 0.0) bent = N;
+    imageStore(aoOutput, pixel, vec4(bent, visibility));
+}
