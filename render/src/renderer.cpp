@@ -25,6 +25,7 @@
 #include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
+#include "passes/shadows/shadow_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "vk/vk_check.h"
@@ -112,6 +113,7 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     environmentPlaceholders_ = std::make_unique<EnvironmentPlaceholders>(context_);
     transparentPass_ = std::make_unique<ForwardTransparentPass>(context_);
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
+    shadowPass_ = std::make_unique<ShadowPass>(context_);
 }
 
 Renderer::~Renderer() {
@@ -174,6 +176,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                 uint32_t hdrId) {
     FrameGraph& g = *graph_;
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
+    // Shadow maps for the lights that cast; none, and the variant leaves shadows out.
+    features.shadows = shadowPass_->prepare(inputs.scene, resources, options_, width_, height_);
     lightingPass_->setFeatures(features);
     // The environment BRDF LUT is the same for every sky: built once, when first needed (the
     // energy-conserving BRDF reads its directional albedo for every light, sky or not).
@@ -202,6 +206,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     stats_.lights = lights_->count();
     stats_.lightsRewritten = lights_->rewrittenLastUpdate();
     stats_.lightAssignMs = 0.0;
+    stats_.shadowedLights = shadowPass_->stats().shadowedLights;
+    stats_.shadowMapsRendered = shadowPass_->stats().mapsRendered;
+    stats_.shadowMapsCached = shadowPass_->stats().mapsCached;
+    stats_.shadowAtlasUsed = shadowPass_->stats().atlasUsed;
     if (!features.clustered) clusters_->usePlaceholders();
 
     SceneHandles h;
@@ -215,6 +223,27 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     h.lights = g.importBuffer("lights", &lights_->buffer());
     const ResourceHandle pairCounts =
         g.importBuffer("lighting.pair_counts", &pairCounts_, features.countLightPairs);
+    // Shadows: the atlas keeps its maps between frames (cached tiles), read-only between uses.
+    ResourceHandle shadowAtlas, shadowViews, shadowLights;
+    if (features.shadows) {
+        constexpr ImageState kShadowRead{
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+        shadowAtlas =
+            g.importImage("shadow_atlas", &shadowPass_->atlas(),
+                          shadowPass_->atlasHoldsMaps() ? kShadowRead : ImageState{}, kShadowRead);
+        shadowViews = g.importBuffer("shadow_views", &shadowPass_->viewBuffer());
+        shadowLights = g.importBuffer("shadow_lights", &shadowPass_->lightBuffer());
+        if (shadowPass_->rendersThisFrame()) {
+            auto p = g.addPass("shadows", PassKind::Device,
+                               [this, &inputs, &resources](PassContext& ctx) {
+                                   shadowPass_->record(ctx.cmd(), inputs.scene, resources);
+                               });
+            shadowAtlas = p.write(shadowAtlas, Use::DepthWrite);
+        }
+    }
+    const ShadowDescriptors shadowDescriptors = shadowPass_->descriptors(features.shadows);
 
     const SceneHandles ids = h;  // resource ids for the passes to look up
     auto gbufferViews = [ids](PassContext& ctx) {
@@ -251,7 +280,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     const float skyIntensity = inputs.scene.skyIntensity;
     {
         auto p = g.addPass("lighting", PassKind::Device,
-                           [this, gbufferViews, ids, environment, skyIntensity](PassContext& ctx) {
+                           [this, gbufferViews, ids, environment, skyIntensity,
+                            shadowDescriptors](PassContext& ctx) {
                                const GBufferTargets targets = gbufferViews(ctx);
                                LightingPass::Inputs lighting{&targets,
                                                              ctx.image(ids.hdr),
@@ -266,6 +296,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                lighting.environment = &environment;
                                lighting.skyIntensity = skyIntensity;
                                lighting.referenceSamples = options_.referenceSamples;
+                               lighting.shadows = &shadowDescriptors;
                                lightingPass_->record(ctx.cmd(), lighting);
                            });
         for (ResourceHandle c : h.color)
@@ -278,19 +309,26 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             p.read(h.clusters.indices, Use::StorageRead);
             p.read(h.clusters.depthRange, Use::StorageRead);
         }
+        if (features.shadows) {
+            p.read(shadowAtlas, Use::Sampled);
+            p.read(shadowViews, Use::StorageRead);
+            p.read(shadowLights, Use::StorageRead);
+        }
         if (features.countLightPairs) p.write(pairCounts, Use::StorageWrite);
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
     if (blended) {
-        auto p = g.addPass("forward_transparent", PassKind::Device,
-                           [this, ids, environment, skyIntensity, &resources](PassContext& ctx) {
-                               transparentPass_->recordShading(
-                                   ctx.cmd(), resources,
-                                   {ctx.image(ids.hdr), ctx.image(ids.depth), &cameraBuffer_,
-                                    &lights_->buffer(), &clusters_->ranges(), &clusters_->indices(),
-                                    &clusters_->depthRange(), &clusters_->grid(),
-                                    clusters_->directionalCount(), &environment, skyIntensity});
-                           });
+        auto p = g.addPass(
+            "forward_transparent", PassKind::Device,
+            [this, ids, environment, skyIntensity, shadowDescriptors,
+             &resources](PassContext& ctx) {
+                transparentPass_->recordShading(
+                    ctx.cmd(), resources,
+                    {ctx.image(ids.hdr), ctx.image(ids.depth), &cameraBuffer_, &lights_->buffer(),
+                     &clusters_->ranges(), &clusters_->indices(), &clusters_->depthRange(),
+                     &clusters_->grid(), clusters_->directionalCount(), &environment, skyIntensity,
+                     &shadowDescriptors});
+            });
         p.read(h.depth, Use::DepthRead);
         p.read(h.camera, Use::Uniform, kRasterStages);
         p.read(h.lights, Use::StorageRead, kFragmentStage);
@@ -298,6 +336,11 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
             p.read(h.clusters.indices, Use::StorageRead, kFragmentStage);
             p.read(h.clusters.depthRange, Use::StorageRead, kFragmentStage);
+        }
+        if (features.shadows) {
+            p.read(shadowAtlas, Use::Sampled, kFragmentStage);
+            p.read(shadowViews, Use::StorageRead, kFragmentStage);
+            p.read(shadowLights, Use::StorageRead, kFragmentStage);
         }
         h.hdr = p.write(h.hdr, Use::ColorAttachment);
         features_.push_back("forward_transparency");
@@ -408,6 +451,7 @@ std::string Renderer::frameGraphDot() const {
 
 const RendererStats& Renderer::collectStats() {
     stats_.lightingMs = 0.0;
+    stats_.shadowMs = 0.0;
     stats_.passMs.clear();
     if (!frameRecorded_) return stats_;
     const bool onDevice = clusters_->assignedOnDevice();
@@ -416,6 +460,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.passMs = executor_->passTimes();
     for (const auto& [name, ms] : stats_.passMs) {
         if (name == "lighting") stats_.lightingMs = ms;
+        if (name == "shadows") stats_.shadowMs = ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
     }
     stats_.lightEvaluations = 0;

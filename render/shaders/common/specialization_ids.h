@@ -17,6 +17,8 @@
 #define SPEC_CLUSTERED 30
 #define SPEC_COUNT_LIGHT_PAIRS 31
 #define SPEC_IBL_MODE 32
+// Shadow sampling (shadows.glsl): on only in frames where a light casts.
+#define SPEC_SHADOWS_ENABLED 33
 // assign_lights.comp: the counting or the writing walk.
 #define SPEC_ASSIGN_WRITE_PASS 40
 

@@ -34,6 +34,7 @@ class GpuLightBuffer;
 class LightingPass;
 class SceneResources;
 class TonemapPass;
+class ShadowPass;
 class DebugTextPass;
 class TrianglePass;
 
@@ -118,6 +119,7 @@ private:
     std::unique_ptr<LightingPass> lightingPass_;
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
+    std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<DebugTextPass> debugTextPass_;  // made on the first frame with text
     std::unique_ptr<EnvironmentBrdfLut> brdfLut_;
     std::unique_ptr<EnvironmentPlaceholders> environmentPlaceholders_;

@@ -52,6 +52,14 @@ struct RendererOptions {
     IblMode ibl = IblMode::SplitSum;
     BrdfModel brdf = BrdfModel::EnergyConserving;
     uint32_t referenceSamples = 2048;  // per pixel, for each of specular and diffuse
+    // Shadows (render/README.md "Shadows"): lights with castShadows get maps when on.
+    bool shadows = true;
+    uint32_t shadowAtlasSize = 4096;    // largest atlas side, texels (every map is a tile)
+    uint32_t shadowCascadeSize = 1024;  // texels per side of each directional cascade
+    uint32_t shadowCascades = 4;        // per directional light, 1 to 4
+    float shadowDistance = 50.0f;       // metres of view depth the cascades cover
+    uint32_t shadowMaxTileSize = 1024;  // largest tile of a local light (per cube face)
+    bool shadowCache = true;            // keep maps whose light and casters did not change
 };
 
 // The frame graph of the last frame (--stats `frame_graph`).
@@ -94,6 +102,13 @@ struct RendererStats {
     // (empty until a frame needed it), and the milliseconds it took to build or load.
     std::string brdfLutSource;
     double brdfLutMs = 0.0;
+    // Shadows (--stats shadow_*): GPU ms of the shadow depth pass, lights with maps, of which
+    // rendered this frame and kept from an earlier one, and the share of atlas texels in use.
+    double shadowMs = 0.0;
+    uint32_t shadowedLights = 0;
+    uint32_t shadowMapsRendered = 0;
+    uint32_t shadowMapsCached = 0;
+    double shadowAtlasUsed = 0.0;
 };
 
 }  // namespace candela::render

@@ -13,6 +13,10 @@
 #include "common/ibl.glsl"
 #include "common/light_buffer.glsl"
 #include "common/shading_models.glsl"
+#define SHADOW_ATLAS_BINDING LIGHTING_BINDING_SHADOW_ATLAS
+#define SHADOW_VIEWS_BINDING LIGHTING_BINDING_SHADOW_VIEWS
+#define SHADOW_LIGHTS_BINDING LIGHTING_BINDING_SHADOW_LIGHTS
+#include "common/shadows.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -111,6 +115,13 @@ struct PixelShading {
 void addLight(inout PixelShading px, uint lightIndex) {
     Light light = loadLight(lightIndex, camera.frameInfo.w);
     LightIncidence incidence = evaluateLight(light, px.P, px.N, px.R, px.alpha);
+    float visibility = shadowVisibility(light, lightIndex, px.P, px.N);
+    incidence.diffuseIlluminance *= visibility;
+    incidence.specularIlluminance *= visibility;
+    incidence.incidentIlluminance *= kSubsurfaceEnabled &&
+                                             px.surface.shadingModel == kShadingSubsurface
+                                         ? subsurfaceTransmittance(light, lightIndex, px.P)
+                                         : visibility;
     px.radiance += shadeSurface(px.surface, px.N, px.V, incidence);
     if (kCountLightPairs) {
         px.evaluations += 1u;
