@@ -1,7 +1,9 @@
 # `--brdf ue4` reproduces seed 000 exactly: renders every golden whose seed-000 captures are
 # recorded in HASHES (SHA-256 of the expected .exr and .png before the energy-conserving BRDF
 # became the default) with `--brdf ue4` and requires byte-identical files. A golden added later
-# (no recorded hash) is skipped with a note.
+# (no recorded hash) is skipped with a note. alpha_blend_mode and orb_game were re-recorded
+# when directional lights began to cast shadows (issue 14): their suns' shadows are new, the
+# BRDF path is not.
 #
 #   cmake -DBUILD_DIR=<build> -DHASHES=brdf_ue4_seed000.sha256 -DOUT=<dir> -P brdf_ue4_identity.cmake
 cmake_minimum_required(VERSION 3.25)
