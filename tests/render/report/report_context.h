@@ -32,5 +32,6 @@ void addFalloffRow(ReportContext& context);
 void addSplitSumRow(ReportContext& context);
 void addClusteredRow(ReportContext& context);
 void addBrdfEnergyRows(ReportContext& context);
+void addShadowRows(ReportContext& context);
 
 }  // namespace candela::report

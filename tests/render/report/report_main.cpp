@@ -2,10 +2,11 @@
 // each approximation's error against a reference and its cost against the reference's,
 // measured in this run on this machine. scripts/report regenerates docs/speed-vs-error.md.
 //
-//   build/bin/candela-report [--out FILE] [--quick]
+//   build/bin/candela-report [--out FILE] [--quick] [--section NAME]
 //
 // --quick: coarse grids and one repetition (the ctest smoke test); the numbers are then only
-// good for checking that every row is produced.
+// good for checking that every row is produced. --section: only that section (e.g. "shadows"),
+// to check one section's rows without the whole run.
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -37,7 +38,7 @@ std::vector<float> environmentBrdfLut(render::GpuContext& context) {
 }
 
 int usage() {
-    std::fprintf(stderr, "usage: candela-report [--out FILE] [--quick]\n");
+    std::fprintf(stderr, "usage: candela-report [--out FILE] [--quick] [--section NAME]\n");
     return 2;
 }
 
@@ -45,12 +46,15 @@ int usage() {
 
 int main(int argc, char** argv) {
     std::string outPath;
+    std::string onlySection;
     Budget budget;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) {
             budget.quick = true;
         } else if (!std::strcmp(argv[i], "--out") && i + 1 < argc) {
             outPath = argv[++i];
+        } else if (!std::strcmp(argv[i], "--section") && i + 1 < argc) {
+            onlySection = argv[++i];
         } else {
             return usage();
         }
@@ -67,6 +71,7 @@ int main(int argc, char** argv) {
             budget.quick ? "quick (smoke test: coarse grids, numbers not meaningful)" : "full";
         ReportContext context{harness, cost, budget, report};
         auto section = [&](const char* name, auto&& run) {
+            if (!onlySection.empty() && onlySection != name) return;
             std::fprintf(stderr, "candela-report: %s\n", name);
             run();
         };
@@ -78,6 +83,7 @@ int main(int argc, char** argv) {
         section("image-based lighting", [&] { addSplitSumRow(context); });
         section("clustered lights", [&] { addClusteredRow(context); });
         section("energy-conserving BRDF", [&] { addBrdfEnergyRows(context); });
+        section("shadows", [&] { addShadowRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());
