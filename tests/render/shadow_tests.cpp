@@ -358,7 +358,7 @@ namespace {
 // across the edge, divided by 0.8 (the share of a linear ramp between 10% and 90%), in metres.
 float measuredPenumbra(const LightInstance& light) {
     TestScene scene;
-    scene.width = scene.height = 256;
+    scene.width = scene.height = 192;
     scene.add(candela::content::makePlane(8.0f, 4), lambertWhite());
     scene.add(candela::content::makeBox({1.5f, 0.01f, 3.0f}), lambertWhite(),
               glm::translate(glm::mat4(1.0f), glm::vec3(-1.5f, 0.5f, 0.0f)));
