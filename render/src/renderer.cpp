@@ -31,6 +31,7 @@
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/taa/taa_pass.h"
+#include "passes/shadows/shadow_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "vk/image_transfer.h"
@@ -160,6 +161,7 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                       MemoryLocation::HostVisible);
     }
+    shadowPass_ = std::make_unique<ShadowPass>(context_);
 }
 
 Renderer::~Renderer() {
@@ -276,6 +278,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                 uint32_t hdrId) {
     FrameGraph& g = *graph_;
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
+    // Shadow maps for the lights that cast; none, and the variant leaves shadows out.
+    features.shadows = shadowPass_->prepare(inputs.scene, resources, options_, width_, height_);
     lightingPass_->setFeatures(features);
     // The environment BRDF LUT is the same for every sky: built once, when first needed (the
     // energy-conserving BRDF reads its directional albedo for every light, sky or not).
@@ -306,6 +310,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     stats_.lights = lights_->count();
     stats_.lightsRewritten = lights_->rewrittenLastUpdate();
     stats_.lightAssignMs = 0.0;
+    stats_.shadowedLights = shadowPass_->stats().shadowedLights;
+    stats_.shadowMapsRendered = shadowPass_->stats().mapsRendered;
+    stats_.shadowMapsCached = shadowPass_->stats().mapsCached;
+    stats_.shadowAtlasUsed = shadowPass_->stats().atlasUsed;
     if (!features.clustered) clusters_->usePlaceholders();
 
     SceneHandles h;
@@ -330,6 +338,27 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     h.lights = g.importBuffer("lights", &lights_->buffer());
     const ResourceHandle pairCounts =
         g.importBuffer("lighting.pair_counts", &pairCounts_, features.countLightPairs);
+    // Shadows: the atlas keeps its maps between frames (cached tiles), read-only between uses.
+    ResourceHandle shadowAtlas, shadowViews, shadowLights;
+    if (features.shadows) {
+        constexpr ImageState kShadowRead{
+            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+        shadowAtlas =
+            g.importImage("shadow_atlas", &shadowPass_->atlas(),
+                          shadowPass_->atlasHoldsMaps() ? kShadowRead : ImageState{}, kShadowRead);
+        shadowViews = g.importBuffer("shadow_views", &shadowPass_->viewBuffer());
+        shadowLights = g.importBuffer("shadow_lights", &shadowPass_->lightBuffer());
+        if (shadowPass_->rendersThisFrame()) {
+            auto p = g.addPass("shadows", PassKind::Device,
+                               [this, &inputs, &resources](PassContext& ctx) {
+                                   shadowPass_->record(ctx.cmd(), inputs.scene, resources);
+                               });
+            shadowAtlas = p.write(shadowAtlas, Use::DepthWrite);
+        }
+    }
+    const ShadowDescriptors shadowDescriptors = shadowPass_->descriptors(features.shadows);
 
     const SceneHandles ids = h;  // resource ids for the passes to look up
     auto gbufferViews = [ids](PassContext& ctx) {
@@ -437,7 +466,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     {
         auto p = g.addPass("lighting", PassKind::Device,
                            [this, gbufferViews, ids, environment, skyIntensity, occlusion,
-                            specularOcclusion, aoIntensity, aoMultiBounce](PassContext& ctx) {
+                            specularOcclusion, aoIntensity, aoMultiBounce,
+                            shadowDescriptors](PassContext& ctx) {
                                const GBufferTargets targets = gbufferViews(ctx);
                                LightingPass::Inputs lighting{&targets,
                                                              ctx.image(ids.hdr),
@@ -458,6 +488,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                }
                                lighting.aoIntensity = aoIntensity;
                                lighting.aoMultiBounce = aoMultiBounce;
+                               lighting.shadows = &shadowDescriptors;
                                lightingPass_->record(ctx.cmd(), lighting);
                            });
         for (ResourceHandle c : h.color)
@@ -476,20 +507,27 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             p.read(h.clusters.indices, Use::StorageRead);
             p.read(h.clusters.depthRange, Use::StorageRead);
         }
+        if (features.shadows) {
+            p.read(shadowAtlas, Use::Sampled);
+            p.read(shadowViews, Use::StorageRead);
+            p.read(shadowLights, Use::StorageRead);
+        }
         if (features.countLightPairs) p.write(pairCounts, Use::StorageWrite);
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
     if (blended) {
-        auto p =
-            g.addPass("forward_transparent", PassKind::Device,
-                      [this, ids, environment, skyIntensity, &resources](PassContext& ctx) {
-                          transparentPass_->recordShading(
-                              ctx.cmd(), resources,
-                              {ctx.image(ids.hdr), ctx.image(ids.motion), ctx.image(ids.depth),
-                               &cameraBuffer_, &lights_->buffer(), &clusters_->ranges(),
-                               &clusters_->indices(), &clusters_->depthRange(), &clusters_->grid(),
-                               clusters_->directionalCount(), &environment, skyIntensity});
-                      });
+        auto p = g.addPass(
+            "forward_transparent", PassKind::Device,
+            [this, ids, environment, skyIntensity, shadowDescriptors,
+             &resources](PassContext& ctx) {
+                transparentPass_->recordShading(
+                    ctx.cmd(), resources,
+                    {ctx.image(ids.hdr), ctx.image(ids.motion), ctx.image(ids.depth),
+                     &cameraBuffer_, &lights_->buffer(), &clusters_->ranges(),
+                     &clusters_->indices(), &clusters_->depthRange(), &clusters_->grid(),
+                     clusters_->directionalCount(), &environment, skyIntensity,
+                     &shadowDescriptors});
+            });
         p.read(h.depth, Use::DepthRead);
         p.read(h.camera, Use::Uniform, kRasterStages);
         p.read(h.lights, Use::StorageRead, kFragmentStage);
@@ -497,6 +535,11 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
             p.read(h.clusters.indices, Use::StorageRead, kFragmentStage);
             p.read(h.clusters.depthRange, Use::StorageRead, kFragmentStage);
+        }
+        if (features.shadows) {
+            p.read(shadowAtlas, Use::Sampled, kFragmentStage);
+            p.read(shadowViews, Use::StorageRead, kFragmentStage);
+            p.read(shadowLights, Use::StorageRead, kFragmentStage);
         }
         h.hdr = p.write(h.hdr, Use::ColorAttachment);
         h.motion = p.write(h.motion, Use::ColorAttachment);
@@ -760,6 +803,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.taaMs = 0.0;
     stats_.bloomMs = 0.0;
     stats_.aoMs = 0.0;
+    stats_.shadowMs = 0.0;
     stats_.passMs.clear();
     if (!frameRecorded_) return stats_;
     const bool onDevice = clusters_->assignedOnDevice();
@@ -771,6 +815,7 @@ const RendererStats& Renderer::collectStats() {
         if (name == "taa" || name == "taa_copy") stats_.taaMs += ms;
         if (name.starts_with("bloom_")) stats_.bloomMs += ms;
         if (name.starts_with("ambient_occlusion_")) stats_.aoMs += ms;
+        if (name == "shadows") stats_.shadowMs = ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
     }
     stats_.lightEvaluations = 0;

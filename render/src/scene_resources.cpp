@@ -281,6 +281,7 @@ const UploadedModel& SceneResources::addModel(const content::Model& model) {
                     hi = glm::max(hi, v);
                 }
                 gpu.boundsCenter = 0.5f * (lo + hi);
+                gpu.boundsExtent = 0.5f * (hi - lo);
             }
             gpu.defaultMaterial = p.material >= 0 && p.material < int32_t(model.materials.size())
                                       ? int32_t(uploaded.firstMaterial + p.material)

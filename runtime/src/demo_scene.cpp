@@ -5,12 +5,16 @@
 #include <cstdlib>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
 #include "candela/content/components/sky.h"
+#include "candela/content/diagnostics.h"
+#include "candela/content/environment_map.h"
+#include "candela/content/exr_image.h"
 #include "candela/content/procedural_mesh.h"
 #include "candela/ecs/hierarchy.h"
 #include "candela/ecs/transform.h"
@@ -84,6 +88,53 @@ struct DemoMeshes {
         return int32_t(model.meshes.size() - 1);
     }
 };
+
+// The sky's sun, for a directional light that stands in for it: the direction of the brightest
+// texel of the lat-long image and the illuminance its disk (texels above a tenth of that
+// peak, within 5 degrees) delivers face on. nullopt when the image cannot be read.
+struct SkySun {
+    ecs::Vec3 towardSun;
+    float lux;
+};
+
+std::optional<SkySun> findSkySun(const std::filesystem::path& exr) {
+    content::Diagnostics diagnostics;
+    const std::optional<content::ExrImage> read = content::readExrImage(exr, diagnostics);
+    if (!read) return std::nullopt;
+    const content::FloatImage& image = read->image;
+    auto luminance = [](const float* t) {
+        return 0.2126f * t[0] + 0.7152f * t[1] + 0.0722f * t[2];
+    };
+    uint32_t bestX = 0, bestY = 0;
+    for (uint32_t y = 0; y < image.height; ++y) {
+        for (uint32_t x = 0; x < image.width; ++x) {
+            if (luminance(image.texel(x, y)) > luminance(image.texel(bestX, bestY))) {
+                bestX = x;
+                bestY = y;
+            }
+        }
+    }
+    const auto toward = content::latLongDirection(float(bestX) + 0.5f, float(bestY) + 0.5f,
+                                                  image.width, image.height);
+    const ecs::Vec3 sun{toward[0], toward[1], toward[2]};
+    const float peak = luminance(image.texel(bestX, bestY));
+    float lux = 0.0f;
+    for (uint32_t y = 0; y < image.height; ++y) {
+        for (uint32_t x = 0; x < image.width; ++x) {
+            const float l = luminance(image.texel(x, y));
+            if (l < 0.1f * peak) continue;
+            const auto d = content::latLongDirection(float(x) + 0.5f, float(y) + 0.5f, image.width,
+                                                     image.height);
+            const float cosine = ecs::dot(sun, ecs::Vec3{d[0], d[1], d[2]});
+            if (cosine < std::cos(5.0f * kPi / 180.0f)) continue;
+            const float latitude = (0.5f - (float(y) + 0.5f) / float(image.height)) * kPi;
+            const float solidAngle = (2.0f * kPi / float(image.width)) *
+                                     (kPi / float(image.height)) * std::cos(latitude);
+            lux += l * solidAngle * cosine;
+        }
+    }
+    return SkySun{sun, lux};
+}
 
 ecs::Entity place(ecs::Registry& registry, const std::string& name, ecs::Vec3 position,
                   ecs::Quat rotation = {}, ecs::Vec3 scale = {1.0f, 1.0f, 1.0f}) {
@@ -298,6 +349,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     // Lamp bulb: a sphere light inside an emissive glass, hanging from a rib on a cord.
     content::Light bulb = pointLight({1.0f, 0.78f, 0.55f}, 1800.0f, 9.0f);
     bulb.sourceRadius = 0.08f;
+    bulb.castShadows = true;
     ecs::Entity bulbEntity = place(registry, "lamp bulb", {-2.0f, 3.4f, -5.2f});
     registry.emplace<content::Light>(bulbEntity, bulb);
     draw(bulbEntity, bulbGlass);
@@ -307,12 +359,14 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     content::Light magenta = pointLight({1.0f, 0.1f, 0.75f}, 2500.0f, 7.0f);
     magenta.sourceLength = 3.0f;
     magenta.sourceRadius = 0.03f;
+    magenta.castShadows = true;
     ecs::Entity backNeon = place(registry, "neon tube", {0.0f, 5.2f, -9.4f});
     registry.emplace<content::Light>(backNeon, magenta);
     draw(backNeon, neonMagenta);
     content::Light cyan = pointLight({0.1f, 0.7f, 1.0f}, 900.0f, 5.0f);
     cyan.sourceLength = 1.6f;
     cyan.sourceRadius = 0.03f;
+    cyan.castShadows = true;
     for (float side : {-1.0f, 1.0f}) {
         for (int i = 0; i < 3; ++i) {
             ecs::Entity e =
@@ -343,9 +397,24 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     // The sky (the renderer's image-based lighting reads it; the background stays a dim night
     // until then).
     ecs::Entity sky = place(registry, "sky", {});
-    registry.emplace<content::Sky>(
-        sky,
-        content::Sky{(sharedAssets() / "env/qwantani_afternoon_puresky_1k.exr").string(), 1.0f});
+    const std::filesystem::path skyFile = sharedAssets() / "env/qwantani_afternoon_puresky_1k.exr";
+    registry.emplace<content::Sky>(sky, content::Sky{skyFile.string(), 1.0f});
+    // A sun where the sky's sun is, as bright as its disk, casting shadows (render/README.md
+    // "Shadows"): the light travels along the node's -Z, away from the sun.
+    if (const std::optional<SkySun> skySun = findSkySun(skyFile)) {
+        const ecs::Vec3 travel{-skySun->towardSun.x, -skySun->towardSun.y, -skySun->towardSun.z};
+        const ecs::Vec3 minusZ{0.0f, 0.0f, -1.0f};
+        ecs::Vec3 axis = ecs::cross(minusZ, travel);
+        if (ecs::length(axis) < 1e-6f) axis = {1.0f, 0.0f, 0.0f};
+        const float angle = std::acos(std::clamp(ecs::dot(minusZ, travel), -1.0f, 1.0f));
+        content::Light sun;
+        sun.type = content::LightType::Directional;
+        sun.lux = skySun->lux;
+        sun.color = {1.0f, 0.97f, 0.92f};
+        sun.castShadows = true;
+        registry.emplace<content::Light>(
+            place(registry, "sun", {}, ecs::Quat::fromAxisAngle(axis, angle)), sun);
+    }
 
     content::Camera camera;
     camera.exposureMode = content::ExposureMode::Manual;

@@ -61,6 +61,45 @@ TEST(LightTypeTable, EveryTypeAndFieldRoundTripsThroughASceneFile) {
     }
 }
 
+// castShadows: written and read back either way; absent, each type's default (directional
+// lights cast, point and spot lights do not); not a boolean, an error naming the key.
+TEST(LightTypeTable, CastShadowsRoundTripsAndDefaultsPerType) {
+    for (const LightTypeInfo& type : kLightTypeTable) {
+        SCOPED_TRACE(type.name);
+        for (bool cast : {false, true}) {
+            SceneDocument scene;
+            Light light;
+            light.type = type.type;
+            light.castShadows = cast;
+            scene.entities.emplace_back().light = light;
+            std::string error;
+            const std::string text = sceneToJson(scene, error);
+            ASSERT_EQ(error, "");
+            Diagnostics diagnostics;
+            auto loaded =
+                parseSceneJson(std::as_bytes(std::span(text)), "cast.scene.json", diagnostics);
+            ASSERT_TRUE(loaded) << diagnostics.toString();
+            EXPECT_EQ(loaded->entities[0].light->castShadows, cast);
+        }
+        const std::string absent = std::string(R"({"format": "candela.scene", "version": 1,
+            "entities": [{"name": "l", "light": {"type": ")") +
+                                   type.name + R"("}}]})";
+        Diagnostics diagnostics;
+        auto loaded =
+            parseSceneJson(std::as_bytes(std::span(absent)), "default.scene.json", diagnostics);
+        ASSERT_TRUE(loaded) << diagnostics.toString();
+        EXPECT_EQ(loaded->entities[0].light->castShadows, type.castsShadowsByDefault);
+    }
+    EXPECT_TRUE(lightTypeInfo(LightType::Directional).castsShadowsByDefault);
+    EXPECT_FALSE(lightTypeInfo(LightType::Point).castsShadowsByDefault);
+    EXPECT_FALSE(lightTypeInfo(LightType::Spot).castsShadowsByDefault);
+    const std::string wrong = R"({"format": "candela.scene", "version": 1,
+        "entities": [{"name": "l", "light": {"type": "point", "castShadows": 1}}]})";
+    Diagnostics diagnostics;
+    parseSceneJson(std::as_bytes(std::span(wrong)), "wrong.scene.json", diagnostics);
+    EXPECT_TRUE(diagnostics.mentions("castShadows")) << diagnostics.toString();
+}
+
 bool rejects(const ValueProblems& problems, const std::string& field) {
     for (const ValueProblem& p : problems) {
         if (!p.clamped && p.field == field) return true;

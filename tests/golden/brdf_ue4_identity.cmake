@@ -2,6 +2,8 @@
 # recorded in HASHES (SHA-256 of the expected .exr and .png before the energy-conserving BRDF
 # became the default) with `--brdf ue4` and requires byte-identical files. A golden added later
 # (no recorded hash) is skipped with a note. Seed 000 had no ambient occlusion: `--ao off`.
+# alpha_blend_mode and orb_game were re-recorded when directional lights began to cast shadows
+# (issue 14): their suns' shadows are new, the BRDF path is not.
 #
 #   cmake -DBUILD_DIR=<build> -DHASHES=brdf_ue4_seed000.sha256 -DOUT=<dir> -P brdf_ue4_identity.cmake
 cmake_minimum_required(VERSION 3.25)

@@ -84,6 +84,16 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
                             std::string(f.name) + " must be a finite number >= 0; ignored");
         }
     }
+    // Engine extension: extras.castShadows (bool), else the type's default.
+    light.castShadows = lightTypeInfo(light.type).castsShadowsByDefault;
+    if (const tinygltf::Value* cast = member(source.extras, kCastShadowsKey)) {
+        if (cast->IsBool()) {
+            light.castShadows = cast->Get<bool>();
+        } else {
+            context.warning(element + ".extras",
+                            std::string(kCastShadowsKey) + " must be true or false; ignored");
+        }
+    }
     // The rules the scene loader and the editor share; what is left to catch here is clamps
     // (colour), as the values above were already made valid.
     for (const ValueProblem& problem : validateLight(light)) {

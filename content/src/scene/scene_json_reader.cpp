@@ -244,6 +244,8 @@ public:
 
     void light(const json& j, const std::string& p, Light& l) {
         enumeration(j, p, "type", kLightTypes, l.type);
+        l.castShadows = lightTypeInfo(l.type).castsShadowsByDefault;
+        boolean(j, p, kCastShadowsKey, l.castShadows);
         // Every field of the light type table (content/light_types.h), whatever the type.
         for (const LightFieldInfo& f : kLightFieldTable) {
             if (f.channels) {

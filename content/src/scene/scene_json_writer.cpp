@@ -107,6 +107,7 @@ struct Writer {
             out[f.name] =
                 f.channels ? numbers(l.*f.channels, pointer) : number(l.*f.scalar, pointer);
         }
+        out[kCastShadowsKey] = l.castShadows;
         return out;
     }
 

@@ -137,6 +137,7 @@ void drawLight(EditorScene& scene, ecs::Entity e) {
         }
         commit(scene, e, changed, l, f.undoLabel);
     }
+    commit(scene, e, ImGui::Checkbox("Cast shadows", &l.castShadows), l, "Set Cast Shadows");
 }
 
 void drawCamera(EditorScene& scene, ecs::Entity e) {

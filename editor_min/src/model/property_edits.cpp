@@ -42,6 +42,9 @@ const std::map<std::string, Field<content::Light>>& fields() {
                 out[f.name] = {1, [member = f.scalar](L& l, const Values& v) { l.*member = v[0]; }};
             }
         }
+        // The shadow flag: any non-zero value casts.
+        out[content::kCastShadowsKey] = {1,
+                                         [](L& l, const Values& v) { l.castShadows = v[0] != 0; }};
         return out;
     }();
     return table;

@@ -23,6 +23,8 @@
 #define SPEC_IBL_MODE 32
 // Lighting pass: ambient occlusion of the sky's light (0 off, 1 GTAO, 2 reference).
 #define SPEC_AMBIENT_OCCLUSION 33
+// Shadow sampling (shadows.glsl): on only in frames where a light casts.
+#define SPEC_SHADOWS_ENABLED 34
 // assign_lights.comp: the counting or the writing walk.
 #define SPEC_ASSIGN_WRITE_PASS 40
 

@@ -35,5 +35,6 @@ void addBrdfEnergyRows(ReportContext& context);
 void addAntialiasingRows(ReportContext& context);
 void addMaterialRows(ReportContext& context);
 void addAmbientOcclusionRows(ReportContext& context);
+void addShadowRows(ReportContext& context);
 
 }  // namespace candela::report

@@ -87,6 +87,7 @@ int main(int argc, char** argv) {
         section("antialiasing", [&] { addAntialiasingRows(context); });
         section("material extensions", [&] { addMaterialRows(context); });
         section("ambient occlusion", [&] { addAmbientOcclusionRows(context); });
+        section("shadows", [&] { addShadowRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());

@@ -109,21 +109,27 @@ struct LightTypeInfo {
     LightPower power;
     LightFieldSet fields;  // what the inspector shows; validateLight checks cones only if used
     LightOutline outline;
+    // castShadows when a scene file or glTF light does not say (render/README.md "Shadows").
+    bool castsShadowsByDefault;
 };
+
+// The key of Light::castShadows in scene files, glTF light extras and the editor's property
+// edits. A flag, not a kLightFieldTable row (that table holds numbers and colours).
+inline constexpr const char* kCastShadowsKey = "castShadows";
 
 // One row per LightType, in enumerator order (checked below).
 inline constexpr std::array<LightTypeInfo, 3> kLightTypeTable{{
     {LightType::Point, "point", "Point", "point", LightPower::Lumens,
      fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
               LightField::SourceRadius, LightField::SourceLength),
-     LightOutline::FalloffSphere},
+     LightOutline::FalloffSphere, false},
     {LightType::Spot, "spot", "Spot", "spot", LightPower::Lumens,
      fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
               LightField::SourceRadius, LightField::SourceLength, LightField::InnerConeAngle,
               LightField::OuterConeAngle),
-     LightOutline::Cone},
+     LightOutline::Cone, false},
     {LightType::Directional, "directional", "Directional", "directional", LightPower::Lux,
-     fieldSet(LightField::Color, LightField::Lux), LightOutline::Direction},
+     fieldSet(LightField::Color, LightField::Lux), LightOutline::Direction, true},
 }};
 
 inline constexpr std::size_t kLightTypeCount = kLightTypeTable.size();

@@ -42,6 +42,7 @@ class TaaPass;
 class FxaaPass;
 class BloomPass;
 class ExposureHistogramPass;
+class ShadowPass;
 class DebugTextPass;
 class TrianglePass;
 
@@ -158,6 +159,7 @@ private:
     std::unique_ptr<AmbientOcclusionPass> aoPass_;  // made on the first frame with AO
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
+    std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<DebugTextPass> debugTextPass_;  // made on the first frame with text
     std::unique_ptr<EnvironmentBrdfLut> brdfLut_;
     std::unique_ptr<EnvironmentPlaceholders> environmentPlaceholders_;

@@ -105,6 +105,14 @@ struct RendererOptions {
     AoMode ao = AoMode::Off;
     // The pass settings other than radius and intensity (those are the scene's, per frame).
     AmbientOcclusionSettings aoSettings;
+    // Shadows (render/README.md "Shadows"): lights with castShadows get maps when on.
+    bool shadows = true;
+    uint32_t shadowAtlasSize = 4096;    // largest atlas side, texels (every map is a tile)
+    uint32_t shadowCascadeSize = 1024;  // texels per side of each directional cascade
+    uint32_t shadowCascades = 4;        // per directional light, 1 to 4
+    float shadowDistance = 50.0f;       // metres of view depth the cascades cover
+    uint32_t shadowMaxTileSize = 1024;  // largest tile of a local light (per cube face)
+    bool shadowCache = true;            // keep maps whose light and casters did not change
 };
 
 // The frame graph of the last frame (--stats `frame_graph`).
@@ -154,6 +162,13 @@ struct RendererStats {
     // only, else the camera's), and the adapted EV100 the frame was exposed with.
     float exposureEv100 = 0.0f;
     float adaptedEv100 = 0.0f;
+    // Shadows (--stats shadow_*): GPU ms of the shadow depth pass, lights with maps, of which
+    // rendered this frame and kept from an earlier one, and the share of atlas texels in use.
+    double shadowMs = 0.0;
+    uint32_t shadowedLights = 0;
+    uint32_t shadowMapsRendered = 0;
+    uint32_t shadowMapsCached = 0;
+    double shadowAtlasUsed = 0.0;
 };
 
 }  // namespace candela::render

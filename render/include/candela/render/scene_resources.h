@@ -24,6 +24,7 @@ struct GpuMesh {
     uint32_t indexCount = 0;
     int32_t defaultMaterial = -1;  // the primitive's material in SceneResources, -1: default
     glm::vec3 boundsCenter{0.0f};  // of the positions' box, mesh space (transparency sorting)
+    glm::vec3 boundsExtent{0.0f};  // half its size (shadow caster culling)
 };
 
 struct GpuTexture {

@@ -16,6 +16,10 @@
 #include "common/material.glsl"
 #include "common/motion_vectors.glsl"
 #include "common/shading_models.glsl"
+#define SHADOW_ATLAS_BINDING FORWARD_BINDING_SHADOW_ATLAS
+#define SHADOW_VIEWS_BINDING FORWARD_BINDING_SHADOW_VIEWS
+#define SHADOW_LIGHTS_BINDING FORWARD_BINDING_SHADOW_LIGHTS
+#include "common/shadows.glsl"
 
 layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
 // Image-based lighting as the deferred pass does it: 0 none, 1 split sum, 2 mobile.
@@ -66,6 +70,13 @@ layout(location = 1) out vec4 outMotion;    // gbuffer.motion, blended by the sa
 vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha, uint index) {
     Light light = loadLight(index, camera.frameInfo.w);
     LightIncidence incidence = evaluateLight(light, P, N, R, alpha);
+    float visibility = shadowVisibility(light, index, P, N);
+    incidence.diffuseIlluminance *= visibility;
+    incidence.specularIlluminance *= visibility;
+    incidence.incidentIlluminance *=
+        kSubsurfaceEnabled && surface.shadingModel == kShadingSubsurface
+            ? subsurfaceTransmittance(light, index, P)
+            : visibility;
     return shadeSurface(surface, N, V, incidence);
 }
 

@@ -16,6 +16,10 @@
 #define FORWARD_BINDING_PREFILTERED 19
 #define FORWARD_BINDING_BRDF_LUT 20
 #define FORWARD_BINDING_IRRADIANCE_SH 21
+// Shadows (common/shadows.glsl, passes/shadows/shadow_pass.h).
+#define FORWARD_BINDING_SHADOW_ATLAS 22
+#define FORWARD_BINDING_SHADOW_VIEWS 23
+#define FORWARD_BINDING_SHADOW_LIGHTS 24
 
 // transparent_occupancy.frag (camera in its vertex stage, gbuffer.vert).
 #define TRANSPARENT_OCCUPANCY_BINDING_DEPTH 1

@@ -14,6 +14,7 @@
 #include "ibl/environment_descriptors.h"
 #include "mesh_vertex.h"
 #include "passes/forward_transparent/forward_transparent_bindings.h"
+#include "passes/shadows/shadow_pass.h"
 #include "shaders/forward_transparent.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
 #include "shaders/transparent_occupancy.frag.spv.h"
@@ -138,6 +139,12 @@ void ForwardTransparentPass::buildShadingPipeline() {
         {FORWARD_BINDING_BRDF_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_IRRADIANCE_SH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_SHADOW_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
@@ -306,7 +313,10 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
             storageBufferWrite(FORWARD_BINDING_DEPTH_RANGE, &depthRangeInfo),
             sampledImageWrite(FORWARD_BINDING_PREFILTERED, &in.environment->prefiltered),
             sampledImageWrite(FORWARD_BINDING_BRDF_LUT, &in.environment->brdfLut),
-            storageBufferWrite(FORWARD_BINDING_IRRADIANCE_SH, &in.environment->irradianceSh)};
+            storageBufferWrite(FORWARD_BINDING_IRRADIANCE_SH, &in.environment->irradianceSh),
+            sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
+            storageBufferWrite(FORWARD_BINDING_SHADOW_VIEWS, &in.shadows->views),
+            storageBufferWrite(FORWARD_BINDING_SHADOW_LIGHTS, &in.shadows->lights)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};

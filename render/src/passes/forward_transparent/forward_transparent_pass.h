@@ -21,6 +21,7 @@ class GpuImage;
 class SceneResources;
 struct ClusterGrid;
 struct EnvironmentDescriptors;
+struct ShadowDescriptors;
 
 class ForwardTransparentPass {
 public:
@@ -77,6 +78,7 @@ public:
         uint32_t directionalCount;
         const EnvironmentDescriptors* environment;  // the sky (features().ibl), or placeholders
         float skyIntensity;
+        const ShadowDescriptors* shadows;  // the atlas and tables, or placeholders
     };
     void recordShading(VkCommandBuffer cmd, SceneResources& resources,
                        const ShadingInputs& in) const;

@@ -14,6 +14,10 @@
 #include "common/ibl.glsl"
 #include "common/light_buffer.glsl"
 #include "common/shading_models.glsl"
+#define SHADOW_ATLAS_BINDING LIGHTING_BINDING_SHADOW_ATLAS
+#define SHADOW_VIEWS_BINDING LIGHTING_BINDING_SHADOW_VIEWS
+#define SHADOW_LIGHTS_BINDING LIGHTING_BINDING_SHADOW_LIGHTS
+#include "common/shadows.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -144,10 +148,21 @@ struct PixelShading {
 void addLight(inout PixelShading px, uint lightIndex) {
     Light light = loadLight(lightIndex, camera.frameInfo.w);
     LightIncidence incidence = evaluateLight(light, px.P, px.N, px.R, px.alpha);
+    float visibility = shadowVisibility(light, lightIndex, px.P, px.N);
+    incidence.diffuseIlluminance *= visibility;
+    incidence.specularIlluminance *= visibility;
+    incidence.incidentIlluminance *= kSubsurfaceEnabled &&
+                                             px.surface.shadingModel == kShadingSubsurface
+                                         ? subsurfaceTransmittance(light, lightIndex, px.P)
+                                         : visibility;
     if (kClearCoatEnabled && px.surface.clearCoat > 0.0) {
-        // The coat sees the light from its own normal and roughness: a second incidence.
+        // The coat sees the light from its own normal and roughness: a second incidence,
+        // shadowed as the base is.
         LightIncidence coat =
             evaluateLight(light, px.P, px.surface.clearCoatN, px.coatR, px.coatAlpha);
+        coat.diffuseIlluminance *= visibility;
+        coat.specularIlluminance *= visibility;
+        coat.incidentIlluminance *= visibility;
         px.radiance += shadeSurface(px.surface, px.N, px.V, incidence) * px.coatAttenuation +
                        clearCoatLobe(px.surface, px.V, coat);
     } else {

@@ -29,5 +29,9 @@
 // specular visibility.
 #define LIGHTING_BINDING_AMBIENT_OCCLUSION 19
 #define LIGHTING_BINDING_SPECULAR_OCCLUSION 20
+// Shadows (common/shadows.glsl, passes/shadows/shadow_pass.h).
+#define LIGHTING_BINDING_SHADOW_ATLAS 21
+#define LIGHTING_BINDING_SHADOW_VIEWS 22
+#define LIGHTING_BINDING_SHADOW_LIGHTS 23
 
 #endif

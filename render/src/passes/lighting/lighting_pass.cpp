@@ -8,6 +8,7 @@
 #include "ibl/environment_descriptors.h"
 #include "lights/gpu_light_types.h"
 #include "passes/lighting/lighting_bindings.h"
+#include "passes/shadows/shadow_pass.h"
 #include "shaders/lighting.comp.spv.h"
 
 namespace candela::render {
@@ -49,6 +50,7 @@ std::vector<std::string> LightingFeatures::names() const {
     }
     out.push_back(clustered ? "light_culling_clustered" : "light_culling_brute_force");
     if (countLightPairs) out.push_back("light_pair_counters");
+    if (shadows) out.push_back("shadows");
     if (ibl) out.push_back(std::string("ibl_") + iblModeName(*ibl));
     out.push_back(brdf == BrdfModel::Ue4 ? "brdf_ue4" : "brdf_energy_conserving");
     if (anisotropy) out.push_back("material_anisotropy");
@@ -69,6 +71,7 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
         }
     }
     constants.set(SPEC_CLUSTERED, features.clustered);
+    constants.set(SPEC_SHADOWS_ENABLED, features.shadows);
     constants.set(SPEC_ENERGY_CONSERVING, features.brdf == BrdfModel::EnergyConserving);
 }
 
@@ -133,6 +136,12 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
         {LIGHTING_BINDING_AMBIENT_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHTING_BINDING_SPECULAR_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_SHADOW_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_COMPUTE_BIT},
     };
     pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
@@ -202,6 +211,9 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_CLEAR_COAT, &images[6]),
         sampledImageWrite(LIGHTING_BINDING_AMBIENT_OCCLUSION, &occlusionInfo),
         sampledImageWrite(LIGHTING_BINDING_SPECULAR_OCCLUSION, &specularOcclusionInfo),
+        sampledImageWrite(LIGHTING_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
+        storageBufferWrite(LIGHTING_BINDING_SHADOW_VIEWS, &in.shadows->views),
+        storageBufferWrite(LIGHTING_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
     };
     Push push{toGpu(*in.grid),           in.directionalCount, in.skyIntensity,
               env.prefilteredMipCount,   in.referenceSamples, in.aoIntensity,

@@ -19,6 +19,7 @@ struct ClusterGrid;
 class GpuContext;
 struct EnvironmentDescriptors;
 struct GBufferTargets;
+struct ShadowDescriptors;
 
 // Which shading models and light shapes the shader variant contains.
 struct LightingFeatures {
@@ -31,6 +32,7 @@ struct LightingFeatures {
     uint32_t lightTypes = 0;
     bool clustered = true;
     bool countLightPairs = false;
+    bool shadows = false;  // a light casts this frame (common/shadows.glsl)
     std::optional<IblMode> ibl;  // none without an environment
     BrdfModel brdf = BrdfModel::EnergyConserving;
     bool anisotropy = false;  // a drawn opaque material has KHR_materials_anisotropy
@@ -85,6 +87,7 @@ public:
         std::optional<ImageRef> specularOcclusion;  // the reference mode's only
         float aoIntensity = 1.0f;
         bool aoMultiBounce = true;
+        const ShadowDescriptors* shadows = nullptr;  // the atlas and tables, or placeholders
     };
     void record(VkCommandBuffer cmd, const Inputs& inputs) const;
     static uint32_t workgroupCount(uint32_t width, uint32_t height);

@@ -17,6 +17,10 @@ struct Light {
     float sourceLength = 0.0f;          // metres; > 0 makes a tube along local +X (eq. 16-20)
     float innerConeAngle = 0.0f;        // radians, spot only
     float outerConeAngle = 0.7853982f;  // radians, spot only
+    // Renders a shadow map for this light. Scene files and glTF default it per type
+    // (LightTypeInfo::castsShadowsByDefault: directional yes, local lights no); code that builds
+    // a Light gets no shadows unless it asks.
+    bool castShadows = false;
 };
 
 }  // namespace candela::content

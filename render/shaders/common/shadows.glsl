@@ -1,0 +1,241 @@
+// Shadow sampling shared by the deferred lighting pass and the forward (blended) pass
+// (render/README.md "Shadows"). Every shadow map is a tile of one depth atlas; a light finds
+// its tiles through its entry in the per-light table, indexed like the light buffer, so
+// clustered and brute-force lighting read the same maps. The including shader defines
+// SHADOW_ATLAS_BINDING, SHADOW_VIEWS_BINDING and SHADOW_LIGHTS_BINDING first. The constants
+// come from render/src/passes/shadows/shadows_bindings.h (an include directory of the shaders).
+#ifndef CANDELA_SHADOWS_GLSL
+#define CANDELA_SHADOWS_GLSL
+
+#include "common/lights.glsl"
+#include "common/specialization_ids.h"
+#include "shadows_bindings.h"
+
+// Off in frames where no light casts: the calls below fold to 1 and the image is the
+// shadowless one bit for bit.
+layout(constant_id = SPEC_SHADOWS_ENABLED) const bool kShadowsEnabled = false;
+
+// One shadow view (render/src/passes/shadows/shadow_views.h, GpuShadowView).
+struct ShadowView {
+    mat4 worldToClip;
+    vec4 tile;    // x, y: first texel in the atlas; z: size in texels
+    vec4 params;  // x: texel size in metres (orthographic) or per metre of depth (perspective);
+                  // y: SHADOW_KIND_*; z: near; w: far (orthographic)
+    vec4 sphere;  // cascades: the bounding sphere (centre, radius) the cascade covers
+};
+
+layout(std430, binding = SHADOW_VIEWS_BINDING) readonly buffer ShadowViews {
+    ShadowView shadowViews[];
+};
+// Per light (light buffer index): first view and view count; SHADOW_NO_VIEW: no shadow.
+layout(std430, binding = SHADOW_LIGHTS_BINDING) readonly buffer ShadowLights {
+    uvec2 shadowLights[];
+};
+layout(binding = SHADOW_ATLAS_BINDING) uniform sampler2D shadowAtlas;
+
+// Bias (render/README.md "Shadows"), in shadow texels at the receiver: the receiver moves
+// along its normal by kShadowNormalOffset x sin(angle to the light) texels, and its depth
+// toward the light by kShadowDepthBias + kShadowSlopeBias x tan(angle to the light),
+// capped at kShadowMaxSlope.
+const float kShadowNormalOffset = 1.0;
+const float kShadowDepthBias = 0.5;
+const float kShadowSlopeBias = 1.5;
+const float kShadowMaxSlope = 10.0;
+// Cascades blend into the next over the outer 10% of their sphere.
+const float kCascadeBlendBand = 0.1;
+// Penumbra search and filter limits, in texels (half widths).
+const float kPenumbraMaxSearch = 16.0;
+const float kPenumbraMaxFilter = 24.0;
+
+// Light-space depth (metres along the view's axis) of a stored depth value.
+float shadowLinearDepth(ShadowView v, float stored) {
+    if (uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC) {
+        return v.params.w - stored * (v.params.w - v.params.z);
+    }
+    return v.params.z / max(stored, 1e-30);  // 0 (cleared): infinitely far
+}
+
+// Size of one texel, in metres, at light-space depth z.
+float shadowTexelWorld(ShadowView v, float z) {
+    return uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC ? v.params.x : v.params.x * z;
+}
+
+// The blocker depth at one atlas texel, clamped into the view's tile.
+float shadowBlockerDepth(ShadowView v, ivec2 texel) {
+    ivec2 first = ivec2(v.tile.xy);
+    texel = clamp(texel, first, first + ivec2(v.tile.z) - 1);
+    return shadowLinearDepth(v, texelFetch(shadowAtlas, texel, 0).r);
+}
+
+// Lit fraction at continuous atlas coordinate tc: the four nearest texels compared with the
+// receiver depth, bilinearly weighted (what a comparison sampler with linear filtering does).
+float shadowBilinearTap(ShadowView v, vec2 tc, float receiver) {
+    vec2 f = tc - 0.5;
+    ivec2 i = ivec2(floor(f));
+    vec2 w = f - floor(f);
+    vec4 lit = vec4(shadowBlockerDepth(v, i) >= receiver ? 1.0 : 0.0,
+                    shadowBlockerDepth(v, i + ivec2(1, 0)) >= receiver ? 1.0 : 0.0,
+                    shadowBlockerDepth(v, i + ivec2(0, 1)) >= receiver ? 1.0 : 0.0,
+                    shadowBlockerDepth(v, i + ivec2(1, 1)) >= receiver ? 1.0 : 0.0);
+    return mix(mix(lit.x, lit.y, w.x), mix(lit.z, lit.w, w.x), w.y);
+}
+
+// Box filter of half width `radius` texels: an n x n grid of bilinear taps.
+float shadowFilter(ShadowView v, vec2 tc, float receiver, float radius, int n) {
+    float sum = 0.0;
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            vec2 o = (vec2(x, y) + 0.5) / float(n) * 2.0 - 1.0;
+            sum += shadowBilinearTap(v, tc + o * radius, receiver);
+        }
+    }
+    return sum / float(n * n);
+}
+
+// Blocker search and penumbra (percentage-closer soft shadows): the average depth of the
+// blockers in front of the receiver gives the geometric penumbra width
+// w = size * (d_receiver - d_blocker) / d_blocker on the receiver, filtered over as many
+// texels. Returns the half width in texels, 0 when nothing blocks.
+float shadowPenumbraRadius(ShadowView v, vec2 tc, float receiver, float lightSize) {
+    float texel = shadowTexelWorld(v, receiver);
+    // Blockers up to a quarter of the way to the light are found.
+    float nearest = max(v.params.z, 0.25 * receiver);
+    float search = clamp(lightSize * (receiver - nearest) / (nearest * texel) * 0.5, 1.0,
+                         kPenumbraMaxSearch);
+    float sum = 0.0;
+    float count = 0.0;
+    const int n = 6;
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            vec2 o = (vec2(x, y) + 0.5) / float(n) * 2.0 - 1.0;
+            float blocker = shadowBlockerDepth(v, ivec2(floor(tc + o * search)));
+            if (blocker < receiver) {
+                sum += blocker;
+                count += 1.0;
+            }
+        }
+    }
+    if (count == 0.0) return 0.0;
+    float blocker = sum / count;
+    float width = lightSize * (receiver - blocker) / max(blocker, 1e-4);
+    return clamp(0.5 * width / texel, 1.0, kPenumbraMaxFilter);
+}
+
+// Lit fraction of one view at P (normal N, NoL toward the light); lightSize > 0 gives a
+// penumbra from the blocker search, 0 a 3x3 PCF.
+float sampleShadowView(ShadowView v, vec3 P, vec3 N, float NoL, float lightSize) {
+    vec4 plain = v.worldToClip * vec4(P, 1.0);
+    float depth = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
+                      ? v.params.w - plain.z * (v.params.w - v.params.z)
+                      : plain.w;
+    float texel = shadowTexelWorld(v, max(depth, 1e-4));
+    float sinL = sqrt(saturate(1.0 - NoL * NoL));
+    vec4 clip = v.worldToClip * vec4(P + N * (kShadowNormalOffset * texel * sinL), 1.0);
+    if (clip.w <= 0.0) return 1.0;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    float receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
+                         ? v.params.w - clip.z * (v.params.w - v.params.z)
+                         : clip.w;
+    float slope = min(sinL / max(NoL, 1e-3), kShadowMaxSlope);
+    receiver -= texel * (kShadowDepthBias + kShadowSlopeBias * slope);
+    vec2 tc = v.tile.xy + uv * v.tile.z;
+    if (lightSize > 0.0) {
+        float radius = shadowPenumbraRadius(v, tc, receiver, lightSize);
+        if (radius == 0.0) return 1.0;
+        return shadowFilter(v, tc, receiver, radius, 8);
+    }
+    return shadowFilter(v, tc, receiver, 1.0, 3);
+}
+
+// The view of a light's maps that holds P: its first cascade whose sphere holds P
+// (directional), the cube face P lies in (point), or its one view (spot). false: none.
+bool shadowViewAt(Light light, uint lightIndex, vec3 P, out ShadowView view) {
+    uvec2 entry = shadowLights[lightIndex];
+    if (entry.x == SHADOW_NO_VIEW) return false;
+    if (light.type == kLightDirectional) {
+        for (uint i = 0u; i < entry.y; ++i) {
+            view = shadowViews[entry.x + i];
+            if (length(P - view.sphere.xyz) < view.sphere.w) return true;
+        }
+        return false;
+    }
+    uint index = entry.x;
+    if (entry.y == SHADOW_CUBE_FACES) {
+        vec3 d = P - light.position;
+        vec3 a = abs(d);
+        index += a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u)
+                 : a.y >= a.z             ? (d.y >= 0.0 ? 2u : 3u)
+                                          : (d.z >= 0.0 ? 4u : 5u);
+    }
+    view = shadowViews[index];
+    return true;
+}
+
+// Subsurface thickness (seed 000 section 2.3, "samples the shadow map differently"): how far
+// the light travelled inside matter before reaching P, the depth of P behind the nearest
+// blocker in the light's map (metres, 0 when nothing is in front of P or the light has no map).
+// For a surface lit from behind, the blocker is the object's own lit side.
+float shadowThickness(Light light, uint lightIndex, vec3 P) {
+    if (!kShadowsEnabled) return 0.0;
+    ShadowView v;
+    if (!shadowViewAt(light, lightIndex, P, v)) return 0.0;
+    vec4 clip = v.worldToClip * vec4(P, 1.0);
+    if (clip.w <= 0.0) return 0.0;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
+    float receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
+                         ? v.params.w - clip.z * (v.params.w - v.params.z)
+                         : clip.w;
+    float blocker = shadowBlockerDepth(v, ivec2(floor(v.tile.xy + uv * v.tile.z)));
+    return max(receiver - blocker, 0.0);
+}
+
+// Light left after crossing the thickness above: exp(-thickness / kSubsurfaceMeanFreePath),
+// 1 without a map (thin panels keep most of it, a 20 cm wax sphere about 2%).
+const float kSubsurfaceMeanFreePath = 0.05;
+float subsurfaceTransmittance(Light light, uint lightIndex, vec3 P) {
+    float thickness = shadowThickness(light, lightIndex, P);
+    return thickness > 0.0 ? exp(-thickness / kSubsurfaceMeanFreePath) : 1.0;
+}
+
+// The light's visibility at P in [0, 1]: its cascades (directional), cube face (point) or
+// single view (spot). N is the surface normal. 1 when the light has no shadow.
+float shadowVisibility(Light light, uint lightIndex, vec3 P, vec3 N) {
+    if (!kShadowsEnabled) return 1.0;
+    uvec2 entry = shadowLights[lightIndex];
+    if (entry.x == SHADOW_NO_VIEW) return 1.0;
+    bool directional = light.type == kLightDirectional;
+    vec3 L = directional ? -light.direction : safeNormalize(light.position - P);
+    float NoL = dot(N, L);
+    if (NoL <= 0.0) return 1.0;  // facing away: the light adds nothing there anyway
+    // Sphere lights soften by their radius, tubes by their length.
+    float lightSize = directional ? 0.0 : max(2.0 * light.sourceRadius, light.sourceLength);
+    if (directional) {
+        for (uint i = 0u; i < entry.y; ++i) {
+            ShadowView v = shadowViews[entry.x + i];
+            float d = length(P - v.sphere.xyz);
+            if (d >= v.sphere.w) continue;
+            float visibility = sampleShadowView(v, P, N, NoL, 0.0);
+            float t = (v.sphere.w - d) / (v.sphere.w * kCascadeBlendBand);
+            if (t < 1.0 && i + 1u < entry.y) {
+                float next = sampleShadowView(shadowViews[entry.x + i + 1u], P, N, NoL, 0.0);
+                visibility = mix(next, visibility, t);
+            }
+            return visibility;
+        }
+        return 1.0;  // beyond the last cascade
+    }
+    uint view = entry.x;
+    if (entry.y == SHADOW_CUBE_FACES) {
+        vec3 d = P - light.position;
+        vec3 a = abs(d);
+        uint face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u)
+                    : a.y >= a.z             ? (d.y >= 0.0 ? 2u : 3u)
+                                             : (d.z >= 0.0 ? 4u : 5u);
+        view += face;
+    }
+    return sampleShadowView(shadowViews[view], P, N, NoL, lightSize);
+}
+
+#endif

@@ -1,0 +1,357 @@
+#include "passes/shadows/shadow_pass.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#include "candela/render/gpu_context.h"
+#include "candela/render/scene_resources.h"
+#include "clustered/cluster_light_lists.h"
+#include "ibl/environment_cache.h"
+#include "lights/gpu_light_types.h"
+#include "mesh_vertex.h"
+#include "passes/shadows/cascades.h"
+#include "passes/shadows/shadow_atlas.h"
+#include "passes/shadows/shadows_bindings.h"
+#include "shaders/shadow_depth.frag.spv.h"
+#include "shaders/shadow_depth.vert.spv.h"
+
+namespace candela::render {
+
+namespace {
+
+constexpr VkFormat kAtlasFormat = VK_FORMAT_D32_SFLOAT;
+constexpr VkImageLayout kRead = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+// Local maps: near plane (metres).
+constexpr float kLocalNear = 0.05f;
+// Cube faces and spot views reach a little past their edge, so the 3x3 filter at a face's
+// border reads texels of that face.
+constexpr float kBorderTexels = 2.0f;
+
+// A draw's world-space box (centre, half extent) from its mesh's box.
+struct CasterBounds {
+    glm::vec3 centre;
+    glm::vec3 extent;
+    float radius;
+};
+
+CasterBounds boundsOf(const DrawItem& draw, const GpuMesh& mesh) {
+    CasterBounds b;
+    b.centre = glm::vec3(draw.world * glm::vec4(mesh.boundsCenter, 1.0f));
+    const glm::mat3 m(draw.world);
+    b.extent = glm::abs(m[0]) * mesh.boundsExtent.x + glm::abs(m[1]) * mesh.boundsExtent.y +
+               glm::abs(m[2]) * mesh.boundsExtent.z;
+    b.radius = glm::length(b.extent);
+    return b;
+}
+
+// The 6 cube faces: forward and up of each, major-axis order +X, -X, +Y, -Y, +Z, -Z.
+const glm::vec3 kFaceForward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+const glm::vec3 kFaceUp[6] = {{0, 1, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, 1}, {0, 1, 0}, {0, 1, 0}};
+
+// Reverse-Z, infinite far: clip = (right.d / t, up.d / t, near, forward.d), d = P - origin.
+glm::mat4 perspectiveView(const glm::vec3& origin, const glm::vec3& forward, const glm::vec3& up,
+                          float tanHalf) {
+    const glm::vec3 f = glm::normalize(forward);
+    const glm::vec3 r = glm::normalize(glm::cross(up, f));
+    const glm::vec3 u = glm::cross(f, r);
+    glm::mat4 m(0.0f);
+    for (int i = 0; i < 3; ++i) {
+        m[i][0] = r[i] / tanHalf;
+        m[i][1] = u[i] / tanHalf;
+        m[i][3] = f[i];
+    }
+    m[3][0] = -glm::dot(r, origin) / tanHalf;
+    m[3][1] = -glm::dot(u, origin) / tanHalf;
+    m[3][2] = kLocalNear;
+    m[3][3] = -glm::dot(f, origin);
+    return m;
+}
+
+glm::vec3 anyPerpendicular(const glm::vec3& v) {
+    return std::abs(v.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+}
+
+uint32_t powerOfTwoAtLeast(float v) {
+    return std::bit_ceil(uint32_t(std::clamp(v, 1.0f, 65536.0f)));
+}
+
+}  // namespace
+
+ShadowPass::ShadowPass(GpuContext& context)
+    : context_(context),
+      pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}),
+      placeholderAtlas_(context, {kAtlasFormat, 1, 1, 1, false,
+                                  VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
+      placeholderBuffer_(context, 112,
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                         MemoryLocation::Device) {
+    GraphicsPipelineDesc desc;
+    desc.vertexSpirv = shadow_depth_vert_spv;
+    desc.fragmentSpirv = shadow_depth_frag_spv;
+    desc.vertexBindings = {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)}};
+    desc.depthFormat = kAtlasFormat;
+    desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse depth, as the camera's
+    desc.depthWrite = true;
+    desc.cullMode = VK_CULL_MODE_NONE;  // single-sided glTF surfaces cast from both sides
+    pipeline_ = Pipeline::graphics(context, desc, {}, sizeof(glm::mat4));
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+        // Cleared, not left undefined: the variant without shadows still binds it.
+        transitionImage(cmd, placeholderAtlas_, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+                        VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        const VkClearDepthStencilValue zero{};
+        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+        vkCmdClearDepthStencilImage(cmd, placeholderAtlas_.handle(),
+                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &all);
+        transitionImage(
+            cmd, placeholderAtlas_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kRead,
+            VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_READ_BIT);
+        vkCmdFillBuffer(cmd, placeholderBuffer_.handle(), 0, VK_WHOLE_SIZE, 0);
+    });
+}
+
+ShadowPass::~ShadowPass() = default;
+
+void ShadowPass::ensureAtlas(uint32_t size) {
+    if (atlas_.handle() && atlas_.desc().width == size) return;
+    atlas_ = GpuImage(context_,
+                      {kAtlasFormat, size, size, 1, false,
+                       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
+    atlasHoldsMaps_ = false;
+    previousKeys_.clear();
+}
+
+bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resources,
+                         const RendererOptions& options, uint32_t width, uint32_t height) {
+    planned_.clear();
+    lightPlans_.clear();
+    stats_ = {};
+    rendersThisFrame_ = false;
+    if (!options.shadows) return false;
+
+    // Casters: every drawn opaque or masked surface (blended ones let light through).
+    std::vector<CasterBounds> bounds(scene.draws.size());
+    std::vector<uint32_t> casters;
+    for (uint32_t d = 0; d < scene.draws.size(); ++d) {
+        const DrawItem& draw = scene.draws[d];
+        const GpuMesh& mesh = resources.mesh(draw.mesh);
+        if (mesh.indexCount == 0) continue;
+        if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
+        bounds[d] = boundsOf(draw, mesh);
+        casters.push_back(d);
+    }
+
+    struct Request {
+        uint32_t light;
+        uint32_t views;
+        bool cascade;
+    };
+    std::vector<Request> requests;
+    std::vector<ShadowTileRequest> tiles;
+    const CameraView& camera = scene.camera;
+    const float projectionScale = std::abs(camera.projection[1][1]);  // 1 / tan(fov / 2)
+    const uint32_t cascades = std::clamp(options.shadowCascades, 1u, SHADOW_MAX_CASCADES);
+    for (uint32_t i = 0; i < scene.lights.size(); ++i) {
+        const content::Light& l = scene.lights[i].light;
+        if (!l.castShadows) continue;
+        if (inEveryCluster(l)) {
+            requests.push_back({i, cascades, true});
+            ShadowTileRequest r;
+            r.tiles = cascades;
+            r.size = powerOfTwoAtLeast(float(options.shadowCascadeSize));
+            r.shrinkable = false;
+            tiles.push_back(r);
+            continue;
+        }
+        // Projected size: the falloff sphere's diameter in pixels; importance: its intensity.
+        const float reach = std::max(l.attenuationRadius, 1e-3f) + 0.5f * l.sourceLength;
+        const float distance = glm::length(scene.lights[i].position - camera.position);
+        const float pixels = distance > reach * 1.05f
+                                 ? 0.5f * float(height) * projectionScale * reach /
+                                       std::sqrt(distance * distance - reach * reach)
+                                 : 0.5f * float(std::max(width, height)) * projectionScale;
+        ShadowTileRequest r;
+        r.tiles = l.type == content::LightType::Spot ? 1u : SHADOW_CUBE_FACES;
+        r.size = std::min(powerOfTwoAtLeast(2.0f * pixels),
+                          powerOfTwoAtLeast(float(options.shadowMaxTileSize)));
+        r.size = std::max(r.size, 16u);
+        r.priority = pixels * std::sqrt(std::max(l.lumens, 0.0f) + 1.0f);
+        requests.push_back({i, r.tiles, false});
+        tiles.push_back(r);
+    }
+    if (requests.empty()) return false;
+
+    // The smallest power-of-two atlas (up to the option's) that holds every map at full size.
+    uint64_t wanted = 0;
+    for (const ShadowTileRequest& r : tiles)
+        wanted += uint64_t(r.size) * r.size * r.tiles;
+    uint32_t atlasSize = 256;
+    while (atlasSize < options.shadowAtlasSize && uint64_t(atlasSize) * atlasSize < wanted)
+        atlasSize *= 2;
+    ensureAtlas(atlasSize);
+    const ShadowAtlasPlan plan = planShadowAtlas(tiles, atlasSize);
+    stats_.atlasUsed = double(plan.usedTexels) / (double(atlasSize) * atlasSize);
+
+    std::vector<glm::uvec2> lightTable(std::max<size_t>(scene.lights.size(), 1),
+                                       glm::uvec2(SHADOW_NO_VIEW, 0));
+    previousKeys_.resize(scene.lights.size(), 0);
+    for (size_t q = 0; q < requests.size(); ++q) {
+        const Request& request = requests[q];
+        const LightInstance& instance = scene.lights[request.light];
+        const content::Light& l = instance.light;
+        if (plan.tiles[q].size() != request.views) continue;  // never: the atlas floor is 8 px
+        LightPlan lp{request.light, uint32_t(planned_.size()), request.views, true};
+        // What the maps are rendered from: views (light placement, tiles) and casters.
+        uint64_t key = kFnv1aOffset;
+        for (uint32_t v = 0; v < request.views; ++v) {
+            const ShadowTile& tile = plan.tiles[q][v];
+            PlannedView pv;
+            pv.gpu = {glm::mat4(1.0f), glm::vec4(0.0f), glm::vec4(0.0f), glm::vec4(0.0f)};
+            pv.light = request.light;
+            pv.gpu.tile = glm::vec4(float(tile.x), float(tile.y), float(tile.size), 0.0f);
+            if (request.cascade) {
+                const glm::vec3 direction = glm::normalize(instance.direction);
+                float casterNear = 0.0f;
+                for (uint32_t d : casters) {
+                    casterNear = std::min(casterNear,
+                                          glm::dot(bounds[d].centre, direction) - bounds[d].radius);
+                }
+                const float farDistance = std::min(options.shadowDistance, camera.farPlane);
+                const std::vector<float> splits = practicalSplits(
+                    camera.nearPlane, farDistance, request.views, kPracticalSplitLambda);
+                const CascadeView c =
+                    fitCascade(camera, splits[v], splits[v + 1], direction, tile.size, casterNear);
+                pv.gpu.worldToClip = c.worldToClip;
+                pv.gpu.params = glm::vec4(c.texelWorld, float(SHADOW_KIND_ORTHOGRAPHIC),
+                                          c.nearDepth, c.farDepth);
+                pv.gpu.sphere = c.sphere;
+                const glm::mat3 basis = lightBasis(direction);
+                const glm::vec3 centre = glm::transpose(basis) * glm::vec3(c.sphere);
+                for (uint32_t d : casters) {
+                    const glm::vec3 p = glm::transpose(basis) * bounds[d].centre;
+                    const float reach = c.sphere.w + bounds[d].radius + c.texelWorld;
+                    if (std::abs(p.x - centre.x) <= reach && std::abs(p.y - centre.y) <= reach &&
+                        p.z - bounds[d].radius <= c.farDepth) {
+                        pv.casters.push_back(d);
+                    }
+                }
+            } else {
+                const bool spot = l.type == content::LightType::Spot;
+                const float border = 1.0f + 2.0f * kBorderTexels / float(tile.size);
+                const float tanHalf =
+                    spot ? std::tan(std::min(std::clamp(l.outerConeAngle, 0.01f, 1.5f), 1.3f)) *
+                               border
+                         : border;
+                const glm::vec3 forward =
+                    spot ? glm::normalize(instance.direction) : kFaceForward[v];
+                const glm::vec3 up = spot ? anyPerpendicular(forward) : kFaceUp[v];
+                pv.gpu.worldToClip = perspectiveView(instance.position, forward, up, tanHalf);
+                pv.gpu.params = glm::vec4(2.0f * tanHalf / float(tile.size),
+                                          float(SHADOW_KIND_PERSPECTIVE), kLocalNear, 0.0f);
+                const float reach = std::max(l.attenuationRadius, 0.0f) + 0.5f * l.sourceLength;
+                for (uint32_t d : casters) {
+                    const CasterBounds& b = bounds[d];
+                    if (glm::length(b.centre - instance.position) > reach + b.radius) continue;
+                    // The light's own fixture (a bulb or tube mesh around it) casts nothing.
+                    if (glm::all(glm::lessThanEqual(glm::abs(instance.position - b.centre),
+                                                    b.extent + 1e-4f))) {
+                        continue;
+                    }
+                    pv.casters.push_back(d);
+                }
+            }
+            key = fnv1a64(&pv.gpu, sizeof(pv.gpu), key);
+            for (uint32_t d : pv.casters) {
+                key = fnv1a64(&scene.draws[d], sizeof(DrawItem), key);
+            }
+            planned_.push_back(std::move(pv));
+        }
+        lp.render = !options.shadowCache || !atlasHoldsMaps_ || previousKeys_[request.light] != key;
+        previousKeys_[request.light] = key;
+        lightTable[request.light] = glm::uvec2(lp.firstView, lp.viewCount);
+        rendersThisFrame_ |= lp.render;
+        ++stats_.shadowedLights;
+        (lp.render ? stats_.mapsRendered : stats_.mapsCached) += 1;
+        lightPlans_.push_back(lp);
+    }
+
+    ensureHostBuffer(context_, views_, planned_.size() * sizeof(GpuShadowView));
+    auto* out = static_cast<GpuShadowView*>(views_.mapped());
+    for (size_t v = 0; v < planned_.size(); ++v)
+        out[v] = planned_[v].gpu;
+    ensureHostBuffer(context_, lightTable_, lightTable.size() * sizeof(glm::uvec2));
+    std::memcpy(lightTable_.mapped(), lightTable.data(), lightTable.size() * sizeof(glm::uvec2));
+    return true;
+}
+
+void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
+                        const SceneResources& resources) {
+    const uint32_t size = atlas_.desc().width;
+    const bool clearAll = !atlasHoldsMaps_;
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = atlas_.view();
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = clearAll ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {0.0f, 0};  // reverse depth: 0 is nothing in the way
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {size, size}};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    pipeline_.bind(cmd);
+    for (const LightPlan& lp : lightPlans_) {
+        if (!lp.render) continue;
+        for (uint32_t v = lp.firstView; v < lp.firstView + lp.viewCount; ++v) {
+            const PlannedView& pv = planned_[v];
+            const VkRect2D rect{{int32_t(pv.gpu.tile.x), int32_t(pv.gpu.tile.y)},
+                                {uint32_t(pv.gpu.tile.z), uint32_t(pv.gpu.tile.z)}};
+            if (!clearAll) {
+                VkClearAttachment clear{VK_IMAGE_ASPECT_DEPTH_BIT, 0, {}};
+                clear.clearValue.depthStencil = {0.0f, 0};
+                const VkClearRect clearRect{rect, 0, 1};
+                vkCmdClearAttachments(cmd, 1, &clear, 1, &clearRect);
+            }
+            const VkViewport viewport{float(rect.offset.x),
+                                      float(rect.offset.y),
+                                      float(rect.extent.width),
+                                      float(rect.extent.height),
+                                      0.0f,
+                                      1.0f};
+            vkCmdSetViewport(cmd, 0, 1, &viewport);
+            vkCmdSetScissor(cmd, 0, 1, &rect);
+            for (uint32_t d : pv.casters) {
+                const DrawItem& draw = scene.draws[d];
+                const GpuMesh& mesh = resources.mesh(draw.mesh);
+                const glm::mat4 worldToClip = pv.gpu.worldToClip * draw.world;
+                pipeline_.pushConstants(cmd, &worldToClip, sizeof(worldToClip));
+                const VkDeviceSize offset = 0;
+                const VkBuffer vertexBuffer = mesh.vertices.handle();
+                vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+                vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+                vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+            }
+        }
+    }
+    vkCmdEndRendering(cmd);
+    atlasHoldsMaps_ = true;
+}
+
+ShadowDescriptors ShadowPass::descriptors(bool enabled) const {
+    if (!enabled) {
+        return {{pointSampler_.handle(), placeholderAtlas_.view(), kRead},
+                {placeholderBuffer_.handle(), 0, VK_WHOLE_SIZE},
+                {placeholderBuffer_.handle(), 0, VK_WHOLE_SIZE}};
+    }
+    return {{pointSampler_.handle(), atlas_.view(), kRead},
+            {views_.handle(), 0, VK_WHOLE_SIZE},
+            {lightTable_.handle(), 0, VK_WHOLE_SIZE}};
+}
+
+}  // namespace candela::render

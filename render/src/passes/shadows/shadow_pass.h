@@ -1,0 +1,102 @@
+#pragma once
+// Shadow maps for every light that casts (render/README.md "Shadows"): plans each frame's
+// views (four cascades per directional light, one view per spot, six cube faces per point,
+// sphere or tube light), packs them as tiles of one depth atlas sized by each light's
+// projected size and importance, renders the tiles whose light or casters changed (the rest
+// are cached from earlier frames) and gives the lighting and forward passes what they read:
+// the atlas, the views and a per-light table indexed like the light buffer.
+#include <glm/glm.hpp>
+#include <memory>
+#include <vector>
+
+#include "candela/render/frame_scene.h"
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/gpu_image.h"
+#include "candela/render/pipeline.h"
+#include "candela/render/renderer_options.h"
+#include "vk/sampler.h"
+
+namespace candela::render {
+
+class GpuContext;
+class SceneResources;
+
+// std430 record of one view (ShadowView in common/shadows.glsl).
+struct GpuShadowView {
+    glm::mat4 worldToClip;
+    glm::vec4 tile;    // first texel x, y in the atlas; size in texels; 0
+    glm::vec4 params;  // texel metres (per metre of depth: perspective); SHADOW_KIND_*; near; far
+    glm::vec4 sphere;  // cascades: centre and radius of what they cover
+};
+static_assert(sizeof(GpuShadowView) == 112, "std430 layout of ShadowView");
+
+// What the shading passes bind (placeholders when no light casts).
+struct ShadowDescriptors {
+    VkDescriptorImageInfo atlas;
+    VkDescriptorBufferInfo views;
+    VkDescriptorBufferInfo lights;
+};
+
+struct ShadowFrameStats {
+    uint32_t shadowedLights = 0;
+    uint32_t mapsRendered = 0;  // lights whose maps were rendered this frame
+    uint32_t mapsCached = 0;    // lights whose maps were kept from an earlier frame
+    double atlasUsed = 0.0;     // share of the atlas's texels in tiles
+};
+
+class ShadowPass {
+public:
+    explicit ShadowPass(GpuContext& context);
+    ~ShadowPass();
+    ShadowPass(const ShadowPass&) = delete;
+    ShadowPass& operator=(const ShadowPass&) = delete;
+
+    // Plans the frame's maps and writes the view and per-light tables; false when no light
+    // casts (the shading variant without shadows, nothing else to declare).
+    bool prepare(const FrameScene& scene, const SceneResources& resources,
+                 const RendererOptions& options, uint32_t width, uint32_t height);
+    // Some tile needs rendering this frame (else the pass is not declared).
+    bool rendersThisFrame() const { return rendersThisFrame_; }
+    // Frame graph use: the atlas DepthWrite.
+    void record(VkCommandBuffer cmd, const FrameScene& scene, const SceneResources& resources);
+
+    const GpuImage& atlas() const { return atlas_; }
+    const GpuBuffer& viewBuffer() const { return views_; }
+    const GpuBuffer& lightBuffer() const { return lightTable_; }
+    // The atlas holds maps from an earlier frame (its import keeps them).
+    bool atlasHoldsMaps() const { return atlasHoldsMaps_; }
+    ShadowDescriptors descriptors(bool enabled) const;
+    const ShadowFrameStats& stats() const { return stats_; }
+
+private:
+    struct PlannedView {
+        GpuShadowView gpu;
+        uint32_t light;
+        std::vector<uint32_t> casters;  // draw indices
+    };
+    struct LightPlan {
+        uint32_t light;
+        uint32_t firstView;
+        uint32_t viewCount;
+        bool render;
+    };
+
+    void ensureAtlas(uint32_t size);
+
+    GpuContext& context_;
+    Pipeline pipeline_;
+    Sampler pointSampler_;
+    GpuImage atlas_;
+    GpuImage placeholderAtlas_;
+    GpuBuffer placeholderBuffer_;
+    GpuBuffer views_;
+    GpuBuffer lightTable_;
+    bool atlasHoldsMaps_ = false;
+    bool rendersThisFrame_ = false;
+    std::vector<PlannedView> planned_;
+    std::vector<LightPlan> lightPlans_;
+    std::vector<uint64_t> previousKeys_;  // per light slot: what its maps were rendered from
+    ShadowFrameStats stats_;
+};
+
+}  // namespace candela::render
