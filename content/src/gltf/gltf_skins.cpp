@@ -13,7 +13,7 @@ namespace {
 constexpr Matrix4 kIdentity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
 bool convertSkin(Context& context, const tinygltf::Skin& from, const std::string& element,
-                 Skin& skin) {
+                 SkinData& skin) {
     skin.name = from.name;
     if (from.joints.empty()) {
         context.error(element, "has no joints; skin dropped");

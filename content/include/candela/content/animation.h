@@ -13,7 +13,7 @@ namespace candela::content {
 // Column-major 4x4, as glTF stores matrices (the layout of ecs::Mat4).
 using Matrix4 = std::array<float, 16>;
 
-struct Skin {
+struct SkinData {
     std::string name;
     std::vector<std::int32_t> joints;          // node indices; joint i is JOINTS_n value i
     std::vector<Matrix4> inverseBindMatrices;  // one per joint (identity when the file has none)

@@ -105,7 +105,7 @@ struct Model {
     std::vector<Rgba8Image> images;
     std::vector<NamedCamera> cameras;
     std::vector<NamedLight> lights;
-    std::vector<Skin> skins;
+    std::vector<SkinData> skins;
     std::vector<AnimationClip> animations;  // clips that failed validation are left out
 };
 
