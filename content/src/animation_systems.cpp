@@ -135,6 +135,13 @@ void advancePlayer(ecs::Registry& registry, AnimationPlayer& player, float delta
         player.time = clipTime(player.time, model.animations[player.clip].duration, true);
     }
 
+    if (s.applied && player.nextClip < 0 && s.appliedClip == player.clip &&
+        s.appliedTime == player.time) {
+        return;  // paused (or speed 0) and not scrubbed: the entities already hold this pose
+    }
+    s.applied = player.nextClip < 0;  // a crossfade always rewrites (its weight moves)
+    s.appliedClip = player.clip;
+    s.appliedTime = player.time;
     std::fill(s.touched.begin(), s.touched.end(), std::uint8_t{0});
     resetToRest(model, s, s.pose, s.weights);
     sampleClip(model, player.clip, player.time, player.loop, s, s.pose, s.weights);
@@ -205,6 +212,21 @@ ecs::Mat4 affineInverse(const ecs::Mat4& m) {
 void updateSkin(ecs::Registry& registry, ecs::Entity entity, Skin& skin) {
     if (skin.model == nullptr || skin.skin < 0) return;
     const SkinData& data = skin.model->skins[static_cast<std::size_t>(skin.skin)];
+    ecs::Tick newest = registry.changeTick<ecs::WorldTransform>(entity);
+    for (ecs::Entity joint : skin.joints) {
+        if (joint != ecs::kNullEntity)
+            newest = std::max(newest, registry.changeTick<ecs::WorldTransform>(joint));
+    }
+    if (skin.builtFrom != ecs::kNeverTick && newest == skin.builtFrom &&
+        skin.jointMatrices.size() == data.joints.size()) {
+        if (!skin.previousIsCurrent) {  // still now: last frame's matrices equal this frame's
+            skin.previousJointMatrices = skin.jointMatrices;
+            skin.previousIsCurrent = true;
+        }
+        return;
+    }
+    skin.builtFrom = newest;
+    skin.previousIsCurrent = false;
     const auto* meshWorld = registry.tryGet<ecs::WorldTransform>(entity);
     const ecs::Mat4 toMesh = meshWorld ? affineInverse(meshWorld->matrix) : ecs::Mat4::identity();
     if (skin.jointMatrices.size() != data.joints.size())

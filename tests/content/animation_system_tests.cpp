@@ -206,6 +206,39 @@ TEST(AnimationSystems, MorphWeightsFollowTheFilesKeys) {
     }
 }
 
+// A paused player writes nothing and its skin is not rebuilt; the previous-frame matrices
+// catch up with the current ones (no motion). Scrubbing the time applies the new pose.
+TEST(AnimationSystems, PausedPlayerAndStillSkinCostNothing) {
+    const Model fox = loadModel("Fox");
+    World world(fox);
+    AnimationPlayer& player = world.player();
+    player.play(player.findClip("Run"));
+    world.frame(0.1f);
+    world.frame(0.1f);
+    player.playing = false;
+    world.frame(0.1f);
+    const ecs::Tick localTick = world.registry.changeTick<ecs::LocalTransform>(
+        player.nodeEntities[static_cast<std::size_t>(fox.skins[0].joints[3])]);
+    Skin* skin = nullptr;
+    world.registry.view<Skin>().each([&](ecs::Entity, Skin& s) { skin = &s; });
+    ASSERT_NE(skin, nullptr);
+    const ecs::Tick built = skin->builtFrom;
+    world.frame(0.1f);
+    world.frame(0.1f);
+    EXPECT_FLOAT_EQ(player.time, 0.2f);
+    EXPECT_EQ(world.registry.changeTick<ecs::LocalTransform>(
+                  player.nodeEntities[static_cast<std::size_t>(fox.skins[0].joints[3])]),
+              localTick)
+        << "a paused player rewrote its pose";
+    EXPECT_EQ(skin->builtFrom, built) << "a still skin was rebuilt";
+    EXPECT_TRUE(skin->previousIsCurrent);
+    for (std::size_t j = 0; j < skin->jointMatrices.size(); ++j)
+        EXPECT_EQ(skin->jointMatrices[j], skin->previousJointMatrices[j]);
+    player.time = 0.35f;  // scrub
+    world.frame(0.1f);
+    EXPECT_NE(skin->builtFrom, built);
+}
+
 TEST(AnimationSystems, WarmFramesAllocateNothing) {
     const Model fox = loadModel("Fox");
     World world(fox);

@@ -53,9 +53,8 @@ void setMeshVertexInput(GraphicsPipelineDesc& desc) {
     };
 }
 
-void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh) {
+void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, VkBuffer vertexBuffer) {
     VkDeviceSize offset = 0;
-    VkBuffer vertexBuffer = mesh.vertices.handle();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
@@ -216,7 +215,7 @@ void ForwardTransparentPass::recordMarkOccupancy(VkCommandBuffer cmd, SceneResou
         push.world = draw.world;
         push.material = draw.material;
         occupancy_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources.mesh(draw.mesh));
+        drawMesh(cmd, resources.mesh(draw.mesh), resources.vertexBufferOf(draw));
     }
     vkCmdEndRendering(cmd);
 }
@@ -302,7 +301,7 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
         push.world = draw.world;
         push.material = draw.material;
         shading_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources.mesh(draw.mesh));
+        drawMesh(cmd, resources.mesh(draw.mesh), resources.vertexBufferOf(draw));
     }
     vkCmdEndRendering(cmd);
 }

@@ -113,7 +113,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
         DrawPush push{draw.world, draw.material};
         pipeline_.pushConstants(cmd, &push, sizeof(push));
         VkDeviceSize offset = 0;
-        VkBuffer vertexBuffer = mesh.vertices.handle();
+        VkBuffer vertexBuffer = resources.vertexBufferOf(draw);
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);

@@ -8,10 +8,12 @@
 // The systems that update them are in animation_systems.h.
 #include <array>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "candela/ecs/entity.h"
+#include "candela/ecs/tick.h"
 #include "candela/ecs/transform.h"
 
 namespace candela::content {
@@ -40,6 +42,9 @@ struct AnimationPlayer {
     void crossfade(std::int32_t clipIndex, float seconds);
     // Index of the clip named `name`, or -1.
     std::int32_t findClip(std::string_view name) const;
+    // Plays the clip named `nameOrIndex` (a name first, else a decimal index), looping;
+    // returns an empty string, or the problem listing the clips there are.
+    std::string playByNameOrIndex(const std::string& nameOrIndex);
     // How far the crossfade has gone, 0 (all `clip`) to 1 (all nextClip).
     float fadeWeight() const;
 
@@ -51,6 +56,11 @@ struct AnimationPlayer {
         std::vector<float> blendWeights;             // clip B
         std::vector<std::uint32_t> weightOffset;     // node -> first slot in weights
         std::vector<std::uint8_t> touched;           // node animated by A (1), B (2)
+        // The pose last written: a paused player whose clip and time did not change writes
+        // nothing (and so its skeleton's skins are not rebuilt).
+        bool applied = false;
+        std::int32_t appliedClip = -1;
+        float appliedTime = 0;
     } scratch;
 };
 
@@ -71,6 +81,10 @@ struct Skin {
     // The deformed mesh's bounds in mesh space (what culling and clusters use).
     ecs::Vec3 boundsMin{}, boundsMax{};
     bool boundsValid = false;
+    // The newest WorldTransform change (mesh or joints) the matrices were built from: a skin
+    // whose skeleton did not move is skipped (a still character costs a few tick reads).
+    ecs::Tick builtFrom = ecs::kNeverTick;
+    bool previousIsCurrent = false;
 };
 
 struct MorphWeights {
