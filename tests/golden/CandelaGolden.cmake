@@ -2,7 +2,7 @@
 # with stored images by candela-golden (README.md "Golden tests" has the metric).
 #
 #   candela_add_golden_test(NAME lobby SCENE scenes/lobby.scene.json SIZE 256x256 FRAMES 3
-#                           [EXPECTED_DIR goldens] [ENGINE my-game])
+#                           [EXPECTED_DIR goldens] [ENGINE my-game] [ARGS "--step 0.25"])
 #
 # registers the ctest `golden.lobby` (label `golden`, validation required). It renders frame 3
 # (the engine renders FRAMES frames and captures the last) into <build>/golden/lobby/ as
@@ -10,12 +10,13 @@
 # EXPECTED_DIR/lobby.exr and .png. SCENE is a built-in scene (builtin:...) or a path relative
 # to the calling CMakeLists.txt; EXPECTED_DIR defaults to ./expected next to it. ENGINE is a
 # target or executable that takes `candela run`'s arguments (default: the candela target).
+# ARGS: more `candela run` flags, one string split like a shell line (e.g. an animation clip).
 # Expected images are only ever written by `scripts/update-goldens lobby`.
 #
 #   candela_add_golden_tests_from_json(FILE goldens.json BASE_DIR <dir> [EXPECTED_DIR dir])
 #
 # does the same for each entry of a JSON list, {"name", "scene", "size", "frames"} and an
-# optional "expected_dir", with paths relative to BASE_DIR; CMake variables in them expand
+# optional "expected_dir" and "args", with paths relative to BASE_DIR; CMake variables in them expand
 # ("${CANDELA_SHARED_ASSETS}/models/Box/Box.glb"). The file is re-read when it changes.
 include_guard(GLOBAL)
 
@@ -34,8 +35,8 @@ endfunction()
 # Writes the file run_golden.cmake reads: everything one golden needs, executables resolved
 # at generate time. Used by candela_add_golden_test and by the harness's own tests.
 function(candela_golden_write_config config)
-  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;OUTPUT_DIR;ENGINE"
-                        "")
+  cmake_parse_arguments(PARSE_ARGV 1 ARG ""
+                        "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;OUTPUT_DIR;ENGINE;ARGS" "")
   if(TARGET "${ARG_ENGINE}")
     set(engine "$<TARGET_FILE:${ARG_ENGINE}>")
   else()
@@ -46,6 +47,7 @@ set(GOLDEN_NAME [==[${ARG_NAME}]==])
 set(GOLDEN_SCENE [==[${ARG_SCENE}]==])
 set(GOLDEN_SIZE [==[${ARG_SIZE}]==])
 set(GOLDEN_FRAMES [==[${ARG_FRAMES}]==])
+set(GOLDEN_ARGS [==[${ARG_ARGS}]==])
 set(GOLDEN_EXPECTED_DIR [==[${ARG_EXPECTED_DIR}]==])
 set(GOLDEN_OUTPUT_DIR [==[${ARG_OUTPUT_DIR}]==])
 set(GOLDEN_ENGINE [==[${engine}]==])
@@ -54,7 +56,7 @@ set(GOLDEN_TOOL [==[$<TARGET_FILE:candela-golden>]==])
 endfunction()
 
 function(candela_add_golden_test)
-  cmake_parse_arguments(PARSE_ARGV 0 ARG "" "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;ENGINE" "")
+  cmake_parse_arguments(PARSE_ARGV 0 ARG "" "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;ENGINE;ARGS" "")
   set(where "candela_add_golden_test(${ARG_NAME})")
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "${where}: unexpected arguments: ${ARG_UNPARSED_ARGUMENTS}")
@@ -94,7 +96,8 @@ function(candela_add_golden_test)
   set(config "${output_dir}/golden.cmake")
   candela_golden_write_config("${config}" NAME "${ARG_NAME}" SCENE "${scene}" SIZE "${ARG_SIZE}"
                               FRAMES "${ARG_FRAMES}" EXPECTED_DIR "${expected_dir}"
-                              OUTPUT_DIR "${output_dir}" ENGINE "${ARG_ENGINE}")
+                              OUTPUT_DIR "${output_dir}" ENGINE "${ARG_ENGINE}"
+                              ARGS "${ARG_ARGS}")
   add_test(NAME golden.${ARG_NAME}
            COMMAND ${CMAKE_COMMAND} -DGOLDEN_CONFIG=${config}
                    -P ${CANDELA_GOLDEN_MODULE_DIR}/run_golden.cmake)
@@ -126,6 +129,10 @@ function(candela_add_golden_tests_from_json)
     if(error)
       set(expected_dir "${ARG_EXPECTED_DIR}")
     endif()
+    string(JSON args ERROR_VARIABLE error GET "${json}" ${i} args)
+    if(error)
+      set(args "")
+    endif()
     # ${VAR} in a path expands (e.g. ${CANDELA_SHARED_ASSETS}); what remains relative is
     # relative to BASE_DIR, not to the directory calling this.
     string(CONFIGURE "${scene}" scene)
@@ -135,6 +142,6 @@ function(candela_add_golden_tests_from_json)
       _candela_golden_resolve(expected_dir "${expected_dir}" "${ARG_BASE_DIR}")
     endif()
     candela_add_golden_test(NAME "${name}" SCENE "${scene}" SIZE "${size}" FRAMES "${frames}"
-                            EXPECTED_DIR "${expected_dir}")
+                            EXPECTED_DIR "${expected_dir}" ARGS "${args}")
   endforeach()
 endfunction()

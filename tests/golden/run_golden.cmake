@@ -44,9 +44,11 @@ endforeach()
 file(REMOVE "${exr}" "${png}" "${stats}")
 file(MAKE_DIRECTORY "${GOLDEN_OUTPUT_DIR}")
 
+separate_arguments(golden_args UNIX_COMMAND "${GOLDEN_ARGS}")
 execute_process(
   COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
           --frames "${GOLDEN_FRAMES}" --capture "${exr}" --capture "${png}" --stats "${stats}"
+          ${golden_args}
   RESULT_VARIABLE engine_result OUTPUT_VARIABLE engine_output ERROR_VARIABLE engine_output)
 message("${engine_output}")
 if(engine_result EQUAL 3)
