@@ -4,6 +4,8 @@
 #include <candela/ecs/registry.h>
 #include <candela/ecs/transform.h>
 
+#include "candela/content/animation_systems.h"
+#include "candela/content/components/animation.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
 
@@ -19,6 +21,44 @@ ecs::LocalTransform toLocalTransform(const Transform& t) {
     return local;
 }
 
+// Skins and morph weights on the mesh entities, and one AnimationPlayer (first clip, looping)
+// on the first root when the model has clips.
+void addAnimationComponents(ecs::Registry& registry, const Model& model,
+                            const std::vector<ecs::Entity>& nodeEntities,
+                            const std::vector<ecs::Entity>& created) {
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        const Node& node = model.nodes[n];
+        const ecs::Entity e = nodeEntities[n];
+        if (e == ecs::kNullEntity || node.mesh == kNoIndex) continue;
+        if (node.skin != kNoIndex) {
+            Skin skin;
+            skin.model = &model;
+            skin.skin = node.skin;
+            for (std::int32_t joint : model.skins[static_cast<std::size_t>(node.skin)].joints)
+                skin.joints.push_back(nodeEntities[static_cast<std::size_t>(joint)]);
+            skin.jointMatrices.assign(skin.joints.size(), ecs::Mat4::identity());
+            skin.previousJointMatrices = skin.jointMatrices;
+            computeJointBounds(model, node.mesh, skin);
+            registry.emplace<Skin>(e, std::move(skin));
+        }
+        const Mesh& mesh = model.meshes[static_cast<std::size_t>(node.mesh)];
+        if (!mesh.defaultWeights.empty()) {
+            MorphWeights morph;
+            morph.weights = node.weights.size() == mesh.defaultWeights.size() ? node.weights
+                                                                              : mesh.defaultWeights;
+            morph.previousWeights = morph.weights;
+            registry.emplace<MorphWeights>(e, std::move(morph));
+        }
+    }
+    if (!model.animations.empty() && !created.empty()) {
+        AnimationPlayer player;
+        player.model = &model;
+        player.clip = 0;
+        player.nodeEntities = nodeEntities;
+        registry.emplace<AnimationPlayer>(created.front(), std::move(player));
+    }
+}
+
 }  // namespace
 
 std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& model,
@@ -30,6 +70,7 @@ std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& 
         pending.emplace_back(*it, parent);
     }
     std::vector<bool> visited(model.nodes.size(), false);
+    std::vector<ecs::Entity> nodeEntities(model.nodes.size(), ecs::kNullEntity);
     while (!pending.empty()) {
         auto [nodeIndex, parentEntity] = pending.back();
         pending.pop_back();
@@ -54,10 +95,12 @@ std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& 
             registry.emplace<Camera>(e, model.cameras[node.camera].camera);
         }
         created.push_back(e);
+        nodeEntities[static_cast<std::size_t>(nodeIndex)] = e;
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
             pending.emplace_back(*it, e);
         }
     }
+    addAnimationComponents(registry, model, nodeEntities, created);
     return created;
 }
 

@@ -23,6 +23,13 @@ void generateFlatNormals(Primitive& p) {
     unweld(p.uv0, p.indices);
     unweld(p.uv1, p.indices);
     unweld(p.colors, p.indices);
+    unweld(p.joints, p.indices);
+    unweld(p.weights, p.indices);
+    for (MorphTarget& target : p.morphTargets) {
+        unweld(target.positionDeltas, p.indices);
+        unweld(target.normalDeltas, p.indices);
+        unweld(target.tangentDeltas, p.indices);
+    }
     const std::size_t vertexCount = p.positions.size();
     p.indices.resize(vertexCount);
     for (std::size_t i = 0; i < vertexCount; ++i)

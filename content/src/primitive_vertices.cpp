@@ -19,6 +19,13 @@ std::uint32_t appendVertexCopy(Primitive& p, std::uint32_t index) {
     copyElement(p.uv0, index);
     copyElement(p.uv1, index);
     copyElement(p.colors, index);
+    copyElement(p.joints, index);
+    copyElement(p.weights, index);
+    for (MorphTarget& target : p.morphTargets) {
+        copyElement(target.positionDeltas, index);
+        copyElement(target.normalDeltas, index);
+        copyElement(target.tangentDeltas, index);
+    }
     return static_cast<std::uint32_t>(p.positions.size() - 1);
 }
 

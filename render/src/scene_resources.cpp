@@ -1,5 +1,7 @@
 #include "candela/render/scene_resources.h"
 
+#include "candela/render/frame_scene.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -249,6 +251,33 @@ uint32_t SceneResources::addMaterialOverride(const content::Model& model,
                                              const content::Material& material) {
     addModel(model);
     return addModelMaterial(model, models_.at(&model), material);
+}
+
+VkBuffer SceneResources::vertexBufferOf(const DrawItem& draw) const {
+    return draw.deformedVertices != VK_NULL_HANDLE ? draw.deformedVertices
+                                                   : meshes_[draw.mesh].vertices.handle();
+}
+
+VkBuffer SceneResources::writeDeformedVertices(uint64_t instanceKey,
+                                               const content::Primitive& primitive,
+                                               std::span<const content::Float3> positions,
+                                               std::span<const content::Float3> normals) {
+    const size_t count = primitive.positions.size();
+    auto it = deformed_.find(instanceKey);
+    if (it == deformed_.end() || it->second.size() != count * sizeof(MeshVertex)) {
+        GpuBuffer buffer(context_, std::max<size_t>(count, 1) * sizeof(MeshVertex),
+                         VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryLocation::HostVisible);
+        const std::vector<MeshVertex> vertices = interleave(primitive);
+        std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(MeshVertex));
+        it = deformed_.insert_or_assign(instanceKey, std::move(buffer)).first;
+    }
+    auto* vertices = static_cast<MeshVertex*>(it->second.mapped());
+    for (size_t i = 0; i < count && i < positions.size(); ++i) {
+        std::memcpy(vertices[i].position, positions[i].data(), sizeof(vertices[i].position));
+        if (i < normals.size())
+            std::memcpy(vertices[i].normal, normals[i].data(), sizeof(vertices[i].normal));
+    }
+    return it->second.handle();
 }
 
 const UploadedModel& SceneResources::addModel(const content::Model& model) {

@@ -10,6 +10,7 @@
 #include <map>
 #include <mutex>
 
+#include "candela/content/animation_systems.h"
 #include "candela/content/atomic_file_write.h"
 #include "candela/ecs/transform_system.h"
 #include "candela/render/frame_capture.h"
@@ -202,6 +203,15 @@ void Application::Impl::rebuildScheduler() {
         .reads<ecs::LocalTransform, ecs::HierarchyNode>()
         .writes<ecs::WorldTransform>()
         .exclusive();
+    // Clips are sampled in Update, before the game's own systems (which may override a pose);
+    // joint matrices are rebuilt in PostUpdate after propagation. A world without animation
+    // does not get these systems at all (the plan is rebuilt every frame, so animated
+    // entities added later get them from the next frame on).
+    if (!world->registry.view<content::AnimationPlayer>().empty() ||
+        !world->registry.view<content::Skin>().empty()) {
+        content::addAnimationSystems(*scheduler,
+                                     [this] { return static_cast<float>(current.deltaSeconds); });
+    }
     for (const auto& entry : systems) {
         const System* fn = &entry->fn;
         auto builder = scheduler->addSystem(

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <optional>
 
+#include "candela/content/components/animation.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
@@ -28,6 +29,14 @@ namespace {
 constexpr float kPi = std::numbers::pi_v<float>;
 
 // A light that drifts on a Lissajous figure inside a box: x, y, z each oscillate.
+// The fox walking down the hall (issue 20): its root entity, how far it has gone.
+struct DemoFox {
+    float distance = 0;
+};
+constexpr float kFoxStartZ = -6.5f;
+constexpr float kFoxPathLength = 12.0f;  // then it starts again at the far end
+constexpr float kFoxGaitSeconds = 4.0f;  // walk, then run, then walk...
+
 struct DriftingLight {
     ecs::Vec3 center;
     ecs::Vec3 amplitude;
@@ -315,6 +324,18 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
               ecs::Quat::fromAxisAngle({0.0f, 1.0f, 0.0f}, 0.35f), {0.6f, 0.6f, 0.6f});
     world.loadGltf(helmet, diagnostics, helmetRoot);
 
+    // A fox walking along the right colonnade, crossfading between Walk and Run.
+    const std::filesystem::path fox = sharedAssets() / "models/Fox/Fox.glb";
+    ecs::Entity foxRoot =
+        place(registry, "fox", {2.3f, 0.0f, kFoxStartZ}, {}, {0.012f, 0.012f, 0.012f});
+    registry.emplace<DemoFox>(foxRoot);
+    if (world.loadGltf(fox, diagnostics, foxRoot)) {
+        registry.view<content::AnimationPlayer>().each(
+            [](ecs::Entity, content::AnimationPlayer& player) {
+                player.play(player.findClip("Walk"));
+            });
+    }
+
     // Metal (copper) and dielectric (blue) spheres, roughness rising to the right.
     for (size_t i = 0; i < spheres.size(); ++i) {
         float x = -2.5f + 1.0f * float(i / 2);
@@ -470,7 +491,34 @@ void updateDemoCamera(SceneWorld& world, const FrameContext& frame) {
     if (takeOver != ecs::kNullEntity) world.registry.emplace<FlyCamera>(takeOver, fly);
 }
 
+// Walk for kFoxGaitSeconds, crossfade to Run over a second, run, and back; the root moves at
+// the blended gait's speed (about 0.5 m/s walking, 2 m/s running).
+void walkDemoFox(SceneWorld& world, const FrameContext& frame) {
+    content::AnimationPlayer* player = nullptr;
+    world.registry.view<content::AnimationPlayer>().each(
+        [&](ecs::Entity, content::AnimationPlayer& p) { player = &p; });
+    if (player == nullptr) return;
+    const std::int32_t walk = player->findClip("Walk");
+    const std::int32_t run = player->findClip("Run");
+    const bool wantRun = std::fmod(frame.seconds, 2.0 * kFoxGaitSeconds) >= kFoxGaitSeconds;
+    const std::int32_t wanted = wantRun ? run : walk;
+    const std::int32_t heading = player->nextClip >= 0 ? player->nextClip : player->clip;
+    if (wanted >= 0 && heading != wanted) player->crossfade(wanted, 1.0f);
+    const float runShare =
+        player->nextClip >= 0
+            ? (player->nextClip == run ? player->fadeWeight() : 1.0f - player->fadeWeight())
+            : (player->clip == run ? 1.0f : 0.0f);
+    const float speed = 0.5f + 1.5f * runShare;
+    world.registry.view<DemoFox, ecs::LocalTransform>().each([&](ecs::Entity e, DemoFox& fox,
+                                                                 ecs::LocalTransform& local) {
+        fox.distance = std::fmod(fox.distance + speed * float(frame.deltaSeconds), kFoxPathLength);
+        local.position.z = kFoxStartZ + fox.distance;
+        world.registry.markChanged<ecs::LocalTransform>(e);
+    });
+}
+
 void addDemoSystems(Application& app) {
+    app.addSystem("demo fox", walkDemoFox);
     app.addSystem(
            "demo lights", ecs::Phase::Update,
            [](SceneWorld& world, const FrameContext& f) { animateDemoLights(world, f.seconds); })

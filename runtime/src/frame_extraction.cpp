@@ -5,6 +5,7 @@
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "candela/content/components/animation.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
@@ -59,6 +60,20 @@ const ExtractedFrame::OverrideMaterials* overrideMaterials(ecs::Registry& regist
     return &made;
 }
 
+const content::Skin kNoSkin{};
+const content::MorphWeights kNoMorph{};
+
+// CPU skinning and morphing (content/skinning.h) into the instance's deformed vertex buffer.
+VkBuffer deformInstance(ecs::Entity e, uint32_t primitive, const content::MeshInstance& instance,
+                        const content::Skin& skin, const content::MorphWeights& morph,
+                        render::SceneResources& resources, ExtractedFrame& out) {
+    const content::Primitive& source =
+        instance.model->meshes[size_t(instance.mesh)].primitives[primitive];
+    content::deformPrimitive(source, skin.jointMatrices, morph.weights, out.deformScratch);
+    return resources.writeDeformedVertices(e.bits() * 64 + primitive, source,
+                                           out.deformScratch.positions, out.deformScratch.normals);
+}
+
 }  // namespace
 
 void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneResources& resources,
@@ -86,6 +101,14 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
             auto last = out.lastWorld.find(e.bits());
             const glm::mat4 previousWorld = last != out.lastWorld.end() ? last->second : world;
             out.lastWorldNext[e.bits()] = world;
+            // Skinned or morphed: a per-instance buffer of this frame's deformed vertices.
+            const content::Skin* skin = registry.tryGet<content::Skin>(e);
+            const content::MorphWeights* morph = registry.tryGet<content::MorphWeights>(e);
+            const bool deform = skin != nullptr || morph != nullptr;
+            if (deform) {
+                skin = skin ? skin : &kNoSkin;
+                morph = morph ? morph : &kNoMorph;
+            }
             const ExtractedFrame::OverrideMaterials* overrides =
                 overrideMaterials(registry, e, *instance.model, resources, out);
             for (uint32_t p = 0; p < uploaded.primitiveCountOfMesh[instance.mesh]; ++p) {
@@ -97,6 +120,10 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                 }
                 out.draws.push_back({first + p, material, world});
                 out.previousWorlds.push_back(previousWorld);
+                if (deform) {
+                    out.draws.back().deformedVertices =
+                        deformInstance(e, p, instance, *skin, *morph, resources, out);
+                }
             }
         });
 

@@ -9,6 +9,8 @@ std::string runUsage() {
            ApplicationOptions::standardFlagsUsage() +
            "  --capture-each DIR        write every frame as DIR/frame_NN.png (needs --frames)\n"
            "  --summary FILE.md         write a per-frame table\n"
+           "  --animation NAME|INDEX    the glTF animation clip to play, looping (default: the\n"
+           "                            first); headless runs advance it by --step per frame\n"
            "  --overlay|--no-overlay    the stats overlay (default: on in the demo's window)\n";
 }
 
@@ -42,6 +44,10 @@ ParseResult parseRunOptions(const std::vector<std::string>& args) {
         } else if (arg == "--capture-each") {
             if (!value) return fail("--capture-each needs a directory");
             options.captureEach = *value;
+            ++i;
+        } else if (arg == "--animation") {
+            if (!value) return fail("--animation needs a clip name or index");
+            options.animation = *value;
             ++i;
         } else if (arg == "--summary") {
             if (!value) return fail("--summary needs a file name");

@@ -16,6 +16,7 @@ struct RunOptions {
     std::string scene;       // engine scene file, .gltf, .glb, or a built-in "builtin:<name>"
     std::optional<std::filesystem::path> captureEach;  // --capture-each DIR: DIR/frame_NN.png
     std::optional<std::filesystem::path> summary;      // --summary FILE.md
+    std::optional<std::string> animation;  // --animation NAME|INDEX (default: the first clip)
     std::optional<bool> overlay;  // --overlay / --no-overlay (default: demo in a window)
 };
 

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "candela/content/components/animation.h"
 #include "candela/runtime/scene_source.h"
 #include "run_summary.h"
 
@@ -15,6 +16,17 @@ std::filesystem::path eachFramePath(const std::filesystem::path& dir, uint32_t f
     return dir / name;
 }
 
+// --animation: every AnimationPlayer in the scene plays that clip from time 0.
+std::string selectAnimation(LoadedScene& scene, const std::string& clip) {
+    if (!scene.world) return "--animation: this scene has no animations";
+    std::string problem = "--animation: the scene has no animations";
+    scene.world->registry.view<content::AnimationPlayer>().each(
+        [&](ecs::Entity, content::AnimationPlayer& player) {
+            problem = player.playByNameOrIndex(clip);
+        });
+    return problem;
+}
+
 }  // namespace
 
 int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>> layers) {
@@ -24,6 +36,12 @@ int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>>
     if (!scene) {
         std::fprintf(stderr, "candela: %s\n", error.c_str());
         return kExitBadArguments;
+    }
+    if (options.animation) {
+        if (std::string problem = selectAnimation(*scene, *options.animation); !problem.empty()) {
+            std::fprintf(stderr, "candela: %s: %s\n", options.scene.c_str(), problem.c_str());
+            return kExitBadArguments;
+        }
     }
     ApplicationOptions app = options.app;
     if (options.captureEach) {

@@ -3,7 +3,7 @@
 #
 #   candela_add_golden_test(NAME lobby SCENE scenes/lobby.scene.json SIZE 256x256 FRAMES 3
 #                           [EXPECTED_DIR goldens] [ENGINE my-game] [AA off|fxaa|taa]
-#                           [BLOOM fraction])
+#                           [BLOOM fraction] [ARGS "--step 0.25"])
 #
 # registers the ctest `golden.lobby` (label `golden`, validation required). It renders frame 3
 # (the engine renders FRAMES frames and captures the last) into <build>/golden/lobby/ as
@@ -13,12 +13,14 @@
 # target or executable that takes `candela run`'s arguments (default: the candela target).
 # AA and BLOOM are passed as --aa and --bloom (default: off and 0, so a golden tests one
 # unfiltered sample per pixel unless it names the antialiasing or bloom it checks).
+# ARGS: more `candela run` flags, one string split like a shell line (e.g. an animation clip).
 # Expected images are only ever written by `scripts/update-goldens lobby`.
 #
 #   candela_add_golden_tests_from_json(FILE goldens.json BASE_DIR <dir> [EXPECTED_DIR dir])
 #
 # does the same for each entry of a JSON list, {"name", "scene", "size", "frames"} and
-# optional "expected_dir", "aa" and "bloom", with paths relative to BASE_DIR; CMake variables in them expand
+# optional "expected_dir", "aa", "bloom" and "args", with paths relative to BASE_DIR; CMake
+# variables in them expand
 # ("${CANDELA_SHARED_ASSETS}/models/Box/Box.glb"). The file is re-read when it changes.
 include_guard(GLOBAL)
 
@@ -38,7 +40,7 @@ endfunction()
 # at generate time. Used by candela_add_golden_test and by the harness's own tests.
 function(candela_golden_write_config config)
   cmake_parse_arguments(PARSE_ARGV 1 ARG ""
-                        "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;OUTPUT_DIR;ENGINE;AA;BLOOM" "")
+                        "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;OUTPUT_DIR;ENGINE;AA;BLOOM;ARGS" "")
   if(TARGET "${ARG_ENGINE}")
     set(engine "$<TARGET_FILE:${ARG_ENGINE}>")
   else()
@@ -49,6 +51,7 @@ set(GOLDEN_NAME [==[${ARG_NAME}]==])
 set(GOLDEN_SCENE [==[${ARG_SCENE}]==])
 set(GOLDEN_SIZE [==[${ARG_SIZE}]==])
 set(GOLDEN_FRAMES [==[${ARG_FRAMES}]==])
+set(GOLDEN_ARGS [==[${ARG_ARGS}]==])
 set(GOLDEN_EXPECTED_DIR [==[${ARG_EXPECTED_DIR}]==])
 set(GOLDEN_OUTPUT_DIR [==[${ARG_OUTPUT_DIR}]==])
 set(GOLDEN_ENGINE [==[${engine}]==])
@@ -59,8 +62,8 @@ set(GOLDEN_BLOOM [==[${ARG_BLOOM}]==])
 endfunction()
 
 function(candela_add_golden_test)
-  cmake_parse_arguments(PARSE_ARGV 0 ARG "" "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;ENGINE;AA;BLOOM"
-                        "")
+  cmake_parse_arguments(PARSE_ARGV 0 ARG ""
+                        "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;ENGINE;AA;BLOOM;ARGS" "")
   set(where "candela_add_golden_test(${ARG_NAME})")
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "${where}: unexpected arguments: ${ARG_UNPARSED_ARGUMENTS}")
@@ -104,7 +107,7 @@ function(candela_add_golden_test)
   candela_golden_write_config("${config}" NAME "${ARG_NAME}" SCENE "${scene}" SIZE "${ARG_SIZE}"
                               FRAMES "${ARG_FRAMES}" EXPECTED_DIR "${expected_dir}"
                               OUTPUT_DIR "${output_dir}" ENGINE "${ARG_ENGINE}" AA "${ARG_AA}"
-                              BLOOM "${ARG_BLOOM}")
+                              BLOOM "${ARG_BLOOM}" ARGS "${ARG_ARGS}")
   add_test(NAME golden.${ARG_NAME}
            COMMAND ${CMAKE_COMMAND} -DGOLDEN_CONFIG=${config}
                    -P ${CANDELA_GOLDEN_MODULE_DIR}/run_golden.cmake)
@@ -136,7 +139,7 @@ function(candela_add_golden_tests_from_json)
     if(error)
       set(expected_dir "${ARG_EXPECTED_DIR}")
     endif()
-    foreach(key aa bloom)
+    foreach(key aa bloom args)
       string(JSON ${key} ERROR_VARIABLE error GET "${json}" ${i} ${key})
       if(error)
         set(${key} "")
@@ -151,6 +154,7 @@ function(candela_add_golden_tests_from_json)
       _candela_golden_resolve(expected_dir "${expected_dir}" "${ARG_BASE_DIR}")
     endif()
     candela_add_golden_test(NAME "${name}" SCENE "${scene}" SIZE "${size}" FRAMES "${frames}"
-                            EXPECTED_DIR "${expected_dir}" AA "${aa}" BLOOM "${bloom}")
+                            EXPECTED_DIR "${expected_dir}" AA "${aa}" BLOOM "${bloom}"
+                            ARGS "${args}")
   endforeach()
 endfunction()

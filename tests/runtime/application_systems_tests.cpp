@@ -10,8 +10,11 @@
 #include <thread>
 #include <vector>
 
+#include "candela/content/components/animation.h"
+#include "candela/content/components/name.h"
 #include "candela/ecs/transform.h"
 #include "candela/runtime/application.h"
+#include "candela/runtime/scene_source.h"
 
 using namespace candela;
 using namespace candela::runtime;
@@ -105,4 +108,51 @@ TEST(ApplicationSystems, TransformsPropagateAfterUpdateSystems) {
     frame.frame = 2;
     app.update(frame);
     EXPECT_FLOAT_EQ(registry.get<ecs::WorldTransform>(e).position().x, 3.0f);
+}
+
+// The demo's fox (issue 20) walks, crossfades to Run after four seconds and moves down the
+// hall; driven through the application's scheduler without a GPU, at 30 frames per second.
+TEST(ApplicationSystems, DemoFoxWalksThenCrossfadesToRun) {
+    std::string error;
+    std::optional<LoadedScene> scene = loadScene("builtin:demo", error);
+    ASSERT_TRUE(scene) << error;
+    Application app(ApplicationOptions{});
+    app.setWorld(std::move(scene->world));
+    scene->addSystems(app);
+    ecs::Registry& registry = app.world().registry;
+    content::AnimationPlayer* player = nullptr;
+    registry.view<content::AnimationPlayer>().each(
+        [&](ecs::Entity, content::AnimationPlayer& p) { player = &p; });
+    ASSERT_NE(player, nullptr) << "the demo has no animated fox";
+    ecs::Entity foxRoot = ecs::kNullEntity;
+    registry.view<content::Name>().each([&](ecs::Entity e, const content::Name& name) {
+        if (name.value == "fox" && foxRoot == ecs::kNullEntity) foxRoot = e;  // the placed root
+    });
+    ASSERT_NE(foxRoot, ecs::kNullEntity);
+    const std::int32_t walk = player->findClip("Walk");
+    const std::int32_t run = player->findClip("Run");
+    const float startZ = registry.get<ecs::LocalTransform>(foxRoot).position.z;
+    uint32_t frame = 0;
+    auto runUntil = [&](uint32_t lastFrame) {
+        for (; frame <= lastFrame; ++frame) {
+            FrameContext f;
+            f.frame = frame;
+            f.seconds = frame / 30.0;
+            f.deltaSeconds = frame == 0 ? 0.0 : 1.0 / 30.0;
+            f.headless = true;
+            app.update(f);
+        }
+    };
+    runUntil(110);  // 3.67 s
+    EXPECT_EQ(player->clip, walk);
+    EXPECT_EQ(player->nextClip, -1);
+    const float walked = registry.get<ecs::LocalTransform>(foxRoot).position.z - startZ;
+    EXPECT_NEAR(walked, 0.5f * 110.0f / 30.0f, 0.05f) << "walking at 0.5 m/s";
+    runUntil(135);  // 4.5 s: half way through the one-second crossfade
+    EXPECT_EQ(player->clip, walk);
+    EXPECT_EQ(player->nextClip, run);
+    EXPECT_NEAR(player->fadeWeight(), 0.5f, 0.04f);
+    runUntil(170);  // 5.67 s
+    EXPECT_EQ(player->clip, run);
+    EXPECT_EQ(player->nextClip, -1);
 }

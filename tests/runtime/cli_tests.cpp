@@ -352,6 +352,35 @@ TEST(Cli, UnknownCaptureFormatIsRejected) {
     EXPECT_NE(r.output.find(".exr or .png"), std::string::npos) << r.output;
 }
 
+// --animation picks the clip by name or index; headless time advances by --step, so the same
+// clip at the same time renders the same image and another clip or time another one. An
+// unknown clip is rejected naming the file and listing the clips.
+TEST(Cli, AnimationFlagChoosesTheClipAndStepAdvancesIt) {
+    auto dir = tempDir();
+    const std::string fox = std::string(CANDELA_SHARED_ASSETS) + "/models/Fox/Fox.glb";
+    auto render = [&](const std::string& name, const std::string& flags) {
+        const auto path = dir / (name + ".png");
+        RunResult r = runCandela("run " + fox + " --headless --size 64x64 --capture " +
+                                 path.string() + " " + flags);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return readBytes(path);
+    };
+    const std::string walkByName = render("walk", "--animation Walk --frames 3 --step 0.25");
+    const std::string walkByIndex = render("walk1", "--animation 1 --frames 2 --step 0.5");
+    const std::string run = render("run", "--animation Run --frames 3 --step 0.25");
+    const std::string walkLater = render("walk2", "--animation Walk --frames 3 --step 0.3");
+    EXPECT_FALSE(walkByName.empty());
+    EXPECT_EQ(walkByName, walkByIndex) << "Walk at 0.5 s, by name or by index";
+    EXPECT_NE(walkByName, run);
+    EXPECT_NE(walkByName, walkLater);
+    RunResult bad = runCandela("run " + fox + " --headless --size 64x64 --animation Fly");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("Fox.glb: no animation 'Fly' (available: 0 'Survey', 1 'Walk', "
+                              "2 'Run')"),
+              std::string::npos)
+        << bad.output;
+}
+
 TEST(Cli, MissingSceneIsRejected) {
     RunResult r = runCandela("run /no/such/scene.gltf --headless");
     EXPECT_EQ(r.exitCode, 2);

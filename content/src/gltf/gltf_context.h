@@ -52,5 +52,16 @@ void convertMaterials(Context& context);         // gltf_materials.cpp
 void convertLightsAndCameras(Context& context);  // gltf_lights_cameras.cpp
 void convertMeshes(Context& context);            // gltf_meshes.cpp
 void convertNodes(Context& context);             // gltf_nodes.cpp
+void convertSkins(Context& context);             // gltf_skins.cpp (after nodes)
+void convertAnimations(Context& context);        // gltf_animations.cpp (after skins)
+
+struct AccessorLimits;
+// gltf_mesh_deformation.cpp: JOINTS_n/WEIGHTS_n and morph targets of one primitive.
+void readSkinAttributes(Context& context, const std::string& element,
+                        const tinygltf::Primitive& source, std::size_t vertexCount,
+                        const AccessorLimits& limits, Primitive& primitive);
+void readMorphTargets(Context& context, const std::string& element,
+                      const tinygltf::Primitive& source, std::size_t vertexCount,
+                      const AccessorLimits& limits, Primitive& primitive);
 
 }  // namespace candela::content::gltf

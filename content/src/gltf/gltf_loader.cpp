@@ -185,6 +185,8 @@ std::optional<Model> loadGltfFromMemory(std::span<const std::byte> bytes,
         gltf::convertLightsAndCameras(context);
         gltf::convertMeshes(context);
         gltf::convertNodes(context);
+        gltf::convertSkins(context);
+        gltf::convertAnimations(context);
     } catch (const std::bad_alloc&) {
         diagnostics.error(file, "", "out of memory while converting");
         return std::nullopt;

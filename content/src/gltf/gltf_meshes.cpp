@@ -193,9 +193,8 @@ std::optional<Primitive> convertPrimitive(Context& context, const tinygltf::Prim
     readAttribute<2>(context, element, source, "TEXCOORD_0", count, limits, primitive.uv0);
     readAttribute<2>(context, element, source, "TEXCOORD_1", count, limits, primitive.uv1);
     readColors(context, element, source, count, limits, primitive);
-    if (!source.targets.empty()) {
-        context.warning(element, "morph targets are not supported; base shape used");
-    }
+    readSkinAttributes(context, element, source, count, limits, primitive);
+    readMorphTargets(context, element, source, count, limits, primitive);
 
     if (source.material >= 0 || source.material < -1) {
         if (validIndex(source.material, context.model.materials)) {
@@ -219,8 +218,33 @@ std::optional<Primitive> convertPrimitive(Context& context, const tinygltf::Prim
     if (primitive.tangents.empty() && options.generateTangents) {
         generateTangents(primitive, tangentUvSet(context, primitive.material));
     }
+    if (primitive.normalsGenerated) {
+        for (MorphTarget& target : primitive.morphTargets)
+            target.normalDeltas.clear();  // flat normals follow no authored deltas
+    }
     computeBounds(primitive);
     return primitive;
+}
+
+// glTF requires every primitive of a mesh to have the same number of targets and the mesh's
+// weights to match it; otherwise the morph data is unusable and is dropped.
+void checkMorphTargetCounts(Context& context, const std::string& element, Mesh& mesh) {
+    std::size_t targets = 0;
+    for (const Primitive& p : mesh.primitives)
+        targets = std::max(targets, p.morphTargets.size());
+    bool consistent = mesh.defaultWeights.empty() || mesh.defaultWeights.size() == targets;
+    for (const Primitive& p : mesh.primitives)
+        consistent = consistent && p.morphTargets.size() == targets;
+    if (!consistent) {
+        context.error(element,
+                      "primitives and weights disagree on the morph target count; "
+                      "morph targets dropped");
+        for (Primitive& p : mesh.primitives)
+            p.morphTargets.clear();
+        mesh.defaultWeights.clear();
+        return;
+    }
+    mesh.defaultWeights.resize(targets, 0.0f);
 }
 
 }  // namespace
@@ -231,6 +255,8 @@ void convertMeshes(Context& context) {
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         Mesh& mesh = context.model.meshes[m];
         mesh.name = meshes[m].name;
+        for (double w : meshes[m].weights)
+            mesh.defaultWeights.push_back(std::isfinite(w) ? static_cast<float>(w) : 0.0f);
         for (std::size_t p = 0; p < meshes[m].primitives.size(); ++p) {
             const std::string element =
                 elementName("meshes", m) + "." + elementName("primitives", p);
@@ -238,6 +264,7 @@ void convertMeshes(Context& context) {
                 mesh.primitives.push_back(std::move(*primitive));
             }
         }
+        checkMorphTargetCounts(context, elementName("meshes", m), mesh);
     }
 }
 

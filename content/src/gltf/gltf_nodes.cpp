@@ -197,7 +197,6 @@ void convertNodes(Context& context) {
     const auto& source = context.document.nodes;
     Model& model = context.model;
     model.nodes.resize(source.size());
-    bool warnedSkin = false;
     for (std::size_t n = 0; n < source.size(); ++n) {
         const tinygltf::Node& from = source[n];
         Node& node = model.nodes[n];
@@ -226,10 +225,8 @@ void convertNodes(Context& context) {
                 context.error(element, "KHR_lights_punctual light " + std::to_string(light) +
                                            " does not exist");
         }
-        if (from.skin >= 0 && !warnedSkin) {
-            context.warning(element, "skins are not supported; meshes are shown in bind pose");
-            warnedSkin = true;
-        }
+        for (double w : from.weights)
+            node.weights.push_back(std::isfinite(w) ? static_cast<float>(w) : 0.0f);
     }
     buildHierarchy(context);
     chooseRoots(context);

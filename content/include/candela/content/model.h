@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/content/animation.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
 #include "candela/content/image.h"
@@ -21,6 +22,15 @@ using Float2 = std::array<float, 2>;
 using Float3 = std::array<float, 3>;
 using Float4 = std::array<float, 4>;
 
+// One morph target's per-vertex offsets; a stream is empty when the target does not move it.
+struct MorphTarget {
+    std::vector<Float3> positionDeltas;
+    std::vector<Float3> normalDeltas;
+    std::vector<Float3> tangentDeltas;  // xyz only; w (handedness) never morphs
+};
+
+using JointIndices = std::array<std::uint16_t, 4>;
+
 // Structure-of-arrays vertex data for one triangle list. Optional streams are empty when absent.
 struct Primitive {
     std::vector<Float3> positions;
@@ -30,7 +40,12 @@ struct Primitive {
     std::vector<Float2> uv1;
     std::vector<Float4> colors;          // linear RGBA; COLOR_0 with RGB gets alpha 1
     std::vector<std::uint32_t> indices;  // triangle list, every index < positions.size()
-    std::int32_t material = kNoIndex;    // kNoIndex: the glTF default material
+    // Skinning: the four largest influences over all JOINTS_n/WEIGHTS_n sets, weights summing
+    // to 1. Both empty when the primitive is not skinned.
+    std::vector<JointIndices> joints;
+    std::vector<Float4> weights;
+    std::vector<MorphTarget> morphTargets;
+    std::int32_t material = kNoIndex;  // kNoIndex: the glTF default material
     Float3 boundsMin{0, 0, 0};
     Float3 boundsMax{0, 0, 0};
     bool normalsGenerated = false;
@@ -40,6 +55,9 @@ struct Primitive {
 struct Mesh {
     std::string name;
     std::vector<Primitive> primitives;  // primitives that failed to load are left out
+    // Morph target weights when no node or animation sets them; one per target (all
+    // primitives of a mesh have the same target count, or none of them keeps targets).
+    std::vector<float> defaultWeights;
 };
 
 struct Texture {
@@ -62,6 +80,8 @@ struct Node {
     std::int32_t mesh = kNoIndex;
     std::int32_t camera = kNoIndex;  // into Model::cameras
     std::int32_t light = kNoIndex;   // into Model::lights
+    std::int32_t skin = kNoIndex;    // into Model::skins; set only when the mesh can use it
+    std::vector<float> weights;      // the node's morph weights; empty: the mesh's defaults
 };
 
 struct NamedCamera {
@@ -85,6 +105,8 @@ struct Model {
     std::vector<Rgba8Image> images;
     std::vector<NamedCamera> cameras;
     std::vector<NamedLight> lights;
+    std::vector<SkinData> skins;
+    std::vector<AnimationClip> animations;  // clips that failed validation are left out
 };
 
 }  // namespace candela::content

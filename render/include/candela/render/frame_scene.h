@@ -1,6 +1,8 @@
 #pragma once
 // What one frame draws, extracted from the ECS by the runtime: plain arrays the passes read.
 #include <cstdint>
+#include <vulkan/vulkan.h>
+
 #include <glm/glm.hpp>
 #include <span>
 
@@ -25,6 +27,10 @@ struct DrawItem {
     uint32_t mesh;      // from SceneResources
     uint32_t material;  // from SceneResources
     glm::mat4 world;
+    // Skinned or morphed instances: this frame's deformed vertices (SceneResources::
+    // writeDeformedVertices), a plain vertex buffer in the mesh's layout that every geometry
+    // pass binds instead of the mesh's own (vertexBufferOf). Null: the mesh's vertices.
+    VkBuffer deformedVertices = VK_NULL_HANDLE;
 };
 
 struct LightInstance {

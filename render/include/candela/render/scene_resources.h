@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -75,6 +76,19 @@ public:
     uint32_t addMaterialOverride(const content::Model& model, const content::Material& material);
 
     const GpuMesh& mesh(uint32_t index) const { return meshes_[index]; }
+    // The vertex buffer a geometry pass binds for `draw`: its deformed vertices when animated,
+    // else the mesh's.
+    VkBuffer vertexBufferOf(const struct DrawItem& draw) const;
+
+    // Animated instances (skins, morph targets): writes this frame's deformed positions and
+    // normals of `primitive` into the instance's own host-visible vertex buffer (made on first
+    // use for `instanceKey` with the primitive's other attributes) and returns it. The frame
+    // waits for its submission before the next one is extracted, so one buffer per instance is
+    // enough. Buffers live until the SceneResources goes (a world swap).
+    VkBuffer writeDeformedVertices(uint64_t instanceKey, const content::Primitive& primitive,
+                                   std::span<const content::Float3> positions,
+                                   std::span<const content::Float3> normals);
+    uint32_t deformedInstanceCount() const { return uint32_t(deformed_.size()); }
     uint32_t meshCount() const { return uint32_t(meshes_.size()); }
     uint32_t materialCount() const { return uint32_t(materialBindings_.size()); }
     uint32_t defaultMaterial() const { return 0; }
@@ -113,6 +127,7 @@ private:
     std::vector<content::Material> materials_;
     std::vector<MaterialBinding> materialBindings_;
     std::unordered_map<const content::Model*, UploadedModel> models_;
+    std::unordered_map<uint64_t, GpuBuffer> deformed_;
     std::unordered_map<uint32_t, VkSampler> samplers_;
     GpuBuffer materialBuffer_;
     bool materialsDirty_ = true;

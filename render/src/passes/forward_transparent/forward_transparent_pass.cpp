@@ -54,10 +54,12 @@ void setMeshVertexInput(GraphicsPipelineDesc& desc) {
     };
 }
 
-// firstInstance: the draw's index in FrameScene::draws, gbuffer.vert's previous-world index.
-void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, uint32_t drawIndex) {
+// `vertexBuffer`: the mesh's, or a skinned or morphed draw's deformed vertices
+// (SceneResources::vertexBufferOf). firstInstance: the draw's index in FrameScene::draws,
+// gbuffer.vert's previous-world index.
+void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, VkBuffer vertexBuffer,
+              uint32_t drawIndex) {
     VkDeviceSize offset = 0;
-    VkBuffer vertexBuffer = mesh.vertices.handle();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
@@ -235,7 +237,7 @@ void ForwardTransparentPass::recordMarkOccupancy(VkCommandBuffer cmd, SceneResou
         push.world = draw.world;
         push.material = draw.material;
         occupancy_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources.mesh(draw.mesh), sortedIndex_[i]);
+        drawMesh(cmd, resources.mesh(draw.mesh), resources.vertexBufferOf(draw), sortedIndex_[i]);
     }
     vkCmdEndRendering(cmd);
 }
@@ -330,7 +332,7 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
         push.world = draw.world;
         push.material = draw.material;
         shading_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources.mesh(draw.mesh), sortedIndex_[i]);
+        drawMesh(cmd, resources.mesh(draw.mesh), resources.vertexBufferOf(draw), sortedIndex_[i]);
     }
     vkCmdEndRendering(cmd);
 }

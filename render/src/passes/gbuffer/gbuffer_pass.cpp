@@ -130,7 +130,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
         DrawPush push{draw.world, draw.material};
         pipeline.pushConstants(cmd, &push, sizeof(push));
         VkDeviceSize offset = 0;
-        VkBuffer vertexBuffer = mesh.vertices.handle();
+        VkBuffer vertexBuffer = resources.vertexBufferOf(draw);
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
         // firstInstance: the draw's index, which gbuffer.vert reads its previous world by.

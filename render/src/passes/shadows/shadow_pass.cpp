@@ -332,7 +332,8 @@ void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
                 const glm::mat4 worldToClip = pv.gpu.worldToClip * draw.world;
                 pipeline_.pushConstants(cmd, &worldToClip, sizeof(worldToClip));
                 const VkDeviceSize offset = 0;
-                const VkBuffer vertexBuffer = mesh.vertices.handle();
+                // Skinned or morphed draws cast with this frame's deformed vertices.
+                const VkBuffer vertexBuffer = resources.vertexBufferOf(draw);
                 vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
                 vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
                 vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "candela/content/skinning.h"
 #include "candela/ecs/registry.h"
 #include "candela/render/frame_scene.h"
 #include "candela/render/scene_resources.h"
@@ -37,6 +38,7 @@ struct ExtractedFrame {
         std::vector<std::pair<uint32_t, uint32_t>> primitiveMaterial;  // primitive, material
     };
     std::unordered_map<uint64_t, OverrideMaterials> overrides;
+    content::DeformedVertices deformScratch;  // reused for every animated instance
 };
 
 // Uploads models on first sight (SceneResources caches them); updates `lights`.

@@ -1,0 +1,47 @@
+#pragma once
+// glTF skins and animation clips as plain data (what loadGltf() puts in Model::skins and
+// Model::animations). Everything here has been validated by the loader: node and sampler
+// indices are in range, key times are finite and strictly increasing, and every sampler holds
+// exactly one value (three for CUBICSPLINE: in-tangent, value, out-tangent) per key.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace candela::content {
+
+// Column-major 4x4, as glTF stores matrices (the layout of ecs::Mat4).
+using Matrix4 = std::array<float, 16>;
+
+struct SkinData {
+    std::string name;
+    std::vector<std::int32_t> joints;          // node indices; joint i is JOINTS_n value i
+    std::vector<Matrix4> inverseBindMatrices;  // one per joint (identity when the file has none)
+    std::int32_t skeleton = -1;                // the file's skeleton root node, -1 when not given
+};
+
+enum class Interpolation : std::uint8_t { Step, Linear, CubicSpline };
+enum class AnimatedProperty : std::uint8_t { Translation, Rotation, Scale, Weights };
+
+struct AnimationSampler {
+    Interpolation interpolation = Interpolation::Linear;
+    std::uint32_t components = 0;  // floats per value: 3, 4 (x, y, z, w) or the target count
+    std::vector<float> times;      // seconds, strictly increasing
+    // Per key `components` floats; CUBICSPLINE keys hold in-tangent, value, out-tangent.
+    std::vector<float> values;
+};
+
+struct AnimationChannel {
+    std::int32_t node = -1;
+    AnimatedProperty property = AnimatedProperty::Translation;
+    std::int32_t sampler = -1;  // into AnimationClip::samplers
+};
+
+struct AnimationClip {
+    std::string name;
+    std::vector<AnimationSampler> samplers;
+    std::vector<AnimationChannel> channels;
+    float duration = 0;  // the last key time over all samplers
+};
+
+}  // namespace candela::content

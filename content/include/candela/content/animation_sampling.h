@@ -1,0 +1,24 @@
+#pragma once
+// Evaluating glTF animation samplers at a time: STEP, LINEAR (slerp for rotations) and
+// CUBICSPLINE (Hermite, tangents scaled by the key interval, glTF 2.0 appendix C). Times
+// outside the keys clamp to the first/last value. Allocation-free.
+#include <cstdint>
+#include <span>
+
+#include "candela/content/animation.h"
+
+namespace candela::content {
+
+// Writes sampler.components floats into `out` (out.size() >= components). Rotations (x, y, z,
+// w) come out unit length.
+void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
+                     std::span<float> out);
+
+// Index k of the key interval [times[k], times[k+1]] holding `time` (0 before the first key,
+// times.size() - 1 from the last key on).
+std::size_t keyIntervalAt(const std::vector<float>& times, float time);
+
+// Wraps or clamps a play time into [0, duration].
+float clipTime(float time, float duration, bool loop);
+
+}  // namespace candela::content

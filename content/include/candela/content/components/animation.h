@@ -1,0 +1,95 @@
+#pragma once
+// Animation components, filled by instantiateModel() for glTF models that have them:
+//  - AnimationPlayer (on the model's first root entity): which clip plays, its time, speed,
+//    looping, and a crossfade to another clip; it drives the node entities in nodeEntities;
+//  - Skin (on each skinned mesh's entity): its joint entities and the joint matrices the
+//    renderer skins with, rebuilt after transform propagation;
+//  - MorphWeights (on each mesh entity with morph targets): the current target weights.
+// The systems that update them are in animation_systems.h.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "candela/ecs/entity.h"
+#include "candela/ecs/tick.h"
+#include "candela/ecs/transform.h"
+
+namespace candela::content {
+
+struct Model;
+
+struct AnimationPlayer {
+    const Model* model = nullptr;  // owns the clips; must outlive the entity
+    std::int32_t clip = -1;        // into Model::animations; -1 plays nothing
+    float time = 0;                // seconds into `clip` (wrapped or clamped when sampled)
+    float speed = 1;               // 1 is real time; negative plays backwards
+    bool loop = true;
+    bool playing = true;  // false: time stands still, the pose at `time` is still applied
+    // Crossfade: while nextClip >= 0, `clip` blends into nextClip over fadeDuration seconds;
+    // when the fade ends nextClip becomes `clip` (with its time).
+    std::int32_t nextClip = -1;
+    float nextTime = 0;
+    float fadeDuration = 0;
+    float fadeElapsed = 0;
+
+    std::vector<ecs::Entity> nodeEntities;  // model node index -> entity (kNullEntity: not shown)
+
+    // Starts `clipIndex` from time 0, cancelling any crossfade.
+    void play(std::int32_t clipIndex, bool looping = true);
+    // Blends from the current clip to `clipIndex` over `seconds` (0: switch at once).
+    void crossfade(std::int32_t clipIndex, float seconds);
+    // Index of the clip named `name`, or -1.
+    std::int32_t findClip(std::string_view name) const;
+    // Plays the clip named `nameOrIndex` (a name first, else a decimal index), looping;
+    // returns an empty string, or the problem listing the clips there are.
+    std::string playByNameOrIndex(const std::string& nameOrIndex);
+    // How far the crossfade has gone, 0 (all `clip`) to 1 (all nextClip).
+    float fadeWeight() const;
+
+    // Scratch sized once by the sampling system (no per-frame allocation once warm).
+    struct Scratch {
+        std::vector<ecs::LocalTransform> pose;       // per node, clip A
+        std::vector<ecs::LocalTransform> blendPose;  // per node, clip B
+        std::vector<float> weights;                  // per node's morph targets, clip A
+        std::vector<float> blendWeights;             // clip B
+        std::vector<std::uint32_t> weightOffset;     // node -> first slot in weights
+        std::vector<std::uint8_t> touched;           // node animated by A (1), B (2)
+        // The pose last written: a paused player whose clip and time did not change writes
+        // nothing (and so its skeleton's skins are not rebuilt).
+        bool applied = false;
+        std::int32_t appliedClip = -1;
+        float appliedTime = 0;
+    } scratch;
+};
+
+struct Skin {
+    const Model* model = nullptr;
+    std::int32_t skin = -1;           // into Model::skins
+    std::vector<ecs::Entity> joints;  // one per skin joint (kNullEntity: not shown, identity)
+    // Per joint: inverse(mesh world) * joint world * inverse bind matrix, i.e. bind-pose mesh
+    // space to current mesh space. The renderer skins with these.
+    std::vector<ecs::Mat4> jointMatrices;
+    // The previous frame's matrices (motion vectors / TAA: skin the vertex twice, or keep the
+    // previous deformed positions; see render/README.md "Animation").
+    std::vector<ecs::Mat4> previousJointMatrices;
+    // Per joint, the bind-space box of the vertices it influences (min xyz, max xyz; empty when
+    // it influences none): the deformed mesh lies inside the union of these boxes moved by the
+    // joint matrices.
+    std::vector<std::array<float, 6>> jointBounds;
+    // The deformed mesh's bounds in mesh space (what culling and clusters use).
+    ecs::Vec3 boundsMin{}, boundsMax{};
+    bool boundsValid = false;
+    // The newest WorldTransform change (mesh or joints) the matrices were built from: a skin
+    // whose skeleton did not move is skipped (a still character costs a few tick reads).
+    ecs::Tick builtFrom = ecs::kNeverTick;
+    bool previousIsCurrent = false;
+};
+
+struct MorphWeights {
+    std::vector<float> weights;          // one per morph target of the mesh
+    std::vector<float> previousWeights;  // last frame's (motion vectors)
+};
+
+}  // namespace candela::content

@@ -1,0 +1,104 @@
+#include "candela/content/animation_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace candela::content {
+namespace {
+
+void normalizeQuaternion(std::span<float> q) {
+    const float length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (length > 1e-20f) {
+        for (int c = 0; c < 4; ++c)
+            q[static_cast<std::size_t>(c)] /= length;
+    } else {
+        q[0] = q[1] = q[2] = 0;
+        q[3] = 1;
+    }
+}
+
+// Shortest-arc spherical interpolation; falls back to normalised lerp when nearly parallel.
+void slerp(const float* a, const float* b, float t, std::span<float> out) {
+    float cosTheta = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+    const float sign = cosTheta < 0 ? -1.0f : 1.0f;
+    cosTheta *= sign;
+    float wa = 1 - t;
+    float wb = t;
+    if (cosTheta < 0.9995f) {
+        const float theta = std::acos(cosTheta);
+        const float sinTheta = std::sin(theta);
+        wa = std::sin((1 - t) * theta) / sinTheta;
+        wb = std::sin(t * theta) / sinTheta;
+    }
+    for (std::size_t c = 0; c < 4; ++c)
+        out[c] = wa * a[c] + sign * wb * b[c];
+    normalizeQuaternion(out);
+}
+
+}  // namespace
+
+std::size_t keyIntervalAt(const std::vector<float>& times, float time) {
+    if (times.size() < 2 || time <= times.front()) return 0;
+    if (time >= times.back()) return times.size() - 1;
+    // First key after `time`, minus one: times[k] <= time < times[k + 1].
+    const auto next = std::upper_bound(times.begin(), times.end(), time);
+    return static_cast<std::size_t>(next - times.begin()) - 1;
+}
+
+float clipTime(float time, float duration, bool loop) {
+    if (!(duration > 0)) return 0;
+    if (loop) {
+        const float wrapped = std::fmod(time, duration);
+        return wrapped < 0 ? wrapped + duration : wrapped;
+    }
+    return std::clamp(time, 0.0f, duration);
+}
+
+void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
+                     std::span<float> out) {
+    const std::size_t n = sampler.components;
+    const std::size_t keys = sampler.times.size();
+    const bool cubic = sampler.interpolation == Interpolation::CubicSpline;
+    const std::size_t stride = cubic ? 3 * n : n;
+    const std::size_t valueOffset = cubic ? n : 0;  // CUBICSPLINE: skip the in-tangent
+    const float* values = sampler.values.data();
+    const std::size_t k = keyIntervalAt(sampler.times, time);
+    const bool clamped = keys < 2 || time <= sampler.times.front() || k + 1 >= keys;
+    if (clamped || sampler.interpolation == Interpolation::Step) {
+        std::copy_n(values + k * stride + valueOffset, n, out.begin());
+        if (property == AnimatedProperty::Rotation) normalizeQuaternion(out);
+        return;
+    }
+    const float t0 = sampler.times[k];
+    const float interval = sampler.times[k + 1] - t0;
+    const float t = (time - t0) / interval;
+    const float* a = values + k * stride;
+    const float* b = values + (k + 1) * stride;
+    if (sampler.interpolation == Interpolation::Linear) {
+        if (property == AnimatedProperty::Rotation) {
+            slerp(a, b, t, out);
+        } else {
+            for (std::size_t c = 0; c < n; ++c)
+                out[c] = a[c] + (b[c] - a[c]) * t;
+        }
+        return;
+    }
+    // Hermite: p(t) = h00 v_k + h10 d b_k + h01 v_k+1 + h11 d a_k+1, with d the key interval,
+    // b_k the out-tangent of key k and a_k+1 the in-tangent of key k+1.
+    const float t2 = t * t;
+    const float t3 = t2 * t;
+    const float h00 = 2 * t3 - 3 * t2 + 1;
+    const float h10 = (t3 - 2 * t2 + t) * interval;
+    const float h01 = -2 * t3 + 3 * t2;
+    const float h11 = (t3 - t2) * interval;
+    for (std::size_t c = 0; c < n; ++c) {
+        const float valueA = a[n + c];
+        const float outTangentA = a[2 * n + c];
+        const float inTangentB = b[c];
+        const float valueB = b[n + c];
+        out[c] = h00 * valueA + h10 * outTangentA + h01 * valueB + h11 * inTangentB;
+    }
+    if (property == AnimatedProperty::Rotation) normalizeQuaternion(out);
+}
+
+}  // namespace candela::content

@@ -1,0 +1,351 @@
+#include "candela/content/animation_systems.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "candela/content/animation_sampling.h"
+#include "candela/content/components/mesh_instance.h"
+#include "candela/content/model.h"
+
+namespace candela::content {
+namespace {
+
+constexpr std::uint8_t kTransformTouched = 1;
+constexpr std::uint8_t kWeightsTouched = 2;
+
+// The entities each system visits, kept between frames so collecting them reuses capacity.
+struct AnimationWorkLists {
+    std::vector<ecs::Entity> players;
+    std::vector<ecs::Entity> skins;
+};
+
+ecs::LocalTransform restPose(const Node& node) {
+    const Transform& t = node.local;
+    return {{t.translation[0], t.translation[1], t.translation[2]},
+            {t.rotation[0], t.rotation[1], t.rotation[2], t.rotation[3]},
+            {t.scale[0], t.scale[1], t.scale[2]}};
+}
+
+const std::vector<float>* restWeights(const Model& model, const Node& node) {
+    if (node.mesh == kNoIndex) return nullptr;
+    const Mesh& mesh = model.meshes[static_cast<std::size_t>(node.mesh)];
+    if (mesh.defaultWeights.empty()) return nullptr;
+    return node.weights.size() == mesh.defaultWeights.size() ? &node.weights : &mesh.defaultWeights;
+}
+
+// Sizes the scratch once per player (and again only if the model changes).
+void prepareScratch(AnimationPlayer& player) {
+    const Model& model = *player.model;
+    AnimationPlayer::Scratch& s = player.scratch;
+    if (s.pose.size() == model.nodes.size() && s.weightOffset.size() == model.nodes.size() + 1)
+        return;
+    s.pose.resize(model.nodes.size());
+    s.blendPose.resize(model.nodes.size());
+    s.touched.assign(model.nodes.size(), 0);
+    s.weightOffset.resize(model.nodes.size() + 1);
+    std::uint32_t offset = 0;
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        s.weightOffset[n] = offset;
+        if (const auto* w = restWeights(model, model.nodes[n]))
+            offset += static_cast<std::uint32_t>(w->size());
+    }
+    s.weightOffset[model.nodes.size()] = offset;
+    s.weights.resize(offset);
+    s.blendWeights.resize(offset);
+}
+
+void resetToRest(const Model& model, AnimationPlayer::Scratch& s,
+                 std::vector<ecs::LocalTransform>& pose, std::vector<float>& weights) {
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        pose[n] = restPose(model.nodes[n]);
+        if (const auto* w = restWeights(model, model.nodes[n]))
+            std::copy(w->begin(), w->end(), weights.begin() + s.weightOffset[n]);
+    }
+}
+
+void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loop,
+                AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransform>& pose,
+                std::vector<float>& weights) {
+    if (clipIndex < 0 || static_cast<std::size_t>(clipIndex) >= model.animations.size()) return;
+    const AnimationClip& clip = model.animations[static_cast<std::size_t>(clipIndex)];
+    const float t = clipTime(time, clip.duration, loop);
+    for (const AnimationChannel& channel : clip.channels) {
+        const auto node = static_cast<std::size_t>(channel.node);
+        const AnimationSampler& sampler = clip.samplers[static_cast<std::size_t>(channel.sampler)];
+        ecs::LocalTransform& local = pose[node];
+        switch (channel.property) {
+            case AnimatedProperty::Translation:
+                sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3));
+                s.touched[node] |= kTransformTouched;
+                break;
+            case AnimatedProperty::Rotation:
+                sampleAnimation(sampler, channel.property, t, std::span(&local.rotation.x, 4));
+                s.touched[node] |= kTransformTouched;
+                break;
+            case AnimatedProperty::Scale:
+                sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3));
+                s.touched[node] |= kTransformTouched;
+                break;
+            case AnimatedProperty::Weights: {
+                const std::uint32_t begin = s.weightOffset[node];
+                const std::uint32_t count = s.weightOffset[node + 1] - begin;
+                if (count != sampler.components) break;  // the loader checked; defensive
+                sampleAnimation(sampler, channel.property, t,
+                                std::span(weights).subspan(begin, count));
+                s.touched[node] |= kWeightsTouched;
+                break;
+            }
+        }
+    }
+}
+
+ecs::Vec3 lerp(ecs::Vec3 a, ecs::Vec3 b, float t) {
+    return a + (b - a) * t;
+}
+
+// Normalised lerp along the shorter arc: for blending two poses it is as good as slerp and
+// much cheaper (what most engines blend with).
+ecs::Quat nlerp(ecs::Quat a, ecs::Quat b, float t) {
+    const float sign = a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w < 0 ? -1.0f : 1.0f;
+    return ecs::normalize({a.x + (sign * b.x - a.x) * t, a.y + (sign * b.y - a.y) * t,
+                           a.z + (sign * b.z - a.z) * t, a.w + (sign * b.w - a.w) * t});
+}
+
+void advancePlayer(ecs::Registry& registry, AnimationPlayer& player, float deltaSeconds) {
+    if (player.model == nullptr) return;
+    const Model& model = *player.model;
+    prepareScratch(player);
+    AnimationPlayer::Scratch& s = player.scratch;
+    const float step = player.playing ? deltaSeconds * player.speed : 0.0f;
+    player.time += step;
+    if (player.nextClip >= 0) {
+        player.nextTime += step;
+        if (player.playing) player.fadeElapsed += deltaSeconds;
+        if (player.fadeElapsed >= player.fadeDuration) {
+            player.clip = player.nextClip;
+            player.time = player.nextTime;
+            player.nextClip = -1;
+            player.fadeElapsed = player.fadeDuration = player.nextTime = 0;
+        }
+    }
+    // Keep the time small while looping so float precision does not decay over hours.
+    if (player.loop && player.clip >= 0 &&
+        static_cast<std::size_t>(player.clip) < model.animations.size()) {
+        player.time = clipTime(player.time, model.animations[player.clip].duration, true);
+    }
+
+    if (s.applied && player.nextClip < 0 && s.appliedClip == player.clip &&
+        s.appliedTime == player.time) {
+        return;  // paused (or speed 0) and not scrubbed: the entities already hold this pose
+    }
+    s.applied = player.nextClip < 0;  // a crossfade always rewrites (its weight moves)
+    s.appliedClip = player.clip;
+    s.appliedTime = player.time;
+    std::fill(s.touched.begin(), s.touched.end(), std::uint8_t{0});
+    resetToRest(model, s, s.pose, s.weights);
+    sampleClip(model, player.clip, player.time, player.loop, s, s.pose, s.weights);
+    const float fade = player.fadeWeight();
+    if (player.nextClip >= 0) {
+        resetToRest(model, s, s.blendPose, s.blendWeights);
+        sampleClip(model, player.nextClip, player.nextTime, player.loop, s, s.blendPose,
+                   s.blendWeights);
+        for (std::size_t n = 0; n < s.pose.size(); ++n) {
+            if (s.touched[n] == 0) continue;
+            ecs::LocalTransform& a = s.pose[n];
+            const ecs::LocalTransform& b = s.blendPose[n];
+            a.position = lerp(a.position, b.position, fade);
+            a.rotation = nlerp(a.rotation, b.rotation, fade);
+            a.scale = lerp(a.scale, b.scale, fade);
+        }
+        for (std::size_t i = 0; i < s.weights.size(); ++i)
+            s.weights[i] += (s.blendWeights[i] - s.weights[i]) * fade;
+    }
+
+    for (std::size_t n = 0; n < s.pose.size() && n < player.nodeEntities.size(); ++n) {
+        const ecs::Entity e = player.nodeEntities[n];
+        if (s.touched[n] == 0 || e == ecs::kNullEntity) continue;
+        if (s.touched[n] & kTransformTouched) {
+            if (auto* local = registry.tryGet<ecs::LocalTransform>(e)) {
+                *local = s.pose[n];
+                registry.markChanged<ecs::LocalTransform>(e);
+            }
+        }
+        if (s.touched[n] & kWeightsTouched) {
+            if (auto* morph = registry.tryGet<MorphWeights>(e)) {
+                const std::uint32_t begin = s.weightOffset[n];
+                const std::size_t count = s.weightOffset[n + 1] - begin;
+                if (morph->weights.size() == count) {
+                    morph->previousWeights = morph->weights;  // same size: no allocation
+                    std::copy_n(s.weights.begin() + begin, count, morph->weights.begin());
+                }
+            }
+        }
+    }
+}
+
+// Inverse of an affine matrix (last row 0 0 0 1), through the 3x3 adjugate.
+ecs::Mat4 affineInverse(const ecs::Mat4& m) {
+    const float a = m(0, 0), b = m(0, 1), c = m(0, 2);
+    const float d = m(1, 0), e = m(1, 1), f = m(1, 2);
+    const float g = m(2, 0), h = m(2, 1), i = m(2, 2);
+    const float A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
+    const float det = a * A + b * B + c * C;
+    if (std::fabs(det) < 1e-30f) return ecs::Mat4::identity();
+    const float s = 1.0f / det;
+    ecs::Mat4 r;
+    r(0, 0) = A * s;
+    r(0, 1) = -(b * i - c * h) * s;
+    r(0, 2) = (b * f - c * e) * s;
+    r(1, 0) = B * s;
+    r(1, 1) = (a * i - c * g) * s;
+    r(1, 2) = -(a * f - c * d) * s;
+    r(2, 0) = C * s;
+    r(2, 1) = -(a * h - b * g) * s;
+    r(2, 2) = (a * e - b * d) * s;
+    const ecs::Vec3 t{m(0, 3), m(1, 3), m(2, 3)};
+    for (int row = 0; row < 3; ++row)
+        r(row, 3) = -(r(row, 0) * t.x + r(row, 1) * t.y + r(row, 2) * t.z);
+    return r;
+}
+
+void updateSkin(ecs::Registry& registry, ecs::Entity entity, Skin& skin) {
+    if (skin.model == nullptr || skin.skin < 0) return;
+    const SkinData& data = skin.model->skins[static_cast<std::size_t>(skin.skin)];
+    ecs::Tick newest = registry.changeTick<ecs::WorldTransform>(entity);
+    for (ecs::Entity joint : skin.joints) {
+        if (joint != ecs::kNullEntity)
+            newest = std::max(newest, registry.changeTick<ecs::WorldTransform>(joint));
+    }
+    if (skin.builtFrom != ecs::kNeverTick && newest == skin.builtFrom &&
+        skin.jointMatrices.size() == data.joints.size()) {
+        if (!skin.previousIsCurrent) {  // still now: last frame's matrices equal this frame's
+            skin.previousJointMatrices = skin.jointMatrices;
+            skin.previousIsCurrent = true;
+        }
+        return;
+    }
+    skin.builtFrom = newest;
+    skin.previousIsCurrent = false;
+    const auto* meshWorld = registry.tryGet<ecs::WorldTransform>(entity);
+    const ecs::Mat4 toMesh = meshWorld ? affineInverse(meshWorld->matrix) : ecs::Mat4::identity();
+    if (skin.jointMatrices.size() != data.joints.size())
+        skin.jointMatrices.assign(data.joints.size(), ecs::Mat4::identity());
+    skin.previousJointMatrices = skin.jointMatrices;  // same size once warm: no allocation
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    ecs::Vec3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
+    for (std::size_t j = 0; j < data.joints.size(); ++j) {
+        const ecs::Entity joint = j < skin.joints.size() ? skin.joints[j] : ecs::kNullEntity;
+        const auto* world =
+            joint != ecs::kNullEntity ? registry.tryGet<ecs::WorldTransform>(joint) : nullptr;
+        ecs::Mat4 inverseBind;
+        std::copy(data.inverseBindMatrices[j].begin(), data.inverseBindMatrices[j].end(),
+                  inverseBind.m);
+        skin.jointMatrices[j] = world ? toMesh * world->matrix * inverseBind : ecs::Mat4{};
+        if (j >= skin.jointBounds.size()) continue;
+        const std::array<float, 6>& box = skin.jointBounds[j];
+        if (box[0] > box[3]) continue;  // the joint moves no vertex
+        for (int corner = 0; corner < 8; ++corner) {
+            const ecs::Vec3 p = skin.jointMatrices[j].transformPoint(
+                {box[(corner & 1) ? 3 : 0], box[(corner & 2) ? 4 : 1], box[(corner & 4) ? 5 : 2]});
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+        }
+    }
+    skin.boundsValid = lo.x <= hi.x;
+    if (skin.boundsValid) {
+        skin.boundsMin = lo;
+        skin.boundsMax = hi;
+    }
+}
+
+AnimationWorkLists& workLists(ecs::Registry& registry) {
+    return registry.resources().getOrEmplace<AnimationWorkLists>();
+}
+
+constexpr std::size_t kPlayersPerJob = 8;
+constexpr std::size_t kSkinsPerJob = 16;
+
+void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLists& lists,
+                   float deltaSeconds) {
+    lists.players.clear();
+    registry.view<AnimationPlayer>().each(
+        [&](ecs::Entity e, AnimationPlayer&) { lists.players.push_back(e); });
+    const ecs::Storage<AnimationPlayer> players = registry.storage<AnimationPlayer>();
+    jobs.parallelFor(lists.players.size(), kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            advancePlayer(registry, players.get(lists.players[i]), deltaSeconds);
+    });
+}
+
+void updateListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLists& lists) {
+    lists.skins.clear();
+    registry.view<Skin>().each([&](ecs::Entity e, Skin&) { lists.skins.push_back(e); });
+    const ecs::Storage<Skin> skins = registry.storage<Skin>();
+    jobs.parallelFor(lists.skins.size(), kSkinsPerJob, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            updateSkin(registry, lists.skins[i], skins.get(lists.skins[i]));
+    });
+}
+
+}  // namespace
+
+void advanceAnimationPlayers(ecs::Registry& registry, ecs::JobSystem& jobs, float deltaSeconds) {
+    if (registry.view<AnimationPlayer>().empty()) return;
+    advanceListed(registry, jobs, workLists(registry), deltaSeconds);
+}
+
+void updateSkins(ecs::Registry& registry, ecs::JobSystem& jobs) {
+    if (registry.view<Skin>().empty()) return;
+    updateListed(registry, jobs, workLists(registry));
+}
+
+void addAnimationSystems(ecs::Scheduler& scheduler, std::function<float()> deltaSeconds) {
+    // Created here, outside any parallel stage.
+    scheduler.registry().resources().getOrEmplace<AnimationWorkLists>();
+    scheduler
+        .addSystem("sample animation", ecs::Phase::Update,
+                   [deltaSeconds](ecs::SystemContext& ctx) {
+                       advanceAnimationPlayers(ctx.registry(), ctx.jobs(), deltaSeconds());
+                   })
+        .writes<AnimationPlayer, ecs::LocalTransform, MorphWeights>()
+        .writesResource<AnimationWorkLists>();
+    scheduler
+        .addSystem("joint matrices", ecs::Phase::PostUpdate,
+                   [](ecs::SystemContext& ctx) { updateSkins(ctx.registry(), ctx.jobs()); })
+        .reads<ecs::WorldTransform>()
+        .writes<Skin>()
+        .writesResource<AnimationWorkLists>();
+}
+
+void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) {
+    const SkinData& data = model.skins[static_cast<std::size_t>(skin.skin)];
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    skin.jointBounds.assign(data.joints.size(), {kInf, kInf, kInf, -kInf, -kInf, -kInf});
+    const Mesh& mesh = model.meshes[static_cast<std::size_t>(meshIndex)];
+    for (const Primitive& p : mesh.primitives) {
+        for (std::size_t v = 0; v < p.joints.size(); ++v) {
+            for (int c = 0; c < 4; ++c) {
+                if (!(p.weights[v][c] > 0)) continue;
+                const std::uint16_t j = p.joints[v][c];
+                if (j >= skin.jointBounds.size()) continue;
+                // Morph targets can push vertices out: grow by every target's delta.
+                Float3 lo = p.positions[v], hi = p.positions[v];
+                for (const MorphTarget& t : p.morphTargets) {
+                    if (t.positionDeltas.empty()) continue;
+                    for (int a = 0; a < 3; ++a) {
+                        lo[a] += std::min(0.0f, t.positionDeltas[v][a]);
+                        hi[a] += std::max(0.0f, t.positionDeltas[v][a]);
+                    }
+                }
+                std::array<float, 6>& box = skin.jointBounds[j];
+                for (int a = 0; a < 3; ++a) {
+                    box[a] = std::min(box[a], lo[a]);
+                    box[a + 3] = std::max(box[a + 3], hi[a]);
+                }
+            }
+        }
+    }
+}
+
+}  // namespace candela::content
