@@ -1,7 +1,8 @@
 # `--brdf ue4` reproduces seed 000 exactly: renders every golden whose seed-000 captures are
 # recorded in HASHES (SHA-256 of the expected .exr and .png before the energy-conserving BRDF
 # became the default) with `--brdf ue4` and requires byte-identical files. A golden added later
-# (no recorded hash) is skipped with a note. Seed 000 had no ambient occlusion: `--ao off`.
+# (no recorded hash) is skipped with a note. Seed 000 had no ambient occlusion, antialiasing,
+# bloom or auto exposure: `--ao off --aa off --bloom 0 --exposure manual`.
 # alpha_blend_mode and orb_game were re-recorded when directional lights began to cast shadows
 # (issue 14): their suns' shadows are new, the BRDF path is not.
 #
@@ -31,7 +32,8 @@ foreach(config IN LISTS configs)
   file(MAKE_DIRECTORY "${OUT}")
   execute_process(
     COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
-            --frames "${GOLDEN_FRAMES}" --brdf ue4 --ao off --capture "${exr}" --capture "${png}"
+            --frames "${GOLDEN_FRAMES}" --brdf ue4 --ao off --aa off --bloom 0 --exposure manual
+            --capture "${exr}" --capture "${png}"
     RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
   if(NOT result EQUAL 0)
     message("${output}")

@@ -102,22 +102,7 @@ float smithG1Schlick(float alpha, float NoX) {
 // D(H) G1(V) max(VoH, 0) / NoV (Heitz 2018). Against plain D NoH sampling, the estimator of
 // the specular integral becomes F G(V, L) / G1(V): bounded and continuous at the horizon, so
 // grazing views converge with a few hundred samples instead of tens of thousands.
-vec3 importanceSampleGgxVisible(vec2 xi, float alpha, vec3 V) {
-    vec3 Vh = normalize(vec3(alpha * V.x, alpha * V.y, V.z));
-    float lengthSquared = Vh.x * Vh.x + Vh.y * Vh.y;
-    vec3 T1 = lengthSquared > 0.0 ? vec3(-Vh.y, Vh.x, 0.0) * inversesqrt(lengthSquared)
-                                  : vec3(1.0, 0.0, 0.0);
-    vec3 T2 = cross(Vh, T1);
-    float r = sqrt(xi.x);
-    float phi = 2.0 * PI * xi.y;
-    float t1 = r * cos(phi);
-    float s = 0.5 * (1.0 + Vh.z);
-    float t2 = mix(sqrt(max(1.0 - t1 * t1, 0.0)), r * sin(phi), s);
-    vec3 Nh = t1 * T1 + t2 * T2 + sqrt(max(1.0 - t1 * t1 - t2 * t2, 0.0)) * Vh;
-    return safeNormalize(vec3(alpha * Nh.x, alpha * Nh.y, max(Nh.z, 1e-7)));
-}
-
-// importanceSampleGgxVisible for an anisotropic lobe: alpha.x along +X, alpha.y along +Y.
+// Anisotropic: alpha.x along +X, alpha.y along +Y.
 vec3 importanceSampleGgxVisibleAnisotropic(vec2 xi, vec2 alpha, vec3 V) {
     vec3 Vh = normalize(vec3(alpha.x * V.x, alpha.y * V.y, V.z));
     float lengthSquared = Vh.x * Vh.x + Vh.y * Vh.y;
@@ -131,6 +116,10 @@ vec3 importanceSampleGgxVisibleAnisotropic(vec2 xi, vec2 alpha, vec3 V) {
     float t2 = mix(sqrt(max(1.0 - t1 * t1, 0.0)), r * sin(phi), s);
     vec3 Nh = t1 * T1 + t2 * T2 + sqrt(max(1.0 - t1 * t1 - t2 * t2, 0.0)) * Vh;
     return safeNormalize(vec3(alpha.x * Nh.x, alpha.y * Nh.y, max(Nh.z, 1e-7)));
+}
+
+vec3 importanceSampleGgxVisible(vec2 xi, float alpha, vec3 V) {
+    return importanceSampleGgxVisibleAnisotropic(xi, vec2(alpha), V);
 }
 
 // Exact Smith G1 of the anisotropic GGX for a direction in the lobe's frame.

@@ -15,15 +15,11 @@
 #include "candela/render/environment.h"
 #include "candela/render/gpu_context.h"
 #include "ibl/environment_brdf_lut.h"
+#include "median.h"
 
 using namespace candela;
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 // Bilinear 2x upsampling of `source` into a width x height RGB float image.
 std::vector<float> upsample(const content::FloatImage& source, uint32_t width, uint32_t height) {

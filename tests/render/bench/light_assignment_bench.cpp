@@ -23,9 +23,11 @@
 #include "analytic_floor.h"
 #include "candela/ecs/job_system.h"
 #include "list_efficiency.h"
+#include "median.h"
 
 using namespace candela::render;
 using namespace candela::render::bench;
+using candela::median;
 
 namespace {
 
@@ -41,11 +43,6 @@ uint64_t listChecksum(const LightAssignment& a, const std::vector<uint32_t>& ran
     for (uint32_t v : ranges)
         add(v);
     return h;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
 void printEfficiency(candela::ecs::JobSystem& jobs) {

@@ -15,16 +15,13 @@
 #include <vector>
 
 #include "../test_scene.h"
+#include "median.h"
 
 using namespace candela::render;
 using namespace candela::render::test;
+using candela::median;
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 // A 40 m floor, a 10 x 10 grid of boxes, a sun and `count` point, sphere, tube and spot lights
 // over it on a jittered grid (every fourth a spot), all casting when `shadows`.
@@ -36,8 +33,8 @@ TestScene benchScene(size_t count, uint32_t width, uint32_t height, bool shadows
     for (int z = 0; z < 10; ++z) {
         for (int x = 0; x < 10; ++x) {
             scene.add(candela::content::makeBox({0.3f, 0.5f, 0.3f}), lambertWhite(),
-                      glm::translate(glm::mat4(1.0f),
-                                     glm::vec3(-18.0f + 4.0f * float(x), 0.5f, -18.0f + 4.0f * float(z))));
+                      glm::translate(glm::mat4(1.0f), glm::vec3(-18.0f + 4.0f * float(x), 0.5f,
+                                                                -18.0f + 4.0f * float(z))));
         }
     }
     scene.lookAt({0.0f, 12.0f, 22.0f}, {0.0f, 0.0f, -4.0f}, {0.0f, 1.0f, 0.0f});

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../ambient_occlusion_scene.h"
+#include "median.h"
 #include "report_context.h"
 
 namespace candela::report {
@@ -16,11 +17,6 @@ using namespace candela::render;
 using namespace candela::render::test;
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 struct Measured {
     CapturedFrame frame;
@@ -127,8 +123,8 @@ void addAmbientOcclusionRows(ReportContext& context) {
         const ShareError e =
             shareError(specularScene, gtao.frame, reference.frame, specularOff.frame);
         char name[96], metric[240], where[96];
-        std::snprintf(name, sizeof(name), "GTAO specular occlusion (from visibility), roughness %.1f",
-                      roughness);
+        std::snprintf(name, sizeof(name),
+                      "GTAO specular occlusion (from visibility), roughness %.1f", roughness);
         std::snprintf(metric, sizeof(metric),
                       "mean |occluded / unoccluded specular - reference| where the reference is "
                       "under 0.9 (%u px; black glossy floor, radius 1.5 m, %ux%u)",

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "../antialiasing_scenes.h"
+#include "median.h"
 #include "report_context.h"
 
 namespace candela::report {
@@ -15,11 +16,6 @@ using namespace candela::render;
 using namespace candela::render::test;
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 double passMs(const RendererStats& stats, const std::string& prefix) {
     double ms = 0.0;

@@ -12,6 +12,7 @@
 #include "candela/content/procedural_mesh.h"
 #include "candela/render/environment.h"
 #include "ibl/environment_brdf_lut.h"
+#include "median.h"
 #include "report_context.h"
 #include "shader_values.h"
 
@@ -21,11 +22,6 @@ using namespace candela::render;
 using namespace candela::render::test;
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 content::Material whiteMetal(float roughness) {
     content::Material m;

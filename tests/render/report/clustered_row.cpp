@@ -6,6 +6,7 @@
 
 #include "../test_scene.h"
 #include "image_difference.h"
+#include "median.h"
 #include "report_context.h"
 
 namespace candela::report {
@@ -31,11 +32,6 @@ TestScene floorScene(size_t count, uint32_t width, uint32_t height) {
     for (size_t i = 0; i < count; ++i)
         scene.lights.push_back(pointLight({x(rng), y(rng), z(rng)}, 500.0f, radius(rng)));
     return scene;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
 }  // namespace

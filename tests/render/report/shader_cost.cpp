@@ -5,17 +5,13 @@
 #include <chrono>
 #include <span>
 
+#include "median.h"
 #include "report_table.h"
 #include "shaders/report_cost.comp.spv.h"
 
 namespace candela::report {
 
 namespace {
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values.empty() ? 0.0 : values[values.size() / 2];
-}
 
 double quantile(std::vector<double> values, double q) {
     std::sort(values.begin(), values.end());

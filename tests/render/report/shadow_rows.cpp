@@ -11,6 +11,7 @@
 
 #include "../shadow_reference.h"
 #include "../test_scene.h"
+#include "median.h"
 #include "report_context.h"
 
 namespace candela::report {
@@ -19,11 +20,6 @@ using namespace candela::render;
 using namespace candela::render::test;
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 struct ShadowScene {
     TestScene scene;

@@ -10,6 +10,7 @@
 #include "../ibl_sphere_rows.h"
 #include "candela/render/environment.h"
 #include "image_difference.h"
+#include "median.h"
 #include "report_context.h"
 
 namespace candela::report {
@@ -20,11 +21,6 @@ using namespace candela::render::test;
 namespace {
 
 constexpr const char* kSky = "env/chinese_garden_1k.exr";
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 }  // namespace
 
