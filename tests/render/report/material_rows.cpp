@@ -25,8 +25,6 @@ using namespace candela::render::test;
 
 namespace {
 
-constexpr const char* kSky = "env/chinese_garden_1k.exr";
-
 struct ModeRun {
     CapturedFrame image;
     std::vector<double> ms;
@@ -37,14 +35,7 @@ struct ModeRun {
 void addMaterialRows(ReportContext& context) {
     const bool quick = context.budget.quick;
     GpuContext& gpu = context.harness.context();
-    content::Diagnostics diagnostics;
-    EnvironmentCacheOptions cache{std::filesystem::temp_directory_path() / "candela_report_sky"};
-    std::shared_ptr<const Environment> sky = Environment::load(
-        gpu, std::filesystem::path(CANDELA_SHARED_ASSETS) / kSky, diagnostics, cache);
-    if (sky->stats().fallback) {
-        throw std::runtime_error(std::string("cannot load the report's sky ") + kSky + ": " +
-                                 diagnostics.toString());
-    }
+    std::shared_ptr<const Environment> sky = loadReportSky(gpu);
     const uint32_t width = quick ? 96 : 288, height = quick ? 48 : 128;
     const uint32_t referenceSamples = quick ? 64 : 1024;
     const uint32_t repetitions = quick ? 1 : 3;
@@ -99,7 +90,7 @@ void addMaterialRows(ReportContext& context) {
                       "relative RMSE over the spheres' pixels (12 spheres: metal and grey "
                       "dielectric, roughness 0..1; %ux%u, %s, no lights); reference: %u + %u "
                       "samples per pixel",
-                      width, height, kSky, referenceSamples, referenceSamples);
+                      width, height, kReportSky, referenceSamples, referenceSamples);
         char where[240];
         std::snprintf(where, sizeof(where),
                       "max %.1f x the mean at pixel (%u, %u); energy bias %+.1f %%; lighting "

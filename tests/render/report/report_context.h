@@ -3,6 +3,7 @@
 // and the report being filled.
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "../stability/compute_harness.h"
@@ -24,6 +25,11 @@ struct ReportContext {
 };
 
 // The sections, one file each.
+// The image-based-lighting rows' sky, from the shared assets; loadReportSky throws naming the
+// file when it cannot be loaded.
+inline constexpr const char* kReportSky = "env/chinese_garden_1k.exr";
+std::shared_ptr<const render::Environment> loadReportSky(render::GpuContext& gpu);
+
 void addBrdfRows(ReportContext& context);
 void addEnvironmentBrdfRows(ReportContext& context, const std::vector<float>& lut,
                             uint32_t lutSize);

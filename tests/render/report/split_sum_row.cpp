@@ -18,23 +18,23 @@ namespace candela::report {
 using namespace candela::render;
 using namespace candela::render::test;
 
-namespace {
 
-constexpr const char* kSky = "env/chinese_garden_1k.exr";
-
-}  // namespace
+std::shared_ptr<const Environment> loadReportSky(GpuContext& gpu) {
+    content::Diagnostics diagnostics;
+    EnvironmentCacheOptions cache{std::filesystem::temp_directory_path() / "candela_report_sky"};
+    std::shared_ptr<const Environment> sky = Environment::load(
+        gpu, std::filesystem::path(CANDELA_SHARED_ASSETS) / kReportSky, diagnostics, cache);
+    if (sky->stats().fallback) {
+        throw std::runtime_error(std::string("cannot load the report's sky ") + kReportSky + ": " +
+                                 diagnostics.toString());
+    }
+    return sky;
+}
 
 void addSplitSumRow(ReportContext& context) {
     const bool quick = context.budget.quick;
     GpuContext& gpu = context.harness.context();
-    content::Diagnostics diagnostics;
-    EnvironmentCacheOptions cache{std::filesystem::temp_directory_path() / "candela_report_sky"};
-    std::shared_ptr<const Environment> sky = Environment::load(
-        gpu, std::filesystem::path(CANDELA_SHARED_ASSETS) / kSky, diagnostics, cache);
-    if (sky->stats().fallback) {
-        throw std::runtime_error(std::string("cannot load the report's sky ") + kSky + ": " +
-                                 diagnostics.toString());
-    }
+    std::shared_ptr<const Environment> sky = loadReportSky(gpu);
     const uint32_t width = quick ? 96 : 288, height = quick ? 48 : 128;
     const uint32_t referenceSamples = quick ? 64 : 2048;
     const uint32_t repetitions = quick ? 1 : 3;
@@ -66,7 +66,7 @@ void addSplitSumRow(ReportContext& context) {
     std::snprintf(metric, sizeof(metric),
                   "relative RMSE over the spheres' pixels (12 spheres: metal and grey dielectric, "
                   "roughness 0..1; %ux%u, %s, no lights); reference: %u + %u samples per pixel",
-                  width, height, kSky, referenceSamples, referenceSamples);
+                  width, height, kReportSky, referenceSamples, referenceSamples);
     for (IblMode mode : {IblMode::SplitSum, IblMode::Mobile}) {
         const CapturedFrame& reference = images[IblMode::Reference];
         ImageDifference d = imageDifference(images[mode], reference, spheres(0, 11));
