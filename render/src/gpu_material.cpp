@@ -55,6 +55,7 @@ GpuMaterial packMaterial(const content::Material& m) {
     g.specular = m.specular;
     g.normalScale = m.normalScale;
     g.occlusionStrength = m.occlusionStrength;
+    g.cavity = m.cavity;
     g.alphaCutoff = m.alphaMode == content::AlphaMode::Mask ? m.alphaCutoff : -1.0f;
     g.shadingModel = static_cast<uint32_t>(shadingModelId(m.shadingModel));
     g.transforms[0] = packTransform(m.baseColorTexture);

@@ -25,7 +25,7 @@ struct GpuMaterial {
     float occlusionStrength;
     float alphaCutoff;  // < 0: opaque (no alpha test)
     uint32_t shadingModel;
-    uint32_t pad;
+    float cavity;  // content::Material::cavity; min'ed into the occlusion
     // KHR_materials_specular textures scale `specular` per texel by specularTexture.a *
     // max(this.rgb * specularColorTexture.rgb); rgb = specularColorFactor / its largest
     // channel, so untextured (white) slots leave `specular` exactly as it is.

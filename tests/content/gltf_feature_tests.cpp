@@ -289,6 +289,33 @@ TEST(GltfFeatures, AnisotropyAndClearcoatExtensions) {
     EXPECT_FALSE(m->materials[3].clearCoated());
 }
 
+// Issue 25: extras.cavity (UE4's Cavity) in [0, 1]; out of range is clamped and a non-number
+// ignored, each with a warning naming the file and the material.
+TEST(GltfFeatures, CavityExtraIsReadClampedAndWarned) {
+    json doc = quadDocument();
+    doc["materials"] = json::array({
+        {{"name", "crevice"}, {"extras", {{"cavity", 0.25}}}},
+        {{"name", "too bright"}, {"extras", {{"cavity", 2.5}}}},
+        {{"name", "wordy"}, {"extras", {{"cavity", "deep"}}}},
+        {{"name", "plain"}},
+    });
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics, "cavity.gltf");
+    ASSERT_TRUE(m) << diagnostics.toString();
+    ASSERT_EQ(m->materials.size(), 4u);
+    EXPECT_FLOAT_EQ(m->materials[0].cavity, 0.25f);
+    EXPECT_FLOAT_EQ(m->materials[1].cavity, 1.0f);
+    EXPECT_FLOAT_EQ(m->materials[2].cavity, 1.0f);
+    EXPECT_FLOAT_EQ(m->materials[3].cavity, 1.0f);
+    const std::string text = diagnostics.toString();
+    EXPECT_FALSE(diagnostics.mentions("crevice")) << text;
+    EXPECT_TRUE(diagnostics.mentions("cavity.gltf")) << text;
+    EXPECT_TRUE(diagnostics.mentions("'too bright'")) << text;
+    EXPECT_TRUE(diagnostics.mentions("outside [0, 1]")) << text;
+    EXPECT_TRUE(diagnostics.mentions("'wordy'")) << text;
+    EXPECT_TRUE(diagnostics.mentions("not a finite number")) << text;
+}
+
 TEST(GltfFeatures, CamerasMatricesStripsU8IndicesAndVertexColours) {
     json doc = quadDocument();
     testing::BinaryBuffer buffer;

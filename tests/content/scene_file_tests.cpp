@@ -170,6 +170,38 @@ TEST(SceneFile, MaterialExtensionsRoundTripAndAreOnlyWrittenWhenUsed) {
     EXPECT_EQ(sceneToJson(*loaded, error), sceneToJson(scene, error));
 }
 
+// Issue 25: a material override's cavity survives save and load, is written only when not 1,
+// and a value outside [0, 1] is clamped with a warning naming the file, pointer and material.
+TEST(SceneFile, CavityRoundTripsOnlyWhenSetAndOutOfRangeIsClampedWithAWarning) {
+    SceneDocument scene = exampleScene();
+    std::string error;
+    EXPECT_EQ(sceneToJson(scene, error).find("cavity"), std::string::npos);
+    scene.entities[1].materialOverrides[0].material.cavity = 0.375f;
+    const auto path = testing::tempPath("cavity.scene.json");
+    ASSERT_EQ(saveSceneFile(path, scene), "");
+    Diagnostics diagnostics;
+    auto loaded = loadSceneFile(path, diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_EQ(loaded->entities[1].materialOverrides[0].material.cavity, 0.375f);
+    EXPECT_EQ(sceneToJson(*loaded, error), sceneToJson(scene, error));
+
+    const std::string text = R"({
+      "format": "candela.scene", "version": 1,
+      "entities": [
+        {"name": "pitted", "mesh": {"gltf": "x.glb"}, "materialOverrides": [{"primitive": 0,
+          "material": {"name": "stone", "cavity": -0.5}}]}
+      ]})";
+    Diagnostics bad;
+    auto parsed = parseSceneJson(std::as_bytes(std::span(text)), "c.json", bad);
+    ASSERT_TRUE(parsed) << bad.toString();
+    ASSERT_EQ(parsed->entities[0].materialOverrides.size(), 1u);
+    EXPECT_EQ(parsed->entities[0].materialOverrides[0].material.cavity, 0.0f);
+    EXPECT_TRUE(
+        bad.mentions("c.json: /entities/0/materialOverrides/0/material/cavity: warning: "
+                     "cavity of material 'stone'"))
+        << bad.toString();
+}
+
 // Issue 26: the top-level "brdf" survives save and load; a misspelt value is an error naming
 // the file and /brdf, and the scene still loads with the engine's default.
 TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {

@@ -417,6 +417,15 @@ TEST_F(EditorModel, MaterialEditsWriteOverridesAndKeepTheModelMaterial) {
     EXPECT_FALSE(effectiveMaterial(*scene, floor, 0).clearCoated());
     ASSERT_TRUE(scene->undo());
     EXPECT_FALSE(effectiveMaterial(*scene, floor, 0).anisotropic());
+
+    // Issue 25: Cavity edits like any other field and is clamped to [0, 1].
+    ASSERT_TRUE(scene->execute(propertyEdit(*scene, floor, "material.cavity", {0.4f}, error)));
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).cavity, 0.4f);
+    ASSERT_TRUE(scene->execute(propertyEdit(*scene, floor, "material.cavity", {3.0f}, error)));
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).cavity, 1.0f);
+    ASSERT_TRUE(scene->undo());
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).cavity, 1.0f);
 }
 
 }  // namespace

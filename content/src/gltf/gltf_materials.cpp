@@ -157,6 +157,25 @@ void readClearcoatExtension(Context& context, const std::string& element,
     }
 }
 
+// extras.cavity (UE4's Cavity, [0, 1]): unlike the other extras, a value out of range is
+// named in a warning before it is clamped, since a cavity of 2 or -1 is a mistake.
+void readCavityExtra(Context& context, const std::string& element, const tinygltf::Value& extras,
+                     Material& material) {
+    if (!member(extras, "cavity")) return;
+    const std::string where = "extras.cavity of material '" + material.name + "'";
+    float cavity = 1;
+    if (!readNumber(extras, "cavity", cavity)) {
+        context.warning(element, where + " is not a finite number; ignored (using 1)");
+        return;
+    }
+    material.cavity = std::clamp(cavity, 0.0f, 1.0f);
+    if (material.cavity != cavity) {
+        context.warning(element, where + " " + std::to_string(cavity) +
+                                     " is outside [0, 1]; clamped to " +
+                                     std::to_string(material.cavity));
+    }
+}
+
 void readEngineExtras(Context& context, const std::string& element, const tinygltf::Value& extras,
                       Material& material) {
     if (!extras.IsObject()) return;
@@ -192,6 +211,7 @@ void readEngineExtras(Context& context, const std::string& element, const tinygl
     number("subsurfaceOpacity", material.subsurfaceOpacity, 0.0f, 1.0f);
     color("diffuseColor", material.diffuseColor);
     color("specularColor", material.specularColor);
+    readCavityExtra(context, element, extras, material);
 }
 
 Material convertMaterial(Context& context, const tinygltf::Material& source,

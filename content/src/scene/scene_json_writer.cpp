@@ -46,6 +46,8 @@ struct Writer {
 
     json material(const Material& m, const std::string& p) {
         json out = baseMaterial(m, p);
+        // Cavity only when set, so files of materials without it stay as they were.
+        if (m.cavity != 1.0f) out["cavity"] = number(m.cavity, p + "/cavity");
         // The extensions only when used, so files of materials without them stay as they were.
         if (m.anisotropic() || m.anisotropyTexture.present()) {
             out["anisotropyStrength"] = number(m.anisotropyStrength, p + "/anisotropyStrength");

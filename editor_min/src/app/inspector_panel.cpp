@@ -200,6 +200,8 @@ void drawMaterials(EditorScene& scene, ecs::Entity e) {
                 edited(ImGui::SliderFloat("Metallic", &m.metallicFactor, 0.0f, 1.0f));
                 edited(ImGui::SliderFloat("Roughness", &m.roughnessFactor, 0.0f, 1.0f));
                 edited(ImGui::SliderFloat("Specular", &m.specular, 0.0f, 1.0f));
+                // UE4's Cavity: darkens the sky's light only (1: none).
+                edited(ImGui::SliderFloat("Cavity", &m.cavity, 0.0f, 1.0f));
             }
             if (m.shadingModel == content::ShadingModel::Subsurface) {
                 edited(ImGui::ColorEdit3("Subsurface colour", m.subsurfaceColor.data()));

@@ -1,5 +1,6 @@
 #include "model/property_edits.h"
 
+#include <algorithm>
 #include <functional>
 #include <map>
 
@@ -99,6 +100,8 @@ const std::map<std::string, Field<content::Material>>& fields() {
         {"metallic", {1, [](M& m, const Values& v) { m.metallicFactor = v[0]; }}},
         {"roughness", {1, [](M& m, const Values& v) { m.roughnessFactor = v[0]; }}},
         {"specular", {1, [](M& m, const Values& v) { m.specular = v[0]; }}},
+        // Clamped as the loaders clamp it: [0, 1], 1 none.
+        {"cavity", {1, [](M& m, const Values& v) { m.cavity = std::clamp(v[0], 0.0f, 1.0f); }}},
         {"anisotropy", {1, [](M& m, const Values& v) { m.anisotropyStrength = v[0]; }}},
         {"anisotropyRotation", {1, [](M& m, const Values& v) { m.anisotropyRotation = v[0]; }}},
         {"clearcoat", {1, [](M& m, const Values& v) { m.clearcoatFactor = v[0]; }}},

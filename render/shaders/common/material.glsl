@@ -26,7 +26,7 @@ struct Material {
     float occlusionStrength;
     float alphaCutoff;
     uint shadingModel;
-    uint pad;
+    float cavity;  // see gpu_material.h
     vec4 specularColorScale;  // see gpu_material.h
     vec4 anisotropy;  // strength, cos(rotation), sin(rotation)
     vec4 clearcoat;   // factor, roughness, normal scale
@@ -111,6 +111,9 @@ MaterialSample evaluateMaterial(Material m, MaterialUv uv, vec4 baseColor, vec3 
     s.roughness = saturate(m.roughness * metalRough.g);
     s.metallic = saturate(m.metallic * metalRough.b);
     s.occlusion = 1.0 + m.occlusionStrength * (sampleSlot(occlusionTexture, m.transforms[3], uv).r - 1.0);
+    // Cavity joins the occlusion texture by the same rule AO uses: the minimum (both describe
+    // the same small-scale shadowing; the product would count it twice). Cavity 1: unchanged.
+    s.occlusion = min(s.occlusion, m.cavity);
 
     vec3 N = safeNormalize(normal);
     if (!frontFacing) N = -N;  // double-sided surfaces light their back side

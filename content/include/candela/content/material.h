@@ -41,6 +41,10 @@ struct Material {
     float normalScale = 1;
     TextureRef occlusionTexture;  // linear; R = occlusion
     float occlusionStrength = 1;
+    // UE4's Cavity (seed 000 §2.3): small-scale shadowing of the ambient (sky) light finer than
+    // the runtime shadows and AO resolve, in [0, 1]; 1: none. Read from extras.cavity. Combined
+    // with the occlusion texture by min (render/README.md "Ambient occlusion").
+    float cavity = 1;
     TextureRef emissiveTexture;  // sRGB
     std::array<float, 3> emissiveFactor{0, 0, 0};
     float emissiveStrength = 1;  // KHR_materials_emissive_strength
