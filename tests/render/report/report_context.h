@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "../stability/compute_harness.h"
+#include "candela/render/environment.h"
 #include "report_table.h"
 #include "shader_cost.h"
 
