@@ -139,15 +139,17 @@ TEST(ClearCoatFurnace, CoatAloneReflectsItsFresnel) {
 
 // A point light's highlight on a metal sphere whose tangents run around it (horizontally in
 // the image): isotropic, about as wide as tall; anisotropic (strength 0.9), stretched along the
-// tangent, so clearly wider than tall. Extents of the pixels above a tenth of the peak.
+// tangent, so clearly wider than tall; with anisotropyRotation a quarter turn, taller than
+// wide. Extents of the pixels above a tenth of the peak.
 TEST(AnisotropicLobe, StretchesTheHighlightAlongTheTangent) {
     GpuContext& context = sharedContext();
-    auto extents = [&](float strength) {
+    auto extents = [&](float strength, float rotation = 0.0f) {
         Material m;
         m.baseColorFactor = {1.0f, 1.0f, 1.0f, 1.0f};
         m.metallicFactor = 1.0f;
         m.roughnessFactor = 0.3f;
         m.anisotropyStrength = strength;
+        m.anisotropyRotation = rotation;
         TestScene scene = sphereScene(m, nullptr);
         scene.width = scene.height = 128;
         scene.lookAt({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
@@ -169,11 +171,16 @@ TEST(AnisotropicLobe, StretchesTheHighlightAlongTheTangent) {
     };
     const auto [isoWidth, isoHeight] = extents(0.0f);
     const auto [anisoWidth, anisoHeight] = extents(0.9f);
-    std::printf("highlight extents (px): isotropic %.0f x %.0f, anisotropic %.0f x %.0f\n",
-                isoWidth, isoHeight, anisoWidth, anisoHeight);
+    // anisotropyRotation a quarter turn: stretched along the bitangent (vertically) instead.
+    const auto [turnedWidth, turnedHeight] = extents(0.9f, 0.5f * 3.14159265f);
+    std::printf(
+        "highlight extents (px): isotropic %.0f x %.0f, anisotropic %.0f x %.0f, rotated a "
+        "quarter turn %.0f x %.0f\n",
+        isoWidth, isoHeight, anisoWidth, anisoHeight, turnedWidth, turnedHeight);
     EXPECT_NEAR(isoWidth / isoHeight, 1.0f, 0.25f);
     EXPECT_GT(anisoWidth / anisoHeight, 1.5f);
     EXPECT_GT(anisoWidth, isoWidth);
+    EXPECT_GT(turnedHeight / turnedWidth, 1.5f);
     EXPECT_EQ(context.validationMessages(), 0u);
 }
 
