@@ -36,8 +36,12 @@ std::string readBytes(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// One folder per test: ctest runs the tests in parallel processes, and several write files of
+// the same names (default.json, flag.exr, ...), which raced in one shared folder.
 std::filesystem::path tempDir() {
-    auto dir = std::filesystem::path(testing::TempDir()) / "candela_cli";
+    const testing::TestInfo* test = testing::UnitTest::GetInstance()->current_test_info();
+    auto dir = std::filesystem::path(testing::TempDir()) / "candela_cli" /
+               (test ? std::string(test->name()) : std::string("shared"));
     std::filesystem::create_directories(dir);
     return dir;
 }
