@@ -7,6 +7,7 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/renderer_options.h"
 #include "offscreen_frame.h"
+#include "test_scene.h"
 
 namespace candela::render::test {
 
@@ -28,5 +29,18 @@ inline std::filesystem::path freshDirectory(const std::string& name) {
 }
 
 inline constexpr IblMode kIblModes[] = {IblMode::SplitSum, IblMode::Mobile, IblMode::Reference};
+
+// A sphere of radius 1 at the origin under `environment`, seen from 3 m in a 64x64 frame: the
+// centre 16x16 pixels are on it.
+inline TestScene sphereInSky(const content::Material& material,
+                             std::shared_ptr<const Environment> environment) {
+    TestScene scene;
+    scene.width = 64;
+    scene.height = 64;
+    scene.add(content::makeSphere(1.0f, 96, 48), material);
+    scene.lookAt({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
+    scene.environment = std::move(environment);
+    return scene;
+}
 
 }  // namespace candela::render::test

@@ -79,18 +79,6 @@ std::pair<double, double> integrateEq8(double roughness, double NoV, bool correl
     return {a / kPoints, b / kPoints};
 }
 
-// A sphere of radius 1 at the origin, seen from 3 m: the centre 16x16 pixels are on it.
-TestScene sphereInSky(const candela::content::Material& material,
-                      std::shared_ptr<const Environment> environment) {
-    TestScene scene;
-    scene.width = 64;
-    scene.height = 64;
-    scene.add(makeSphere(1.0f, 96, 48), material);
-    scene.lookAt({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
-    scene.environment = std::move(environment);
-    return scene;
-}
-
 candela::content::Material metal(float roughness) {
     candela::content::Material m;
     m.baseColorFactor = {1.0f, 1.0f, 1.0f, 1.0f};

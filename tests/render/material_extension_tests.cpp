@@ -18,17 +18,6 @@ using candela::content::Material;
 
 namespace {
 
-// A sphere of radius 1 seen from 3 m, filling the middle of a 64x64 frame.
-TestScene sphereScene(const Material& material, std::shared_ptr<const Environment> environment) {
-    TestScene scene;
-    scene.width = 64;
-    scene.height = 64;
-    scene.add(makeSphere(1.0f, 96, 48), material);
-    scene.lookAt({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
-    scene.environment = std::move(environment);
-    return scene;
-}
-
 float frameMax(const CapturedFrame& frame) {
     float m = 0.0f;
     for (float v : frame.hdrRgb)
@@ -87,12 +76,12 @@ TEST(ClearCoatFurnace, NoConfigurationReflectsMoreThanTheSky) {
             m.metallicFactor = base.metallic;
             m.roughnessFactor = base.roughness;
             m.specular = base.specular;
-            const CapturedFrame bare = sphereScene(m, sky).render(context, options);
+            const CapturedFrame bare = sphereInSky(m, sky).render(context, options);
             for (const auto& [factor, coatRoughness] : coats) {
                 if (reference && factor != 0.5f) continue;
                 m.clearcoatFactor = factor;
                 m.clearcoatRoughnessFactor = coatRoughness;
-                CapturedFrame frame = sphereScene(m, sky).render(context, options);
+                CapturedFrame frame = sphereInSky(m, sky).render(context, options);
                 float worstGain = -1e30f;  // coated - max(1, bare), over every pixel
                 for (size_t i = 0; i < frame.hdrRgb.size(); ++i) {
                     worstGain =
@@ -127,10 +116,10 @@ TEST(ClearCoatFurnace, CoatAloneReflectsItsFresnel) {
     m.roughnessFactor = 0.5f;
     RendererOptions options;
     options.ibl = IblMode::SplitSum;
-    const double bare = centreMean(sphereScene(m, sky).render(context, options));
+    const double bare = centreMean(sphereInSky(m, sky).render(context, options));
     m.clearcoatFactor = 1.0f;
     m.clearcoatRoughnessFactor = 0.0f;
-    const double coated = centreMean(sphereScene(m, sky).render(context, options));
+    const double coated = centreMean(sphereInSky(m, sky).render(context, options));
     std::printf("black base: bare %.5f, coated %.5f\n", bare, coated);
     EXPECT_LT(bare, 1e-3);
     EXPECT_NEAR(coated, 0.04, 0.01);
@@ -150,7 +139,7 @@ TEST(AnisotropicLobe, StretchesTheHighlightAlongTheTangent) {
         m.roughnessFactor = 0.3f;
         m.anisotropyStrength = strength;
         m.anisotropyRotation = rotation;
-        TestScene scene = sphereScene(m, nullptr);
+        TestScene scene = sphereInSky(m, nullptr);
         scene.width = scene.height = 128;
         scene.lookAt({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
         scene.lights.push_back(pointLight({0.0f, 0.0f, 4.0f}, 5000.0f, 50.0f));
@@ -201,7 +190,7 @@ TEST(AnisotropicLobe, WhiteFurnaceReflectsTheSky) {
             RendererOptions options;
             options.ibl = mode;
             options.referenceSamples = 256;
-            CapturedFrame frame = sphereScene(m, sky).render(context, options);
+            CapturedFrame frame = sphereInSky(m, sky).render(context, options);
             std::printf("%-10s anisotropic white metal roughness %.1f: centre %.4f, max %.4f\n",
                         iblModeName(mode), roughness, centreMean(frame), frameMax(frame));
             EXPECT_NEAR(centreMean(frame), 0.99, 0.02) << iblModeName(mode);
