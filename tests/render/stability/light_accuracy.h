@@ -22,6 +22,7 @@ enum class LightFunction : uint32_t {
     SphereRepresentativePoint = 7,
     LocalLight = 8,
     Product = 9,
+    LtcQuad = 10,
 };
 
 using Float4 = std::array<float, 4>;

@@ -5,6 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/lights.glsl"
+#include "common/ltc.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -22,6 +23,9 @@ const uint kSphereRepresentativePoint = 7u;  // (a.xyz L, b.xyz R, c.x sourceRad
 // d.w alpha -> (diffuse, specular, incident illuminance, |specularL|)
 const uint kLocalLight = 8u;
 const uint kProduct = 9u;  // a.x * a.y: tells whether the device keeps denormals
+// ltcPolygonIntegral of the quad (a.xyz, b.xyz, c.xyz, d.xyz) with M^-1 = rows
+// (a.w, 0, b.w), (0, 1, 0), (c.w, 0, d.w), as the table stores it.
+const uint kLtcQuad = 10u;
 
 struct LightSample {
     vec4 a;
@@ -71,6 +75,11 @@ vec4 evaluate(LightSample s) {
                         length(o.specularL));
         }
         case kProduct: return vec4(s.a.x * s.a.y);
+        case kLtcQuad: {
+            mat3 minv = mat3(vec3(s.a.w, 0.0, s.c.w), vec3(0.0, 1.0, 0.0), vec3(s.b.w, 0.0, s.d.w));
+            vec3 quad[4] = vec3[4](s.a.xyz, s.b.xyz, s.c.xyz, s.d.xyz);
+            return vec4(ltcPolygonIntegral(minv, quad, 4));
+        }
         default: return vec4(0.0);
     }
 }
