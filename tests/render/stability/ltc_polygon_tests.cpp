@@ -11,6 +11,7 @@
 
 #include "error_stats.h"
 #include "light_accuracy.h"
+#include "ltc_fit.h"
 
 using namespace candela::stability;
 
@@ -153,5 +154,109 @@ TEST(LtcPolygon, HorizonClippingLetsNoLightThroughFromBelow) {
     }
     EXPECT_EQ(values[straddling][0], 0.0f) << "wall below the horizon";
     EXPECT_EQ(values[straddling + 1][0], 0.0f) << "ceiling seen from its back";
+    EXPECT_EQ(harness.validationMessages(), 0u);
+}
+
+namespace {
+
+// Whether the ray from the origin along l crosses the quad (a parallelogram p0, p1, p3).
+bool rayHitsQuad(const candela::ltc::Vec3& l, const Quad& q) {
+    const auto& p = q.p;
+    const double e1[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+    const double e2[3] = {p[3][0] - p[0][0], p[3][1] - p[0][1], p[3][2] - p[0][2]};
+    const double d[3] = {l.x, l.y, l.z};
+    // Moller-Trumbore with the parallelogram's (u, v) in [0, 1]^2.
+    const double h[3] = {d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2],
+                         d[0] * e2[1] - d[1] * e2[0]};
+    const double a = e1[0] * h[0] + e1[1] * h[1] + e1[2] * h[2];
+    if (std::fabs(a) < 1e-15) return false;
+    const double s[3] = {-p[0][0], -p[0][1], -p[0][2]};
+    const double u = (s[0] * h[0] + s[1] * h[1] + s[2] * h[2]) / a;
+    if (u < 0.0 || u > 1.0) return false;
+    const double qv[3] = {s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2],
+                          s[0] * e1[1] - s[1] * e1[0]};
+    const double v = (d[0] * qv[0] + d[1] * qv[1] + d[2] * qv[2]) / a;
+    if (v < 0.0 || v > 1.0) return false;
+    return (e2[0] * qv[0] + e2[1] * qv[1] + e2[2] * qv[2]) / a > 0.0;
+}
+
+// The lobe's integral over the quad by visible-normal sampling, n x n stratified samples.
+double lobeIntegralOverQuad(const candela::ltc::GgxLobe& lobe, const Quad& q, int n) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            double pdf = 0.0;
+            const candela::ltc::Vec3 l = lobe.sample((i + 0.5) / n, (j + 0.5) / n, &pdf);
+            if (pdf > 0.0 && rayHitsQuad(l, q)) sum += lobe.value(l) / pdf;
+        }
+    }
+    return sum / (double(n) * n);
+}
+
+}  // namespace
+
+// The specular of a rectangular light by LTC (a cell fitted by candela-ltc-fit's code, times
+// its magnitude) against the lobe's own integral over the rectangle, for rectangles around the
+// mirror direction and off it, where the rectangle catches at least 5 % of the lobe. Measured
+// over 26 rectangles (3 roughnesses x 2 views): mean 1.2 %, worst 5.4 % (roughness 1 at a
+// 60 degree view); issue 15's goal is 2 %, so the bound here guards the fit, not the goal.
+TEST(LtcPolygon, SpecularOverARectangleMatchesTheLobesIntegral) {
+    using namespace candela::ltc;
+    ComputeHarness harness;
+    FitOptions options;
+    options.samplesPerSide = 24;
+    struct Case {
+        double roughness, cosView, reference;
+        Quad quad;
+    };
+    std::vector<Case> cases;
+    std::vector<LightSample> samples;
+    for (double roughness : {0.15, 0.4, 1.0}) {
+        Shape previous{};
+        const Shape* start = nullptr;
+        for (double cosView : {1.0, 0.5}) {
+            const CellFit fit = fitCell(roughness, cosView, options, start);
+            previous = fit.shape;
+            start = &previous;
+            const GgxLobe lobe{roughness * roughness, cosView};
+            const double sinView = std::sqrt(1.0 - cosView * cosView);
+            // The mirror direction is (-sinView, 0, cosView): ceilings at height 1 around where
+            // it meets z = 1, of half-size 0.1 to 2 m, centred on it and 0.5 m off.
+            const double mirrorX = -sinView / cosView;
+            for (double halfSize : {0.1, 0.5, 2.0}) {
+                for (double offset : {0.0, 0.5}) {
+                    const double cx = mirrorX + offset;
+                    Case c{roughness, cosView, 0.0,
+                           ceiling(cx - halfSize, cx + halfSize, -halfSize, halfSize, 1.0)};
+                    c.reference = lobeIntegralOverQuad(lobe, c.quad, 400);
+                    if (c.reference < 0.05 * fit.cell.magnitude) continue;
+                    LightSample s = quadSample(c.quad);
+                    s.a[3] = float(fit.cell.inverse00), s.b[3] = float(fit.cell.inverse02);
+                    s.c[3] = float(fit.cell.inverse20), s.d[3] = float(fit.cell.inverse22);
+                    samples.push_back(s);
+                    c.reference /= fit.cell.magnitude;  // compared with the unit-mass LTC
+                    cases.push_back(c);
+                }
+            }
+        }
+    }
+    const auto values = evaluateOnDevice(harness, LightFunction::LtcQuad, samples);
+    WorstError relative;
+    double sumRelative = 0.0;
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const double e = std::fabs(values[i][0] - cases[i].reference) / cases[i].reference;
+        sumRelative += e;
+        relative.add(e, [&] {
+            char text[160];
+            std::snprintf(text, sizeof text, "roughness %.2f cos %.2f: ltc %.4f lobe %.4f",
+                          cases[i].roughness, cases[i].cosView, values[i][0], cases[i].reference);
+            return std::string(text);
+        });
+    }
+    relative.print("LTC specular over a rectangle", "relative");
+    std::printf("  mean relative error %.4f over %zu rectangles\n",
+                sumRelative / double(cases.size()), cases.size());
+    EXPECT_GT(cases.size(), 20u);
+    EXPECT_LE(relative.error, 0.08);
     EXPECT_EQ(harness.validationMessages(), 0u);
 }
