@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
     text += line;
     for (const CellFit& fit : table) {
         const TableCell& c = fit.cell;
-        std::snprintf(line, sizeof line, "    {%.9gf, %.9gf, %.9gf, %.9gf, %.9gf, %.9gf},\n",
+        std::snprintf(line, sizeof line, "    {%#.9gf, %#.9gf, %#.9gf, %#.9gf, %#.9gf, %#.9gf},\n",
                       c.inverse00, c.inverse02, c.inverse20, c.inverse22, c.magnitude, c.fresnel);
         text += line;
     }

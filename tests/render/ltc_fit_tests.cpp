@@ -78,3 +78,37 @@ TEST(LtcFit, FittedCellsAreCloseToTheLobe) {
         }
     }
 }
+
+namespace {
+#include "ltc_ggx_table.inc"
+}  // namespace
+
+// The checked-in table is what candela-ltc-fit makes of today's lobe: at cells across it, the
+// magnitude and Fresnel part match a fresh integration, and the stored M^-1 is as close to the
+// lobe as a fresh fit of that cell (a stale table, fitted to another BRDF, fails both).
+TEST(LtcFit, TheCheckedInTableFitsTodaysLobe) {
+    ASSERT_EQ(kLtcTableSize, 64);
+    FitOptions options;
+    options.samplesPerSide = 24;
+    for (int row : {5, 20, 40, 63}) {
+        for (int column : {0, 20, 45}) {
+            const float* stored = kLtcTable[row * kLtcTableSize + column];
+            const double roughness = tableRoughness(row, kLtcTableSize);
+            const GgxLobe lobe{roughness * roughness, tableCosView(column, kLtcTableSize)};
+            double magnitude = 0, fresnel = 0;
+            integrateMagnitude(lobe, 128, &magnitude, &fresnel);  // the tool's 4 x 32 per side
+            EXPECT_NEAR(stored[4], magnitude, 1e-6) << row << " " << column;
+            EXPECT_NEAR(stored[5], fresnel, 1e-6) << row << " " << column;
+            TableCell cell;
+            cell.inverse00 = stored[0], cell.inverse02 = stored[1];
+            cell.inverse20 = stored[2], cell.inverse22 = stored[3];
+            const double storedDistance = l1Distance(
+                lobe, magnitude, TransformedCosine::from(inverse(cell.inverseMatrix())), 48);
+            const CellFit fresh =
+                fitCell(roughness, tableCosView(column, kLtcTableSize), options, nullptr);
+            const double freshDistance = l1Distance(
+                lobe, magnitude, TransformedCosine::from(inverse(fresh.cell.inverseMatrix())), 48);
+            EXPECT_LE(storedDistance, freshDistance + 0.02) << row << " " << column;
+        }
+    }
+}
