@@ -56,9 +56,10 @@ struct GBufferTargets {
     }
 
     static ImageDesc motionDesc(uint32_t width, uint32_t height) {
-        return {kMotionFormat, width,
-                height,        1,
-                false,         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
+        return {kMotionFormat, width, height, 1, false,
+                // Transfer source: tests read it back (RendererOptions::captureMotionVectors).
+                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT};
     }
 
     std::array<ImageRef, 4> color;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <glm/gtc/packing.hpp>
 
 #include "candela/render/environment.h"
 #include "candela/render/frame_submitter.h"
@@ -599,6 +600,7 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
         features_ = {"test_triangle"};
     } else {
         hdr.version = declareScene(inputs, *resources, hdr.id);
+        if (options_.captureMotionVectors) declareMotionCapture();
     }
     // Auto exposure reads the histogram of the previous frame, which begin() waited for.
     const bool sceneFrame = features_[0] != "test_triangle";
@@ -721,6 +723,38 @@ uint32_t Renderer::declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposur
     historyWrite_ ^= 1u;
     historyValid_ = true;
     return hdr.version;
+}
+
+void Renderer::declareMotionCapture() {
+    FrameGraph& g = *graph_;
+    const VkDeviceSize bytes = VkDeviceSize(width_) * height_ * 2 * sizeof(uint16_t);
+    if (motionReadback_.size() != bytes) {
+        motionReadback_ = GpuBuffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                    MemoryLocation::HostVisible);
+    }
+    const ResourceHandle motion{motionId_, motionVersion_};
+    const ResourceHandle readback = g.importBuffer("motion.readback", &motionReadback_, true);
+    auto p = g.addPass("motion_capture", PassKind::Device, [this, motion](PassContext& ctx) {
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {width_, height_, 1};
+        vkCmdCopyImageToBuffer(ctx.cmd(), ctx.image(motion).handle(),
+                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, motionReadback_.handle(), 1,
+                               &region);
+    });
+    p.read(motion, Use::TransferSrc);
+    p.write(readback, Use::TransferDst);
+    p.sideEffect();
+}
+
+std::vector<glm::vec2> Renderer::motionVectors() const {
+    std::vector<glm::vec2> motion;
+    if (motionReadback_.size() == 0 || !frameRecorded_) return motion;
+    const auto* halves = static_cast<const uint16_t*>(motionReadback_.mapped());
+    motion.resize(size_t(width_) * height_);
+    for (size_t i = 0; i < motion.size(); ++i)
+        motion[i] = {glm::unpackHalf1x16(halves[i * 2]), glm::unpackHalf1x16(halves[i * 2 + 1])};
+    return motion;
 }
 
 float Renderer::autoExposureEv100(const FrameInputs& inputs) {

@@ -258,26 +258,39 @@ VkBuffer SceneResources::vertexBufferOf(const DrawItem& draw) const {
                                                    : meshes_[draw.mesh].vertices.handle();
 }
 
-VkBuffer SceneResources::writeDeformedVertices(uint64_t instanceKey,
-                                               const content::Primitive& primitive,
-                                               std::span<const content::Float3> positions,
-                                               std::span<const content::Float3> normals) {
+VkBuffer SceneResources::previousVertexBufferOf(const DrawItem& draw) const {
+    return draw.previousDeformedVertices != VK_NULL_HANDLE ? draw.previousDeformedVertices
+                                                           : vertexBufferOf(draw);
+}
+
+SceneResources::DeformedVertices SceneResources::writeDeformedVertices(
+    uint64_t instanceKey, const content::Primitive& primitive,
+    std::span<const content::Float3> positions, std::span<const content::Float3> normals,
+    bool continuesLastFrame) {
     const size_t count = primitive.positions.size();
     auto it = deformed_.find(instanceKey);
-    if (it == deformed_.end() || it->second.size() != count * sizeof(MeshVertex)) {
-        GpuBuffer buffer(context_, std::max<size_t>(count, 1) * sizeof(MeshVertex),
-                         VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryLocation::HostVisible);
+    if (it == deformed_.end() || it->second.buffers[0].size() != count * sizeof(MeshVertex)) {
+        DeformedInstance instance;
         const std::vector<MeshVertex> vertices = interleave(primitive);
-        std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(MeshVertex));
-        it = deformed_.insert_or_assign(instanceKey, std::move(buffer)).first;
+        for (GpuBuffer& buffer : instance.buffers) {
+            buffer = GpuBuffer(context_, std::max<size_t>(count, 1) * sizeof(MeshVertex),
+                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryLocation::HostVisible);
+            std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(MeshVertex));
+        }
+        it = deformed_.insert_or_assign(instanceKey, std::move(instance)).first;
+        continuesLastFrame = false;  // the new buffers hold the bind pose, not last frame
     }
-    auto* vertices = static_cast<MeshVertex*>(it->second.mapped());
+    DeformedInstance& instance = it->second;
+    const uint32_t previous = instance.current;
+    instance.current ^= 1u;
+    auto* vertices = static_cast<MeshVertex*>(instance.buffers[instance.current].mapped());
     for (size_t i = 0; i < count && i < positions.size(); ++i) {
         std::memcpy(vertices[i].position, positions[i].data(), sizeof(vertices[i].position));
         if (i < normals.size())
             std::memcpy(vertices[i].normal, normals[i].data(), sizeof(vertices[i].normal));
     }
-    return it->second.handle();
+    const VkBuffer current = instance.buffers[instance.current].handle();
+    return {current, continuesLastFrame ? instance.buffers[previous].handle() : current};
 }
 
 const UploadedModel& SceneResources::addModel(const content::Model& model) {

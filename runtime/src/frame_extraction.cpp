@@ -63,15 +63,19 @@ const ExtractedFrame::OverrideMaterials* overrideMaterials(ecs::Registry& regist
 const content::Skin kNoSkin{};
 const content::MorphWeights kNoMorph{};
 
-// CPU skinning and morphing (content/skinning.h) into the instance's deformed vertex buffer.
-VkBuffer deformInstance(ecs::Entity e, uint32_t primitive, const content::MeshInstance& instance,
-                        const content::Skin& skin, const content::MorphWeights& morph,
-                        render::SceneResources& resources, ExtractedFrame& out) {
+// CPU skinning and morphing (content/skinning.h) into the instance's deformed vertex buffer;
+// the instance's other buffer keeps last frame's vertices for the motion vectors when it was
+// drawn last frame (`drawnLastFrame`).
+render::SceneResources::DeformedVertices deformInstance(
+    ecs::Entity e, uint32_t primitive, const content::MeshInstance& instance,
+    const content::Skin& skin, const content::MorphWeights& morph, bool drawnLastFrame,
+    render::SceneResources& resources, ExtractedFrame& out) {
     const content::Primitive& source =
         instance.model->meshes[size_t(instance.mesh)].primitives[primitive];
     content::deformPrimitive(source, skin.jointMatrices, morph.weights, out.deformScratch);
     return resources.writeDeformedVertices(e.bits() * 64 + primitive, source,
-                                           out.deformScratch.positions, out.deformScratch.normals);
+                                           out.deformScratch.positions, out.deformScratch.normals,
+                                           drawnLastFrame);
 }
 
 }  // namespace
@@ -121,8 +125,10 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                 out.draws.push_back({first + p, material, world});
                 out.previousWorlds.push_back(previousWorld);
                 if (deform) {
-                    out.draws.back().deformedVertices =
-                        deformInstance(e, p, instance, *skin, *morph, resources, out);
+                    const render::SceneResources::DeformedVertices vertices = deformInstance(
+                        e, p, instance, *skin, *morph, last != out.lastWorld.end(), resources, out);
+                    out.draws.back().deformedVertices = vertices.current;
+                    out.draws.back().previousDeformedVertices = vertices.previous;
                 }
             }
         });

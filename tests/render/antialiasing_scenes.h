@@ -1,8 +1,8 @@
 #pragma once
 // Test and report support for antialiasing (issue 24): the scenes (a box on a floor under a
-// sun, thin posts under a slow pan, a small bright object crossing a dark frame), a renderer
-// driven frame by frame, the 4x4 supersampled reference and the measures (edge RMSE in the
-// displayed image, motion-compensated flicker, radiance left behind).
+// sun, the demo's colonnade, thin posts under a slow pan, a small bright object crossing a dark
+// frame), a renderer driven frame by frame, the 4x4 supersampled reference and the measures (edge
+// RMSE in the displayed image, motion-compensated flicker, radiance left behind).
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
@@ -49,6 +49,47 @@ inline TestScene boxOnFloor(uint32_t width, uint32_t height) {
     sun.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
     scene.lights.push_back(sun);
     scene.lookAt({1.6f, 1.3f, 2.4f}, {0.0f, 0.35f, 0.0f}, {0.0f, 1.0f, 0.0f}, glm::radians(50.0f));
+    scene.camera.ev100 = 0.0f;
+    return scene;
+}
+
+// The demo's colonnade (runtime/src/demo_scene.cpp): square pillars on plinths with capitals,
+// 2.8 m apart, under one lintel (the architrave), on a dark floor under a low sun, seen from
+// the hall at an angle so the row recedes: long vertical silhouettes, the lintel's horizontal
+// edges, thin gaps between distant pillars and their shadows.
+inline TestScene colonnade(uint32_t width, uint32_t height) {
+    TestScene scene;
+    scene.width = width;
+    scene.height = height;
+    content::Material floor = lambertWhite();
+    floor.baseColorFactor = {0.16f, 0.15f, 0.14f, 1.0f};
+    content::Material pillar = lambertWhite();
+    pillar.baseColorFactor = {0.8f, 0.78f, 0.74f, 1.0f};
+    content::Material stone = lambertWhite();
+    stone.baseColorFactor = {0.72f, 0.68f, 0.62f, 1.0f};
+    constexpr float kPillarHeight = 4.4f, kSpacing = 2.8f;
+    constexpr int kPillars = 5;
+    scene.add(content::makePlane(12.0f), floor);
+    auto at = [](float x, float y, float z) {
+        return glm::translate(glm::mat4(1.0f), glm::vec3(x, y, z));
+    };
+    for (int i = 0; i < kPillars; ++i) {
+        const float z = -kSpacing * float(i);
+        scene.add(content::makeBox({0.28f, kPillarHeight * 0.5f, 0.28f}), pillar,
+                  at(0.0f, kPillarHeight * 0.5f, z));
+        scene.add(content::makeBox({0.45f, 0.12f, 0.45f}), stone, at(0.0f, 0.12f, z));
+        scene.add(content::makeBox({0.45f, 0.12f, 0.45f}), stone,
+                  at(0.0f, kPillarHeight + 0.12f, z));
+    }
+    const float length = kSpacing * float(kPillars - 1);
+    scene.add(content::makeBox({0.45f, 0.25f, 0.5f * length + 0.6f}), stone,
+              at(0.0f, kPillarHeight + 0.49f, -0.5f * length));
+    LightInstance sun;
+    sun.light.type = content::LightType::Directional;
+    sun.light.lux = 4.0f;
+    sun.direction = glm::normalize(glm::vec3(-0.5f, -0.8f, -0.35f));
+    scene.lights.push_back(sun);
+    scene.lookAt({4.2f, 1.7f, 3.0f}, {0.0f, 2.6f, -4.5f}, {0.0f, 1.0f, 0.0f}, glm::radians(60.0f));
     scene.camera.ev100 = 0.0f;
     return scene;
 }

@@ -1,7 +1,7 @@
 // Rows: antialiasing (issue 24) against a 4x4 supersampled reference on the box-on-a-floor
-// scene of render_antialiasing_tests: edge RMSE of the displayed image for no AA, FXAA, TAA
-// after 16 static frames, with each one's cost; a table with both resolve conventions, the
-// pan flicker and the reference's own cost.
+// and colonnade scenes of render_antialiasing_tests: edge RMSE of the displayed image for no
+// AA, FXAA, TAA after 16 static frames, with each one's cost; per scene a table with both
+// resolve conventions and the reference's own cost.
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -31,12 +31,14 @@ struct Measured {
     double frameMs = 0.0;  // every pass of the frame, median
 };
 
-Measured measure(GpuContext& gpu, AntiAliasing aa, uint32_t frames, uint32_t repetitions,
-                 uint32_t width, uint32_t height) {
+using SceneMaker = TestScene (*)(uint32_t, uint32_t);
+
+Measured measure(GpuContext& gpu, SceneMaker make, AntiAliasing aa, uint32_t frames,
+                 uint32_t repetitions, uint32_t width, uint32_t height) {
     Measured m;
     std::vector<double> aaMs, frameMs;
     for (uint32_t r = 0; r < repetitions; ++r) {
-        TestScene scene = boxOnFloor(width, height);
+        TestScene scene = make(width, height);
         RendererStats stats;
         CapturedFrame frame = renderStatic(gpu, scene, aa, frames, &stats);
         m.image = displayed(frame);
@@ -54,16 +56,16 @@ std::string ms(double value) {
     return formatNumber(value) + " ms";
 }
 
-}  // namespace
-
-void addAntialiasingRows(ReportContext& context) {
+// One scene's rows and table.
+void addSceneRows(ReportContext& context, SceneMaker make, const char* sceneName,
+                  const char* tableTitle) {
     const bool quick = context.budget.quick;
     const uint32_t width = 128, height = 96;
     const uint32_t repetitions = quick ? 1 : 5;
     GpuContext& gpu = context.harness.context();
-    const std::vector<float> linear = supersampledReference(gpu, &boxOnFloor, width, height);
+    const std::vector<float> linear = supersampledReference(gpu, make, width, height);
     const std::vector<float> displayedAverage =
-        supersampledReference(gpu, &boxOnFloor, width, height, ResolveConvention::Displayed);
+        supersampledReference(gpu, make, width, height, ResolveConvention::Displayed);
     const std::vector<uint8_t> mask = edgeMask(linear, width, height);
     size_t edgePixels = 0;
     for (uint8_t v : mask)
@@ -72,7 +74,7 @@ void addAntialiasingRows(ReportContext& context) {
     // The reference's cost: one frame at 4x4 the pixels.
     std::vector<double> referenceMs;
     for (uint32_t r = 0; r < repetitions; ++r) {
-        TestScene big = boxOnFloor(width * 4, height * 4);
+        TestScene big = make(width * 4, height * 4);
         RendererStats stats;
         renderStatic(gpu, big, AntiAliasing::Off, 2, &stats);  // timed on the warm 2nd frame
         referenceMs.push_back(passMs(stats, ""));
@@ -81,15 +83,14 @@ void addAntialiasingRows(ReportContext& context) {
 
     // Without jitter every frame of a static scene is the same image: the 3rd is timed warm
     // (a renderer's first frame includes the driver's shader compilation), like TAA's 16th.
-    const Measured off = measure(gpu, AntiAliasing::Off, 3, repetitions, width, height);
-    const Measured fxaa = measure(gpu, AntiAliasing::Fxaa, 3, repetitions, width, height);
-    const Measured taa = measure(gpu, AntiAliasing::Taa, 16, repetitions, width, height);
+    const Measured off = measure(gpu, make, AntiAliasing::Off, 3, repetitions, width, height);
+    const Measured fxaa = measure(gpu, make, AntiAliasing::Fxaa, 3, repetitions, width, height);
+    const Measured taa = measure(gpu, make, AntiAliasing::Taa, 16, repetitions, width, height);
 
     char metric[220];
     std::snprintf(metric, sizeof(metric),
-                  "RMSE of displayed values (0-1) over the %zu edge pixels of a box on a floor "
-                  "under a sun, %ux%u",
-                  edgePixels, width, height);
+                  "RMSE of displayed values (0-1) over the %zu edge pixels of %s, %ux%u",
+                  edgePixels, sceneName, width, height);
     const char* referenceName = "4x4 supersampled, resolved in linear light";
     struct Mode {
         const char* name;
@@ -100,7 +101,7 @@ void addAntialiasingRows(ReportContext& context) {
     const Mode modes[] = {
         {"No antialiasing (1 sample per pixel)", &off, "staircases on every silhouette"},
         {"FXAA (post-process, linear-light blend)", &fxaa, "corners and sub-pixel detail"},
-        {"TAA after 16 static frames (Halton 16)", &taa, "the box's near-vertical edges"}};
+        {"TAA after 16 static frames (Halton 16)", &taa, "near-vertical edges"}};
     for (const Mode& mode : modes) {
         const double error = edgeRmse(mode.m->image, linear, mask);
         char where[160];
@@ -115,9 +116,10 @@ void addAntialiasingRows(ReportContext& context) {
     }
 
     ReportTable table;
-    table.title = "Antialiasing: edge error by resolve convention";
+    table.title = tableTitle;
     table.intro =
-        "Edge RMSE of the displayed image against the 4x4 supersampled reference, with the "
+        std::string("Edge RMSE of the displayed image of ") + sceneName +
+        " against the 4x4 supersampled reference, with the "
         "reference's 16 samples averaged in linear light (radiance, then tonemapped: the "
         "convention TAA resolves in, and the one the tests gate on) or averaged as displayed "
         "(each sample tonemapped first). Costs are GPU pass times on this device, medians of " +
@@ -131,6 +133,16 @@ void addAntialiasingRows(ReportContext& context) {
     }
     table.rows.push_back({"4x4 supersampled reference", "0", "-", "-", ms(reference)});
     context.report.tables.push_back(std::move(table));
+}
+
+}  // namespace
+
+void addAntialiasingRows(ReportContext& context) {
+    addSceneRows(context, &boxOnFloor, "a box on a floor under a sun",
+                 "Antialiasing: edge error by resolve convention");
+    addSceneRows(context, &colonnade,
+                 "the demo's colonnade (pillars, plinths, capitals and a lintel) under a sun",
+                 "Antialiasing: edge error on the colonnade");
 }
 
 }  // namespace candela::report

@@ -31,6 +31,9 @@ struct DrawItem {
     // writeDeformedVertices), a plain vertex buffer in the mesh's layout that every geometry
     // pass binds instead of the mesh's own (vertexBufferOf). Null: the mesh's vertices.
     VkBuffer deformedVertices = VK_NULL_HANDLE;
+    // Their deformed vertices of the previous frame, for the motion vectors (gbuffer.vert's
+    // previous-position stream). Null: the same as this frame's (no deformation motion).
+    VkBuffer previousDeformedVertices = VK_NULL_HANDLE;
 };
 
 struct LightInstance {

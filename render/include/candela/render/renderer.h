@@ -92,6 +92,10 @@ public:
 
     const GpuImage& hdrTarget() const { return hdr_; }  // RGBA32F scene radiance
     const GpuImage& ldrTarget() const { return ldr_; }  // RGBA8, sRGB-encoded values
+    // With RendererOptions::captureMotionVectors: the last frame's motion vectors, one per pixel
+    // row by row (texture-space offset current - previous, motion_vectors.glsl); call once
+    // its submission completed. Empty otherwise.
+    std::vector<glm::vec2> motionVectors() const;
 
     // The environment BRDF LUT (eq. 8), built when the first environment was lit; else null.
     const EnvironmentBrdfLut* environmentBrdfLut() const { return brdfLut_.get(); }
@@ -119,6 +123,8 @@ private:
     // Auto exposure: meters last frame's histogram, adapts, and returns this frame's EV100.
     float autoExposureEv100(const FrameInputs& inputs);
     void declareHistogram(uint32_t hdrId, uint32_t hdrVersion);
+    // captureMotionVectors: copies the frame's final motion vectors into motionReadback_.
+    void declareMotionCapture();
 
     GpuContext& context_;
     RendererOptions options_;
@@ -145,6 +151,7 @@ private:
     bool historyValid_ = false;
     uint32_t motionId_ = UINT32_MAX;  // this frame's gbuffer.motion in the graph
     uint32_t motionVersion_ = 0;
+    GpuBuffer motionReadback_;  // captureMotionVectors: RG16F texels, host-visible
     std::unique_ptr<TaaPass> taaPass_;
     std::unique_ptr<FxaaPass> fxaaPass_;
     std::unique_ptr<BloomPass> bloomPass_;

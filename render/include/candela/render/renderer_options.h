@@ -96,6 +96,9 @@ struct RendererOptions {
     AntiAliasing aa = AntiAliasing::Off;
     float taaMinimumBlend = 1.0f / 16.0f;  // lowest weight of a new sample (taa.comp)
     float taaSharpness = 0.0f;             // 0: no sharpening
+    // Tests: copy each frame's motion vectors (gbuffer.motion) to the host, for
+    // Renderer::motionVectors().
+    bool captureMotionVectors = false;
     // Bloom: the fraction of each pixel's radiance spread over a wide glare kernel (energy-
     // conserving: the frame's total is unchanged). 0: off (here, so tests render without it;
     // the application's default is ApplicationOptions').

@@ -3,6 +3,7 @@
 // (keyed by its address); within a model, a texture used by several materials is one image.
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -79,15 +80,29 @@ public:
     // The vertex buffer a geometry pass binds for `draw`: its deformed vertices when animated,
     // else the mesh's.
     VkBuffer vertexBufferOf(const struct DrawItem& draw) const;
+    // The buffer a mesh pass binds as gbuffer.vert's previous-position stream (binding 1):
+    // an animated draw's last-frame deformed vertices, else the same as vertexBufferOf.
+    VkBuffer previousVertexBufferOf(const struct DrawItem& draw) const;
 
+    // An animated instance's vertex buffers for one frame: this frame's deformed vertices and
+    // last frame's (the motion vectors' previous positions).
+    struct DeformedVertices {
+        VkBuffer current = VK_NULL_HANDLE;
+        VkBuffer previous = VK_NULL_HANDLE;
+    };
     // Animated instances (skins, morph targets): writes this frame's deformed positions and
-    // normals of `primitive` into the instance's own host-visible vertex buffer (made on first
-    // use for `instanceKey` with the primitive's other attributes) and returns it. The frame
-    // waits for its submission before the next one is extracted, so one buffer per instance is
-    // enough. Buffers live until the SceneResources goes (a world swap).
-    VkBuffer writeDeformedVertices(uint64_t instanceKey, const content::Primitive& primitive,
-                                   std::span<const content::Float3> positions,
-                                   std::span<const content::Float3> normals);
+    // normals of `primitive` into one of the instance's two host-visible vertex buffers (made
+    // on first use for `instanceKey` with the primitive's other attributes); the other keeps
+    // last frame's, and the two swap every call. `continuesLastFrame`: the instance was
+    // deformed last frame, so the other buffer holds its previous positions; when false (new,
+    // or not drawn last frame) previous is current: no deformation motion. The frame waits for
+    // its submission before the next one is extracted, so two buffers per instance are enough.
+    // Buffers live until the SceneResources goes (a world swap).
+    DeformedVertices writeDeformedVertices(uint64_t instanceKey,
+                                           const content::Primitive& primitive,
+                                           std::span<const content::Float3> positions,
+                                           std::span<const content::Float3> normals,
+                                           bool continuesLastFrame = false);
     uint32_t deformedInstanceCount() const { return uint32_t(deformed_.size()); }
     uint32_t meshCount() const { return uint32_t(meshes_.size()); }
     uint32_t materialCount() const { return uint32_t(materialBindings_.size()); }
@@ -127,7 +142,13 @@ private:
     std::vector<content::Material> materials_;
     std::vector<MaterialBinding> materialBindings_;
     std::unordered_map<const content::Model*, UploadedModel> models_;
-    std::unordered_map<uint64_t, GpuBuffer> deformed_;
+    // Per animated instance: two vertex buffers, this frame's at `current`, last frame's at
+    // the other (swapped by writeDeformedVertices).
+    struct DeformedInstance {
+        std::array<GpuBuffer, 2> buffers;
+        uint32_t current = 0;
+    };
+    std::unordered_map<uint64_t, DeformedInstance> deformed_;
     std::unordered_map<uint32_t, VkSampler> samplers_;
     GpuBuffer materialBuffer_;
     bool materialsDirty_ = true;

@@ -12,7 +12,7 @@
 #include "common/specialization_ids.h"
 #include "gbuffer_targets.h"
 #include "ibl/environment_descriptors.h"
-#include "mesh_vertex.h"
+#include "mesh_vertex_input.h"
 #include "passes/forward_transparent/forward_transparent_bindings.h"
 #include "passes/shadows/shadow_pass.h"
 #include "shaders/forward_transparent.frag.spv.h"
@@ -41,26 +41,13 @@ static_assert(FORWARD_BINDING_FIRST_TEXTURE + kTextureSlotCount <= FORWARD_BINDI
 // Specialization constants shared with the lighting pass (shading_models.glsl, lights.glsl,
 // forward_transparent.frag).
 
-void setMeshVertexInput(GraphicsPipelineDesc& desc) {
-    desc.vertexSpirv = gbuffer_vert_spv;  // the G-buffer's vertex stage: same transform
-    desc.vertexBindings = {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.vertexAttributes = {
-        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
-        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)},
-        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MeshVertex, tangent)},
-        {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv0)},
-        {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv1)},
-        {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MeshVertex, color)},
-    };
-}
-
-// `vertexBuffer`: the mesh's, or a skinned or morphed draw's deformed vertices
-// (SceneResources::vertexBufferOf). firstInstance: the draw's index in FrameScene::draws,
-// gbuffer.vert's previous-world index.
-void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, VkBuffer vertexBuffer,
+// The draw's vertices: the mesh's, or a skinned or morphed draw's deformed vertices and last
+// frame's (SceneResources::vertexBufferOf, previousVertexBufferOf). firstInstance: the draw's
+// index in FrameScene::draws, gbuffer.vert's previous-world index.
+void drawMesh(VkCommandBuffer cmd, const SceneResources& resources, const DrawItem& draw,
               uint32_t drawIndex) {
-    VkDeviceSize offset = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+    const GpuMesh& mesh = resources.mesh(draw.mesh);
+    bindMeshVertices(cmd, resources.vertexBufferOf(draw), resources.previousVertexBufferOf(draw));
     vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
 }
@@ -79,6 +66,7 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context)
     // Occupancy: no attachments; the fragment shader tests against the G-buffer depth itself,
     // so the depth image stays in the layout the occupancy compute pass read it in.
     GraphicsPipelineDesc occupancy;
+    occupancy.vertexSpirv = gbuffer_vert_spv;  // the G-buffer's vertex stage: same transform
     setMeshVertexInput(occupancy);
     occupancy.fragmentSpirv = transparent_occupancy_frag_spv;
     const DescriptorBinding occupancyBindings[] = {
@@ -114,6 +102,7 @@ void ForwardTransparentPass::buildShadingPipeline() {
     constants.set(SPEC_IBL_MODE, !features_.ibl ? 0u : *features_.ibl == IblMode::Mobile ? 2u : 1u);
 
     GraphicsPipelineDesc desc;
+    desc.vertexSpirv = gbuffer_vert_spv;  // the G-buffer's vertex stage: same transform
     setMeshVertexInput(desc);
     desc.fragmentSpirv = forward_transparent_frag_spv;
     desc.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT,  // the HDR target
@@ -237,7 +226,7 @@ void ForwardTransparentPass::recordMarkOccupancy(VkCommandBuffer cmd, SceneResou
         push.world = draw.world;
         push.material = draw.material;
         occupancy_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources.mesh(draw.mesh), resources.vertexBufferOf(draw), sortedIndex_[i]);
+        drawMesh(cmd, resources, draw, sortedIndex_[i]);
     }
     vkCmdEndRendering(cmd);
 }
@@ -332,7 +321,7 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
         push.world = draw.world;
         push.material = draw.material;
         shading_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources.mesh(draw.mesh), resources.vertexBufferOf(draw), sortedIndex_[i]);
+        drawMesh(cmd, resources, draw, sortedIndex_[i]);
     }
     vkCmdEndRendering(cmd);
 }

@@ -11,6 +11,9 @@ layout(location = 2) in vec4 inTangent;
 layout(location = 3) in vec2 inUv0;
 layout(location = 4) in vec2 inUv1;
 layout(location = 5) in vec4 inColor;
+// Last frame's position (mesh_vertex_input.h): an animated draw's previous deformed vertex,
+// else the same as inPosition.
+layout(location = 6) in vec3 inPreviousPosition;
 
 layout(push_constant) uniform Draw {
     mat4 world;
@@ -40,10 +43,9 @@ void main() {
     outUv1 = inUv1;
     outColor = inColor;
     gl_Position = camera.viewProjection * worldPosition;
-    // Skinning / morph hook: a deformed mesh's previous-frame local position goes here in
-    // place of inPosition (a previous-position vertex stream, render/README.md "Motion
-    // vectors"); rigid meshes move only by their world matrix.
-    vec3 previousLocalPosition = inPosition;
+    // Skinned and morphed meshes move by their deformation too: last frame's deformed
+    // position (render/README.md "Motion vectors"); rigid ones only by their world matrix.
+    vec3 previousLocalPosition = inPreviousPosition;
     outCurrentClip = camera.unjitteredViewProjection * worldPosition;
     outPreviousClip = camera.previousViewProjection *
                       (previousWorlds[gl_InstanceIndex] * vec4(previousLocalPosition, 1.0));

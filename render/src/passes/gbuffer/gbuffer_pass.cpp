@@ -5,7 +5,7 @@
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/scene_resources.h"
 #include "gbuffer_targets.h"
-#include "mesh_vertex.h"
+#include "mesh_vertex_input.h"
 #include "passes/gbuffer/gbuffer_bindings.h"
 #include "shaders/gbuffer.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
@@ -26,15 +26,7 @@ GBufferPass::GBufferPass(GpuContext& context) {
     GraphicsPipelineDesc desc;
     desc.vertexSpirv = gbuffer_vert_spv;
     desc.fragmentSpirv = gbuffer_frag_spv;
-    desc.vertexBindings = {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.vertexAttributes = {
-        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)},
-        {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, normal)},
-        {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MeshVertex, tangent)},
-        {3, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv0)},
-        {4, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(MeshVertex, uv1)},
-        {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(MeshVertex, color)},
-    };
+    setMeshVertexInput(desc);
     desc.colorFormats.assign(GBufferTargets::kColorFormats.begin(),
                              GBufferTargets::kColorFormats.end());
     desc.colorFormats.push_back(VK_FORMAT_R32G32B32A32_SFLOAT);  // HDR (emissive)
@@ -129,9 +121,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
                                   : VK_CULL_MODE_BACK_BIT);
         DrawPush push{draw.world, draw.material};
         pipeline.pushConstants(cmd, &push, sizeof(push));
-        VkDeviceSize offset = 0;
-        VkBuffer vertexBuffer = resources.vertexBufferOf(draw);
-        vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+        bindMeshVertices(cmd, resources.vertexBufferOf(draw),
+                         resources.previousVertexBufferOf(draw));
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
         // firstInstance: the draw's index, which gbuffer.vert reads its previous world by.
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);

@@ -1,0 +1,65 @@
+// Frame extraction of animated meshes (issue 24's motion vectors): a skinned instance's draw
+// names this frame's deformed vertices and last frame's, in two buffers that swap each frame;
+// its first frame, and a frame after one it was not drawn in, name the same buffer for both.
+#include <gtest/gtest.h>
+
+#include "candela/content/components/animation.h"
+#include "candela/content/components/mesh_instance.h"
+#include "candela/content/procedural_mesh.h"
+#include "candela/ecs/transform.h"
+#include "candela/render/gpu_context.h"
+#include "candela/runtime/frame_extraction.h"
+#include "candela/runtime/light_table.h"
+
+using namespace candela;
+using namespace candela::runtime;
+
+TEST(FrameExtraction, SkinnedDrawsNameLastFramesDeformedVerticesForMotionVectors) {
+    render::GpuContextOptions options;
+    options.validation = render::ValidationMode::Required;
+    render::GpuContext context(options);
+    render::SceneResources resources(context);
+
+    // A box bound to one joint.
+    content::Model model;
+    content::Primitive box = content::makeBox({0.5f, 0.5f, 0.5f});
+    box.joints.assign(box.positions.size(), {0, 0, 0, 0});
+    box.weights.assign(box.positions.size(), {1.0f, 0.0f, 0.0f, 0.0f});
+    model.materials.emplace_back();
+    box.material = 0;
+    model.meshes.emplace_back().primitives.push_back(std::move(box));
+
+    ecs::Registry registry;
+    LightTable lights(registry);
+    const ecs::Entity e = registry.create();
+    registry.emplace<ecs::WorldTransform>(e);
+    registry.emplace<content::MeshInstance>(e, content::MeshInstance{&model, 0});
+    content::Skin skin;
+    skin.jointMatrices.resize(1);
+    registry.emplace<content::Skin>(e, skin);
+
+    ExtractedFrame frame;
+    auto extract = [&](float jointX) {
+        registry.get<content::Skin>(e).jointMatrices[0].m[12] = jointX;
+        extractFrame(registry, lights, resources, 1.0f, frame);
+        EXPECT_EQ(frame.draws.size(), 1u);
+        return frame.draws.empty() ? render::DrawItem{} : frame.draws[0];
+    };
+    const render::DrawItem first = extract(0.0f);
+    ASSERT_NE(first.deformedVertices, VK_NULL_HANDLE);
+    EXPECT_EQ(first.previousDeformedVertices, first.deformedVertices) << "no last frame yet";
+    const render::DrawItem second = extract(0.1f);
+    EXPECT_NE(second.deformedVertices, first.deformedVertices);
+    EXPECT_EQ(second.previousDeformedVertices, first.deformedVertices);
+    const render::DrawItem third = extract(0.2f);
+    EXPECT_EQ(third.deformedVertices, first.deformedVertices) << "the two buffers swap";
+    EXPECT_EQ(third.previousDeformedVertices, second.deformedVertices);
+
+    // Not drawn for a frame: the next one has no deformation motion.
+    registry.remove<content::MeshInstance>(e);
+    extractFrame(registry, lights, resources, 1.0f, frame);
+    EXPECT_TRUE(frame.draws.empty());
+    registry.emplace<content::MeshInstance>(e, content::MeshInstance{&model, 0});
+    const render::DrawItem back = extract(0.3f);
+    EXPECT_EQ(back.previousDeformedVertices, back.deformedVertices);
+}
