@@ -57,8 +57,7 @@ void setMeshVertexInput(GraphicsPipelineDesc& desc) {
 // `vertexBuffer`: the mesh's, or a skinned or morphed draw's deformed vertices
 // (SceneResources::vertexBufferOf). firstInstance: the draw's index in FrameScene::draws,
 // gbuffer.vert's previous-world index.
-void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, VkBuffer vertexBuffer,
-              uint32_t drawIndex) {
+void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, VkBuffer vertexBuffer, uint32_t drawIndex) {
     VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
@@ -147,6 +146,8 @@ void ForwardTransparentPass::buildShadingPipeline() {
         {FORWARD_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
@@ -318,7 +319,8 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
             storageBufferWrite(FORWARD_BINDING_IRRADIANCE_SH, &in.environment->irradianceSh),
             sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
             storageBufferWrite(FORWARD_BINDING_SHADOW_VIEWS, &in.shadows->views),
-            storageBufferWrite(FORWARD_BINDING_SHADOW_LIGHTS, &in.shadows->lights)};
+            storageBufferWrite(FORWARD_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
+            sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};

@@ -83,6 +83,12 @@ uint32_t powerOfTwoAtLeast(float v) {
 ShadowPass::ShadowPass(GpuContext& context)
     : context_(context),
       pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}),
+      // Stored depth grows toward the light (reverse depth): a texel lets light through when
+      // the receiver's stored depth is at least its own. Linear: 2x2 bilinear PCF per tap.
+      compareSampler_(
+          context,
+          SamplerDesc{VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                      VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, true, VK_COMPARE_OP_GREATER_OR_EQUAL}),
       placeholderAtlas_(context, {kAtlasFormat, 1, 1, 1, false,
                                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
       placeholderBuffer_(context, 112,
@@ -347,10 +353,12 @@ void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
 ShadowDescriptors ShadowPass::descriptors(bool enabled) const {
     if (!enabled) {
         return {{pointSampler_.handle(), placeholderAtlas_.view(), kRead},
+                {compareSampler_.handle(), placeholderAtlas_.view(), kRead},
                 {placeholderBuffer_.handle(), 0, VK_WHOLE_SIZE},
                 {placeholderBuffer_.handle(), 0, VK_WHOLE_SIZE}};
     }
     return {{pointSampler_.handle(), atlas_.view(), kRead},
+            {compareSampler_.handle(), atlas_.view(), kRead},
             {views_.handle(), 0, VK_WHOLE_SIZE},
             {lightTable_.handle(), 0, VK_WHOLE_SIZE}};
 }

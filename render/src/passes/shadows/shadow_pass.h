@@ -32,7 +32,8 @@ static_assert(sizeof(GpuShadowView) == 112, "std430 layout of ShadowView");
 
 // What the shading passes bind (placeholders when no light casts).
 struct ShadowDescriptors {
-    VkDescriptorImageInfo atlas;
+    VkDescriptorImageInfo atlas;         // raw depths (blocker search, thickness)
+    VkDescriptorImageInfo atlasCompare;  // the same through the comparison sampler (filtering)
     VkDescriptorBufferInfo views;
     VkDescriptorBufferInfo lights;
 };
@@ -86,6 +87,7 @@ private:
     GpuContext& context_;
     Pipeline pipeline_;
     Sampler pointSampler_;
+    Sampler compareSampler_;
     GpuImage atlas_;
     GpuImage placeholderAtlas_;
     GpuBuffer placeholderBuffer_;
