@@ -333,7 +333,8 @@ TEST(ShadowClustering, ClusteredMatchesBruteForce) {
     EXPECT_LT(worst, 1e-4);
 }
 
-// A second frame with nothing changed renders no map; the stats say so.
+// A second frame with nothing changed renders no map; the stats say so. Over the render
+// budget, moved lights keep last frame's maps and take turns to render.
 TEST(ShadowCache, UnchangedLightsKeepTheirMaps) {
     TestScene scene = floorWithBox(kFloatingBox);
     scene.lights = {pointLight({-0.7f, 2.4f, 0.4f}, 2000.0f, 6.0f),
@@ -349,6 +350,40 @@ TEST(ShadowCache, UnchangedLightsKeepTheirMaps) {
     EXPECT_EQ(stats.shadowMapsRendered, 0u);
     EXPECT_EQ(stats.shadowMapsCached, 2u);
     EXPECT_EQ(once.hdrRgb, twice.hdrRgb);
+
+    // Over the per-frame render budget, a light that moved keeps last frame's maps: both lights
+    // move by 1 mm with room for one map, so one renders, the other samples its old map with
+    // its old views (shadowed nearly as before, never unshadowed), and the next frame renders it.
+    RendererOptions budget = shadowOptions();
+    budget.shadowRenderBudget = 1;
+    SceneResources resources(context);
+    resources.setEnvironment(scene.environment);
+    FrameInputs inputs = scene.prepare(resources);
+    Renderer renderer(context, kSize, kSize, budget);
+    FrameSubmitter submitter(context);
+    FrameReadback readback(context, kSize, kSize);
+    std::vector<RendererStats> frames;
+    for (int frame = 0; frame < 3; ++frame) {
+        if (frame > 0) {
+            for (LightInstance& l : scene.lights)  // inputs.scene.lights views these
+                l.position.x += 0.001f;
+        }
+        VkCommandBuffer cmd = renderer.recordFrame(submitter, inputs, &resources);
+        if (frame == 1) readback.recordCopy(cmd, renderer);
+        submitter.submit();
+        submitter.waitIdle();
+        frames.push_back(renderer.collectStats());
+    }
+    EXPECT_EQ(frames[0].shadowMapsRendered, 2u);  // nothing to keep yet
+    EXPECT_EQ(frames[1].shadowMapsRendered, 1u);
+    EXPECT_EQ(frames[1].shadowMapsKept, 1u);
+    EXPECT_EQ(frames[2].shadowMapsRendered, 1u);  // the one that waited goes first
+    EXPECT_EQ(frames[2].shadowMapsKept, 1u);
+    const CapturedFrame kept = readback.read();
+    int differ = 0;
+    for (size_t i = 1; i < kept.hdrRgb.size(); i += 3)
+        differ += std::abs(kept.hdrRgb[i] - once.hdrRgb[i]) > 0.05f * once.hdrRgb[i] + 1e-3f;
+    EXPECT_LT(differ, int(kSize * kSize / 100)) << "pixels changed by more than 5%";
 }
 
 namespace {

@@ -13,6 +13,7 @@
 #include "mesh_vertex.h"
 #include "passes/shadows/cascades.h"
 #include "passes/shadows/shadow_atlas.h"
+#include "passes/shadows/shadow_render_budget.h"
 #include "passes/shadows/shadows_bindings.h"
 #include "shaders/shadow_depth.frag.spv.h"
 #include "shaders/shadow_depth.vert.spv.h"
@@ -207,6 +208,10 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
     std::vector<glm::uvec2> lightTable(std::max<size_t>(scene.lights.size(), 1),
                                        glm::uvec2(SHADOW_NO_VIEW, 0));
     previousKeys_.resize(scene.lights.size(), 0);
+    previousViews_.resize(scene.lights.size());
+    framesWaiting_.resize(scene.lights.size(), 0);
+    std::vector<uint64_t> keys(requests.size(), 0);
+    std::vector<ShadowRenderCandidate> candidates(requests.size());
     for (size_t q = 0; q < requests.size(); ++q) {
         const Request& request = requests[q];
         const LightInstance& instance = scene.lights[request.light];
@@ -278,13 +283,62 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
             }
             planned_.push_back(std::move(pv));
         }
-        lp.render = !options.shadowCache || !atlasHoldsMaps_ || previousKeys_[request.light] != key;
-        previousKeys_[request.light] = key;
+        keys[q] = key;
+        ShadowRenderCandidate& c = candidates[q];
+        const std::vector<GpuShadowView>& previous = previousViews_[request.light];
+        c.changed = !options.shadowCache || !atlasHoldsMaps_ || previousKeys_[request.light] != key;
+        // Last frame's maps can stand in only where they still are: same tiles (no other
+        // light renders into them this frame, as tiles never overlap). Cascades follow the
+        // camera and always render.
+        c.keepable = options.shadowCache && atlasHoldsMaps_ && !request.cascade &&
+                     previous.size() == request.views;
+        for (uint32_t v = 0; v < request.views; ++v) {
+            const ShadowTile& tile = plan.tiles[q][v];
+            c.texels += uint64_t(tile.size) * tile.size;
+            if (c.keepable && previous[v].tile != planned_[lp.firstView + v].gpu.tile)
+                c.keepable = false;
+        }
+        c.priority = tiles[q].priority;
+        c.framesWaiting = framesWaiting_[request.light];
         lightTable[request.light] = glm::uvec2(lp.firstView, lp.viewCount);
-        rendersThisFrame_ |= lp.render;
-        ++stats_.shadowedLights;
-        (lp.render ? stats_.mapsRendered : stats_.mapsCached) += 1;
         lightPlans_.push_back(lp);
+    }
+
+    const std::vector<ShadowRenderChoice> choices =
+        planShadowRenders(candidates, options.shadowCache ? options.shadowRenderBudget : 0);
+    std::vector<bool> requested(scene.lights.size(), false);
+    for (size_t q = 0; q < lightPlans_.size(); ++q) {
+        LightPlan& lp = lightPlans_[q];
+        const uint32_t light = lp.light;
+        requested[light] = true;
+        lp.render = choices[q] == ShadowRenderChoice::Render;
+        ++stats_.shadowedLights;
+        if (choices[q] == ShadowRenderChoice::Keep) {
+            // Sample the maps with the views they were rendered from; the key stays, so the
+            // light asks again next frame.
+            for (uint32_t v = 0; v < lp.viewCount; ++v)
+                planned_[lp.firstView + v].gpu = previousViews_[light][v];
+            ++framesWaiting_[light];
+            ++stats_.mapsKept;
+            continue;
+        }
+        framesWaiting_[light] = 0;
+        if (lp.render) {
+            previousKeys_[light] = keys[q];
+            previousViews_[light].clear();
+            for (uint32_t v = 0; v < lp.viewCount; ++v)
+                previousViews_[light].push_back(planned_[lp.firstView + v].gpu);
+        }
+        rendersThisFrame_ |= lp.render;
+        (lp.render ? stats_.mapsRendered : stats_.mapsCached) += 1;
+    }
+    // A light that casts no shadow this frame loses its claim on the atlas: another light may
+    // render into its tiles.
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        if (requested[i]) continue;
+        previousKeys_[i] = 0;
+        previousViews_[i].clear();
+        framesWaiting_[i] = 0;
     }
 
     ensureHostBuffer(context_, views_, planned_.size() * sizeof(GpuShadowView));
