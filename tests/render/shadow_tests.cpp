@@ -12,6 +12,7 @@
 
 #include "candela/content/png_writer.h"
 #include "passes/shadows/cascades.h"
+#include "passes/shadows/shadows_bindings.h"
 #include "shadow_reference.h"
 #include "test_scene.h"
 
@@ -74,9 +75,11 @@ LightProbe probe(const LightInstance& l, const TestScene& scene, const glm::vec3
     const glm::vec3 d = l.position - p;
     const glm::vec3 a = glm::abs(d);
     const float depth = std::max({a.x, a.y, a.z});  // along the cube face's (or spot's) axis
-    const float tanHalf = l.light.type == LightType::Spot
-                              ? std::tan(l.light.outerConeAngle) * (1.0f + 4.0f / kLocalTile)
-                              : 1.0f + 4.0f / kLocalTile;
+    // Spots wider than SHADOW_MAX_SPOT_HALF_ANGLE are mapped by cube faces.
+    const bool singleView = l.light.type == LightType::Spot &&
+                            l.light.outerConeAngle <= float(SHADOW_MAX_SPOT_HALF_ANGLE);
+    const float tanHalf = singleView ? std::tan(l.light.outerConeAngle) * (1.0f + 4.0f / kLocalTile)
+                                     : 1.0f + 4.0f / kLocalTile;
     const float slant = std::max(glm::normalize(d).y, 0.2f);
     return {l.position, 2.0f * tanHalf / kLocalTile * depth / slant};
 }
@@ -206,6 +209,16 @@ TEST(ShadowMask, SpotMatchesARayCast) {
     expectMatches(compareWithRayCast(floorWithBox(kFloatingBox), kFloatingBox,
                                      spot({0.6f, 2.6f, 0.3f}, {-0.2f, -1.0f, -0.1f})),
                   200);
+}
+
+// A spot wider than one perspective view can hold (83 degrees half-angle) shadows through
+// cube faces: the box lies 79 degrees off the spot's axis and its shadow further out, which a
+// single view (limited to about 74.5 degrees) never covered.
+TEST(ShadowMask, WideSpotMatchesARayCast) {
+    LightInstance wide = spot({3.0f, 1.5f, 0.3f}, {0.0f, -1.0f, 0.0f});
+    wide.light.outerConeAngle = 1.45f;
+    wide.light.innerConeAngle = 1.4f;
+    expectMatches(compareWithRayCast(floorWithBox(kFloatingBox), kFloatingBox, wide), 200);
 }
 
 TEST(ShadowMask, PointMatchesARayCast) {

@@ -75,6 +75,12 @@ glm::vec3 anyPerpendicular(const glm::vec3& v) {
     return std::abs(v.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
 }
 
+// A spot light narrow enough for one perspective view (wider ones use cube faces).
+bool singleViewSpot(const content::Light& l) {
+    return l.type == content::LightType::Spot &&
+           l.outerConeAngle <= float(SHADOW_MAX_SPOT_HALF_ANGLE);
+}
+
 uint32_t powerOfTwoAtLeast(float v) {
     return std::bit_ceil(uint32_t(std::clamp(v, 1.0f, 65536.0f)));
 }
@@ -184,7 +190,7 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                                        std::sqrt(distance * distance - reach * reach)
                                  : 0.5f * float(std::max(width, height)) * projectionScale;
         ShadowTileRequest r;
-        r.tiles = l.type == content::LightType::Spot ? 1u : SHADOW_CUBE_FACES;
+        r.tiles = singleViewSpot(l) ? 1u : SHADOW_CUBE_FACES;
         r.size = std::min(powerOfTwoAtLeast(2.0f * pixels),
                           powerOfTwoAtLeast(float(options.shadowMaxTileSize)));
         r.size = std::max(r.size, 16u);
@@ -253,10 +259,11 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                     }
                 }
             } else {
-                const bool spot = l.type == content::LightType::Spot;
+                const bool spot = singleViewSpot(l);
                 const float border = 1.0f + 2.0f * kBorderTexels / float(tile.size);
                 const float tanHalf =
-                    spot ? std::tan(std::min(std::clamp(l.outerConeAngle, 0.01f, 1.5f), 1.3f)) *
+                    spot ? std::tan(std::clamp(l.outerConeAngle, 0.01f,
+                                               float(SHADOW_MAX_SPOT_HALF_ANGLE))) *
                                border
                          : border;
                 const glm::vec3 forward =
