@@ -314,6 +314,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     stats_.shadowedLights = shadowPass_->stats().shadowedLights;
     stats_.shadowMapsRendered = shadowPass_->stats().mapsRendered;
     stats_.shadowMapsCached = shadowPass_->stats().mapsCached;
+    stats_.shadowMapsKept = shadowPass_->stats().mapsKept;
     stats_.shadowAtlasUsed = shadowPass_->stats().atlasUsed;
     if (!features.clustered) clusters_->usePlaceholders();
 

@@ -4,7 +4,8 @@
 # (no recorded hash) is skipped with a note. Seed 000 had no ambient occlusion, antialiasing,
 # bloom or auto exposure: `--ao off --aa off --bloom 0 --exposure manual`.
 # alpha_blend_mode and orb_game were re-recorded when directional lights began to cast shadows
-# (issue 14): their suns' shadows are new, the BRDF path is not.
+# (issue 14): their suns' shadows are new, the BRDF path is not; and again when the shadow
+# filter became 2x2 comparison-sampler taps (the shadow edges changed, not the BRDF).
 #
 #   cmake -DBUILD_DIR=<build> -DHASHES=brdf_ue4_seed000.sha256 -DOUT=<dir> -P brdf_ue4_identity.cmake
 cmake_minimum_required(VERSION 3.25)

@@ -1,13 +1,16 @@
 // Shadow planning without a device (issue 14): the practical cascade splits, cascades that keep
 // their texel grid when the camera moves or turns, and the atlas packing that shrinks the least
-// important maps instead of dropping any.
+// important maps instead of dropping any, and the per-frame render budget under which changed
+// lights keep last frame's maps instead of re-rendering.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "passes/shadows/cascades.h"
 #include "passes/shadows/shadow_atlas.h"
+#include "passes/shadows/shadow_render_budget.h"
 
 using namespace candela::render;
 
@@ -115,4 +118,66 @@ TEST(ShadowAtlas, OverBudgetTheLeastImportantShrinkAndNoneIsDropped) {
         EXPECT_GE(plan.sizes[r], plan.sizes[r - 1]);
     EXPECT_GT(plan.sizes.back(), plan.sizes[1]);
     EXPECT_LE(plan.usedTexels, uint64_t(4096) * 4096);
+}
+
+namespace {
+
+size_t countOf(const std::vector<ShadowRenderChoice>& choices, ShadowRenderChoice which) {
+    return size_t(std::count(choices.begin(), choices.end(), which));
+}
+
+}  // namespace
+
+TEST(ShadowRenderBudget, OverBudgetChangedLightsKeepLastFramesMapsAndNoneIsDropped) {
+    // Ten changed cube lights of 6 x 64^2 texels whose maps are still in the atlas, two that
+    // did not change, and one changed light whose tiles moved (nothing valid to keep).
+    constexpr uint64_t kLight = 6 * 64 * 64;
+    std::vector<ShadowRenderCandidate> lights;
+    for (int i = 0; i < 10; ++i)
+        lights.push_back({kLight, true, true, float(i), 0});
+    lights.push_back({kLight, false, true, 100.0f, 0});
+    lights.push_back({kLight, false, false, 100.0f, 0});
+    lights.push_back({kLight, true, false, -1.0f, 0});
+    // Room for four: the moved light must render, then the three most important.
+    const std::vector<ShadowRenderChoice> c = planShadowRenders(lights, 4 * kLight);
+    ASSERT_EQ(c.size(), lights.size());
+    EXPECT_EQ(c[12], ShadowRenderChoice::Render);
+    EXPECT_EQ(c[10], ShadowRenderChoice::Cached);
+    EXPECT_EQ(c[11], ShadowRenderChoice::Cached);
+    for (int i = 0; i < 10; ++i) {
+        EXPECT_EQ(c[i], i >= 7 ? ShadowRenderChoice::Render : ShadowRenderChoice::Keep)
+            << "light " << i;
+    }
+    EXPECT_EQ(countOf(c, ShadowRenderChoice::Render), 4u);
+    // No budget: every changed light renders.
+    const std::vector<ShadowRenderChoice> all = planShadowRenders(lights, 0);
+    EXPECT_EQ(countOf(all, ShadowRenderChoice::Render), 11u);
+    EXPECT_EQ(countOf(all, ShadowRenderChoice::Keep), 0u);
+    // A budget smaller than any map still renders one light a frame.
+    const std::vector<ShadowRenderChoice> tiny = planShadowRenders(lights, 1);
+    EXPECT_EQ(countOf(tiny, ShadowRenderChoice::Render), 2u);  // the moved one and one more
+    EXPECT_EQ(tiny[9], ShadowRenderChoice::Render);
+}
+
+TEST(ShadowRenderBudget, EveryChangedLightRendersWithinAFewFrames) {
+    // 20 lights that change every frame, of unequal importance, with room for 3 a frame: each
+    // must be brought up to date within ceil(20 / 3) = 7 frames, however unimportant.
+    constexpr size_t kLights = 20;
+    constexpr uint64_t kLight = 1000;
+    std::vector<ShadowRenderCandidate> lights(kLights);
+    for (size_t i = 0; i < kLights; ++i)
+        lights[i] = {kLight, true, true, float(i * i), 0};
+    std::vector<uint32_t> longestWait(kLights, 0);
+    for (int frame = 0; frame < 50; ++frame) {
+        const std::vector<ShadowRenderChoice> c = planShadowRenders(lights, 3 * kLight);
+        EXPECT_EQ(countOf(c, ShadowRenderChoice::Render), 3u) << "frame " << frame;
+        for (size_t i = 0; i < kLights; ++i) {
+            // What the shadow pass does: a kept map waits one frame more, a rendered one none.
+            lights[i].framesWaiting =
+                c[i] == ShadowRenderChoice::Keep ? lights[i].framesWaiting + 1 : 0;
+            longestWait[i] = std::max(longestWait[i], lights[i].framesWaiting);
+        }
+    }
+    for (size_t i = 0; i < kLights; ++i)
+        EXPECT_LE(longestWait[i], 6u) << "light " << i << " kept a stale map too long";
 }

@@ -12,6 +12,7 @@
 
 #include "candela/content/png_writer.h"
 #include "passes/shadows/cascades.h"
+#include "passes/shadows/shadows_bindings.h"
 #include "shadow_reference.h"
 #include "test_scene.h"
 
@@ -74,9 +75,11 @@ LightProbe probe(const LightInstance& l, const TestScene& scene, const glm::vec3
     const glm::vec3 d = l.position - p;
     const glm::vec3 a = glm::abs(d);
     const float depth = std::max({a.x, a.y, a.z});  // along the cube face's (or spot's) axis
-    const float tanHalf = l.light.type == LightType::Spot
-                              ? std::tan(l.light.outerConeAngle) * (1.0f + 4.0f / kLocalTile)
-                              : 1.0f + 4.0f / kLocalTile;
+    // Spots wider than SHADOW_MAX_SPOT_HALF_ANGLE are mapped by cube faces.
+    const bool singleView = l.light.type == LightType::Spot &&
+                            l.light.outerConeAngle <= float(SHADOW_MAX_SPOT_HALF_ANGLE);
+    const float tanHalf = singleView ? std::tan(l.light.outerConeAngle) * (1.0f + 4.0f / kLocalTile)
+                                     : 1.0f + 4.0f / kLocalTile;
     const float slant = std::max(glm::normalize(d).y, 0.2f);
     return {l.position, 2.0f * tanHalf / kLocalTile * depth / slant};
 }
@@ -208,6 +211,16 @@ TEST(ShadowMask, SpotMatchesARayCast) {
                   200);
 }
 
+// A spot wider than one perspective view can hold (83 degrees half-angle) shadows through
+// cube faces: the box lies 79 degrees off the spot's axis and its shadow further out, which a
+// single view (limited to about 74.5 degrees) never covered.
+TEST(ShadowMask, WideSpotMatchesARayCast) {
+    LightInstance wide = spot({3.0f, 1.5f, 0.3f}, {0.0f, -1.0f, 0.0f});
+    wide.light.outerConeAngle = 1.45f;
+    wide.light.innerConeAngle = 1.4f;
+    expectMatches(compareWithRayCast(floorWithBox(kFloatingBox), kFloatingBox, wide), 200);
+}
+
 TEST(ShadowMask, PointMatchesARayCast) {
     expectMatches(compareWithRayCast(floorWithBox(kFloatingBox), kFloatingBox,
                                      pointLight({-0.7f, 2.4f, 0.4f}, 2000.0f, 20.0f)),
@@ -309,6 +322,113 @@ TEST(ShadowStability, MovingTheCameraByATenthOfATexelChangesNoShadowedPixel) {
     EXPECT_EQ(changed, 0) << "of " << shadowed << " shadowed pixels";
 }
 
+// A camera turned by a tenth of a degree changes no shadowed pixel. The camera looks down and
+// forward (30 degrees from straight down) and pitches about the x axis, so the floor slides
+// along z under the pixels and the first cascade's centre moves in y and z, a fraction of a
+// texel along the grid's axes: unsnapped, the texel grid would move with it. A slab above the
+// camera (out of view) casts an edge running along z, and one axis of the cascades' texel grid
+// runs along z too (the sun has no z component), so the shadow on the floor depends on x alone
+// and each pixel must keep its value (columns near the edge keep their floor x to a few
+// micrometres).
+TEST(ShadowStability, TurningTheCameraByATenthOfADegreeChangesNoShadowedPixel) {
+    constexpr uint32_t kSmallCascade = 256;
+    const float fov = glm::radians(20.0f);
+    TestScene scene;
+    scene.width = scene.height = kSize;
+    scene.add(candela::content::makePlane(8.0f, 4), lambertWhite());
+    // 1.0 to 1.1 m high, over x < -0.66: its top edge casts the shadow edge onto x = 0, under
+    // the middle column, whose floor x the turn does not change.
+    const Box slab{{-3.0f, 1.0f, -3.0f}, {-0.66f, 1.1f, 3.0f}};
+    scene.add(candela::content::makeBox({0.5f * (slab.hi.x - slab.lo.x), 0.05f, 3.0f}),
+              lambertWhite(), glm::translate(glm::mat4(1.0f), 0.5f * (slab.lo + slab.hi)));
+    scene.lights = {sun({0.6f, -1.0f, 0.0f})};
+    scene.lights[0].light.castShadows = true;
+    RendererOptions options = shadowOptions();
+    options.shadowCascadeSize = kSmallCascade;
+    const glm::vec3 eye{0.0f, 0.3f, 0.17f};
+    auto look = [&](float pitch) {
+        const float down = glm::radians(30.0f) + pitch;  // from straight down, toward -z
+        scene.lookAt(eye, eye + glm::vec3(0.0f, -std::cos(down), -std::sin(down)),
+                     {0.0f, 1.0f, 0.0f}, fov);
+    };
+    const std::vector<float> s = practicalSplits(0.05f, kShadowDistance, 4, kPracticalSplitLambda);
+    look(0.0f);
+    const CascadeView straight =
+        fitCascade(scene.camera, s[0], s[1], scene.lights[0].direction, kSmallCascade, -10.0f);
+    GpuContext context(requiredValidation());
+    const CapturedFrame before = scene.render(context, options);
+    look(glm::radians(0.1f));
+    const CascadeView turnedCascade =
+        fitCascade(scene.camera, s[0], s[1], scene.lights[0].direction, kSmallCascade, -10.0f);
+    // The turn moves the cascade's centre across the grid by a visible fraction of a texel.
+    const glm::mat3 basis = lightBasis(scene.lights[0].direction);
+    const float across =
+        std::abs(glm::dot(glm::vec3(turnedCascade.sphere) - glm::vec3(straight.sphere), basis[1]));
+    ASSERT_GT(across, 0.02f * straight.texelWorld);
+    const CapturedFrame after = scene.render(context, options);
+    float brightest = 0.0f;
+    for (size_t i = 1; i < before.hdrRgb.size(); i += 3)
+        brightest = std::max(brightest, before.hdrRgb[i]);
+    int shadowed = 0, changed = 0;
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x < kSize; ++x) {
+            const float a = hdrPixel(before, x, y)[1];
+            const float b = hdrPixel(after, x, y)[1];
+            if (std::min(a, b) > 0.99f * brightest) continue;  // fully lit in both
+            ++shadowed;
+            changed += std::abs(a - b) > 1e-3f * brightest ? 1 : 0;
+        }
+    }
+    EXPECT_GT(shadowed, 2000);
+    EXPECT_EQ(changed, 0) << "of " << shadowed << " shadowed pixels; the turn moved the cascade "
+                          << across / straight.texelWorld << " texels across its grid";
+}
+
+// Subsurface transmission takes its thickness from the shadow map (the depth of the shaded
+// point behind the nearest blocker toward the light): two subsurface slabs, 2 cm and 8 cm
+// thick, under a sun from straight above, seen from below. Their undersides face away from
+// the sun and show only transmitted light, which must fall with the thickness as
+// exp(-t / 0.05 m) (shadows.glsl kSubsurfaceMeanFreePath): the thick slab's over the thin
+// one's is exp(-1.2) = 0.30. The camera sits midway, so both are seen at mirrored angles.
+TEST(ShadowSubsurface, TransmissionFallsWithTheThicknessInTheShadowMap) {
+    TestScene scene;
+    scene.width = scene.height = kSize;
+    candela::content::Material wax = lambertWhite();
+    wax.shadingModel = candela::content::ShadingModel::Subsurface;
+    wax.subsurfaceOpacity = 0.5f;
+    for (const auto& [x, thickness] : {std::pair{-0.3f, 0.02f}, std::pair{0.3f, 0.08f}}) {
+        scene.add(candela::content::makeBox({0.2f, 0.5f * thickness, 0.2f}), wax,
+                  glm::translate(glm::mat4(1.0f), glm::vec3(x, 1.0f + 0.5f * thickness, 0.0f)));
+    }
+    scene.lookAt({0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, -1.0f});
+    scene.lights = {sun({0.0f, -1.0f, 0.0f})};
+    scene.lights[0].light.castShadows = true;
+    GpuContext context(requiredValidation());
+    const CapturedFrame frame = scene.render(context, shadowOptions());
+    double sum[2] = {0.0, 0.0};
+    int count[2] = {0, 0};
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x < kSize; ++x) {
+            const std::optional<glm::vec3> p = scene.pixelOnPlane(x, y, 1.0f);
+            if (!p || std::abs(p->z) > 0.15f) continue;
+            // The middle of each underside, clear of its edges.
+            const int slab = std::abs(p->x + 0.3f) < 0.15f   ? 0
+                             : std::abs(p->x - 0.3f) < 0.15f ? 1
+                                                             : -1;
+            if (slab < 0) continue;
+            sum[slab] += hdrPixel(frame, x, y)[1];
+            ++count[slab];
+        }
+    }
+    ASSERT_GT(count[0], 200);
+    ASSERT_GT(count[1], 200);
+    const double thin = sum[0] / count[0], thick = sum[1] / count[1];
+    ASSERT_GT(thin, 0.0);
+    std::printf("transmitted: 2 cm %.5f, 8 cm %.5f cd/m^2, ratio %.4f (exp(-1.2) = %.4f)\n", thin,
+                thick, thick / thin, std::exp(-1.2));
+    EXPECT_NEAR(thick / thin, std::exp(-1.2), 0.1 * std::exp(-1.2));
+}
+
 // With shadows, clustered lists give the brute-force image (within float summation order).
 TEST(ShadowClustering, ClusteredMatchesBruteForce) {
     TestScene scene = floorWithBox(kFloatingBox);
@@ -333,7 +453,8 @@ TEST(ShadowClustering, ClusteredMatchesBruteForce) {
     EXPECT_LT(worst, 1e-4);
 }
 
-// A second frame with nothing changed renders no map; the stats say so.
+// A second frame with nothing changed renders no map; the stats say so. Over the render
+// budget, moved lights keep last frame's maps and take turns to render.
 TEST(ShadowCache, UnchangedLightsKeepTheirMaps) {
     TestScene scene = floorWithBox(kFloatingBox);
     scene.lights = {pointLight({-0.7f, 2.4f, 0.4f}, 2000.0f, 6.0f),
@@ -349,6 +470,40 @@ TEST(ShadowCache, UnchangedLightsKeepTheirMaps) {
     EXPECT_EQ(stats.shadowMapsRendered, 0u);
     EXPECT_EQ(stats.shadowMapsCached, 2u);
     EXPECT_EQ(once.hdrRgb, twice.hdrRgb);
+
+    // Over the per-frame render budget, a light that moved keeps last frame's maps: both lights
+    // move by 1 mm with room for one map, so one renders, the other samples its old map with
+    // its old views (shadowed nearly as before, never unshadowed), and the next frame renders it.
+    RendererOptions budget = shadowOptions();
+    budget.shadowRenderBudget = 1;
+    SceneResources resources(context);
+    resources.setEnvironment(scene.environment);
+    FrameInputs inputs = scene.prepare(resources);
+    Renderer renderer(context, kSize, kSize, budget);
+    FrameSubmitter submitter(context);
+    FrameReadback readback(context, kSize, kSize);
+    std::vector<RendererStats> frames;
+    for (int frame = 0; frame < 3; ++frame) {
+        if (frame > 0) {
+            for (LightInstance& l : scene.lights)  // inputs.scene.lights views these
+                l.position.x += 0.001f;
+        }
+        VkCommandBuffer cmd = renderer.recordFrame(submitter, inputs, &resources);
+        if (frame == 1) readback.recordCopy(cmd, renderer);
+        submitter.submit();
+        submitter.waitIdle();
+        frames.push_back(renderer.collectStats());
+    }
+    EXPECT_EQ(frames[0].shadowMapsRendered, 2u);  // nothing to keep yet
+    EXPECT_EQ(frames[1].shadowMapsRendered, 1u);
+    EXPECT_EQ(frames[1].shadowMapsKept, 1u);
+    EXPECT_EQ(frames[2].shadowMapsRendered, 1u);  // the one that waited goes first
+    EXPECT_EQ(frames[2].shadowMapsKept, 1u);
+    const CapturedFrame kept = readback.read();
+    int differ = 0;
+    for (size_t i = 1; i < kept.hdrRgb.size(); i += 3)
+        differ += std::abs(kept.hdrRgb[i] - once.hdrRgb[i]) > 0.05f * once.hdrRgb[i] + 1e-3f;
+    EXPECT_LT(differ, int(kSize * kSize / 100)) << "pixels changed by more than 5%";
 }
 
 namespace {

@@ -2,7 +2,8 @@
 // (render/README.md "Shadows"). Every shadow map is a tile of one depth atlas; a light finds
 // its tiles through its entry in the per-light table, indexed like the light buffer, so
 // clustered and brute-force lighting read the same maps. The including shader defines
-// SHADOW_ATLAS_BINDING, SHADOW_VIEWS_BINDING and SHADOW_LIGHTS_BINDING first. The constants
+// SHADOW_ATLAS_BINDING, SHADOW_ATLAS_COMPARE_BINDING, SHADOW_VIEWS_BINDING and
+// SHADOW_LIGHTS_BINDING first. The constants
 // come from render/src/passes/shadows/shadows_bindings.h (an include directory of the shaders).
 #ifndef CANDELA_SHADOWS_GLSL
 #define CANDELA_SHADOWS_GLSL
@@ -31,7 +32,11 @@ layout(std430, binding = SHADOW_VIEWS_BINDING) readonly buffer ShadowViews {
 layout(std430, binding = SHADOW_LIGHTS_BINDING) readonly buffer ShadowLights {
     uvec2 shadowLights[];
 };
+// The atlas twice: raw depths for the blocker search and thickness, and through a comparison
+// sampler with linear filtering, where one tap compares the four nearest texels with the
+// receiver and weights them bilinearly in the texture unit (the filter's taps below).
 layout(binding = SHADOW_ATLAS_BINDING) uniform sampler2D shadowAtlas;
+layout(binding = SHADOW_ATLAS_COMPARE_BINDING) uniform sampler2DShadow shadowAtlasCompare;
 
 // Bias (render/README.md "Shadows"), in shadow texels at the receiver: the receiver moves
 // along its normal by kShadowNormalOffset x sin(angle to the light) texels, and its depth
@@ -67,26 +72,36 @@ float shadowBlockerDepth(ShadowView v, ivec2 texel) {
     return shadowLinearDepth(v, texelFetch(shadowAtlas, texel, 0).r);
 }
 
-// Lit fraction at continuous atlas coordinate tc: the four nearest texels compared with the
-// receiver depth, bilinearly weighted (what a comparison sampler with linear filtering does).
-float shadowBilinearTap(ShadowView v, vec2 tc, float receiver) {
-    vec2 f = tc - 0.5;
-    ivec2 i = ivec2(floor(f));
-    vec2 w = f - floor(f);
-    vec4 lit = vec4(shadowBlockerDepth(v, i) >= receiver ? 1.0 : 0.0,
-                    shadowBlockerDepth(v, i + ivec2(1, 0)) >= receiver ? 1.0 : 0.0,
-                    shadowBlockerDepth(v, i + ivec2(0, 1)) >= receiver ? 1.0 : 0.0,
-                    shadowBlockerDepth(v, i + ivec2(1, 1)) >= receiver ? 1.0 : 0.0);
-    return mix(mix(lit.x, lit.y, w.x), mix(lit.z, lit.w, w.x), w.y);
+// The value the atlas stores for light-space depth z (the inverse of shadowLinearDepth).
+float shadowStoredDepth(ShadowView v, float z) {
+    if (uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC) {
+        return (v.params.w - z) / (v.params.w - v.params.z);
+    }
+    return v.params.z / max(z, 1e-30);
 }
 
-// Box filter of half width `radius` texels: an n x n grid of bilinear taps.
+// Lit fraction at continuous atlas coordinate tc: one comparison-sampler tap (the four
+// nearest texels compared with the receiver, bilinearly weighted). The sampler's compare op
+// is GREATER_OR_EQUAL on stored depth, which is larger nearer the light, so a texel counts as
+// lit when the receiver is no nearer than it. tc is clamped half a texel inside the view's
+// tile, so a tap never reads a neighbouring tile (the border texels repeat, as a clamp to
+// edge would).
+float shadowCompareTap(ShadowView v, vec2 tc, float storedReceiver, vec2 invAtlas) {
+    vec2 first = v.tile.xy + 0.5;
+    tc = clamp(tc, first, first + v.tile.z - 1.0);
+    return textureLod(shadowAtlasCompare, vec3(tc * invAtlas, storedReceiver), 0.0);
+}
+
+// Box filter of half width `radius` texels: an n x n grid of bilinear compare taps. n = 2 with
+// radius 1 (hard shadows) is four taps half a texel off centre: a 3x3-texel tent.
 float shadowFilter(ShadowView v, vec2 tc, float receiver, float radius, int n) {
+    vec2 invAtlas = 1.0 / vec2(textureSize(shadowAtlasCompare, 0));
+    float storedReceiver = shadowStoredDepth(v, receiver);
     float sum = 0.0;
     for (int y = 0; y < n; ++y) {
         for (int x = 0; x < n; ++x) {
             vec2 o = (vec2(x, y) + 0.5) / float(n) * 2.0 - 1.0;
-            sum += shadowBilinearTap(v, tc + o * radius, receiver);
+            sum += shadowCompareTap(v, tc + o * radius, storedReceiver, invAtlas);
         }
     }
     return sum / float(n * n);
@@ -102,16 +117,24 @@ float shadowPenumbraRadius(ShadowView v, vec2 tc, float receiver, float lightSiz
     float nearest = max(v.params.z, 0.25 * receiver);
     float search = clamp(lightSize * (receiver - nearest) / (nearest * texel) * 0.5, 1.0,
                          kPenumbraMaxSearch);
+    // 3 x 3 gathers of the raw depths (4 texels each, 36 in all), every gather kept inside
+    // the view's tile.
+    vec2 invAtlas = 1.0 / vec2(textureSize(shadowAtlas, 0));
+    vec2 first = v.tile.xy + 1.0;
     float sum = 0.0;
     float count = 0.0;
-    const int n = 6;
+    const int n = 3;
     for (int y = 0; y < n; ++y) {
         for (int x = 0; x < n; ++x) {
             vec2 o = (vec2(x, y) + 0.5) / float(n) * 2.0 - 1.0;
-            float blocker = shadowBlockerDepth(v, ivec2(floor(tc + o * search)));
-            if (blocker < receiver) {
-                sum += blocker;
-                count += 1.0;
+            vec2 at = clamp(tc + o * search, first, first + v.tile.z - 2.0);
+            vec4 stored = textureGather(shadowAtlas, at * invAtlas, 0);
+            for (int i = 0; i < 4; ++i) {
+                float blocker = shadowLinearDepth(v, stored[i]);
+                if (blocker < receiver) {
+                    sum += blocker;
+                    count += 1.0;
+                }
             }
         }
     }
@@ -122,7 +145,7 @@ float shadowPenumbraRadius(ShadowView v, vec2 tc, float receiver, float lightSiz
 }
 
 // Lit fraction of one view at P (normal N, NoL toward the light); lightSize > 0 gives a
-// penumbra from the blocker search, 0 a 3x3 PCF.
+// penumbra from the blocker search, 0 hard shadows (2 x 2 compare taps: a 3x3-texel tent).
 float sampleShadowView(ShadowView v, vec3 P, vec3 N, float NoL, float lightSize) {
     vec4 plain = v.worldToClip * vec4(P, 1.0);
     float depth = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
@@ -143,9 +166,11 @@ float sampleShadowView(ShadowView v, vec3 P, vec3 N, float NoL, float lightSize)
     if (lightSize > 0.0) {
         float radius = shadowPenumbraRadius(v, tc, receiver, lightSize);
         if (radius == 0.0) return 1.0;
-        return shadowFilter(v, tc, receiver, radius, 8);
+        // About one tap per texel of half width (bilinear taps overlap up to 2 texels apart),
+        // at most 6 x 6.
+        return shadowFilter(v, tc, receiver, radius, clamp(int(ceil(radius)), 2, 6));
     }
-    return shadowFilter(v, tc, receiver, 1.0, 3);
+    return shadowFilter(v, tc, receiver, 1.0, 2);
 }
 
 // The view of a light's maps that holds P: its first cascade whose sphere holds P

@@ -17,6 +17,8 @@ Sampler::Sampler(GpuContext& context, const SamplerDesc& desc) : device_(context
     info.addressModeV = desc.addressV;
     info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     info.maxLod = desc.mipmapped ? VK_LOD_CLAMP_NONE : 0.0f;
+    info.compareEnable = desc.compare ? VK_TRUE : VK_FALSE;
+    info.compareOp = desc.compareOp;
     CANDELA_VK_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler_));
 }
 

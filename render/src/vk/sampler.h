@@ -12,6 +12,9 @@ struct SamplerDesc {
     bool mipmapped = false;
     VkSamplerAddressMode addressU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     VkSamplerAddressMode addressV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    // Depth comparison (sampler2DShadow): returns reference `compareOp` texel, filtered.
+    bool compare = false;
+    VkCompareOp compareOp = VK_COMPARE_OP_ALWAYS;
 };
 
 class Sampler {

@@ -121,8 +121,8 @@ void addShadowRows(ReportContext& context) {
                       "point light, cube map 256 per face, %ux%u)",
                       m.pixels, size, size);
         context.report.rows.push_back(
-            {"Shadows: 3x3 PCF (point light)", "CPU ray cast, one ray per pixel", metric,
-             m.meanError, "abs",
+            {"Shadows: PCF, 2x2 comparison-sampler taps (point light)",
+             "CPU ray cast, one ray per pixel", metric, m.meanError, "abs",
              formatNumber(100.0 * m.misclassified) + "% of pixels on the wrong side of 0.5",
              costOf(m)});
     }

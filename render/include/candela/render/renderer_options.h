@@ -116,6 +116,9 @@ struct RendererOptions {
     float shadowDistance = 50.0f;       // metres of view depth the cascades cover
     uint32_t shadowMaxTileSize = 1024;  // largest tile of a local light (per cube face)
     bool shadowCache = true;            // keep maps whose light and casters did not change
+    // Texels of local-light maps re-rendered per frame (0: no limit). Past it, a changed light
+    // whose last maps are still in the atlas keeps them for the frame (shadow_maps_kept).
+    uint64_t shadowRenderBudget = uint64_t(4) << 20;
 };
 
 // The frame graph of the last frame (--stats `frame_graph`).
@@ -167,10 +170,12 @@ struct RendererStats {
     float adaptedEv100 = 0.0f;
     // Shadows (--stats shadow_*): GPU ms of the shadow depth pass, lights with maps, of which
     // rendered this frame and kept from an earlier one, and the share of atlas texels in use.
+    // Kept: changed lights that sampled last frame's maps as the render budget was spent.
     double shadowMs = 0.0;
     uint32_t shadowedLights = 0;
     uint32_t shadowMapsRendered = 0;
     uint32_t shadowMapsCached = 0;
+    uint32_t shadowMapsKept = 0;
     double shadowAtlasUsed = 0.0;
 };
 

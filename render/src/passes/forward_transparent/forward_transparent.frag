@@ -17,6 +17,7 @@
 #include "common/motion_vectors.glsl"
 #include "common/shading_models.glsl"
 #define SHADOW_ATLAS_BINDING FORWARD_BINDING_SHADOW_ATLAS
+#define SHADOW_ATLAS_COMPARE_BINDING FORWARD_BINDING_SHADOW_ATLAS_COMPARE
 #define SHADOW_VIEWS_BINDING FORWARD_BINDING_SHADOW_VIEWS
 #define SHADOW_LIGHTS_BINDING FORWARD_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
@@ -70,7 +71,10 @@ layout(location = 1) out vec4 outMotion;    // gbuffer.motion, blended by the sa
 vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha, uint index) {
     Light light = loadLight(index, camera.frameInfo.w);
     LightIncidence incidence = evaluateLight(light, P, N, R, alpha);
-    float visibility = shadowVisibility(light, index, P, N);
+    // Out of the light's range or cone nothing is lit whatever the map says: no sampling.
+    float visibility = any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))
+                           ? shadowVisibility(light, index, P, N)
+                           : 1.0;
     incidence.diffuseIlluminance *= visibility;
     incidence.specularIlluminance *= visibility;
     incidence.incidentIlluminance *=

@@ -20,6 +20,7 @@
 #define FORWARD_BINDING_SHADOW_ATLAS 22
 #define FORWARD_BINDING_SHADOW_VIEWS 23
 #define FORWARD_BINDING_SHADOW_LIGHTS 24
+#define FORWARD_BINDING_SHADOW_ATLAS_COMPARE 25
 
 // transparent_occupancy.frag (camera in its vertex stage, gbuffer.vert).
 #define TRANSPARENT_OCCUPANCY_BINDING_DEPTH 1

@@ -15,6 +15,7 @@
 #include "common/light_buffer.glsl"
 #include "common/shading_models.glsl"
 #define SHADOW_ATLAS_BINDING LIGHTING_BINDING_SHADOW_ATLAS
+#define SHADOW_ATLAS_COMPARE_BINDING LIGHTING_BINDING_SHADOW_ATLAS_COMPARE
 #define SHADOW_VIEWS_BINDING LIGHTING_BINDING_SHADOW_VIEWS
 #define SHADOW_LIGHTS_BINDING LIGHTING_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
@@ -148,7 +149,10 @@ struct PixelShading {
 void addLight(inout PixelShading px, uint lightIndex) {
     Light light = loadLight(lightIndex, camera.frameInfo.w);
     LightIncidence incidence = evaluateLight(light, px.P, px.N, px.R, px.alpha);
-    float visibility = shadowVisibility(light, lightIndex, px.P, px.N);
+    // Out of the light's range or cone nothing is lit whatever the map says: no sampling.
+    float visibility = any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))
+                           ? shadowVisibility(light, lightIndex, px.P, px.N)
+                           : 1.0;
     incidence.diffuseIlluminance *= visibility;
     incidence.specularIlluminance *= visibility;
     incidence.incidentIlluminance *= kSubsurfaceEnabled &&

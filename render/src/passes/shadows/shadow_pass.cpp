@@ -13,6 +13,7 @@
 #include "mesh_vertex.h"
 #include "passes/shadows/cascades.h"
 #include "passes/shadows/shadow_atlas.h"
+#include "passes/shadows/shadow_render_budget.h"
 #include "passes/shadows/shadows_bindings.h"
 #include "shaders/shadow_depth.frag.spv.h"
 #include "shaders/shadow_depth.vert.spv.h"
@@ -74,6 +75,12 @@ glm::vec3 anyPerpendicular(const glm::vec3& v) {
     return std::abs(v.y) > 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
 }
 
+// A spot light narrow enough for one perspective view (wider ones use cube faces).
+bool singleViewSpot(const content::Light& l) {
+    return l.type == content::LightType::Spot &&
+           l.outerConeAngle <= float(SHADOW_MAX_SPOT_HALF_ANGLE);
+}
+
 uint32_t powerOfTwoAtLeast(float v) {
     return std::bit_ceil(uint32_t(std::clamp(v, 1.0f, 65536.0f)));
 }
@@ -83,6 +90,12 @@ uint32_t powerOfTwoAtLeast(float v) {
 ShadowPass::ShadowPass(GpuContext& context)
     : context_(context),
       pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}),
+      // Stored depth grows toward the light (reverse depth): a texel lets light through when
+      // the receiver's stored depth is at least its own. Linear: 2x2 bilinear PCF per tap.
+      compareSampler_(
+          context,
+          SamplerDesc{VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                      VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, true, VK_COMPARE_OP_GREATER_OR_EQUAL}),
       placeholderAtlas_(context, {kAtlasFormat, 1, 1, 1, false,
                                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}),
       placeholderBuffer_(context, 112,
@@ -177,7 +190,7 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                                        std::sqrt(distance * distance - reach * reach)
                                  : 0.5f * float(std::max(width, height)) * projectionScale;
         ShadowTileRequest r;
-        r.tiles = l.type == content::LightType::Spot ? 1u : SHADOW_CUBE_FACES;
+        r.tiles = singleViewSpot(l) ? 1u : SHADOW_CUBE_FACES;
         r.size = std::min(powerOfTwoAtLeast(2.0f * pixels),
                           powerOfTwoAtLeast(float(options.shadowMaxTileSize)));
         r.size = std::max(r.size, 16u);
@@ -201,6 +214,10 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
     std::vector<glm::uvec2> lightTable(std::max<size_t>(scene.lights.size(), 1),
                                        glm::uvec2(SHADOW_NO_VIEW, 0));
     previousKeys_.resize(scene.lights.size(), 0);
+    previousViews_.resize(scene.lights.size());
+    framesWaiting_.resize(scene.lights.size(), 0);
+    std::vector<uint64_t> keys(requests.size(), 0);
+    std::vector<ShadowRenderCandidate> candidates(requests.size());
     for (size_t q = 0; q < requests.size(); ++q) {
         const Request& request = requests[q];
         const LightInstance& instance = scene.lights[request.light];
@@ -242,10 +259,11 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                     }
                 }
             } else {
-                const bool spot = l.type == content::LightType::Spot;
+                const bool spot = singleViewSpot(l);
                 const float border = 1.0f + 2.0f * kBorderTexels / float(tile.size);
                 const float tanHalf =
-                    spot ? std::tan(std::min(std::clamp(l.outerConeAngle, 0.01f, 1.5f), 1.3f)) *
+                    spot ? std::tan(std::clamp(l.outerConeAngle, 0.01f,
+                                               float(SHADOW_MAX_SPOT_HALF_ANGLE))) *
                                border
                          : border;
                 const glm::vec3 forward =
@@ -272,13 +290,62 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
             }
             planned_.push_back(std::move(pv));
         }
-        lp.render = !options.shadowCache || !atlasHoldsMaps_ || previousKeys_[request.light] != key;
-        previousKeys_[request.light] = key;
+        keys[q] = key;
+        ShadowRenderCandidate& c = candidates[q];
+        const std::vector<GpuShadowView>& previous = previousViews_[request.light];
+        c.changed = !options.shadowCache || !atlasHoldsMaps_ || previousKeys_[request.light] != key;
+        // Last frame's maps can stand in only where they still are: same tiles (no other
+        // light renders into them this frame, as tiles never overlap). Cascades follow the
+        // camera and always render.
+        c.keepable = options.shadowCache && atlasHoldsMaps_ && !request.cascade &&
+                     previous.size() == request.views;
+        for (uint32_t v = 0; v < request.views; ++v) {
+            const ShadowTile& tile = plan.tiles[q][v];
+            c.texels += uint64_t(tile.size) * tile.size;
+            if (c.keepable && previous[v].tile != planned_[lp.firstView + v].gpu.tile)
+                c.keepable = false;
+        }
+        c.priority = tiles[q].priority;
+        c.framesWaiting = framesWaiting_[request.light];
         lightTable[request.light] = glm::uvec2(lp.firstView, lp.viewCount);
-        rendersThisFrame_ |= lp.render;
-        ++stats_.shadowedLights;
-        (lp.render ? stats_.mapsRendered : stats_.mapsCached) += 1;
         lightPlans_.push_back(lp);
+    }
+
+    const std::vector<ShadowRenderChoice> choices =
+        planShadowRenders(candidates, options.shadowCache ? options.shadowRenderBudget : 0);
+    std::vector<bool> requested(scene.lights.size(), false);
+    for (size_t q = 0; q < lightPlans_.size(); ++q) {
+        LightPlan& lp = lightPlans_[q];
+        const uint32_t light = lp.light;
+        requested[light] = true;
+        lp.render = choices[q] == ShadowRenderChoice::Render;
+        ++stats_.shadowedLights;
+        if (choices[q] == ShadowRenderChoice::Keep) {
+            // Sample the maps with the views they were rendered from; the key stays, so the
+            // light asks again next frame.
+            for (uint32_t v = 0; v < lp.viewCount; ++v)
+                planned_[lp.firstView + v].gpu = previousViews_[light][v];
+            ++framesWaiting_[light];
+            ++stats_.mapsKept;
+            continue;
+        }
+        framesWaiting_[light] = 0;
+        if (lp.render) {
+            previousKeys_[light] = keys[q];
+            previousViews_[light].clear();
+            for (uint32_t v = 0; v < lp.viewCount; ++v)
+                previousViews_[light].push_back(planned_[lp.firstView + v].gpu);
+        }
+        rendersThisFrame_ |= lp.render;
+        (lp.render ? stats_.mapsRendered : stats_.mapsCached) += 1;
+    }
+    // A light that casts no shadow this frame loses its claim on the atlas: another light may
+    // render into its tiles.
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        if (requested[i]) continue;
+        previousKeys_[i] = 0;
+        previousViews_[i].clear();
+        framesWaiting_[i] = 0;
     }
 
     ensureHostBuffer(context_, views_, planned_.size() * sizeof(GpuShadowView));
@@ -347,10 +414,12 @@ void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
 ShadowDescriptors ShadowPass::descriptors(bool enabled) const {
     if (!enabled) {
         return {{pointSampler_.handle(), placeholderAtlas_.view(), kRead},
+                {compareSampler_.handle(), placeholderAtlas_.view(), kRead},
                 {placeholderBuffer_.handle(), 0, VK_WHOLE_SIZE},
                 {placeholderBuffer_.handle(), 0, VK_WHOLE_SIZE}};
     }
     return {{pointSampler_.handle(), atlas_.view(), kRead},
+            {compareSampler_.handle(), atlas_.view(), kRead},
             {views_.handle(), 0, VK_WHOLE_SIZE},
             {lightTable_.handle(), 0, VK_WHOLE_SIZE}};
 }

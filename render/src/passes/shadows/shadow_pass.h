@@ -32,7 +32,8 @@ static_assert(sizeof(GpuShadowView) == 112, "std430 layout of ShadowView");
 
 // What the shading passes bind (placeholders when no light casts).
 struct ShadowDescriptors {
-    VkDescriptorImageInfo atlas;
+    VkDescriptorImageInfo atlas;         // raw depths (blocker search, thickness)
+    VkDescriptorImageInfo atlasCompare;  // the same through the comparison sampler (filtering)
     VkDescriptorBufferInfo views;
     VkDescriptorBufferInfo lights;
 };
@@ -41,6 +42,7 @@ struct ShadowFrameStats {
     uint32_t shadowedLights = 0;
     uint32_t mapsRendered = 0;  // lights whose maps were rendered this frame
     uint32_t mapsCached = 0;    // lights whose maps were kept from an earlier frame
+    uint32_t mapsKept = 0;      // lights that changed but kept stale maps (render budget spent)
     double atlasUsed = 0.0;     // share of the atlas's texels in tiles
 };
 
@@ -86,6 +88,7 @@ private:
     GpuContext& context_;
     Pipeline pipeline_;
     Sampler pointSampler_;
+    Sampler compareSampler_;
     GpuImage atlas_;
     GpuImage placeholderAtlas_;
     GpuBuffer placeholderBuffer_;
@@ -96,6 +99,8 @@ private:
     std::vector<PlannedView> planned_;
     std::vector<LightPlan> lightPlans_;
     std::vector<uint64_t> previousKeys_;  // per light slot: what its maps were rendered from
+    std::vector<std::vector<GpuShadowView>> previousViews_;  // per light slot: those views
+    std::vector<uint32_t> framesWaiting_;  // per light slot: frames it kept stale maps
     ShadowFrameStats stats_;
 };
 

@@ -14,5 +14,9 @@
 // Cube faces of a point light's shadow, in major-axis order +X, -X, +Y, -Y, +Z, -Z.
 #define SHADOW_CUBE_FACES 6u
 #define SHADOW_MAX_CASCADES 4u
+// Spot lights up to this outer half-angle (radians, about 74.5 degrees) get one perspective
+// view; wider cones, whose single view would stretch its texels toward the rim (and cannot
+// reach 90 degrees), get the six cube faces of a point light.
+#define SHADOW_MAX_SPOT_HALF_ANGLE 1.3
 
 #endif
