@@ -19,6 +19,9 @@ layout(push_constant) uniform Push {
     uint slices;
     uint steps;
     float thickness;  // unused here (the reference's)
+    // Added to every pixel's slice rotation and step jitter (fractions of their periods):
+    // zero without temporal accumulation, a low-discrepancy sequence over frames with it.
+    vec2 frameRotation;
 } push;
 
 // cos of the horizon seen from P along one side of the slice: samples farther than the
@@ -64,7 +67,7 @@ void main() {
     // One pixel's width at P's depth, for the radius in pixels.
     float pixelWorld = length(aoWorldFromDepth(centre + vec2(1.0, 0.0), depth) - P);
     float radiusPixels = push.radius / max(pixelWorld, 1e-8);
-    vec2 noise = aoPixelNoise(pixel);
+    vec2 noise = fract(aoPixelNoise(pixel) + push.frameRotation);
 
     float visibility = 0.0;
     vec3 bent = vec3(0.0);
