@@ -96,6 +96,7 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     if (resources.environment()) f.ibl = options.ibl;
     // Occlusion of the sky's light: nothing to occlude without a sky.
     if (f.ibl) f.ao = options.ao;
+    f.aoSpecularFromHorizons = options.aoSettings.specular == AoSpecular::HorizonSlice;
     for (const DrawItem& draw : scene.draws) {
         const content::Material& material = resources.material(draw.material);
         if (material.alphaMode != content::AlphaMode::Blend) {
@@ -496,16 +497,20 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         };
         ResourceHandle raw =
             g.createImage("ao.raw", AmbientOcclusionPass::occlusionDesc(width_, height_));
+        ResourceHandle specular =
+            g.createImage("ao.specular", AmbientOcclusionPass::specularDesc(width_, height_));
         if (features.ao == AoMode::Gtao) {
             auto p = g.addPass("ambient_occlusion_gtao", PassKind::Device,
-                               [this, ids, normal, raw, aoInputs](PassContext& ctx) {
+                               [this, ids, normal, raw, specular, aoInputs](PassContext& ctx) {
                                    AmbientOcclusionPass::Inputs in = aoInputs;
                                    in.depth = ctx.image(ids.depth);
                                    in.normalRoughMetal = ctx.image(normal);
-                                   aoPass_->recordGtao(ctx.cmd(), in, ctx.image(raw));
+                                   aoPass_->recordGtao(ctx.cmd(), in, ctx.image(raw),
+                                                       ctx.image(specular));
                                });
             declareInputs(p);
             raw = p.write(raw, Use::StorageWrite);
+            specularOcclusion = p.write(specular, Use::StorageWrite);
             ResourceHandle filtered =
                 g.createImage("ao.filtered", AmbientOcclusionPass::occlusionDesc(width_, height_));
             auto d = g.addPass("ambient_occlusion_denoise", PassKind::Device,
@@ -529,8 +534,6 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 aoHistoryValid_ = true;
             }
         } else {
-            ResourceHandle specular =
-                g.createImage("ao.specular", AmbientOcclusionPass::specularDesc(width_, height_));
             auto p = g.addPass("ambient_occlusion_reference", PassKind::Device,
                                [this, ids, normal, raw, specular, aoInputs](PassContext& ctx) {
                                    AmbientOcclusionPass::Inputs in = aoInputs;

@@ -1,4 +1,4 @@
-// Rows: GTAO's sky visibility and its cone-cone specular occlusion against the reference mode
+// Rows: GTAO's sky visibility and its specular occlusion against the reference mode
 // (rays marched against the same depth buffer), by radius and slice count, with the AO passes'
 // GPU time: a black box on a floor under a uniform white sky (tests/render/
 // ambient_occlusion_scene.h).
@@ -137,8 +137,9 @@ void addAmbientOcclusionRows(ReportContext& context) {
         }
     }
 
-    // Specular occlusion: a black glossy floor (specular only), GTAO's estimate from its
-    // visibility against the reference's rays drawn from the GGX lobe.
+    // Specular occlusion: a black glossy floor (specular only), GTAO's two estimates (from
+    // the visibility; from the horizons of the slice that holds the reflection vector) against
+    // the reference's rays drawn from the GGX lobe.
     for (float roughness :
          quick ? std::vector<float>{0.5f} : std::vector<float>{0.2f, 0.5f, 0.8f}) {
         content::Material glossy = lambertWhite();
@@ -150,20 +151,27 @@ void addAmbientOcclusionRows(ReportContext& context) {
         settings.referenceRays = quick ? 32 : 256;
         const Measured specularOff = measure(specularScene, AoMode::Off, settings, 1);
         const Measured reference = measure(specularScene, AoMode::Reference, settings, 1);
-        const Measured gtao = measure(specularScene, AoMode::Gtao, settings, 1);
-        const ShareError e =
-            shareError(specularScene, gtao.frame, reference.frame, specularOff.frame);
-        char name[96], metric[240], where[96];
-        std::snprintf(name, sizeof(name),
-                      "GTAO specular occlusion (from visibility), roughness %.1f", roughness);
-        std::snprintf(metric, sizeof(metric),
-                      "mean |occluded / unoccluded specular - reference| where the reference is "
-                      "under 0.9 (%u px; black glossy floor, radius 1.5 m, %ux%u)",
-                      e.pixels, size, size);
-        std::snprintf(where, sizeof(where), "max %.3f", e.max);
-        context.report.rows.push_back(
-            {name, "--ao reference (rays from the GGX lobe's visible normals)", metric, e.meanAbs,
-             "abs", where, "AO passes " + formatCost(gtao.aoMs, reference.aoMs, "ms")});
+        for (AoSpecular source : {AoSpecular::FromVisibility, AoSpecular::HorizonSlice}) {
+            RendererOptions options = BoxOnFloor::optionsFor(AoMode::Gtao, settings);
+            options.aoSettings.specular = source;
+            const Measured gtao = measure(specularScene, AoMode::Gtao, settings, 1, &options);
+            const ShareError e =
+                shareError(specularScene, gtao.frame, reference.frame, specularOff.frame);
+            char name[112], metric[240], where[96];
+            std::snprintf(name, sizeof(name), "GTAO specular occlusion (%s), roughness %.1f",
+                          source == AoSpecular::FromVisibility ? "from visibility, default"
+                                                               : "horizon slice through R",
+                          roughness);
+            std::snprintf(metric, sizeof(metric),
+                          "mean |occluded / unoccluded specular - reference| where the reference "
+                          "is under 0.9 (%u px; black glossy floor, radius 1.5 m, %ux%u)",
+                          e.pixels, size, size);
+            std::snprintf(where, sizeof(where), "max %.3f", e.max);
+            context.report.rows.push_back(
+                {name, "--ao reference (rays from the GGX lobe's visible normals)", metric,
+                 e.meanAbs, "abs", where,
+                 "AO passes " + formatCost(gtao.aoMs, reference.aoMs, "ms")});
+        }
     }
 }
 

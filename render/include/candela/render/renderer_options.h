@@ -70,6 +70,12 @@ enum class AoTemporal {
     Never,
 };
 
+// Where GTAO's specular occlusion comes from (render/README.md "Ambient occlusion").
+enum class AoSpecular {
+    FromVisibility,  // Lagarde and de Rousiers' fit of the visibility alone: the default
+    HorizonSlice,    // the horizons of one more slice, the one that holds the reflection vector
+};
+
 // What the AO passes do. radius and intensity come from the scene (FrameScene) each frame.
 struct AmbientOcclusionSettings {
     float radius = 1.5f;              // metres the horizon search (and the reference's rays) reach
@@ -83,6 +89,7 @@ struct AmbientOcclusionSettings {
     // off only to measure visibility itself (a black occluder on a white floor).
     bool multiBounce = true;
     AoTemporal temporal = AoTemporal::WithTaa;
+    AoSpecular specular = AoSpecular::FromVisibility;
     uint32_t temporalFrames = 16;  // most frames the accumulation averages (1 / n lowest blend)
 };
 

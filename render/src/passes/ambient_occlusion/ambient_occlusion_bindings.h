@@ -12,7 +12,8 @@
 // gtao.comp and ao_reference.comp write (world bent normal xyz, visibility) here;
 // ao_denoise.comp reads it.
 #define AO_BINDING_OUTPUT 4
-// ao_denoise.comp: the filtered result. ao_reference.comp: the reflection lobe's visibility.
+// ao_denoise.comp: the filtered result. gtao.comp and ao_reference.comp: the reflection lobe's
+// visibility.
 #define AO_BINDING_SECOND_OUTPUT 5
 #define AO_BINDING_INPUT 6
 // ao_temporal.comp: the G-buffer's motion, last frame's history (read) and this frame's

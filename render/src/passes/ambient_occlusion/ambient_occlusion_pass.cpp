@@ -21,6 +21,7 @@ struct Push {
     uint32_t steps;
     float thickness;
     glm::vec2 frameRotation;  // gtao.comp only
+    uint32_t specularSlice;   // gtao.comp only
 };
 
 struct TemporalPush {
@@ -43,6 +44,7 @@ AmbientOcclusionPass::AmbientOcclusionPass(GpuContext& context)
         {AO_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {AO_BINDING_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {AO_BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+        {AO_BINDING_SECOND_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
     };
     gtao_ = Pipeline::compute(context, gtao_comp_spv, gtao, sizeof(Push));
     const DescriptorBinding denoise[] = {
@@ -110,22 +112,25 @@ glm::vec2 AmbientOcclusionPass::frameRotation(uint32_t frame) {
     return {float(n * kA1 - std::floor(n * kA1)), float(n * kA2 - std::floor(n * kA2))};
 }
 
-void AmbientOcclusionPass::recordGtao(VkCommandBuffer cmd, const Inputs& in,
-                                      const ImageRef& noisy) const {
+void AmbientOcclusionPass::recordGtao(VkCommandBuffer cmd, const Inputs& in, const ImageRef& noisy,
+                                      const ImageRef& specular) const {
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo normal{pointSampler_.handle(), in.normalRoughMetal.view(),
                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo output{VK_NULL_HANDLE, noisy.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo second{VK_NULL_HANDLE, specular.view(), VK_IMAGE_LAYOUT_GENERAL};
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
         sampledImageWrite(AO_BINDING_DEPTH, &depth),
         sampledImageWrite(AO_BINDING_NORMAL, &normal),
         storageImageWrite(AO_BINDING_OUTPUT, &output),
+        storageImageWrite(AO_BINDING_SECOND_OUTPUT, &second),
     };
+    const uint32_t specularSlice = in.settings.specular == AoSpecular::HorizonSlice ? 1u : 0u;
     const Push push{in.settings.radius, in.settings.slices, in.settings.steps, 0.0f,
-                    in.frameRotation};
+                    in.frameRotation,   specularSlice};
     gtao_.bind(cmd);
     gtao_.pushDescriptors(cmd, writes);
     gtao_.pushConstants(cmd, &push, sizeof(push));
@@ -204,8 +209,12 @@ void AmbientOcclusionPass::recordReference(VkCommandBuffer cmd, const Inputs& in
         storageImageWrite(AO_BINDING_OUTPUT, &output),
         storageImageWrite(AO_BINDING_SECOND_OUTPUT, &second),
     };
-    const Push push{in.settings.radius, in.settings.referenceRays, in.settings.referenceSteps,
-                    in.settings.referenceThickness, glm::vec2(0.0f)};
+    const Push push{in.settings.radius,
+                    in.settings.referenceRays,
+                    in.settings.referenceSteps,
+                    in.settings.referenceThickness,
+                    glm::vec2(0.0f),
+                    0u};
     reference_.bind(cmd);
     reference_.pushDescriptors(cmd, writes);
     reference_.pushConstants(cmd, &push, sizeof(push));

@@ -20,7 +20,7 @@ public:
 
     // RGBA16F (world bent normal, visibility), what every AO pass writes and lighting reads.
     static ImageDesc occlusionDesc(uint32_t width, uint32_t height);
-    // R16F: the reference's visibility of the specular lobe.
+    // R16F: the visibility of the specular lobe (GTAO's horizon slice or the reference's rays).
     static ImageDesc specularDesc(uint32_t width, uint32_t height);
     // RGBA32UI: the temporal history (ao_temporal.comp's packing).
     static ImageDesc historyDesc(uint32_t width, uint32_t height);
@@ -34,8 +34,10 @@ public:
         AmbientOcclusionSettings settings;
         glm::vec2 frameRotation{0.0f};  // zero without temporal accumulation
     };
-    // GTAO into `noisy` (StorageWrite), then the denoise from it (Sampled) into `filtered`.
-    void recordGtao(VkCommandBuffer cmd, const Inputs& in, const ImageRef& noisy) const;
+    // GTAO into `noisy` and the reflection lobe's visibility into `specular` (StorageWrite),
+    // then the denoise from `noisy` (Sampled) into `filtered`.
+    void recordGtao(VkCommandBuffer cmd, const Inputs& in, const ImageRef& noisy,
+                    const ImageRef& specular) const;
     void recordDenoise(VkCommandBuffer cmd, const Inputs& in, const ImageRef& noisy,
                        const ImageRef& filtered) const;
     // Temporal accumulation (ao_temporal.comp): `current` (the denoise's output), `motion`
