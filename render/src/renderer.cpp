@@ -97,6 +97,7 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     if (resources.environment()) f.ibl = options.ibl;
     // Occlusion of the sky's light: nothing to occlude without a sky.
     if (f.ibl) f.ao = options.ao;
+    f.aoSpecularFromHorizons = options.aoSettings.specular == AoSpecular::HorizonSlice;
     for (const DrawItem& draw : scene.draws) {
         const content::Material& material = resources.material(draw.material);
         if (material.alphaMode != content::AlphaMode::Blend) {
@@ -129,6 +130,55 @@ constexpr ImageState kDiscardAfterCopies{VK_IMAGE_LAYOUT_UNDEFINED,
                                          VK_PIPELINE_STAGE_2_TRANSFER_BIT, 0};
 constexpr ImageState kReadyToCopy{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                   VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
+
+// GTAO's temporal accumulation after its denoise (ao_temporal.comp): reads the history
+// written last frame, writes the other; returns the accumulated occlusion.
+struct AoTemporalDeclaration {
+    ResourceHandle current, motion, depth, normal, camera;
+    const AmbientOcclusionPass* pass;
+    AmbientOcclusionPass::Inputs aoInputs;
+    const GpuImage* readHistory;
+    const GpuImage* writeHistory;
+    bool historyValid;
+    uint32_t maxFrames;
+    uint32_t width, height;
+};
+
+ResourceHandle declareAoTemporal(FrameGraph& g, const AoTemporalDeclaration& d) {
+    // As TAA's history: last frame's image is read in the state it was left in, the other's
+    // contents are discarded and rewritten.
+    constexpr ImageState kSampledByCompute{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                           VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+    constexpr ImageState kDiscard{VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                  0};
+    const ResourceHandle history =
+        g.importImage("ao.history", d.readHistory, kSampledByCompute, ImageState{});
+    ResourceHandle written =
+        g.importImage("ao.history_written", d.writeHistory, kDiscard, kSampledByCompute);
+    ResourceHandle accumulated =
+        g.createImage("ao.accumulated", AmbientOcclusionPass::occlusionDesc(d.width, d.height));
+    auto p = g.addPass("ambient_occlusion_temporal", PassKind::Device,
+                       [d, history, written, accumulated](PassContext& ctx) {
+                           AmbientOcclusionPass::Inputs in = d.aoInputs;
+                           in.depth = ctx.image(d.depth);
+                           in.normalRoughMetal = ctx.image(d.normal);
+                           const AmbientOcclusionPass::TemporalInputs temporal{
+                               ctx.image(d.current), ctx.image(d.motion), ctx.image(history),
+                               d.historyValid, d.maxFrames};
+                           d.pass->recordTemporal(ctx.cmd(), in, temporal, ctx.image(accumulated),
+                                                  ctx.image(written));
+                       });
+    p.read(d.depth, Use::Sampled);
+    p.read(d.normal, Use::Sampled);
+    p.read(d.current, Use::Sampled);
+    p.read(d.motion, Use::Sampled);
+    p.read(history, Use::Sampled);
+    p.read(d.camera, Use::Uniform);
+    p.write(written, Use::StorageWrite);
+    accumulated = p.write(accumulated, Use::StorageWrite);
+    return accumulated;
+}
 
 }  // namespace
 
@@ -210,6 +260,17 @@ void Renderer::createTargets() {
     historyValid_ = false;
     hasPreviousFrame_ = false;
     frameIndex_ = 0;
+    if (aoAccumulates()) {
+        // Cleared and shader-readable from the start, like TAA's, so every frame imports them
+        // in the same states (the first frame ignores the history through a push constant).
+        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
+        for (GpuImage& h : aoHistory_) {
+            h = GpuImage(context_, AmbientOcclusionPass::historyDesc(width_, height_));
+            writeImage(context_, h, 16, zeros.data());
+        }
+    }
+    aoHistoryValid_ = false;
+    aoFrame_ = 0;
     // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
     ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
@@ -218,8 +279,23 @@ void Renderer::createTargets() {
                      VkDeviceSize(LightingPass::workgroupCount(width_, height_)) * 8);
 }
 
+bool Renderer::aoAccumulates() const {
+    if (options_.ao != AoMode::Gtao) return false;
+    switch (options_.aoSettings.temporal) {
+        case AoTemporal::WithTaa:
+            return options_.aa == AntiAliasing::Taa;
+        case AoTemporal::Always:
+            return true;
+        case AoTemporal::Never:
+            break;
+    }
+    return false;
+}
+
 void Renderer::restartTemporalHistory() {
     historyValid_ = false;
+    aoHistoryValid_ = false;
+    aoFrame_ = 0;
     hasPreviousFrame_ = false;
     frameIndex_ = 0;
     adaptedEv100_.reset();
@@ -411,6 +487,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         AmbientOcclusionPass::Inputs aoInputs{{}, {}, &cameraBuffer_, options_.aoSettings};
         aoInputs.settings.radius = std::max(inputs.scene.aoRadius, 1e-3f);
         aoInputs.settings.intensity = inputs.scene.aoIntensity;
+        // Temporal accumulation rotates the slices every frame; without it they stay put, so
+        // a single frame (and every golden) is what it always was.
+        const bool accumulate = features.ao == AoMode::Gtao && aoAccumulates();
+        if (accumulate) aoInputs.frameRotation = AmbientOcclusionPass::frameRotation(aoFrame_++);
         const ResourceHandle normal = h.color[1];
         auto declareInputs = [&](FrameGraph::PassBuilder& p) {
             p.read(h.depth, Use::Sampled);
@@ -419,16 +499,20 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         };
         ResourceHandle raw =
             g.createImage("ao.raw", AmbientOcclusionPass::occlusionDesc(width_, height_));
+        ResourceHandle specular =
+            g.createImage("ao.specular", AmbientOcclusionPass::specularDesc(width_, height_));
         if (features.ao == AoMode::Gtao) {
             auto p = g.addPass("ambient_occlusion_gtao", PassKind::Device,
-                               [this, ids, normal, raw, aoInputs](PassContext& ctx) {
+                               [this, ids, normal, raw, specular, aoInputs](PassContext& ctx) {
                                    AmbientOcclusionPass::Inputs in = aoInputs;
                                    in.depth = ctx.image(ids.depth);
                                    in.normalRoughMetal = ctx.image(normal);
-                                   aoPass_->recordGtao(ctx.cmd(), in, ctx.image(raw));
+                                   aoPass_->recordGtao(ctx.cmd(), in, ctx.image(raw),
+                                                       ctx.image(specular));
                                });
             declareInputs(p);
             raw = p.write(raw, Use::StorageWrite);
+            specularOcclusion = p.write(specular, Use::StorageWrite);
             ResourceHandle filtered =
                 g.createImage("ao.filtered", AmbientOcclusionPass::occlusionDesc(width_, height_));
             auto d = g.addPass("ambient_occlusion_denoise", PassKind::Device,
@@ -442,9 +526,16 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             declareInputs(d);
             d.read(raw, Use::Sampled);
             occlusion = d.write(filtered, Use::StorageWrite);
+            if (accumulate) {
+                features_.push_back("ao_temporal");
+                occlusion = declareAoTemporal(
+                    g, {*occlusion, h.motion, h.depth, normal, h.camera, aoPass_.get(), aoInputs,
+                        &aoHistory_[aoHistoryWrite_ ^ 1u], &aoHistory_[aoHistoryWrite_],
+                        aoHistoryValid_, options_.aoSettings.temporalFrames, width_, height_});
+                aoHistoryWrite_ ^= 1u;
+                aoHistoryValid_ = true;
+            }
         } else {
-            ResourceHandle specular =
-                g.createImage("ao.specular", AmbientOcclusionPass::specularDesc(width_, height_));
             auto p = g.addPass("ambient_occlusion_reference", PassKind::Device,
                                [this, ids, normal, raw, specular, aoInputs](PassContext& ctx) {
                                    AmbientOcclusionPass::Inputs in = aoInputs;
@@ -458,6 +549,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             specularOcclusion = p.write(specular, Use::StorageWrite);
         }
     }
+    if (features.ao != AoMode::Gtao) aoHistoryValid_ = false;  // the sequence broke
     const float aoIntensity = std::clamp(inputs.scene.aoIntensity, 0.0f, 1.0f);
     const bool aoMultiBounce = options_.aoSettings.multiBounce;
 

@@ -62,13 +62,8 @@ public:
 
     // The floor's radiance (= visibility: white Lambert floor, white sky of radiance 1).
     CapturedFrame render(AoMode mode, const Settings& settings, RendererStats* stats = nullptr,
-                         uint32_t frames = 1) {
-        RendererOptions options;
-        options.ao = mode;
-        options.aoSettings.slices = settings.slices;
-        options.aoSettings.steps = settings.steps;
-        options.aoSettings.referenceRays = settings.referenceRays;
-        options.aoSettings.multiBounce = false;  // the occluder is black: no bounce
+                         uint32_t frames = 1, const RendererOptions* given = nullptr) {
+        const RendererOptions options = given ? *given : optionsFor(mode, settings);
         SceneResources resources(context_);
         resources.setEnvironment(scene_.environment);
         FrameInputs inputs = scene_.prepare(resources);
@@ -77,6 +72,64 @@ public:
         return renderOffscreen(context_, inputs, scene_.width, scene_.height, frames, &resources,
                                options, stats);
     }
+
+    // The renderer options render() uses for `mode` and `settings`.
+    static RendererOptions optionsFor(AoMode mode, const Settings& settings) {
+        RendererOptions options;
+        options.ao = mode;
+        options.aoSettings.slices = settings.slices;
+        options.aoSettings.steps = settings.steps;
+        options.aoSettings.referenceRays = settings.referenceRays;
+        options.aoSettings.multiBounce = false;  // the occluder is black: no bounce
+        return options;
+    }
+
+    // Frames from one renderer, so its temporal history carries over: each render() draws the
+    // box moved by `boxOffset`, with motion vectors from the previous call's offset.
+    class Sequence {
+    public:
+        Sequence(BoxOnFloor& owner, const RendererOptions& options, const Settings& settings)
+            : owner_(owner),
+              settings_(settings),
+              resources_(owner.context_),
+              renderer_(owner.context_, owner.scene_.width, owner.scene_.height, options),
+              submitter_(owner.context_),
+              readback_(owner.context_, owner.scene_.width, owner.scene_.height) {
+            resources_.setEnvironment(owner.scene_.environment);
+        }
+
+        CapturedFrame render(const glm::vec3& boxOffset, RendererStats* stats = nullptr) {
+            FrameInputs inputs = owner_.scene_.prepare(resources_);
+            inputs.scene.aoRadius = settings_.radius;
+            inputs.scene.aoIntensity = settings_.intensity;
+            const glm::mat4 shift = glm::translate(glm::mat4(1.0f), boxOffset);
+            const glm::mat4 was =
+                glm::translate(glm::mat4(1.0f), previousOffset_.value_or(boxOffset));
+            // prepare() rebuilt the scene's draws, which inputs.scene.draws views.
+            std::vector<DrawItem>& draws = owner_.scene_.draws;
+            const glm::mat4 boxWorld = draws[1].world;
+            draws[1].world = shift * boxWorld;
+            previousWorlds_ = {draws[0].world, was * boxWorld};
+            inputs.scene.previousWorlds = previousWorlds_;
+            previousOffset_ = boxOffset;
+            VkCommandBuffer cmd = renderer_.recordFrame(submitter_, inputs, &resources_);
+            readback_.recordCopy(cmd, renderer_);
+            submitter_.submit();
+            submitter_.waitIdle();
+            if (stats) *stats = renderer_.collectStats();
+            return readback_.read();
+        }
+
+    private:
+        BoxOnFloor& owner_;
+        Settings settings_;
+        SceneResources resources_;
+        Renderer renderer_;
+        FrameSubmitter submitter_;
+        FrameReadback readback_;
+        std::optional<glm::vec3> previousOffset_;
+        std::vector<glm::mat4> previousWorlds_;
+    };
 
     // The ray-traced visibility at (x, y); negative where the pixel is not open floor or is
     // next to the box's silhouette.

@@ -96,3 +96,97 @@ TEST(AmbientOcclusion, ZeroIntensityMatchesOff) {
     EXPECT_NEAR(zero.occludedMeanAbs, off.occludedMeanAbs, 1e-4);
     EXPECT_EQ(context().validationMessages(), 0u);
 }
+
+namespace {
+
+// Mean |a - b| of the floor's radiance (= its visibility) over the pixels `use` keeps.
+template <typename Keep>
+double meanFloorChange(const CapturedFrame& a, const CapturedFrame& b, Keep use) {
+    double sum = 0.0;
+    uint32_t pixels = 0;
+    for (uint32_t y = 0; y < a.height; ++y) {
+        for (uint32_t x = 0; x < a.width; ++x) {
+            if (!use(x, y)) continue;
+            sum += std::abs(double(hdrPixel(a, x, y)[1]) - double(hdrPixel(b, x, y)[1]));
+            ++pixels;
+        }
+    }
+    return pixels ? sum / pixels : 0.0;
+}
+
+RendererOptions accumulating() {
+    RendererOptions options = BoxOnFloor::optionsFor(AoMode::Gtao, {});
+    // With --aa off, so the frame shows AO's own accumulation (TAA would average it too).
+    options.aoSettings.temporal = AoTemporal::Always;
+    return options;
+}
+
+}  // namespace
+
+// Temporal accumulation: a still view averages GTAO over frames whose slices rotate, so the
+// frame-to-frame change of the floor's visibility falls as frames accumulate, and the
+// accumulated result is no farther from the ray trace than a single frame.
+TEST(AmbientOcclusionTemporal, AStillViewConverges) {
+    BoxOnFloor scene(context(), 96);
+    BoxOnFloor::Sequence sequence(scene, accumulating(), {});
+    auto floor = [&](uint32_t x, uint32_t y) { return scene.trueVisibility(int(x), int(y)) >= 0; };
+    std::vector<CapturedFrame> frames;
+    constexpr uint32_t kFrames = 8;
+    for (uint32_t f = 0; f < kFrames; ++f)
+        frames.push_back(sequence.render(glm::vec3(0.0f)));
+    const double early = meanFloorChange(frames[1], frames[0], floor);
+    const double late = meanFloorChange(frames[kFrames - 1], frames[kFrames - 2], floor);
+    const VisibilityError single = scene.compare(frames[0]);
+    const VisibilityError accumulated = scene.compare(frames[kFrames - 1]);
+    std::printf(
+        "frame-to-frame floor change: frames 0-1 %.5f, %u-%u %.5f; error vs ray trace: "
+        "1 frame %.4f (open %.4f), %u frames %.4f (open %.4f)\n",
+        early, kFrames - 2, kFrames - 1, late, single.occludedMeanAbs, single.openMeanDarkening,
+        kFrames, accumulated.occludedMeanAbs, accumulated.openMeanDarkening);
+    EXPECT_GT(early, 1e-4) << "the slices must rotate between frames";
+    EXPECT_LT(late, 0.3 * early);
+    EXPECT_LE(accumulated.occludedMeanAbs, single.occludedMeanAbs + 0.005);
+    EXPECT_LE(accumulated.occludedMeanAbs, 0.07);
+    EXPECT_LE(accumulated.openMeanDarkening, 0.05);
+    EXPECT_EQ(context().validationMessages(), 0u);
+}
+
+// The box jumps aside after the history has converged: the floor it uncovers rejects the
+// history there (the box's depth and normals) and shows this frame's visibility, not the
+// box's accumulated occlusion.
+TEST(AmbientOcclusionTemporal, UncoveredFloorLeavesNoStaleOcclusion) {
+    BoxOnFloor scene(context(), 96);
+    BoxOnFloor::Sequence sequence(scene, accumulating(), {});
+    const glm::vec3 start(0.0f), moved(-1.4f, 0.0f, 0.6f);
+    CapturedFrame before;
+    for (uint32_t f = 0; f < 4; ++f)
+        before = sequence.render(start);
+    const CapturedFrame after = sequence.render(moved);
+    // The same frame without history: what the uncovered floor should show.
+    RendererOptions fresh = accumulating();
+    fresh.aoSettings.temporal = AoTemporal::Never;
+    BoxOnFloor::Sequence single(scene, fresh, {});
+    const CapturedFrame expected = single.render(moved);
+    // Uncovered: the box (black) before, lit floor now, away from the new box's edges.
+    auto uncovered = [&](uint32_t x, uint32_t y) {
+        if (hdrPixel(before, x, y)[1] > 0.0f) return false;
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                const uint32_t qx = uint32_t(std::clamp(int(x) + dx, 0, int(after.width) - 1));
+                const uint32_t qy = uint32_t(std::clamp(int(y) + dy, 0, int(after.height) - 1));
+                if (hdrPixel(expected, qx, qy)[1] <= 0.0f) return false;
+            }
+        }
+        return true;
+    };
+    uint32_t pixels = 0;
+    for (uint32_t y = 0; y < after.height; ++y)
+        for (uint32_t x = 0; x < after.width; ++x)
+            pixels += uncovered(x, y) ? 1u : 0u;
+    const double stale = meanFloorChange(after, expected, uncovered);
+    std::printf("uncovered floor: %u px, mean |accumulated - fresh| %.4f\n", pixels, stale);
+    ASSERT_GT(pixels, 60u) << "the move must uncover floor the box covered";
+    // The slices rotate, so the two differ by GTAO's noise, not by the box's occlusion.
+    EXPECT_LE(stale, 0.03);
+    EXPECT_EQ(context().validationMessages(), 0u);
+}

@@ -527,7 +527,7 @@ TEST(Cli, BrdfFlagAndSceneSettingChooseTheBrdf) {
 
 // Issue 25: --ao picks the ambient occlusion (stats `features`, `ao_ms`, the passes in the
 // graph), a scene file's "ambient_occlusion" mode does when the flag is absent, off declares
-// no AO pass, and a bad value is refused.
+// no AO pass, GTAO accumulates over frames only with TAA, and a bad value is refused.
 TEST(Cli, AoFlagAndSceneSettingChooseTheAmbientOcclusion) {
     auto dir = tempDir();
     const std::string scene =
@@ -558,6 +558,14 @@ TEST(Cli, AoFlagAndSceneSettingChooseTheAmbientOcclusion) {
     EXPECT_TRUE(has(gtao, "ao_gtao"));
     EXPECT_GT(gtao["ao_ms"].get<double>(), 0.0);
     EXPECT_TRUE(gtao["passes"].contains("ambient_occlusion_gtao")) << gtao["passes"].dump();
+    // The application's default TAA brings history, so GTAO accumulates over frames; with
+    // --aa off it does not (no history to reproject).
+    EXPECT_TRUE(has(gtao, "ao_temporal"));
+    EXPECT_TRUE(gtao["passes"].contains("ambient_occlusion_temporal")) << gtao["passes"].dump();
+    const nlohmann::json single = stats("gtao_aa_off", scene + " --ao gtao --aa off");
+    EXPECT_TRUE(has(single, "ao_gtao"));
+    EXPECT_FALSE(has(single, "ao_temporal"));
+    EXPECT_FALSE(single["passes"].contains("ambient_occlusion_temporal"));
     const nlohmann::json off = stats("setting", offScene.string());
     EXPECT_FALSE(has(off, "ao_gtao"));
     EXPECT_EQ(off["ao_ms"].get<double>(), 0.0);

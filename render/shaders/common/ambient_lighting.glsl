@@ -62,22 +62,46 @@ vec3 prefilteredRadiance(AmbientSpecularLobe lobe, samplerCube prefilteredCube,
         .rgb;
 }
 
-// Radiance (before the sky intensity and occlusion) the environment reflects toward V.
-// `sh`: irradiance coefficients (irradiance_sh.comp); `prefilteredCube`: roughness per mip.
-vec3 environmentAmbient(Surface s, vec3 N, vec3 V, vec4 sh[9], samplerCube prefilteredCube,
-                        float prefilteredMipCount, sampler2D environmentBrdfLut, bool mobile) {
+// The three parts of the environment's ambient light on a surface, before the sky intensity
+// and occlusion: diffuse (lit from around `diffuseNormal`: N, or AO's bent normal), the split
+// sum's single-scattering specular, and the multiple scattering the energy-conserving BRDF
+// adds (zero otherwise). environmentAmbient and occludedEnvironmentAmbient each add them in
+// their own (unchanged) order, so sharing this changes no image by an ulp.
+struct EnvironmentAmbientParts {
+    vec3 diffuse;
+    vec3 specular;
+    vec3 multipleScattering;
+};
+
+EnvironmentAmbientParts environmentAmbientParts(Surface s, vec3 diffuseNormal, vec3 N, vec3 V,
+                                                vec4 sh[9], samplerCube prefilteredCube,
+                                                float prefilteredMipCount,
+                                                sampler2D environmentBrdfLut, bool mobile) {
+    EnvironmentAmbientParts parts;
     AmbientTerms t = ambientTermsOf(s);
-    vec3 diffuse = environmentDiffuse(t, N, N, sh);
+    parts.diffuse = environmentDiffuse(t, diffuseNormal, N, sh);
     float NoV = saturate(dot(N, V));
     AmbientSpecularLobe lobe = ambientSpecularLobe(s, N, V);
     vec3 prefiltered = prefilteredRadiance(lobe, prefilteredCube, prefilteredMipCount);
     vec3 environmentBrdf = environmentSpecularBrdf(s, t, lobe, NoV, environmentBrdfLut, mobile);
-    vec3 ambient = diffuse + prefiltered * environmentBrdf;
+    parts.specular = prefiltered * environmentBrdf;
+    parts.multipleScattering = vec3(0.0);
     if (kEnergyConserving) {
-        ambient += environmentMultipleScattering(t, lobe, environmentBrdf, NoV,
-                                                 environmentBrdfLut, mobile) *
-                   shIrradiance(sh, N) * (1.0 / PI);
+        parts.multipleScattering = environmentMultipleScattering(t, lobe, environmentBrdf, NoV,
+                                                                 environmentBrdfLut, mobile) *
+                                   shIrradiance(sh, N) * (1.0 / PI);
     }
+    return parts;
+}
+
+// Radiance (before the sky intensity and occlusion) the environment reflects toward V.
+// `sh`: irradiance coefficients (irradiance_sh.comp); `prefilteredCube`: roughness per mip.
+vec3 environmentAmbient(Surface s, vec3 N, vec3 V, vec4 sh[9], samplerCube prefilteredCube,
+                        float prefilteredMipCount, sampler2D environmentBrdfLut, bool mobile) {
+    EnvironmentAmbientParts parts = environmentAmbientParts(
+        s, N, N, V, sh, prefilteredCube, prefilteredMipCount, environmentBrdfLut, mobile);
+    vec3 ambient = parts.diffuse + parts.specular;
+    if (kEnergyConserving) ambient += parts.multipleScattering;
     return ambient;
 }
 
@@ -88,19 +112,12 @@ vec3 occludedEnvironmentAmbient(Surface s, vec3 N, vec3 bentNormal, vec3 V, vec4
                                 samplerCube prefilteredCube, float prefilteredMipCount,
                                 sampler2D environmentBrdfLut, bool mobile,
                                 vec3 diffuseVisibility, float specularVisibility) {
-    AmbientTerms t = ambientTermsOf(s);
-    vec3 diffuse = environmentDiffuse(t, bentNormal, N, sh);
-    float NoV = saturate(dot(N, V));
-    AmbientSpecularLobe lobe = ambientSpecularLobe(s, N, V);
-    vec3 prefiltered = prefilteredRadiance(lobe, prefilteredCube, prefilteredMipCount);
-    vec3 environmentBrdf = environmentSpecularBrdf(s, t, lobe, NoV, environmentBrdfLut, mobile);
-    vec3 specular = prefiltered * environmentBrdf;
-    if (kEnergyConserving) {
-        specular += environmentMultipleScattering(t, lobe, environmentBrdf, NoV,
-                                                  environmentBrdfLut, mobile) *
-                    shIrradiance(sh, N) * (1.0 / PI);
-    }
-    return diffuse * diffuseVisibility + specular * specularVisibility;
+    EnvironmentAmbientParts parts =
+        environmentAmbientParts(s, bentNormal, N, V, sh, prefilteredCube, prefilteredMipCount,
+                                environmentBrdfLut, mobile);
+    vec3 specular = parts.specular;
+    if (kEnergyConserving) specular += parts.multipleScattering;
+    return parts.diffuse * diffuseVisibility + specular * specularVisibility;
 }
 
 // The clear coat's reflection of the environment by the split sum (or seed 001's fit on the

@@ -1,10 +1,11 @@
-// Rows: GTAO's sky visibility and its cone-cone specular occlusion against the reference mode
+// Rows: GTAO's sky visibility and its specular occlusion against the reference mode
 // (rays marched against the same depth buffer), by radius and slice count, with the AO passes'
 // GPU time: a black box on a floor under a uniform white sky (tests/render/
 // ambient_occlusion_scene.h).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "../ambient_occlusion_scene.h"
@@ -24,12 +25,13 @@ struct Measured {
 };
 
 Measured measure(BoxOnFloor& scene, AoMode mode, const BoxOnFloor::Settings& settings,
-                 uint32_t repetitions) {
+                 uint32_t repetitions, const RendererOptions* options = nullptr,
+                 uint32_t frames = 2) {
     Measured m;
     std::vector<double> times;
     for (uint32_t r = 0; r < repetitions; ++r) {
         RendererStats stats;
-        m.frame = scene.render(mode, settings, &stats, 2);
+        m.frame = scene.render(mode, settings, &stats, frames, options);
         times.push_back(stats.aoMs);
     }
     m.aoMs = median(times);
@@ -106,8 +108,38 @@ void addAmbientOcclusionRows(ReportContext& context) {
         }
     }
 
-    // Specular occlusion: a black glossy floor (specular only), GTAO's estimate from its
-    // visibility against the reference's rays drawn from the GGX lobe.
+    // Temporal accumulation: a still view, 16 frames of rotated slices (--aa off, so the
+    // image is AO's own average), against the same reference at the default radius.
+    {
+        BoxOnFloor::Settings settings;
+        settings.referenceRays = quick ? 32 : 256;
+        const Measured reference = measure(diffuseScene, AoMode::Reference, settings, repetitions);
+        const Measured single = measure(diffuseScene, AoMode::Gtao, settings, repetitions);
+        RendererOptions options = BoxOnFloor::optionsFor(AoMode::Gtao, settings);
+        options.aoSettings.temporal = AoTemporal::Always;
+        const uint32_t frames = options.aoSettings.temporalFrames;
+        const Measured accumulated =
+            measure(diffuseScene, AoMode::Gtao, settings, repetitions, &options, frames);
+        for (const auto& [label, m] :
+             {std::pair{"1 frame", &single}, std::pair{"temporal, 16 frames", &accumulated}}) {
+            const ShareError e = shareError(diffuseScene, m->frame, reference.frame, off.frame);
+            char name[96], metric[240], where[96];
+            std::snprintf(name, sizeof(name), "GTAO, radius %.1f m, %u slices, %s", settings.radius,
+                          settings.slices, label);
+            std::snprintf(metric, sizeof(metric),
+                          "mean |visibility - reference| over floor pixels the reference sees "
+                          "under 0.9 (%u px; black box on a white floor, uniform sky, %ux%u)",
+                          e.pixels, size, size);
+            std::snprintf(where, sizeof(where), "max %.3f", e.max);
+            context.report.rows.push_back(
+                {name, "--ao reference (same radius)", metric, e.meanAbs, "abs", where,
+                 "AO passes per frame " + formatCost(m->aoMs, reference.aoMs, "ms")});
+        }
+    }
+
+    // Specular occlusion: a black glossy floor (specular only), GTAO's two estimates (from
+    // the visibility; from the horizons of the slice that holds the reflection vector) against
+    // the reference's rays drawn from the GGX lobe.
     for (float roughness :
          quick ? std::vector<float>{0.5f} : std::vector<float>{0.2f, 0.5f, 0.8f}) {
         content::Material glossy = lambertWhite();
@@ -119,20 +151,27 @@ void addAmbientOcclusionRows(ReportContext& context) {
         settings.referenceRays = quick ? 32 : 256;
         const Measured specularOff = measure(specularScene, AoMode::Off, settings, 1);
         const Measured reference = measure(specularScene, AoMode::Reference, settings, 1);
-        const Measured gtao = measure(specularScene, AoMode::Gtao, settings, 1);
-        const ShareError e =
-            shareError(specularScene, gtao.frame, reference.frame, specularOff.frame);
-        char name[96], metric[240], where[96];
-        std::snprintf(name, sizeof(name),
-                      "GTAO specular occlusion (from visibility), roughness %.1f", roughness);
-        std::snprintf(metric, sizeof(metric),
-                      "mean |occluded / unoccluded specular - reference| where the reference is "
-                      "under 0.9 (%u px; black glossy floor, radius 1.5 m, %ux%u)",
-                      e.pixels, size, size);
-        std::snprintf(where, sizeof(where), "max %.3f", e.max);
-        context.report.rows.push_back(
-            {name, "--ao reference (rays from the GGX lobe's visible normals)", metric, e.meanAbs,
-             "abs", where, "AO passes " + formatCost(gtao.aoMs, reference.aoMs, "ms")});
+        for (AoSpecular source : {AoSpecular::FromVisibility, AoSpecular::HorizonSlice}) {
+            RendererOptions options = BoxOnFloor::optionsFor(AoMode::Gtao, settings);
+            options.aoSettings.specular = source;
+            const Measured gtao = measure(specularScene, AoMode::Gtao, settings, 1, &options);
+            const ShareError e =
+                shareError(specularScene, gtao.frame, reference.frame, specularOff.frame);
+            char name[112], metric[240], where[96];
+            std::snprintf(name, sizeof(name), "GTAO specular occlusion (%s), roughness %.1f",
+                          source == AoSpecular::FromVisibility ? "from visibility, default"
+                                                               : "horizon slice through R",
+                          roughness);
+            std::snprintf(metric, sizeof(metric),
+                          "mean |occluded / unoccluded specular - reference| where the reference "
+                          "is under 0.9 (%u px; black glossy floor, radius 1.5 m, %ux%u)",
+                          e.pixels, size, size);
+            std::snprintf(where, sizeof(where), "max %.3f", e.max);
+            context.report.rows.push_back(
+                {name, "--ao reference (rays from the GGX lobe's visible normals)", metric,
+                 e.meanAbs, "abs", where,
+                 "AO passes " + formatCost(gtao.aoMs, reference.aoMs, "ms")});
+        }
     }
 }
 

@@ -149,6 +149,13 @@ private:
     std::array<GpuImage, 2> history_;
     uint32_t historyWrite_ = 0;
     bool historyValid_ = false;
+    // GTAO's temporal accumulation (ao_temporal.comp): two RGBA32UI histories like TAA's, made
+    // only when the options accumulate, and the frame count that rotates GTAO's slices.
+    bool aoAccumulates() const;
+    std::array<GpuImage, 2> aoHistory_;
+    uint32_t aoHistoryWrite_ = 0;
+    bool aoHistoryValid_ = false;
+    uint32_t aoFrame_ = 0;
     uint32_t motionId_ = UINT32_MAX;  // this frame's gbuffer.motion in the graph
     uint32_t motionVersion_ = 0;
     GpuBuffer motionReadback_;  // captureMotionVectors: RG16F texels, host-visible

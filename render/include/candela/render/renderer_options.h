@@ -61,6 +61,21 @@ enum class AoMode {
 };
 const char* aoModeName(AoMode mode);  // "off", "gtao", "reference"
 
+// GTAO's temporal accumulation (render/README.md "Ambient occlusion"): last frame's result
+// reprojected with the motion vectors and blended with this frame's, whose slice directions
+// and step offsets rotate every frame, so a still view converges to many more slices.
+enum class AoTemporal {
+    WithTaa,  // when the frame has TAA's history (--aa taa): the default
+    Always,   // with or without TAA (tests measure AO's own convergence with --aa off)
+    Never,
+};
+
+// Where GTAO's specular occlusion comes from (render/README.md "Ambient occlusion").
+enum class AoSpecular {
+    FromVisibility,  // Lagarde and de Rousiers' fit of the visibility alone: the default
+    HorizonSlice,    // the horizons of one more slice, the one that holds the reflection vector
+};
+
 // What the AO passes do. radius and intensity come from the scene (FrameScene) each frame.
 struct AmbientOcclusionSettings {
     float radius = 1.5f;              // metres the horizon search (and the reference's rays) reach
@@ -73,6 +88,9 @@ struct AmbientOcclusionSettings {
     // Jimenez et al.'s multi-bounce fit, which assumes occluders as bright as the surface;
     // off only to measure visibility itself (a black occluder on a white floor).
     bool multiBounce = true;
+    AoTemporal temporal = AoTemporal::WithTaa;
+    AoSpecular specular = AoSpecular::FromVisibility;
+    uint32_t temporalFrames = 16;  // most frames the accumulation averages (1 / n lowest blend)
 };
 
 struct RendererOptions {

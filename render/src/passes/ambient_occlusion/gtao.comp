@@ -13,12 +13,18 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = AO_BINDING_DEPTH) uniform sampler2D gbufferDepth;
 layout(binding = AO_BINDING_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
 layout(binding = AO_BINDING_OUTPUT, rgba16f) uniform writeonly image2D aoOutput;
+// The reflection lobe's visibility (see specularVisibility below).
+layout(binding = AO_BINDING_SECOND_OUTPUT, r16f) uniform writeonly image2D specularOutput;
 
 layout(push_constant) uniform Push {
     float radius;
     uint slices;
     uint steps;
     float thickness;  // unused here (the reference's)
+    // Added to every pixel's slice rotation and step jitter (fractions of their periods):
+    // zero without temporal accumulation, a low-discrepancy sequence over frames with it.
+    vec2 frameRotation;
+    uint specularSlice;  // 1: trace the horizon slice through R (else write 1)
 } push;
 
 // cos of the horizon seen from P along one side of the slice: samples farther than the
@@ -48,14 +54,75 @@ float horizonCosine(vec3 P, vec3 V, vec2 pixelCentre, vec2 direction, float radi
     return best;
 }
 
+// The slice through V along screen direction `direction`: its tangent (perpendicular to V),
+// the normal projected into it, that projection's length and its angle n from V.
+struct Slice {
+    vec3 tangent;
+    float projectedLength;
+    float n;
+    float cosN;
+};
+
+Slice sliceOf(vec3 P, vec3 V, vec3 N, vec2 centre, vec2 direction, float depth) {
+    Slice slice;
+    // The world direction that moving along `direction` on screen takes at P's depth, made
+    // perpendicular to V: with V it spans the slice plane.
+    vec3 along = aoWorldFromDepth(centre + direction, depth) - P;
+    slice.tangent = safeNormalize(along - dot(along, V) * V);
+    vec3 axis = safeNormalize(cross(slice.tangent, V));
+    vec3 projectedN = N - axis * dot(N, axis);
+    slice.projectedLength = length(projectedN);
+    slice.cosN = saturate(dot(projectedN, V) / max(slice.projectedLength, 1e-8));
+    slice.n = sign(dot(projectedN, slice.tangent)) * acos(slice.cosN);
+    return slice;
+}
+
+// Length of the overlap of the angle intervals [a0, a1] and [b0, b1].
+float overlap(float a0, float a1, float b0, float b1) {
+    return max(min(a1, b1) - max(a0, b0), 0.0);
+}
+
+// Specular occlusion from the horizons of one more slice, the one along the normal's screen
+// direction: it holds V, N and so the reflection vector R, at angle 2n from V. The reflection
+// lobe is taken as the arc of half-width w around R in that slice (w: twice the GGX median
+// half-vector angle, atan(alpha)); its visible share is the part between the two horizons,
+// divided by the part above the tangent plane, so an unoccluded surface keeps all of its
+// specular (a grazing lobe that dips under the surface is the split sum's business, not
+// occlusion). Rougher lobes spread outside the slice; one slice still sees where the lobe's
+// core goes, which is what the visibility-only estimate cannot know.
+float specularVisibility(vec3 P, vec3 V, vec3 N, vec2 centre, float depth, float radiusPixels,
+                         float jitter, float roughness) {
+    vec2 screenN = (clipOf(P + N * 0.01).xy / clipOf(P + N * 0.01).w -
+                    clipOf(P).xy / clipOf(P).w) * vec2(camera.frameInfo.xy);
+    vec2 direction = dot(screenN, screenN) > 1e-12 ? normalize(screenN) : vec2(1.0, 0.0);
+    Slice slice = sliceOf(P, V, N, centre, direction, depth);
+    if (slice.projectedLength < 1e-4) return 1.0;
+    float n = slice.n;
+    float cosPositive =
+        horizonCosine(P, V, centre, direction, radiusPixels, jitter, cos(n + 0.5 * PI));
+    float cosNegative =
+        horizonCosine(P, V, centre, -direction, radiusPixels, jitter, cos(n - 0.5 * PI));
+    float h1 = n + clamp(acos(clamp(cosPositive, -1.0, 1.0)) - n, -0.5 * PI, 0.5 * PI);
+    float h0 = n + clamp(-acos(clamp(cosNegative, -1.0, 1.0)) - n, -0.5 * PI, 0.5 * PI);
+    float alpha = roughness * roughness;
+    float w = max(2.0 * atan(alpha), 0.01);
+    float r = 2.0 * n;
+    float aboveSurface = overlap(r - w, r + w, n - 0.5 * PI, n + 0.5 * PI);
+    if (aboveSurface <= 1e-6) return 1.0;
+    return saturate(overlap(r - w, r + w, h0, h1) / aboveSurface);
+}
+
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     uvec2 size = camera.frameInfo.xy;
     if (pixel.x >= int(size.x) || pixel.y >= int(size.y)) return;
     float depth = texelFetch(gbufferDepth, pixel, 0).r;
-    vec3 N = octDecode(texelFetch(gbufferNormalRoughMetal, pixel, 0).xy);
+    vec4 normalRoughMetal = texelFetch(gbufferNormalRoughMetal, pixel, 0);
+    vec3 N = octDecode(normalRoughMetal.xy);
+    float roughness = normalRoughMetal.z;
     if (depth <= 0.0) {
         imageStore(aoOutput, pixel, vec4(N, 1.0));
+        imageStore(specularOutput, pixel, vec4(1.0));
         return;
     }
     vec2 centre = vec2(pixel) + 0.5;
@@ -64,7 +131,7 @@ void main() {
     // One pixel's width at P's depth, for the radius in pixels.
     float pixelWorld = length(aoWorldFromDepth(centre + vec2(1.0, 0.0), depth) - P);
     float radiusPixels = push.radius / max(pixelWorld, 1e-8);
-    vec2 noise = aoPixelNoise(pixel);
+    vec2 noise = fract(aoPixelNoise(pixel) + push.frameRotation);
 
     float visibility = 0.0;
     vec3 bent = vec3(0.0);
@@ -72,16 +139,12 @@ void main() {
     for (uint i = 0u; i < push.slices; ++i) {
         float phi = (float(i) + noise.x) * PI / float(push.slices);
         vec2 direction = vec2(cos(phi), sin(phi));
-        // The world direction that moving along `direction` on screen takes at P's depth,
-        // made perpendicular to V: with V it spans the slice plane.
-        vec3 along = aoWorldFromDepth(centre + direction, depth) - P;
-        vec3 sliceTangent = safeNormalize(along - dot(along, V) * V);
-        vec3 axis = safeNormalize(cross(sliceTangent, V));
-        vec3 projectedN = N - axis * dot(N, axis);
-        float projectedLength = length(projectedN);
+        Slice slice = sliceOf(P, V, N, centre, direction, depth);
+        vec3 sliceTangent = slice.tangent;
+        float projectedLength = slice.projectedLength;
         if (projectedLength < 1e-4) continue;
-        float cosN = saturate(dot(projectedN, V) / projectedLength);
-        float n = sign(dot(projectedN, sliceTangent)) * acos(cosN);
+        float cosN = slice.cosN;
+        float n = slice.n;
         // Horizons as angles from V, positive toward +direction; never below the tangent
         // plane's (n +- pi/2).
         float cosPositive = horizonCosine(P, V, centre, direction, radiusPixels, noise.y,
@@ -113,4 +176,9 @@ void main() {
     bent = safeNormalize(bent);
     if (dot(bent, N) < 0.05 || weightSum <= 0.0) bent = N;
     imageStore(aoOutput, pixel, vec4(bent, visibility));
+    float specular = push.specularSlice != 0u ? specularVisibility(P, V, N, centre, depth,
+                                                                   radiusPixels, noise.y,
+                                                                   roughness)
+                                              : 1.0;
+    imageStore(specularOutput, pixel, vec4(specular));
 }

@@ -37,6 +37,7 @@ layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 const uint kAoOff = 0u;
 const uint kAoGtao = 1u;
 const uint kAoReference = 2u;
+const uint kAoGtaoHorizonSpecular = 3u;  // GTAO, specular occlusion from its horizon slice
 layout(constant_id = SPEC_AMBIENT_OCCLUSION) const uint kAoMode = 0u;
 
 layout(binding = LIGHTING_BINDING_GBUFFER_BASE_COLOR) uniform sampler2D gbufferBaseColor;
@@ -444,6 +445,15 @@ vec3 occludedAmbientRadiance(PixelShading px, ivec2 pixel, float occlusion) {
     } else {
         specularVisibility = specularOcclusionFromVisibility(
             visibility, saturate(dot(px.N, px.V)), px.surface.roughness);
+        if (kAoMode == kAoGtaoHorizonSpecular) {
+            // GTAO's horizons in the slice that holds R: right for lobes narrow enough to stay
+            // in that slice, too dark for rough ones, which the visibility form handles better
+            // (measured, render/README.md "Ambient occlusion"): blended by roughness.
+            float fromHorizons = mix(1.0, saturate(texelFetch(specularOcclusion, pixel, 0).r),
+                                     push.aoIntensity);
+            specularVisibility = mix(fromHorizons, specularVisibility,
+                                     smoothstep(0.35, 0.65, px.surface.roughness));
+        }
     }
     // The material's occlusion (baked from the mesh's own shape) and the screen-space one see
     // the same nearby geometry: the minimum, not the product, so a crease is not darkened

@@ -96,7 +96,11 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
     constants.set(SPEC_COUNT_LIGHT_PAIRS, features.countLightPairs);
     constants.set(SPEC_IBL_MODE, iblModeConstant(features.ibl));
     setMaterialExtensionConstants(constants, features);
-    constants.set(SPEC_AMBIENT_OCCLUSION, uint32_t(features.ao));
+    // 3: GTAO whose specular occlusion is read from its horizon slice (lighting.comp).
+    constants.set(SPEC_AMBIENT_OCCLUSION,
+                  features.ao == AoMode::Gtao && features.aoSpecularFromHorizons
+                      ? 3u
+                      : uint32_t(features.ao));
     const DescriptorBinding bindings[] = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},

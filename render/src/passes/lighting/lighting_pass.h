@@ -39,6 +39,7 @@ struct LightingFeatures {
     bool clearCoat = false;   // ... KHR_materials_clearcoat
     bool materialExtensions() const { return anisotropy || clearCoat; }
     AoMode ao = AoMode::Off;  // only with ibl
+    bool aoSpecularFromHorizons = false;  // GTAO's horizon-slice specular occlusion
 
     static constexpr uint32_t bit(content::LightType type) {
         return 1u << content::lightTypeIndex(type);
