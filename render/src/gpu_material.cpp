@@ -40,7 +40,9 @@ ShadingModelId shadingModelId(content::ShadingModel model) {
     return ShadingModelId::DefaultLit;
 }
 
-GpuMaterial packMaterial(const content::Material& m) {
+GpuMaterial packMaterial(const content::Material& material) {
+    // A layered material's base layer packs as its base fields; layers 1..3 go below.
+    const content::Material m = content::withBaseLayer(material);
     GpuMaterial g{};
     const bool legacy = m.shadingModel == content::ShadingModel::Legacy;
     for (int i = 0; i < 3; ++i) {
@@ -80,6 +82,26 @@ GpuMaterial packMaterial(const content::Material& m) {
     for (int i = 0; i < 3; ++i)
         g.specularColorScale[i] = largest > 0.0f ? c[i] / largest : 1.0f;
     g.specularColorScale[3] = 1.0f;
+    const content::MaterialLayering& layering = material.layering;
+    if (layering.layers.size() > 1) {
+        const size_t count = std::min(layering.layers.size(), content::kMaxMaterialLayers);
+        g.layering[0] = float(count - 1);
+        g.layering[1] = layering.maskSource == content::LayerMaskSource::VertexColor ? 1.0f : 0.0f;
+        g.maskTransform = packTransform(layering.maskTexture);
+        for (size_t i = 1; i < count; ++i) {
+            const content::MaterialLayer& l = layering.layers[i];
+            GpuMaterialLayer& out = g.layers[i - 1];
+            for (int channel = 0; channel < 4; ++channel)
+                out.baseColor[channel] = l.baseColorFactor[size_t(channel)];
+            out.parameters[0] = l.metallicFactor;
+            out.parameters[1] = l.roughnessFactor;
+            out.parameters[2] = l.specular;
+            out.parameters[3] = l.normalScale;
+            out.transforms[0] = packTransform(content::layerTexture(l, l.baseColorTexture));
+            out.transforms[1] = packTransform(content::layerTexture(l, l.metallicRoughnessTexture));
+            out.transforms[2] = packTransform(content::layerTexture(l, l.normalTexture));
+        }
+    }
     return g;
 }
 

@@ -14,6 +14,13 @@ struct GpuTextureTransform {
     uint32_t present;  // 0: slot uses the fallback (white / flat normal)
 };
 
+// One layer over a layered material's base (content::MaterialLayering layers 1..3).
+struct GpuMaterialLayer {
+    float baseColor[4];
+    float parameters[4];                // metallic, roughness, specular, normal scale
+    GpuTextureTransform transforms[3];  // base colour, metallic-roughness, normal (UV scale in)
+};
+
 struct GpuMaterial {
     float baseColor[4];   // DefaultLit/Subsurface base colour; Legacy DiffuseColor; alpha
     float emissive[4];    // rgb = factor * strength (cd/m^2 per unit texel)
@@ -35,6 +42,11 @@ struct GpuMaterial {
     // KHR_materials_clearcoat: factor, roughness, normal scale; 0 factor: no coat.
     float clearcoat[4];
     GpuTextureTransform transforms[11];  // TextureSlot order
+    // Material layers (read only by the G-buffer's layered variant): x the layers over the base
+    // (0 to 3), y 1 when the vertex colour is the mask (else the mask texture).
+    float layering[4];
+    GpuTextureTransform maskTransform;
+    GpuMaterialLayer layers[3];
 };
 static_assert(sizeof(GpuMaterial) % 16 == 0, "std430 array stride");
 

@@ -124,6 +124,19 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     return f;
 }
 
+// Whether an opaque draw's material blends layers over its base (its base layer alone needs
+// no blending: content::withBaseLayer folds it into the base fields).
+bool usesMaterialLayers(const FrameScene& scene, const SceneResources& resources) {
+    for (const DrawItem& draw : scene.draws) {
+        const content::Material& material = resources.material(draw.material);
+        if (material.alphaMode != content::AlphaMode::Blend &&
+            material.layering.layers.size() > 1) {
+            return true;
+        }
+    }
+    return false;
+}
+
 // hdr and ldr: discarded at the start of a frame (the previous frame's copies out of them
 // are fenced), left ready to be copied from (capture, swapchain blit) at its end.
 constexpr ImageState kDiscardAfterCopies{VK_IMAGE_LAYOUT_UNDEFINED,
@@ -380,6 +393,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             std::make_unique<EnvironmentSamplingTable>(context_, *resources.environment());
     }
     features_ = features.names();
+    // Layers blend in the G-buffer pass only; the lighting variant does not change with them.
+    gbufferPass_->prepare(usesMaterialLayers(inputs.scene, resources));
+    if (gbufferPass_->materialLayers()) features_.push_back("material_layers");
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
     uploadFrameData(inputs);
     const bool blended =

@@ -195,6 +195,9 @@ uint32_t SceneResources::addMaterial(const content::Material& material) {
     std::fill(std::begin(binding.textures), std::end(binding.textures), whiteTexture_);
     binding.textures[kNormalSlot] = flatNormalTexture_;
     binding.textures[kClearcoatNormalSlot] = flatNormalTexture_;
+    std::fill(std::begin(binding.layerTextures), std::end(binding.layerTextures), whiteTexture_);
+    for (uint32_t layer = 0; layer < 3; ++layer)
+        binding.layerTextures[kLayerFirstSlot + layer * kTexturesPerLayer + 2] = flatNormalTexture_;
     return addMaterialWithTextures(material, binding);
 }
 
@@ -222,7 +225,9 @@ uint32_t SceneResources::textureFor(const content::Model& model, UploadedModel& 
 }
 
 uint32_t SceneResources::addModelMaterial(const content::Model& model, UploadedModel& uploaded,
-                                          const content::Material& m) {
+                                          const content::Material& material) {
+    // A layered material's base layer binds as its base textures.
+    const content::Material m = content::withBaseLayer(material);
     MaterialBinding binding{};
     binding.textures[kBaseColorSlot] =
         textureFor(model, uploaded, m.baseColorTexture, whiteTexture_);
@@ -244,7 +249,23 @@ uint32_t SceneResources::addModelMaterial(const content::Model& model, UploadedM
         textureFor(model, uploaded, m.clearcoatRoughnessTexture, whiteTexture_);
     binding.textures[kClearcoatNormalSlot] =
         textureFor(model, uploaded, m.clearcoatNormalTexture, flatNormalTexture_);
-    return addMaterialWithTextures(m, binding);
+    const content::MaterialLayering& layering = material.layering;
+    binding.layerTextures[kLayerMaskSlot] =
+        layering.maskSource == content::LayerMaskSource::Texture
+            ? textureFor(model, uploaded, layering.maskTexture, whiteTexture_)
+            : whiteTexture_;
+    for (uint32_t layer = 1; layer < content::kMaxMaterialLayers; ++layer) {
+        uint32_t* slots = binding.layerTextures + kLayerFirstSlot + (layer - 1) * kTexturesPerLayer;
+        static const content::MaterialLayer kNoLayer;
+        const content::MaterialLayer& l =
+            layer < layering.layers.size() ? layering.layers[layer] : kNoLayer;
+        content::TextureRef baseColor = l.baseColorTexture;
+        baseColor.colorSpace = content::ColorSpace::Srgb;  // a colour slot, whatever the file says
+        slots[0] = textureFor(model, uploaded, baseColor, whiteTexture_);
+        slots[1] = textureFor(model, uploaded, l.metallicRoughnessTexture, whiteTexture_);
+        slots[2] = textureFor(model, uploaded, l.normalTexture, flatNormalTexture_);
+    }
+    return addMaterialWithTextures(material, binding);
 }
 
 uint32_t SceneResources::addMaterialOverride(const content::Model& model,

@@ -86,6 +86,26 @@ content::Material subsurface(std::array<float, 3> color, std::array<float, 3> sc
 }
 
 // One model holding every procedural mesh of the demo, one mesh per (shape, material).
+// A 64x64 rust mask (red channel; tiles): blotches from two octaves of sines, soft-edged.
+content::Rgba8Image rustMask() {
+    content::Rgba8Image image;
+    image.width = image.height = 64;
+    image.rgba.resize(64 * 64 * 4);
+    for (uint32_t y = 0; y < 64; ++y) {
+        for (uint32_t x = 0; x < 64; ++x) {
+            const float u = 6.2831853f * float(x) / 64.0f, v = 6.2831853f * float(y) / 64.0f;
+            const float n = std::sin(2.0f * u + std::sin(3.0f * v)) * std::cos(3.0f * v) +
+                            0.5f * std::sin(5.0f * u - 4.0f * v + 1.3f);
+            const float rust = std::clamp((n - 0.35f) / 0.3f, 0.0f, 1.0f);
+            uint8_t* texel = &image.rgba[(size_t(y) * 64 + x) * 4];
+            texel[0] = uint8_t(std::lround(rust * 255.0f));
+            texel[1] = texel[2] = 0;
+            texel[3] = 255;
+        }
+    }
+    return image;
+}
+
 struct DemoMeshes {
     content::Model model;
     int32_t add(content::Primitive primitive, const content::Material& m) {
@@ -285,6 +305,24 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     carPaint.clearcoatFactor = 1.0f;
     carPaint.clearcoatRoughnessFactor = 0.03f;
     const int32_t paintSphere = meshes->add(content::makeSphere(0.35f), carPaint);
+    // Issue 21: a layered material: rust over painted metal, blended by a procedural mask's
+    // red channel, the rust's parameters at their own frequency (the mask at 3x the sphere's
+    // UVs).
+    content::Material rusty;
+    content::MaterialLayer paint, rust;
+    paint.name = "painted metal";
+    paint.baseColorFactor = {0.05f, 0.25f, 0.12f, 1.0f};
+    paint.roughnessFactor = 0.3f;
+    rust.name = "rust";
+    rust.baseColorFactor = {0.42f, 0.17f, 0.06f, 1.0f};
+    rust.roughnessFactor = 0.9f;
+    rust.specular = 0.3f;
+    rusty.layering.layers = {paint, rust};
+    rusty.layering.maskTexture.texture = int32_t(meshes->model.textures.size());
+    rusty.layering.maskTexture.transform.scale = {3.0f, 3.0f};
+    meshes->model.textures.push_back({"rust mask", int32_t(meshes->model.images.size()), {}});
+    meshes->model.images.push_back(rustMask());
+    const int32_t rustySphere = meshes->add(content::makeSphere(0.35f), rusty);
 
     const content::Model& model = world.adoptModel(
         std::unique_ptr<content::Model>(new content::Model(std::move(meshes->model))));
@@ -345,6 +383,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
 
     draw(place(registry, "brushed metal sphere", {3.4f, 0.35f, 4.0f}), brushedSphere);
     draw(place(registry, "car paint sphere", {4.3f, 0.35f, 4.0f}), paintSphere);
+    draw(place(registry, "rusty painted sphere", {5.2f, 0.35f, 4.0f}), rustySphere);
 
     // Toon figures (Legacy diffuse/specular): a snowman and a ball, left of the helmet.
     draw(place(registry, "toon body", {-2.3f, 0.42f, 0.0f}), toonBody);

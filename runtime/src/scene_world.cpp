@@ -97,6 +97,7 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     sceneExposure_ = scene->exposure;
     sceneExposureCompensation_ = scene->exposureCompensation;
     sceneAmbientOcclusion_ = scene->ambientOcclusion;
+    sceneMaterialLayers_ = scene->materialLayers;
     return true;
 }
 

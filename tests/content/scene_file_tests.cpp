@@ -170,6 +170,101 @@ TEST(SceneFile, MaterialExtensionsRoundTripAndAreOnlyWrittenWhenUsed) {
     EXPECT_EQ(sceneToJson(*loaded, error), sceneToJson(scene, error));
 }
 
+// Issue 21: the layer library and a material's layers (each a library layer, changed or not)
+// and mask survive save and load bit for bit; scenes without layers write neither.
+TEST(SceneFile, MaterialLayersRoundTripAndAreOnlyWrittenWhenUsed) {
+    SceneDocument scene = exampleScene();
+    std::string error;
+    const std::string plain = sceneToJson(scene, error);
+    EXPECT_EQ(plain.find("layer"), std::string::npos);
+
+    MaterialLayer paint;
+    paint.name = "painted_metal";
+    paint.baseColorFactor = {0.1f, 0.3f, 0.8f, 1.0f};
+    paint.metallicFactor = 1.0f;
+    paint.roughnessFactor = 0.3f;
+    MaterialLayer rust;
+    rust.name = "rust";
+    rust.roughnessFactor = 0.9f;
+    rust.baseColorTexture.texture = 1;
+    rust.normalTexture.texture = 2;
+    rust.normalScale = 0.7f;
+    rust.uvScale = {8.0f, 6.5f};
+    scene.materialLayers = {paint, rust};
+    Material& m = scene.entities[1].materialOverrides[0].material;
+    m.layering.layers = {paint, rust};
+    m.layering.layers[1].roughnessFactor = 0.8f;  // this material's rust is a little smoother
+    m.layering.maskTexture.texture = 3;
+    m.layering.maskTexture.transform.scale = {2.0f, 2.0f};
+    const auto path = testing::tempPath("layered.scene.json");
+    ASSERT_EQ(saveSceneFile(path, scene), "");
+    Diagnostics diagnostics;
+    auto loaded = loadSceneFile(path, diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.toString();
+    ASSERT_EQ(loaded->materialLayers.size(), 2u);
+    EXPECT_EQ(loaded->materialLayers[1].name, "rust");
+    EXPECT_EQ(loaded->materialLayers[1].roughnessFactor, 0.9f);
+    EXPECT_EQ(loaded->materialLayers[1].uvScale[1], 6.5f);
+    const MaterialLayering& r = loaded->entities[1].materialOverrides[0].material.layering;
+    ASSERT_EQ(r.layers.size(), 2u);
+    EXPECT_EQ(r.layers[0].name, "painted_metal");
+    EXPECT_EQ(r.layers[0].baseColorFactor[2], 0.8f);
+    EXPECT_EQ(r.layers[1].roughnessFactor, 0.8f);
+    EXPECT_EQ(r.layers[1].normalTexture.texture, 2);
+    EXPECT_EQ(r.layers[1].uvScale[0], 8.0f);
+    EXPECT_EQ(r.maskSource, LayerMaskSource::Texture);
+    EXPECT_EQ(r.maskTexture.texture, 3);
+    EXPECT_EQ(r.maskTexture.transform.scale[0], 2.0f);
+    EXPECT_EQ(sceneToJson(*loaded, error), sceneToJson(scene, error));
+}
+
+// Unknown layer names, too many layers and a texture mask without a texture are errors naming
+// the file, the JSON pointer and the material; only that material override is dropped.
+TEST(SceneFile, BadMaterialLayersAreNamedAndDropOnlyThatMaterial) {
+    const std::string text = R"({
+      "format": "candela.scene", "version": 1,
+      "materialLayers": [{"name": "paint", "metallicFactor": 1}, {"name": "rust"},
+                         {"name": "grime", "uvScale": [0, 1]}],
+      "entities": [
+        {"name": "a", "mesh": {"gltf": "x.glb"}, "materialOverrides": [{"primitive": 0,
+          "material": {"name": "typo", "layers": [{"layer": "paint"}, {"layer": "russt"}],
+                       "layerMask": {"source": "vertexColor"}}}]},
+        {"name": "b", "mesh": {"gltf": "x.glb"}, "materialOverrides": [{"primitive": 0,
+          "material": {"name": "five", "layers": [{"layer": "paint"}, {"layer": "rust"},
+            {"layer": "rust"}, {"layer": "rust"}, {"layer": "rust"}]}}]},
+        {"name": "c", "mesh": {"gltf": "x.glb"}, "materialOverrides": [{"primitive": 0,
+          "material": {"name": "unmasked", "layers": [{"layer": "paint"}, {"layer": "rust"}]}}]},
+        {"name": "d", "mesh": {"gltf": "x.glb"}, "materialOverrides": [{"primitive": 0,
+          "material": {"name": "fine", "layers": [{"layer": "paint"}, {"layer": "rust"}],
+                       "layerMask": {"texture": {"texture": 0}}}}]}
+      ]})";
+    Diagnostics d;
+    auto parsed = parseSceneJson(std::as_bytes(std::span(text)), "l.json", d);
+    ASSERT_TRUE(parsed) << d.toString();
+    EXPECT_TRUE(d.mentions("l.json: /materialLayers/2/uvScale: error")) << d.toString();
+    EXPECT_EQ(parsed->materialLayers.size(), 2u);
+    EXPECT_TRUE(
+        d.mentions("l.json: /entities/0/materialOverrides/0/material/layers/1/layer: "
+                   "error: material 'typo': unknown layer 'russt' (the scene's "
+                   "\"materialLayers\" library has: paint, rust)"))
+        << d.toString();
+    EXPECT_TRUE(
+        d.mentions("/entities/1/materialOverrides/0/material/layers: error: material "
+                   "'five' has 5 layers; at most 4"))
+        << d.toString();
+    EXPECT_TRUE(
+        d.mentions("/entities/2/materialOverrides/0/material/layerMask/texture: error: "
+                   "material 'unmasked' blends 1 layer(s) over its base by a texture "
+                   "mask but names no mask texture"))
+        << d.toString();
+    for (int i = 0; i < 3; ++i)
+        EXPECT_TRUE(parsed->entities[size_t(i)].materialOverrides.empty()) << i;
+    ASSERT_EQ(parsed->entities[3].materialOverrides.size(), 1u);
+    EXPECT_EQ(parsed->entities[3].materialOverrides[0].material.layering.layers.size(), 2u);
+    EXPECT_EQ(parsed->entities[3].mesh->gltfPath, "x.glb");  // the entity itself stays
+}
+
 // Issue 25: a material override's cavity survives save and load, is written only when not 1,
 // and a value outside [0, 1] is clamped with a warning naming the file, pointer and material.
 TEST(SceneFile, CavityRoundTripsOnlyWhenSetAndOutOfRangeIsClampedWithAWarning) {

@@ -1,6 +1,7 @@
 // The editor model without a window: edit commands, undo/redo, selection, saving.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -352,6 +353,57 @@ TEST_F(EditorModel, EditsTheLoaderWouldRejectAreRefusedAndAbsurdOnesClamped) {
     EXPECT_FALSE(diagnostics.mentions("/light")) << diagnostics.toString();
     ASSERT_TRUE(doc->entities[1].light);
     EXPECT_EQ(doc->entities[1].light->lumens, content::kMaxLumens);
+}
+
+// Issue 21: a material's layers and mask edit as one undoable material edit each, and the
+// scene's layer library and the layered override survive the editor's save.
+TEST_F(EditorModel, MaterialLayerEditsUndoAndSaveWithTheLibrary) {
+    content::Model model;
+    content::Mesh& mesh = model.meshes.emplace_back();
+    mesh.primitives.push_back(content::makeSphere(1, 8, 4));
+    ecs::Entity floor = named("floor");
+    registry.get<content::MeshInstance>(floor).model = &model;
+    registry.get<content::MeshInstance>(floor).mesh = 0;
+    content::MaterialLayer paint, rust;
+    paint.name = "paint";
+    paint.metallicFactor = 1.0f;
+    rust.name = "rust";
+    rust.roughnessFactor = 0.9f;
+    scene->setSceneMaterialLayers({paint, rust});
+
+    content::Material m = effectiveMaterial(*scene, floor, 0);
+    m.layering.layers = {paint, rust};  // what the inspector's "Add layer" does, twice
+    m.layering.maskSource = content::LayerMaskSource::VertexColor;
+    ASSERT_TRUE(scene->execute(setMaterial(*scene, floor, 0, m)));
+    m.layering.layers[1].roughnessFactor = 0.6f;  // the inspector's layer slider
+    m.layering.layers[1].uvScale = {4.0f, 4.0f};
+    ASSERT_TRUE(scene->execute(setMaterial(*scene, floor, 0, m)));
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).layering.layers[1].roughnessFactor, 0.6f);
+    EXPECT_EQ(scene->sceneMaterialLayers()[1].roughnessFactor, 0.9f);  // the library's stays
+
+    const fs::path path = dir / "saved" / "layered.scene.json";
+    ASSERT_EQ(scene->save(path), "");
+    content::Diagnostics diagnostics;
+    std::optional<content::SceneDocument> doc = content::loadSceneFile(path, diagnostics);
+    ASSERT_TRUE(doc);
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.toString();
+    ASSERT_EQ(doc->materialLayers.size(), 2u);
+    EXPECT_EQ(doc->materialLayers[1].roughnessFactor, 0.9f);
+    const content::SceneEntity& saved = doc->entities[size_t(
+        std::find_if(doc->entities.begin(), doc->entities.end(),
+                     [](const content::SceneEntity& e) { return e.name == "floor"; }) -
+        doc->entities.begin())];
+    ASSERT_EQ(saved.materialOverrides.size(), 1u);
+    const content::MaterialLayering& layering = saved.materialOverrides[0].material.layering;
+    ASSERT_EQ(layering.layers.size(), 2u);
+    EXPECT_EQ(layering.layers[1].roughnessFactor, 0.6f);
+    EXPECT_EQ(layering.layers[1].uvScale[0], 4.0f);
+    EXPECT_EQ(layering.maskSource, content::LayerMaskSource::VertexColor);
+
+    ASSERT_TRUE(scene->undo());
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).layering.layers[1].roughnessFactor, 0.9f);
+    ASSERT_TRUE(scene->undo());
+    EXPECT_FALSE(effectiveMaterial(*scene, floor, 0).layered());
 }
 
 TEST_F(EditorModel, AddAndRemoveComponentsUndo) {

@@ -776,6 +776,7 @@ TEST(Cli, AFullCacheDiskIsAWarningAndLeavesNoPartialEntry) {
 
 // Issue 21: anisotropy and clear coat are compiled into the frames whose materials use them
 // (stats `features`: material_anisotropy, material_clear_coat) and out of the others.
+// Issue 21: material layers too (the G-buffer's layered variant).
 TEST(Cli, MaterialExtensionFeaturesOnlyInFramesThatUseThem) {
     auto dir = tempDir();
     auto features = [&](const std::string& name) {
@@ -799,6 +800,11 @@ TEST(Cli, MaterialExtensionFeaturesOnlyInFramesThatUseThem) {
     const auto coated = features("clear_coat");
     EXPECT_FALSE(has(coated, "material_anisotropy"));
     EXPECT_TRUE(has(coated, "material_clear_coat"));
+    EXPECT_FALSE(has(plain, "material_layers"));
+    EXPECT_FALSE(has(coated, "material_layers"));
+    const auto layered = features("layered_material");
+    EXPECT_TRUE(has(layered, "material_layers"));
+    EXPECT_FALSE(has(layered, "material_clear_coat"));
 }
 
 // Issue 24: --aa, --bloom and --exposure reach the renderer and --stats reports taa_ms,

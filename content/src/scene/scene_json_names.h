@@ -36,6 +36,8 @@ inline constexpr EnumNames<ShadingModel, 4> kShadingModels{
      {ShadingModel::Unlit, "unlit"}}};
 inline constexpr EnumNames<AlphaMode, 3> kAlphaModes{
     {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}}};
+inline constexpr EnumNames<LayerMaskSource, 2> kLayerMaskSources{
+    {{LayerMaskSource::Texture, "texture"}, {LayerMaskSource::VertexColor, "vertexColor"}}};
 inline constexpr EnumNames<ColorSpace, 2> kColorSpaces{
     {{ColorSpace::Srgb, "srgb"}, {ColorSpace::Linear, "linear"}}};
 

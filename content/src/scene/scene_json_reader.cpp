@@ -248,6 +248,103 @@ public:
         textureRef(j, p, "clearcoatNormalTexture", m.clearcoatNormalTexture);
         number(j, p, "clearcoatNormalScale", m.clearcoatNormalScale);
         report(p, validateEmission(m));
+        if (j.contains("layers") || j.contains("layerMask")) layering(j, p, m);
+    }
+
+    // One layer's parameters (library entry or a material's copy of one).
+    void layerParameters(const json& j, const std::string& p, MaterialLayer& l) {
+        numbers(j, p, "baseColorFactor", l.baseColorFactor);
+        number(j, p, "metallicFactor", l.metallicFactor);
+        number(j, p, "roughnessFactor", l.roughnessFactor);
+        number(j, p, "specular", l.specular);
+        number(j, p, "normalScale", l.normalScale);
+        textureRef(j, p, "baseColorTexture", l.baseColorTexture);
+        textureRef(j, p, "metallicRoughnessTexture", l.metallicRoughnessTexture);
+        textureRef(j, p, "normalTexture", l.normalTexture);
+        numbers(j, p, "uvScale", l.uvScale);
+        if (!(l.uvScale[0] > 0.0f && l.uvScale[1] > 0.0f)) {
+            error(p + "/uvScale", "layer '" + l.name + "': UV scale must be greater than 0");
+        }
+    }
+
+    // The layer library (top-level "materialLayers"); read before the entities.
+    void layerLibrary(const json& root, std::vector<MaterialLayer>& library) {
+        auto it = root.find("materialLayers");
+        if (it == root.end()) return;
+        if (!it->is_array()) return error("/materialLayers", "expected an array");
+        for (std::size_t i = 0; i < it->size(); ++i) {
+            const std::string p = "/materialLayers/" + std::to_string(i);
+            const json& j = (*it)[i];
+            MaterialLayer layer;
+            if (!clean([&] {
+                    if (!j.is_object()) return error(p, "expected an object");
+                    string(j, p, "name", layer.name);
+                    if (layer.name.empty()) return error(p + "/name", "a layer needs a name");
+                    for (const MaterialLayer& other : library) {
+                        if (other.name == layer.name) {
+                            return error(p + "/name", "layer '" + layer.name +
+                                                          "' is defined twice; names are unique");
+                        }
+                    }
+                    layerParameters(j, p, layer);
+                })) {
+                continue;  // left out: materials naming it report it as unknown
+            }
+            library.push_back(std::move(layer));
+        }
+        library_ = &library;
+    }
+
+    // A material's "layers" (names from the library, each optionally changed) and "layerMask".
+    void layering(const json& j, const std::string& p, Material& m) {
+        MaterialLayering& l = m.layering;
+        auto it = j.find("layers");
+        if (it == j.end()) return error(p + "/layers", "\"layerMask\" without \"layers\"");
+        if (!it->is_array() || it->empty()) {
+            return error(p + "/layers", "expected an array of 1 to " +
+                                            std::to_string(kMaxMaterialLayers) + " layers");
+        }
+        if (it->size() > kMaxMaterialLayers) {
+            return error(p + "/layers", "material '" + m.name + "' has " +
+                                            std::to_string(it->size()) + " layers; at most " +
+                                            std::to_string(kMaxMaterialLayers) +
+                                            " (a base and three blended by the mask's R, G and B)");
+        }
+        for (std::size_t i = 0; i < it->size(); ++i) {
+            const std::string q = p + "/layers/" + std::to_string(i);
+            const json& entry = (*it)[i];
+            if (!entry.is_object()) return error(q, "expected an object naming a \"layer\"");
+            std::string name;
+            string(entry, q, "layer", name);
+            const MaterialLayer* found = nullptr;
+            for (std::size_t k = 0; library_ && k < library_->size(); ++k) {
+                if ((*library_)[k].name == name) found = &(*library_)[k];
+            }
+            if (!found) {
+                std::string known;
+                for (std::size_t k = 0; library_ && k < library_->size(); ++k)
+                    known += (known.empty() ? "" : ", ") + (*library_)[k].name;
+                return error(q + "/layer", "material '" + m.name + "': unknown layer '" + name +
+                                               "' (the scene's \"materialLayers\" library has: " +
+                                               (known.empty() ? std::string("none") : known) + ")");
+            }
+            MaterialLayer layer = *found;
+            layerParameters(entry, q, layer);
+            l.layers.push_back(std::move(layer));
+        }
+        const json* mask = nullptr;
+        if (object(j, p, "layerMask", mask)) {
+            enumeration(*mask, p + "/layerMask", "source", kLayerMaskSources, l.maskSource);
+            textureRef(*mask, p + "/layerMask", "texture", l.maskTexture);
+        }
+        if (l.layers.size() > 1 && l.maskSource == LayerMaskSource::Texture &&
+            !l.maskTexture.present()) {
+            error(p + "/layerMask/texture",
+                  "material '" + m.name + "' blends " + std::to_string(l.layers.size() - 1) +
+                      " layer(s) over its base by a texture mask but names no mask texture "
+                      "(give \"layerMask\": {\"texture\": {\"texture\": index}} or "
+                      "\"source\": \"vertexColor\")");
+        }
     }
 
     void light(const json& j, const std::string& p, Light& l) {
@@ -372,6 +469,7 @@ public:
 private:
     const std::string& file_;
     Diagnostics& diagnostics_;
+    const std::vector<MaterialLayer>* library_ = nullptr;
     bool failed_ = false;
 };
 
@@ -536,6 +634,7 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         }
         scene.ambientOcclusion = settings;
     }
+    reader.layerLibrary(root, scene.materialLayers);
     scene.entities.reserve(entities->size());
     for (std::size_t i = 0; i < entities->size(); ++i) {
         scene.entities.push_back(

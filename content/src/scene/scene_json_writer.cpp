@@ -66,7 +66,38 @@ struct Writer {
             out["clearcoatNormalScale"] =
                 number(m.clearcoatNormalScale, p + "/clearcoatNormalScale");
         }
+        // Layers only when used, so files of materials without them stay as they were.
+        if (m.layered()) {
+            json layers = json::array();
+            for (std::size_t i = 0; i < m.layering.layers.size(); ++i) {
+                const std::string q = p + "/layers/" + std::to_string(i);
+                json entry = layer(m.layering.layers[i], q);
+                entry["layer"] = m.layering.layers[i].name;
+                entry.erase("name");
+                layers.push_back(std::move(entry));
+            }
+            out["layers"] = std::move(layers);
+            out["layerMask"] = {
+                {"source", nameOf(kLayerMaskSources, m.layering.maskSource)},
+                {"texture", textureRef(m.layering.maskTexture, p + "/layerMask/texture")}};
+        }
         return out;
+    }
+
+    json layer(const MaterialLayer& l, const std::string& p) {
+        return {
+            {"name", l.name},
+            {"baseColorFactor", numbers(l.baseColorFactor, p + "/baseColorFactor")},
+            {"metallicFactor", number(l.metallicFactor, p + "/metallicFactor")},
+            {"roughnessFactor", number(l.roughnessFactor, p + "/roughnessFactor")},
+            {"specular", number(l.specular, p + "/specular")},
+            {"normalScale", number(l.normalScale, p + "/normalScale")},
+            {"baseColorTexture", textureRef(l.baseColorTexture, p + "/baseColorTexture")},
+            {"metallicRoughnessTexture",
+             textureRef(l.metallicRoughnessTexture, p + "/metallicRoughnessTexture")},
+            {"normalTexture", textureRef(l.normalTexture, p + "/normalTexture")},
+            {"uvScale", numbers(l.uvScale, p + "/uvScale")},
+        };
     }
 
     json baseMaterial(const Material& m, const std::string& p) {
@@ -177,6 +208,18 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     if (!error.empty()) return {};
     json document = {
         {"format", kFormatName}, {"version", kSceneFileVersion}, {"entities", std::move(entities)}};
+    if (!scene.materialLayers.empty()) {
+        json library = json::array();
+        for (std::size_t i = 0; i < scene.materialLayers.size(); ++i) {
+            library.push_back(
+                writer.layer(scene.materialLayers[i], "/materialLayers/" + std::to_string(i)));
+        }
+        if (!writer.error.empty()) {
+            error = writer.error;
+            return {};
+        }
+        document["materialLayers"] = std::move(library);
+    }
     if (scene.brdf) document["brdf"] = std::string(nameOf(kSceneBrdfs, *scene.brdf));
     if (scene.aa) document["aa"] = std::string(nameOf(kSceneAntiAliasing, *scene.aa));
     if (scene.bloom) document["bloom"] = *scene.bloom;

@@ -172,6 +172,69 @@ void drawCamera(EditorScene& scene, ecs::Entity e) {
     ImGui::Text("EV100 %.2f", render::ev100FromCamera(c));
 }
 
+// Material layers (issue 21): the material's layers (copies of the scene library's, edited
+// per material), adding one from the library, removing one, and the mask. Every change goes
+// through `edited`, i.e. one undoable "Edit Material" command (drags merge into one step).
+template <class Edited>
+void drawMaterialLayers(const std::vector<content::MaterialLayer>& library, content::Material& m,
+                        Edited& edited) {
+    content::MaterialLayering& l = m.layering;
+    const std::string title = "Layers (" + std::to_string(l.layers.size()) + ")";
+    if (!ImGui::TreeNode("layers", "%s", title.c_str())) return;
+    for (size_t i = 0; i < l.layers.size(); ++i) {
+        content::MaterialLayer& layer = l.layers[i];
+        ImGui::PushID(int(i));
+        const char* channel[] = {"R", "G", "B"};
+        const std::string label =
+            (i == 0 ? std::string("Base")
+                    : "Layer " + std::to_string(i) + " (mask " + channel[(i - 1) % 3] + ")") +
+            ": " + layer.name;
+        bool removed = false;
+        if (ImGui::TreeNode("layer", "%s", label.c_str())) {
+            edited(ImGui::ColorEdit3("Base colour", layer.baseColorFactor.data()));
+            edited(ImGui::SliderFloat("Metallic", &layer.metallicFactor, 0.0f, 1.0f));
+            edited(ImGui::SliderFloat("Roughness", &layer.roughnessFactor, 0.0f, 1.0f));
+            edited(ImGui::SliderFloat("Specular", &layer.specular, 0.0f, 1.0f));
+            edited(ImGui::SliderFloat("Normal strength", &layer.normalScale, 0.0f, 2.0f));
+            edited(ImGui::DragFloat2("UV scale", layer.uvScale.data(), 0.05f, 0.01f, 256.0f));
+            removed = ImGui::Button("Remove layer");
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+        if (removed) {
+            l.layers.erase(l.layers.begin() + std::ptrdiff_t(i));
+            edited(true);
+            break;
+        }
+    }
+    if (l.layers.size() < content::kMaxMaterialLayers && !library.empty() &&
+        ImGui::BeginCombo("Add layer", "from the scene's library")) {
+        for (const content::MaterialLayer& entry : library) {
+            if (ImGui::Selectable(entry.name.c_str())) {
+                l.layers.push_back(entry);
+                edited(true);
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (l.layers.size() > 1) {
+        const char* sources[] = {"Texture R, G, B", "Vertex colour R, G, B"};
+        int source = int(l.maskSource);
+        const bool sourceChanged = ImGui::Combo("Mask", &source, sources, 2);
+        l.maskSource = content::LayerMaskSource(source);
+        edited(sourceChanged);
+        if (l.maskSource == content::LayerMaskSource::Texture) {
+            int texture = l.maskTexture.texture;
+            const bool textureChanged = ImGui::InputInt("Mask texture", &texture);
+            l.maskTexture.texture = std::max(texture, -1);
+            edited(textureChanged);
+            edited(ImGui::DragFloat2("Mask UV scale", l.maskTexture.transform.scale.data(), 0.05f,
+                                     0.01f, 256.0f));
+        }
+    }
+    ImGui::TreePop();
+}
+
 void drawMaterials(EditorScene& scene, ecs::Entity e) {
     const uint32_t primitives = primitiveCount(scene, e);
     if (primitives == 0 || !ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -216,6 +279,7 @@ void drawMaterials(EditorScene& scene, ecs::Entity e) {
                 edited(ImGui::SliderFloat("Clear coat", &m.clearcoatFactor, 0.0f, 1.0f));
                 edited(ImGui::SliderFloat("Clear coat roughness", &m.clearcoatRoughnessFactor, 0.0f,
                                           1.0f));
+                drawMaterialLayers(scene.sceneMaterialLayers(), m, edited);
             }
             if (primitives > 1) ImGui::TreePop();
         }

@@ -46,6 +46,7 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     frameSettings.exposureCompensation = opened.world->sceneExposureCompensation();
     opened.scene->setSceneFrameSettings(frameSettings);
     opened.scene->setSceneAmbientOcclusion(opened.world->sceneAmbientOcclusion());
+    opened.scene->setSceneMaterialLayers(opened.world->sceneMaterialLayers());
     return opened;
 }
 

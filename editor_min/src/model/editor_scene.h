@@ -52,6 +52,15 @@ public:
         if (edited) settingsEdited_ = true;
     }
 
+    // The opened file's layer library ("materialLayers"): what the inspector offers to add to
+    // a material (each material edits its own copies), written back by save().
+    const std::vector<content::MaterialLayer>& sceneMaterialLayers() const {
+        return sceneSettings_.materialLayers;
+    }
+    void setSceneMaterialLayers(std::vector<content::MaterialLayer> layers) {
+        sceneSettings_.materialLayers = std::move(layers);
+    }
+
     // Gives every entity an EditorId and makes it a scene member (so it is saved): call after
     // loading and after anything outside the editor adds entities.
     void adoptEntities();

@@ -52,6 +52,7 @@ std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path
     document.exposure = settings.exposure;
     document.exposureCompensation = settings.exposureCompensation;
     document.ambientOcclusion = settings.ambientOcclusion;
+    document.materialLayers = settings.materialLayers;
     return content::saveSceneFile(target, document, options);
 }
 

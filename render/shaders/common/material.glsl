@@ -15,6 +15,13 @@ struct TextureTransform {
     uint present;
 };
 
+// One layer over a layered material's base (gpu_material.h GpuMaterialLayer).
+struct MaterialLayer {
+    vec4 baseColor;
+    vec4 parameters;  // metallic, roughness, specular, normal scale
+    TextureTransform transforms[3];  // base colour, metallic-roughness, normal
+};
+
 struct Material {
     vec4 baseColor;
     vec4 emissive;
@@ -31,6 +38,9 @@ struct Material {
     vec4 anisotropy;  // strength, cos(rotation), sin(rotation)
     vec4 clearcoat;   // factor, roughness, normal scale
     TextureTransform transforms[11];
+    vec4 layering;  // layers over the base (0..3), 1: vertex-colour mask (material_layers.glsl)
+    TextureTransform maskTransform;
+    MaterialLayer layers[3];
 };
 
 layout(std430, binding = MATERIAL_BUFFER_BINDING) readonly buffer Materials {

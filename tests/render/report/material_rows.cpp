@@ -13,6 +13,7 @@
 #include <string>
 
 #include "../ibl_sphere_rows.h"
+#include "../test_scene.h"
 #include "candela/render/environment.h"
 #include "image_difference.h"
 #include "median.h"
@@ -32,7 +33,108 @@ struct ModeRun {
 
 }  // namespace
 
+namespace {
+
+// A texture of hashed bytes: every texel differs, so each fetch costs what a real one does.
+content::Rgba8Image noiseImage(uint32_t size, uint32_t seed) {
+    content::Rgba8Image image;
+    image.width = image.height = size;
+    image.rgba.resize(size_t(size) * size * 4);
+    for (size_t i = 0; i < image.rgba.size(); ++i) {
+        uint32_t h = uint32_t(i) * 2654435761u + seed * 40503u;
+        h ^= h >> 15;
+        image.rgba[i] = uint8_t(h * 2246822519u >> 24);
+    }
+    return image;
+}
+
+// Cost per material layer (issue 21): the G-buffer pass over a full-screen plane whose material
+// has 1 to 4 layers, each with base colour, metallic-roughness and normal textures at its own UV
+// scale, and a mask giving every layer weight 0.5 (so none is skipped). One layer is the base
+// alone (the unlayered variant); 2 to 4 use the layered variant. The lighting pass is timed too:
+// the layers blend before lighting, so it should not change with the count.
+void addMaterialLayerRows(ReportContext& context) {
+    const bool quick = context.budget.quick;
+    GpuContext& gpu = context.harness.context();
+    const uint32_t size = quick ? 128 : 512;
+    const uint32_t repetitions = quick ? 3 : 9;
+    test::TestScene scene;
+    scene.width = scene.height = size;
+    content::Model& model = scene.model;
+    content::Rgba8Image mask;
+    mask.width = mask.height = 4;
+    mask.rgba.assign(4 * 4 * 4, 128);
+    model.images.push_back(mask);
+    for (uint32_t i = 0; i < 12; ++i)
+        model.images.push_back(noiseImage(256, i + 1));
+    for (uint32_t i = 0; i < model.images.size(); ++i)
+        model.textures.push_back({"", int32_t(i), {}});
+    scene.add(content::makePlane(2.0f), content::Material{});
+    scene.lookAt({0.0f, 1.2f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f});
+    LightInstance sun;
+    sun.light.type = content::LightType::Directional;
+    sun.light.lux = 3.0f;
+    sun.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
+    scene.lights.push_back(sun);
+
+    auto layered = [](uint32_t count) {
+        content::Material m;
+        for (uint32_t i = 0; i < count; ++i) {
+            content::MaterialLayer l;
+            l.name = "layer " + std::to_string(i);
+            l.baseColorFactor = {0.2f + 0.2f * float(i), 0.5f, 0.8f - 0.2f * float(i), 1.0f};
+            l.roughnessFactor = 0.3f + 0.2f * float(i);
+            l.baseColorTexture.texture = int32_t(1 + 3 * i);
+            l.metallicRoughnessTexture.texture = int32_t(2 + 3 * i);
+            l.normalTexture.texture = int32_t(3 + 3 * i);
+            l.uvScale = {1.0f + 3.0f * float(i), 1.0f + 3.0f * float(i)};
+            m.layering.layers.push_back(l);
+        }
+        m.layering.maskTexture.texture = 0;
+        return m;
+    };
+    std::map<uint32_t, std::vector<double>> gbufferMs, lightingMs;
+    for (uint32_t r = 0; r < repetitions; ++r) {
+        for (uint32_t count = 1; count <= content::kMaxMaterialLayers; ++count) {
+            scene.model.materials[0] = layered(count);
+            RendererStats stats;
+            scene.render(gpu, RendererOptions{}, &stats, 2);
+            for (const auto& [name, ms] : stats.passMs) {
+                if (name == "gbuffer") gbufferMs[count].push_back(ms);
+            }
+            lightingMs[count].push_back(stats.lightingMs);
+        }
+    }
+    const double base = median(gbufferMs[1]);
+    const double baseLighting = median(lightingMs[1]);
+    for (uint32_t count = 2; count <= content::kMaxMaterialLayers; ++count) {
+        const double ms = median(gbufferMs[count]);
+        const double lighting = median(lightingMs[count]);
+        char approximation[160];
+        std::snprintf(approximation, sizeof(approximation),
+                      "Material layers: %u layers blended in the G-buffer pass (mask texture, 3 "
+                      "textures per layer)",
+                      count);
+        char metric[240];
+        std::snprintf(metric, sizeof(metric),
+                      "lighting pass time with %u layers against 1 (relative change; the blend "
+                      "is exact, MaterialLayers test); %ux%u full-screen plane, median of %u",
+                      count, size, size, repetitions);
+        char where[200];
+        std::snprintf(where, sizeof(where),
+                      "G-buffer pass +%.2f ms per extra layer; lighting pass %.2f vs %.2f ms",
+                      (ms - base) / double(count - 1), lighting, baseLighting);
+        context.report.rows.push_back(
+            {approximation, "1 layer (the base alone, unlayered G-buffer variant)", metric,
+             baseLighting > 0.0 ? lighting / baseLighting - 1.0 : 0.0, "rel", where,
+             "G-buffer pass " + formatCost(ms, base, "ms")});
+    }
+}
+
+}  // namespace
+
 void addMaterialRows(ReportContext& context) {
+    addMaterialLayerRows(context);
     const bool quick = context.budget.quick;
     GpuContext& gpu = context.harness.context();
     std::shared_ptr<const Environment> sky = loadReportSky(gpu);

@@ -2,8 +2,10 @@
 // Surface description shared by glTF materials, scene-file overrides and the renderer.
 // Field meanings follow glTF 2.0 plus the engine's shading models (SPEC.md "Shading").
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "candela/content/image.h"
 
@@ -26,6 +28,49 @@ struct TextureRef {
     ColorSpace colorSpace = ColorSpace::Linear;  // set by the slot: sRGB for colour slots
 
     bool present() const { return texture >= 0; }
+};
+
+// Material layers (seed 000 §2.3.2): a material built by blending a few layers, each a small
+// linear set of parameters with its own textures at its own UV scale, by per-pixel masks.
+// Layers come from a scene file's shared library ("materialLayers") by name; a material's
+// copies may change any parameter (scene_file.h). The G-buffer shader blends them before
+// lighting, so the lighting cost does not grow with the layer count (render/README.md
+// "Material layers").
+//
+// At most four layers: the base and three over it, weighted by one RGBA mask's R, G and B. One
+// mask texture then gives every weight in a single fetch, and four keeps the blend (three
+// extra layers of three texture reads each) a small fixed cost in the G-buffer pass.
+inline constexpr std::size_t kMaxMaterialLayers = 4;
+
+struct MaterialLayer {
+    std::string name;                                  // its name in the scene's layer library
+    std::array<float, 4> baseColorFactor{1, 1, 1, 1};  // linear RGBA (alpha unused)
+    float metallicFactor = 0;
+    float roughnessFactor = 0.5f;
+    float specular = 0.5f;
+    float normalScale = 1;
+    TextureRef baseColorTexture;          // sRGB
+    TextureRef metallicRoughnessTexture;  // linear; B = metallic, G = roughness
+    TextureRef normalTexture;             // linear, tangent space
+    // The layer's texture frequency: its textures read at uvScale * uv (before their own
+    // KHR_texture_transform), so a fine rust grain can tile over a coarse mask.
+    std::array<float, 2> uvScale{1, 1};
+};
+
+// Where the blend weights of layers 1..3 come from: a texture's R, G, B (at the texture's own
+// transform, the mask's frequency), or the vertex colour's (which then no longer tints the
+// base colour).
+enum class LayerMaskSource : std::uint8_t { Texture, VertexColor };
+
+struct MaterialLayering {
+    // Empty: not layered. Else layers[0] is the base (it replaces the material's base colour,
+    // metallic, roughness, specular, normal scale and their textures) and layer i > 0 is
+    // blended over the layers below it by mask channel i - 1.
+    std::vector<MaterialLayer> layers;
+    LayerMaskSource maskSource = LayerMaskSource::Texture;
+    TextureRef maskTexture;  // linear; used when maskSource is Texture
+
+    bool used() const { return !layers.empty(); }
 };
 
 struct Material {
@@ -85,8 +130,18 @@ struct Material {
     TextureRef clearcoatNormalTexture;     // linear, tangent space; none: the geometric normal
     float clearcoatNormalScale = 1;
 
+    MaterialLayering layering;  // compiled out of frames without layered materials
+
     bool anisotropic() const { return anisotropyStrength > 0; }
     bool clearCoated() const { return clearcoatFactor > 0; }
+    bool layered() const { return layering.used(); }
 };
+
+// The material as the renderer binds it: a layered material's base layer (layers[0]) written
+// over its base colour, metallic, roughness, specular, normal scale and their textures (the
+// layer's UV scale folded into the texture transforms). Other materials come back unchanged.
+Material withBaseLayer(const Material& material);
+// One of `layer`'s textures with the layer's UV scale folded into its transform.
+TextureRef layerTexture(const MaterialLayer& layer, const TextureRef& ref);
 
 }  // namespace candela::content

@@ -90,6 +90,10 @@ struct SceneDocument {
     std::optional<SceneExposure> exposure;      // unset: manual
     std::optional<float> exposureCompensation;  // "exposure_compensation", EV (auto only)
     std::optional<SceneAmbientOcclusion> ambientOcclusion;  // unset: defaults
+    // Top-level "materialLayers": the shared layer library, by unique name. A material's
+    // "layers" (at most kMaxMaterialLayers) name library layers; each copy starts as the
+    // library's and may change any of its parameters, and is written back in full.
+    std::vector<MaterialLayer> materialLayers;
 };
 
 // Where an asset path stored in a scene file points: relative paths are relative to the

@@ -59,8 +59,20 @@ enum TextureSlot : uint32_t {
     kTextureSlotCount
 };
 
+// Textures of a layered material beyond the slots above (content::MaterialLayering): the mask,
+// then base colour, metallic-roughness and normal of layers 1, 2 and 3. Only the G-buffer
+// pass's layered variant binds them.
+enum LayerTextureSlot : uint32_t {
+    kLayerMaskSlot,
+    kLayerFirstSlot,  // layer i (1..3), texture t (0 base colour, 1 metal-rough, 2 normal):
+                      // kLayerFirstSlot + (i - 1) * kTexturesPerLayer + t
+    kTexturesPerLayer = 3,
+    kLayerTextureSlotCount = kLayerFirstSlot + 3 * kTexturesPerLayer,
+};
+
 struct MaterialBinding {
     uint32_t textures[kTextureSlotCount];  // indices into SceneResources textures
+    uint32_t layerTextures[kLayerTextureSlotCount];
 };
 
 class SceneResources {

@@ -8,5 +8,8 @@
 // common/material.glsl: the material array, then one sampler per TextureSlot.
 #define GBUFFER_BINDING_MATERIALS 1
 #define GBUFFER_BINDING_FIRST_TEXTURE 2
+// common/material_layers.glsl (layered variants only): one sampler per LayerTextureSlot, after
+// the kTextureSlotCount (11) material slots.
+#define GBUFFER_BINDING_FIRST_LAYER_TEXTURE 13
 
 #endif

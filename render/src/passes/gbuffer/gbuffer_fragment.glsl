@@ -1,12 +1,17 @@
-// The G-buffer fragment shader's body, compiled twice: gbuffer.frag (the four targets every
-// frame has) and gbuffer_extended.frag (GBUFFER_MATERIAL_EXTENSIONS: also the anisotropy and
-// clear-coat targets, for frames whose materials use them).
+// The G-buffer fragment shader's body, compiled four times: gbuffer.frag (the four targets
+// every frame has), gbuffer_extended.frag (GBUFFER_MATERIAL_EXTENSIONS: also the anisotropy and
+// clear-coat targets, for frames whose materials use them), and each of them with
+// GBUFFER_MATERIAL_LAYERS (material layers blended, for frames with a layered material).
 #include "gbuffer_bindings.h"
 // Writes the G-buffer (layout in gbuffer_targets.h) and the emissive radiance into the HDR
 // target. Blended materials are drawn by the forward transparency pass instead.
 #define MATERIAL_BUFFER_BINDING GBUFFER_BINDING_MATERIALS
 #define MATERIAL_TEXTURE_BINDING GBUFFER_BINDING_FIRST_TEXTURE
 #include "common/material.glsl"
+#ifdef GBUFFER_MATERIAL_LAYERS
+#define MATERIAL_LAYER_TEXTURE_BINDING GBUFFER_BINDING_FIRST_LAYER_TEXTURE
+#include "common/material_layers.glsl"
+#endif
 #include "common/motion_vectors.glsl"
 
 layout(push_constant) uniform Draw {
@@ -47,10 +52,17 @@ float anisotropyAngle(vec2 encodedNormal, vec3 T) {
 void main() {
     MaterialUv uv = materialGradients(inUv0, inUv1);
     Material m = materials[draw.material];
+#ifdef GBUFFER_MATERIAL_LAYERS
+    vec4 baseColor = materialBaseColor(m, uv, layeredVertexTint(m, inColor));
+#else
     vec4 baseColor = materialBaseColor(m, uv, inColor);
+#endif
     if (m.alphaCutoff >= 0.0 && baseColor.a < m.alphaCutoff) discard;
 
     MaterialSample s = evaluateMaterial(m, uv, baseColor, inNormal, inTangent, gl_FrontFacing);
+#ifdef GBUFFER_MATERIAL_LAYERS
+    blendMaterialLayers(s, m, uv, inColor, inNormal, inTangent, gl_FrontFacing);
+#endif
     outBaseColor = vec4(s.baseColor.rgb, s.occlusion);
     outNormalRoughMetal = vec4(octEncode(s.N), s.roughness, s.metallic);
     outSpecularModel = vec4(s.specular, float(s.shadingModel) / 255.0, 0.0, 0.0);

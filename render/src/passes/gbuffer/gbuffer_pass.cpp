@@ -10,6 +10,8 @@
 #include "shaders/gbuffer.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
 #include "shaders/gbuffer_extended.frag.spv.h"
+#include "shaders/gbuffer_extended_layered.frag.spv.h"
+#include "shaders/gbuffer_layered.frag.spv.h"
 
 namespace candela::render {
 
@@ -20,12 +22,13 @@ struct DrawPush {
     uint32_t material;
 };
 
-}  // namespace
+static_assert(GBUFFER_BINDING_FIRST_TEXTURE + uint32_t(kTextureSlotCount) ==
+              GBUFFER_BINDING_FIRST_LAYER_TEXTURE);
 
-GBufferPass::GBufferPass(GpuContext& context) {
+// The pipeline description every variant shares; `extended` adds the two extension targets.
+GraphicsPipelineDesc gbufferDesc(std::span<const uint32_t> fragmentSpirv, bool extended) {
     GraphicsPipelineDesc desc;
     desc.vertexSpirv = gbuffer_vert_spv;
-    desc.fragmentSpirv = gbuffer_frag_spv;
     setMeshVertexInput(desc);
     desc.colorFormats.assign(GBufferTargets::kColorFormats.begin(),
                              GBufferTargets::kColorFormats.end());
@@ -33,6 +36,15 @@ GBufferPass::GBufferPass(GpuContext& context) {
     desc.colorFormats.push_back(GBufferTargets::kMotionFormat);
     desc.depthFormat = GBufferTargets::kDepthFormat;
     desc.dynamicCullMode = true;  // glTF: back faces of single-sided materials are not drawn
+    desc.fragmentSpirv = fragmentSpirv;
+    if (extended) {
+        desc.colorFormats.push_back(GBufferTargets::kAnisotropyFormat);
+        desc.colorFormats.push_back(GBufferTargets::kClearCoatFormat);
+    }
+    return desc;
+}
+
+std::vector<DescriptorBinding> gbufferBindings(bool materialLayers) {
     std::vector<DescriptorBinding> bindings = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
         {PREVIOUS_WORLDS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
@@ -44,11 +56,32 @@ GBufferPass::GBufferPass(GpuContext& context) {
                             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                             VK_SHADER_STAGE_FRAGMENT_BIT});
     }
-    pipeline_ = Pipeline::graphics(context, desc, bindings, sizeof(DrawPush));
-    desc.fragmentSpirv = gbuffer_extended_frag_spv;
-    desc.colorFormats.push_back(GBufferTargets::kAnisotropyFormat);
-    desc.colorFormats.push_back(GBufferTargets::kClearCoatFormat);
-    extendedPipeline_ = Pipeline::graphics(context, desc, bindings, sizeof(DrawPush));
+    for (uint32_t slot = 0; materialLayers && slot < kLayerTextureSlotCount; ++slot) {
+        bindings.push_back({GBUFFER_BINDING_FIRST_LAYER_TEXTURE + slot,
+                            VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            VK_SHADER_STAGE_FRAGMENT_BIT});
+    }
+    return bindings;
+}
+
+}  // namespace
+
+GBufferPass::GBufferPass(GpuContext& context) : context_(context) {
+    pipeline_ = Pipeline::graphics(context, gbufferDesc(gbuffer_frag_spv, false),
+                                   gbufferBindings(false), sizeof(DrawPush));
+    extendedPipeline_ = Pipeline::graphics(context, gbufferDesc(gbuffer_extended_frag_spv, true),
+                                           gbufferBindings(false), sizeof(DrawPush));
+}
+
+void GBufferPass::prepare(bool materialLayers) {
+    materialLayers_ = materialLayers;
+    if (!materialLayers || layeredBuilt_) return;
+    layeredPipeline_ = Pipeline::graphics(context_, gbufferDesc(gbuffer_layered_frag_spv, false),
+                                          gbufferBindings(true), sizeof(DrawPush));
+    extendedLayeredPipeline_ =
+        Pipeline::graphics(context_, gbufferDesc(gbuffer_extended_layered_frag_spv, true),
+                           gbufferBindings(true), sizeof(DrawPush));
+    layeredBuilt_ = true;
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
@@ -90,7 +123,9 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     VkRect2D scissor{{0, 0}, {width, height}};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    const Pipeline& pipeline = targets.extended ? extendedPipeline_ : pipeline_;
+    const Pipeline& pipeline =
+        materialLayers_ ? (targets.extended ? extendedLayeredPipeline_ : layeredPipeline_)
+                        : (targets.extended ? extendedPipeline_ : pipeline_);
     pipeline.bind(cmd);
 
     const GpuBuffer& materials = resources.materialBuffer();
@@ -104,7 +139,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
         // Blended surfaces are drawn by the forward transparency pass.
         if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
         const MaterialBinding& binding = resources.materialBinding(draw.material);
-        std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
+        std::array<VkDescriptorImageInfo, size_t(kTextureSlotCount) + kLayerTextureSlotCount>
+            images{};
         std::vector<VkWriteDescriptorSet> writes = {
             uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
             storageBufferWrite(PREVIOUS_WORLDS_BINDING, &previousInfo),
@@ -114,6 +150,12 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
             writes.push_back(
                 sampledImageWrite(GBUFFER_BINDING_FIRST_TEXTURE + slot, &images[slot]));
+        }
+        for (uint32_t slot = 0; materialLayers_ && slot < kLayerTextureSlotCount; ++slot) {
+            const GpuTexture& t = resources.texture(binding.layerTextures[slot]);
+            VkDescriptorImageInfo& image = images[kTextureSlotCount + slot];
+            image = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+            writes.push_back(sampledImageWrite(GBUFFER_BINDING_FIRST_LAYER_TEXTURE + slot, &image));
         }
         pipeline.pushDescriptors(cmd, writes);
         vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided

@@ -14,6 +14,10 @@ struct GBufferTargets;
 class GBufferPass {
 public:
     explicit GBufferPass(GpuContext& context);
+    // Whether this frame's opaque draws include a layered material: picks the variants that
+    // blend material layers (built on first use, so frames without layers never pay for them).
+    void prepare(bool materialLayers);
+    bool materialLayers() const { return materialLayers_; }
     // Colour, motion, HDR and depth in attachment-optimal layouts (frame graph:
     // ColorAttachment, DepthWrite); all are cleared. `previousWorlds`: one mat4 per scene draw
     // (the draw's world matrix in the previous frame), for the motion vectors.
@@ -24,8 +28,13 @@ public:
                 const GpuBuffer& previousWorlds) const;
 
 private:
+    GpuContext& context_;
     Pipeline pipeline_;
     Pipeline extendedPipeline_;  // also writes targets.anisotropy and targets.clearCoat
+    Pipeline layeredPipeline_;   // gbuffer_layered.frag, once prepare(true) was called
+    Pipeline extendedLayeredPipeline_;
+    bool materialLayers_ = false;
+    bool layeredBuilt_ = false;
 };
 
 }  // namespace candela::render

@@ -66,6 +66,11 @@ public:
     void setSceneAmbientOcclusion(std::optional<content::SceneAmbientOcclusion> settings) {
         sceneAmbientOcclusion_ = settings;
     }
+    // The last scene file's layer library ("materialLayers"; materials hold their own copies):
+    // what the editor offers to add to a material and writes back.
+    const std::vector<content::MaterialLayer>& sceneMaterialLayers() const {
+        return sceneMaterialLayers_;
+    }
 
     // Keeps a model alive for the lifetime of the world and returns it.
     const content::Model& adoptModel(std::unique_ptr<content::Model> model);
@@ -97,6 +102,7 @@ private:
     content::AssetCache cache_;
     std::filesystem::path sceneFile_;
     std::optional<content::SceneBrdf> sceneBrdf_;
+    std::vector<content::MaterialLayer> sceneMaterialLayers_;
     std::optional<content::SceneAntiAliasing> sceneAntiAliasing_;
     std::optional<float> sceneBloom_;
     std::optional<content::SceneExposure> sceneExposure_;
