@@ -21,8 +21,8 @@
 #include "ibl/environment_sampling_table.h"
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
-#include "passes/bloom/bloom_pass.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
+#include "passes/bloom/bloom_pass.h"
 #include "passes/debug_text/debug_text_pass.h"
 #include "passes/exposure/exposure_bindings.h"
 #include "passes/exposure/exposure_pass.h"
@@ -30,8 +30,9 @@
 #include "passes/fxaa/fxaa_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
-#include "passes/taa/taa_pass.h"
 #include "passes/shadows/shadow_pass.h"
+#include "passes/skinning/skinning_pass.h"
+#include "passes/taa/taa_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "vk/image_transfer.h"
@@ -338,6 +339,31 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     h.lights = g.importBuffer("lights", &lights_->buffer());
     const ResourceHandle pairCounts =
         g.importBuffer("lighting.pair_counts", &pairCounts_, features.countLightPairs);
+    // Animated draws: one compute pass deforms them all before any geometry pass draws them.
+    // The handle stands for every deformed vertex buffer at once: the graph synchronises
+    // buffers with global memory barriers, so one resource orders the writes and the reads.
+    ResourceHandle deformed;
+    stats_.deformedDraws = uint32_t(inputs.scene.deforms.size());
+    if (!inputs.scene.deforms.empty()) {
+        if (!skinningPass_) skinningPass_ = std::make_unique<SkinningPass>(context_);
+        skinningPass_->upload(inputs.scene.jointMatrices, inputs.scene.morphWeights);
+        deformed = g.importBuffer("deformed_vertices", nullptr);
+        const ResourceHandle joints =
+            g.importBuffer("skinning.joints", &skinningPass_->jointBuffer());
+        const ResourceHandle weights =
+            g.importBuffer("skinning.morph_weights", &skinningPass_->morphWeightBuffer());
+        auto p =
+            g.addPass("skinning", PassKind::Device, [this, &inputs, &resources](PassContext& ctx) {
+                skinningPass_->record(ctx.cmd(), inputs.scene, resources);
+            });
+        p.read(joints, Use::StorageRead);
+        p.read(weights, Use::StorageRead);
+        deformed = p.write(deformed, Use::StorageWrite);
+    }
+    auto readDeformed = [&deformed](FrameGraph::PassBuilder& p) {
+        if (deformed.valid()) p.read(deformed, Use::VertexInput);
+    };
+
     // Shadows: the atlas keeps its maps between frames (cached tiles), read-only between uses.
     ResourceHandle shadowAtlas, shadowViews, shadowLights;
     if (features.shadows) {
@@ -355,6 +381,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                [this, &inputs, &resources](PassContext& ctx) {
                                    shadowPass_->record(ctx.cmd(), inputs.scene, resources);
                                });
+            readDeformed(p);
             shadowAtlas = p.write(shadowAtlas, Use::DepthWrite);
         }
     }
@@ -383,6 +410,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                                cameraBuffer_, previousWorlds_);
                       });
         p.read(h.camera, Use::Uniform, kRasterStages);
+        readDeformed(p);
         for (ResourceHandle& c : h.color)
             c = p.write(c, Use::ColorAttachment);
         h.motion = p.write(h.motion, Use::ColorAttachment);
@@ -394,11 +422,12 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
     }
     if (features.clustered) {
-        h.clusters = clusters_->declare(g,
-                                        {&inputs, h.depth, h.camera, h.lights, &cameraBuffer_,
-                                         &lights_->buffer(), lights_->count(), lights_->capacity(),
-                                         blended ? transparentPass_.get() : nullptr, &resources},
-                                        stats_);
+        h.clusters =
+            clusters_->declare(g,
+                               {&inputs, h.depth, h.camera, h.lights, &cameraBuffer_,
+                                &lights_->buffer(), lights_->count(), lights_->capacity(),
+                                blended ? transparentPass_.get() : nullptr, &resources, deformed},
+                               stats_);
     }
 
     // Ambient occlusion between the G-buffer and lighting: GTAO and its denoise, or the
@@ -464,33 +493,33 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         samplingTable_ && features.ibl == IblMode::Reference ? &samplingTable_->buffer() : nullptr);
     const float skyIntensity = inputs.scene.skyIntensity;
     {
-        auto p = g.addPass("lighting", PassKind::Device,
-                           [this, gbufferViews, ids, environment, skyIntensity, occlusion,
-                            specularOcclusion, aoIntensity, aoMultiBounce,
-                            shadowDescriptors](PassContext& ctx) {
-                               const GBufferTargets targets = gbufferViews(ctx);
-                               LightingPass::Inputs lighting{&targets,
-                                                             ctx.image(ids.hdr),
-                                                             &cameraBuffer_,
-                                                             &lights_->buffer(),
-                                                             &clusters_->ranges(),
-                                                             &clusters_->indices(),
-                                                             &pairCounts_,
-                                                             &clusters_->depthRange(),
-                                                             &clusters_->grid(),
-                                                             clusters_->directionalCount()};
-                               lighting.environment = &environment;
-                               lighting.skyIntensity = skyIntensity;
-                               lighting.referenceSamples = options_.referenceSamples;
-                               if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
-                               if (specularOcclusion) {
-                                   lighting.specularOcclusion = ctx.image(*specularOcclusion);
-                               }
-                               lighting.aoIntensity = aoIntensity;
-                               lighting.aoMultiBounce = aoMultiBounce;
-                               lighting.shadows = &shadowDescriptors;
-                               lightingPass_->record(ctx.cmd(), lighting);
-                           });
+        auto p = g.addPass(
+            "lighting", PassKind::Device,
+            [this, gbufferViews, ids, environment, skyIntensity, occlusion, specularOcclusion,
+             aoIntensity, aoMultiBounce, shadowDescriptors](PassContext& ctx) {
+                const GBufferTargets targets = gbufferViews(ctx);
+                LightingPass::Inputs lighting{&targets,
+                                              ctx.image(ids.hdr),
+                                              &cameraBuffer_,
+                                              &lights_->buffer(),
+                                              &clusters_->ranges(),
+                                              &clusters_->indices(),
+                                              &pairCounts_,
+                                              &clusters_->depthRange(),
+                                              &clusters_->grid(),
+                                              clusters_->directionalCount()};
+                lighting.environment = &environment;
+                lighting.skyIntensity = skyIntensity;
+                lighting.referenceSamples = options_.referenceSamples;
+                if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
+                if (specularOcclusion) {
+                    lighting.specularOcclusion = ctx.image(*specularOcclusion);
+                }
+                lighting.aoIntensity = aoIntensity;
+                lighting.aoMultiBounce = aoMultiBounce;
+                lighting.shadows = &shadowDescriptors;
+                lightingPass_->record(ctx.cmd(), lighting);
+            });
         for (ResourceHandle c : h.color)
             p.read(c, Use::Sampled);
         p.read(h.depth, Use::Sampled);
@@ -516,20 +545,20 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
     if (blended) {
-        auto p = g.addPass(
-            "forward_transparent", PassKind::Device,
-            [this, ids, environment, skyIntensity, shadowDescriptors,
-             &resources](PassContext& ctx) {
-                transparentPass_->recordShading(
-                    ctx.cmd(), resources,
-                    {ctx.image(ids.hdr), ctx.image(ids.motion), ctx.image(ids.depth),
-                     &cameraBuffer_, &lights_->buffer(), &clusters_->ranges(),
-                     &clusters_->indices(), &clusters_->depthRange(), &clusters_->grid(),
-                     clusters_->directionalCount(), &environment, skyIntensity,
-                     &shadowDescriptors});
-            });
+        auto p = g.addPass("forward_transparent", PassKind::Device,
+                           [this, ids, environment, skyIntensity, shadowDescriptors,
+                            &resources](PassContext& ctx) {
+                               transparentPass_->recordShading(
+                                   ctx.cmd(), resources,
+                                   {ctx.image(ids.hdr), ctx.image(ids.motion), ctx.image(ids.depth),
+                                    &cameraBuffer_, &lights_->buffer(), &clusters_->ranges(),
+                                    &clusters_->indices(), &clusters_->depthRange(),
+                                    &clusters_->grid(), clusters_->directionalCount(), &environment,
+                                    skyIntensity, &shadowDescriptors});
+                           });
         p.read(h.depth, Use::DepthRead);
         p.read(h.camera, Use::Uniform, kRasterStages);
+        readDeformed(p);
         p.read(h.lights, Use::StorageRead, kFragmentStage);
         if (features.clustered) {
             p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
@@ -802,6 +831,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.lightingMs = 0.0;
     stats_.taaMs = 0.0;
     stats_.bloomMs = 0.0;
+    stats_.skinningMs = 0.0;
     stats_.aoMs = 0.0;
     stats_.shadowMs = 0.0;
     stats_.passMs.clear();
@@ -814,6 +844,7 @@ const RendererStats& Renderer::collectStats() {
         if (name == "lighting") stats_.lightingMs = ms;
         if (name == "taa" || name == "taa_copy") stats_.taaMs += ms;
         if (name.starts_with("bloom_")) stats_.bloomMs += ms;
+        if (name == "skinning") stats_.skinningMs += ms;
         if (name.starts_with("ambient_occlusion_")) stats_.aoMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "candela/content/model.h"
@@ -24,8 +25,17 @@ struct GpuMesh {
     GpuBuffer indices;   // uint32
     uint32_t indexCount = 0;
     int32_t defaultMaterial = -1;  // the primitive's material in SceneResources, -1: default
-    glm::vec3 boundsCenter{0.0f};  // of the positions' box, mesh space (transparency sorting)
-    glm::vec3 boundsExtent{0.0f};  // half its size (shadow caster culling)
+    // Of the positions' box, mesh space (transparency sorting, shadow caster culling); with
+    // morph targets, grown to hold every weight combination in [0, 1].
+    glm::vec3 boundsCenter{0.0f};
+    glm::vec3 boundsExtent{0.0f};  // half its size
+    // Animated primitives (skins, morph targets) only: what the skinning pass reads besides
+    // `vertices` (which then also has storage usage). Layouts: passes/skinning/skinning_bindings.h.
+    uint32_t vertexCount = 0;
+    GpuBuffer skinVertices;  // per vertex uvec4 joints + vec4 weights; empty: not skinned
+    GpuBuffer morphDeltas;   // vec4 per (target, attribute, vertex); empty: no targets
+    uint32_t morphTargetCount = 0;
+    bool deformable() const { return skinVertices.handle() || morphTargetCount > 0; }
 };
 
 struct GpuTexture {
@@ -79,15 +89,23 @@ public:
     // The vertex buffer a geometry pass binds for `draw`: its deformed vertices when animated,
     // else the mesh's.
     VkBuffer vertexBufferOf(const struct DrawItem& draw) const;
+    // The box (centre, half extent, mesh space) a pass culls or sorts `draw` by: a skinned
+    // draw's own (this frame's pose), else its mesh's.
+    std::pair<glm::vec3, glm::vec3> meshSpaceBounds(const DrawItem& draw) const;
 
-    // Animated instances (skins, morph targets): writes this frame's deformed positions and
-    // normals of `primitive` into the instance's own host-visible vertex buffer (made on first
-    // use for `instanceKey` with the primitive's other attributes) and returns it. The frame
-    // waits for its submission before the next one is extracted, so one buffer per instance is
-    // enough. Buffers live until the SceneResources goes (a world swap).
-    VkBuffer writeDeformedVertices(uint64_t instanceKey, const content::Primitive& primitive,
-                                   std::span<const content::Float3> positions,
-                                   std::span<const content::Float3> normals);
+    // Animated instances (skins, morph targets): the device-local vertex buffer (storage +
+    // vertex usage, mesh layout) that the skinning pass deforms `mesh` into for the instance
+    // `instanceKey` (unique per instance and primitive), made on first use. Its contents are
+    // whatever the last skinning pass wrote: the frame graph orders that pass before the
+    // geometry passes, and a frame waits for the previous one, so one buffer per instance is
+    // enough. Buffers not asked for in a frame are freed at the next releaseUnusedDeformed().
+    VkBuffer deformedVertexBuffer(uint64_t instanceKey, uint32_t mesh);
+    // Frees the deformed buffers no deformedVertexBuffer() call asked for since the last call
+    // (destroyed or no longer animated entities); call once per frame, before extraction, when
+    // no frame that drew them is still in flight.
+    void releaseUnusedDeformed();
+    // The buffer deformedVertexBuffer() made for `instanceKey`, or null (tests read it back).
+    const GpuBuffer* deformedBuffer(uint64_t instanceKey) const;
     uint32_t deformedInstanceCount() const { return uint32_t(deformed_.size()); }
     uint32_t meshCount() const { return uint32_t(meshes_.size()); }
     uint32_t materialCount() const { return uint32_t(materialBindings_.size()); }
@@ -127,7 +145,11 @@ private:
     std::vector<content::Material> materials_;
     std::vector<MaterialBinding> materialBindings_;
     std::unordered_map<const content::Model*, UploadedModel> models_;
-    std::unordered_map<uint64_t, GpuBuffer> deformed_;
+    struct DeformedBuffer {
+        GpuBuffer buffer;
+        bool used = true;  // asked for since the last releaseUnusedDeformed()
+    };
+    std::unordered_map<uint64_t, DeformedBuffer> deformed_;
     std::unordered_map<uint32_t, VkSampler> samplers_;
     GpuBuffer materialBuffer_;
     bool materialsDirty_ = true;

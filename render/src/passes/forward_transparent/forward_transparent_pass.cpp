@@ -57,8 +57,7 @@ void setMeshVertexInput(GraphicsPipelineDesc& desc) {
 // `vertexBuffer`: the mesh's, or a skinned or morphed draw's deformed vertices
 // (SceneResources::vertexBufferOf). firstInstance: the draw's index in FrameScene::draws,
 // gbuffer.vert's previous-world index.
-void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, VkBuffer vertexBuffer,
-              uint32_t drawIndex) {
+void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, VkBuffer vertexBuffer, uint32_t drawIndex) {
     VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
@@ -169,7 +168,7 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
         const DrawItem& draw = scene.draws[i];
         if (resources.material(draw.material).alphaMode != content::AlphaMode::Blend) continue;
         if (resources.mesh(draw.mesh).indexCount == 0) continue;
-        glm::vec4 centre = draw.world * glm::vec4(resources.mesh(draw.mesh).boundsCenter, 1.0f);
+        glm::vec4 centre = draw.world * glm::vec4(resources.meshSpaceBounds(draw).first, 1.0f);
         float viewDepth = -(scene.camera.view * centre).z;
         order_.emplace_back(viewDepth, i);
     }

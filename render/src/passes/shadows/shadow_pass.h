@@ -96,6 +96,7 @@ private:
     std::vector<PlannedView> planned_;
     std::vector<LightPlan> lightPlans_;
     std::vector<uint64_t> previousKeys_;  // per light slot: what its maps were rendered from
+    uint64_t frameCounter_ = 0;           // prepare() calls (animated casters' key)
     ShadowFrameStats stats_;
 };
 
