@@ -23,6 +23,7 @@
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_context.h"
 #include "candela/render/scene_resources.h"
+#include "gpu_timer.h"
 #include "passes/skinning/skinning_pass.h"
 
 namespace {
@@ -61,39 +62,6 @@ FrameTimes measure(ecs::Registry& registry, ecs::JobSystem& jobs, int frames) {
     return {median(sample), median(propagate), median(skin)};
 }
 
-// GPU milliseconds of the commands `record` writes, from timestamps around them.
-class GpuTimer {
-public:
-    explicit GpuTimer(render::GpuContext& context) : context_(context) {
-        VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-        info.queryType = VK_QUERY_TYPE_TIMESTAMP;
-        info.queryCount = 2;
-        vkCreateQueryPool(context_.device(), &info, nullptr, &pool_);
-    }
-    ~GpuTimer() { vkDestroyQueryPool(context_.device(), pool_, nullptr); }
-    GpuTimer(const GpuTimer&) = delete;
-    GpuTimer& operator=(const GpuTimer&) = delete;
-
-    template <class F>
-    double ms(F&& record) {
-        context_.submitAndWait([&](VkCommandBuffer cmd) {
-            vkCmdResetQueryPool(cmd, pool_, 0, 2);
-            vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_NONE, pool_, 0);
-            record(cmd);
-            vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, 1);
-        });
-        uint64_t ticks[2] = {0, 0};
-        vkGetQueryPoolResults(context_.device(), pool_, 0, 2, sizeof(ticks), ticks,
-                              sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
-        return static_cast<double>(ticks[1] - ticks[0]) *
-               static_cast<double>(context_.properties().limits.timestampPeriod) * 1e-6;
-    }
-
-private:
-    render::GpuContext& context_;
-    VkQueryPool pool_ = VK_NULL_HANDLE;
-};
-
 // The skinning pass over every Fox in `registry` (each with its own target buffer), and a
 // plain copy of the same vertex bytes into the same buffers: medians over `frames`.
 struct GpuTimes {
@@ -121,7 +89,7 @@ GpuTimes measureGpu(render::GpuContext& context, render::SceneResources& resourc
     pass.upload(joints, {});
     render::FrameScene scene;
     scene.deforms = jobs;
-    GpuTimer timer(context);
+    test::GpuTimer timer(context);
     const render::GpuMesh& source = resources.mesh(mesh);
     const VkBufferCopy region{0, 0, source.vertices.size()};
     std::vector<double> skinning, copy;
