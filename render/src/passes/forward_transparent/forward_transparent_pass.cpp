@@ -57,7 +57,8 @@ void setMeshVertexInput(GraphicsPipelineDesc& desc) {
 // `vertexBuffer`: the mesh's, or a skinned or morphed draw's deformed vertices
 // (SceneResources::vertexBufferOf). firstInstance: the draw's index in FrameScene::draws,
 // gbuffer.vert's previous-world index.
-void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, VkBuffer vertexBuffer, uint32_t drawIndex) {
+void drawMesh(VkCommandBuffer cmd, const GpuMesh& mesh, VkBuffer vertexBuffer,
+              uint32_t drawIndex) {
     VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
     vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
