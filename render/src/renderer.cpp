@@ -33,6 +33,7 @@
 #include "passes/lighting/lighting_pass.h"
 #include "passes/taa/taa_pass.h"
 #include "passes/shadows/shadow_pass.h"
+#include "passes/skinning/skinning_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "vk/image_transfer.h"
@@ -432,6 +433,31 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     h.lights = g.importBuffer("lights", &lights_->buffer());
     const ResourceHandle pairCounts =
         g.importBuffer("lighting.pair_counts", &pairCounts_, features.countLightPairs);
+    // Animated draws: one compute pass deforms them all before any geometry pass draws them.
+    // The handle stands for every deformed vertex buffer at once: the graph synchronises
+    // buffers with global memory barriers, so one resource orders the writes and the reads.
+    ResourceHandle deformed;
+    stats_.deformedDraws = uint32_t(inputs.scene.deforms.size());
+    if (!inputs.scene.deforms.empty()) {
+        if (!skinningPass_) skinningPass_ = std::make_unique<SkinningPass>(context_);
+        skinningPass_->upload(inputs.scene.jointMatrices, inputs.scene.morphWeights);
+        deformed = g.importBuffer("deformed_vertices", nullptr);
+        const ResourceHandle joints =
+            g.importBuffer("skinning.joints", &skinningPass_->jointBuffer());
+        const ResourceHandle weights =
+            g.importBuffer("skinning.morph_weights", &skinningPass_->morphWeightBuffer());
+        auto p =
+            g.addPass("skinning", PassKind::Device, [this, &inputs, &resources](PassContext& ctx) {
+                skinningPass_->record(ctx.cmd(), inputs.scene, resources);
+            });
+        p.read(joints, Use::StorageRead);
+        p.read(weights, Use::StorageRead);
+        deformed = p.write(deformed, Use::StorageWrite);
+    }
+    auto readDeformed = [&deformed](FrameGraph::PassBuilder& p) {
+        if (deformed.valid()) p.read(deformed, Use::VertexInput);
+    };
+
     // Shadows: the atlas keeps its maps between frames (cached tiles), read-only between uses.
     ResourceHandle shadowAtlas, shadowViews, shadowLights;
     if (features.shadows) {
@@ -449,6 +475,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                [this, &inputs, &resources](PassContext& ctx) {
                                    shadowPass_->record(ctx.cmd(), inputs.scene, resources);
                                });
+            readDeformed(p);
             shadowAtlas = p.write(shadowAtlas, Use::DepthWrite);
         }
     }
@@ -477,6 +504,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                                cameraBuffer_, previousWorlds_);
                       });
         p.read(h.camera, Use::Uniform, kRasterStages);
+        readDeformed(p);
         for (ResourceHandle& c : h.color)
             c = p.write(c, Use::ColorAttachment);
         h.motion = p.write(h.motion, Use::ColorAttachment);
@@ -491,7 +519,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.clusters = clusters_->declare(g,
                                         {&inputs, h.depth, h.camera, h.lights, &cameraBuffer_,
                                          &lights_->buffer(), lights_->count(), lights_->capacity(),
-                                         blended ? transparentPass_.get() : nullptr, &resources},
+                                         blended ? transparentPass_.get() : nullptr, &resources,
+                                         deformed},
                                         stats_);
     }
 
@@ -640,6 +669,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             });
         p.read(h.depth, Use::DepthRead);
         p.read(h.camera, Use::Uniform, kRasterStages);
+        readDeformed(p);
         p.read(h.lights, Use::StorageRead, kFragmentStage);
         if (features.clustered) {
             p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
@@ -945,6 +975,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.lightingMs = 0.0;
     stats_.taaMs = 0.0;
     stats_.bloomMs = 0.0;
+    stats_.skinningMs = 0.0;
     stats_.aoMs = 0.0;
     stats_.shadowMs = 0.0;
     stats_.passMs.clear();
@@ -957,6 +988,7 @@ const RendererStats& Renderer::collectStats() {
         if (name == "lighting") stats_.lightingMs = ms;
         if (name == "taa" || name == "taa_copy") stats_.taaMs += ms;
         if (name.starts_with("bloom_")) stats_.bloomMs += ms;
+        if (name == "skinning") stats_.skinningMs += ms;
         if (name.starts_with("ambient_occlusion_")) stats_.aoMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;

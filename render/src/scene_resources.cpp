@@ -8,6 +8,7 @@
 #include "candela/render/gpu_context.h"
 #include "gpu_material.h"
 #include "mesh_vertex.h"
+#include "passes/skinning/skinning_bindings.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -44,6 +45,47 @@ std::vector<MeshVertex> interleave(const content::Primitive& p) {
         }
     }
     return vertices;
+}
+
+// The skinning pass's inputs for an animated primitive (skinning_bindings.h layouts).
+void uploadDeformation(GpuContext& context, const content::Primitive& p, bool skinned,
+                       GpuMesh& gpu) {
+    const size_t count = p.positions.size();
+    if (skinned) {
+        struct SkinVertex {
+            uint32_t joints[4];
+            float weights[4];
+        };
+        std::vector<SkinVertex> skin(count);
+        for (size_t v = 0; v < count; ++v) {
+            for (int c = 0; c < 4; ++c) {
+                skin[v].joints[c] = p.joints[v][c];
+                skin[v].weights[c] = v < p.weights.size() ? p.weights[v][c] : 0.0f;
+            }
+        }
+        gpu.skinVertices = uploadBuffer(context, skin.data(), skin.size() * sizeof(SkinVertex),
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    }
+    if (!p.morphTargets.empty()) {
+        std::vector<glm::vec4> deltas(p.morphTargets.size() * SKINNING_MORPH_ATTRIBUTES * count,
+                                      glm::vec4(0.0f));
+        for (size_t t = 0; t < p.morphTargets.size(); ++t) {
+            const content::MorphTarget& target = p.morphTargets[t];
+            const std::vector<content::Float3>* attributes[SKINNING_MORPH_ATTRIBUTES] = {
+                &target.positionDeltas, &target.normalDeltas, &target.tangentDeltas};
+            // A primitive without tangents keeps zero ones (as content::deformPrimitive).
+            const size_t used = p.tangents.size() == count ? SKINNING_MORPH_ATTRIBUTES : 2;
+            for (size_t a = 0; a < used; ++a) {
+                const std::vector<content::Float3>& d = *attributes[a];
+                glm::vec4* out = &deltas[(t * SKINNING_MORPH_ATTRIBUTES + a) * count];
+                for (size_t v = 0; v < count && v < d.size(); ++v)
+                    out[v] = glm::vec4(d[v][0], d[v][1], d[v][2], 0.0f);
+            }
+        }
+        gpu.morphDeltas = uploadBuffer(context, deltas.data(), deltas.size() * sizeof(glm::vec4),
+                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        gpu.morphTargetCount = uint32_t(p.morphTargets.size());
+    }
 }
 
 uint32_t mipCount(uint32_t width, uint32_t height) {
@@ -284,34 +326,47 @@ VkBuffer SceneResources::previousVertexBufferOf(const DrawItem& draw) const {
                                                            : vertexBufferOf(draw);
 }
 
-SceneResources::DeformedVertices SceneResources::writeDeformedVertices(
-    uint64_t instanceKey, const content::Primitive& primitive,
-    std::span<const content::Float3> positions, std::span<const content::Float3> normals,
-    bool continuesLastFrame) {
-    const size_t count = primitive.positions.size();
+std::pair<glm::vec3, glm::vec3> SceneResources::meshSpaceBounds(const DrawItem& draw) const {
+    if (draw.ownBounds) return {draw.boundsCenter, draw.boundsExtent};
+    return {meshes_[draw.mesh].boundsCenter, meshes_[draw.mesh].boundsExtent};
+}
+
+SceneResources::DeformedVertices SceneResources::deformedVertexBuffers(uint64_t instanceKey,
+                                                                       uint32_t mesh,
+                                                                       bool continuesLastFrame) {
+    const VkDeviceSize bytes =
+        std::max<VkDeviceSize>(meshes_[mesh].vertexCount, 1) * sizeof(MeshVertex);
     auto it = deformed_.find(instanceKey);
-    if (it == deformed_.end() || it->second.buffers[0].size() != count * sizeof(MeshVertex)) {
+    if (it == deformed_.end() || it->second.buffers[0].size() != bytes) {
         DeformedInstance instance;
-        const std::vector<MeshVertex> vertices = interleave(primitive);
         for (GpuBuffer& buffer : instance.buffers) {
-            buffer = GpuBuffer(context_, std::max<size_t>(count, 1) * sizeof(MeshVertex),
-                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, MemoryLocation::HostVisible);
-            std::memcpy(buffer.mapped(), vertices.data(), vertices.size() * sizeof(MeshVertex));
+            // Transfer source: tests and tools read the deformed vertices back.
+            buffer = GpuBuffer(context_, bytes,
+                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                               MemoryLocation::Device);
         }
         it = deformed_.insert_or_assign(instanceKey, std::move(instance)).first;
-        continuesLastFrame = false;  // the new buffers hold the bind pose, not last frame
+        continuesLastFrame = false;  // nothing was deformed into the new buffers yet
     }
     DeformedInstance& instance = it->second;
+    instance.used = true;
     const uint32_t previous = instance.current;
     instance.current ^= 1u;
-    auto* vertices = static_cast<MeshVertex*>(instance.buffers[instance.current].mapped());
-    for (size_t i = 0; i < count && i < positions.size(); ++i) {
-        std::memcpy(vertices[i].position, positions[i].data(), sizeof(vertices[i].position));
-        if (i < normals.size())
-            std::memcpy(vertices[i].normal, normals[i].data(), sizeof(vertices[i].normal));
-    }
     const VkBuffer current = instance.buffers[instance.current].handle();
     return {current, continuesLastFrame ? instance.buffers[previous].handle() : current};
+}
+
+void SceneResources::releaseUnusedDeformed() {
+    std::erase_if(deformed_, [](const auto& entry) { return !entry.second.used; });
+    for (auto& [key, deformed] : deformed_)
+        deformed.used = false;
+}
+
+const GpuBuffer* SceneResources::deformedBuffer(uint64_t instanceKey) const {
+    auto it = deformed_.find(instanceKey);
+    return it != deformed_.end() ? &it->second.buffers[it->second.current] : nullptr;
 }
 
 const UploadedModel& SceneResources::addModel(const content::Model& model) {
@@ -328,9 +383,15 @@ const UploadedModel& SceneResources::addModel(const content::Model& model) {
         for (const content::Primitive& p : mesh.primitives) {
             std::vector<MeshVertex> vertices = interleave(p);
             GpuMesh gpu;
+            const bool skinned = !p.joints.empty() && p.joints.size() == p.positions.size();
+            const bool deformable = skinned || !p.morphTargets.empty();
+            // An animated primitive's vertices are also the skinning pass's storage input.
             gpu.vertices =
                 uploadBuffer(context_, vertices.data(), vertices.size() * sizeof(MeshVertex),
-                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
+                                 (deformable ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : 0));
+            gpu.vertexCount = uint32_t(p.positions.size());
+            if (deformable && !p.positions.empty()) uploadDeformation(context_, p, skinned, gpu);
             gpu.indices =
                 uploadBuffer(context_, p.indices.data(), p.indices.size() * sizeof(uint32_t),
                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
@@ -342,6 +403,17 @@ const UploadedModel& SceneResources::addModel(const content::Model& model) {
                     glm::vec3 v(position[0], position[1], position[2]);
                     lo = glm::min(lo, v);
                     hi = glm::max(hi, v);
+                }
+                // Morph targets move vertices by up to the sum of each target's deltas (at
+                // weights within [0, 1]): the box holds every such pose.
+                for (const content::MorphTarget& target : p.morphTargets) {
+                    glm::vec3 down(0.0f), up(0.0f);
+                    for (const auto& d : target.positionDeltas) {
+                        down = glm::min(down, glm::vec3(d[0], d[1], d[2]));
+                        up = glm::max(up, glm::vec3(d[0], d[1], d[2]));
+                    }
+                    lo += down;
+                    hi += up;
                 }
                 gpu.boundsCenter = 0.5f * (lo + hi);
                 gpu.boundsExtent = 0.5f * (hi - lo);

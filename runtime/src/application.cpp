@@ -561,6 +561,9 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                 frame.scene.camera = s.extracted.camera;
                 frame.scene.draws = s.extracted.draws;
                 frame.scene.previousWorlds = s.extracted.previousWorlds;
+                frame.scene.deforms = s.extracted.deforms;
+                frame.scene.jointMatrices = s.extracted.jointMatrices;
+                frame.scene.morphWeights = s.extracted.morphWeights;
                 frame.deltaSeconds = float(frameContext.deltaSeconds);
                 frame.scene.lights = s.extracted.lights;
                 frame.scene.changedLights = s.extracted.changedLights;

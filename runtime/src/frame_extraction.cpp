@@ -60,22 +60,28 @@ const ExtractedFrame::OverrideMaterials* overrideMaterials(ecs::Registry& regist
     return &made;
 }
 
-const content::Skin kNoSkin{};
-const content::MorphWeights kNoMorph{};
+// An animated instance's skin and morph weights, packed into the frame's arrays once for all
+// of its primitives. The bounds of a skin cover the deformed mesh (Skin::boundsMin/Max).
+struct PackedPose {
+    uint32_t firstJoint = 0, jointCount = 0, firstMorphWeight = 0, morphWeightCount = 0;
+};
 
-// CPU skinning and morphing (content/skinning.h) into the instance's deformed vertex buffer;
-// the instance's other buffer keeps last frame's vertices for the motion vectors when it was
-// drawn last frame (`drawnLastFrame`).
-render::SceneResources::DeformedVertices deformInstance(
-    ecs::Entity e, uint32_t primitive, const content::MeshInstance& instance,
-    const content::Skin& skin, const content::MorphWeights& morph, bool drawnLastFrame,
-    render::SceneResources& resources, ExtractedFrame& out) {
-    const content::Primitive& source =
-        instance.model->meshes[size_t(instance.mesh)].primitives[primitive];
-    content::deformPrimitive(source, skin.jointMatrices, morph.weights, out.deformScratch);
-    return resources.writeDeformedVertices(e.bits() * 64 + primitive, source,
-                                           out.deformScratch.positions, out.deformScratch.normals,
-                                           drawnLastFrame);
+PackedPose packPose(const content::Skin* skin, const content::MorphWeights* morph,
+                    ExtractedFrame& out) {
+    PackedPose pose;
+    if (skin && !skin->jointMatrices.empty()) {
+        pose.firstJoint = uint32_t(out.jointMatrices.size());
+        pose.jointCount = uint32_t(skin->jointMatrices.size());
+        for (const ecs::Mat4& m : skin->jointMatrices)
+            out.jointMatrices.push_back(toGlm(m));
+    }
+    if (morph && !morph->weights.empty()) {
+        pose.firstMorphWeight = uint32_t(out.morphWeights.size());
+        pose.morphWeightCount = uint32_t(morph->weights.size());
+        out.morphWeights.insert(out.morphWeights.end(), morph->weights.begin(),
+                                morph->weights.end());
+    }
+    return pose;
 }
 
 }  // namespace
@@ -85,6 +91,12 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
     out.draws.clear();
     out.previousWorlds.clear();
     out.lastWorldNext.clear();
+    out.deforms.clear();
+    out.jointMatrices.clear();
+    out.morphWeights.clear();
+    // Buffers of instances no longer animated (destroyed, or their skin removed) go here: none
+    // was drawn by the last frame, so no frame in flight uses them.
+    resources.releaseUnusedDeformed();
     out.hasCamera = false;
     // Debug text is per frame: taken from the world, which starts the next frame empty.
     out.text.clear();
@@ -105,14 +117,11 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
             auto last = out.lastWorld.find(e.bits());
             const glm::mat4 previousWorld = last != out.lastWorld.end() ? last->second : world;
             out.lastWorldNext[e.bits()] = world;
-            // Skinned or morphed: a per-instance buffer of this frame's deformed vertices.
+            // Skinned or morphed: the skinning pass deforms the mesh into a per-instance buffer.
             const content::Skin* skin = registry.tryGet<content::Skin>(e);
             const content::MorphWeights* morph = registry.tryGet<content::MorphWeights>(e);
             const bool deform = skin != nullptr || morph != nullptr;
-            if (deform) {
-                skin = skin ? skin : &kNoSkin;
-                morph = morph ? morph : &kNoMorph;
-            }
+            const PackedPose pose = deform ? packPose(skin, morph, out) : PackedPose{};
             const ExtractedFrame::OverrideMaterials* overrides =
                 overrideMaterials(registry, e, *instance.model, resources, out);
             for (uint32_t p = 0; p < uploaded.primitiveCountOfMesh[instance.mesh]; ++p) {
@@ -124,11 +133,30 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                 }
                 out.draws.push_back({first + p, material, world});
                 out.previousWorlds.push_back(previousWorld);
-                if (deform) {
-                    const render::SceneResources::DeformedVertices vertices = deformInstance(
-                        e, p, instance, *skin, *morph, last != out.lastWorld.end(), resources, out);
-                    out.draws.back().deformedVertices = vertices.current;
-                    out.draws.back().previousDeformedVertices = vertices.previous;
+                if (deform && resources.mesh(first + p).deformable()) {
+                    // This frame's buffer, and last frame's for the motion vectors when the
+                    // instance was drawn then.
+                    const render::SceneResources::DeformedVertices vertices =
+                        resources.deformedVertexBuffers(e.bits() * 64 + p, first + p,
+                                                        last != out.lastWorld.end());
+                    render::DeformJob job{first + p,
+                                          vertices.current,
+                                          pose.firstJoint,
+                                          pose.jointCount,
+                                          pose.firstMorphWeight,
+                                          pose.morphWeightCount};
+                    render::DrawItem& draw = out.draws.back();
+                    draw.deformedVertices = vertices.current;
+                    draw.previousDeformedVertices = vertices.previous;
+                    // The skin's box this frame: shadow fitting and sorting follow the pose.
+                    if (skin && skin->boundsValid) {
+                        const glm::vec3 lo(skin->boundsMin.x, skin->boundsMin.y, skin->boundsMin.z);
+                        const glm::vec3 hi(skin->boundsMax.x, skin->boundsMax.y, skin->boundsMax.z);
+                        draw.ownBounds = true;
+                        draw.boundsCenter = 0.5f * (lo + hi);
+                        draw.boundsExtent = 0.5f * (hi - lo);
+                    }
+                    out.deforms.push_back(job);
                 }
             }
         });

@@ -58,6 +58,10 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["lighting_ms"] = median(collect(stats.frames, [](auto& f) { return f.lightingMs; }));
     json["taa_ms"] = median(collect(stats.frames, [](auto& f) { return f.taaMs; }));
     json["bloom_ms"] = median(collect(stats.frames, [](auto& f) { return f.bloomMs; }));
+    // Animation: GPU ms of the skinning pass (0 in frames with no animated draw) and the
+    // animated draws it deformed in the last frame.
+    json["skinning_ms"] = median(collect(stats.frames, [](auto& f) { return f.skinningMs; }));
+    json["deformed_draws"] = last.deformedDraws;
     // The last frame's metered EV100 (auto exposure; else the camera's) and the one it used.
     json["exposure_ev100"] = last.exposureEv100;
     json["exposure_adapted_ev100"] = last.adaptedEv100;

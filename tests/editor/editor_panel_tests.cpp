@@ -7,7 +7,9 @@
 #include "app/inspector_panel.h"
 #include "candela/content/asset_cache.h"
 #include "candela/content/component_validation.h"
+#include "candela/content/components/animation.h"
 #include "candela/content/components/light.h"
+#include "candela/content/model.h"
 #include "candela/content/scene_instantiation.h"
 #include "candela/ecs/hierarchy.h"
 #include "candela/ui/imgui_layer.h"
@@ -145,6 +147,44 @@ TEST_F(EditorPanels, TypedValuesTheLoaderWouldRejectAreRefusedAndAbsurdOnesClamp
     type("3e38");
     EXPECT_EQ(registry.get<content::Light>(lamp).lumens, content::kMaxLumens);
     EXPECT_GE(scene->commands().undoCount(), 1u);
+}
+
+// Issue 20: the inspector's Animation section on an entity with a player: the button pauses
+// and resumes, the time slider scrubs (and pauses), and the clip list names the model's clips.
+TEST_F(EditorPanels, AnimationSectionPausesAndScrubsThePlayer) {
+    content::Model model;
+    model.animations.resize(2);
+    model.animations[0].name = "Wave";
+    model.animations[0].duration = 2.0f;
+    model.animations[1].name = "Spin";
+    model.animations[1].duration = 1.0f;
+    const ecs::Entity floor = scene->findByName("floor");
+    content::AnimationPlayer& player = registry.emplace<content::AnimationPlayer>(floor);
+    player.model = &model;
+    player.play(0);
+    frame(row("floor"), true);
+    frame(row("floor"), false);
+    frame(ImVec2(-1, -1), false);  // the inspector now shows the floor
+    ASSERT_TRUE(inspectorLayout.count("Animation play"));
+    ASSERT_TRUE(inspectorLayout.count("Animation time"));
+    ASSERT_TRUE(inspectorLayout.count("Animation clip"));
+    const ImVec2 button = inspectorLayout.at("Animation play").center();
+    frame(button, true);
+    frame(button, false);
+    EXPECT_FALSE(registry.get<content::AnimationPlayer>(floor).playing);
+    frame(button, true);
+    frame(button, false);
+    EXPECT_TRUE(registry.get<content::AnimationPlayer>(floor).playing);
+    // A drag along the slider from its left end scrubs into the clip and pauses it.
+    const auto& slider = inspectorLayout.at("Animation time");
+    const float y = slider.center().y;
+    drag(ImVec2(slider.min.x + 2.0f, y), ImVec2(0.5f * (slider.min.x + slider.max.x), y));
+    const content::AnimationPlayer& scrubbed = registry.get<content::AnimationPlayer>(floor);
+    EXPECT_FALSE(scrubbed.playing);
+    EXPECT_GT(scrubbed.time, 0.5f);
+    EXPECT_LT(scrubbed.time, 1.5f);
+    EXPECT_EQ(scrubbed.clip, 0);
+    EXPECT_EQ(scene->commands().undoCount(), 0u) << "playback state is not a scene edit";
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include <cstdio>
 
 #include "antialiasing_scenes.h"
-#include "candela/content/skinning.h"
 
 namespace candela::render::test {
 namespace {
@@ -232,19 +231,19 @@ TEST_F(Antialiasing, SkinnedJointsGiveMotionVectorsMatchingACpuReprojection) {
     options.captureMotionVectors = true;  // AA off: each pixel shows its centre's point
     Renderer renderer(context, kWidth, kHeight, options);
     FrameSubmitter submitter(context);
-    content::DeformedVertices deformed;
-    const ecs::Mat4 identity = ecs::Mat4::identity();
-    ecs::Mat4 moved = identity;
-    moved.m[12] = t.x;
-    moved.m[13] = t.y;
-    moved.m[14] = t.z;
+    std::vector<glm::mat4> joints;
     std::vector<glm::vec2> motion;
-    for (const ecs::Mat4& joint1 : {identity, moved}) {
+    // The renderer's skinning pass deforms the plane into the instance's buffer each frame;
+    // the second frame's previous-position stream is the first frame's buffer.
+    for (const glm::mat4& joint1 : {glm::mat4(1.0f), glm::translate(glm::mat4(1.0f), t)}) {
         FrameInputs inputs = scene.prepare(resources);
-        const ecs::Mat4 joints[] = {identity, joint1};
-        content::deformPrimitive(skinned, joints, {}, deformed);
-        const SceneResources::DeformedVertices vertices = resources.writeDeformedVertices(
-            1, skinned, deformed.positions, deformed.normals, joint1.m[12] != 0.0f);
+        const bool moved = joint1[3].x != 0.0f;
+        const SceneResources::DeformedVertices vertices =
+            resources.deformedVertexBuffers(1, scene.draws[0].mesh, moved);
+        joints = {glm::mat4(1.0f), joint1};
+        const DeformJob job{scene.draws[0].mesh, vertices.current, 0, 2, 0, 0};
+        inputs.scene.deforms = std::span<const DeformJob>(&job, 1);
+        inputs.scene.jointMatrices = joints;
         scene.draws[0].deformedVertices = vertices.current;
         scene.draws[0].previousDeformedVertices = vertices.previous;
         renderer.recordFrame(submitter, inputs, &resources);

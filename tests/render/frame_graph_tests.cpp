@@ -170,6 +170,34 @@ TEST(FrameGraph, ReadsInTheSameStageNeedNoSecondBarrierAndHostReadsWaitForTheDev
     EXPECT_EQ(c.before[3].memorySrcAccess, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 }
 
+// Issue 20: the skinning pass writes the deformed vertices in a compute shader; the shadow and
+// G-buffer passes, declared first, draw them as vertex input. The graph runs skinning first
+// and makes its writes visible to vertex attribute fetch, once for both readers.
+TEST(FrameGraph, DeformedVerticesReachVertexInputThroughOneBarrier) {
+    FrameGraph g;
+    ResourceHandle deformed = g.importBuffer("deformed_vertices", nullptr);
+    ResourceHandle atlas = g.importImage("shadow_atlas", nullptr, {}, {});
+    ResourceHandle color = g.importImage("color", nullptr, {}, {});
+    ResourceHandle written = deformed;
+    written.version = 1;  // what the skinning pass below produces
+    auto shadows = g.addPass("shadows", PassKind::Device, nullptr);
+    shadows.read(written, Use::VertexInput);
+    shadows.write(atlas, Use::DepthWrite);
+    auto gbuffer = g.addPass("gbuffer", PassKind::Device, nullptr);
+    gbuffer.read(written, Use::VertexInput);
+    gbuffer.write(color, Use::ColorAttachment);
+    auto skinning = g.addPass("skinning", PassKind::Device, nullptr);
+    skinning.write(deformed, Use::StorageWrite);
+    const CompiledFrameGraph c = compileFrameGraph(g);
+    ASSERT_EQ(orderNames(g, c), (std::vector<std::string>{"skinning", "shadows", "gbuffer"}));
+    EXPECT_EQ(c.before[1].memorySrcStages, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    EXPECT_EQ(c.before[1].memorySrcAccess, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    EXPECT_TRUE(c.before[1].memoryDstStages & VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT);
+    EXPECT_TRUE(c.before[1].memoryDstAccess & VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT);
+    EXPECT_FALSE(c.before[2].memoryDstAccess & VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT)
+        << "the second reader needs no second barrier";
+}
+
 TEST(FrameGraph, AWriteIsVisibleToALaterPassOnlyThroughABarrier) {
     // Lighting writes the HDR target as a storage image, tonemap reads it the same way: same
     // layout, same stage, yet the read needs a barrier.

@@ -266,6 +266,10 @@ TEST(Cli, StatsAndGraphvizDescribeTheFrameGraph) {
         ASSERT_TRUE(json["passes"].contains(pass)) << pass << ": " << json["passes"].dump();
         EXPECT_GE(json["passes"][pass].get<double>(), 0.0) << pass;
     }
+    // Nothing animates: no skinning pass, no cost (issue 20).
+    EXPECT_FALSE(json["passes"].contains("skinning"));
+    EXPECT_EQ(json["deformed_draws"].get<int>(), 0);
+    EXPECT_EQ(json["skinning_ms"].get<double>(), 0.0);
     const nlohmann::json& graph = json["frame_graph"];
     EXPECT_EQ(graph["passes"].get<int>(), int(json["passes"].size()));
     EXPECT_EQ(graph["culled_passes"].get<int>(), 0);
@@ -370,7 +374,15 @@ TEST(Cli, AnimationFlagChoosesTheClipAndStepAdvancesIt) {
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return readBytes(path);
     };
-    const std::string walkByName = render("walk", "--animation Walk --frames 3 --step 0.25");
+    const auto statsPath = dir / "walk.json";
+    const std::string walkByName =
+        render("walk", "--animation Walk --frames 3 --step 0.25 --stats " + statsPath.string());
+    // Issue 20: the Fox's one skinned draw is deformed by the skinning compute pass.
+    const nlohmann::json stats = nlohmann::json::parse(readBytes(statsPath));
+    EXPECT_EQ(stats["deformed_draws"].get<int>(), 1) << stats.dump();
+    EXPECT_GT(stats["skinning_ms"].get<double>(), 0.0);
+    EXPECT_TRUE(stats["passes"].contains("skinning")) << stats["passes"].dump();
+    EXPECT_EQ(stats["validation_messages"].get<int>(), 0);
     const std::string walkByIndex = render("walk1", "--animation 1 --frames 2 --step 0.5");
     const std::string run = render("run", "--animation Run --frames 3 --step 0.25");
     const std::string walkLater = render("walk2", "--animation Walk --frames 3 --step 0.3");

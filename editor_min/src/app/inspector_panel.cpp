@@ -10,11 +10,13 @@
 #include <glm/gtc/quaternion.hpp>
 #include <string>
 
+#include "candela/content/components/animation.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
 #include "candela/content/light_types.h"
+#include "candela/content/model.h"
 #include "candela/ecs/transform.h"
 #include "candela/render/exposure.h"
 #include "model/edit_validation.h"
@@ -287,6 +289,42 @@ void drawMaterials(EditorScene& scene, ecs::Entity e) {
     }
 }
 
+// A glTF's animation player (on the model's root entity): the clip, play / pause, a time
+// slider that scrubs (pausing playback and any crossfade), speed and looping. Scene files keep
+// no player state yet, so these change the running player directly, with no undo step.
+void drawAnimation(EditorScene& scene, ecs::Entity e) {
+    auto* player = scene.registry().tryGet<content::AnimationPlayer>(e);
+    if (!player || !player->model || player->model->animations.empty()) return;
+    if (!ImGui::CollapsingHeader("Animation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const std::vector<content::AnimationClip>& clips = player->model->animations;
+    const int clip = player->clip >= 0 && player->clip < int(clips.size()) ? player->clip : -1;
+    const std::string preview = clip >= 0 ? std::to_string(clip) + " " + clips[clip].name : "-";
+    if (ImGui::BeginCombo("Clip", preview.c_str())) {
+        for (int i = 0; i < int(clips.size()); ++i) {
+            const std::string label = std::to_string(i) + " " + clips[size_t(i)].name;
+            if (ImGui::Selectable(label.c_str(), i == clip)) player->play(i, player->loop);
+        }
+        ImGui::EndCombo();
+    }
+    record("Animation clip");
+    if (ImGui::Button(player->playing ? "Pause" : "Play")) player->playing = !player->playing;
+    record("Animation play");
+    // The time the pose shows: wrapped when looping, else held at the ends.
+    const float duration = clip >= 0 ? clips[size_t(clip)].duration : 0.0f;
+    float shown = std::max(player->time, 0.0f);
+    if (duration > 0.0f) {
+        shown = player->loop ? std::fmod(shown, duration) : std::min(shown, duration);
+    }
+    if (ImGui::SliderFloat("Time", &shown, 0.0f, std::max(duration, 1e-3f), "%.2f s")) {
+        player->time = shown;
+        player->playing = false;
+        player->nextClip = -1;
+    }
+    record("Animation time");
+    ImGui::DragFloat("Speed", &player->speed, 0.01f, -4.0f, 4.0f, "%.2fx");
+    ImGui::Checkbox("Loop", &player->loop);
+}
+
 void drawAddComponent(EditorScene& scene, ecs::Entity e) {
     if (ImGui::Button("Add component")) ImGui::OpenPopup("add component");
     if (ImGui::BeginPopup("add component")) {
@@ -349,6 +387,7 @@ void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
     if (scene.registry().valid(e)) drawLight(scene, e);
     if (scene.registry().valid(e)) drawCamera(scene, e);
     if (scene.registry().valid(e)) drawMaterials(scene, e);
+    if (scene.registry().valid(e)) drawAnimation(scene, e);
     if (scene.registry().valid(e)) drawAddComponent(scene, e);
     if (!editNotice.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, IM_COL32(255, 170, 60, 255));

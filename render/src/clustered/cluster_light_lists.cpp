@@ -235,6 +235,7 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
         mark.read(depth, Use::Sampled, kFragmentStage);
         mark.read(in.camera, Use::Uniform, kRasterStages);
         mark.read(lists.depthRange, Use::StorageRead, kFragmentStage);
+        if (in.deformed.valid()) mark.read(in.deformed, Use::VertexInput);
         bounds = mark.write(bounds, Use::StorageReadWrite, kFragmentStage);
         auto merge = g.addPass("transparent_occupancy_merge", PassKind::Device,
                                [blended, occupancyInputs](PassContext& ctx) {

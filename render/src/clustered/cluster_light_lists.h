@@ -50,6 +50,7 @@ public:
         uint32_t lightCapacity;
         ForwardTransparentPass* blended;  // non-null: blended draws mark their clusters too
         SceneResources* resources;        // what the blended draws refer to
+        ResourceHandle deformed;          // animated draws' vertices (invalid: none)
     };
     struct Lists {
         ResourceHandle ranges;      // offset, count per cluster

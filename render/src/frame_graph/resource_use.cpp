@@ -47,6 +47,9 @@ UseInfo useInfo(Use use, VkPipelineStageFlags2 shaderStages) {
         case Use::HostWrite:
             return {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_WRITE_BIT,
                     VK_IMAGE_LAYOUT_GENERAL, true, false};
+        case Use::VertexInput:
+            return {VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT,
+                    VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED, false, true};
     }
     return {};
 }
@@ -77,6 +80,8 @@ const char* useName(Use use) {
             return "host read";
         case Use::HostWrite:
             return "host write";
+        case Use::VertexInput:
+            return "vertex input";
     }
     return "?";
 }

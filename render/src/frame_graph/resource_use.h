@@ -21,6 +21,7 @@ enum class Use : uint8_t {
     TransferDst,  // copies and fills
     HostRead,     // read back on the CPU after the frame's first submission
     HostWrite,    // written by the CPU (a host pass) before a later device pass reads it
+    VertexInput,  // vertex buffer read by a draw's input assembly (deformed vertices)
 };
 
 // Shader stages a Sampled/Storage/Uniform use happens in; ignored by the other uses.

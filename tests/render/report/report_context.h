@@ -43,5 +43,6 @@ void addAntialiasingRows(ReportContext& context);
 void addMaterialRows(ReportContext& context);
 void addAmbientOcclusionRows(ReportContext& context);
 void addShadowRows(ReportContext& context);
+void addAnimationRows(ReportContext& context);
 
 }  // namespace candela::report

@@ -88,6 +88,7 @@ int main(int argc, char** argv) {
         section("material extensions", [&] { addMaterialRows(context); });
         section("ambient occlusion", [&] { addAmbientOcclusionRows(context); });
         section("shadows", [&] { addShadowRows(context); });
+        section("animation", [&] { addAnimationRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());

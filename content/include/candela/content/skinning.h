@@ -1,7 +1,9 @@
 #pragma once
-// Plain CPU skinning and morphing of one primitive, the reference the GPU pass is tested
-// against (and a fallback for tools): morph deltas first, then linear blend skinning with the
-// joint matrices (bind-pose mesh space -> current mesh space, Skin::jointMatrices).
+// Plain CPU skinning and morphing of one primitive, the reference the GPU pass
+// (render/src/passes/skinning) is tested against, and a fallback for tools: morph deltas first,
+// then linear blend skinning with the joint matrices (bind-pose mesh space -> current mesh
+// space, Skin::jointMatrices). Normals and tangents are renormalised; a tangent's w (bitangent
+// sign) is kept.
 #include <span>
 #include <vector>
 
@@ -13,6 +15,7 @@ namespace candela::content {
 struct DeformedVertices {
     std::vector<Float3> positions;
     std::vector<Float3> normals;
+    std::vector<Float4> tangents;  // empty when the primitive has none
 };
 
 // `jointMatrices` empty: no skinning; `morphWeights` empty: no morphing.

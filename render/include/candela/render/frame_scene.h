@@ -1,7 +1,7 @@
 #pragma once
 // What one frame draws, extracted from the ECS by the runtime: plain arrays the passes read.
-#include <cstdint>
 #include <vulkan/vulkan.h>
+#include <cstdint>
 
 #include <glm/glm.hpp>
 #include <span>
@@ -27,13 +27,33 @@ struct DrawItem {
     uint32_t mesh;      // from SceneResources
     uint32_t material;  // from SceneResources
     glm::mat4 world;
-    // Skinned or morphed instances: this frame's deformed vertices (SceneResources::
-    // writeDeformedVertices), a plain vertex buffer in the mesh's layout that every geometry
-    // pass binds instead of the mesh's own (vertexBufferOf). Null: the mesh's vertices.
+    // Skinned or morphed instances: this frame's deformed vertices (a DeformJob's target,
+    // SceneResources::deformedVertexBuffer), a vertex buffer in the mesh's layout that every
+    // geometry pass binds instead of the mesh's own (vertexBufferOf). Null: the mesh's.
     VkBuffer deformedVertices = VK_NULL_HANDLE;
     // Their deformed vertices of the previous frame, for the motion vectors (gbuffer.vert's
     // previous-position stream). Null: the same as this frame's (no deformation motion).
     VkBuffer previousDeformedVertices = VK_NULL_HANDLE;
+    // Skinned draws: the deformed mesh's box this frame in mesh space (centre, half extent;
+    // content::Skin's bounds), which shadow-caster fitting and sorting use instead of the
+    // mesh's bind-pose box (SceneResources::meshSpaceBounds).
+    bool ownBounds = false;
+    glm::vec3 boundsCenter{0.0f};
+    glm::vec3 boundsExtent{0.0f};
+};
+
+// One animated primitive's deformation this frame, run by the skinning compute pass before
+// any geometry pass: mesh `mesh`'s bind-pose vertices, morphed by `morphWeightCount` weights
+// from FrameScene::morphWeights[firstMorphWeight] and skinned by `jointCount` matrices from
+// FrameScene::jointMatrices[firstJoint] (bind-pose mesh space to current mesh space, as
+// content::Skin::jointMatrices), written into `target`. Counts of 0: no skinning / morphing.
+struct DeformJob {
+    uint32_t mesh = 0;
+    VkBuffer target = VK_NULL_HANDLE;
+    uint32_t firstJoint = 0;
+    uint32_t jointCount = 0;
+    uint32_t firstMorphWeight = 0;
+    uint32_t morphWeightCount = 0;
 };
 
 struct LightInstance {
@@ -49,6 +69,10 @@ struct FrameScene {
     // Motion vectors: each draw's world matrix in the previous frame, in the order of `draws`.
     // Empty (or another size): no draw moved by itself; camera motion is always accounted for.
     std::span<const glm::mat4> previousWorlds;
+    // Animated draws: what the skinning pass writes this frame (empty: no pass at all).
+    std::span<const DeformJob> deforms;
+    std::span<const glm::mat4> jointMatrices;
+    std::span<const float> morphWeights;
     std::span<const LightInstance> lights;
     // Light slots whose data changed since the previous frame. When lightsRestructured is set
     // (lights added or removed, or the caller does not track changes) every light is rewritten.

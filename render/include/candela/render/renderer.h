@@ -43,6 +43,7 @@ class FxaaPass;
 class BloomPass;
 class ExposureHistogramPass;
 class ShadowPass;
+class SkinningPass;
 class DebugTextPass;
 class TrianglePass;
 
@@ -174,6 +175,7 @@ private:
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
+    std::unique_ptr<SkinningPass> skinningPass_;    // made on the first frame with animation
     std::unique_ptr<DebugTextPass> debugTextPass_;  // made on the first frame with text
     std::unique_ptr<EnvironmentBrdfLut> brdfLut_;
     std::unique_ptr<EnvironmentPlaceholders> environmentPlaceholders_;

@@ -182,6 +182,11 @@ struct RendererStats {
     double brdfLutMs = 0.0;
     double taaMs = 0.0;    // GPU: the TAA resolve and its copy back (--stats taa_ms)
     double bloomMs = 0.0;  // GPU: the bloom pyramid and composite (--stats bloom_ms)
+
+    // Animation: GPU time of the skinning pass (--stats skinning_ms; 0 when there is none) and
+    // the animated draws it deformed this frame (--stats deformed_draws).
+    double skinningMs = 0.0;
+    uint32_t deformedDraws = 0;
     // The EV100 metered from the last read histogram (--stats exposure_ev100; auto exposure
     // only, else the camera's), and the adapted EV100 the frame was exposed with.
     float exposureEv100 = 0.0f;

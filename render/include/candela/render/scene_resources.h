@@ -9,6 +9,7 @@
 #include <memory>
 #include <span>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "candela/content/model.h"
@@ -25,8 +26,17 @@ struct GpuMesh {
     GpuBuffer indices;   // uint32
     uint32_t indexCount = 0;
     int32_t defaultMaterial = -1;  // the primitive's material in SceneResources, -1: default
-    glm::vec3 boundsCenter{0.0f};  // of the positions' box, mesh space (transparency sorting)
-    glm::vec3 boundsExtent{0.0f};  // half its size (shadow caster culling)
+    // Of the positions' box, mesh space (transparency sorting, shadow caster culling); with
+    // morph targets, grown to hold every weight combination in [0, 1].
+    glm::vec3 boundsCenter{0.0f};
+    glm::vec3 boundsExtent{0.0f};  // half its size
+    // Animated primitives (skins, morph targets) only: what the skinning pass reads besides
+    // `vertices` (which then also has storage usage). Layouts: passes/skinning/skinning_bindings.h.
+    uint32_t vertexCount = 0;
+    GpuBuffer skinVertices;  // per vertex uvec4 joints + vec4 weights; empty: not skinned
+    GpuBuffer morphDeltas;   // vec4 per (target, attribute, vertex); empty: no targets
+    uint32_t morphTargetCount = 0;
+    bool deformable() const { return skinVertices.handle() || morphTargetCount > 0; }
 };
 
 struct GpuTexture {
@@ -95,26 +105,32 @@ public:
     // The buffer a mesh pass binds as gbuffer.vert's previous-position stream (binding 1):
     // an animated draw's last-frame deformed vertices, else the same as vertexBufferOf.
     VkBuffer previousVertexBufferOf(const struct DrawItem& draw) const;
+    // The box (centre, half extent, mesh space) a pass culls or sorts `draw` by: a skinned
+    // draw's own (this frame's pose), else its mesh's.
+    std::pair<glm::vec3, glm::vec3> meshSpaceBounds(const DrawItem& draw) const;
 
-    // An animated instance's vertex buffers for one frame: this frame's deformed vertices and
-    // last frame's (the motion vectors' previous positions).
+    // An animated instance's vertex buffers for one frame: the one the skinning pass deforms
+    // into this frame, and last frame's (the motion vectors' previous positions).
     struct DeformedVertices {
         VkBuffer current = VK_NULL_HANDLE;
         VkBuffer previous = VK_NULL_HANDLE;
     };
-    // Animated instances (skins, morph targets): writes this frame's deformed positions and
-    // normals of `primitive` into one of the instance's two host-visible vertex buffers (made
-    // on first use for `instanceKey` with the primitive's other attributes); the other keeps
-    // last frame's, and the two swap every call. `continuesLastFrame`: the instance was
-    // deformed last frame, so the other buffer holds its previous positions; when false (new,
-    // or not drawn last frame) previous is current: no deformation motion. The frame waits for
-    // its submission before the next one is extracted, so two buffers per instance are enough.
-    // Buffers live until the SceneResources goes (a world swap).
-    DeformedVertices writeDeformedVertices(uint64_t instanceKey,
-                                           const content::Primitive& primitive,
-                                           std::span<const content::Float3> positions,
-                                           std::span<const content::Float3> normals,
-                                           bool continuesLastFrame = false);
+    // Animated instances (skins, morph targets): two device-local vertex buffers (storage +
+    // vertex usage, mesh layout) per instance `instanceKey` (unique per instance and primitive),
+    // made on first use, that swap every call: `current` is the one the skinning pass deforms
+    // `mesh` into this frame, the other keeps last frame's vertices. `continuesLastFrame`: the
+    // instance was deformed last frame, so `previous` is the other buffer; when false (new, or
+    // not drawn last frame) previous is current: no deformation motion. A frame waits for the
+    // previous one, so two buffers per instance are enough. Buffers not asked for in a frame
+    // are freed at the next releaseUnusedDeformed().
+    DeformedVertices deformedVertexBuffers(uint64_t instanceKey, uint32_t mesh,
+                                           bool continuesLastFrame);
+    // Frees the deformed buffers no deformedVertexBuffers() call asked for since the last call
+    // (destroyed or no longer animated entities); call once per frame, before extraction, when
+    // no frame that drew them is still in flight.
+    void releaseUnusedDeformed();
+    // This frame's deformed buffer of `instanceKey`, or null (tests read it back).
+    const GpuBuffer* deformedBuffer(uint64_t instanceKey) const;
     uint32_t deformedInstanceCount() const { return uint32_t(deformed_.size()); }
     uint32_t meshCount() const { return uint32_t(meshes_.size()); }
     uint32_t materialCount() const { return uint32_t(materialBindings_.size()); }
@@ -155,10 +171,11 @@ private:
     std::vector<MaterialBinding> materialBindings_;
     std::unordered_map<const content::Model*, UploadedModel> models_;
     // Per animated instance: two vertex buffers, this frame's at `current`, last frame's at
-    // the other (swapped by writeDeformedVertices).
+    // the other (swapped by deformedVertexBuffers).
     struct DeformedInstance {
         std::array<GpuBuffer, 2> buffers;
         uint32_t current = 0;
+        bool used = true;  // asked for since the last releaseUnusedDeformed()
     };
     std::unordered_map<uint64_t, DeformedInstance> deformed_;
     std::unordered_map<uint32_t, VkSampler> samplers_;

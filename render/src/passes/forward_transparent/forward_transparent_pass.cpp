@@ -160,7 +160,7 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
         const DrawItem& draw = scene.draws[i];
         if (resources.material(draw.material).alphaMode != content::AlphaMode::Blend) continue;
         if (resources.mesh(draw.mesh).indexCount == 0) continue;
-        glm::vec4 centre = draw.world * glm::vec4(resources.mesh(draw.mesh).boundsCenter, 1.0f);
+        glm::vec4 centre = draw.world * glm::vec4(resources.meshSpaceBounds(draw).first, 1.0f);
         float viewDepth = -(scene.camera.view * centre).z;
         order_.emplace_back(viewDepth, i);
     }

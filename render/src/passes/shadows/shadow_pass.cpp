@@ -30,19 +30,20 @@ constexpr float kLocalNear = 0.05f;
 // border reads texels of that face.
 constexpr float kBorderTexels = 2.0f;
 
-// A draw's world-space box (centre, half extent) from its mesh's box.
+// A draw's world-space box (centre, half extent) from its mesh-space box (a skinned draw's
+// pose this frame, else its mesh's).
 struct CasterBounds {
     glm::vec3 centre;
     glm::vec3 extent;
     float radius;
 };
 
-CasterBounds boundsOf(const DrawItem& draw, const GpuMesh& mesh) {
+CasterBounds boundsOf(const DrawItem& draw, const SceneResources& resources) {
+    const auto [centre, extent] = resources.meshSpaceBounds(draw);
     CasterBounds b;
-    b.centre = glm::vec3(draw.world * glm::vec4(mesh.boundsCenter, 1.0f));
+    b.centre = glm::vec3(draw.world * glm::vec4(centre, 1.0f));
     const glm::mat3 m(draw.world);
-    b.extent = glm::abs(m[0]) * mesh.boundsExtent.x + glm::abs(m[1]) * mesh.boundsExtent.y +
-               glm::abs(m[2]) * mesh.boundsExtent.z;
+    b.extent = glm::abs(m[0]) * extent.x + glm::abs(m[1]) * extent.y + glm::abs(m[2]) * extent.z;
     b.radius = glm::length(b.extent);
     return b;
 }
@@ -146,6 +147,7 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
     lightPlans_.clear();
     stats_ = {};
     rendersThisFrame_ = false;
+    ++frameCounter_;
     if (!options.shadows) return false;
 
     // Casters: every drawn opaque or masked surface (blended ones let light through).
@@ -156,7 +158,7 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
         const GpuMesh& mesh = resources.mesh(draw.mesh);
         if (mesh.indexCount == 0) continue;
         if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
-        bounds[d] = boundsOf(draw, mesh);
+        bounds[d] = boundsOf(draw, resources);
         casters.push_back(d);
     }
 
@@ -286,7 +288,14 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
             }
             key = fnv1a64(&pv.gpu, sizeof(pv.gpu), key);
             for (uint32_t d : pv.casters) {
-                key = fnv1a64(&scene.draws[d], sizeof(DrawItem), key);
+                // Field by field: DrawItem has padding bytes.
+                const DrawItem& draw = scene.draws[d];
+                key = fnv1a64(&draw.mesh, sizeof(draw.mesh), key);
+                key = fnv1a64(&draw.material, sizeof(draw.material), key);
+                key = fnv1a64(&draw.world, sizeof(draw.world), key);
+                // An animated caster changes shape under the same draw: never cached.
+                if (draw.deformedVertices)
+                    key = fnv1a64(&frameCounter_, sizeof(frameCounter_), key);
             }
             planned_.push_back(std::move(pv));
         }

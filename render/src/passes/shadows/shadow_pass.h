@@ -101,6 +101,7 @@ private:
     std::vector<uint64_t> previousKeys_;  // per light slot: what its maps were rendered from
     std::vector<std::vector<GpuShadowView>> previousViews_;  // per light slot: those views
     std::vector<uint32_t> framesWaiting_;  // per light slot: frames it kept stale maps
+    uint64_t frameCounter_ = 0;            // prepare() calls (animated casters' key)
     ShadowFrameStats stats_;
 };
 

@@ -6,7 +6,6 @@
 #include <utility>
 #include <vector>
 
-#include "candela/content/skinning.h"
 #include "candela/ecs/registry.h"
 #include "candela/render/frame_scene.h"
 #include "candela/render/scene_resources.h"
@@ -38,7 +37,11 @@ struct ExtractedFrame {
         std::vector<std::pair<uint32_t, uint32_t>> primitiveMaterial;  // primitive, material
     };
     std::unordered_map<uint64_t, OverrideMaterials> overrides;
-    content::DeformedVertices deformScratch;  // reused for every animated instance
+    // Animated draws (skins, morph targets): what the skinning pass deforms this frame, and
+    // the joint matrices and morph weights of every animated instance, packed.
+    std::vector<render::DeformJob> deforms;
+    std::vector<glm::mat4> jointMatrices;
+    std::vector<float> morphWeights;
 };
 
 // Uploads models on first sight (SceneResources caches them); updates `lights`.
