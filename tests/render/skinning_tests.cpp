@@ -21,6 +21,7 @@
 #include "mesh_vertex.h"
 #include "offscreen_frame.h"
 #include "passes/skinning/skinning_pass.h"
+#include "vk/memory_barrier.h"
 
 using namespace candela;
 using namespace candela::render;
@@ -49,15 +50,9 @@ std::vector<MeshVertex> deformOnDevice(SkinningPass& pass, const GpuMesh& mesh,
                        MemoryLocation::HostVisible);
     context().submitAndWait([&](VkCommandBuffer cmd) {
         pass.recordDeform(cmd, mesh, pose, target.handle());
-        VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        barrier.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-        barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-        barrier.dstStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT;
-        barrier.dstAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT;
-        VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dependency.memoryBarrierCount = 1;
-        dependency.pMemoryBarriers = &barrier;
-        vkCmdPipelineBarrier2(cmd, &dependency);
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                      VK_ACCESS_2_TRANSFER_READ_BIT);
         const VkBufferCopy region{0, 0, target.size()};
         vkCmdCopyBuffer(cmd, target.handle(), readback.handle(), 1, &region);
     });
