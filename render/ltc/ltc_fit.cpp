@@ -266,14 +266,6 @@ Mat3 TableCell::inverseMatrix() const {
     return Mat3{{{inverse00, 0.0, inverse02}, {0.0, 1.0, 0.0}, {inverse20, 0.0, inverse22}}};
 }
 
-double fitError(const GgxLobe& lobe, double magnitude, const TransformedCosine& ltc,
-                int samplesPerSide) {
-    return integrateBoth(lobe, magnitude, ltc, samplesPerSide, [](double p, double q) {
-        const double d = std::abs(p - q);
-        return d * d * d;
-    });
-}
-
 double l1Distance(const GgxLobe& lobe, double magnitude, const TransformedCosine& ltc,
                   int samplesPerSide) {
     return integrateBoth(lobe, magnitude, ltc, samplesPerSide,
@@ -307,7 +299,7 @@ CellFit fitCell(double roughness, double cosView, const FitOptions& options, con
     const Mat3 frame = meanDirectionFrame(lobe, 2 * n);
     auto error = [&](const Shape& shape) {
         if (std::abs(shape[0]) < 1e-7 || std::abs(shape[1]) < 1e-7) return 1e300;
-        return fitError(lobe, fit.cell.magnitude,
+        return l1Distance(lobe, fit.cell.magnitude,
                         TransformedCosine::from(shapeMatrix(frame, shape)), n);
     };
     const Shape guess = start ? *start : Shape{lobe.alpha, lobe.alpha, 0.0, 0.0};
