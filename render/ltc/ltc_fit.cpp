@@ -300,7 +300,7 @@ CellFit fitCell(double roughness, double cosView, const FitOptions& options, con
     auto error = [&](const Shape& shape) {
         if (std::abs(shape[0]) < 1e-7 || std::abs(shape[1]) < 1e-7) return 1e300;
         return l1Distance(lobe, fit.cell.magnitude,
-                        TransformedCosine::from(shapeMatrix(frame, shape)), n);
+                          TransformedCosine::from(shapeMatrix(frame, shape)), n);
     };
     const Shape guess = start ? *start : Shape{lobe.alpha, lobe.alpha, 0.0, 0.0};
     // Steps of a tenth of the lobe's scale: the shapes of neighbouring cells differ by less.
