@@ -22,8 +22,8 @@
 #include "ibl/environment_sampling_table.h"
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
-#include "passes/bloom/bloom_pass.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
+#include "passes/bloom/bloom_pass.h"
 #include "passes/debug_text/debug_text_pass.h"
 #include "passes/exposure/exposure_bindings.h"
 #include "passes/exposure/exposure_pass.h"
@@ -31,9 +31,9 @@
 #include "passes/fxaa/fxaa_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
-#include "passes/taa/taa_pass.h"
 #include "passes/shadows/shadow_pass.h"
 #include "passes/skinning/skinning_pass.h"
+#include "passes/taa/taa_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "vk/image_transfer.h"
@@ -516,12 +516,12 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
     }
     if (features.clustered) {
-        h.clusters = clusters_->declare(g,
-                                        {&inputs, h.depth, h.camera, h.lights, &cameraBuffer_,
-                                         &lights_->buffer(), lights_->count(), lights_->capacity(),
-                                         blended ? transparentPass_.get() : nullptr, &resources,
-                                         deformed},
-                                        stats_);
+        h.clusters =
+            clusters_->declare(g,
+                               {&inputs, h.depth, h.camera, h.lights, &cameraBuffer_,
+                                &lights_->buffer(), lights_->count(), lights_->capacity(),
+                                blended ? transparentPass_.get() : nullptr, &resources, deformed},
+                               stats_);
     }
 
     // Ambient occlusion between the G-buffer and lighting: GTAO and its denoise, or the
@@ -603,33 +603,33 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         samplingTable_ && features.ibl == IblMode::Reference ? &samplingTable_->buffer() : nullptr);
     const float skyIntensity = inputs.scene.skyIntensity;
     {
-        auto p = g.addPass("lighting", PassKind::Device,
-                           [this, gbufferViews, ids, environment, skyIntensity, occlusion,
-                            specularOcclusion, aoIntensity, aoMultiBounce,
-                            shadowDescriptors](PassContext& ctx) {
-                               const GBufferTargets targets = gbufferViews(ctx);
-                               LightingPass::Inputs lighting{&targets,
-                                                             ctx.image(ids.hdr),
-                                                             &cameraBuffer_,
-                                                             &lights_->buffer(),
-                                                             &clusters_->ranges(),
-                                                             &clusters_->indices(),
-                                                             &pairCounts_,
-                                                             &clusters_->depthRange(),
-                                                             &clusters_->grid(),
-                                                             clusters_->directionalCount()};
-                               lighting.environment = &environment;
-                               lighting.skyIntensity = skyIntensity;
-                               lighting.referenceSamples = options_.referenceSamples;
-                               if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
-                               if (specularOcclusion) {
-                                   lighting.specularOcclusion = ctx.image(*specularOcclusion);
-                               }
-                               lighting.aoIntensity = aoIntensity;
-                               lighting.aoMultiBounce = aoMultiBounce;
-                               lighting.shadows = &shadowDescriptors;
-                               lightingPass_->record(ctx.cmd(), lighting);
-                           });
+        auto p = g.addPass(
+            "lighting", PassKind::Device,
+            [this, gbufferViews, ids, environment, skyIntensity, occlusion, specularOcclusion,
+             aoIntensity, aoMultiBounce, shadowDescriptors](PassContext& ctx) {
+                const GBufferTargets targets = gbufferViews(ctx);
+                LightingPass::Inputs lighting{&targets,
+                                              ctx.image(ids.hdr),
+                                              &cameraBuffer_,
+                                              &lights_->buffer(),
+                                              &clusters_->ranges(),
+                                              &clusters_->indices(),
+                                              &pairCounts_,
+                                              &clusters_->depthRange(),
+                                              &clusters_->grid(),
+                                              clusters_->directionalCount()};
+                lighting.environment = &environment;
+                lighting.skyIntensity = skyIntensity;
+                lighting.referenceSamples = options_.referenceSamples;
+                if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
+                if (specularOcclusion) {
+                    lighting.specularOcclusion = ctx.image(*specularOcclusion);
+                }
+                lighting.aoIntensity = aoIntensity;
+                lighting.aoMultiBounce = aoMultiBounce;
+                lighting.shadows = &shadowDescriptors;
+                lightingPass_->record(ctx.cmd(), lighting);
+            });
         for (ResourceHandle c : h.color)
             p.read(c, Use::Sampled);
         p.read(h.depth, Use::Sampled);
@@ -655,18 +655,17 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
     if (blended) {
-        auto p = g.addPass(
-            "forward_transparent", PassKind::Device,
-            [this, ids, environment, skyIntensity, shadowDescriptors,
-             &resources](PassContext& ctx) {
-                transparentPass_->recordShading(
-                    ctx.cmd(), resources,
-                    {ctx.image(ids.hdr), ctx.image(ids.motion), ctx.image(ids.depth),
-                     &cameraBuffer_, &lights_->buffer(), &clusters_->ranges(),
-                     &clusters_->indices(), &clusters_->depthRange(), &clusters_->grid(),
-                     clusters_->directionalCount(), &environment, skyIntensity,
-                     &shadowDescriptors});
-            });
+        auto p = g.addPass("forward_transparent", PassKind::Device,
+                           [this, ids, environment, skyIntensity, shadowDescriptors,
+                            &resources](PassContext& ctx) {
+                               transparentPass_->recordShading(
+                                   ctx.cmd(), resources,
+                                   {ctx.image(ids.hdr), ctx.image(ids.motion), ctx.image(ids.depth),
+                                    &cameraBuffer_, &lights_->buffer(), &clusters_->ranges(),
+                                    &clusters_->indices(), &clusters_->depthRange(),
+                                    &clusters_->grid(), clusters_->directionalCount(), &environment,
+                                    skyIntensity, &shadowDescriptors});
+                           });
         p.read(h.depth, Use::DepthRead);
         p.read(h.camera, Use::Uniform, kRasterStages);
         readDeformed(p);

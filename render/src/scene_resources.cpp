@@ -341,11 +341,11 @@ SceneResources::DeformedVertices SceneResources::deformedVertexBuffers(uint64_t 
         DeformedInstance instance;
         for (GpuBuffer& buffer : instance.buffers) {
             // Transfer source: tests and tools read the deformed vertices back.
-            buffer = GpuBuffer(context_, bytes,
-                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                               MemoryLocation::Device);
+            buffer =
+                GpuBuffer(context_, bytes,
+                          VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                              VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                          MemoryLocation::Device);
         }
         it = deformed_.insert_or_assign(instanceKey, std::move(instance)).first;
         continuesLastFrame = false;  // nothing was deformed into the new buffers yet

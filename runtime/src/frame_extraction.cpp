@@ -139,12 +139,9 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                     const render::SceneResources::DeformedVertices vertices =
                         resources.deformedVertexBuffers(e.bits() * 64 + p, first + p,
                                                         last != out.lastWorld.end());
-                    render::DeformJob job{first + p,
-                                          vertices.current,
-                                          pose.firstJoint,
-                                          pose.jointCount,
-                                          pose.firstMorphWeight,
-                                          pose.morphWeightCount};
+                    render::DeformJob job{
+                        first + p,       vertices.current,      pose.firstJoint,
+                        pose.jointCount, pose.firstMorphWeight, pose.morphWeightCount};
                     render::DrawItem& draw = out.draws.back();
                     draw.deformedVertices = vertices.current;
                     draw.previousDeformedVertices = vertices.previous;

@@ -72,8 +72,8 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["light_list_grew"] = last.lightListGrew;
     json["culling_efficiency"] = cullingEfficiency(last);
     // Shadows: GPU ms of the shadow depth pass (median over frames; 0 in frames whose maps
-    // were all cached), lights with maps, rendered, cached and kept (over the render budget) maps and atlas use
-    // (last frame).
+    // were all cached), lights with maps, rendered, cached and kept (over the render budget) maps
+    // and atlas use (last frame).
     json["shadow_ms"] = median(collect(stats.frames, [](auto& f) { return f.shadowMs; }));
     json["shadowed_lights"] = last.shadowedLights;
     json["shadow_maps_rendered"] = last.shadowMapsRendered;

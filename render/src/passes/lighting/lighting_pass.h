@@ -32,13 +32,13 @@ struct LightingFeatures {
     uint32_t lightTypes = 0;
     bool clustered = true;
     bool countLightPairs = false;
-    bool shadows = false;  // a light casts this frame (common/shadows.glsl)
+    bool shadows = false;        // a light casts this frame (common/shadows.glsl)
     std::optional<IblMode> ibl;  // none without an environment
     BrdfModel brdf = BrdfModel::EnergyConserving;
     bool anisotropy = false;  // a drawn opaque material has KHR_materials_anisotropy
     bool clearCoat = false;   // ... KHR_materials_clearcoat
     bool materialExtensions() const { return anisotropy || clearCoat; }
-    AoMode ao = AoMode::Off;  // only with ibl
+    AoMode ao = AoMode::Off;              // only with ibl
     bool aoSpecularFromHorizons = false;  // GTAO's horizon-slice specular occlusion
 
     static constexpr uint32_t bit(content::LightType type) {
