@@ -92,9 +92,7 @@ public:
             : owner_(owner),
               settings_(settings),
               resources_(owner.context_),
-              renderer_(owner.context_, owner.scene_.width, owner.scene_.height, options),
-              submitter_(owner.context_),
-              readback_(owner.context_, owner.scene_.width, owner.scene_.height) {
+              frames_(owner.context_, owner.scene_.width, owner.scene_.height, options) {
             resources_.setEnvironment(owner.scene_.environment);
         }
 
@@ -112,21 +110,14 @@ public:
             previousWorlds_ = {draws[0].world, was * boxWorld};
             inputs.scene.previousWorlds = previousWorlds_;
             previousOffset_ = boxOffset;
-            VkCommandBuffer cmd = renderer_.recordFrame(submitter_, inputs, &resources_);
-            readback_.recordCopy(cmd, renderer_);
-            submitter_.submit();
-            submitter_.waitIdle();
-            if (stats) *stats = renderer_.collectStats();
-            return readback_.read();
+            return frames_.render(inputs, resources_, stats);
         }
 
     private:
         BoxOnFloor& owner_;
         Settings settings_;
         SceneResources resources_;
-        Renderer renderer_;
-        FrameSubmitter submitter_;
-        FrameReadback readback_;
+        FrameSequence frames_;
         std::optional<glm::vec3> previousOffset_;
         std::vector<glm::mat4> previousWorlds_;
     };

@@ -205,36 +205,13 @@ inline TestScene thinPosts(uint32_t width, uint32_t height) {
     return scene;
 }
 
-// Drives one renderer frame by frame with a scene whose draws and camera change.
-class FrameSequence {
-public:
-    FrameSequence(GpuContext& context, uint32_t width, uint32_t height, AntiAliasing aa)
-        : context_(context),
-          renderer_(context, width, height, optionsFor(aa)),
-          submitter_(context),
-          readback_(context, width, height) {}
-
-    CapturedFrame render(const FrameInputs& inputs, SceneResources& resources,
-                         RendererStats* stats = nullptr) {
-        VkCommandBuffer cmd = renderer_.recordFrame(submitter_, inputs, &resources);
-        readback_.recordCopy(cmd, renderer_);
-        submitter_.submit();
-        submitter_.waitIdle();
-        if (stats) *stats = renderer_.collectStats();
-        return readback_.read();
-    }
-
-private:
-    static RendererOptions optionsFor(AntiAliasing aa) {
-        RendererOptions options;
-        options.aa = aa;
-        return options;
-    }
-    GpuContext& context_;
-    Renderer renderer_;
-    FrameSubmitter submitter_;
-    FrameReadback readback_;
-};
+// The renderer options of a frame sequence with antialiasing `aa` (FrameSequence drives one
+// renderer frame by frame with a scene whose draws and camera change).
+inline RendererOptions aaOptions(AntiAliasing aa) {
+    RendererOptions options;
+    options.aa = aa;
+    return options;
+}
 
 // Mean absolute change of the displayed image between two frames of a pan that moved every
 // static pixel `shift` pixels to the left, after moving the previous frame by the same amount

@@ -73,7 +73,7 @@ TEST_F(Antialiasing, TaaCutsFlickerUnderASlowPanOverThinGeometry) {
 
     auto flicker = [&](AntiAliasing aa) {
         SceneResources resources(context);
-        FrameSequence sequence(context, kWidth, kHeight, aa);
+        FrameSequence sequence(context, kWidth, kHeight, aaOptions(aa));
         std::vector<float> previous;
         double sum = 0.0;
         for (uint32_t f = 0; f < kWarmUp + kMeasured; ++f) {
@@ -135,9 +135,9 @@ TEST_F(Antialiasing, TaaLeavesUnderFivePercentOfAMovingBrightObjectBehind) {
     // Three renderers see the same frames: TAA given the object's motion, TAA with it left
     // out, and the plain frame that says where the object is and how bright.
     SceneResources resources(context);
-    FrameSequence taaRight(context, kWidth, kHeight, AntiAliasing::Taa);
-    FrameSequence taaWrong(context, kWidth, kHeight, AntiAliasing::Taa);
-    FrameSequence off(context, kWidth, kHeight, AntiAliasing::Off);
+    FrameSequence taaRight(context, kWidth, kHeight, aaOptions(AntiAliasing::Taa));
+    FrameSequence taaWrong(context, kWidth, kHeight, aaOptions(AntiAliasing::Taa));
+    FrameSequence off(context, kWidth, kHeight, aaOptions(AntiAliasing::Off));
     std::vector<glm::mat4> previousWorld(1);
     Result right, wrong;
     for (uint32_t f = 0; f < kFrames; ++f) {

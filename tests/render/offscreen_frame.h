@@ -35,4 +35,30 @@ inline CapturedFrame renderOffscreen(GpuContext& context, const FrameInputs& inp
     return readback.read();
 }
 
+// One renderer kept from frame to frame (its history and caches carry over), each frame
+// rendered into `resources`' scene and read back.
+class FrameSequence {
+public:
+    FrameSequence(GpuContext& context, uint32_t width, uint32_t height,
+                  const RendererOptions& options = {})
+        : renderer_(context, width, height, options),
+          submitter_(context),
+          readback_(context, width, height) {}
+
+    CapturedFrame render(const FrameInputs& inputs, SceneResources& resources,
+                         RendererStats* stats = nullptr) {
+        VkCommandBuffer cmd = renderer_.recordFrame(submitter_, inputs, &resources);
+        readback_.recordCopy(cmd, renderer_);
+        submitter_.submit();
+        submitter_.waitIdle();
+        if (stats) *stats = renderer_.collectStats();
+        return readback_.read();
+    }
+
+private:
+    Renderer renderer_;
+    FrameSubmitter submitter_;
+    FrameReadback readback_;
+};
+
 }  // namespace candela::render::test
