@@ -197,6 +197,32 @@ LightInstance spot(const glm::vec3& position, const glm::vec3& direction) {
     return l;
 }
 
+// The stability tests' count: pixels not fully lit in both frames (green under 99 % of the
+// first frame's brightest), and how many of them changed by more than 1e-3 of it. The point
+// pixel x shows after the camera moved was at pixel x + shift before.
+struct ShadowedPixelChanges {
+    int shadowed = 0;
+    int changed = 0;
+};
+
+ShadowedPixelChanges countShadowedPixelChanges(const CapturedFrame& before,
+                                               const CapturedFrame& after, uint32_t shift) {
+    float brightest = 0.0f;
+    for (size_t i = 1; i < before.hdrRgb.size(); i += 3)
+        brightest = std::max(brightest, before.hdrRgb[i]);
+    ShadowedPixelChanges count;
+    for (uint32_t y = 0; y < kSize; ++y) {
+        for (uint32_t x = 0; x + shift < kSize; ++x) {
+            const float a = hdrPixel(before, x + shift, y)[1];
+            const float b = hdrPixel(after, x, y)[1];
+            if (std::min(a, b) > 0.99f * brightest) continue;  // fully lit in both
+            ++count.shadowed;
+            count.changed += std::abs(a - b) > 1e-3f * brightest ? 1 : 0;
+        }
+    }
+    return count;
+}
+
 }  // namespace
 
 TEST(ShadowMask, SunMatchesARayCast) {
@@ -304,20 +330,8 @@ TEST(ShadowStability, MovingTheCameraByATenthOfATexelChangesNoShadowedPixel) {
     const CapturedFrame before = scene.render(context, options);
     scene.lookAt({footprint, height, 0.0f}, {footprint, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, fov);
     const CapturedFrame after = scene.render(context, options);
-    float brightest = 0.0f;
-    for (size_t i = 1; i < before.hdrRgb.size(); i += 3)
-        brightest = std::max(brightest, before.hdrRgb[i]);
-    int shadowed = 0, changed = 0;
-    for (uint32_t y = 0; y < kSize; ++y) {
-        for (uint32_t x = 0; x + 1 < kSize; ++x) {
-            // Moved along +x: the point at pixel x now was at pixel x + 1 before.
-            const float a = hdrPixel(before, x + 1, y)[1];
-            const float b = hdrPixel(after, x, y)[1];
-            if (std::min(a, b) > 0.99f * brightest) continue;  // fully lit in both
-            ++shadowed;
-            changed += std::abs(a - b) > 1e-3f * brightest ? 1 : 0;
-        }
-    }
+    // Moved along +x: the point at pixel x now was at pixel x + 1 before.
+    const auto [shadowed, changed] = countShadowedPixelChanges(before, after, 1);
     EXPECT_GT(shadowed, 2000);
     EXPECT_EQ(changed, 0) << "of " << shadowed << " shadowed pixels";
 }
@@ -366,19 +380,7 @@ TEST(ShadowStability, TurningTheCameraByATenthOfADegreeChangesNoShadowedPixel) {
         std::abs(glm::dot(glm::vec3(turnedCascade.sphere) - glm::vec3(straight.sphere), basis[1]));
     ASSERT_GT(across, 0.02f * straight.texelWorld);
     const CapturedFrame after = scene.render(context, options);
-    float brightest = 0.0f;
-    for (size_t i = 1; i < before.hdrRgb.size(); i += 3)
-        brightest = std::max(brightest, before.hdrRgb[i]);
-    int shadowed = 0, changed = 0;
-    for (uint32_t y = 0; y < kSize; ++y) {
-        for (uint32_t x = 0; x < kSize; ++x) {
-            const float a = hdrPixel(before, x, y)[1];
-            const float b = hdrPixel(after, x, y)[1];
-            if (std::min(a, b) > 0.99f * brightest) continue;  // fully lit in both
-            ++shadowed;
-            changed += std::abs(a - b) > 1e-3f * brightest ? 1 : 0;
-        }
-    }
+    const auto [shadowed, changed] = countShadowedPixelChanges(before, after, 0);
     EXPECT_GT(shadowed, 2000);
     EXPECT_EQ(changed, 0) << "of " << shadowed << " shadowed pixels; the turn moved the cascade "
                           << across / straight.texelWorld << " texels across its grid";
