@@ -66,6 +66,14 @@ ShareError shareError(const BoxOnFloor& scene, const CapturedFrame& a, const Cap
     return e;
 }
 
+// The diffuse rows' metric: the floor pixels compared, on a size x size frame.
+void diffuseMetric(char* text, size_t bytes, uint32_t pixels, uint32_t size) {
+    std::snprintf(text, bytes,
+                  "mean |visibility - reference| over floor pixels the reference sees under 0.9 "
+                  "(%u px; black box on a white floor, uniform sky, %ux%u)",
+                  pixels, size, size);
+}
+
 }  // namespace
 
 void addAmbientOcclusionRows(ReportContext& context) {
@@ -93,10 +101,7 @@ void addAmbientOcclusionRows(ReportContext& context) {
             char name[96], metric[240], where[96];
             std::snprintf(name, sizeof(name), "GTAO, radius %.1f m, %u slices x %u steps", radius,
                           slices, settings.steps);
-            std::snprintf(metric, sizeof(metric),
-                          "mean |visibility - reference| over floor pixels the reference sees "
-                          "under 0.9 (%u px; black box on a white floor, uniform sky, %ux%u)",
-                          e.pixels, size, size);
+            diffuseMetric(metric, sizeof(metric), e.pixels, size);
             std::snprintf(where, sizeof(where), "max %.3f", e.max);
             context.report.rows.push_back(
                 {name,
@@ -126,10 +131,7 @@ void addAmbientOcclusionRows(ReportContext& context) {
             char name[96], metric[240], where[96];
             std::snprintf(name, sizeof(name), "GTAO, radius %.1f m, %u slices, %s", settings.radius,
                           settings.slices, label);
-            std::snprintf(metric, sizeof(metric),
-                          "mean |visibility - reference| over floor pixels the reference sees "
-                          "under 0.9 (%u px; black box on a white floor, uniform sky, %ux%u)",
-                          e.pixels, size, size);
+            diffuseMetric(metric, sizeof(metric), e.pixels, size);
             std::snprintf(where, sizeof(where), "max %.3f", e.max);
             context.report.rows.push_back(
                 {name, "--ao reference (same radius)", metric, e.meanAbs, "abs", where,
