@@ -89,16 +89,23 @@ double integrateBoth(const GgxLobe& lobe, double magnitude, const TransformedCos
     return sum / (double(n) * n);
 }
 
-// The mean direction of the lobe (in the xz-plane): the frame the fitted shape lives in.
-Mat3 meanDirectionFrame(const GgxLobe& lobe, int n) {
-    Vec3 mean{};
+// Visits the lobe's n x n stratified visible-normal samples with their weights value / pdf.
+template <class Visit>
+void forEachLobeSample(const GgxLobe& lobe, int n, Visit visit) {
     for (int i = 0; i < n; ++i) {
         for (int j = 0; j < n; ++j) {
             double pdf = 0.0;
             const Vec3 l = lobe.sample(cellCentre(i, n), cellCentre(j, n), &pdf);
-            if (pdf > 0.0) mean = add(mean, scale(l, lobe.value(l) / pdf));
+            if (pdf > 0.0) visit(l, lobe.value(l) / pdf);
         }
     }
+}
+
+// The mean direction of the lobe (in the xz-plane): the frame the fitted shape lives in.
+Mat3 meanDirectionFrame(const GgxLobe& lobe, int n) {
+    Vec3 mean{};
+    forEachLobeSample(lobe, n,
+                      [&](const Vec3& l, double weight) { mean = add(mean, scale(l, weight)); });
     mean.y = 0.0;  // symmetric about the xz-plane
     const Vec3 z = length(mean) > 0.0 ? normalize(mean) : Vec3{0, 0, 1};
     const Vec3 y{0, 1, 0};
@@ -275,17 +282,11 @@ double l1Distance(const GgxLobe& lobe, double magnitude, const TransformedCosine
 void integrateMagnitude(const GgxLobe& lobe, int n, double* magnitude, double* fresnel) {
     double sumN = 0.0, sumF = 0.0;
     const Vec3 v = lobe.view();
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) {
-            double pdf = 0.0;
-            const Vec3 l = lobe.sample(cellCentre(i, n), cellCentre(j, n), &pdf);
-            if (pdf <= 0.0) continue;
-            const double weight = lobe.value(l) / pdf;
-            const double VoH = std::clamp(dot(v, normalize(add(v, l))), 0.0, 1.0);
-            sumN += weight;
-            sumF += weight * std::pow(1.0 - VoH, 5.0);
-        }
-    }
+    forEachLobeSample(lobe, n, [&](const Vec3& l, double weight) {
+        const double VoH = std::clamp(dot(v, normalize(add(v, l))), 0.0, 1.0);
+        sumN += weight;
+        sumF += weight * std::pow(1.0 - VoH, 5.0);
+    });
     *magnitude = sumN / (double(n) * n);
     *fresnel = sumF / (double(n) * n);
 }
