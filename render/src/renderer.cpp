@@ -77,6 +77,10 @@ const char* aoModeName(AoMode mode) {
     return "unknown";
 }
 
+const char* areaLightModeName(AreaLightMode mode) {
+    return mode == AreaLightMode::Representative ? "representative" : "ltc";
+}
+
 const char* brdfModelName(BrdfModel model) {
     return model == BrdfModel::Ue4 ? "ue4" : "energy-conserving";
 }
@@ -95,6 +99,7 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     f.clustered = options.lightCulling == LightCulling::Clustered;
     f.countLightPairs = options.countLightPairs;
     f.brdf = options.brdf;
+    f.areaLights = options.areaLights;
     if (resources.environment()) f.ibl = options.ibl;
     // Occlusion of the sky's light: nothing to occlude without a sky.
     if (f.ibl) f.ao = options.ao;

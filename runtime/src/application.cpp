@@ -470,6 +470,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         rendererOptions.countLightPairs = options.countLightPairs;
         rendererOptions.ibl = options.ibl;
         rendererOptions.brdf = brdfFor(options, world.get());
+        rendererOptions.areaLights = options.areaLights;
         rendererOptions.aa = antiAliasingFor(options, world.get());
         rendererOptions.bloomStrength = options.bloom ? *options.bloom
                                         : world && world->sceneBloom()

@@ -79,6 +79,9 @@ constexpr std::pair<const char*, render::ExposureMode> kExposures[] = {
 constexpr std::pair<const char*, render::BrdfModel> kBrdfs[] = {
     {"ue4", render::BrdfModel::Ue4}, {"energy-conserving", render::BrdfModel::EnergyConserving}};
 
+constexpr std::pair<const char*, render::AreaLightMode> kAreaLightModes[] = {
+    {"representative", render::AreaLightMode::Representative}, {"ltc", render::AreaLightMode::Ltc}};
+
 constexpr std::pair<const char*, render::AoMode> kAoModes[] = {
     {"off", render::AoMode::Off},
     {"gtao", render::AoMode::Gtao},
@@ -101,6 +104,8 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --env SKY.exr             light the scene with this sky\n"
            "  --ibl split-sum|mobile|reference\n"
            "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n"
+           "  --area-lights representative|ltc   sphere and tube lights' integration "
+           "(default: ltc)\n"
            "  --aa off|fxaa|taa         antialiasing (default: the scene file's, else taa)\n"
            "  --bloom FRACTION          radiance scattered into glare, 0 (off) to 1\n"
            "                            (default: the scene file's, else 0.04)\n"
@@ -191,6 +196,10 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--brdf needs ue4 or energy-conserving, got '" + v + "'");
             }
             options.brdf = brdf;
+        } else if (arg == "--area-lights") {
+            if (!value() || !parseChoice(v, kAreaLightModes, options.areaLights)) {
+                return fail("--area-lights needs representative or ltc, got '" + v + "'");
+            }
         } else if (arg == "--aa") {
             render::AntiAliasing aa{};
             if (!value() || !parseChoice(v, kAntiAliasing, aa)) {

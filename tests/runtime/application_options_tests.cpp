@@ -111,6 +111,25 @@ TEST(ApplicationOptions, AntiAliasingAndBloomFlags) {
     EXPECT_NE(parseError({"--bloom", "-0.1"}).find("got '-0.1'"), std::string::npos);
 }
 
+// Issue 15: --area-lights picks how sphere and tube lights integrate; LTC unless told.
+TEST(ApplicationOptions, AreaLightsFlag) {
+    CommandLine result = parseCommandLine({"--area-lights", "representative"});
+    ASSERT_TRUE(result) << result.error;
+    EXPECT_EQ(result.options->areaLights, candela::render::AreaLightMode::Representative);
+    CommandLine ltc = parseCommandLine({"--area-lights", "ltc"});
+    ASSERT_TRUE(ltc) << ltc.error;
+    EXPECT_EQ(ltc.options->areaLights, candela::render::AreaLightMode::Ltc);
+    CommandLine none = parseCommandLine({});
+    ASSERT_TRUE(none);
+    EXPECT_EQ(none.options->areaLights, candela::render::RendererOptions{}.areaLights);
+    EXPECT_NE(parseError({"--area-lights", "exact"})
+                  .find("--area-lights needs representative or ltc, got 'exact'"),
+              std::string::npos);
+    EXPECT_NE(parseError({"--area-lights"}).find("--area-lights needs"), std::string::npos);
+    EXPECT_NE(ApplicationOptions::standardFlagsUsage().find("--area-lights representative|ltc"),
+              std::string::npos);
+}
+
 TEST(ApplicationOptions, HelpAsksForTheUsageAndSucceeds) {
     CommandLine result = parseCommandLine({"--frames", "3", "--help"});
     EXPECT_FALSE(result);

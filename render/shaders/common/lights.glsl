@@ -6,6 +6,7 @@
 
 #include "common/light_types.h"
 #include "common/math.glsl"
+#include "common/sphere_irradiance.glsl"
 #include "common/specialization_ids.h"
 
 // Light type codes (common/light_types.h, written by render/src/gpu_light.cpp).
@@ -77,30 +78,6 @@ float inverseSquare(float distanceSq) {
 float spotAttenuation(Light light, vec3 L) {
     float a = saturate(dot(-L, light.direction) * light.spotScale + light.spotOffset);
     return a * a;
-}
-
-// Exact irradiance factor of a uniformly emitting sphere seen at angle theta from the normal
-// (cosTheta) with angular radius sigma (sinSigmaSq), including the part below the horizon
-// (Snyder 1996). Multiply by the sphere's luminance. Reduces to pi sin^2(sigma) cos(theta)
-// when the sphere is fully above the horizon.
-float sphereIrradianceFactor(float cosTheta, float sinSigmaSq) {
-    sinSigmaSq = min(sinSigmaSq, 1.0);
-    if (sinSigmaSq >= 1.0) {
-        // On (or in) the sphere it fills the half space toward its centre: pi (1 + cos) / 2,
-        // the limit of the formula below as sin(sigma) -> 1. pi * saturate(cosTheta) here
-        // jumped by up to pi / 2 at the sphere's surface (found by tests/render/stability).
-        return PI * 0.5 * (1.0 + cosTheta);
-    }
-    if (cosTheta * cosTheta > sinSigmaSq) {
-        return PI * sinSigmaSq * saturate(cosTheta);
-    }
-    float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
-    float x = sqrt(max(1.0 / sinSigmaSq - 1.0, 0.0));
-    float y = clamp(-x * cosTheta / max(sinTheta, 1e-12), -1.0, 1.0);
-    float sinThetaSqrtY = sinTheta * sqrt(max(1.0 - y * y, 0.0));
-    float e = (cosTheta * acos(y) - x * sinThetaSqrtY) * sinSigmaSq +
-              atan(sinThetaSqrtY, max(x, 1e-12));
-    return max(e, 0.0);
 }
 
 // eq. 11: point on the sphere closest to the reflection ray (L: to the centre).

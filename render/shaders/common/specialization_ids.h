@@ -16,6 +16,9 @@
 #define SPEC_SPHERE_LIGHTS_ENABLED 20
 #define SPEC_TUBE_LIGHTS_ENABLED 21
 #define SPEC_SPOT_LIGHTS_ENABLED 22
+// How sphere and tube lights integrate (lights.glsl, --area-lights): seed 000's representative
+// point (false) or linearly transformed cosines (true).
+#define SPEC_AREA_LIGHTS_LTC 23
 // Lighting and forward passes: clustered lists or brute force, pair counters, IBL mode
 // (0 none, 1 split sum, 2 mobile, 3 reference).
 #define SPEC_CLUSTERED 30

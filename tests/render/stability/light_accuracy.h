@@ -23,6 +23,7 @@ enum class LightFunction : uint32_t {
     LocalLight = 8,
     Product = 9,
     LtcQuad = 10,
+    LtcDisk = 11,
 };
 
 using Float4 = std::array<float, 4>;

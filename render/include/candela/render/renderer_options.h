@@ -46,6 +46,15 @@ enum class AntiAliasing {
 };
 const char* antiAliasingName(AntiAliasing aa);  // "off", "fxaa", "taa"
 
+// How sphere and tube lights (and the area shapes of issue 15) are integrated (`--area-lights`;
+// render/README.md "Area lights by linearly transformed cosines").
+//   Representative: seed 000's representative point (sphere, tube) and seed 004's most
+//                   important point: one direction per light, cheap, wrong for glossy surfaces
+//                   near large lights (docs/speed-vs-error.md).
+//   Ltc:            linearly transformed cosines (Heitz et al. 2016, Heitz and Hill 2017).
+enum class AreaLightMode : uint8_t { Representative, Ltc };
+const char* areaLightModeName(AreaLightMode mode);  // "representative", "ltc"
+
 // Where a frame's exposure comes from (`--exposure`, the scene file's "exposure").
 enum class ExposureMode {
     Manual,  // the camera's EV100 (aperture, shutter, ISO): the default, and the goldens'
@@ -108,6 +117,7 @@ struct RendererOptions {
     bool countLightPairs = false;
     IblMode ibl = IblMode::SplitSum;
     BrdfModel brdf = BrdfModel::EnergyConserving;
+    AreaLightMode areaLights = AreaLightMode::Ltc;
     uint32_t referenceSamples = 2048;  // per pixel, for each of specular and diffuse
     // Off here so a renderer made by a test renders one plain sample per pixel; the
     // application's default is ApplicationOptions' (TAA).

@@ -45,6 +45,9 @@ std::vector<std::string> LightingFeatures::names() const {
     if (legacyDiffuseSpecular) out.push_back("shading_legacy_diffuse_specular");
     if (sphereLights) out.push_back("lights_sphere");
     if (tubeLights) out.push_back("lights_tube");
+    if ((sphereLights || tubeLights) && areaLights == AreaLightMode::Ltc) {
+        out.push_back("area_lights_ltc");
+    }
     for (const GpuLightTypeInfo& t : kGpuLightTypeTable) {
         if (t.feature && (lightTypes & bit(t.type))) out.push_back(t.feature);
     }
@@ -73,6 +76,7 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
     constants.set(SPEC_CLUSTERED, features.clustered);
     constants.set(SPEC_SHADOWS_ENABLED, features.shadows);
     constants.set(SPEC_ENERGY_CONSERVING, features.brdf == BrdfModel::EnergyConserving);
+    constants.set(SPEC_AREA_LIGHTS_LTC, features.areaLights == AreaLightMode::Ltc);
 }
 
 void setMaterialExtensionConstants(SpecializationConstants& constants,

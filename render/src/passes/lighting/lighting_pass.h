@@ -35,6 +35,7 @@ struct LightingFeatures {
     bool shadows = false;        // a light casts this frame (common/shadows.glsl)
     std::optional<IblMode> ibl;  // none without an environment
     BrdfModel brdf = BrdfModel::EnergyConserving;
+    AreaLightMode areaLights = AreaLightMode::Ltc;  // how sphere and tube lights integrate
     bool anisotropy = false;  // a drawn opaque material has KHR_materials_anisotropy
     bool clearCoat = false;   // ... KHR_materials_clearcoat
     bool materialExtensions() const { return anisotropy || clearCoat; }

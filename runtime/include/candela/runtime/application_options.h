@@ -51,6 +51,8 @@ struct ApplicationOptions {
     render::IblMode ibl = render::IblMode::SplitSum;
     // --brdf; unset: the world's scene-file "brdf", else energy-conserving.
     std::optional<render::BrdfModel> brdf;
+    // --area-lights: how sphere and tube lights integrate (render::AreaLightMode).
+    render::AreaLightMode areaLights = render::RendererOptions{}.areaLights;
     // --aa; unset: the world's scene-file "aa", else TAA (render/README.md "Antialiasing").
     std::optional<render::AntiAliasing> aa;
     // --bloom; unset: the world's scene-file "bloom", else kDefaultBloom.
@@ -69,7 +71,7 @@ struct ApplicationOptions {
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
     // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
-    // --brdf, --ao.
+    // --brdf, --ao, --area-lights.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

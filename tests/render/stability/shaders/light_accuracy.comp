@@ -6,6 +6,7 @@
 
 #include "common/lights.glsl"
 #include "common/ltc.glsl"
+#include "common/ltc_disk.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -26,6 +27,8 @@ const uint kProduct = 9u;  // a.x * a.y: tells whether the device keeps denormal
 // ltcPolygonIntegral of the quad (a.xyz, b.xyz, c.xyz, d.xyz) with M^-1 = rows
 // (a.w, 0, b.w), (0, 1, 0), (c.w, 0, d.w), as the table stores it.
 const uint kLtcQuad = 10u;
+// ltcDiskIntegral with center a.xyz, axisU b.xyz, axisV c.xyz and M^-1 as for kLtcQuad.
+const uint kLtcDisk = 11u;
 
 struct LightSample {
     vec4 a;
@@ -79,6 +82,10 @@ vec4 evaluate(LightSample s) {
             mat3 minv = mat3(vec3(s.a.w, 0.0, s.c.w), vec3(0.0, 1.0, 0.0), vec3(s.b.w, 0.0, s.d.w));
             vec3 quad[4] = vec3[4](s.a.xyz, s.b.xyz, s.c.xyz, s.d.xyz);
             return vec4(ltcPolygonIntegral(minv, quad, 4));
+        }
+        case kLtcDisk: {
+            mat3 minv = mat3(vec3(s.a.w, 0.0, s.c.w), vec3(0.0, 1.0, 0.0), vec3(s.b.w, 0.0, s.d.w));
+            return vec4(ltcDiskIntegral(minv, s.a.xyz, s.b.xyz, s.c.xyz));
         }
         default: return vec4(0.0);
     }
