@@ -14,17 +14,19 @@
 //
 // How: M^-1 moves the ellipse to another ellipse. The cone from the shading point through it is
 // a quadric w^T Q w <= 0 whose eigenvectors give the cone's axis and its two half-angles, and
-// an elliptic cone's form factor about its own axis has a closed form. The horizon then cuts it
-// as it cuts a sphere (a spherical cap) of the same vector form factor: Snyder's clipped-sphere
-// formula (sphere_irradiance.glsl). A moved ellipse wholly below the horizon gives exactly 0,
-// whatever that approximation would say.
+// an elliptic cone's form factor about its own axis has a closed form: its vector form factor,
+// whose z is the exact integral when the moved ellipse is wholly above the horizon. Across the
+// horizon, the horizon cuts it as it cuts a sphere (a spherical cap) of the same vector form
+// factor: Snyder's clipped-sphere formula (sphere_irradiance.glsl), exact for a cap. An ellipse wholly below the horizon, before or after the
+// move, gives exactly 0, whatever that approximation would say.
 #ifndef CANDELA_LTC_DISK_GLSL
 #define CANDELA_LTC_DISK_GLSL
 
 #include "common/math.glsl"
 #include "common/sphere_irradiance.glsl"
 
-// The eigenvalues of the symmetric Q, largest first (Smith's trigonometric solution: all real).
+// The eigenvalues of the symmetric Q, largest first (Smith's trigonometric solution: all real;
+// accurate to about eps times Q's largest eigenvalue).
 vec3 ltcSymmetricEigenvalues(mat3 q) {
     float mean = (q[0][0] + q[1][1] + q[2][2]) / 3.0;
     mat3 k = q - mat3(mean);
@@ -76,13 +78,31 @@ vec4 ltcEllipseVectorFormFactor(vec3 center, vec3 u, vec3 v) {
     mat3 q = mat3(pa, 0.0, -pa * x0,  //
                   0.0, qb, -qb * y0,  //
                   -pa * x0, -qb * y0, pa * x0 * x0 + qb * y0 * y0 - aa);
+    // Q's characteristic polynomial chi(l) = l^3 - trace l^2 + minors l - det has exact
+    // coefficients: det = -qb a^2, and Q + a^2 e3 e3^T is positive semi-definite, so the one
+    // negative eigenvalue lies in [-a^2, 0). The trigonometric solver alone loses it in fp32
+    // when the other two are far apart (a grazing or a tiny ellipse: 20 % off, found by
+    // LtcDisk.*); Newton on chi refines it. Below chi's inflection (trace / 3, above the
+    // smallest root) chi is concave and rising, so the steps settle on it from the left.
+    float trace = pa + qb + q[2][2];
+    float minors = qb * (1.0 + x0 * x0 + y0 * y0 - aa) - aa;
+    float det = -pa * qb * aa;
+    // Start from the solver's eigenvalue of the largest magnitude: the negative one itself
+    // when it dominates (the point close to the disk), else det over the two positive ones
+    // (a small or distant ellipse). From either side of the root Newton then lands left of it.
     vec3 e = ltcSymmetricEigenvalues(q);
-    // det Q = -pa qb a^2 exactly (Q = B^-T diag(1, 1, -1) B^-1 scaled): the negative eigenvalue
-    // from it keeps full precision when it is tiny next to the other two (a small ellipse).
-    float negative = -pa * qb * aa / max(e.x * e.y, 1e-30);
-    // Half-angle tangents^2 of the cone about its axis: -negative / e.x and -negative / e.y;
-    // an elliptic cone's form factor is tan_a tan_b / sqrt((1 + tan_a^2) (1 + tan_b^2)).
-    float formFactor = -negative * inversesqrt(max((e.x - negative) * (e.y - negative), 1e-30));
+    float negative = -e.z > e.x ? e.z : det / max(e.x * e.y, 1e-30);
+    negative = clamp(negative, -aa, 0.0);
+    for (int i = 0; i < 4; ++i) {
+        float chi = ((negative - trace) * negative + minors) * negative - det;
+        float slope = (3.0 * negative - 2.0 * trace) * negative + minors;
+        negative = clamp(negative - chi / max(slope, 1e-30), -aa, 0.0);
+    }
+    // (e1 - negative) (e2 - negative) = chi'(negative), and the half-angle tangents^2 of the cone
+    // about its axis are -negative / e1 and -negative / e2: an elliptic cone's form factor,
+    // tan_a tan_b / sqrt((1 + tan_a^2) (1 + tan_b^2)), is -negative / sqrt(chi'(negative)).
+    float slope = (3.0 * negative - 2.0 * trace) * negative + minors;
+    float formFactor = -negative * inversesqrt(max(slope, 1e-30));
     // Axis: the eigenvector of the negative eigenvalue (rows 1 and 2 of (Q - e) w = 0).
     vec3 axis = vec3(pa * x0 / (pa - negative), qb * y0 / (qb - negative), 1.0);
     axis = safeNormalize(axis.x * e1 + axis.y * e2 + axis.z * n);
@@ -93,16 +113,34 @@ float ltcDiskIntegral(mat3 minv, vec3 center, vec3 axisU, vec3 axisV) {
     // One-sided: the point must be on the emitting side (before the transform, whose
     // determinant is positive, so the side is the same after it).
     if (dot(center, cross(axisU, axisV)) >= 0.0) return 0.0;
+    // Wholly below the surface's horizon: nothing, whatever part of the moved cosine lies
+    // there (M^-1 can lift directions under the horizon above the moved one).
+    if (center.z + sqrt(axisU.z * axisU.z + axisV.z * axisV.z) <= 0.0) return 0.0;
     vec3 c = minv * center;
     vec3 u = minv * axisU;
     vec3 v = minv * axisV;
-    // Highest point of the moved ellipse: nothing above the horizon, nothing received.
-    if (c.z + sqrt(u.z * u.z + v.z * v.z) <= 0.0) return 0.0;
+    float reach = sqrt(u.z * u.z + v.z * v.z);  // how far the moved ellipse rises above c.z
+    if (c.z + reach <= 0.0) return 0.0;
     vec4 vectorFormFactor = ltcEllipseVectorFormFactor(c, u, v);
-    float sinSigmaSq = min(vectorFormFactor.w, 1.0);
-    if (sinSigmaSq <= 0.0) return 0.0;
-    // The cap of the same vector form factor, clipped by the horizon.
-    return sphereIrradianceFactor(vectorFormFactor.z, sinSigmaSq) / PI;
+    float formFactor = min(vectorFormFactor.w, 1.0);
+    if (formFactor <= 0.0) return 0.0;
+    float z = vectorFormFactor.z;
+    // Wholly above the moved horizon: the vector form factor's z is the exact integral.
+    if (c.z - reach >= 0.0) return formFactor * z;
+    // Across it: the cap of the same vector form factor (angular radius sigma), placed so that
+    // the same fraction of its height as of the ellipse's (by elevation of its highest and
+    // lowest points) is above the horizon, cut there by Snyder's formula; plus that fraction of
+    // the unclipped difference, so the result meets the exact one when the ellipse rises
+    // wholly above the horizon and 0 when it sinks below. A cap (the sphere light's disk) is
+    // placed where it is: exact.
+    vec3 rise = (u * u.z + v * v.z) / reach;
+    float highest = asin(clamp((c.z + reach) / length(c + rise), -1.0, 1.0));
+    float lowest = asin(clamp((c.z - reach) / length(c - rise), -1.0, 1.0));
+    float above = saturate(highest / max(highest - lowest, 1e-12));
+    float sigma = asin(sqrt(formFactor));
+    float placed = sin(sigma * (2.0 * above - 1.0));
+    float clipped = sphereIrradianceFactor(placed, formFactor) / PI + above * formFactor * (z - placed);
+    return max(clipped, 0.0);
 }
 
 #endif
