@@ -4,6 +4,7 @@
 // the lighting pass's D (eq. 3) and Vis (eq. 4), intensity 1 cd.
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "../stability/brdf_reference.h"
 #include "../stability/light_reference.h"
@@ -19,20 +20,24 @@ inline Vec3 normalized(const Vec3& v) {
     return (1.0 / stability::reference::length(v)) * v;
 }
 
-// D Vis NoL toward unit direction L.
-inline double specularTimesNoL(const Vec3& V, const Vec3& L, double alpha) {
+// D Vis NoL toward unit direction L; Vis is seed 000's Schlick-Smith, or with `correlated` the
+// energy-conserving BRDF's height-correlated Smith (the lobe the LTC table is fitted to).
+inline double specularTimesNoL(const Vec3& V, const Vec3& L, double alpha,
+                               bool correlated = false) {
     namespace ref = stability::reference;
     const double NoL = L[2], NoV = V[2];
     if (NoL <= 0.0 || NoV <= 0.0) return 0.0;
     const Vec3 H = normalized(V + L);
-    return ref::ggxDistribution(alpha, H[2]) * ref::smithSchlickVisibility(alpha, NoV, NoL) * NoL;
+    const double visibility = correlated ? ref::smithGgxCorrelatedVisibility(alpha, NoV, NoL)
+                                         : ref::smithSchlickVisibility(alpha, NoV, NoL);
+    return ref::ggxDistribution(alpha, H[2]) * visibility * NoL;
 }
 
 // Sphere of radius r around `centre`, luminance I / (pi r^2): midpoint quadrature over the
 // cone it subtends, direction = cos(psi) c + sin(psi) (cos(phi) u + sin(phi) w),
 // d(solid angle) = sin(psi) dpsi dphi, n x n points.
 inline double sphereSpecularReference(const Vec3& centre, double radius, const Vec3& V,
-                                      double alpha, int n) {
+                                      double alpha, int n, bool correlated = false) {
     constexpr double kPi = std::numbers::pi;
     const double distance = stability::reference::length(centre);
     const Vec3 c = (1.0 / distance) * centre;
@@ -52,7 +57,7 @@ inline double sphereSpecularReference(const Vec3& centre, double radius, const V
         for (int j = 0; j < n; ++j) {
             const double phi = (j + 0.5) * dphi;
             const Vec3 L = cosPsi * c + (sinPsi * std::cos(phi)) * u + (sinPsi * std::sin(phi)) * w;
-            ring += specularTimesNoL(V, L, alpha);
+            ring += specularTimesNoL(V, L, alpha, correlated);
         }
         sum += ring * sinPsi;
     }
@@ -63,15 +68,49 @@ inline double sphereSpecularReference(const Vec3& centre, double radius, const V
 // (as lineIrradiance assumes): the mean over n midpoints of a point light's specular,
 // with the engine's 1 / (d^2 + 1e-4) falloff.
 inline double tubeSpecularReference(const Vec3& centre, const Vec3& axis, double length,
-                                    const Vec3& V, double alpha, int n) {
+                                    const Vec3& V, double alpha, int n, bool correlated = false) {
     double sum = 0.0;
     for (int i = 0; i < n; ++i) {
         const Vec3 P = centre + ((((i + 0.5) / n) - 0.5) * length) * axis;
         const double distanceSq = stability::reference::dot(P, P);
-        sum += specularTimesNoL(V, normalized(P), alpha) *
+        sum += specularTimesNoL(V, normalized(P), alpha, correlated) *
                stability::reference::inverseSquare(std::sqrt(distanceSq));
     }
     return sum / n;
+}
+
+// The report's area-light geometry (area_light_rows.cpp, ltc_area_light_rows.cpp): the light's
+// centre 1 m away, 30 degrees from the normal; a tube's axis out of the plane of incidence.
+inline constexpr double kLightElevation = std::numbers::pi / 6.0;
+inline const Vec3 kLightCentre = {std::sin(kLightElevation), 0.0, std::cos(kLightElevation)};
+inline const Vec3 kLightAcross = {std::cos(kLightElevation), 0.0, -std::sin(kLightElevation)};
+inline const Vec3 kLightAlong = {0.0, 1.0, 0.0};
+inline constexpr double kAreaLightRoughness[] = {0.1, 0.25, 0.5, 0.75, 1.0};
+
+// A view whose mirror direction R leaves the light centre by `across` and `along` radians.
+struct AreaLightView {
+    double across, along;
+};
+
+inline Vec3 viewFor(const AreaLightView& g) {
+    const Vec3 R = normalized(kLightCentre + std::tan(g.across) * kLightAcross +
+                              std::tan(g.along) * kLightAlong);
+    return {-R[0], -R[1], R[2]};  // reflect R about N = +Z
+}
+
+// Sphere of sin(sigma) s: R through the centre, half-way to the rim, at the rim, outside it
+// (2 sigma) in the plane of incidence, and 0.5 and 1.5 sigma across it.
+inline std::vector<AreaLightView> sphereViews(double s) {
+    const double sigma = std::asin(s);
+    return {{0, 0},         {0.5 * sigma, 0}, {sigma, 0},
+            {2 * sigma, 0}, {0, 0.5 * sigma}, {0, 1.5 * sigma}};
+}
+
+// Tube of `length` m: R through the centre, along the axis to 0.5, 1 and 1.5 half-lengths, and
+// 0.1 rad across it at 0 and 0.5 half-lengths.
+inline std::vector<AreaLightView> tubeViews(double length) {
+    const double half = std::atan(0.5 * length);
+    return {{0, 0}, {0, 0.5 * half}, {0, half}, {0, 1.5 * half}, {0.1, 0}, {0.1, 0.5 * half}};
 }
 
 }  // namespace candela::report

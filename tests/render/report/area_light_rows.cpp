@@ -15,21 +15,14 @@ namespace candela::report {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kLightElevation = kPi / 6.0;  // light centre 30 degrees from the normal, 1 m
-const Vec3 kCentre = {std::sin(kLightElevation), 0.0, std::cos(kLightElevation)};
-const Vec3 kAcross = {std::cos(kLightElevation), 0.0, -std::sin(kLightElevation)};  // in plane
-const Vec3 kAlong = {0.0, 1.0, 0.0};  // out of plane: the tube's axis
-constexpr double kRoughness[] = {0.1, 0.25, 0.5, 0.75, 1.0};
+const Vec3& kCentre = kLightCentre;
+const Vec3& kAlong = kLightAlong;
+const auto& kRoughness = kAreaLightRoughness;
+using Geometry = AreaLightView;
 
-// The view whose mirror direction R leaves the light centre by `across` and `along` radians.
 Vec3 viewFor(double across, double along) {
-    const Vec3 R = normalized(kCentre + std::tan(across) * kAcross + std::tan(along) * kAlong);
-    return {-R[0], -R[1], R[2]};  // reflect R about N = +Z
+    return report::viewFor({across, along});
 }
-
-struct Geometry {
-    double across, along;  // radians
-};
 
 struct Cell {
     double l1 = 0.0;      // sum |approx - reference| / sum reference over the views
@@ -117,14 +110,8 @@ void addAreaLightRows(ReportContext& context) {
     const std::string monteCarloCost =
         " (Monte Carlo: " + std::to_string(monteCarloSamples) + " stratified samples, device)";
 
-    // Sphere: views with R through the centre, half-way to the rim, at the rim, outside it
-    // (2 sigma) in the plane of incidence and across it.
+    // Sphere and tube views: sphereViews, tubeViews (area_light_reference.h).
     const std::vector<double> sinSigma = {0.05, 0.1, 0.2, 0.4};
-    auto sphereViews = [](double s) {
-        const double sigma = std::asin(s);
-        return std::vector<Geometry>{{0, 0},         {0.5 * sigma, 0}, {sigma, 0},
-                                     {2 * sigma, 0}, {0, 0.5 * sigma}, {0, 1.5 * sigma}};
-    };
     Sweep sphere =
         sweep(context, true, sinSigma, sphereViews, [&](double s, const Vec3& V, double alpha) {
             return sphereSpecularReference(kCentre, s, V, alpha, sphereGrid);
@@ -149,17 +136,11 @@ void addAreaLightRows(ReportContext& context) {
         {"Sphere light: representative point + (alpha / alpha')^2 (eq. 10-14)",
          "specular integrated over the sphere (double)",
          "relative L1 over 6 views (roughness 0.1..1 x sin(sigma) 0.05..0.4, see the table below)",
-         sphere.worst, "rel", sphere.where, formatShaderCost(ns[0], ns[1]) + monteCarloCost});
+         sphere.worst, "rel", sphere.where, formatShaderCost(ns[0], ns[1]) + monteCarloCost,
+         plottedNs(ns[0])});
     context.report.tables.push_back(sphere.table);
 
-    // Tube (radius 0): R through the centre, along the axis to 0.5, 1 and 1.5 half-lengths,
-    // and 0.1 rad across it.
     const std::vector<double> lengths = {0.25, 0.5, 1.0, 2.0};
-    auto tubeViews = [](double length) {
-        const double half = std::atan(0.5 * length);
-        return std::vector<Geometry>{{0, 0},          {0, 0.5 * half}, {0, half},
-                                     {0, 1.5 * half}, {0.1, 0},        {0.1, 0.5 * half}};
-    };
     Sweep tube =
         sweep(context, false, lengths, tubeViews, [&](double length, const Vec3& V, double alpha) {
             return tubeSpecularReference(kCentre, kAlong, length, V, alpha, tubeSamples);
@@ -186,7 +167,8 @@ void addAreaLightRows(ReportContext& context) {
          "specular integrated along the tube (double)",
          "relative L1 over 6 views (roughness 0.1..1 x length 0.25..2 m at 1 m, see the table "
          "below)",
-         tube.worst, "rel", tube.where, formatShaderCost(ns[2], ns[3]) + monteCarloCost});
+         tube.worst, "rel", tube.where, formatShaderCost(ns[2], ns[3]) + monteCarloCost,
+         plottedNs(ns[2])});
     context.report.tables.push_back(tube.table);
 }
 

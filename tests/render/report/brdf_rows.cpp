@@ -47,7 +47,8 @@ void addFresnelRow(ReportContext& context, const Cost& costSg, const Cost& costP
     context.report.rows.push_back(
         {"Fresnel: Schlick with SG exponent exp2((-5.55473 VoH - 6.98316) "
          "VoH) (eq. 5)",
-         "Schlick (1 - VoH)^5", metric, worst, "abs", where, formatShaderCost(costSg, costPow5)});
+         "Schlick (1 - VoH)^5", metric, worst, "abs", where, formatShaderCost(costSg, costPow5),
+         plottedNs(costSg)});
 }
 
 // `function` evaluates (approximation, exact height-correlated Smith) on the device. Returns
@@ -91,7 +92,8 @@ double addVisibilityRow(ReportContext& context, ValueFunction function, const ch
                   "NoL 0.01..1 in %d steps each); %s with NoV, NoL >= 0.2",
                   roughnessSteps, angleSteps, formatNumber(worstMid).c_str());
     context.report.rows.push_back({name, "height-correlated Smith GGX (exact)", metric, worst,
-                                   "rel", where, formatShaderCost(costApproximation, costSmith)});
+                                   "rel", where, formatShaderCost(costApproximation, costSmith),
+                                   plottedNs(costApproximation)});
     return worst;
 }
 

@@ -1,5 +1,11 @@
 # Smoke test of candela-report: a quick run writes the page; every row is there and every
 # number in the main table is finite. Timing values are never checked.
+# Figures of an earlier run must not pass for this run's.
+get_filename_component(folder ${OUT} DIRECTORY)
+file(GLOB stale ${folder}/*.svg)
+if(stale)
+  file(REMOVE ${stale})
+endif()
 execute_process(COMMAND ${REPORT} --quick --out ${OUT} RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "candela-report --quick failed (${rc})")
@@ -30,10 +36,30 @@ foreach(row
     "| GGX D (eq. 3) in fp32 at kMinRoughness"
     "## GGX peak in fp32 near kMinRoughness"
     "## Sphere lights:"
-    "## Tube lights:")
+    "## Tube lights:"
+    "| Sphere light, --area-lights representative"
+    "| Sphere light, --area-lights ltc"
+    "| Tube light, --area-lights representative"
+    "| Tube light, --area-lights ltc"
+    "## Sphere lights: representative point / LTC"
+    "## Tube lights: representative point / LTC"
+    "## Figures"
+    "](speed-vs-error-frontier.svg)"
+    "](area_light_sphere_ltc.svg)")
   string(FIND "${page}" "${row}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "row missing from ${OUT}: ${row}")
+  endif()
+endforeach()
+# The figures the page embeds are written beside it, as SVG.
+foreach(figure speed-vs-error-frontier area_light_sphere_representative area_light_sphere_ltc
+        area_light_tube_representative area_light_tube_ltc)
+  if(NOT EXISTS ${folder}/${figure}.svg)
+    message(FATAL_ERROR "figure missing beside ${OUT}: ${figure}.svg")
+  endif()
+  file(READ ${folder}/${figure}.svg svg)
+  if(NOT svg MATCHES "^<\\?xml" OR NOT svg MATCHES "</svg>\n$")
+    message(FATAL_ERROR "${figure}.svg is not a complete SVG file")
   endif()
 endforeach()
 # formatNumber writes non-finite values as nan / inf.

@@ -94,7 +94,7 @@ void addEnvironmentBrdfRows(ReportContext& context, const std::vector<float>& lu
                   steps + 1, steps + 1, referenceGrid);
     context.report.rows.push_back({"EnvBRDFApprox (seed 001, mobile)", "eq. 8 integrated (double)",
                                    grid, approxWorst.error, "abs", approxWorst.where,
-                                   "vs LUT: " + formatShaderCost(ns[0], ns[1])});
+                                   "vs LUT: " + formatShaderCost(ns[0], ns[1]), plottedNs(ns[0])});
     char lutName[96];
     std::snprintf(lutName, sizeof(lutName), "eq. 8 LUT, %ux%u R16G16 UNORM, bilinear (split sum)",
                   lutSize, lutSize);
@@ -102,14 +102,15 @@ void addEnvironmentBrdfRows(ReportContext& context, const std::vector<float>& lu
         {lutName, "eq. 8 integrated (double)", grid, lutWorst.error, "abs", lutWorst.where,
          "vs Monte Carlo (64 samples): " + formatShaderCost(ns[1], ns[2]) +
              "; the LUT read is a storage-buffer bilinear fetch here (the harness binds no "
-             "sampler)"});
+             "sampler)",
+         plottedNs(ns[1])});
     char mcName[96];
     std::snprintf(mcName, sizeof(mcName),
                   "eq. 8 by Monte Carlo at run time, %u visible-normal samples (device)",
                   monteCarloSamples);
     context.report.rows.push_back({mcName, "eq. 8 integrated (double)", grid, monteCarloWorst.error,
                                    "abs", monteCarloWorst.where,
-                                   formatShaderCost(ns[2]) + " per evaluation"});
+                                   formatShaderCost(ns[2]) + " per evaluation", plottedNs(ns[2])});
 }
 
 }  // namespace candela::report

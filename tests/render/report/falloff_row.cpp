@@ -46,7 +46,8 @@ void addFalloffRow(ReportContext& context) {
     context.report.rows.push_back(
         {"Windowed falloff (eq. 9)", "inverse square 1 / d^2", metric, 100.0 * meanDropped,
          "% energy", where,
-         formatShaderCost(ns[0], ns[1]) + " (the window is what lets clustering cull at R)"});
+         formatShaderCost(ns[0], ns[1]) + " (the window is what lets clustering cull at R)",
+         plottedNs(ns[0])});
 }
 
 }  // namespace candela::report

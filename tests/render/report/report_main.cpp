@@ -8,16 +8,21 @@
 // running the others).
 // --quick: coarse grids and one repetition (the ctest smoke test); the numbers are then only
 // good for checking that every row is produced.
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+#include <system_error>
 
 #include "../stability/compute_harness.h"
 #include "ibl/environment_brdf_lut.h"
 #include "report_context.h"
+#include "svg_figures.h"
 
 using namespace candela;
 using namespace candela::report;
@@ -36,6 +41,45 @@ std::vector<float> environmentBrdfLut(render::GpuContext& context) {
         values[2 * i + 1] = float((packed >> 16) / 65535.0);
     }
     return values;
+}
+
+// Error against cost, log-log, one point per row that has both (ReportRow::costNs).
+ReportFigure errorAgainstCostFigure(const Report& report) {
+    LogLogPlot plot;
+    plot.title = "Error against cost, one point per approximation";
+    plot.xAxis = "cost: device ns per evaluation (this run's device)";
+    plot.yAxis = "error (the row's own metric and unit)";
+    for (const ReportRow& row : report.rows) {
+        if (row.costNs > 0.0 && row.error > 0.0) {
+            plot.points.push_back(
+                {row.approximation + " (" + row.errorUnit + ")", row.costNs, row.error});
+        }
+    }
+    return {"speed-vs-error-frontier.svg",
+            "Error against cost for every row with a per-evaluation cost (log-log): lower left is "
+            "better; rows timed per frame or under the timer's noise are not plotted.",
+            logLogScatterSvg(plot)};
+}
+
+// Writes `text` to `path` through a temporary file renamed into place; throws naming the path
+// and the OS error.
+void writeAtomically(const std::filesystem::path& path, const std::string& text) {
+    const std::filesystem::path temporary = path.string() + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        out << text;
+        out.flush();
+        if (!out) {
+            throw std::runtime_error("cannot write " + temporary.string() + ": " +
+                                     std::generic_category().message(errno));
+        }
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        throw std::runtime_error("cannot rename " + temporary.string() + " to " + path.string() +
+                                 ": " + error.message());
+    }
 }
 
 int usage() {
@@ -80,6 +124,7 @@ int main(int argc, char** argv) {
         section("environment BRDF",
                 [&] { addEnvironmentBrdfRows(context, lut, render::EnvironmentBrdfLut::kSize); });
         section("area lights", [&] { addAreaLightRows(context); });
+        section("area lights by LTC", [&] { addLtcAreaLightRows(context); });
         section("falloff", [&] { addFalloffRow(context); });
         section("image-based lighting", [&] { addSplitSumRow(context); });
         section("clustered lights", [&] { addClusteredRow(context); });
@@ -96,6 +141,15 @@ int main(int argc, char** argv) {
         }
         report.seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (!report.figures.empty() || !report.rows.empty()) {
+            report.figures.insert(report.figures.begin(), errorAgainstCostFigure(report));
+        }
+        // Figures go beside the page (with no --out, nowhere: the page alone goes to stdout).
+        if (!outPath.empty()) {
+            const std::filesystem::path folder = std::filesystem::path(outPath).parent_path();
+            for (const ReportFigure& figure : report.figures)
+                writeAtomically(folder / figure.file, figure.svg);
+        }
         const std::string markdown = toMarkdown(report);
         if (outPath.empty()) {
             std::fputs(markdown.c_str(), stdout);

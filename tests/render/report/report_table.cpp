@@ -77,6 +77,12 @@ std::string toMarkdown(const Report& report) {
         writeRow(out, {row.approximation, row.reference, row.metric,
                        formatNumber(row.error) + " " + row.errorUnit, row.worstCase, row.cost});
     }
+    if (!report.figures.empty()) {
+        out << "\n## Figures\n\n";
+        for (const ReportFigure& figure : report.figures)
+            out << "![" << figure.caption << "](" << figure.file << ")\n\n"
+                << figure.caption << "\n\n";
+    }
     for (const ReportTable& table : report.tables) {
         out << "\n## " << table.title << "\n\n" << table.intro << "\n\n";
         writeRow(out, table.header);

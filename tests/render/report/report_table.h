@@ -15,6 +15,17 @@ struct ReportRow {
     std::string errorUnit;  // "abs", "rel", "% energy", ...
     std::string worstCase;  // where the worst error is
     std::string cost;       // approximation vs reference, e.g. "0.8 vs 2.1 ns (2.6x)"
+    // Machine-readable cost for the error-against-cost figure: the approximation's device
+    // nanoseconds per evaluation (0: not measured per evaluation, or under the timer's noise;
+    // such rows are left out of the figure, which lists them).
+    double costNs = 0.0;
+};
+
+// A figure written beside the page (an SVG file) and embedded in it.
+struct ReportFigure {
+    std::string file;  // name only: written in the page's folder
+    std::string caption;
+    std::string svg;
 };
 
 struct ReportTable {
@@ -31,6 +42,7 @@ struct Report {
     std::vector<ReportRow> rows;
     std::vector<ReportTable> tables;
     std::vector<std::string> notes;
+    std::vector<ReportFigure> figures;
 };
 
 std::string formatNumber(double value, int significant = 3);

@@ -24,6 +24,10 @@ bool aboveNoise(const Cost& cost) {
 
 }  // namespace
 
+double plottedNs(const Cost& cost) {
+    return aboveNoise(cost) ? cost.ns : 0.0;
+}
+
 std::string formatShaderCost(const Cost& cost) {
     if (aboveNoise(cost)) return formatNumber(cost.ns) + " ns";
     return "< noise (IQR " + formatNumber(cost.spread, 2) + " ns)";

@@ -29,6 +29,9 @@ enum class CostFunction : uint32_t {
     TubeMonteCarlo = 13,
     VisSmithGgxFast = 14,
     MultipleScattering = 15,
+    PointLight = 16,  // representative-point specular (correlated Smith) of a point light
+    SphereLtc = 17,
+    TubeLtc = 18,
 };
 
 struct CostJob {
@@ -44,6 +47,8 @@ struct Cost {
     double spread = 0.0;
 };
 
+// The nanoseconds of a cost for ReportRow::costNs: 0 when under the timer's noise.
+double plottedNs(const Cost& cost);
 // "0.36 ns", or "< noise (IQR 0.05 ns)" when the median is under its spread.
 std::string formatShaderCost(const Cost& cost);
 // "a vs b (ratio x)"; the ratio only when both are above their noise.

@@ -20,10 +20,11 @@ enum class ValueFunction : uint32_t {
     Ggx = 5,
     AreaLight = 6,
     VisibilityFast = 7,
+    AreaLightLtc = 8,
 };
 
 struct ValueSample {
-    std::array<float, 4> a{}, b{}, c{};
+    std::array<float, 4> a{}, b{}, c{}, d{};
 };
 
 inline std::vector<std::array<float, 2>> evaluateOnDevice(stability::ComputeHarness& harness,

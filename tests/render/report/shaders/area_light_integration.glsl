@@ -8,6 +8,7 @@
 #include "common/brdf.glsl"
 #include "common/ibl.glsl"
 #include "common/lights.glsl"
+#include "common/ltc_area_lights.glsl"
 
 const vec3 kSurfaceNormal = vec3(0.0, 0.0, 1.0);
 
@@ -20,8 +21,9 @@ float specularTimesNoL(vec3 V, vec3 L, float alpha) {
     return distributionGgx(alpha * alpha, NoH) * visibilitySmithSchlick(alpha, NoV, NoL) * NoL;
 }
 
-// The lighting pass's specular (shading_models.glsl specularGgx) with F = 1.
-float representativePointSpecular(Light light, vec3 V, float roughness) {
+// The lighting pass's specular (shading_models.glsl specularGgx) with F = 1, with seed 000's
+// Schlick-Smith visibility or (correlated) the energy-conserving BRDF's height-correlated Smith.
+float representativePointSpecular(Light light, vec3 V, float roughness, bool correlated) {
     float alpha = alphaFromRoughness(roughness);
     vec3 N = kSurfaceNormal;
     vec3 R = reflect(-V, N);
@@ -30,8 +32,28 @@ float representativePointSpecular(Light light, vec3 V, float roughness) {
     float NoV = saturate(dot(N, V));
     float NoL = saturate(dot(N, inc.specularL));
     float NoH = saturate(dot(N, H));
-    return distributionGgx(alpha * alpha, NoH) * visibilitySmithSchlick(alpha, NoV, NoL) *
-           inc.specularIlluminance.x;
+    float visibility = correlated ? visibilitySmithGgxCorrelated(alpha, NoV, NoL)
+                                  : visibilitySmithSchlick(alpha, NoV, NoL);
+    return distributionGgx(alpha * alpha, NoH) * visibility * inc.specularIlluminance.x;
+}
+
+float representativePointSpecular(Light light, vec3 V, float roughness) {
+    return representativePointSpecular(light, V, roughness, false);
+}
+
+// --area-lights ltc: the unit-magnitude LTC's integral over the sphere or tube, times the
+// light's luminance (sphere, I / (pi r^2)) or intensity (tube); the caller multiplies by the
+// table's magnitude. minvEntries: the table's M^-1 (00, 02, 20, 22) for this roughness and view.
+float ltcSpecular(Light light, vec3 V, vec4 minvEntries) {
+    mat3 frame = ltcShadingFrame(kSurfaceNormal, V);
+    mat3 minv = ltcInverseMatrix(minvEntries);
+    vec3 center = frame * light.position;
+    if (light.sourceLength > 0.0) {
+        vec3 halfSegment = frame * light.tubeAxis * (0.5 * light.sourceLength);
+        return light.intensity.x * ltcLineIntegral(minv, center - halfSegment, center + halfSegment);
+    }
+    float luminance = light.intensity.x / (PI * light.sourceRadius * light.sourceRadius);
+    return luminance * ltcSphereIntegral(minv, center, light.sourceRadius);
 }
 
 // Uniform sampling of the cone the sphere subtends (pdf 1 / (2 pi (1 - cos sigma))) times its

@@ -28,6 +28,9 @@ const uint kTubeRepresentative = 12u;
 const uint kTubeMonteCarlo = 13u;
 const uint kVisSmithGgxFast = 14u;
 const uint kMultipleScattering = 15u;
+const uint kPointLight = 16u;
+const uint kSphereLtc = 17u;
+const uint kTubeLtc = 18u;
 
 layout(std430, binding = 0) writeonly buffer Sums {
     float sums[];
@@ -85,6 +88,10 @@ Light areaLight(float sourceRadius, float sourceLength) {
 #define AREA_VIEW normalize(vec3(-0.5 + 0.2 * x, 0.2 * y, 0.866))
 #define SPHERE_LIGHT areaLight(0.1 + 0.2 * z, 0.0)
 #define TUBE_LIGHT areaLight(0.0, 0.5 + z)
+// An M^-1 of the table's shape that changes with the inputs (the table fetch itself, two
+// texture reads in a renderer, is not timed), and the same point light shaded the same way.
+#define LTC_MINV vec4(0.5 + 0.5 * y, 0.1 * x, -0.1 * x, 0.3 + 0.7 * y)
+#define POINT_LIGHT areaLight(0.0, 0.0)
 
 void main() {
     uint id = gl_GlobalInvocationID.x;
@@ -123,6 +130,11 @@ void main() {
         case kMultipleScattering:
             TIMED_LOOP(multipleScatteringCompensation(vec3(z), 0.3 + 0.7 * y).x);
             break;
+        case kPointLight:
+            TIMED_LOOP(representativePointSpecular(POINT_LIGHT, AREA_VIEW, 0.1 + 0.9 * y, true));
+            break;
+        case kSphereLtc: TIMED_LOOP(ltcSpecular(SPHERE_LIGHT, AREA_VIEW, LTC_MINV)); break;
+        case kTubeLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV)); break;
         default: break;
     }
     sums[id] = sum;

@@ -21,11 +21,15 @@ const uint kGgx = 5u;               // a.x a2, a.y NoH -> (D)
 // tube axis -> (representative-point specular)
 const uint kAreaLight = 6u;
 const uint kVisibilityFast = 7u;    // a.x alpha, a.y NoV, a.z NoL -> (Hammon's fast form, exact)
+// As kAreaLight, d the table's M^-1 (00, 02, 20, 22) -> (LTC specular over the light with unit
+// magnitude, representative-point specular with the height-correlated Smith visibility)
+const uint kAreaLightLtc = 8u;
 
 struct Sample {
     vec4 a;
     vec4 b;
     vec4 c;
+    vec4 d;
 };
 
 layout(std430, binding = 0) readonly buffer Samples {
@@ -55,7 +59,8 @@ vec2 evaluate(Sample s) {
         case kFalloff:
             return vec2(attenuationWindow(s.a.x, s.a.y) * inverseSquare(s.a.x), inverseSquare(s.a.x));
         case kGgx: return vec2(distributionGgx(s.a.x, s.a.y), 0.0);
-        case kAreaLight: {
+        case kAreaLight:
+        case kAreaLightLtc: {
             Light light;
             light.position = s.a.xyz;
             light.invAttenuationRadius = 0.0;
@@ -67,6 +72,10 @@ vec2 evaluate(Sample s) {
             light.type = kLightPoint;
             light.spotScale = 0.0;
             light.spotOffset = 0.0;
+            if (function == kAreaLightLtc) {
+                return vec2(ltcSpecular(light, s.b.xyz, s.d),
+                            representativePointSpecular(light, s.b.xyz, s.c.x, true));
+            }
             return vec2(representativePointSpecular(light, s.b.xyz, s.c.x), 0.0);
         }
         case kVisibilityFast:

@@ -1,0 +1,282 @@
+// Rows: sphere and tube lights by the representative point and by linearly transformed cosines
+// (issue 15, --area-lights), both with the energy-conserving BRDF's lobe (GGX D x height-
+// correlated Smith x NoL, F = 1: the lobe render/ltc/'s table is fitted to), against that lobe
+// integrated over the light in double, on the grid roughness x light size x view of the
+// representative-point rows (area_light_rows.cpp); cost against a point light shaded the same
+// way. Heat maps of each shape and mode over roughness x size go to the report's figures.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "area_light_reference.h"
+#include "ltc_ggx_table.inc"
+#include "report_context.h"
+#include "shader_values.h"
+#include "svg_figures.h"
+
+namespace candela::report {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The table's M^-1 entries (00, 02, 20, 22) and magnitude at (roughness, cos theta_v), bilinear
+// between cells as a linear sampler would read them (render/ltc/ltc_fit.h gives the axes).
+struct LtcLookup {
+    std::array<float, 4> inverse;
+    double magnitude;
+};
+
+LtcLookup lookupLtc(double roughness, double cosView) {
+    const int n = kLtcTableSize;
+    const double r = std::clamp((roughness - 0.02) / (1.0 - 0.02), 0.0, 1.0) * (n - 1);
+    const double c = std::sqrt(std::clamp(1.0 - cosView, 0.0, 1.0)) * (n - 1);
+    const int r0 = std::min(int(r), n - 2), c0 = std::min(int(c), n - 2);
+    const double fr = r - r0, fc = c - c0;
+    LtcLookup out{};
+    for (int k = 0; k < 5; ++k) {
+        auto at = [&](int row, int column) { return double(kLtcTable[row * n + column][k]); };
+        const double top = at(r0, c0) * (1 - fc) + at(r0, c0 + 1) * fc;
+        const double bottom = at(r0 + 1, c0) * (1 - fc) + at(r0 + 1, c0 + 1) * fc;
+        const double v = top * (1 - fr) + bottom * fr;
+        if (k < 4)
+            out.inverse[size_t(k)] = float(v);
+        else
+            out.magnitude = v;
+    }
+    return out;
+}
+
+struct ModeSweep {
+    std::vector<std::vector<double>> cells;  // [roughness][size]: relative L1 over the views
+    double worst = -1.0, mean = 0.0, worstView = 0.0;
+    std::string where;
+};
+
+struct ShapeSweep {
+    ModeSweep representative, ltc;
+};
+
+ShapeSweep sweep(ReportContext& context, bool sphere, const std::vector<double>& sizes,
+                 int referenceResolution) {
+    std::vector<ValueSample> samples;
+    std::vector<double> magnitudes, references;
+    const auto views = sphere ? sphereViews : tubeViews;
+    for (double roughness : kAreaLightRoughness) {
+        const double alpha = stability::reference::alphaFromRoughness(roughness);
+        for (double size : sizes) {
+            for (const AreaLightView& g : views(size)) {
+                const Vec3 V = viewFor(g);
+                const LtcLookup ltc = lookupLtc(roughness, V[2]);
+                ValueSample s;
+                s.a = {float(kLightCentre[0]), float(kLightCentre[1]), float(kLightCentre[2]),
+                       sphere ? float(size) : 0.0f};
+                s.b = {float(V[0]), float(V[1]), float(V[2]), sphere ? 0.0f : float(size)};
+                s.c = {float(roughness), float(kLightAlong[0]), float(kLightAlong[1]),
+                       float(kLightAlong[2])};
+                s.d = ltc.inverse;
+                samples.push_back(s);
+                magnitudes.push_back(ltc.magnitude);
+                references.push_back(sphere
+                                         ? sphereSpecularReference(kLightCentre, size, V, alpha,
+                                                                   referenceResolution, true)
+                                         : tubeSpecularReference(kLightCentre, kLightAlong, size, V,
+                                                                 alpha, referenceResolution, true));
+            }
+        }
+    }
+    const auto device = evaluateOnDevice(context.harness, ValueFunction::AreaLightLtc, samples);
+    ShapeSweep out;
+    size_t k = 0;
+    size_t cellCount = 0;
+    for (double roughness : kAreaLightRoughness) {
+        out.representative.cells.emplace_back();
+        out.ltc.cells.emplace_back();
+        for (double size : sizes) {
+            double errorLtc = 0.0, errorRepresentative = 0.0, sum = 0.0;
+            double worstViewLtc = 0.0, worstViewRepresentative = 0.0;
+            for (size_t v = 0; v < views(size).size(); ++v, ++k) {
+                const double reference = references[k];
+                const double ltc = device[k][0] * magnitudes[k];
+                const double representative = device[k][1];
+                errorLtc += std::fabs(ltc - reference);
+                errorRepresentative += std::fabs(representative - reference);
+                sum += reference;
+                worstViewLtc = std::max(worstViewLtc, std::fabs(ltc - reference) / reference);
+                worstViewRepresentative = std::max(
+                    worstViewRepresentative, std::fabs(representative - reference) / reference);
+            }
+            ++cellCount;
+            auto record = [&](ModeSweep& mode, double error, double worstView) {
+                const double cell = error / sum;
+                mode.cells.back().push_back(cell);
+                mode.mean += cell;
+                mode.worstView = std::max(mode.worstView, worstView);
+                if (!(cell <= mode.worst)) {
+                    mode.worst = cell;
+                    char text[96];
+                    std::snprintf(text, sizeof(text), "roughness %.2f, %s %.2f%s", roughness,
+                                  sphere ? "sin(sigma)" : "length", size,
+                                  sphere ? "" : " m at 1 m");
+                    mode.where = text;
+                }
+            };
+            record(out.ltc, errorLtc, worstViewLtc);
+            record(out.representative, errorRepresentative, worstViewRepresentative);
+        }
+    }
+    out.ltc.mean /= double(cellCount);
+    out.representative.mean /= double(cellCount);
+    return out;
+}
+
+std::string percent(double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.1f %%", 100.0 * value);
+    return text;
+}
+
+// The table of one shape: a row per roughness, "representative / ltc" per size.
+ReportTable sweepTable(const ShapeSweep& s, const std::vector<std::string>& sizeLabels) {
+    ReportTable table;
+    table.header = {"roughness"};
+    for (const std::string& label : sizeLabels)
+        table.header.push_back(label);
+    for (size_t r = 0; r < s.ltc.cells.size(); ++r) {
+        std::vector<std::string> row = {formatNumber(kAreaLightRoughness[r])};
+        for (size_t c = 0; c < s.ltc.cells[r].size(); ++c) {
+            row.push_back(percent(s.representative.cells[r][c]) + " / " +
+                          percent(s.ltc.cells[r][c]));
+        }
+        table.rows.push_back(row);
+    }
+    return table;
+}
+
+HeatMap heatMap(const std::string& title, const ModeSweep& mode,
+                const std::vector<std::string>& sizeLabels, const std::string& sizeAxis) {
+    HeatMap map;
+    map.title = title;
+    map.xAxis = sizeAxis;
+    map.yAxis = "roughness";
+    map.columns = sizeLabels;
+    for (double roughness : kAreaLightRoughness)
+        map.rows.push_back(formatNumber(roughness));
+    map.values = mode.cells;
+    return map;
+}
+
+}  // namespace
+
+void addLtcAreaLightRows(ReportContext& context) {
+    const bool quick = context.budget.quick;
+    const int sphereGrid = quick ? 96 : 480;
+    const int tubeSamples = quick ? 4096 : 65536;
+    const uint32_t iterations = context.budget.iterations(4096);
+    std::vector<Cost> ns = context.cost.nsPerEvaluation({
+        {CostFunction::PointLight, iterations},
+        {CostFunction::SphereRepresentative, iterations},
+        {CostFunction::SphereLtc, iterations},
+        {CostFunction::TubeRepresentative, iterations},
+        {CostFunction::TubeLtc, iterations},
+    });
+    // "x ns vs point light y ns (r x)": cost relative to a point light shaded the same way.
+    auto relativeCost = [&](const Cost& c) {
+        std::string text = formatShaderCost(c) + " vs point light " + formatShaderCost(ns[0]);
+        if (c.ns > c.spread && ns[0].ns > ns[0].spread) {
+            text += " (" + formatNumber(c.ns / ns[0].ns) + "x the point light)";
+        }
+        return text;
+    };
+    auto measuredNs = [](const Cost& c) { return c.ns > c.spread ? c.ns : 0.0; };
+
+    const std::vector<double> sinSigma = {0.05, 0.1, 0.2, 0.4};
+    const std::vector<double> lengths = {0.25, 0.5, 1.0, 2.0};
+    const ShapeSweep sphere = sweep(context, true, sinSigma, sphereGrid);
+    const ShapeSweep tube = sweep(context, false, lengths, tubeSamples);
+
+    std::vector<std::string> sphereLabels, tubeLabels;
+    for (double s : sinSigma) {
+        char text[64];
+        std::snprintf(text, sizeof(text), "sin(sigma) %.2f (%.3f sr)", s,
+                      2.0 * kPi * (1.0 - std::sqrt(1.0 - s * s)));
+        sphereLabels.push_back(text);
+    }
+    for (double length : lengths) {
+        char text[64];
+        std::snprintf(text, sizeof(text), "length %.2f m (%.0f deg)", length,
+                      2.0 * std::atan(0.5 * length) * 180.0 / kPi);
+        tubeLabels.push_back(text);
+    }
+
+    const std::string reference = "energy-conserving specular integrated over the light (double)";
+    auto metric = [](const ModeSweep& m, const char* grid) {
+        return std::string("relative L1 over 6 views, worst cell of ") + grid + "; mean cell " +
+               percent(m.mean) + ", worst single view " + percent(m.worstView);
+    };
+    const char* sphereGridText = "roughness 0.1..1 x sin(sigma) 0.05..0.4";
+    const char* tubeGridText = "roughness 0.1..1 x length 0.25..2 m at 1 m";
+    ReportRow rows[] = {
+        {"Sphere light, --area-lights representative (eq. 10-14, correlated Smith)", reference,
+         metric(sphere.representative, sphereGridText), sphere.representative.worst, "rel",
+         sphere.representative.where, relativeCost(ns[1]), measuredNs(ns[1])},
+        {"Sphere light, --area-lights ltc (disk facing the point)", reference,
+         metric(sphere.ltc, sphereGridText), sphere.ltc.worst, "rel", sphere.ltc.where,
+         relativeCost(ns[2]), measuredNs(ns[2])},
+        {"Tube light, --area-lights representative (eq. 16-20, correlated Smith)", reference,
+         metric(tube.representative, tubeGridText), tube.representative.worst, "rel",
+         tube.representative.where, relativeCost(ns[3]), measuredNs(ns[3])},
+        {"Tube light, --area-lights ltc (line integral)", reference, metric(tube.ltc, tubeGridText),
+         tube.ltc.worst, "rel", tube.ltc.where, relativeCost(ns[4]), measuredNs(ns[4])},
+    };
+    for (ReportRow& row : rows)
+        context.report.rows.push_back(row);
+
+    context.report.notes.push_back(
+        "Area-light cost anchor (issue 15): Drobot's PS4 ALU counts for Killzone Shadow Fall's "
+        "lights, point 222, sphere 252 (1.14x), disk 361 (1.63x), rectangle 382 (1.72x), "
+        "textured rectangle 405 (1.82x). The LTC rows' device times exclude the table fetch (two "
+        "texture reads in a renderer; the report passes M^-1 in).");
+    ReportTable sphereTable = sweepTable(sphere, sphereLabels);
+    sphereTable.title = "Sphere lights: representative point / LTC, energy-conserving BRDF";
+    sphereTable.intro =
+        "The sphere-light geometry and views of the representative-point table, shaded with the "
+        "energy-conserving BRDF's lobe (height-correlated Smith, F = 1). Cell: relative L1 error "
+        "over the six views, representative point / LTC (the disk through the centre facing the "
+        "point, the table's M^-1 and magnitude read bilinearly on the host). Reference: " +
+        std::to_string(sphereGrid) + "^2-point quadrature over the cone in double.";
+    context.report.tables.push_back(sphereTable);
+    ReportTable tubeTable = sweepTable(tube, tubeLabels);
+    tubeTable.title = "Tube lights: representative point / LTC, energy-conserving BRDF";
+    tubeTable.intro =
+        "The tube geometry and views of the representative-point table, energy-conserving lobe. "
+        "Cell: relative L1 error over the six views, representative point / LTC (ltc_line.glsl: "
+        "the segment's closed-form integral with |p| piecewise linear). Reference: " +
+        std::to_string(tubeSamples) + " midpoints along the segment in double.";
+    context.report.tables.push_back(tubeTable);
+
+    const std::pair<const char*, const ModeSweep*> maps[] = {
+        {"sphere_representative", &sphere.representative},
+        {"sphere_ltc", &sphere.ltc},
+        {"tube_representative", &tube.representative},
+        {"tube_ltc", &tube.ltc},
+    };
+    for (const auto& [name, mode] : maps) {
+        const bool isSphere = std::string(name).rfind("sphere", 0) == 0;
+        const std::string title =
+            std::string(isSphere ? "Sphere" : "Tube") + " light, " +
+            (std::string(name).find("ltc") != std::string::npos ? "--area-lights ltc"
+                                                                : "--area-lights representative") +
+            ": specular relative L1 error";
+        context.report.figures.push_back(
+            {std::string("area_light_") + name + ".svg", title,
+             heatMapSvg(heatMap(title, *mode, isSphere ? sphereLabels : tubeLabels,
+                                isSphere ? "sphere size" : "tube length"))});
+    }
+}
+
+}  // namespace candela::report
