@@ -35,6 +35,7 @@ void addBrdfRows(ReportContext& context);
 void addEnvironmentBrdfRows(ReportContext& context, const std::vector<float>& lut,
                             uint32_t lutSize);
 void addAreaLightRows(ReportContext& context);
+void addAreaLightShapeRows(ReportContext& context);
 void addFalloffRow(ReportContext& context);
 void addSplitSumRow(ReportContext& context);
 void addClusteredRow(ReportContext& context);

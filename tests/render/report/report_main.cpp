@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
         section("environment BRDF",
                 [&] { addEnvironmentBrdfRows(context, lut, render::EnvironmentBrdfLut::kSize); });
         section("area lights", [&] { addAreaLightRows(context); });
+        section("area light shapes", [&] { addAreaLightShapeRows(context); });
         section("falloff", [&] { addFalloffRow(context); });
         section("image-based lighting", [&] { addSplitSumRow(context); });
         section("clustered lights", [&] { addClusteredRow(context); });

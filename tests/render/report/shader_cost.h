@@ -29,6 +29,12 @@ enum class CostFunction : uint32_t {
     TubeMonteCarlo = 13,
     VisSmithGgxFast = 14,
     MultipleScattering = 15,
+    // Rect and disk lights (area_light_shapes_rows.cpp): diffuse + specular of one light.
+    PointLightShading = 20,
+    RectRepresentative = 21,
+    RectLtc = 22,
+    DiskRepresentative = 23,
+    DiskLtc = 24,
 };
 
 struct CostJob {
