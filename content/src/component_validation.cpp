@@ -94,6 +94,14 @@ ValueProblems validateLight(Light& light) {
                 break;
         }
     }
+    // An area light needs an area: its luminance is lumens / (pi area). Width and height are
+    // checked above for every type; a disk's radius may be 0 elsewhere (a point light).
+    if (usesField(light.type, LightField::SourceRadius) && isAreaLight(light.type) &&
+        !(light.sourceRadius > 0)) {
+        reject(problems, "sourceRadius",
+               "a disk light needs a radius greater than 0 (zero area), got " +
+                   text(light.sourceRadius));
+    }
     if (usesField(light.type, LightField::OuterConeAngle)) {
         const float inner = light.innerConeAngle;
         const float outer = light.outerConeAngle;

@@ -37,6 +37,15 @@ GpuLight packLight(const LightInstance& instance) {
     g.invAttenuationRadius = 1.0f / std::max(radius, 1e-6f);
     const bool inLux = content::lightTypeInfo(l.type).power == content::LightPower::Lux;
     float photometric = inLux ? l.lux : l.lumens / (4.0f * std::numbers::pi_v<float>);  // lm -> cd
+    const bool area = content::isAreaLight(l.type);
+    if (area) {
+        // Lambertian one-sided emitter: luminance (cd/m^2) = lumens / (pi area); no area (or a
+        // non-finite one) emits nothing.
+        const float emitting = content::emitterArea(l);
+        photometric = emitting > 0.0f && std::isfinite(emitting)
+                          ? l.lumens / (std::numbers::pi_v<float> * emitting)
+                          : 0.0f;
+    }
     photometric = std::max(finiteOr(photometric, 0.0f), 0.0f);
     // A zero attenuation radius means the light reaches nothing.
     if (radius == 0.0f && !inEveryCluster(l)) photometric = 0.0f;
@@ -50,7 +59,8 @@ GpuLight packLight(const LightInstance& instance) {
         g.intensity[i] = float(std::min(channel, kMaxIntensity));
     }
     g.sourceRadius = std::max(finiteOr(l.sourceRadius, 0.0f), 0.0f);
-    g.sourceLength = std::max(finiteOr(l.sourceLength, 0.0f), 0.0f);
+    // Area lights have no tube (the culling shaders read sourceLength > 0 as a capsule).
+    g.sourceLength = area ? 0.0f : std::max(finiteOr(l.sourceLength, 0.0f), 0.0f);
     store(g.direction, unitOr(instance.direction, {0.0f, 0.0f, -1.0f}));
     store(g.tubeAxis, unitOr(instance.tubeAxis, {1.0f, 0.0f, 0.0f}));
     g.type = gpuLightType(l.type).gpuType;
@@ -61,6 +71,11 @@ GpuLight packLight(const LightInstance& instance) {
     float cosInner = std::cos(inner);
     g.spotScale = 1.0f / std::max(cosInner - cosOuter, 1e-4f);
     g.spotOffset = -cosOuter * g.spotScale;
+    if (area) {
+        // No cone: spotOffset carries the per-light quality (area_lights.glsl).
+        g.spotScale = 1.0f;
+        g.spotOffset = float(uint32_t(l.quality));
+    }
     return g;
 }
 

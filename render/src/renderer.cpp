@@ -22,6 +22,7 @@
 #include "ibl/environment_sampling_table.h"
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
+#include "lights/ltc_table_texture.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
 #include "passes/bloom/bloom_pass.h"
 #include "passes/debug_text/debug_text_pass.h"
@@ -219,6 +220,7 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     gbufferPass_ = std::make_unique<GBufferPass>(context_);
     lightingPass_ = std::make_unique<LightingPass>(context_);
     environmentPlaceholders_ = std::make_unique<EnvironmentPlaceholders>(context_);
+    ltcTable_ = std::make_unique<LtcTableTexture>(context_);
     transparentPass_ = std::make_unique<ForwardTransparentPass>(context_);
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
     if (options_.aa == AntiAliasing::Taa) taaPass_ = std::make_unique<TaaPass>(context_);
@@ -603,9 +605,11 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     const float aoIntensity = std::clamp(inputs.scene.aoIntensity, 0.0f, 1.0f);
     const bool aoMultiBounce = options_.aoSettings.multiBounce;
 
-    const EnvironmentDescriptors environment = environmentPlaceholders_->describe(
+    EnvironmentDescriptors environment = environmentPlaceholders_->describe(
         features.ibl ? resources.environment() : nullptr, brdfLut_.get(),
         samplingTable_ && features.ibl == IblMode::Reference ? &samplingTable_->buffer() : nullptr);
+    environment.ltcMatrix = ltcTable_->matrix();
+    environment.ltcMagnitude = ltcTable_->magnitude();
     const float skyIntensity = inputs.scene.skyIntensity;
     {
         auto p = g.addPass(

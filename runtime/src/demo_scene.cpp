@@ -437,6 +437,26 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
         }
     }
 
+    // Area lights (issue 15): disk lights on the ceiling over the aisle, their -Z turned down,
+    // and a rectangle on the left wall (a window's light), its -Z turned into the hall.
+    content::Light ceilingDisk = pointLight({1.0f, 0.93f, 0.82f}, 2400.0f, 8.0f);
+    ceilingDisk.type = content::LightType::Disk;
+    ceilingDisk.sourceRadius = 0.3f;
+    for (float z : {-2.0f, 3.5f}) {
+        registry.emplace<content::Light>(
+            place(registry, "ceiling disk light", {0.0f, 4.3f, z},
+                  ecs::Quat::fromAxisAngle({1.0f, 0.0f, 0.0f}, -0.5f * kPi)),
+            ceilingDisk);
+    }
+    content::Light window = pointLight({0.75f, 0.85f, 1.0f}, 3000.0f, 9.0f);
+    window.type = content::LightType::Rect;
+    window.width = 1.6f;
+    window.height = 1.0f;
+    registry.emplace<content::Light>(
+        place(registry, "window rect light", {-6.45f, 2.4f, 1.0f},
+              ecs::Quat::fromAxisAngle({0.0f, 1.0f, 0.0f}, -0.5f * kPi)),
+        window);
+
     // Hundreds of coloured lights drifting through the hall; each has its own Lissajous
     // figure, so the pattern never visibly repeats within the tour.
     for (uint32_t i = 0; i < kDemoAnimatedLights; ++i) {

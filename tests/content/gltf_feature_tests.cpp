@@ -147,6 +147,50 @@ TEST(GltfFeatures, PunctualLightsConvertToPhotometricEngineUnits) {
     EXPECT_EQ(m->nodes[0].light, 3);
 }
 
+// Issue 15: extras.shape makes a point light a one-sided rect or disk; the glTF intensity is
+// the on-axis intensity (cd), so lumens = pi x intensity. A shape without an area is an error
+// naming the light, which then emits nothing.
+TEST(GltfFeatures, ExtrasShapeMakesRectAndDiskLights) {
+    json doc = quadDocument();
+    doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    doc["extensions"]["KHR_lights_punctual"]["lights"] = json::array({
+        {{"type", "point"},
+         {"intensity", 50.0},
+         {"extras", {{"shape", "rect"}, {"width", 1.5}, {"height", 0.5}}}},
+        {{"type", "spot"},
+         {"intensity", 8.0},
+         {"spot", {{"outerConeAngle", 0.6}}},
+         {"extras", {{"shape", "disk"}, {"sourceRadius", 0.3}}}},
+        {{"type", "point"},
+         {"intensity", 5.0},
+         {"extras", {{"shape", "rect"}, {"width", -2.0}, {"height", 1.0}}}},
+        {{"type", "point"}, {"intensity", 5.0}, {"extras", {{"shape", "disk"}}}},
+        {{"type", "point"}, {"intensity", 5.0}, {"extras", {{"shape", "hexagon"}}}},
+    });
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    ASSERT_EQ(m->lights.size(), 5u);
+    const float pi = std::numbers::pi_v<float>;
+    const Light& rect = m->lights[0].light;
+    EXPECT_EQ(rect.type, LightType::Rect);
+    EXPECT_FLOAT_EQ(rect.lumens, pi * 50.0f);
+    EXPECT_FLOAT_EQ(rect.width, 1.5f);
+    EXPECT_FLOAT_EQ(rect.height, 0.5f);
+    const Light& disk = m->lights[1].light;
+    EXPECT_EQ(disk.type, LightType::Disk);
+    EXPECT_FLOAT_EQ(disk.lumens, pi * 8.0f);
+    EXPECT_FLOAT_EQ(disk.sourceRadius, 0.3f);
+    // Negative width, zero-area disk: skipped (no light) with errors naming them.
+    EXPECT_EQ(m->lights[2].light.lumens, 0.0f);
+    EXPECT_EQ(m->lights[3].light.lumens, 0.0f);
+    EXPECT_EQ(m->lights[4].light.type, LightType::Point);
+    const std::string messages = diagnostics.toString();
+    EXPECT_NE(messages.find("lights[2].extras.width"), std::string::npos) << messages;
+    EXPECT_NE(messages.find("lights[3]"), std::string::npos) << messages;
+    EXPECT_NE(messages.find("lights[4].extras.shape"), std::string::npos) << messages;
+}
+
 TEST(GltfFeatures, MaterialExtensionsAndEngineExtras) {
     json doc = quadDocument();
     doc["extensionsUsed"] = {"KHR_materials_emissive_strength", "KHR_materials_unlit",

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <limits>
 #include <span>
 #include <string>
 
@@ -71,6 +72,7 @@ TEST(LightTypeTable, CastShadowsRoundTripsAndDefaultsPerType) {
             Light light;
             light.type = type.type;
             light.castShadows = cast;
+            light.sourceRadius = 0.5f;  // a disk light needs an area
             scene.entities.emplace_back().light = light;
             std::string error;
             const std::string text = sceneToJson(scene, error);
@@ -83,7 +85,7 @@ TEST(LightTypeTable, CastShadowsRoundTripsAndDefaultsPerType) {
         }
         const std::string absent = std::string(R"({"format": "candela.scene", "version": 1,
             "entities": [{"name": "l", "light": {"type": ")") +
-                                   type.name + R"("}}]})";
+                                   type.name + R"(", "sourceRadius": 0.5}}]})";
         Diagnostics diagnostics;
         auto loaded =
             parseSceneJson(std::as_bytes(std::span(absent)), "default.scene.json", diagnostics);
@@ -138,6 +140,42 @@ TEST(LightTypeTable, PowerFieldMatchesTheTypesPhotometricQuantity) {
         EXPECT_TRUE(usesField(type.type, power));
         EXPECT_TRUE(usesField(type.type, LightField::Color));
     }
+}
+
+// Area lights (issue 15): a negative or zero size, a zero-area disk or a non-finite size is an
+// error naming the file and the element, and the light is skipped; a good one loads with its
+// per-light "quality".
+TEST(LightTypeTable, AreaLightsWithoutAnAreaAreRejectedByName) {
+    const std::string text = R"({"format": "candela.scene", "version": 1, "entities": [
+        {"name": "negative", "light": {"type": "rect", "width": -1, "height": 0.5}},
+        {"name": "flat", "light": {"type": "rect", "width": 1, "height": 0}},
+        {"name": "dot", "light": {"type": "disk", "sourceRadius": 0}},
+        {"name": "good", "light": {"type": "disk", "sourceRadius": 0.3, "lumens": 2000,
+                                   "quality": "representative"}}]})";
+    Diagnostics diagnostics;
+    auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "area.scene.json", diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    ASSERT_EQ(loaded->entities.size(), 4u);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_FALSE(loaded->entities[size_t(i)].light) << i;
+    ASSERT_TRUE(loaded->entities[3].light);
+    EXPECT_EQ(loaded->entities[3].light->quality, AreaLightQuality::Representative);
+    const std::string messages = diagnostics.toString();
+    EXPECT_NE(messages.find("area.scene.json"), std::string::npos) << messages;
+    EXPECT_NE(messages.find("/entities/0/light/width"), std::string::npos) << messages;
+    EXPECT_NE(messages.find("/entities/1/light/height"), std::string::npos) << messages;
+    EXPECT_NE(messages.find("/entities/2/light/sourceRadius"), std::string::npos) << messages;
+
+    Light nan;
+    nan.type = LightType::Rect;
+    nan.width = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_TRUE(rejects(validateLight(nan), "width"));
+    Light disk;
+    disk.type = LightType::Disk;
+    EXPECT_TRUE(rejects(validateLight(disk), "sourceRadius"));  // default radius 0: no area
+    disk.sourceRadius = 0.2f;
+    EXPECT_TRUE(validateLight(disk).empty());
+    EXPECT_NEAR(emitterArea(disk), 3.14159265f * 0.04f, 1e-6f);
 }
 
 }  // namespace

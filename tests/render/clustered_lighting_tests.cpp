@@ -61,6 +61,23 @@ std::vector<LightInstance> hardLights(size_t count, uint32_t seed) {
                 l.light.innerConeAngle = 0.5f * l.light.outerConeAngle;
                 l.direction = glm::normalize(glm::vec3(unit(rng) - 0.5f, -1.0f, unit(rng) - 0.5f));
                 break;
+            case 4:
+            case 5: {
+                // One-sided area lights (issue 15) facing every way: their half-sphere bounds
+                // must keep every lit pixel on the CPU and GPU paths alike. Sizes and facings
+                // come from the index, so the random stream (and every other light) is as it
+                // was before they were added.
+                const float k = float(i % 13);
+                l.light.type = i % 8 == 4 ? LightType::Rect : LightType::Disk;
+                l.light.width = 0.2f + 0.12f * k;
+                l.light.height = 1.7f - 0.11f * k;
+                l.light.sourceRadius = 0.1f + 0.05f * k;
+                const float angle = 0.7f * float(i);
+                l.direction = glm::normalize(
+                    glm::vec3(std::cos(angle), std::sin(1.3f * angle) - 0.3f, std::sin(angle)));
+                l.tubeAxis = glm::normalize(glm::cross(l.direction, glm::vec3(0.3f, 0.4f, 0.87f)));
+                break;
+            }
             default:
                 break;
         }

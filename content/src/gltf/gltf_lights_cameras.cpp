@@ -25,6 +25,17 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
         light.type = row->type;
     else
         context.error(element, "type '" + source.type + "' is unknown; treated as point");
+    // Engine extension (issue 15): extras.shape "rect" or "disk" makes a point or spot light a
+    // one-sided area light facing the node's -Z.
+    if (const tinygltf::Value* shape = member(source.extras, "shape")) {
+        const std::string name = shape->IsString() ? shape->Get<std::string>() : std::string();
+        if (name == "rect" || name == "disk") {
+            light.type = name == "rect" ? LightType::Rect : LightType::Disk;
+        } else {
+            context.error(element + ".extras.shape",
+                          "must be \"rect\" or \"disk\"; the light stays " + source.type);
+        }
+    }
     const bool inLux = lightTypeInfo(light.type).power == LightPower::Lux;
 
     if (!source.color.empty() && !copyFactors(source.color, light.color)) {
@@ -48,6 +59,9 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
     }
     if (inLux) {
         light.lux = intensity;  // glTF: lux for directional lights
+    } else if (isAreaLight(light.type)) {
+        // On-axis intensity of a Lambertian one-sided emitter: I = L A, power = pi L A.
+        light.lumens = std::numbers::pi_v<float> * intensity;
     } else {
         light.lumens = lumensFromCandela(intensity);  // glTF: candela for point and spot
     }
@@ -74,11 +88,16 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
 
     // Engine extension: the fields the light type table marks as glTF extras (sphere and
     // tube lights; the tube lies along the node's local X axis).
+    bool badShape = false;
     for (const LightFieldInfo& f : kLightFieldTable) {
         if (!f.gltfExtra || !member(source.extras, f.name)) continue;
         float v = 0;
         if (readNumber(source.extras, f.name, v) && v >= 0) {
             light.*f.scalar = v;
+        } else if (isAreaLight(light.type) && usesField(light.type, f.field)) {
+            context.error(element + ".extras." + f.name,
+                          "must be a finite number > 0 for an area light");
+            badShape = true;
         } else {
             context.warning(element + ".extras",
                             std::string(f.name) + " must be a finite number >= 0; ignored");
@@ -96,8 +115,15 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
     }
     // The rules the scene loader and the editor share; what is left to catch here is clamps
     // (colour), as the values above were already made valid.
-    for (const ValueProblem& problem : validateLight(light)) {
+    const ValueProblems problems = validateLight(light);
+    for (const ValueProblem& problem : problems) {
         context.warning(element, problem.field + ": " + problem.message);
+    }
+    // Extras can still be wrong for an area light (zero area, negative or NaN width): it is
+    // skipped, i.e. kept (nodes refer to it by index) but emitting nothing.
+    if (isAreaLight(light.type) && (badShape || anyRejected(problems))) {
+        context.error(element, "area light with an invalid shape; skipped (emits nothing)");
+        light.lumens = 0.0f;
     }
     return named;
 }

@@ -25,6 +25,9 @@ inline constexpr EnumNames<LightType, kLightTypeCount> kLightTypes = [] {
         names[i] = {kLightTypeTable[i].type, kLightTypeTable[i].name};
     return names;
 }();
+// An area light's "quality"; absent means the renderer's default (AreaLightQuality::Default).
+inline constexpr EnumNames<AreaLightQuality, 2> kAreaLightQualities{
+    {{AreaLightQuality::Representative, "representative"}, {AreaLightQuality::Ltc, "ltc"}}};
 inline constexpr EnumNames<Projection, 2> kProjections{
     {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}}};
 inline constexpr EnumNames<ExposureMode, 2> kExposureModes{

@@ -351,6 +351,7 @@ public:
         enumeration(j, p, "type", kLightTypes, l.type);
         l.castShadows = lightTypeInfo(l.type).castsShadowsByDefault;
         boolean(j, p, kCastShadowsKey, l.castShadows);
+        enumeration(j, p, "quality", kAreaLightQualities, l.quality);
         // Every field of the light type table (content/light_types.h), whatever the type.
         for (const LightFieldInfo& f : kLightFieldTable) {
             if (f.channels) {

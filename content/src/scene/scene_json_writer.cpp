@@ -141,6 +141,9 @@ struct Writer {
                 f.channels ? numbers(l.*f.channels, pointer) : number(l.*f.scalar, pointer);
         }
         out[kCastShadowsKey] = l.castShadows;
+        if (l.quality != AreaLightQuality::Default) {
+            out["quality"] = nameOf(kAreaLightQualities, l.quality);
+        }
         return out;
     }
 

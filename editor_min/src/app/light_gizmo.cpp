@@ -100,6 +100,23 @@ void drawSelectedLight(const Projector& projector, ImDrawList* list, const conte
             projector.line(list, position, position + forward * 2.0f, kRadiusColour);
             projector.circle(list, position + forward * 2.0f, x, y, 0.15f, kRadiusColour);
             break;
+        case content::LightOutline::Rect:
+        case content::LightOutline::Disk: {
+            // The emitting shape in the node's XY plane, its normal (-Z, the lit side) and
+            // the half of the falloff sphere it can reach.
+            if (content::lightTypeInfo(light.type).outline == content::LightOutline::Rect) {
+                const glm::vec3 hx = x * (0.5f * light.width), hy = y * (0.5f * light.height);
+                const glm::vec3 corners[4] = {position - hx - hy, position + hx - hy,
+                                              position + hx + hy, position - hx + hy};
+                for (int i = 0; i < 4; ++i)
+                    projector.line(list, corners[i], corners[(i + 1) % 4], kSourceColour);
+            } else {
+                projector.circle(list, position, x, y, light.sourceRadius, kSourceColour);
+            }
+            projector.line(list, position, position + forward * 0.5f, kSourceColour);
+            projector.circle(list, position, x, y, radius, kRadiusColour);
+            return;  // no sphere or tube source
+        }
     }
 
     // Source shape: a sphere (three circles), or a tube along local +X, capsule-shaped when it

@@ -12,13 +12,14 @@
 const uint kBoundsSphere = 0u;
 const uint kBoundsCapsule = 1u;
 const uint kBoundsCone = 2u;
+const uint kBoundsHalfSphere = 3u;  // one-sided area lights: sphere cut by the light's plane
 
 struct LightBounds {
     vec3 center;  // bounding sphere, used for the slice and tile ranges
     float radius;
     uint shape;
     vec3 segmentStart;    // capsule: segment; cone: apex
-    vec3 segmentEnd;      // capsule: segment end; cone: unit axis
+    vec3 segmentEnd;      // capsule: segment end; cone: unit axis; half sphere: normal
     float capsuleRadius;  // capsule: attenuation radius; cone: range
     float coneCos;
     float coneSin;
@@ -50,6 +51,11 @@ LightBounds lightBoundsInView(Light light, mat4 view) {
         b.segmentStart = position - axis * halfLength;
         b.segmentEnd = position + axis * halfLength;
         b.radius = range + halfLength;
+        return b;
+    }
+    if (lightBoundsKind(light.type) == kLightBoundsHalfSpace) {
+        b.shape = kBoundsHalfSphere;
+        b.segmentEnd = mat3(view) * light.direction;
         return b;
     }
     float coneCos = clamp(-light.spotOffset / light.spotScale, 0.0, 1.0);
@@ -118,6 +124,14 @@ bool lightTouchesBox(LightBounds b, vec3 lo, vec3 hi) {
     if (b.shape == kBoundsCapsule) {
         return distanceSegmentBox(b.segmentStart, b.segmentEnd, lo, hi) <=
                b.capsuleRadius + boundsSlack(b.radius);
+    }
+    if (b.shape == kBoundsHalfSphere) {
+        if (!boundingShapeTouchesBox(b, lo, hi)) return false;
+        // The box corner furthest along the normal, against the light's plane.
+        vec3 n = b.segmentEnd;
+        vec3 corner = vec3(n.x >= 0.0 ? hi.x : lo.x, n.y >= 0.0 ? hi.y : lo.y,
+                           n.z >= 0.0 ? hi.z : lo.z);
+        return dot(n, corner - b.center) >= -boundsSlack(b.radius);
     }
     return boundingShapeTouchesBox(b, lo, hi);
 }

@@ -19,6 +19,7 @@ const uint kLightDirectional = LIGHT_TYPE_DIRECTIONAL;
 const uint kLightBoundsEverywhere = LIGHT_BOUNDS_EVERYWHERE;
 const uint kLightBoundsFalloff = LIGHT_BOUNDS_FALLOFF;
 const uint kLightBoundsCone = LIGHT_BOUNDS_CONE;
+const uint kLightBoundsHalfSpace = LIGHT_BOUNDS_HALF_SPACE;
 const uint kLightBoundsByType[LIGHT_TYPE_COUNT] = uint[](LIGHT_BOUNDS_BY_TYPE);
 uint lightBoundsKind(uint type) {
     return kLightBoundsByType[min(type, uint(LIGHT_TYPE_COUNT) - 1u)];
@@ -33,6 +34,10 @@ bool lightInEveryCluster(uint type) {
 layout(constant_id = SPEC_SPHERE_LIGHTS_ENABLED) const bool kSphereLightsEnabled = true;
 layout(constant_id = SPEC_TUBE_LIGHTS_ENABLED) const bool kTubeLightsEnabled = true;
 layout(constant_id = SPEC_SPOT_LIGHTS_ENABLED) const bool kSpotLightsEnabled = true;
+layout(constant_id = SPEC_RECT_LIGHTS_ENABLED) const bool kRectLightsEnabled = true;
+layout(constant_id = SPEC_DISK_LIGHTS_ENABLED) const bool kDiskLightsEnabled = true;
+// The renderer's --area-lights (RendererOptions::areaLights): LTC (true) or representative.
+layout(constant_id = SPEC_AREA_LIGHTS_LTC) const bool kAreaLightsLtc = true;
 
 // The "+1" of eq. 9 is 1 cm^2 in UE4's centimetres: 1e-4 m^2 here. Without the conversion a
 // light 2 m away would be 20% too dark.
@@ -44,12 +49,14 @@ struct Light {
     float invAttenuationRadius;  // 1 / attenuationRadius
     vec3 intensity;              // colour * candela (lumens / 4 pi); lux for directional
     float sourceRadius;
-    vec3 direction;              // spot axis, or the direction light travels (directional)
+    vec3 direction;              // spot axis, the direction light travels (directional), or
+                                 // the emitting normal (rect, disk: the node's -Z)
     float sourceLength;
-    vec3 tubeAxis;               // unit; a tube spans position +- tubeAxis * sourceLength / 2
+    vec3 tubeAxis;               // unit; a tube spans position +- tubeAxis * sourceLength / 2;
+                                 // rect, disk: the node's +X
     uint type;
     float spotScale;             // 1 / (cos inner - cos outer)
-    float spotOffset;            // -cos outer * spotScale
+    float spotOffset;            // -cos outer * spotScale; rect, disk: quality (area_lights.glsl)
     vec2 shape;                  // per-type parameters (render/src/lights/gpu_light_types.h)
 };
 
@@ -60,6 +67,10 @@ struct LightIncidence {
     vec3 specularL;            // unit direction to the representative point
     vec3 specularIlluminance;  // lux: incl. NoL at specularL and energy normalisation
     vec3 incidentIlluminance;  // lux at normal incidence, no cosine (for wrap/transmission)
+    // (magnitude n, Fresnel part f) when specularIlluminance is already the lobe's integral
+    // over the light (area lights by LTC, area_lights.glsl): specular = (F0 (n - f) + F90 f) x
+    // specularIlluminance. (0, 0): evaluate the BRDF along specularL.
+    vec2 specularLtc;
 };
 
 // eq. 9 numerator: reaches exactly zero at the attenuation radius, so culling by that radius
@@ -181,6 +192,7 @@ LightIncidence evaluateLocalLight(Light light, vec3 P, vec3 N, vec3 R, float alp
     o.diffuseIlluminance = intensity * diffuseFactor;
     o.specularIlluminance = intensity * (NoLs * inverseSquare(specularDistSq) * energy);
     o.incidentIlluminance = intensity * inverseSquare(centerDistSq);
+    o.specularLtc = vec2(0.0);
     return o;
 }
 
@@ -192,13 +204,24 @@ LightIncidence evaluateDirectionalLight(Light light, vec3 N) {
     o.diffuseIlluminance = light.intensity * NoL;
     o.specularIlluminance = o.diffuseIlluminance;
     o.incidentIlluminance = light.intensity;
+    o.specularLtc = vec2(0.0);
     return o;
 }
+
+#include "common/area_lights.glsl"
 
 // The incidence of any light: one function per light type, chosen by its type code. A new type
 // adds its function above and its case here (render/README.md "Adding a light type").
 LightIncidence evaluateLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
     if (light.type == kLightDirectional) return evaluateDirectionalLight(light, N);
+    if ((kRectLightsEnabled && light.type == LIGHT_TYPE_RECT) ||
+        (kDiskLightsEnabled && light.type == LIGHT_TYPE_DISK)) {
+        // The per-light "quality" wins over the renderer's default.
+        uint quality = uint(light.spotOffset);
+        bool representative = quality == kAreaQualityRepresentative ||
+                              (quality == kAreaQualityDefault && !kAreaLightsLtc);
+        return evaluateAreaLight(light, P, N, R, alpha, representative);
+    }
     return evaluateLocalLight(light, P, N, R, alpha);  // point and spot, sphere and tube
 }
 

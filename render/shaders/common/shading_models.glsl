@@ -73,6 +73,14 @@ vec3 specularGgxAnisotropic(vec3 specularColor, Surface s, vec3 N, vec3 V, Light
            inc.specularIlluminance;
 }
 
+// An incidence whose specular is already integrated over the light by LTC (area lights):
+// Fresnel as the fit splits it, F0 (n - f) + F90 f, with F90 as fresnelSchlickSg's.
+vec3 specularLtcIntegrated(vec3 specularColor, LightIncidence inc) {
+    float n = inc.specularLtc.x, f = inc.specularLtc.y;
+    return (specularColor * (n - f) + saturate(50.0 * specularColor.g) * f) *
+           inc.specularIlluminance;
+}
+
 // Cook-Torrance specular (eq. 2) for the representative direction of the incidence: single
 // scattering, with the variant's visibility term (visibilitySmith).
 vec3 specularGgx(vec3 specularColor, float roughness, vec3 N, vec3 V, LightIncidence inc) {
@@ -90,7 +98,8 @@ vec3 specularGgx(vec3 specularColor, float roughness, vec3 N, vec3 V, LightIncid
 // specularGgx plus, for the energy-conserving BRDF, the energy of the further bounces
 // (multipleScatteringCompensation): every light shape goes through here.
 vec3 specularLobe(Surface s, vec3 specularColor, vec3 N, vec3 V, LightIncidence inc) {
-    vec3 specular = kAnisotropyEnabled && s.anisotropy > 0.0
+    vec3 specular = inc.specularLtc.x > 0.0 ? specularLtcIntegrated(specularColor, inc)
+                    : kAnisotropyEnabled && s.anisotropy > 0.0
                         ? specularGgxAnisotropic(specularColor, s, N, V, inc)
                         : specularGgx(specularColor, s.roughness, N, V, inc);
     if (kEnergyConserving) {
@@ -165,8 +174,11 @@ AmbientTerms ambientTermsOf(Surface s) {
 // roughness: the coat factor times a dielectric GGX lobe with the variant's visibility. What
 // it reflects it takes from the layers below: they are scaled by clearCoatAttenuation.
 vec3 clearCoatLobe(Surface s, vec3 V, LightIncidence coatIncidence) {
-    return s.clearCoat * specularGgx(vec3(kClearCoatF0), s.clearCoatRoughness, s.clearCoatN, V,
-                                     coatIncidence);
+    vec3 coat = coatIncidence.specularLtc.x > 0.0
+                    ? specularLtcIntegrated(vec3(kClearCoatF0), coatIncidence)
+                    : specularGgx(vec3(kClearCoatF0), s.clearCoatRoughness, s.clearCoatN, V,
+                                  coatIncidence);
+    return s.clearCoat * coat;
 }
 
 // What reaches the base through the coat and back: 1 - factor x the coat's directional albedo

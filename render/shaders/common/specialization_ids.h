@@ -19,6 +19,9 @@
 // How sphere and tube lights integrate (lights.glsl, --area-lights): seed 000's representative
 // point (false) or linearly transformed cosines (true).
 #define SPEC_AREA_LIGHTS_LTC 23
+// Area light shapes a variant contains (lights.glsl, issue 15).
+#define SPEC_RECT_LIGHTS_ENABLED 24
+#define SPEC_DISK_LIGHTS_ENABLED 25
 // Lighting and forward passes: clustered lists or brute force, pair counters, IBL mode
 // (0 none, 1 split sum, 2 mobile, 3 reference).
 #define SPEC_CLUSTERED 30

@@ -46,7 +46,9 @@ LightBounds lightBoundsInView(const LightInstance& instance, const glm::mat4& vi
     const float range =
         std::max(std::isfinite(light.attenuationRadius) ? light.attenuationRadius : 0.0f, 0.0f);
     const glm::vec3 position = glm::vec3(view * glm::vec4(instance.position, 1.0f));
-    const float halfLength = 0.5f * std::max(light.sourceLength, 0.0f);
+    // Area lights have no tube (packLight writes their sourceLength as 0).
+    const float halfLength =
+        content::isAreaLight(light.type) ? 0.0f : 0.5f * std::max(light.sourceLength, 0.0f);
     if (halfLength > 0.0f && std::isfinite(halfLength)) {
         glm::vec3 axis = glm::normalize(glm::mat3(view) * instance.tubeAxis);
         b.shape = LightShape::Capsule;
@@ -59,6 +61,16 @@ LightBounds lightBoundsInView(const LightInstance& instance, const glm::mat4& vi
     }
     b.center = position;
     b.radius = range;
+    if (gpuLightType(light.type).bounds == ClusterBounds::HalfSpace) {
+        // As packLight: a unit normal, -Z when the direction is degenerate.
+        const float lengthSq = glm::dot(instance.direction, instance.direction);
+        const glm::vec3 normal = std::isfinite(lengthSq) && lengthSq >= 1e-20f
+                                     ? instance.direction / std::sqrt(lengthSq)
+                                     : glm::vec3(0.0f, 0.0f, -1.0f);
+        b.shape = LightShape::HalfSphere;
+        b.segmentEnd = glm::mat3(view) * normal;
+        return b;
+    }
     const float outer = std::clamp(light.outerConeAngle, 0.0f, 1.5707963f);
     // Spots narrower than ~80 degrees get the cone test; wider ones gain little from it.
     if (gpuLightType(light.type).bounds == ClusterBounds::Cone && outer < 1.4f) {
@@ -86,6 +98,15 @@ bool lightTouchesBox(const LightBounds& b, const glm::vec3& lo, const glm::vec3&
         case LightShape::Sphere: {
             float r = b.radius + slack(b.radius);
             return distanceSqPointBox(b.center, lo, hi) <= r * r;
+        }
+        case LightShape::HalfSphere: {
+            float r = b.radius + slack(b.radius);
+            if (distanceSqPointBox(b.center, lo, hi) > r * r) return false;
+            // The box corner furthest along the normal, against the light's plane.
+            const glm::vec3 n = b.segmentEnd;
+            const glm::vec3 corner(n.x >= 0.0f ? hi.x : lo.x, n.y >= 0.0f ? hi.y : lo.y,
+                                   n.z >= 0.0f ? hi.z : lo.z);
+            return glm::dot(n, corner - b.center) >= -slack(b.radius);
         }
         case LightShape::Capsule:
             return distanceSegmentBox(b.segmentStart, b.segmentEnd, lo, hi) <=

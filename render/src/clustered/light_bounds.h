@@ -10,14 +10,16 @@
 
 namespace candela::render {
 
-enum class LightShape : uint8_t { Sphere, Capsule, Cone };
+// HalfSphere: one-sided area lights (rect, disk), the sphere cut by the plane through its
+// centre with normal segmentEnd (the emitting side is where dot(p - center, normal) >= 0).
+enum class LightShape : uint8_t { Sphere, Capsule, Cone, HalfSphere };
 
 struct LightBounds {
     glm::vec3 center{0.0f};  // bounding sphere, used for the slice and tile ranges
     float radius = 0.0f;
     LightShape shape = LightShape::Sphere;
     glm::vec3 segmentStart{0.0f};  // capsule: segment; cone: apex
-    glm::vec3 segmentEnd{0.0f};    // capsule: segment end; cone: unit axis
+    glm::vec3 segmentEnd{0.0f};    // capsule: segment end; cone: unit axis; half sphere: normal
     float capsuleRadius = 0.0f;    // capsule: attenuation radius; cone: range
     float coneCos = 0.0f;
     float coneSin = 0.0f;
@@ -31,8 +33,8 @@ bool lightTouchesBox(const LightBounds& bounds, const glm::vec3& boxMin, const g
 
 // Which of `count` boxes (6 floats apart: min xyz, max xyz; min.x > max.x for an empty box)
 // the light's bounding shape reaches, as bits from bit 0: the light itself for spheres and
-// cones, the bounding sphere for capsules (a cheap conservative test for many small boxes; the
-// quarter masks of light assignment). Each box is first widened on every side by
+// cones, the bounding sphere for capsules and half spheres (a cheap conservative test for many
+// small boxes; the quarter masks of light assignment). Each box is first widened on every side by
 // padPerDepth * (1 - min z), as the assignment pads pixel boxes.
 uint32_t boundingShapeTouchesBoxes(const LightBounds& bounds, const float* boxes, uint32_t count,
                                    float padPerDepth);

@@ -33,7 +33,8 @@ void boundingSphere(const LightInstance& instance, glm::vec3& center, float& rad
         std::max(std::isfinite(light.attenuationRadius) ? light.attenuationRadius : 0.0f, 0.0f);
     center = instance.position;
     radius = range;
-    const float halfLength = 0.5f * std::max(light.sourceLength, 0.0f);
+    const float halfLength =
+        content::isAreaLight(light.type) ? 0.0f : 0.5f * std::max(light.sourceLength, 0.0f);
     if (halfLength > 0.0f && std::isfinite(halfLength)) {
         radius = range + halfLength;
         return;

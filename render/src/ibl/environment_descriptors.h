@@ -23,6 +23,10 @@ struct EnvironmentDescriptors {
     VkDescriptorBufferInfo irradianceSh;   // 9 vec4
     VkDescriptorBufferInfo samplingTable;  // the reference mode's luminance CDF
     float prefilteredMipCount = 1.0f;
+    // Not the sky's, but bound beside it by the same passes: the area lights' LTC table
+    // (lights/ltc_table_texture.h), filled in by the renderer.
+    VkDescriptorImageInfo ltcMatrix{};
+    VkDescriptorImageInfo ltcMagnitude{};
 };
 
 class EnvironmentPlaceholders {

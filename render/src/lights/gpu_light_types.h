@@ -24,7 +24,21 @@ enum class ClusterBounds : uint8_t {
     // The spot cone out to the falloff radius (spots wider than ~80 degrees and tubes are
     // bounded as Falloff).
     Cone = LIGHT_BOUNDS_CONE,
+    // One-sided area lights (rect, disk): the falloff sphere around the centre cut by the
+    // half-space in front of the light's plane.
+    HalfSpace = LIGHT_BOUNDS_HALF_SPACE,
 };
+
+// Rect: (width, height); disk: (radius, radius). Non-finite or negative sizes become 0 (a
+// light of zero area, which packLight makes emit nothing).
+inline void encodeRectShape(const content::Light& light, float shape[2]) {
+    shape[0] = light.width >= 0.0f && light.width < 1e30f ? light.width : 0.0f;
+    shape[1] = light.height >= 0.0f && light.height < 1e30f ? light.height : 0.0f;
+}
+inline void encodeDiskShape(const content::Light& light, float shape[2]) {
+    const float r = light.sourceRadius;
+    shape[0] = shape[1] = r >= 0.0f && r < 1e30f ? r : 0.0f;
+}
 
 inline constexpr uint32_t kNoSpecialization = ~0u;
 
@@ -50,6 +64,10 @@ inline constexpr std::array<GpuLightTypeInfo, content::kLightTypeCount> kGpuLigh
      "lights_spot", nullptr},
     {content::LightType::Directional, LIGHT_TYPE_DIRECTIONAL, ClusterBounds::Everywhere,
      kNoSpecialization, nullptr, nullptr},
+    {content::LightType::Rect, LIGHT_TYPE_RECT, ClusterBounds::HalfSpace, SPEC_RECT_LIGHTS_ENABLED,
+     "lights_rect", encodeRectShape},
+    {content::LightType::Disk, LIGHT_TYPE_DISK, ClusterBounds::HalfSpace, SPEC_DISK_LIGHTS_ENABLED,
+     "lights_disk", encodeDiskShape},
 }};
 
 constexpr bool gpuLightTypeTableIsComplete() {

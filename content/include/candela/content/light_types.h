@@ -25,6 +25,8 @@ enum class LightField : std::uint8_t {
     SourceLength,
     InnerConeAngle,
     OuterConeAngle,
+    Width,
+    Height,
 };
 
 // How validateLight checks a field (the editor's limits follow from it too).
@@ -56,7 +58,7 @@ struct LightFieldInfo {
     std::array<float, 3> Light::*channels;
 };
 
-inline constexpr std::array<LightFieldInfo, 8> kLightFieldTable{{
+inline constexpr std::array<LightFieldInfo, 10> kLightFieldTable{{
     {LightField::Color, "color", "", LightFieldRule::ColorChannels, kMaxLightColorChannel, "Colour",
      "Set Light Colour", LightFieldWidget::Color, 0, 0, 0, "", false, nullptr, &Light::color},
     {LightField::Lumens, "lumens", "lm", LightFieldRule::NonNegative, kMaxLumens, "Lumens",
@@ -79,6 +81,12 @@ inline constexpr std::array<LightFieldInfo, 8> kLightFieldTable{{
     {LightField::OuterConeAngle, "outerConeAngle", "rad", LightFieldRule::ConeAngle, 0,
      "Outer cone", "Set Outer Cone", LightFieldWidget::Angle, 0, 0.0f, 90.0f, "", false,
      &Light::outerConeAngle, nullptr},
+    {LightField::Width, "width", "m", LightFieldRule::Positive, kMaxAreaLightSize, "Width",
+     "Set Width", LightFieldWidget::Drag, 0.01f, 0.001f, 100.0f, "%.3f m", true, &Light::width,
+     nullptr},
+    {LightField::Height, "height", "m", LightFieldRule::Positive, kMaxAreaLightSize, "Height",
+     "Set Height", LightFieldWidget::Drag, 0.01f, 0.001f, 100.0f, "%.3f m", true, &Light::height,
+     nullptr},
 }};
 
 using LightFieldSet = std::uint32_t;
@@ -93,13 +101,16 @@ constexpr LightFieldSet fieldSet(Fields... fields) {
 }
 
 // Which photometric quantity gives a type's power: luminous power (lumens; intensity
-// lm / 4 pi cd, glTF's intensity in cd) or illuminance (lux, glTF's intensity in lux).
-enum class LightPower : std::uint8_t { Lumens, Lux };
+// lm / 4 pi cd, glTF's intensity in cd), illuminance (lux, glTF's intensity in lux), or the
+// luminous power of a one-sided Lambertian area emitter (lumens; luminance lm / (pi area),
+// glTF's intensity is the on-axis intensity in cd, so lm = pi cd).
+enum class LightPower : std::uint8_t { Lumens, Lux, AreaLumens };
 
 // What the editor's gizmo outlines as the light's reach: the falloff sphere, the spot cone out
 // to the falloff radius, or the direction light travels. The source's own shape (sphere,
 // tube) is outlined from its fields.
-enum class LightOutline : std::uint8_t { FalloffSphere, Cone, Direction };
+// Area lights (rect, disk) outline their emitting shape and its normal.
+enum class LightOutline : std::uint8_t { FalloffSphere, Cone, Direction, Rect, Disk };
 
 struct LightTypeInfo {
     LightType type;
@@ -118,7 +129,7 @@ struct LightTypeInfo {
 inline constexpr const char* kCastShadowsKey = "castShadows";
 
 // One row per LightType, in enumerator order (checked below).
-inline constexpr std::array<LightTypeInfo, 3> kLightTypeTable{{
+inline constexpr std::array<LightTypeInfo, 5> kLightTypeTable{{
     {LightType::Point, "point", "Point", "point", LightPower::Lumens,
      fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
               LightField::SourceRadius, LightField::SourceLength),
@@ -130,6 +141,15 @@ inline constexpr std::array<LightTypeInfo, 3> kLightTypeTable{{
      LightOutline::Cone, false},
     {LightType::Directional, "directional", "Directional", "directional", LightPower::Lux,
      fieldSet(LightField::Color, LightField::Lux), LightOutline::Direction, true},
+    // No KHR type: glTF gives these by extras.shape on a point or spot light.
+    {LightType::Rect, "rect", "Rectangle", nullptr, LightPower::AreaLumens,
+     fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
+              LightField::Width, LightField::Height),
+     LightOutline::Rect, false},
+    {LightType::Disk, "disk", "Disk", nullptr, LightPower::AreaLumens,
+     fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
+              LightField::SourceRadius),
+     LightOutline::Disk, false},
 }};
 
 inline constexpr std::size_t kLightTypeCount = kLightTypeTable.size();
@@ -148,6 +168,10 @@ constexpr std::size_t lightTypeIndex(LightType type) {
             return 1;
         case LightType::Directional:
             return 2;
+        case LightType::Rect:
+            return 3;
+        case LightType::Disk:
+            return 4;
     }
     return kNotALightType;
 }
@@ -184,6 +208,23 @@ constexpr const LightFieldInfo& lightFieldInfo(LightField field) {
 
 constexpr bool usesField(LightType type, LightField field) {
     return (lightTypeInfo(type).fields & fieldBit(field)) != 0;
+}
+
+constexpr bool isAreaLight(LightType type) {
+    return lightTypeInfo(type).power == LightPower::AreaLumens;
+}
+
+// The emitting area of a rect or disk light in m^2 (0 for the other types): luminance is
+// lumens / (pi area).
+constexpr float emitterArea(const Light& light) {
+    switch (lightTypeInfo(light.type).outline) {
+        case LightOutline::Rect:
+            return light.width * light.height;
+        case LightOutline::Disk:
+            return 3.14159265f * light.sourceRadius * light.sourceRadius;
+        default:
+            return 0.0f;
+    }
 }
 
 }  // namespace candela::content

@@ -31,6 +31,7 @@ class EnvironmentSamplingTable;
 class FrameGraph;
 class FrameGraphExecutor;
 class FrameSubmitter;
+class LtcTableTexture;
 class GBufferPass;
 class GpuContext;
 class GpuLightBuffer;
@@ -179,6 +180,7 @@ private:
     std::unique_ptr<DebugTextPass> debugTextPass_;  // made on the first frame with text
     std::unique_ptr<EnvironmentBrdfLut> brdfLut_;
     std::unique_ptr<EnvironmentPlaceholders> environmentPlaceholders_;
+    std::unique_ptr<LtcTableTexture> ltcTable_;  // area lights (lights/ltc_table_texture.h)
     std::unique_ptr<EnvironmentSamplingTable> samplingTable_;
     std::vector<std::string> features_;
     RendererStats stats_;

@@ -21,6 +21,11 @@
 #define FORWARD_BINDING_SHADOW_VIEWS 23
 #define FORWARD_BINDING_SHADOW_LIGHTS 24
 #define FORWARD_BINDING_SHADOW_ATLAS_COMPARE 25
+// The area lights' LTC table (lights/ltc_table_texture.h, common/area_lights.glsl).
+#define FORWARD_BINDING_LTC_MATRIX 26
+#define FORWARD_BINDING_LTC_MAGNITUDE 27
+#define AREA_LIGHT_LTC_MATRIX_BINDING FORWARD_BINDING_LTC_MATRIX
+#define AREA_LIGHT_LTC_MAGNITUDE_BINDING FORWARD_BINDING_LTC_MAGNITUDE
 
 // transparent_occupancy.frag (camera in its vertex stage, gbuffer.vert).
 #define TRANSPARENT_OCCUPANCY_BINDING_DEPTH 1

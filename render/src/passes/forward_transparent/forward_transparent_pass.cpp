@@ -139,6 +139,10 @@ void ForwardTransparentPass::buildShadingPipeline() {
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
         bindings.push_back({FORWARD_BINDING_FIRST_TEXTURE + slot,
@@ -310,7 +314,9 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
             sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
             storageBufferWrite(FORWARD_BINDING_SHADOW_VIEWS, &in.shadows->views),
             storageBufferWrite(FORWARD_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
-            sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare)};
+            sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
+            sampledImageWrite(FORWARD_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
+            sampledImageWrite(FORWARD_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};

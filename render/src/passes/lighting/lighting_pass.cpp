@@ -153,6 +153,10 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
          VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHTING_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
     };
     pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
     built_ = true;
@@ -225,6 +229,8 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
         storageBufferWrite(LIGHTING_BINDING_SHADOW_VIEWS, &in.shadows->views),
         storageBufferWrite(LIGHTING_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
         sampledImageWrite(LIGHTING_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
+        sampledImageWrite(LIGHTING_BINDING_LTC_MATRIX, &env.ltcMatrix),
+        sampledImageWrite(LIGHTING_BINDING_LTC_MAGNITUDE, &env.ltcMagnitude),
     };
     Push push{toGpu(*in.grid),           in.directionalCount, in.skyIntensity,
               env.prefilteredMipCount,   in.referenceSamples, in.aoIntensity,

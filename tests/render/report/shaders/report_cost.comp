@@ -31,6 +31,11 @@ const uint kMultipleScattering = 15u;
 const uint kPointLight = 16u;
 const uint kSphereLtc = 17u;
 const uint kTubeLtc = 18u;
+const uint kPointLightShading = 20u;
+const uint kRectRepresentative = 21u;
+const uint kRectLtc = 22u;
+const uint kDiskRepresentative = 23u;
+const uint kDiskLtc = 24u;
 
 layout(std430, binding = 0) writeonly buffer Sums {
     float sums[];
@@ -71,6 +76,46 @@ Light areaLight(float sourceRadius, float sourceLength) {
     light.spotScale = 0.0;
     light.spotOffset = 0.0;
     return light;
+}
+
+// Rect and disk lights: diffuse and specular (GGX along the representative direction, or the
+// LTC integral with an M^-1 made from the inputs: the two table fetches are not timed), F0 = 1.
+// The point light: evaluateLocalLight plus GGX along its direction, the baseline they compare to.
+float pointLightShading(vec3 V, float roughness) {
+    float alpha = alphaFromRoughness(roughness);
+    vec3 N = vec3(0.0, 0.0, 1.0);
+    LightIncidence inc = evaluateLocalLight(areaLight(0.0, 0.0), vec3(0.0), N, reflect(-V, N), alpha);
+    vec3 H = safeNormalize(V + inc.specularL);
+    return inc.diffuseIlluminance.x + distributionGgx(alpha * alpha, saturate(H.z)) *
+           visibilitySmithGgxCorrelated(alpha, saturate(V.z), saturate(inc.specularL.z)) *
+           inc.specularIlluminance.x;
+}
+
+AreaShape costShape(bool disk, float size) {
+    AreaShape s;
+    s.center = vec3(0.5, 0.0, 0.866);
+    s.normal = -s.center;
+    s.axisX = vec3(0.866, 0.0, -0.5);
+    s.axisY = cross(s.axisX, s.normal);
+    s.isDisk = disk;
+    s.halfSize = vec2(0.5 * size);
+    return s;
+}
+
+float areaShading(bool disk, bool ltc, vec3 V, float roughness, float size) {
+    AreaShape s = costShape(disk, size);
+    vec3 N = vec3(0.0, 0.0, 1.0);
+    float alpha = alphaFromRoughness(roughness);
+    if (ltc) {
+        mat3 minv = ltcInverseMatrix(vec4(1.0, 0.1 * roughness, -0.1 * roughness, 0.5 + roughness));
+        return areaExactDiffuse(s, vec3(0.0), N) + areaLtcSpecularIntegral(s, vec3(0.0), N, V, minv);
+    }
+    vec3 L;
+    float diffuse = areaRepresentativeDiffuse(s, vec3(0.0), N, false, L);
+    float e = areaRepresentativeSpecular(s, vec3(0.0), N, reflect(-V, N), alpha, L);
+    vec3 H = safeNormalize(V + L);
+    return diffuse + distributionGgx(alpha * alpha, saturate(H.z)) *
+           visibilitySmithGgxCorrelated(alpha, saturate(V.z), saturate(L.z)) * e;
 }
 
 // Each function gets its own loop (the switch is outside it, so no case pays for the others'
@@ -135,6 +180,15 @@ void main() {
             break;
         case kSphereLtc: TIMED_LOOP(ltcSpecular(SPHERE_LIGHT, AREA_VIEW, LTC_MINV)); break;
         case kTubeLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV)); break;
+        case kPointLightShading: TIMED_LOOP(pointLightShading(AREA_VIEW, 0.1 + 0.9 * y)); break;
+        case kRectRepresentative:
+            TIMED_LOOP(areaShading(false, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z));
+            break;
+        case kRectLtc: TIMED_LOOP(areaShading(false, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z)); break;
+        case kDiskRepresentative:
+            TIMED_LOOP(areaShading(true, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z));
+            break;
+        case kDiskLtc: TIMED_LOOP(areaShading(true, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z)); break;
         default: break;
     }
     sums[id] = sum;

@@ -29,6 +29,11 @@ const uint kProduct = 9u;  // a.x * a.y: tells whether the device keeps denormal
 const uint kLtcQuad = 10u;
 // ltcDiskIntegral with center a.xyz, axisU b.xyz, axisV c.xyz and M^-1 as for kLtcQuad.
 const uint kLtcDisk = 11u;
+// Irradiance per unit luminance of a rect or disk light (area_lights.glsl) at P with normal N:
+// a.xyz centre, a.w 1 for a disk; b.xyz emitting normal, b.w half width (disk: radius);
+// c.xyz axis X, c.w half height; d.xyz P; N = +z.
+// -> (exact / "ltc" diffuse, representative diffuse, its unclamped variant, 0)
+const uint kAreaLightDiffuse = 20u;
 
 struct LightSample {
     vec4 a;
@@ -86,6 +91,20 @@ vec4 evaluate(LightSample s) {
         case kLtcDisk: {
             mat3 minv = mat3(vec3(s.a.w, 0.0, s.c.w), vec3(0.0, 1.0, 0.0), vec3(s.b.w, 0.0, s.d.w));
             return vec4(ltcDiskIntegral(minv, s.a.xyz, s.b.xyz, s.c.xyz));
+        }
+        case kAreaLightDiffuse: {
+            AreaShape shape;
+            shape.center = s.a.xyz;
+            shape.normal = s.b.xyz;
+            shape.axisX = s.c.xyz;
+            shape.axisY = cross(s.c.xyz, s.b.xyz);
+            shape.isDisk = s.a.w > 0.5;
+            shape.halfSize = vec2(s.b.w, s.c.w);
+            vec3 N = vec3(0.0, 0.0, 1.0);
+            vec3 L;
+            return vec4(areaExactDiffuse(shape, s.d.xyz, N),
+                        areaRepresentativeDiffuse(shape, s.d.xyz, N, false, L),
+                        areaRepresentativeDiffuse(shape, s.d.xyz, N, true, L), 0.0);
         }
         default: return vec4(0.0);
     }

@@ -67,6 +67,7 @@ LightIncidence pointLightByDefinition(Light light, vec3 P, vec3 N) {
     o.diffuseIlluminance = intensity * illuminancePerIntensity;
     o.specularIlluminance = intensity * illuminancePerIntensity;
     o.incidentIlluminance = intensity * inverseSquare(distanceSq);
+    o.specularLtc = vec2(0.0);
     return o;
 }
 

@@ -5,15 +5,23 @@
 
 namespace candela::content {
 
-enum class LightType : std::uint8_t { Point, Spot, Directional };
+// Rect and Disk (issue 15) are one-sided area emitters facing the node's -Z.
+enum class LightType : std::uint8_t { Point, Spot, Directional, Rect, Disk };
+
+// How an area light (rect, disk) is shaded: the renderer's default (its --area-lights), or a
+// per-light override ("quality" in scene files): seed 004's representative point or LTC.
+enum class AreaLightQuality : std::uint8_t { Default, Representative, Ltc };
 
 struct Light {
     LightType type = LightType::Point;
     std::array<float, 3> color{1.0f, 1.0f, 1.0f};  // linear RGB, multiplies the photometric value
-    float lumens = 800.0f;              // point/spot luminous power; intensity = lumens / (4 pi) cd
-    float lux = 10.0f;                  // directional illuminance
+    float lumens = 800.0f;  // luminous power; point/spot: intensity = lumens / (4 pi) cd,
+                            // rect/disk: luminance = lumens / (pi area) cd/m^2 (Lambertian)
+    float lux = 10.0f;      // directional illuminance
     float attenuationRadius = 10.0f;    // metres; eq. 9 window reaches zero here
-    float sourceRadius = 0.0f;          // metres; > 0 makes a sphere light (eq. 10-14)
+    float sourceRadius = 0.0f;          // metres; > 0 makes a sphere light (eq. 10-14); disk radius
+    float width = 1.0f;                 // metres, rect only: along the node's local +X
+    float height = 1.0f;                // metres, rect only: along the node's local +Y
     float sourceLength = 0.0f;          // metres; > 0 makes a tube along local +X (eq. 16-20)
     float innerConeAngle = 0.0f;        // radians, spot only
     float outerConeAngle = 0.7853982f;  // radians, spot only
@@ -21,6 +29,7 @@ struct Light {
     // (LightTypeInfo::castsShadowsByDefault: directional yes, local lights no); code that builds
     // a Light gets no shadows unless it asks.
     bool castShadows = false;
+    AreaLightQuality quality = AreaLightQuality::Default;  // rect and disk only
 };
 
 }  // namespace candela::content
