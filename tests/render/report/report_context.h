@@ -35,11 +35,8 @@ void addBrdfRows(ReportContext& context);
 void addEnvironmentBrdfRows(ReportContext& context, const std::vector<float>& lut,
                             uint32_t lutSize);
 void addAreaLightRows(ReportContext& context);
-<<<<<<< HEAD
 void addLtcAreaLightRows(ReportContext& context);
-=======
 void addAreaLightShapeRows(ReportContext& context);
->>>>>>> areatypes
 void addFalloffRow(ReportContext& context);
 void addSplitSumRow(ReportContext& context);
 void addClusteredRow(ReportContext& context);

@@ -124,11 +124,8 @@ int main(int argc, char** argv) {
         section("environment BRDF",
                 [&] { addEnvironmentBrdfRows(context, lut, render::EnvironmentBrdfLut::kSize); });
         section("area lights", [&] { addAreaLightRows(context); });
-<<<<<<< HEAD
         section("area lights by LTC", [&] { addLtcAreaLightRows(context); });
-=======
         section("area light shapes", [&] { addAreaLightShapeRows(context); });
->>>>>>> areatypes
         section("falloff", [&] { addFalloffRow(context); });
         section("image-based lighting", [&] { addSplitSumRow(context); });
         section("clustered lights", [&] { addClusteredRow(context); });

@@ -29,18 +29,15 @@ enum class CostFunction : uint32_t {
     TubeMonteCarlo = 13,
     VisSmithGgxFast = 14,
     MultipleScattering = 15,
-<<<<<<< HEAD
     PointLight = 16,  // representative-point specular (correlated Smith) of a point light
     SphereLtc = 17,
     TubeLtc = 18,
-=======
     // Rect and disk lights (area_light_shapes_rows.cpp): diffuse + specular of one light.
     PointLightShading = 20,
     RectRepresentative = 21,
     RectLtc = 22,
     DiskRepresentative = 23,
     DiskLtc = 24,
->>>>>>> areatypes
 };
 
 struct CostJob {
