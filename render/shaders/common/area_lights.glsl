@@ -16,6 +16,7 @@
 
 #include "common/area_light_representative.glsl"
 #include "common/ltc.glsl"
+#include "common/ltc_area_lights.glsl"
 #include "common/ltc_disk.glsl"
 
 // Per-light `quality` (Light.spotOffset of area lights, gpu_light.cpp): 0 the renderer's
@@ -68,16 +69,7 @@ float areaExactDiffuse(AreaShape s, vec3 P, vec3 N) {
 // view (rows (00, 0, 02), (0, 1, 0), (20, 0, 22) in the frame of N and V's tangent part).
 float areaLtcSpecularIntegral(AreaShape s, vec3 P, vec3 N, vec3 V, mat3 minv) {
     if (dot(P - s.center, s.normal) <= 0.0) return 0.0;  // behind: one-sided
-    vec3 tangent = V - N * dot(N, V);
-    float tangentLength = length(tangent);
-    vec3 T1 = tangentLength > 1e-6 ? tangent / tangentLength : tangentFrame(N)[0];
-    vec3 T2 = cross(N, T1);
-    return areaShapeIntegral(s, P, transpose(mat3(T1, T2, N)), minv);
-}
-
-// M^-1 from the table's four entries (00, 02, 20, 22).
-mat3 ltcInverseMatrix(vec4 m) {
-    return mat3(vec3(m.x, 0.0, m.z), vec3(0.0, 1.0, 0.0), vec3(m.y, 0.0, m.w));
+    return areaShapeIntegral(s, P, ltcShadingFrame(N, V), minv);
 }
 
 #ifdef AREA_LIGHT_LTC_MATRIX_BINDING
