@@ -471,6 +471,9 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         rendererOptions.ibl = options.ibl;
         rendererOptions.brdf = brdfFor(options, world.get());
         rendererOptions.aa = antiAliasingFor(options, world.get());
+        rendererOptions.msaaSamples = options.msaa                  ? *options.msaa
+                                      : world && world->sceneMsaa() ? *world->sceneMsaa()
+                                                                    : 1u;
         rendererOptions.bloomStrength = options.bloom ? *options.bloom
                                         : world && world->sceneBloom()
                                             ? *world->sceneBloom()
