@@ -29,6 +29,7 @@
 #include "passes/exposure/exposure_bindings.h"
 #include "passes/exposure/exposure_pass.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
+#include "passes/forward_transparent/msaa_samples.h"
 #include "passes/fxaa/fxaa_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
@@ -221,7 +222,8 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     lightingPass_ = std::make_unique<LightingPass>(context_);
     environmentPlaceholders_ = std::make_unique<EnvironmentPlaceholders>(context_);
     ltcTable_ = std::make_unique<LtcTableTexture>(context_);
-    transparentPass_ = std::make_unique<ForwardTransparentPass>(context_);
+    transparentPass_ = std::make_unique<ForwardTransparentPass>(
+        context_, forwardMsaaSamples(context_, options_.msaaSamples));
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
     if (options_.aa == AntiAliasing::Taa) taaPass_ = std::make_unique<TaaPass>(context_);
     if (options_.aa == AntiAliasing::Fxaa) fxaaPass_ = std::make_unique<FxaaPass>(context_);
@@ -260,10 +262,13 @@ void Renderer::resize(uint32_t width, uint32_t height) {
 void Renderer::createTargets() {
     // RGBA32F, not 16F: captures are compared at 1e-4..1e-5 relative, below half precision.
     // Transfer destination: TAA copies its resolve back into it.
-    hdr_ =
-        GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
-                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
-                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+    // Sampled: forward MSAA copies it into its multisampled target.
+    hdr_ = GpuImage(
+        context_,
+        {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
+         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+             (options_.msaaSamples > 1 ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT) : 0u)});
     if (options_.aa == AntiAliasing::Taa) {
         // RGBA32F like the target it is copied into; alpha counts the samples it holds. Both
         // start cleared and shader-readable, so every frame imports them in the same states
@@ -664,18 +669,68 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
     if (blended) {
-        auto p = g.addPass("forward_transparent", PassKind::Device,
-                           [this, ids, environment, skyIntensity, shadowDescriptors,
-                            &resources](PassContext& ctx) {
-                               transparentPass_->recordShading(
-                                   ctx.cmd(), resources,
-                                   {ctx.image(ids.hdr), ctx.image(ids.motion), ctx.image(ids.depth),
-                                    &cameraBuffer_, &lights_->buffer(), &clusters_->ranges(),
-                                    &clusters_->indices(), &clusters_->depthRange(),
-                                    &clusters_->grid(), clusters_->directionalCount(), &environment,
-                                    skyIntensity, &shadowDescriptors});
-                           });
-        p.read(h.depth, Use::DepthRead);
+        // MSAA: multisampled copies of the targets, made only for frames with blended draws.
+        const VkSampleCountFlagBits samples = transparentPass_->samples();
+        const bool msaa = samples != VK_SAMPLE_COUNT_1_BIT;
+        ResourceHandle msaaHdr, msaaMotion, msaaDepth;
+        if (msaa) {
+            msaaHdr = g.createImage("forward.msaa_hdr",
+                                    ForwardTransparentPass::msaaHdrDesc(width_, height_, samples));
+            msaaMotion =
+                g.createImage("forward.msaa_motion",
+                              ForwardTransparentPass::msaaMotionDesc(width_, height_, samples));
+            msaaDepth = g.createImage("forward.msaa_depth", ForwardTransparentPass::msaaDepthDesc(
+                                                                width_, height_, samples));
+        }
+        auto shadingInputs = [this, ids, environment, skyIntensity, shadowDescriptors, msaa,
+                              msaaHdr, msaaMotion, msaaDepth](PassContext& ctx) {
+            ForwardTransparentPass::ShadingInputs in{};
+            in.hdr = ctx.image(ids.hdr);
+            in.motion = ctx.image(ids.motion);
+            in.depth = ctx.image(ids.depth);
+            in.camera = &cameraBuffer_;
+            in.lights = &lights_->buffer();
+            in.clusterRanges = &clusters_->ranges();
+            in.lightIndices = &clusters_->indices();
+            in.depthRange = &clusters_->depthRange();
+            in.grid = &clusters_->grid();
+            in.directionalCount = clusters_->directionalCount();
+            in.environment = &environment;
+            in.skyIntensity = skyIntensity;
+            in.shadows = &shadowDescriptors;
+            if (msaa) {
+                in.msaaHdr = ctx.image(msaaHdr);
+                in.msaaMotion = ctx.image(msaaMotion);
+                in.msaaDepth = ctx.image(msaaDepth);
+            }
+            return in;
+        };
+        if (msaa) {
+            features_.push_back("forward_msaa");
+            auto e = g.addPass("forward_msaa_expand", PassKind::Device,
+                               [this, shadingInputs](PassContext& ctx) {
+                                   transparentPass_->recordExpand(ctx.cmd(), shadingInputs(ctx));
+                               });
+            e.read(h.hdr, Use::Sampled, kFragmentStage);
+            e.read(h.motion, Use::Sampled, kFragmentStage);
+            e.read(h.depth, Use::Sampled, kFragmentStage);
+            msaaHdr = e.write(msaaHdr, Use::ColorAttachment);
+            msaaMotion = e.write(msaaMotion, Use::ColorAttachment);
+            msaaDepth = e.write(msaaDepth, Use::DepthWrite);
+        }
+        auto p =
+            g.addPass("forward_transparent", PassKind::Device,
+                      [this, shadingInputs, &resources](PassContext& ctx) {
+                          transparentPass_->recordShading(ctx.cmd(), resources, shadingInputs(ctx));
+                      });
+        if (msaa) {
+            // Drawn into, then resolved into hdr and motion (their last use).
+            p.read(msaaDepth, Use::DepthRead);
+            p.write(msaaHdr, Use::ColorAttachment);
+            p.write(msaaMotion, Use::ColorAttachment);
+        } else {
+            p.read(h.depth, Use::DepthRead);
+        }
         p.read(h.camera, Use::Uniform, kRasterStages);
         readDeformed(p);
         p.read(h.lights, Use::StorageRead, kFragmentStage);

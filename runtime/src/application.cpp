@@ -472,6 +472,9 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         rendererOptions.brdf = brdfFor(options, world.get());
         rendererOptions.areaLights = options.areaLights;
         rendererOptions.aa = antiAliasingFor(options, world.get());
+        rendererOptions.msaaSamples = options.msaa                  ? *options.msaa
+                                      : world && world->sceneMsaa() ? *world->sceneMsaa()
+                                                                    : 1u;
         rendererOptions.bloomStrength = options.bloom ? *options.bloom
                                         : world && world->sceneBloom()
                                             ? *world->sceneBloom()

@@ -107,6 +107,8 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --area-lights representative|ltc   sphere and tube lights' integration "
            "(default: ltc)\n"
            "  --aa off|fxaa|taa         antialiasing (default: the scene file's, else taa)\n"
+           "  --msaa 1|2|4|8            samples per pixel of the forward (blended) pass, with\n"
+           "                            --aa (default: the scene file's, else 1 = off)\n"
            "  --bloom FRACTION          radiance scattered into glare, 0 (off) to 1\n"
            "                            (default: the scene file's, else 0.04)\n"
            "  --exposure manual|auto    the camera's EV100, or metered and adapted\n"
@@ -206,6 +208,11 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--aa needs off, fxaa or taa, got '" + v + "'");
             }
             options.aa = aa;
+        } else if (arg == "--msaa") {
+            if (!value() || (v != "1" && v != "2" && v != "4" && v != "8")) {
+                return fail("--msaa needs 1, 2, 4 or 8 samples per pixel, got '" + v + "'");
+            }
+            options.msaa = uint32_t(std::stoul(v));
         } else if (arg == "--bloom") {
             float bloom = 0.0f;
             if (!value() || !parseFraction(v, bloom)) {

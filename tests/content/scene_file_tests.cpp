@@ -325,10 +325,12 @@ TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("energy-conserving")) << badDiagnostics.toString();
 }
 
-// Issue 24: the top-level "aa" and "bloom" survive save and load; bad values are named.
+// Issue 24: the top-level "aa", "msaa" and "bloom" survive save and load; bad values are
+// named.
 TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     SceneDocument scene = exampleScene();
     scene.aa = SceneAntiAliasing::Fxaa;
+    scene.msaa = 4u;
     scene.bloom = 0.0f;  // the scene turns bloom off
     scene.exposure = SceneExposure::Auto;
     scene.exposureCompensation = -0.5f;
@@ -339,19 +341,22 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "aa.scene.json", diagnostics);
     ASSERT_TRUE(loaded) << diagnostics.toString();
     EXPECT_EQ(loaded->aa, SceneAntiAliasing::Fxaa);
+    EXPECT_EQ(loaded->msaa, 4u);
     EXPECT_EQ(loaded->bloom, 0.0f);
     EXPECT_EQ(loaded->exposure, SceneExposure::Auto);
     EXPECT_EQ(loaded->exposureCompensation, -0.5f);
 
     const std::string bad = R"({"format": "candela.scene", "version": 1, "aa": "msaa8",
-                               "bloom": 3, "entities": []})";
+                               "msaa": 3, "bloom": 3, "entities": []})";
     Diagnostics badDiagnostics;
     auto fallback = parseSceneJson(std::as_bytes(std::span(bad)), "bad.scene.json", badDiagnostics);
     ASSERT_TRUE(fallback);
     EXPECT_FALSE(fallback->aa.has_value());
+    EXPECT_FALSE(fallback->msaa.has_value());
     EXPECT_FALSE(fallback->bloom.has_value());
     EXPECT_TRUE(badDiagnostics.mentions("bad.scene.json")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/aa")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("/msaa")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/bloom")) << badDiagnostics.toString();
 }
 

@@ -251,10 +251,11 @@ TEST_F(EditorModel, SaveKeepsTheScenesBrdfSetting) {
     EXPECT_EQ(*doc.brdf, content::SceneBrdf::Ue4);
 }
 
-// Issue 24: so are "aa", "bloom", "exposure" and "exposure_compensation".
+// Issue 24: so are "aa", "msaa", "bloom", "exposure" and "exposure_compensation".
 TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     content::SceneDocument settings;
     settings.aa = content::SceneAntiAliasing::Fxaa;
+    settings.msaa = 4u;
     settings.bloom = 0.0f;
     settings.exposure = content::SceneExposure::Auto;
     settings.exposureCompensation = 0.5f;
@@ -262,6 +263,7 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     ASSERT_TRUE(setLumens("lamp", 900.0f));
     const content::SceneDocument doc = saveAndLoad(dir / "saved" / "settings.scene.json");
     EXPECT_EQ(doc.aa, content::SceneAntiAliasing::Fxaa);
+    EXPECT_EQ(doc.msaa, 4u);
     EXPECT_EQ(doc.bloom, 0.0f);
     EXPECT_EQ(doc.exposure, content::SceneExposure::Auto);
     EXPECT_EQ(doc.exposureCompensation, 0.5f);

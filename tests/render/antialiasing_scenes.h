@@ -94,11 +94,40 @@ inline TestScene colonnade(uint32_t width, uint32_t height) {
     return scene;
 }
 
+// Forward MSAA's scene: a glTF BLEND box (alpha 1, so it hides the floor like an opaque one
+// but is drawn by the forward pass) turned 30 degrees on a light floor, seen from above so
+// the floor fills the frame: the box's silhouette is the only geometric edge, and it belongs
+// to forward geometry. The sun casts no shadow (no shadow edge the deferred pass would draw).
+inline TestScene blendedBoxFromAbove(uint32_t width, uint32_t height) {
+    TestScene scene;
+    scene.width = width;
+    scene.height = height;
+    content::Material floor = lambertWhite();
+    floor.baseColorFactor = {0.8f, 0.8f, 0.8f, 1.0f};
+    content::Material box = lambertWhite();
+    box.baseColorFactor = {0.1f, 0.08f, 0.06f, 1.0f};
+    box.alphaMode = content::AlphaMode::Blend;
+    scene.add(content::makePlane(8.0f), floor);
+    glm::mat4 boxWorld = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.3f, 0.0f)) *
+                         glm::rotate(glm::mat4(1.0f), glm::radians(30.0f), glm::vec3(0, 1, 0));
+    scene.add(content::makeBox({0.5f, 0.3f, 0.5f}), box, boxWorld);
+    LightInstance sun;
+    sun.light.type = content::LightType::Directional;
+    sun.light.lux = 4.0f;
+    sun.direction = glm::normalize(glm::vec3(-0.3f, -1.0f, -0.2f));
+    scene.lights.push_back(sun);
+    scene.lookAt({0.4f, 3.0f, 0.6f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}, glm::radians(45.0f));
+    scene.camera.ev100 = 0.0f;
+    return scene;
+}
+
 // Renders `frames` frames of the same scene with one renderer; returns the last.
 inline CapturedFrame renderStatic(GpuContext& context, TestScene& scene, AntiAliasing aa,
-                                  uint32_t frames, RendererStats* stats = nullptr) {
+                                  uint32_t frames, RendererStats* stats = nullptr,
+                                  uint32_t msaaSamples = 1) {
     RendererOptions options;
     options.aa = aa;
+    options.msaaSamples = msaaSamples;
     return scene.render(context, options, stats, frames);
 }
 

@@ -97,16 +97,21 @@ TEST(ApplicationOptions, ExposureFlags) {
 }
 
 TEST(ApplicationOptions, AntiAliasingAndBloomFlags) {
-    CommandLine result = parseCommandLine({"--aa", "fxaa", "--bloom", "0.1"});
+    CommandLine result = parseCommandLine({"--aa", "fxaa", "--msaa", "4", "--bloom", "0.1"});
     ASSERT_TRUE(result) << result.error;
     EXPECT_EQ(result.options->aa, candela::render::AntiAliasing::Fxaa);
+    EXPECT_EQ(result.options->msaa, 4u);
     EXPECT_EQ(result.options->bloom, 0.1f);
     CommandLine none = parseCommandLine({});
     ASSERT_TRUE(none);
-    EXPECT_FALSE(none.options->aa.has_value());  // the scene file's, else TAA
+    EXPECT_FALSE(none.options->aa.has_value());    // the scene file's, else TAA
+    EXPECT_FALSE(none.options->msaa.has_value());  // the scene file's, else 1 (off)
     EXPECT_FALSE(none.options->bloom.has_value());
     EXPECT_NE(parseError({"--aa", "smaa"}).find("--aa needs off, fxaa or taa, got 'smaa'"),
               std::string::npos);
+    EXPECT_NE(
+        parseError({"--msaa", "3"}).find("--msaa needs 1, 2, 4 or 8 samples per pixel, got '3'"),
+        std::string::npos);
     EXPECT_NE(parseError({"--bloom", "2"}).find("--bloom needs a fraction"), std::string::npos);
     EXPECT_NE(parseError({"--bloom", "-0.1"}).find("got '-0.1'"), std::string::npos);
 }

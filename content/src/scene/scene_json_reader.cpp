@@ -606,6 +606,16 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             scene.aa = aa;
         }
     }
+    if (root.contains("msaa")) {
+        uint32_t msaa = 1;
+        if (reader.clean([&] { reader.integer(root, "", "msaa", msaa, 1, 8); })) {
+            if (msaa == 1 || msaa == 2 || msaa == 4 || msaa == 8) {
+                scene.msaa = msaa;
+            } else {
+                reader.error("/msaa", "must be 1, 2, 4 or 8 samples per pixel");
+            }
+        }
+    }
     const json* ao = nullptr;
     if (reader.object(root, "", "ambient_occlusion", ao)) {
         // Like "brdf": a bad value is reported and its default kept; the scene still loads.

@@ -225,6 +225,7 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     }
     if (scene.brdf) document["brdf"] = std::string(nameOf(kSceneBrdfs, *scene.brdf));
     if (scene.aa) document["aa"] = std::string(nameOf(kSceneAntiAliasing, *scene.aa));
+    if (scene.msaa) document["msaa"] = *scene.msaa;
     if (scene.bloom) document["bloom"] = *scene.bloom;
     if (scene.exposure)
         document["exposure"] = std::string(nameOf(kSceneExposures, *scene.exposure));

@@ -41,6 +41,7 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     opened.scene->setSceneBrdf(opened.world->sceneBrdf());
     content::SceneDocument frameSettings;
     frameSettings.aa = opened.world->sceneAntiAliasing();
+    frameSettings.msaa = opened.world->sceneMsaa();
     frameSettings.bloom = opened.world->sceneBloom();
     frameSettings.exposure = opened.world->sceneExposure();
     frameSettings.exposureCompensation = opened.world->sceneExposureCompensation();

@@ -29,10 +29,12 @@ public:
     const std::filesystem::path& sourcePath() const { return sourcePath_; }
     // The opened file's scene-wide "brdf" (unset: none), written back by save().
     void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneSettings_.brdf = brdf; }
-    // The opened file's scene-wide "aa", "bloom", "exposure" and "exposure_compensation" (the
-    // other fields of `settings` are ignored), written back by save().
+    // The opened file's scene-wide "aa", "msaa", "bloom", "exposure" and
+    // "exposure_compensation" (the other fields of `settings` are ignored), written back by
+    // save().
     void setSceneFrameSettings(const content::SceneDocument& settings) {
         sceneSettings_.aa = settings.aa;
+        sceneSettings_.msaa = settings.msaa;
         sceneSettings_.bloom = settings.bloom;
         sceneSettings_.exposure = settings.exposure;
         sceneSettings_.exposureCompensation = settings.exposureCompensation;

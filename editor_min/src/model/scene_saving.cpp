@@ -48,6 +48,7 @@ std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path
     content::SceneDocument document = documentForSaving(registry, source, target);
     document.brdf = settings.brdf;
     document.aa = settings.aa;
+    document.msaa = settings.msaa;
     document.bloom = settings.bloom;
     document.exposure = settings.exposure;
     document.exposureCompensation = settings.exposureCompensation;

@@ -103,6 +103,7 @@ uint64_t FrameGraph::shapeHash() const {
         mixValue(r.imageDesc.mipLevels);
         mixValue(r.imageDesc.cube);
         mixValue(r.imageDesc.usage);
+        mixValue(r.imageDesc.samples);
         mixValue(r.bufferSize);
         mixValue(r.bufferUsage);
         // Field by field: the structs have padding bytes.

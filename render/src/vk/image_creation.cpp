@@ -19,7 +19,7 @@ VkImage createImage(VkDevice device, const ImageDesc& desc) {
     info.extent = {desc.width, desc.height, 1};
     info.mipLevels = desc.mipLevels;
     info.arrayLayers = desc.cube ? 6u : 1u;
-    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.samples = desc.samples;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = desc.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;

@@ -42,6 +42,7 @@ void addSplitSumRow(ReportContext& context);
 void addClusteredRow(ReportContext& context);
 void addBrdfEnergyRows(ReportContext& context);
 void addAntialiasingRows(ReportContext& context);
+void addForwardMsaaRows(ReportContext& context);
 void addMaterialRows(ReportContext& context);
 void addAmbientOcclusionRows(ReportContext& context);
 void addShadowRows(ReportContext& context);

@@ -130,7 +130,10 @@ int main(int argc, char** argv) {
         section("image-based lighting", [&] { addSplitSumRow(context); });
         section("clustered lights", [&] { addClusteredRow(context); });
         section("energy-conserving BRDF", [&] { addBrdfEnergyRows(context); });
-        section("antialiasing", [&] { addAntialiasingRows(context); });
+        section("antialiasing", [&] {
+            addAntialiasingRows(context);
+            addForwardMsaaRows(context);
+        });
         section("material extensions", [&] { addMaterialRows(context); });
         section("ambient occlusion", [&] { addAmbientOcclusionRows(context); });
         section("shadows", [&] { addShadowRows(context); });

@@ -84,6 +84,9 @@ struct SceneDocument {
     std::vector<SceneEntity> entities;
     std::optional<SceneBrdf> brdf;        // unset: the engine's default (energy-conserving)
     std::optional<SceneAntiAliasing> aa;  // unset: the engine's default (taa)
+    // Top-level "msaa": samples per pixel of the forward (blended) pass, 1, 2, 4 or 8; it
+    // composes with "aa". The command line's --msaa overrides it. Unset: 1 (off).
+    std::optional<uint32_t> msaa;
     // Top-level "bloom": the fraction of radiance the lens scatters into glare, 0 to 1; 0
     // turns bloom off. Unset: the engine's default.
     std::optional<float> bloom;

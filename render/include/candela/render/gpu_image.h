@@ -19,6 +19,7 @@ struct ImageDesc {
     uint32_t mipLevels = 1;
     bool cube = false;
     VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;  // >1: a multisampled target
 };
 
 class GpuImage {

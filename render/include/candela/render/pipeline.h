@@ -41,6 +41,8 @@ struct GraphicsPipelineDesc {
     bool dynamicCullMode = false;  // set per draw with vkCmdSetCullMode instead
     // colour = src * srcAlpha + dst * (1 - srcAlpha): UI overlays, glTF BLEND (straight alpha)
     bool alphaBlend = false;
+    // Samples per pixel of every attachment (the forward pass's MSAA targets).
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     SpecializationConstants* specialization = nullptr;  // applied to the fragment stage
 };
 

@@ -122,6 +122,10 @@ struct RendererOptions {
     // Off here so a renderer made by a test renders one plain sample per pixel; the
     // application's default is ApplicationOptions' (TAA).
     AntiAliasing aa = AntiAliasing::Off;
+    // Samples per pixel of the forward (blended) pass (`--msaa`, the scene file's "msaa"): 1
+    // (off), 2, 4 or 8 where the device supports it; composes with `aa`. Frames with blended
+    // draws get multisampled HDR, motion and depth targets for that pass only.
+    uint32_t msaaSamples = 1;
     float taaMinimumBlend = 1.0f / 16.0f;  // lowest weight of a new sample (taa.comp)
     float taaSharpness = 0.0f;             // 0: no sharpening
     // Tests: copy each frame's motion vectors (gbuffer.motion) to the host, for

@@ -1,6 +1,7 @@
 // Bindings of the transparency shaders (forward_transparent.frag, transparent_occupancy.frag,
-// transparent_occupancy_merge.comp), shared by them and forward_transparent_pass.cpp (valid
-// in C++ and GLSL). Camera and lights: common/shared_bindings.h.
+// transparent_occupancy_merge.comp, msaa_expand.frag), shared by them and
+// forward_transparent_pass.cpp (valid in C++ and GLSL). Camera and lights:
+// common/shared_bindings.h.
 #ifndef CANDELA_FORWARD_TRANSPARENT_BINDINGS_H
 #define CANDELA_FORWARD_TRANSPARENT_BINDINGS_H
 
@@ -36,5 +37,10 @@
 #define MERGE_BINDING_TILE_MASKS 0
 #define MERGE_BINDING_CLUSTER_BOUNDS 1
 #define MERGE_BINDING_TRANSPARENT_BOUNDS 2
+
+// msaa_expand.frag (forward MSAA: the single-sample targets copied into the multisampled ones).
+#define MSAA_EXPAND_BINDING_HDR 0
+#define MSAA_EXPAND_BINDING_MOTION 1
+#define MSAA_EXPAND_BINDING_DEPTH 2
 
 #endif

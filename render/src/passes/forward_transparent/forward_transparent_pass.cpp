@@ -17,6 +17,8 @@
 #include "passes/shadows/shadow_pass.h"
 #include "shaders/forward_transparent.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
+#include "shaders/msaa_expand.frag.spv.h"
+#include "shaders/msaa_expand.vert.spv.h"
 #include "shaders/transparent_occupancy.frag.spv.h"
 #include "shaders/transparent_occupancy_merge.comp.spv.h"
 
@@ -61,8 +63,8 @@ void setViewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
 
 }  // namespace
 
-ForwardTransparentPass::ForwardTransparentPass(GpuContext& context)
-    : context_(context), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {
+ForwardTransparentPass::ForwardTransparentPass(GpuContext& context, VkSampleCountFlagBits samples)
+    : context_(context), samples_(samples), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {
     // Occupancy: no attachments; the fragment shader tests against the G-buffer depth itself,
     // so the depth image stays in the layout the occupancy compute pass read it in.
     GraphicsPipelineDesc occupancy;
@@ -90,6 +92,54 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context)
     };
     merge_ = Pipeline::compute(context, transparent_occupancy_merge_comp_spv, mergeBindings,
                                sizeof(GpuClusterParams));
+
+    if (samples_ != VK_SAMPLE_COUNT_1_BIT) {
+        GraphicsPipelineDesc expand;
+        expand.vertexSpirv = msaa_expand_vert_spv;
+        expand.fragmentSpirv = msaa_expand_frag_spv;
+        expand.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT, GBufferTargets::kMotionFormat};
+        expand.depthFormat = GBufferTargets::kDepthFormat;
+        expand.depthCompare = VK_COMPARE_OP_ALWAYS;  // a copy: every sample takes the depth
+        expand.depthWrite = true;
+        expand.samples = samples_;
+        const DescriptorBinding expandBindings[] = {
+            {MSAA_EXPAND_BINDING_HDR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+             VK_SHADER_STAGE_FRAGMENT_BIT},
+            {MSAA_EXPAND_BINDING_MOTION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+             VK_SHADER_STAGE_FRAGMENT_BIT},
+            {MSAA_EXPAND_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+             VK_SHADER_STAGE_FRAGMENT_BIT},
+        };
+        expand_ = Pipeline::graphics(context, expand, expandBindings, 0);
+    }
+}
+
+ImageDesc ForwardTransparentPass::msaaHdrDesc(uint32_t width, uint32_t height,
+                                              VkSampleCountFlagBits samples) {
+    ImageDesc desc{VK_FORMAT_R32G32B32A32_SFLOAT,      width, height, 1, false,
+                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT};
+    desc.samples = samples;
+    return desc;
+}
+
+ImageDesc ForwardTransparentPass::msaaMotionDesc(uint32_t width, uint32_t height,
+                                                 VkSampleCountFlagBits samples) {
+    ImageDesc desc{GBufferTargets::kMotionFormat,      width, height, 1, false,
+                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT};
+    desc.samples = samples;
+    return desc;
+}
+
+ImageDesc ForwardTransparentPass::msaaDepthDesc(uint32_t width, uint32_t height,
+                                                VkSampleCountFlagBits samples) {
+    ImageDesc desc{GBufferTargets::kDepthFormat,
+                   width,
+                   height,
+                   1,
+                   false,
+                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT};
+    desc.samples = samples;
+    return desc;
 }
 
 ForwardTransparentPass::~ForwardTransparentPass() = default;
@@ -111,6 +161,7 @@ void ForwardTransparentPass::buildShadingPipeline() {
     desc.depthWrite = false;  // blended surfaces neither hide nor sort each other by depth
     desc.alphaBlend = true;
     desc.dynamicCullMode = true;
+    desc.samples = samples_;
     desc.specialization = &constants;
     std::vector<DescriptorBinding> bindings = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
@@ -258,16 +309,30 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
                                            const ShadingInputs& in) const {
     const uint32_t width = in.hdr.desc().width;
     const uint32_t height = in.hdr.desc().height;
+    const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
     std::array<VkRenderingAttachmentInfo, 2> colors{};
     for (size_t i = 0; i < colors.size(); ++i) {
+        const ImageRef& single = i == 0 ? in.hdr : in.motion;
         colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-        colors[i].imageView = i == 0 ? in.hdr.view() : in.motion.view();
         colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        if (msaa) {
+            // Plain average of the samples, in linear light: each pixel becomes its coverage-
+            // weighted radiance, what a box-filtered supersampled frame holds (the
+            // antialiasing reference); motion averages the same way. The multisampled
+            // targets are transients nothing reads after the resolve.
+            colors[i].imageView = i == 0 ? in.msaaHdr.view() : in.msaaMotion.view();
+            colors[i].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+            colors[i].resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+            colors[i].resolveImageView = single.view();
+            colors[i].resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        } else {
+            colors[i].imageView = single.view();
+            colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        }
     }
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = in.depth.view();
+    depth.imageView = msaa ? in.msaaDepth.view() : in.depth.view();
     depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
     depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
     depth.storeOp = VK_ATTACHMENT_STORE_OP_NONE;
@@ -332,6 +397,46 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
         shading_.pushConstants(cmd, &push, sizeof(push));
         drawMesh(cmd, resources, draw, sortedIndex_[i]);
     }
+    vkCmdEndRendering(cmd);
+}
+
+void ForwardTransparentPass::recordExpand(VkCommandBuffer cmd, const ShadingInputs& in) const {
+    const uint32_t width = in.hdr.desc().width;
+    const uint32_t height = in.hdr.desc().height;
+    std::array<VkRenderingAttachmentInfo, 2> colors{};
+    for (size_t i = 0; i < colors.size(); ++i) {
+        colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+        colors[i].imageView = i == 0 ? in.msaaHdr.view() : in.msaaMotion.view();
+        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // every sample is written
+        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    }
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = in.msaaDepth.view();
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = uint32_t(colors.size());
+    rendering.pColorAttachments = colors.data();
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    setViewport(cmd, width, height);
+    expand_.bind(cmd);
+    const VkDescriptorImageInfo hdrInfo{pointSampler_.handle(), in.hdr.view(),
+                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    const VkDescriptorImageInfo motionInfo{pointSampler_.handle(), in.motion.view(),
+                                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    const VkDescriptorImageInfo depthInfo{pointSampler_.handle(), in.depth.view(),
+                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    const VkWriteDescriptorSet writes[] = {
+        sampledImageWrite(MSAA_EXPAND_BINDING_HDR, &hdrInfo),
+        sampledImageWrite(MSAA_EXPAND_BINDING_MOTION, &motionInfo),
+        sampledImageWrite(MSAA_EXPAND_BINDING_DEPTH, &depthInfo)};
+    expand_.pushDescriptors(cmd, writes);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
     vkCmdEndRendering(cmd);
 }
 

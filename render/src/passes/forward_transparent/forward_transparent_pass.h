@@ -3,7 +3,9 @@
 // front per draw, depth-tested against the G-buffer depth without writing it, shaded with the
 // shared light code and the clustered light lists (forward+), blended "over" into the HDR
 // target. Before light assignment, their fragments mark the clusters they occupy so those
-// lists hold the lights that reach them.
+// lists hold the lights that reach them. With MSAA (`samples` > 1) the pass draws into
+// multisampled copies of the HDR, motion and depth targets (recordExpand fills them from the
+// deferred result) and resolves them back by plain averaging at the end of its rendering.
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -25,7 +27,8 @@ struct ShadowDescriptors;
 
 class ForwardTransparentPass {
 public:
-    explicit ForwardTransparentPass(GpuContext& context);
+    // samples: 1, or the forward MSAA sample count (RendererOptions::msaaSamples).
+    ForwardTransparentPass(GpuContext& context, VkSampleCountFlagBits samples);
     ~ForwardTransparentPass();
     ForwardTransparentPass(const ForwardTransparentPass&) = delete;
     ForwardTransparentPass& operator=(const ForwardTransparentPass&) = delete;
@@ -65,10 +68,16 @@ public:
     // After the lighting pass: hdr and motion are ColorAttachments (blended over: a pane's
     // motion weighs by its coverage), depth a DepthRead attachment; the light lists and
     // depthRange are read in the fragment shader.
+    // With MSAA: msaaHdr, msaaMotion (ColorAttachment) and msaaDepth (DepthRead) are the
+    // multisampled targets recordExpand filled; the draws go there and hdr and motion
+    // (ColorAttachment) receive the resolve; depth is only read by recordExpand.
     struct ShadingInputs {
         ImageRef hdr;
         ImageRef motion;
         ImageRef depth;
+        ImageRef msaaHdr;
+        ImageRef msaaMotion;
+        ImageRef msaaDepth;
         const GpuBuffer* camera;
         const GpuBuffer* lights;
         const GpuBuffer* clusterRanges;
@@ -83,10 +92,20 @@ public:
     void recordShading(VkCommandBuffer cmd, SceneResources& resources,
                        const ShadingInputs& in) const;
 
+    // MSAA only: every sample of msaaHdr and msaaMotion (ColorAttachment) and msaaDepth
+    // (DepthWrite) gets its pixel's value in hdr, motion and depth (Sampled, fragment).
+    void recordExpand(VkCommandBuffer cmd, const ShadingInputs& in) const;
+    VkSampleCountFlagBits samples() const { return samples_; }
+    // The multisampled targets' descriptions (transients of the frame graph).
+    static ImageDesc msaaHdrDesc(uint32_t width, uint32_t height, VkSampleCountFlagBits samples);
+    static ImageDesc msaaMotionDesc(uint32_t width, uint32_t height, VkSampleCountFlagBits samples);
+    static ImageDesc msaaDepthDesc(uint32_t width, uint32_t height, VkSampleCountFlagBits samples);
+
 private:
     void buildShadingPipeline();
 
     GpuContext& context_;
+    VkSampleCountFlagBits samples_;
     std::vector<DrawItem> sorted_;
     std::vector<uint32_t> sortedIndex_;  // each sorted draw's index in FrameScene::draws
     const GpuBuffer* previousWorlds_ = nullptr;
@@ -96,6 +115,7 @@ private:
     Pipeline shading_;
     Pipeline occupancy_;
     Pipeline merge_;
+    Pipeline expand_;       // MSAA only
     Sampler pointSampler_;  // G-buffer and depth reads
 };
 

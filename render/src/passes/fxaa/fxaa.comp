@@ -20,7 +20,7 @@ layout(binding = FXAA_BINDING_OUTPUT, rgba8) uniform writeonly image2D ldrOutput
 
 const float kContrastThreshold = 0.0312;  // absolute: ignore the darkest edges
 const float kRelativeThreshold = 0.125;   // ... and those below 1/8 of the local maximum
-const float kSubpixelStrength = 0.5;
+const float kSubpixelStrength = 0.75;
 const int kSearchSteps = 12;
 const float kStepScale[kSearchSteps] = float[](1.0, 1.0, 1.0, 1.0, 1.0, 1.5, 2.0, 2.0, 2.0, 2.0,
                                                4.0, 8.0);
@@ -142,10 +142,21 @@ void main() {
     subpixel = (-2.0 * subpixel + 3.0) * subpixel * subpixel;
     float subpixelBlend = subpixel * subpixel * kSubpixelStrength;
 
-    float blend = max(edgeBlend, subpixelBlend);
     ivec2 toNeighbour =
         horizontal ? ivec2(0, towardsBefore ? -1 : 1) : ivec2(towardsBefore ? -1 : 1, 0);
     vec3 other = texelFetch(tonemapped, clamp(pixel + toNeighbour, ivec2(0), size - 1), 0).rgb;
-    vec3 mixed = mix(exposedRadiance(centreColour.rgb), exposedRadiance(other), blend);
+    vec3 mixed = mix(exposedRadiance(centreColour.rgb), exposedRadiance(other), edgeBlend);
+    // Sub-pixel features (thin gaps, distant detail) blend towards the neighbourhood's mean
+    // radiance, weighted like `average`, not towards one neighbour.
+    vec3 mean = vec3(0.0);
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            if (dx == 0 && dy == 0) continue;
+            float weight = (dx == 0 || dy == 0) ? 2.0 : 1.0;
+            ivec2 at = clamp(pixel + ivec2(dx, dy), ivec2(0), size - 1);
+            mean += weight * exposedRadiance(texelFetch(tonemapped, at, 0).rgb);
+        }
+    }
+    mixed = mix(mixed, mean / 12.0, subpixelBlend);
     imageStore(ldrOutput, pixel, vec4(linearToSrgb(tonemapAcesFit(mixed)), 1.0));
 }

@@ -55,6 +55,9 @@ struct ApplicationOptions {
     render::AreaLightMode areaLights = render::RendererOptions{}.areaLights;
     // --aa; unset: the world's scene-file "aa", else TAA (render/README.md "Antialiasing").
     std::optional<render::AntiAliasing> aa;
+    // --msaa; unset: the world's scene-file "msaa", else 1 (off). The forward pass's samples
+    // per pixel, on top of --aa; the renderer checks them against the device.
+    std::optional<uint32_t> msaa;
     // --bloom; unset: the world's scene-file "bloom", else kDefaultBloom.
     std::optional<float> bloom;
     static constexpr float kDefaultBloom = 0.04f;

@@ -53,6 +53,8 @@ public:
     std::optional<content::SceneAntiAliasing> sceneAntiAliasing() const {
         return sceneAntiAliasing_;
     }
+    // The forward pass's MSAA samples the last scene file asks for ("msaa"), if it sets them.
+    std::optional<uint32_t> sceneMsaa() const { return sceneMsaa_; }
     // The bloom strength the last scene file asks for ("bloom"; 0: off), if it sets one.
     std::optional<float> sceneBloom() const { return sceneBloom_; }
     // The exposure mode and compensation the last scene file asks for, if it sets them.
@@ -104,6 +106,7 @@ private:
     std::optional<content::SceneBrdf> sceneBrdf_;
     std::vector<content::MaterialLayer> sceneMaterialLayers_;
     std::optional<content::SceneAntiAliasing> sceneAntiAliasing_;
+    std::optional<uint32_t> sceneMsaa_;
     std::optional<float> sceneBloom_;
     std::optional<content::SceneExposure> sceneExposure_;
     std::optional<float> sceneExposureCompensation_;
