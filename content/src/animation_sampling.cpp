@@ -45,6 +45,18 @@ std::size_t keyIntervalAt(const std::vector<float>& times, float time) {
     return static_cast<std::size_t>(next - times.begin()) - 1;
 }
 
+std::size_t keyIntervalAt(const std::vector<float>& times, float time, std::uint32_t& cursor) {
+    const std::size_t n = times.size();
+    std::size_t k = cursor;
+    if (n >= 2 && k + 1 < n && times[k] <= time && time > times.front()) {
+        if (time < times[k + 1]) return k;
+        if (k + 2 < n && time < times[k + 2]) return cursor = static_cast<std::uint32_t>(k + 1);
+    }
+    k = keyIntervalAt(times, time);
+    cursor = static_cast<std::uint32_t>(k);
+    return k;
+}
+
 float clipTime(float time, float duration, bool loop) {
     if (!(duration > 0)) return 0;
     if (loop) {
@@ -56,13 +68,19 @@ float clipTime(float time, float duration, bool loop) {
 
 void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
                      std::span<float> out) {
+    std::uint32_t cursor = 0;
+    sampleAnimation(sampler, property, time, out, cursor);
+}
+
+void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
+                     std::span<float> out, std::uint32_t& cursor) {
     const std::size_t n = sampler.components;
     const std::size_t keys = sampler.times.size();
     const bool cubic = sampler.interpolation == Interpolation::CubicSpline;
     const std::size_t stride = cubic ? 3 * n : n;
     const std::size_t valueOffset = cubic ? n : 0;  // CUBICSPLINE: skip the in-tangent
     const float* values = sampler.values.data();
-    const std::size_t k = keyIntervalAt(sampler.times, time);
+    const std::size_t k = keyIntervalAt(sampler.times, time, cursor);
     const bool clamped = keys < 2 || time <= sampler.times.front() || k + 1 >= keys;
     if (clamped || sampler.interpolation == Interpolation::Step) {
         std::copy_n(values + k * stride + valueOffset, n, out.begin());

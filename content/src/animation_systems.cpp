@@ -40,6 +40,11 @@ void prepareScratch(AnimationPlayer& player) {
     AnimationPlayer::Scratch& s = player.scratch;
     if (s.pose.size() == model.nodes.size() && s.weightOffset.size() == model.nodes.size() + 1)
         return;
+    std::size_t channels = 0;
+    for (const AnimationClip& clip : model.animations)
+        channels = std::max(channels, clip.channels.size());
+    s.cursors.assign(channels, 0);
+    s.blendCursors.assign(channels, 0);
     s.pose.resize(model.nodes.size());
     s.blendPose.resize(model.nodes.size());
     s.touched.assign(model.nodes.size(), 0);
@@ -53,38 +58,47 @@ void prepareScratch(AnimationPlayer& player) {
     s.weightOffset[model.nodes.size()] = offset;
     s.weights.resize(offset);
     s.blendWeights.resize(offset);
+    s.restPose.resize(model.nodes.size());
+    s.restWeights.resize(offset);
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        s.restPose[n] = restPose(model.nodes[n]);
+        if (const auto* w = restWeights(model, model.nodes[n]))
+            std::copy(w->begin(), w->end(), s.restWeights.begin() + s.weightOffset[n]);
+    }
 }
 
-void resetToRest(const Model& model, AnimationPlayer::Scratch& s,
-                 std::vector<ecs::LocalTransform>& pose, std::vector<float>& weights) {
-    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-        pose[n] = restPose(model.nodes[n]);
-        if (const auto* w = restWeights(model, model.nodes[n]))
-            std::copy(w->begin(), w->end(), weights.begin() + s.weightOffset[n]);
-    }
+// Copies, not conversions per node: the rest pose was converted once by prepareScratch.
+void resetToRest(const AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransform>& pose,
+                 std::vector<float>& weights) {
+    std::copy(s.restPose.begin(), s.restPose.end(), pose.begin());
+    std::copy(s.restWeights.begin(), s.restWeights.end(), weights.begin());
 }
 
 void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loop,
                 AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransform>& pose,
-                std::vector<float>& weights) {
+                std::vector<float>& weights, std::vector<std::uint32_t>& cursors) {
     if (clipIndex < 0 || static_cast<std::size_t>(clipIndex) >= model.animations.size()) return;
     const AnimationClip& clip = model.animations[static_cast<std::size_t>(clipIndex)];
     const float t = clipTime(time, clip.duration, loop);
-    for (const AnimationChannel& channel : clip.channels) {
+    for (std::size_t c = 0; c < clip.channels.size(); ++c) {
+        const AnimationChannel& channel = clip.channels[c];
+        std::uint32_t& cursor = cursors[c];
         const auto node = static_cast<std::size_t>(channel.node);
         const AnimationSampler& sampler = clip.samplers[static_cast<std::size_t>(channel.sampler)];
         ecs::LocalTransform& local = pose[node];
         switch (channel.property) {
             case AnimatedProperty::Translation:
-                sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3));
+                sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
+                                cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Rotation:
-                sampleAnimation(sampler, channel.property, t, std::span(&local.rotation.x, 4));
+                sampleAnimation(sampler, channel.property, t, std::span(&local.rotation.x, 4),
+                                cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Scale:
-                sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3));
+                sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3), cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Weights: {
@@ -92,7 +106,7 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
                 const std::uint32_t count = s.weightOffset[node + 1] - begin;
                 if (count != sampler.components) break;  // the loader checked; defensive
                 sampleAnimation(sampler, channel.property, t,
-                                std::span(weights).subspan(begin, count));
+                                std::span(weights).subspan(begin, count), cursor);
                 s.touched[node] |= kWeightsTouched;
                 break;
             }
@@ -112,7 +126,10 @@ ecs::Quat nlerp(ecs::Quat a, ecs::Quat b, float t) {
                            a.z + (sign * b.z - a.z) * t, a.w + (sign * b.w - a.w) * t});
 }
 
-void advancePlayer(ecs::Registry& registry, AnimationPlayer& player, float deltaSeconds) {
+// `locals`: the LocalTransform pool, fetched once per frame (null when none exists), so each
+// node's write and change stamp is one sparse lookup.
+void advancePlayer(ecs::Registry& registry, ecs::ComponentPool* locals, AnimationPlayer& player,
+                   float deltaSeconds) {
     if (player.model == nullptr) return;
     const Model& model = *player.model;
     prepareScratch(player);
@@ -143,13 +160,13 @@ void advancePlayer(ecs::Registry& registry, AnimationPlayer& player, float delta
     s.appliedClip = player.clip;
     s.appliedTime = player.time;
     std::fill(s.touched.begin(), s.touched.end(), std::uint8_t{0});
-    resetToRest(model, s, s.pose, s.weights);
-    sampleClip(model, player.clip, player.time, player.loop, s, s.pose, s.weights);
+    resetToRest(s, s.pose, s.weights);
+    sampleClip(model, player.clip, player.time, player.loop, s, s.pose, s.weights, s.cursors);
     const float fade = player.fadeWeight();
     if (player.nextClip >= 0) {
-        resetToRest(model, s, s.blendPose, s.blendWeights);
+        resetToRest(s, s.blendPose, s.blendWeights);
         sampleClip(model, player.nextClip, player.nextTime, player.loop, s, s.blendPose,
-                   s.blendWeights);
+                   s.blendWeights, s.blendCursors);
         for (std::size_t n = 0; n < s.pose.size(); ++n) {
             if (s.touched[n] == 0) continue;
             ecs::LocalTransform& a = s.pose[n];
@@ -166,9 +183,11 @@ void advancePlayer(ecs::Registry& registry, AnimationPlayer& player, float delta
         const ecs::Entity e = player.nodeEntities[n];
         if (s.touched[n] == 0 || e == ecs::kNullEntity) continue;
         if (s.touched[n] & kTransformTouched) {
-            if (auto* local = registry.tryGet<ecs::LocalTransform>(e)) {
-                *local = s.pose[n];
-                registry.markChanged<ecs::LocalTransform>(e);
+            const std::uint32_t index =
+                locals && registry.valid(e) ? locals->indexOf(e) : ecs::ComponentPool::kAbsent;
+            if (index != ecs::ComponentPool::kAbsent) {
+                locals->typedData<ecs::LocalTransform>()[index] = s.pose[n];
+                locals->stamp(index, registry.currentTick());
             }
         }
         if (s.touched[n] & kWeightsTouched) {
@@ -209,14 +228,33 @@ ecs::Mat4 affineInverse(const ecs::Mat4& m) {
     return r;
 }
 
-void updateSkin(ecs::Registry& registry, ecs::Entity entity, Skin& skin) {
+// The joints' world transforms, looked up once per joint in the WorldTransform pool (fetched
+// once per frame) instead of through the registry per access.
+struct JointWorlds {
+    const ecs::Registry& registry;
+    const ecs::ComponentPool* pool;  // null: no entity has a WorldTransform
+
+    std::uint32_t indexOf(ecs::Entity e) const {
+        return pool && e != ecs::kNullEntity && registry.valid(e) ? pool->indexOf(e)
+                                                                  : ecs::ComponentPool::kAbsent;
+    }
+    ecs::Tick tick(std::uint32_t index) const {
+        return index == ecs::ComponentPool::kAbsent ? ecs::kNeverTick : pool->changeTicks()[index];
+    }
+    const ecs::WorldTransform* world(std::uint32_t index) const {
+        return index == ecs::ComponentPool::kAbsent
+                   ? nullptr
+                   : &pool->typedData<ecs::WorldTransform>()[index];
+    }
+};
+
+void updateSkin(const JointWorlds& worlds, ecs::Entity entity, Skin& skin) {
     if (skin.model == nullptr || skin.skin < 0) return;
     const SkinData& data = skin.model->skins[static_cast<std::size_t>(skin.skin)];
-    ecs::Tick newest = registry.changeTick<ecs::WorldTransform>(entity);
-    for (ecs::Entity joint : skin.joints) {
-        if (joint != ecs::kNullEntity)
-            newest = std::max(newest, registry.changeTick<ecs::WorldTransform>(joint));
-    }
+    const std::uint32_t meshIndex = worlds.indexOf(entity);
+    ecs::Tick newest = worlds.tick(meshIndex);
+    for (ecs::Entity joint : skin.joints)
+        newest = std::max(newest, worlds.tick(worlds.indexOf(joint)));
     if (skin.builtFrom != ecs::kNeverTick && newest == skin.builtFrom &&
         skin.jointMatrices.size() == data.joints.size()) {
         if (!skin.previousIsCurrent) {  // still now: last frame's matrices equal this frame's
@@ -227,17 +265,22 @@ void updateSkin(ecs::Registry& registry, ecs::Entity entity, Skin& skin) {
     }
     skin.builtFrom = newest;
     skin.previousIsCurrent = false;
-    const auto* meshWorld = registry.tryGet<ecs::WorldTransform>(entity);
+    const ecs::WorldTransform* meshWorld = worlds.world(meshIndex);
     const ecs::Mat4 toMesh = meshWorld ? affineInverse(meshWorld->matrix) : ecs::Mat4::identity();
     if (skin.jointMatrices.size() != data.joints.size())
         skin.jointMatrices.assign(data.joints.size(), ecs::Mat4::identity());
-    skin.previousJointMatrices = skin.jointMatrices;  // same size once warm: no allocation
+    // This frame's matrices become the previous ones; every joint below is rewritten, so the
+    // swap (no copy, no allocation) leaves nothing stale.
+    if (skin.previousJointMatrices.size() == skin.jointMatrices.size()) {
+        std::swap(skin.previousJointMatrices, skin.jointMatrices);
+    } else {
+        skin.previousJointMatrices = skin.jointMatrices;
+    }
     constexpr float kInf = std::numeric_limits<float>::infinity();
     ecs::Vec3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
     for (std::size_t j = 0; j < data.joints.size(); ++j) {
         const ecs::Entity joint = j < skin.joints.size() ? skin.joints[j] : ecs::kNullEntity;
-        const auto* world =
-            joint != ecs::kNullEntity ? registry.tryGet<ecs::WorldTransform>(joint) : nullptr;
+        const ecs::WorldTransform* world = worlds.world(worlds.indexOf(joint));
         ecs::Mat4 inverseBind;
         std::copy(data.inverseBindMatrices[j].begin(), data.inverseBindMatrices[j].end(),
                   inverseBind.m);
@@ -283,9 +326,12 @@ void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkL
     registry.view<AnimationPlayer>().each(
         [&](ecs::Entity e, AnimationPlayer&) { lists.players.push_back(e); });
     const ecs::Storage<AnimationPlayer> players = registry.storage<AnimationPlayer>();
+    ecs::ComponentPool* locals = registry.view<ecs::LocalTransform>().empty()
+                                     ? nullptr
+                                     : &registry.storage<ecs::LocalTransform>().pool();
     jobs.parallelFor(lists.players.size(), kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
-            advancePlayer(registry, players.get(lists.players[i]), deltaSeconds);
+            advancePlayer(registry, locals, players.get(lists.players[i]), deltaSeconds);
     });
 }
 
@@ -293,9 +339,12 @@ void updateListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLi
     lists.skins.clear();
     registry.view<Skin>().each([&](ecs::Entity e, Skin&) { lists.skins.push_back(e); });
     const ecs::Storage<Skin> skins = registry.storage<Skin>();
+    const JointWorlds worlds{registry, registry.view<ecs::WorldTransform>().empty()
+                                           ? nullptr
+                                           : &registry.storage<ecs::WorldTransform>().pool()};
     jobs.parallelFor(lists.skins.size(), kSkinsPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
-            updateSkin(registry, lists.skins[i], skins.get(lists.skins[i]));
+            updateSkin(worlds, lists.skins[i], skins.get(lists.skins[i]));
     });
 }
 

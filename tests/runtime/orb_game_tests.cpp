@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "full_filesystem.h"
@@ -40,11 +42,12 @@ std::filesystem::path tempDir() {
 
 const std::string kReplays = std::string(ORB_GAME_DIR) + "/replays/";
 
-nlohmann::json play(const std::string& replay, int frames, const std::string& name) {
+nlohmann::json play(const std::string& replay, int frames, const std::string& name,
+                    const std::string& extra = {}) {
     auto state = tempDir() / (name + ".json");
     std::filesystem::remove(state);
     RunResult r = runGame("--headless --size 32x24 --frames " + std::to_string(frames) +
-                          " --input " + kReplays + replay + " --state " + state.string());
+                          " --input " + kReplays + replay + " --state " + state.string() + extra);
     EXPECT_EQ(r.exitCode, 0) << r.output;
     std::ifstream in(state);
     std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -79,11 +82,8 @@ TEST(OrbGame, TouchingASentinelLosesAndRRestarts) {
     EXPECT_EQ(lost["status"], "lost");
     EXPECT_EQ(lost["reason"], "caught by a sentinel");
     EXPECT_EQ(lost["score"], 0);
-    nlohmann::json again = play("lose_restart.input", 240, "restarted");
-    ASSERT_TRUE(again.is_object());
-    EXPECT_EQ(again["status"], "playing");
-    EXPECT_EQ(again["restarts"], 1);
-    EXPECT_EQ(again["score"], 10);
+    // The restart is checked by MascotAnimationFollowsTheGame, on the same replay's 240 frames
+    // (one run serves both).
 }
 
 TEST(OrbGame, ReplaysAreDeterministic) {
@@ -91,6 +91,76 @@ TEST(OrbGame, ReplaysAreDeterministic) {
     nlohmann::json b = play("win.input", 200, "det_b");
     ASSERT_TRUE(a.is_object());
     EXPECT_EQ(a.dump(), b.dump());
+}
+
+// The mascot (the shared Fox, --mascot; the game's test passes the shared asset's path) idles
+// on Survey, crossfades to Walk over 0.25 s when
+// the game is lost, back to Survey on the restart, and to Run when the player scores; clip
+// times advance by the fixed 1/30 s step. Frames come from one replay, checked row by row.
+TEST(OrbGame, MascotAnimationFollowsTheGame) {
+    const std::string fox = std::string(CANDELA_SHARED_ASSETS) + "/models/Fox/Fox.glb";
+    nlohmann::json s = play("lose_restart.input", 240, "restarted", " --mascot " + fox);
+    ASSERT_TRUE(s.is_object() && s.contains("mascot")) << s.dump();
+    // The game itself: lost, restarted with R, first spark collected (the mascot changes none).
+    EXPECT_EQ(s["status"], "playing");
+    EXPECT_EQ(s["restarts"], 1);
+    EXPECT_EQ(s["score"], 10);
+    const nlohmann::json& m = s["mascot"];
+    const auto clipIndex = [&](const char* name) {
+        for (std::size_t i = 0; i < m["clips"].size(); ++i)
+            if (m["clips"][i]["name"] == name) return int(i);
+        return -1;
+    };
+    const int survey = clipIndex("Survey"), walk = clipIndex("Walk"), run = clipIndex("Run");
+    ASSERT_GE(survey, 0);
+    ASSERT_EQ(m["idle"], survey);
+    ASSERT_EQ(m["sulk"], walk);
+    ASSERT_EQ(m["cheer"], run);
+    const nlohmann::json& rows = m["frames"];
+    ASSERT_EQ(rows.size(), 240u);
+    constexpr float kStep = 1.0f / 30.0f, kFade = 0.25f;
+    const auto clip = [&](int f) { return rows[f][1].get<int>(); };
+    const auto time = [&](int f) { return rows[f][2].get<float>(); };
+    const auto next = [&](int f) { return rows[f][3].get<int>(); };
+    const auto weight = [&](int f) { return rows[f][4].get<float>(); };
+    const auto status = [&](int f) { return rows[f][6].get<std::string>(); };
+    const auto duration = [&](int c) { return m["clips"][c]["duration"].get<float>(); };
+    // The frames where the game changed: lost, restarted, first spark.
+    int lost = -1, restarted = -1, scored = -1;
+    for (int f = 1; f < 240; ++f) {
+        if (lost < 0 && status(f) == "lost") lost = f;
+        if (lost >= 0 && restarted < 0 && status(f) == "playing") restarted = f;
+        if (restarted >= 0 && scored < 0 && rows[f][5].get<int>() > 0) scored = f;
+    }
+    ASSERT_GT(lost, 10);
+    ASSERT_GT(restarted, lost + 10);
+    ASSERT_GT(scored, restarted + 10);
+    ASSERT_LT(scored + 31, 240);
+    for (int f = 0; f < lost; ++f) {
+        ASSERT_EQ(clip(f), survey) << "frame " << f;
+        ASSERT_EQ(next(f), -1) << "frame " << f;
+        EXPECT_NEAR(time(f), std::fmod(static_cast<float>(f) * kStep, duration(survey)), 1e-4)
+            << "frame " << f;
+    }
+    // The frame the game changes, the mascot asks for the crossfade (weight 0 until it runs).
+    EXPECT_EQ(next(lost), walk);
+    EXPECT_EQ(weight(lost), 0.0f);
+    // Each reaction: the next frame blends one step of the 0.25 s fade, and the fade ends
+    // after 8 steps (8/30 s > 0.25 s) with the new clip 8 steps in.
+    for (auto [at, from, to] : {std::tuple{lost, survey, walk}, std::tuple{restarted, walk, survey},
+                                std::tuple{scored, survey, run}}) {
+        EXPECT_EQ(clip(at + 1), from) << "frame " << at + 1;
+        EXPECT_EQ(next(at + 1), to) << "frame " << at + 1;
+        EXPECT_NEAR(weight(at + 1), kStep / kFade, 1e-4) << "frame " << at + 1;
+        EXPECT_NEAR(weight(at + 4), 4 * kStep / kFade, 1e-4) << "frame " << at + 4;
+        EXPECT_EQ(clip(at + 8), to) << "frame " << at + 8;
+        EXPECT_EQ(next(at + 8), -1) << "frame " << at + 8;
+        EXPECT_NEAR(time(at + 8), 8 * kStep, 1e-4) << "frame " << at + 8;
+    }
+    // A second after the spark, the cheer blends back to idle.
+    EXPECT_EQ(clip(scored + 30), run);
+    EXPECT_EQ(next(scored + 30), survey);
+    EXPECT_EQ(next(scored + 29), -1);
 }
 
 TEST(OrbGame, BadInputAndBadLevelsAreRefusedClearly) {

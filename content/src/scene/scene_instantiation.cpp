@@ -5,8 +5,11 @@
 #include <candela/ecs/view.h>
 
 #include "candela/content/builtin_meshes.h"
+#include "candela/content/components/animation.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/content/model_instantiation.h"
+#include "scene_animation.h"
 
 #include <algorithm>
 #include <unordered_map>
@@ -39,6 +42,38 @@ ecs::Entity createWithTransform(ecs::Registry& registry, const std::string& name
     return e;
 }
 
+// The entity's glTF model under it, and its AnimationPlayer moved onto the entity (where the
+// scene file's "animation" block and the editor's inspector find it) and set to `animation`.
+void instantiateSceneModel(ecs::Registry& registry, ecs::Entity e, const SceneEntity& source,
+                           const std::string& pointer, const std::filesystem::path& sceneFile,
+                           AssetCache& cache, Diagnostics& diagnostics) {
+    const std::string& stored = source.model->gltfPath;
+    registry.emplace<ModelInstance>(e, ModelInstance{stored});
+    // The cache keeps the model alive as long as the cache lives.
+    std::shared_ptr<const Model> model =
+        cache.model(resolveScenePath(sceneFile, stored), diagnostics);
+    if (!model) return;  // the loader named the file and the problem; saving keeps the path
+    const std::vector<ecs::Entity> created = instantiateModel(registry, *model, e, stored);
+    AnimationPlayer* first =
+        created.empty() ? nullptr : registry.tryGet<AnimationPlayer>(created.front());
+    if (first == nullptr) {
+        if (source.animation) {
+            diagnostics.error(sceneFile.string(), pointer + "/animation",
+                              stored + " has no animation clips");
+        }
+        return;
+    }
+    AnimationPlayer player = std::move(*first);
+    registry.remove<AnimationPlayer>(created.front());
+    if (source.animation) {
+        if (auto problem = restoreAnimationPlayer(*source.animation, player)) {
+            diagnostics.error(sceneFile.string(), pointer + "/animation" + problem->pointer,
+                              problem->message + "; the player starts over");
+        }
+    }
+    registry.emplace<AnimationPlayer>(e, std::move(player));
+}
+
 }  // namespace
 
 std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDocument& scene,
@@ -69,6 +104,10 @@ std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDo
             // The cache keeps the model alive as long as the cache lives.
             registry.emplace<MeshInstance>(
                 e, MeshInstance{hasMesh ? model.get() : nullptr, mesh, source.mesh->gltfPath});
+        }
+        if (source.model) {
+            instantiateSceneModel(registry, e, source, "/entities/" + std::to_string(i), sceneFile,
+                                  cache, diagnostics);
         }
         if (!source.materialOverrides.empty()) {
             registry.emplace<MaterialOverrides>(e, MaterialOverrides{source.materialOverrides});
@@ -119,6 +158,11 @@ SceneDocument captureScene(ecs::Registry& registry) {
             out.mesh = builtin;
         } else if (mesh && !mesh->gltfPath.empty()) {
             out.mesh = MeshReference{mesh->gltfPath, mesh->mesh, ""};
+        }
+        if (const auto* model = registry.tryGet<ModelInstance>(e)) {
+            out.model = ModelReference{model->gltfPath};
+            if (const auto* player = registry.tryGet<AnimationPlayer>(e))
+                out.animation = captureAnimationPlayer(*player);
         }
         if (const auto* overrides = registry.tryGet<MaterialOverrides>(e)) {
             out.materialOverrides = overrides->overrides;

@@ -405,6 +405,42 @@ public:
         }
     }
 
+    // A clip by name (a string) or by index (an integer); whether the model has it is checked
+    // when the model is loaded (instantiateScene).
+    void clip(const json& object, const std::string& p, SceneClip& out) {
+        auto it = object.find("clip");
+        if (it == object.end()) return;
+        if (it->is_string()) {
+            out.name = it->get<std::string>();
+            if (out.name.empty()) error(p + "/clip", "a clip name must not be empty");
+        } else {
+            integer(object, p, "clip", out.index, 0, std::numeric_limits<std::int32_t>::max());
+        }
+    }
+
+    void animation(const json& j, const std::string& p, SceneAnimation& a) {
+        clip(j, p, a.clip);
+        number(j, p, "time", a.time);
+        number(j, p, "speed", a.speed);
+        boolean(j, p, "loop", a.loop);
+        boolean(j, p, "playing", a.playing);
+        if (const json* c = nullptr; object(j, p, "crossfade", c)) {
+            const std::string q = p + "/crossfade";
+            SceneAnimation::Crossfade fade;
+            if (!c->contains("clip")) error(q + "/clip", "a crossfade needs its target clip");
+            clip(*c, q, fade.clip);
+            number(*c, q, "time", fade.time);
+            number(*c, q, "duration", fade.duration);
+            number(*c, q, "elapsed", fade.elapsed);
+            if (!(fade.duration > 0)) {
+                error(q + "/duration", "must be greater than 0 seconds");
+            } else if (fade.elapsed < 0 || fade.elapsed > fade.duration) {
+                error(q + "/elapsed", "must be between 0 and the duration");
+            }
+            a.crossfade = fade;
+        }
+    }
+
     SceneEntity entity(const json& j, const std::string& p, std::size_t entityCount) {
         SceneEntity e;
         if (!j.is_object()) {
@@ -425,6 +461,28 @@ public:
             if (clean([&] { this->mesh(*m, p + "/mesh", mesh, material); })) {
                 e.mesh = mesh;
                 if (material) e.materialOverrides.push_back(std::move(*material));
+            }
+        }
+        if (const json* m = nullptr; object(j, p, "model", m)) {
+            ModelReference model;
+            if (clean([&] {
+                    string(*m, p + "/model", "gltf", model.gltfPath);
+                    if (model.gltfPath.empty())
+                        error(p + "/model/gltf", "expected the path of a glTF model");
+                })) {
+                e.model = model;
+            }
+        }
+        // A bad animation block is dropped: the model still loads, its player reset.
+        if (const json* a = nullptr; object(j, p, "animation", a)) {
+            SceneAnimation value;
+            if (clean([&] {
+                    if (!e.model) {
+                        return error(p + "/animation", "an animation needs the entity's \"model\"");
+                    }
+                    animation(*a, p + "/animation", value);
+                })) {
+                e.animation = value;
             }
         }
         if (auto it = j.find("materialOverrides"); it != j.end()) {

@@ -163,6 +163,24 @@ struct Writer {
             {"exposureCompensation", number(c.exposureCompensation, p + "/exposureCompensation")}};
     }
 
+    static json clip(const SceneClip& c) { return c.name.empty() ? json(c.index) : json(c.name); }
+
+    json animation(const SceneAnimation& a, const std::string& p) {
+        json out = {{"clip", clip(a.clip)},
+                    {"time", number(a.time, p + "/time")},
+                    {"speed", number(a.speed, p + "/speed")},
+                    {"loop", a.loop},
+                    {"playing", a.playing}};
+        if (a.crossfade) {
+            const std::string q = p + "/crossfade";
+            out["crossfade"] = {{"clip", clip(a.crossfade->clip)},
+                                {"time", number(a.crossfade->time, q + "/time")},
+                                {"duration", number(a.crossfade->duration, q + "/duration")},
+                                {"elapsed", number(a.crossfade->elapsed, q + "/elapsed")}};
+        }
+        return out;
+    }
+
     json entity(const SceneEntity& e, const std::string& p) {
         json out = {{"name", e.name}, {"transform", transform(e.transform, p + "/transform")}};
         if (e.parent != kNoIndex) out["parent"] = e.parent;
@@ -171,6 +189,8 @@ struct Writer {
         } else if (e.mesh) {
             out["mesh"] = {{"gltf", e.mesh->gltfPath}, {"mesh", e.mesh->meshIndex}};
         }
+        if (e.model) out["model"] = {{"gltf", e.model->gltfPath}};
+        if (e.animation) out["animation"] = animation(*e.animation, p + "/animation");
         if (!e.materialOverrides.empty()) {
             json overrides = json::array();
             for (std::size_t i = 0; i < e.materialOverrides.size(); ++i) {

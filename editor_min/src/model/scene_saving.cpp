@@ -36,6 +36,7 @@ content::SceneDocument documentForSaving(ecs::Registry& registry,
         if (entity.mesh && entity.mesh->builtin.empty()) {
             entity.mesh->gltfPath = rebase(entity.mesh->gltfPath, from, to);
         }
+        if (entity.model) entity.model->gltfPath = rebase(entity.model->gltfPath, from, to);
         if (entity.sky) entity.sky->exrPath = rebase(entity.sky->exrPath, from, to);
     }
     return document;

@@ -3,18 +3,23 @@
 // headers (runtime, ecs, content), as a user's game would be.
 //
 //   candela-orb-game [run] [LEVEL.scene.json | REPLAY.input] [--state FILE.json]
+//                    [--mascot MODEL.glb]
 //                    [the standard flags: --headless --size WxH --frames N --input SCRIPT
 //                     --capture FILE.png|.exr --stats FILE.json ... (--help lists them)]
 //
 // Keys: WASD or arrows steer, R restarts. A REPLAY.input is recorded input for the default
 // level (the same as --input); `run` is accepted so the golden-image harness can drive it.
+// --mascot adds an animated glTF character (e.g. the shared Fox) that cheers when the player
+// scores and sulks when the game is lost; --state then logs its animation every frame.
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "candela/content/atomic_file_write.h"
+#include "candela/content/components/animation.h"
 #include "candela/content/diagnostics.h"
+#include "candela/content/model.h"
 #include "candela/ecs/transform.h"
 #include "candela/runtime/application.h"
 #include "candela/runtime/exit_code.h"
@@ -26,12 +31,31 @@ namespace {
 
 using namespace candela::runtime;
 
-constexpr const char* kGameUsage = "[run] [LEVEL.scene.json | REPLAY.input] [--state FILE.json]";
+constexpr const char* kGameUsage =
+    "[run] [LEVEL.scene.json | REPLAY.input] [--state FILE.json] [--mascot MODEL.glb]";
+
+// The mascot's clips and its animation state each frame: [frame, clip, time, next clip (-1:
+// none), crossfade weight, score, status].
+nlohmann::json mascotJson(const orb::Mascot& m, const candela::content::AnimationPlayer& player) {
+    nlohmann::json clips = nlohmann::json::array();
+    for (const auto& clip : player.model->animations)
+        clips.push_back({{"name", clip.name}, {"duration", clip.duration}});
+    nlohmann::json frames = nlohmann::json::array();
+    for (const orb::Mascot::Row& r : m.log) {
+        frames.push_back({r.frame, r.clip, r.time, r.nextClip, r.fadeWeight, r.score,
+                          orb::statusName(r.status)});
+    }
+    return {{"clips", std::move(clips)},
+            {"idle", m.idleClip},
+            {"cheer", m.cheerClip},
+            {"sulk", m.sulkClip},
+            {"frames", std::move(frames)}};
+}
 
 // The final game state as JSON, for tests and for anyone scripting the game. Returns the
 // error (path and OS error) or an empty string.
 std::string writeState(const std::string& path, const orb::GameState& s, uint32_t frames,
-                       candela::ecs::Vec3 orbAt) {
+                       candela::ecs::Vec3 orbAt, const nlohmann::json& mascot) {
     nlohmann::json j = {{"status", orb::statusName(s.status)},
                         {"reason", s.reason},
                         {"score", s.score},
@@ -41,6 +65,7 @@ std::string writeState(const std::string& path, const orb::GameState& s, uint32_
                         {"elapsed_seconds", s.elapsedSeconds},
                         {"frames", frames},
                         {"orb_position", {orbAt.x, orbAt.y, orbAt.z}}};
+    if (!mascot.is_null()) j["mascot"] = mascot;
     return candela::content::writeFileAtomically(path, j.dump(2) + '\n');
 }
 
@@ -57,12 +82,14 @@ int main(int argc, char** argv) {
     ApplicationOptions options = *command.options;
     options.title = "Orb";
     std::string level = ORB_GAME_DIR "/level.scene.json";
-    std::string inputPath, statePath;
+    std::string inputPath, statePath, mascotPath;
     const std::vector<std::string>& args = command.arguments;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         if (a == "--state" && i + 1 < args.size()) {
             statePath = args[++i];
+        } else if (a == "--mascot" && i + 1 < args.size()) {
+            mascotPath = args[++i];
         } else if (!a.empty() && a[0] != '-' && a.ends_with(".input")) {
             inputPath = a;  // a replay: the same as --input
         } else if (!a.empty() && a[0] != '-') {
@@ -92,6 +119,16 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "orb: %s\n", error.c_str());
         return kExitBadArguments;
     }
+    if (!mascotPath.empty()) {
+        candela::content::Diagnostics mascotDiagnostics;
+        if (std::string error = orb::spawnMascot(app.world(), mascotPath, mascotDiagnostics);
+            !error.empty()) {
+            for (const auto& d : mascotDiagnostics.messages)
+                std::fprintf(stderr, "orb: %s\n", candela::content::formatDiagnostic(d).c_str());
+            std::fprintf(stderr, "orb: %s\n", error.c_str());
+            return kExitBadArguments;
+        }
+    }
     app.setClearRadiance({0.002f, 0.002f, 0.004f, 1.0f});  // a dark night
     orb::addOrbSystems(app);
 
@@ -109,7 +146,12 @@ int main(int argc, char** argv) {
                     orb::statusName(state->status), state->score, state->collected, state->total,
                     state->elapsedSeconds, app.framesRendered());
         if (statePath.empty()) return exitCode;
-        if (std::string error = writeState(statePath, *state, app.framesRendered(), orbAt);
+        nlohmann::json mascot;
+        app.world().registry.view<const orb::Mascot>().each([&](const orb::Mascot& m) {
+            if (auto* p = app.world().registry.tryGet<candela::content::AnimationPlayer>(m.player))
+                mascot = mascotJson(m, *p);
+        });
+        if (std::string error = writeState(statePath, *state, app.framesRendered(), orbAt, mascot);
             !error.empty()) {
             std::fprintf(stderr, "orb: %s\n", error.c_str());
             return exitCode == kExitOk ? kExitFailure : exitCode;

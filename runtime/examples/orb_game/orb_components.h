@@ -2,7 +2,9 @@
 // The orb game's state, all of it in components: the ECS holds the game, systems change it.
 #include <cstdint>
 #include <string>
+#include <vector>
 
+#include "candela/ecs/entity.h"
 #include "candela/ecs/transform_math.h"
 
 namespace orb {
@@ -48,6 +50,30 @@ struct GameState {
     std::int32_t restarts = 0;
     Status status = Status::Playing;
     std::string reason;  // why the game ended ("all sparks collected", "caught", "out of time")
+};
+
+// An animated glTF character watching the game (--mascot MODEL.glb, e.g. the shared Fox): it
+// idles on its first clip, crossfades to a cheer clip when the player scores (and back to idle
+// cheerSeconds later), stays cheering on a win, and crossfades to a sulk clip on a loss.
+struct Mascot {
+    candela::ecs::Entity player = candela::ecs::kNullEntity;  // holds the AnimationPlayer
+    std::int32_t idleClip = 0, cheerClip = 0, sulkClip = 0;
+    float fadeSeconds = 0.25f;
+    float cheerSeconds = 1.0f;
+    std::int32_t lastScore = 0;
+    Status lastStatus = Status::Playing;
+    double cheerUntil = -1.0;  // scene seconds; < 0: not cheering for a score
+    // One row per frame, after the frame's sampling and the mascot's reaction (--state).
+    struct Row {
+        std::uint32_t frame = 0;
+        std::int32_t clip = -1;
+        float time = 0;
+        std::int32_t nextClip = -1;
+        float fadeWeight = 0;
+        std::int32_t score = 0;
+        Status status = Status::Playing;
+    };
+    std::vector<Row> log;
 };
 
 const char* statusName(Status status);

@@ -4,10 +4,12 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "candela/content/components/animation.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/scene_components.h"
 #include "candela/content/procedural_mesh.h"
+#include "candela/ecs/hierarchy.h"
 #include "candela/ecs/transform.h"
 #include "orb_components.h"
 
@@ -156,6 +158,36 @@ std::string spawnLevel(candela::runtime::SceneWorld& world, const std::string& l
     int32_t total = 0;
     registry.view<const Pickup>().each([&](const Pickup&) { ++total; });
     registry.view<GameState>().each([&](GameState& s) { s.total = total; });
+    return {};
+}
+
+std::string spawnMascot(candela::runtime::SceneWorld& world, const std::string& modelPath,
+                        candela::content::Diagnostics& diagnostics) {
+    using candela::content::AnimationPlayer;
+    // On the north wall's middle, facing the player (+Z); sized for a fox of about 1 m.
+    candela::ecs::LocalTransform at;
+    at.position = {0.0f, 1.0f, -6.25f};
+    at.scale = {0.02f, 0.02f, 0.02f};
+    const Entity root = world.spawn("mascot", at);
+    if (!world.loadGltf(modelPath, diagnostics, root))
+        return modelPath + ": cannot load the mascot";
+    Mascot mascot;
+    for (Entity e : candela::ecs::descendantsOf(world.registry, root))
+        if (world.registry.has<AnimationPlayer>(e)) mascot.player = e;
+    if (mascot.player == candela::ecs::kNullEntity)
+        return modelPath + ": the mascot has no animation clips";
+    // The Fox's clips by name; any other model: its first, last and second clip.
+    const AnimationPlayer& player = world.registry.get<AnimationPlayer>(mascot.player);
+    const auto clip = [&](const char* name, std::int32_t fallback) {
+        const std::int32_t found = player.findClip(name);
+        return found >= 0 ? found : fallback;
+    };
+    const auto count = static_cast<std::int32_t>(player.model->animations.size());
+    mascot.idleClip = clip("Survey", 0);
+    mascot.cheerClip = clip("Run", count - 1);
+    mascot.sulkClip = clip("Walk", count > 1 ? 1 : 0);
+    world.registry.get<AnimationPlayer>(mascot.player).play(mascot.idleClip);
+    world.registry.emplace<Mascot>(root, std::move(mascot));
     return {};
 }
 

@@ -12,4 +12,10 @@ namespace orb {
 // empty string, or a message naming the problem (no orb, no rules, a malformed role).
 std::string spawnLevel(candela::runtime::SceneWorld& world, const std::string& levelName);
 
+// Loads the glTF at `modelPath` as the level's mascot (a Mascot component), standing on the
+// north wall and facing the player. Returns an empty string, or the problem (the loader's
+// messages are in `diagnostics`; a model without clips is refused).
+std::string spawnMascot(candela::runtime::SceneWorld& world, const std::string& modelPath,
+                        candela::content::Diagnostics& diagnostics);
+
 }  // namespace orb

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "candela/content/components/animation.h"
 #include "candela/content/components/light.h"
 #include "candela/ecs/transform.h"
 #include "orb_components.h"
@@ -216,6 +217,36 @@ void refereeSystem(SceneWorld& world, const FrameContext& f) {
     }
 }
 
+// Runs after the engine sampled this frame's pose: a reaction starts blending next frame.
+void mascotSystem(SceneWorld& world, const FrameContext& f) {
+    const GameState* state = gameState(world);
+    if (!state) return;
+    world.registry.view<Mascot>().each([&](candela::ecs::Entity, Mascot& m) {
+        auto* player = world.registry.tryGet<candela::content::AnimationPlayer>(m.player);
+        if (!player) return;
+        const auto blendTo = [&](std::int32_t clip) {
+            const std::int32_t heading = player->nextClip >= 0 ? player->nextClip : player->clip;
+            if (heading != clip) player->crossfade(clip, m.fadeSeconds);
+        };
+        if (state->status != m.lastStatus) {
+            m.cheerUntil = -1.0;
+            blendTo(state->status == Status::Lost  ? m.sulkClip
+                    : state->status == Status::Won ? m.cheerClip
+                                                   : m.idleClip);  // a restart
+        } else if (state->status == Status::Playing && state->score > m.lastScore) {
+            m.cheerUntil = f.seconds + m.cheerSeconds;
+            blendTo(m.cheerClip);
+        } else if (m.cheerUntil >= 0.0 && f.seconds >= m.cheerUntil) {
+            m.cheerUntil = -1.0;
+            blendTo(m.idleClip);
+        }
+        m.lastStatus = state->status;
+        m.lastScore = state->score;
+        m.log.push_back({f.frame, player->clip, player->time, player->nextClip,
+                         player->fadeWeight(), state->score, state->status});
+    });
+}
+
 void animateSystem(SceneWorld& world, const FrameContext& f) {
     // Sparks bob so they read as alive; by scene time, so headless frames repeat.
     world.registry.view<const Pickup, LocalTransform>().each(
@@ -246,6 +277,9 @@ void addOrbSystems(candela::runtime::Application& app) {
     app.addSystem("referee", Phase::Update, refereeSystem)
         .reads<Orb, Hazard, LocalTransform>()
         .writes<GameState, Light>();
+    app.addSystem("mascot", Phase::Update, mascotSystem)
+        .reads<GameState>()
+        .writes<Mascot, candela::content::AnimationPlayer>();
     app.addSystem("animate", Phase::Update, animateSystem).reads<Pickup>().writes<LocalTransform>();
     // The HUD: the window title, rewritten only when what it says changes.
     app.addSystem("hud", Phase::Update,

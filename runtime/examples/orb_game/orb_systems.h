@@ -12,6 +12,7 @@ void steerSystem(candela::runtime::SceneWorld& world, const candela::runtime::Fr
 void patrolSystem(candela::runtime::SceneWorld& world, const candela::runtime::FrameContext& f);
 void collectSystem(candela::runtime::SceneWorld& world, const candela::runtime::FrameContext& f);
 void refereeSystem(candela::runtime::SceneWorld& world, const candela::runtime::FrameContext& f);
+void mascotSystem(candela::runtime::SceneWorld& world, const candela::runtime::FrameContext& f);
 void animateSystem(candela::runtime::SceneWorld& world, const candela::runtime::FrameContext& f);
 
 // Adds the systems above, plus one that keeps the window title as the HUD.

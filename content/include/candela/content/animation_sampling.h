@@ -13,10 +13,17 @@ namespace candela::content {
 // w) come out unit length.
 void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
                      std::span<float> out);
+// The same, starting the key search at `cursor` (the interval found last time, updated):
+// playback moves forward a key or less per frame, so the search is O(1) amortised instead of
+// a binary search per channel. Any cursor value gives the same result.
+void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
+                     std::span<float> out, std::uint32_t& cursor);
 
 // Index k of the key interval [times[k], times[k+1]] holding `time` (0 before the first key,
 // times.size() - 1 from the last key on).
 std::size_t keyIntervalAt(const std::vector<float>& times, float time);
+// The same, trying `cursor` and the interval after it before searching; updates `cursor`.
+std::size_t keyIntervalAt(const std::vector<float>& times, float time, std::uint32_t& cursor);
 
 // Wraps or clamps a play time into [0, duration].
 float clipTime(float time, float duration, bool loop);

@@ -42,11 +42,53 @@ struct MeshReference {
     bool operator==(const MeshReference&) const = default;
 };
 
+// A whole glTF model under the entity ("model": {"gltf": ...}): its node hierarchy, skins and
+// clips, made as the entity's children the way instantiateModel() makes them. Those children
+// are not scene members: loading makes them again from the glTF.
+struct ModelReference {
+    std::string gltfPath;  // relative to the scene file
+
+    bool operator==(const ModelReference&) const = default;
+};
+
+// A clip of the entity's model, by name (when `name` is not empty) or by index.
+struct SceneClip {
+    std::string name;
+    std::int32_t index = 0;
+
+    bool operator==(const SceneClip&) const = default;
+};
+
+// The model's AnimationPlayer state ("animation": {...}), restored on loading and written back
+// on saving. Mirrors AnimationPlayer (components/animation.h) with clips named.
+struct SceneAnimation {
+    SceneClip clip;
+    float time = 0;   // seconds into the clip
+    float speed = 1;  // finite; negative plays backwards
+    bool loop = true;
+    bool playing = true;
+    // A crossfade in progress ("crossfade": {"clip", "time", "duration", "elapsed"}).
+    struct Crossfade {
+        SceneClip clip;
+        float time = 0;      // seconds into the target clip
+        float duration = 1;  // > 0
+        float elapsed = 0;   // 0..duration
+
+        bool operator==(const Crossfade&) const = default;
+    };
+    std::optional<Crossfade> crossfade;
+
+    bool operator==(const SceneAnimation&) const = default;
+};
+
 struct SceneEntity {
     std::string name;
     Transform transform;             // local, relative to the parent
     std::int32_t parent = kNoIndex;  // index into SceneDocument::entities
     std::optional<MeshReference> mesh;
+    std::optional<ModelReference> model;
+    // Only with `model`; unset: the model's first clip from time 0, looping.
+    std::optional<SceneAnimation> animation;
     std::vector<MaterialOverride> materialOverrides;
     std::optional<Light> light;
     std::optional<Camera> camera;

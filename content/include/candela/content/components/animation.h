@@ -54,8 +54,16 @@ struct AnimationPlayer {
         std::vector<ecs::LocalTransform> blendPose;  // per node, clip B
         std::vector<float> weights;                  // per node's morph targets, clip A
         std::vector<float> blendWeights;             // clip B
-        std::vector<std::uint32_t> weightOffset;     // node -> first slot in weights
-        std::vector<std::uint8_t> touched;           // node animated by A (1), B (2)
+        // The model's rest pose and morph weights, laid out as pose / weights: each frame
+        // starts from a copy of them.
+        std::vector<ecs::LocalTransform> restPose;
+        std::vector<float> restWeights;
+        std::vector<std::uint32_t> weightOffset;  // node -> first slot in weights
+        std::vector<std::uint8_t> touched;        // node animated by A (1), B (2)
+        // Per channel of clip A / B, the key interval sampled last (sampleAnimation's cursor):
+        // sized for the model's largest clip, so switching clips allocates nothing.
+        std::vector<std::uint32_t> cursors;
+        std::vector<std::uint32_t> blendCursors;
         // The pose last written: a paused player whose clip and time did not change writes
         // nothing (and so its skeleton's skins are not rebuilt).
         bool applied = false;

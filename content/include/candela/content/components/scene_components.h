@@ -22,6 +22,12 @@ struct GameData {
     std::string json;
 };
 
+// A whole glTF model instantiated under the entity (SceneEntity::model); the entity also holds
+// the model's AnimationPlayer when it has clips.
+struct ModelInstance {
+    std::string gltfPath;  // as the scene file stores it
+};
+
 // Marks an entity that belongs to the saved scene; `order` keeps file order across a
 // load/save round trip.
 struct SceneMember {
