@@ -484,6 +484,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             : world && world->sceneExposureCompensation() ? *world->sceneExposureCompensation()
                                                           : 0.0f;
         rendererOptions.ao = aoFor(options, world.get());
+        rendererOptions.ssr = options.ssr;
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
