@@ -318,6 +318,15 @@ void Renderer::createTargets() {
     }
     aoHistoryValid_ = false;
     aoFrame_ = 0;
+    if (options_.ssr != SsrMode::Off && options_.ssrSettings.temporal) {
+        // Cleared and shader-readable from the start, as AO's (the first frame ignores them).
+        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
+        for (GpuImage& h : ssrHistory_) {
+            h = GpuImage(context_, SsrPass::historyDesc(width_, height_));
+            writeImage(context_, h, 16, zeros.data());
+        }
+    }
+    ssrHistoryValid_ = false;
     // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
     ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
@@ -341,6 +350,7 @@ bool Renderer::aoAccumulates() const {
 
 void Renderer::restartTemporalHistory() {
     historyValid_ = false;
+    ssrHistoryValid_ = false;
     aoHistoryValid_ = false;
     aoFrame_ = 0;
     hasPreviousFrame_ = false;
@@ -688,8 +698,11 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
     ssrTraced_ = false;
+    const bool ssrHistoryWas = ssrHistoryValid_;
+    ssrHistoryValid_ = false;  // unless this frame filters (a frame without SSR breaks it)
     if (options_.ssr != SsrMode::Off &&
         hasGlossySurface(inputs.scene, resources, options_.ssrSettings.roughnessCutoff)) {
+        ssrHistoryValid_ = ssrHistoryWas;
         h.hdr.version = declareSsr(h, environment, features.ibl.has_value(),
                                    features.ibl == IblMode::Mobile, inputs.scene.skyIntensity);
     }
@@ -1033,9 +1046,22 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
         p.read(depth, Use::Sampled);
         pyramid = p.write(pyramid, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
     }
+    // The pre-convolved scene: the lit HDR radiance and its blurred levels.
+    ResourceHandle hdr = h.hdr;
+    ResourceHandle colors = g.createImage("ssr.colors", SsrPass::colorDesc(width_, height_));
+    for (uint32_t level = 0; level < levels; ++level) {
+        const ResourceHandle source = colors;
+        auto p = g.addPass("ssr_color" + std::to_string(level), PassKind::Device,
+                           [this, hdr, source, level](PassContext& ctx) {
+                               ssrPass_->recordColor(ctx.cmd(), cameraBuffer_, ctx.image(hdr),
+                                                     ctx.image(source), level, width_, height_);
+                           });
+        p.read(camera, Use::Uniform);
+        if (level == 0) p.read(hdr, Use::StorageRead);
+        colors = p.write(colors, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
+    }
     ResourceHandle reflection =
         g.createImage("ssr.reflection", SsrPass::reflectionDesc(width_, height_));
-    ResourceHandle hdr = h.hdr;
     SsrPass::TraceInputs in;
     in.camera = &cameraBuffer_;
     in.hasEnvironment = sky;
@@ -1048,7 +1074,7 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
     const ResourceHandle normal = h.color[1], baseColor = h.color[0], specular = h.color[2];
     {
         auto p = g.addPass("ssr_trace", PassKind::Device,
-                           [this, in, environment, normal, baseColor, specular, pyramid, hdr,
+                           [this, in, environment, normal, baseColor, specular, pyramid, colors,
                             reflection](PassContext& ctx) {
                                SsrPass::TraceInputs inputs = in;
                                inputs.environment = &environment;
@@ -1056,7 +1082,7 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
                                inputs.baseColor = ctx.image(baseColor);
                                inputs.specularModel = ctx.image(specular);
                                inputs.pyramid = ctx.image(pyramid);
-                               inputs.hdr = ctx.image(hdr);
+                               inputs.colors = ctx.image(colors);
                                ssrPass_->recordTrace(ctx.cmd(), inputs, ctx.image(reflection));
                            });
         p.read(camera, Use::Uniform);
@@ -1064,9 +1090,41 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
         p.read(baseColor, Use::Sampled);
         p.read(specular, Use::Sampled);
         p.read(pyramid, Use::StorageRead);
-        p.read(hdr, Use::StorageRead);
+        p.read(colors, Use::StorageRead);
         p.write(counters, Use::StorageReadWrite);
         reflection = p.write(reflection, Use::StorageWrite);
+    }
+    if (options_.ssrSettings.temporal) {
+        // As TAA's history: last frame's image is read in the state it was left in, the
+        // other's contents are discarded and rewritten.
+        constexpr ImageState kSampledByCompute{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+        constexpr ImageState kDiscard{VK_IMAGE_LAYOUT_UNDEFINED,
+                                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0};
+        features_.push_back("ssr_temporal");
+        const ResourceHandle history = g.importImage(
+            "ssr.history", &ssrHistory_[ssrHistoryWrite_ ^ 1u], kSampledByCompute, ImageState{});
+        ResourceHandle filtered = g.importImage(
+            "ssr.history_written", &ssrHistory_[ssrHistoryWrite_], kDiscard, kSampledByCompute);
+        const ResourceHandle motion = h.motion;
+        const ResourceHandle current = reflection;
+        const bool valid = ssrHistoryValid_;
+        const float blend = options_.ssrSettings.temporalBlend;
+        auto t =
+            g.addPass("ssr_temporal", PassKind::Device,
+                      [this, current, motion, history, filtered, valid, blend](PassContext& ctx) {
+                          ssrPass_->recordTemporal(ctx.cmd(), cameraBuffer_, ctx.image(current),
+                                                   ctx.image(motion), ctx.image(history), valid,
+                                                   blend, ctx.image(filtered));
+                      });
+        t.read(camera, Use::Uniform);
+        t.read(current, Use::Sampled);
+        t.read(motion, Use::Sampled);
+        t.read(history, Use::Sampled);
+        reflection = t.write(filtered, Use::StorageWrite);
+        ssrHistoryWrite_ ^= 1u;
+        ssrHistoryValid_ = true;
     }
     auto p =
         g.addPass("ssr_composite", PassKind::Device, [this, reflection, hdr](PassContext& ctx) {

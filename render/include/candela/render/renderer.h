@@ -180,6 +180,11 @@ private:
     std::unique_ptr<AmbientOcclusionPass> aoPass_;  // made on the first frame with AO
     std::unique_ptr<SsrPass> ssrPass_;              // made on the first frame with a glossy surface
     bool ssrTraced_ = false;  // this frame declared the SSR trace (its counters)
+    // SSR's temporal filter: two reflection histories like TAA's (made when the options ask
+    // for it), the one written last frame and whether it holds a frame.
+    std::array<GpuImage, 2> ssrHistory_;
+    uint32_t ssrHistoryWrite_ = 0;
+    bool ssrHistoryValid_ = false;
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;

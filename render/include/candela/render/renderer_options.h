@@ -111,6 +111,10 @@ struct SsrSettings {
     float thickness = 0.5f;             // metres behind a depth-buffer surface that are solid
     float referenceStepPixels = 0.5f;   // the reference march's step along the screen
     uint32_t referenceMaxSteps = 8192;  // the reference march's cap
+    // Temporal filtering: last frame's reflection reprojected with the motion vectors, clamped
+    // to this frame's neighbourhood (rejecting disoccluded history) and blended by this weight.
+    bool temporal = true;
+    float temporalBlend = 0.25f;
 };
 
 struct RendererOptions {

@@ -25,6 +25,14 @@
 // Counters for --stats: steps summed, most steps, hits, rays.
 #define SSR_BINDING_COUNTERS 11
 
+// The pre-convolved scene (ssr_color.comp): RGBA16F, the Hi-Z pyramid's layout.
+#define SSR_BINDING_COLOR 12
+// Temporal filtering (ssr_temporal.comp): the G-buffer's motion, last frame's filtered
+// reflection, and this frame's (written, what the composite adds).
+#define SSR_BINDING_MOTION 13
+#define SSR_BINDING_HISTORY 14
+#define SSR_BINDING_HISTORY_OUTPUT 15
+
 // Highest Hi-Z level + 1 (a 65536-pixel side needs 17).
 #define SSR_MAX_LEVELS 16
 

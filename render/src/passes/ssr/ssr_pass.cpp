@@ -6,8 +6,10 @@
 #include "candela/render/gpu_image.h"
 #include "ibl/environment_descriptors.h"
 #include "passes/ssr/ssr_bindings.h"
+#include "shaders/ssr_color.comp.spv.h"
 #include "shaders/ssr_composite.comp.spv.h"
 #include "shaders/ssr_hiz.comp.spv.h"
+#include "shaders/ssr_temporal.comp.spv.h"
 #include "shaders/ssr_trace.comp.spv.h"
 
 namespace candela::render {
@@ -16,6 +18,11 @@ namespace {
 
 struct HizPush {
     uint32_t level;
+};
+
+struct TemporalPush {
+    uint32_t historyValid;
+    float blend;
 };
 
 struct TracePush {
@@ -54,13 +61,27 @@ SsrPass::SsrPass(GpuContext& context)
         {SSR_BINDING_HIZ, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
     };
     hiz_ = Pipeline::compute(context, ssr_hiz_comp_spv, hiz, sizeof(HizPush));
+    const DescriptorBinding color[] = {
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+        {SSR_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+        {SSR_BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    };
+    color_ = Pipeline::compute(context, ssr_color_comp_spv, color, sizeof(HizPush));
+    const DescriptorBinding temporal[] = {
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+        {SSR_BINDING_REFLECTION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {SSR_BINDING_MOTION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {SSR_BINDING_HISTORY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {SSR_BINDING_HISTORY_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    };
+    temporal_ = Pipeline::compute(context, ssr_temporal_comp_spv, temporal, sizeof(TemporalPush));
     const DescriptorBinding trace[] = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
         {SSR_BINDING_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_BASE_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_SPECULAR_MODEL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_HIZ, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
-        {SSR_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+        {SSR_BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
         {SSR_BINDING_PREFILTERED, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_BRDF_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_REFLECTION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
@@ -96,6 +117,18 @@ ImageDesc SsrPass::pyramidDesc(uint32_t width, uint32_t height) {
             VK_IMAGE_USAGE_STORAGE_BIT};
 }
 
+ImageDesc SsrPass::colorDesc(uint32_t width, uint32_t height) {
+    ImageDesc desc = pyramidDesc(width, height);
+    desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    return desc;
+}
+
+ImageDesc SsrPass::historyDesc(uint32_t width, uint32_t height) {
+    ImageDesc desc = reflectionDesc(width, height);
+    desc.usage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    return desc;
+}
+
 ImageDesc SsrPass::reflectionDesc(uint32_t width, uint32_t height) {
     return {VK_FORMAT_R32G32B32A32_SFLOAT,
             width,
@@ -128,6 +161,54 @@ void SsrPass::recordHiz(VkCommandBuffer cmd, const GpuBuffer& camera, const Imag
     vkCmdDispatch(cmd, groups(width), groups(height), 1);
 }
 
+void SsrPass::recordColor(VkCommandBuffer cmd, const GpuBuffer& camera, const ImageRef& hdr,
+                          const ImageRef& colors, uint32_t level, uint32_t width,
+                          uint32_t height) const {
+    VkDescriptorBufferInfo cameraInfo{camera.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo colorInfo{VK_NULL_HANDLE, colors.view(), VK_IMAGE_LAYOUT_GENERAL};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageImageWrite(SSR_BINDING_HDR, &hdrInfo),
+        storageImageWrite(SSR_BINDING_COLOR, &colorInfo),
+    };
+    for (uint32_t l = 0; l < level; ++l) {
+        width = halfUp(width);
+        height = halfUp(height);
+    }
+    const HizPush push{level};
+    color_.bind(cmd);
+    color_.pushDescriptors(cmd, writes);
+    color_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(width), groups(height), 1);
+}
+
+void SsrPass::recordTemporal(VkCommandBuffer cmd, const GpuBuffer& camera, const ImageRef& current,
+                             const ImageRef& motion, const ImageRef& history, bool historyValid,
+                             float blend, const ImageRef& filtered) const {
+    VkDescriptorBufferInfo cameraInfo{camera.handle(), 0, VK_WHOLE_SIZE};
+    auto sampled = [this](const ImageRef& image) {
+        return VkDescriptorImageInfo{pointSampler_.handle(), image.view(),
+                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    };
+    const VkDescriptorImageInfo currentInfo = sampled(current);
+    const VkDescriptorImageInfo motionInfo = sampled(motion);
+    const VkDescriptorImageInfo historyInfo = sampled(history);
+    VkDescriptorImageInfo output{VK_NULL_HANDLE, filtered.view(), VK_IMAGE_LAYOUT_GENERAL};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        sampledImageWrite(SSR_BINDING_REFLECTION, &currentInfo),
+        sampledImageWrite(SSR_BINDING_MOTION, &motionInfo),
+        sampledImageWrite(SSR_BINDING_HISTORY, &historyInfo),
+        storageImageWrite(SSR_BINDING_HISTORY_OUTPUT, &output),
+    };
+    const TemporalPush push{historyValid ? 1u : 0u, blend};
+    temporal_.bind(cmd);
+    temporal_.pushDescriptors(cmd, writes);
+    temporal_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(filtered.desc().width), groups(filtered.desc().height), 1);
+}
+
 void SsrPass::recordTrace(VkCommandBuffer cmd, const TraceInputs& in,
                           const ImageRef& reflection) const {
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
@@ -139,7 +220,7 @@ void SsrPass::recordTrace(VkCommandBuffer cmd, const TraceInputs& in,
     const VkDescriptorImageInfo baseColor = sampled(in.baseColor);
     const VkDescriptorImageInfo specular = sampled(in.specularModel);
     VkDescriptorImageInfo pyramid{VK_NULL_HANDLE, in.pyramid.view(), VK_IMAGE_LAYOUT_GENERAL};
-    VkDescriptorImageInfo hdr{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo colors{VK_NULL_HANDLE, in.colors.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorImageInfo output{VK_NULL_HANDLE, reflection.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorBufferInfo counterInfo{counters_.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {
@@ -148,7 +229,7 @@ void SsrPass::recordTrace(VkCommandBuffer cmd, const TraceInputs& in,
         sampledImageWrite(SSR_BINDING_BASE_COLOR, &baseColor),
         sampledImageWrite(SSR_BINDING_SPECULAR_MODEL, &specular),
         storageImageWrite(SSR_BINDING_HIZ, &pyramid),
-        storageImageWrite(SSR_BINDING_HDR, &hdr),
+        storageImageWrite(SSR_BINDING_COLOR, &colors),
         sampledImageWrite(SSR_BINDING_PREFILTERED, &in.environment->prefiltered),
         sampledImageWrite(SSR_BINDING_BRDF_LUT, &in.environment->brdfLut),
         storageImageWrite(SSR_BINDING_REFLECTION, &output),

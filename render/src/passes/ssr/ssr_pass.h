@@ -25,18 +25,26 @@ public:
     // R32F holding every level (ssr_levels.glsl): level 0 at the origin, the others in a column
     // to its right, each below the one before.
     static ImageDesc pyramidDesc(uint32_t width, uint32_t height);
+    // RGBA16F pre-convolved scene in the same layout.
+    static ImageDesc colorDesc(uint32_t width, uint32_t height);
     // RGBA32F: what the trace adds to each pixel (rgb) and its confidence (a).
     static ImageDesc reflectionDesc(uint32_t width, uint32_t height);
+    // The temporal filter's history: a reflection image that starts cleared (transfer dst).
+    static ImageDesc historyDesc(uint32_t width, uint32_t height);
 
     // Level `level` of the pyramid from `depth` (level 0) or the level below it.
     void recordHiz(VkCommandBuffer cmd, const GpuBuffer& camera, const ImageRef& depth,
                    const ImageRef& pyramid, uint32_t level, uint32_t width, uint32_t height) const;
 
+    // Level `level` of the pre-convolved scene from `hdr` (level 0) or the level below it.
+    void recordColor(VkCommandBuffer cmd, const GpuBuffer& camera, const ImageRef& hdr,
+                     const ImageRef& colors, uint32_t level, uint32_t width, uint32_t height) const;
+
     struct TraceInputs {
         const GpuBuffer* camera;
         ImageRef normalRoughMetal, baseColor, specularModel;  // Sampled
         ImageRef pyramid;                                     // StorageRead
-        ImageRef hdr;                                         // StorageRead: the lit frame
+        ImageRef colors;                                      // StorageRead: pre-convolved
         const EnvironmentDescriptors* environment;
         bool hasEnvironment = false;  // take the sky's split-sum specular out where rays hit
         bool hasLut = false;          // weight by the LUT, else by seed 001's fit
@@ -46,6 +54,11 @@ public:
         uint32_t width = 0, height = 0;
     };
     void recordTrace(VkCommandBuffer cmd, const TraceInputs& in, const ImageRef& reflection) const;
+    // Temporal filtering: `current` (the trace's), `motion` and last frame's `history`
+    // (Sampled) into `filtered` (StorageWrite, next frame's history).
+    void recordTemporal(VkCommandBuffer cmd, const GpuBuffer& camera, const ImageRef& current,
+                        const ImageRef& motion, const ImageRef& history, bool historyValid,
+                        float blend, const ImageRef& filtered) const;
     void recordComposite(VkCommandBuffer cmd, const GpuBuffer& camera, const ImageRef& reflection,
                          const ImageRef& hdr) const;
 
@@ -62,7 +75,9 @@ public:
 
 private:
     Pipeline hiz_;
+    Pipeline color_;
     Pipeline trace_;
+    Pipeline temporal_;
     Pipeline composite_;
     Sampler pointSampler_;
     GpuBuffer counters_;

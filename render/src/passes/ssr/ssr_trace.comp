@@ -7,9 +7,13 @@
 // - Hi-Z (mode 0): start at level 0; while the ray stays in front of a cell's nearest depth,
 //   move to the cell's boundary (plus a small offset, so a ray always enters the next cell)
 //   and climb a level; where it reaches the nearest depth inside the cell, move to it and
-//   descend; a hit is a level-0 cell whose depth the ray reaches (within the thickness).
-//   At most maxIterations steps.
+//   descend; a hit is a level-0 cell whose depth the ray reaches (within the thickness; a ray
+//   found further behind a surface ends as a miss). At most maxIterations steps.
 // - Reference (mode 1): a linear march in steps of referenceStepPixels against level 0.
+// Cone tracing (pass 5): the reflected radiance comes from the pre-convolved level whose
+// texels match the footprint of a cone around the ray as wide as the GGX lobe (tan of its
+// half-angle = alpha), at the distance the ray travelled on screen: level 0's texel for a
+// mirror, wider blur for rougher surfaces and farther hits.
 // Writes confidence x (radiance at the hit x the split sum's specular reflectance - the
 // environment's own split-sum specular there), so the composite replaces the environment's
 // specular by the reflection in proportion to the confidence instead of adding to it.
@@ -22,7 +26,7 @@ layout(binding = SSR_BINDING_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
 layout(binding = SSR_BINDING_BASE_COLOR) uniform sampler2D gbufferBaseColor;
 layout(binding = SSR_BINDING_SPECULAR_MODEL) uniform sampler2D gbufferSpecularModel;
 layout(binding = SSR_BINDING_HIZ, r32f) uniform readonly image2D hiz;
-layout(binding = SSR_BINDING_HDR, rgba32f) uniform readonly image2D hdrRadiance;
+layout(binding = SSR_BINDING_COLOR, rgba16f) uniform readonly image2D colorPyramid;
 layout(binding = SSR_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
 layout(binding = SSR_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
 layout(binding = SSR_BINDING_REFLECTION, rgba32f) uniform writeonly image2D reflection;
@@ -105,13 +109,12 @@ TraceResult traceHiZ(Ray ray, float near) {
                 --level;
                 continue;
             }
-            if (withinThickness(pos.z, nearest, near)) {
-                r.hit = true;
-                r.position = pos.xy;
-                return r;
-            }
-            t += tCross + kCrossingOffset;  // passes behind a thin surface
-            continue;
+            // Further behind than the thickness: the ray passes behind a surface, where the
+            // depth buffer cannot say what it meets. A miss (the sky's light stays), which
+            // also bounds the steps: no level-0 march through the shadow of an object.
+            r.hit = withinThickness(pos.z, nearest, near);
+            r.position = pos.xy;
+            return r;
         }
         float tPlane = ray.direction.z < 0.0 ? (nearest - pos.z) / ray.direction.z : 1e30;
         if (tPlane <= tCross) {
@@ -147,6 +150,32 @@ TraceResult traceLinear(Ray ray, float near) {
         }
     }
     return r;
+}
+
+// The pre-convolved radiance around `p` (pixels) at a fractional level: bilinear in each of
+// the two nearest levels, linear between them; level 0 alone is the hit texel itself.
+vec3 levelRadiance(int level, vec2 p) {
+    SsrLevel l = ssrLevel(uint(level));
+    vec2 q = p / float(1 << level) - 0.5;
+    ivec2 i = ivec2(floor(q));
+    vec2 f = q - vec2(i);
+    ivec2 hi = l.size - 1;
+    vec3 c00 = imageLoad(colorPyramid, l.origin + clamp(i, ivec2(0), hi)).rgb;
+    vec3 c10 = imageLoad(colorPyramid, l.origin + clamp(i + ivec2(1, 0), ivec2(0), hi)).rgb;
+    vec3 c01 = imageLoad(colorPyramid, l.origin + clamp(i + ivec2(0, 1), ivec2(0), hi)).rgb;
+    vec3 c11 = imageLoad(colorPyramid, l.origin + clamp(i + 1, ivec2(0), hi)).rgb;
+    return mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
+}
+
+vec3 coneRadiance(vec2 hit, ivec2 hitPixel, float travelled, float roughness) {
+    float alpha = roughness * roughness;
+    float footprint = 2.0 * travelled * alpha;  // the cone's diameter at the hit, pixels
+    float level = clamp(log2(max(footprint, 1e-6)), 0.0, float(push.levelCount - 1u));
+    if (level <= 0.0) return imageLoad(colorPyramid, hitPixel).rgb;
+    int below = int(floor(level));
+    int above = min(below + 1, int(push.levelCount) - 1);
+    vec3 fine = below == 0 ? imageLoad(colorPyramid, hitPixel).rgb : levelRadiance(below, hit);
+    return mix(fine, levelRadiance(above, hit), level - float(below));
 }
 
 // Fades the confidence to 0 over the last 4% of the screen, where the rays that would have
@@ -226,7 +255,8 @@ void main() {
                 vec3 weight = (push.flags & 2u) != 0u
                                   ? environmentBrdfFromLut(environmentBrdfLut, F0, roughness, NoV)
                                   : envBrdfApprox(F0, roughness, NoV);
-                vec3 radiance = imageLoad(hdrRadiance, hitPixel).rgb;
+                vec3 radiance = coneRadiance(hit.position, hitPixel,
+                                             length(hit.position - start.xy), roughness);
                 vec3 environment = vec3(0.0);
                 if ((push.flags & 1u) != 0u) {
                     float mip = prefilteredMipOfRoughness(roughness, push.prefilteredMipCount);
