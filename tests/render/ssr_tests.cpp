@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "ssr_scene.h"
 
@@ -101,6 +102,62 @@ TEST(Ssr, FramesWithoutGlossySurfacesDeclareNoPass) {
     EXPECT_EQ(stats.ssrMs, 0.0);
     EXPECT_EQ(stats.ssrRays, 0u);
     EXPECT_GT(frame.width, 0u);
+}
+
+// Frames from one renderer (its SSR history carries over) with the box moved by `offsets`,
+// each with motion vectors from the previous frame's offset; returns the last.
+CapturedFrame renderMoving(MirrorUnderBox& mirror, const std::vector<float>& offsets,
+                           std::vector<CapturedFrame>* all = nullptr) {
+    GpuContext& context = sharedContext();
+    TestScene& scene = mirror.scene();
+    SceneResources resources(context);
+    FrameSequence frames(context, scene.width, scene.height, ssrOptions(SsrMode::Hiz));
+    CapturedFrame last;
+    float previous = offsets.front();
+    for (float x : offsets) {
+        FrameInputs inputs = scene.prepare(resources);
+        std::vector<DrawItem>& draws = scene.draws;
+        const glm::mat4 boxWorld = draws[1].world;
+        draws[1].world = glm::translate(glm::mat4(1.0f), {x, 0.0f, 0.0f}) * boxWorld;
+        const std::vector<glm::mat4> previousWorlds = {
+            draws[0].world, glm::translate(glm::mat4(1.0f), {previous, 0.0f, 0.0f}) * boxWorld};
+        inputs.scene.previousWorlds = previousWorlds;
+        previous = x;
+        last = frames.render(inputs, resources);
+        if (all) all->push_back(last);
+    }
+    return last;
+}
+
+// The largest difference of the floor's radiance between two frames, relative to `scale`.
+double worstFloorDifference(const MirrorUnderBox& mirror, const CapturedFrame& a,
+                            const CapturedFrame& b, double scale) {
+    double worst = 0.0;
+    for (uint32_t y = 0; y < a.height; ++y) {
+        for (uint32_t x = 0; x < a.width; ++x) {
+            if (mirror.truth(int(x), int(y)) == MirrorUnderBox::Truth::NotFloor) continue;
+            worst = std::max(worst,
+                             std::abs(double(hdrPixel(a, x, y)[1]) - hdrPixel(b, x, y)[1]) / scale);
+        }
+    }
+    return worst;
+}
+
+TEST(Ssr, MovingObjectLeavesNoTrailAndAStillViewStaysPut) {
+    MirrorUnderBox mirror(64, 64);
+    // The box slides sideways by 0.4 m a frame for 4 frames: after them the floor shows what a
+    // frame without history shows (no part of the old reflections left over 5%).
+    const CapturedFrame moved = renderMoving(mirror, {0.0f, 0.4f, 0.8f, 1.2f, 1.6f});
+    const CapturedFrame fresh = renderMoving(mirror, {1.6f});
+    const double box = compareMirror(mirror, fresh).boxRadiance;
+    EXPECT_LT(worstFloorDifference(mirror, moved, fresh, box), 0.05);
+    // Still: every frame is the first (the filter converges at once and stays).
+    std::vector<CapturedFrame> still;
+    renderMoving(mirror, {0.0f, 0.0f, 0.0f}, &still);
+    for (const CapturedFrame& f : still) {
+        EXPECT_LT(worstFloorDifference(mirror, f, still.front(), box), 1e-4);
+        EXPECT_TRUE(compareMirror(mirror, f).finite);
+    }
 }
 
 }  // namespace

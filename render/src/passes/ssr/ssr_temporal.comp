@@ -5,7 +5,8 @@
 // the G-buffer's motion vectors, blended with this frame's. History that the reprojection
 // takes off the screen, or that falls outside the range of this frame's 3x3 neighbourhood
 // (a surface uncovered this frame, or a reflected object that moved away), is rejected or
-// clamped into that range, so nothing trails behind a moving object.
+// clamped into that range, and history whose ray hit where this frame's missed (or missed
+// where it hits) is dropped, so nothing trails behind or lags a moving object.
 #include "common/camera.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -38,7 +39,11 @@ void main() {
             }
         }
         vec4 past = texelFetch(history, ivec2(previous * vec2(size)), 0);
-        if (all(lessThan(abs(past), vec4(3e38)))) {  // never carry a NaN or Inf forward
+        // A ray that hits now but missed then (or the other way round) sees something new
+        // (the leading or trailing edge of a moving reflected object, an uncovered surface):
+        // this frame alone, or the edge would lag and trail.
+        bool sameHit = abs(past.a - now.a) < 0.5;
+        if (sameHit && all(lessThan(abs(past), vec4(3e38)))) {  // never carry NaN or Inf on
             result = mix(clamp(past, lo, hi), now, push.blend);
         }
     }
