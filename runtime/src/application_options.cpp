@@ -115,7 +115,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --ao off|gtao|reference   sky light occlusion (default: the scene file's, else "
            "gtao)\n"
            "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
-           "                            (default: off)\n";
+           "                            (default: the scene file's, else off)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,

@@ -93,6 +93,7 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     sceneFile_ = path;
     sceneBrdf_ = scene->brdf;
     sceneAntiAliasing_ = scene->aa;
+    sceneSsr_ = scene->ssr;
     sceneBloom_ = scene->bloom;
     sceneExposure_ = scene->exposure;
     sceneExposureCompensation_ = scene->exposureCompensation;

@@ -107,7 +107,7 @@ struct SsrSettings {
     // Surfaces at least this rough get no ray (and the confidence fades to 0 from 3/4 of it);
     // a frame with no material under it declares no SSR pass.
     float roughnessCutoff = 0.4f;
-    uint32_t maxIterations = 96;        // Hi-Z steps per ray (climb, descend or cross)
+    uint32_t maxIterations = 128;       // Hi-Z steps per ray (climb, descend or cross)
     float thickness = 0.5f;             // metres behind a depth-buffer surface that are solid
     float referenceStepPixels = 0.5f;   // the reference march's step along the screen
     uint32_t referenceMaxSteps = 8192;  // the reference march's cap

@@ -61,8 +61,9 @@ struct ApplicationOptions {
     std::optional<float> exposureCompensation;
     // --ao; unset: the world's scene-file "ambient_occlusion" mode, else gtao.
     std::optional<render::AoMode> ao;
-    // --ssr; unset: off (render/README.md "Screen-space reflections" gives the cost).
-    render::SsrMode ssr = render::SsrMode::Off;
+    // --ssr; unset: the world's scene-file "ssr", else off (render/README.md "Screen-space
+    // reflections" gives the cost).
+    std::optional<render::SsrMode> ssr;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
