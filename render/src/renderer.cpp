@@ -35,6 +35,7 @@
 #include "passes/lighting/lighting_pass.h"
 #include "passes/shadows/shadow_pass.h"
 #include "passes/skinning/skinning_pass.h"
+#include "passes/ssr/ssr_pass.h"
 #include "passes/taa/taa_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
@@ -81,6 +82,18 @@ const char* aoModeName(AoMode mode) {
 
 const char* areaLightModeName(AreaLightMode mode) {
     return mode == AreaLightMode::Representative ? "representative" : "ltc";
+}
+
+const char* ssrModeName(SsrMode mode) {
+    switch (mode) {
+        case SsrMode::Off:
+            return "off";
+        case SsrMode::Hiz:
+            return "hiz";
+        case SsrMode::Reference:
+            return "reference";
+    }
+    return "off";
 }
 
 const char* brdfModelName(BrdfModel model) {
@@ -130,6 +143,26 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
         f.lightTypes |= LightingFeatures::bit(l.light.type);
     }
     return f;
+}
+
+// Whether an opaque draw may have a surface smoother than SSR's roughness cut-off: its
+// roughness factor is under it, or a texture (which only scales the factor down) may bring it
+// there. Frames without one trace no ray and declare no SSR pass.
+bool hasGlossySurface(const FrameScene& scene, const SceneResources& resources, float cutoff) {
+    for (const DrawItem& draw : scene.draws) {
+        const content::Material& m = resources.material(draw.material);
+        if (m.alphaMode == content::AlphaMode::Blend ||
+            m.shadingModel == content::ShadingModel::Unlit) {
+            continue;
+        }
+        if (m.roughnessFactor < cutoff || m.metallicRoughnessTexture.present()) return true;
+        for (const content::MaterialLayer& layer : m.layering.layers) {
+            if (layer.roughnessFactor < cutoff || layer.metallicRoughnessTexture.present()) {
+                return true;
+            }
+        }
+    }
+    return false;
 }
 
 // Whether an opaque draw's material blends layers over its base (its base layer alone needs
@@ -297,6 +330,15 @@ void Renderer::createTargets() {
     }
     aoHistoryValid_ = false;
     aoFrame_ = 0;
+    if (options_.ssr != SsrMode::Off && options_.ssrSettings.temporal) {
+        // Cleared and shader-readable from the start, as AO's (the first frame ignores them).
+        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
+        for (GpuImage& h : ssrHistory_) {
+            h = GpuImage(context_, SsrPass::historyDesc(width_, height_));
+            writeImage(context_, h, 16, zeros.data());
+        }
+    }
+    ssrHistoryValid_ = false;
     // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
     ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
@@ -320,6 +362,7 @@ bool Renderer::aoAccumulates() const {
 
 void Renderer::restartTemporalHistory() {
     historyValid_ = false;
+    ssrHistoryValid_ = false;
     aoHistoryValid_ = false;
     aoFrame_ = 0;
     hasPreviousFrame_ = false;
@@ -667,6 +710,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
         if (features.countLightPairs) p.write(pairCounts, Use::StorageWrite);
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
+    }
+    ssrTraced_ = false;
+    const bool ssrHistoryWas = ssrHistoryValid_;
+    ssrHistoryValid_ = false;  // unless this frame filters (a frame without SSR breaks it)
+    if (options_.ssr != SsrMode::Off &&
+        hasGlossySurface(inputs.scene, resources, options_.ssrSettings.roughnessCutoff)) {
+        ssrHistoryValid_ = ssrHistoryWas;
+        h.hdr.version = declareSsr(h, environment, features.ibl.has_value(),
+                                   features.ibl == IblMode::Mobile, inputs.scene.skyIntensity);
     }
     if (blended) {
         // MSAA: multisampled copies of the targets, made only for frames with blended draws.
@@ -1030,6 +1082,125 @@ uint32_t Renderer::declareBloom(uint32_t hdrId, uint32_t hdrVersion) {
     return hdr.version;
 }
 
+uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptors& environment,
+                              bool sky, bool mobileIbl, float skyIntensity) {
+    FrameGraph& g = *graph_;
+    features_.push_back(std::string("ssr_") + ssrModeName(options_.ssr));
+    if (!ssrPass_) ssrPass_ = std::make_unique<SsrPass>(context_);
+    ssrTraced_ = true;
+    const ResourceHandle camera = h.camera;
+    const ResourceHandle depth = h.depth;
+    ResourceHandle counters = g.importBuffer("ssr.counters", &ssrPass_->counters(), true);
+    {
+        auto p = g.addPass("ssr_clear", PassKind::Device,
+                           [this](PassContext& ctx) { ssrPass_->recordClearCounters(ctx.cmd()); });
+        counters = p.write(counters, Use::TransferDst);
+    }
+    // The pyramid: one pass per level (each reads the level below, which the graph orders).
+    ResourceHandle pyramid = g.createImage("ssr.hiz", SsrPass::pyramidDesc(width_, height_));
+    const uint32_t levels = SsrPass::levelCount(width_, height_);
+    for (uint32_t level = 0; level < levels; ++level) {
+        const ResourceHandle source = pyramid;
+        auto p = g.addPass("ssr_hiz" + std::to_string(level), PassKind::Device,
+                           [this, camera, depth, source, level](PassContext& ctx) {
+                               ssrPass_->recordHiz(ctx.cmd(), cameraBuffer_, ctx.image(depth),
+                                                   ctx.image(source), level, width_, height_);
+                           });
+        p.read(camera, Use::Uniform);
+        p.read(depth, Use::Sampled);
+        pyramid = p.write(pyramid, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
+    }
+    // The pre-convolved scene: the lit HDR radiance and its blurred levels.
+    ResourceHandle hdr = h.hdr;
+    ResourceHandle colors = g.createImage("ssr.colors", SsrPass::colorDesc(width_, height_));
+    for (uint32_t level = 0; level < levels; ++level) {
+        const ResourceHandle source = colors;
+        auto p = g.addPass("ssr_color" + std::to_string(level), PassKind::Device,
+                           [this, hdr, source, level](PassContext& ctx) {
+                               ssrPass_->recordColor(ctx.cmd(), cameraBuffer_, ctx.image(hdr),
+                                                     ctx.image(source), level, width_, height_);
+                           });
+        p.read(camera, Use::Uniform);
+        if (level == 0) p.read(hdr, Use::StorageRead);
+        colors = p.write(colors, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
+    }
+    ResourceHandle reflection =
+        g.createImage("ssr.reflection", SsrPass::reflectionDesc(width_, height_));
+    SsrPass::TraceInputs in;
+    in.camera = &cameraBuffer_;
+    in.hasEnvironment = sky;
+    in.hasLut = brdfLut_ != nullptr && !mobileIbl;
+    in.skyIntensity = skyIntensity;
+    in.mode = options_.ssr;
+    in.settings = options_.ssrSettings;
+    in.width = width_;
+    in.height = height_;
+    const ResourceHandle normal = h.color[1], baseColor = h.color[0], specular = h.color[2];
+    {
+        auto p = g.addPass("ssr_trace", PassKind::Device,
+                           [this, in, environment, normal, baseColor, specular, pyramid, colors,
+                            reflection](PassContext& ctx) {
+                               SsrPass::TraceInputs inputs = in;
+                               inputs.environment = &environment;
+                               inputs.normalRoughMetal = ctx.image(normal);
+                               inputs.baseColor = ctx.image(baseColor);
+                               inputs.specularModel = ctx.image(specular);
+                               inputs.pyramid = ctx.image(pyramid);
+                               inputs.colors = ctx.image(colors);
+                               ssrPass_->recordTrace(ctx.cmd(), inputs, ctx.image(reflection));
+                           });
+        p.read(camera, Use::Uniform);
+        p.read(normal, Use::Sampled);
+        p.read(baseColor, Use::Sampled);
+        p.read(specular, Use::Sampled);
+        p.read(pyramid, Use::StorageRead);
+        p.read(colors, Use::StorageRead);
+        p.write(counters, Use::StorageReadWrite);
+        reflection = p.write(reflection, Use::StorageWrite);
+    }
+    if (options_.ssrSettings.temporal) {
+        // As TAA's history: last frame's image is read in the state it was left in, the
+        // other's contents are discarded and rewritten.
+        constexpr ImageState kSampledByCompute{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+        constexpr ImageState kDiscard{VK_IMAGE_LAYOUT_UNDEFINED,
+                                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0};
+        features_.push_back("ssr_temporal");
+        const ResourceHandle history = g.importImage(
+            "ssr.history", &ssrHistory_[ssrHistoryWrite_ ^ 1u], kSampledByCompute, ImageState{});
+        ResourceHandle filtered = g.importImage(
+            "ssr.history_written", &ssrHistory_[ssrHistoryWrite_], kDiscard, kSampledByCompute);
+        const ResourceHandle motion = h.motion;
+        const ResourceHandle current = reflection;
+        const bool valid = ssrHistoryValid_;
+        const float blend = options_.ssrSettings.temporalBlend;
+        auto t =
+            g.addPass("ssr_temporal", PassKind::Device,
+                      [this, current, motion, history, filtered, valid, blend](PassContext& ctx) {
+                          ssrPass_->recordTemporal(ctx.cmd(), cameraBuffer_, ctx.image(current),
+                                                   ctx.image(motion), ctx.image(history), valid,
+                                                   blend, ctx.image(filtered));
+                      });
+        t.read(camera, Use::Uniform);
+        t.read(current, Use::Sampled);
+        t.read(motion, Use::Sampled);
+        t.read(history, Use::Sampled);
+        reflection = t.write(filtered, Use::StorageWrite);
+        ssrHistoryWrite_ ^= 1u;
+        ssrHistoryValid_ = true;
+    }
+    auto p =
+        g.addPass("ssr_composite", PassKind::Device, [this, reflection, hdr](PassContext& ctx) {
+            ssrPass_->recordComposite(ctx.cmd(), cameraBuffer_, ctx.image(reflection),
+                                      ctx.image(hdr));
+        });
+    p.read(camera, Use::Uniform);
+    p.read(reflection, Use::Sampled);
+    hdr = p.write(hdr, Use::StorageReadWrite);
+    return hdr.version;
+}
+
 std::string Renderer::frameGraphDot() const {
     return executor_->dot(*graph_);
 }
@@ -1041,6 +1212,11 @@ const RendererStats& Renderer::collectStats() {
     stats_.skinningMs = 0.0;
     stats_.aoMs = 0.0;
     stats_.shadowMs = 0.0;
+    stats_.ssrMs = 0.0;
+    stats_.ssrStepsMean = 0.0;
+    stats_.ssrStepsMax = 0;
+    stats_.ssrHitRate = 0.0;
+    stats_.ssrRays = 0;
     stats_.passMs.clear();
     if (!frameRecorded_) return stats_;
     const bool onDevice = clusters_->assignedOnDevice();
@@ -1054,7 +1230,17 @@ const RendererStats& Renderer::collectStats() {
         if (name == "skinning") stats_.skinningMs += ms;
         if (name.starts_with("ambient_occlusion_")) stats_.aoMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
+        if (name.starts_with("ssr_")) stats_.ssrMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
+    }
+    if (ssrTraced_) {
+        const SsrPass::Counts c = ssrPass_->readCounters();
+        stats_.ssrRays = c.rays;
+        stats_.ssrStepsMax = c.maxSteps;
+        if (c.rays > 0) {
+            stats_.ssrStepsMean = double(c.steps) / c.rays;
+            stats_.ssrHitRate = double(c.hits) / c.rays;
+        }
     }
     stats_.lightEvaluations = 0;
     stats_.litPairs = 0;

@@ -86,6 +86,22 @@ render::AntiAliasing antiAliasingFor(const ApplicationOptions& options, const Sc
     return render::AntiAliasing::Taa;
 }
 
+// --ssr, else the scene file's "ssr", else off (render/README.md "Screen-space reflections").
+render::SsrMode ssrFor(const ApplicationOptions& options, const SceneWorld* world) {
+    if (options.ssr) return *options.ssr;
+    if (world && world->sceneSsr()) {
+        switch (*world->sceneSsr()) {
+            case content::SceneSsrMode::Off:
+                return render::SsrMode::Off;
+            case content::SceneSsrMode::Hiz:
+                return render::SsrMode::Hiz;
+            case content::SceneSsrMode::Reference:
+                return render::SsrMode::Reference;
+        }
+    }
+    return render::SsrMode::Off;
+}
+
 // --ao, else the scene file's "ambient_occlusion" mode, else GTAO (render/README.md
 // "Ambient occlusion" gives the measurements behind the default).
 render::AoMode aoFor(const ApplicationOptions& options, const SceneWorld* world) {
@@ -488,6 +504,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             : world && world->sceneExposureCompensation() ? *world->sceneExposureCompensation()
                                                           : 0.0f;
         rendererOptions.ao = aoFor(options, world.get());
+        rendererOptions.ssr = ssrFor(options, world.get());
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);

@@ -87,6 +87,11 @@ constexpr std::pair<const char*, render::AoMode> kAoModes[] = {
     {"gtao", render::AoMode::Gtao},
     {"reference", render::AoMode::Reference}};
 
+constexpr std::pair<const char*, render::SsrMode> kSsrModes[] = {
+    {"off", render::SsrMode::Off},
+    {"hiz", render::SsrMode::Hiz},
+    {"reference", render::SsrMode::Reference}};
+
 }  // namespace
 
 std::string ApplicationOptions::standardFlagsUsage() {
@@ -115,7 +120,9 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "                            (default: the scene file's, else manual)\n"
            "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n"
            "  --ao off|gtao|reference   sky light occlusion (default: the scene file's, else "
-           "gtao)\n";
+           "gtao)\n"
+           "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
+           "                            (default: the scene file's, else off)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -240,6 +247,12 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--ao needs off, gtao or reference, got '" + v + "'");
             }
             options.ao = ao;
+        } else if (arg == "--ssr") {
+            render::SsrMode ssr{};
+            if (!value() || !parseChoice(v, kSsrModes, ssr)) {
+                return fail("--ssr needs off, hiz or reference, got '" + v + "'");
+            }
+            options.ssr = ssr;
         } else if (others == OtherArguments::Keep) {
             result.arguments.push_back(arg);
         } else if (!arg.empty() && arg[0] == '-') {

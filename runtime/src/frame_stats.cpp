@@ -66,6 +66,12 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["exposure_ev100"] = last.exposureEv100;
     json["exposure_adapted_ev100"] = last.adaptedEv100;
     json["ao_ms"] = median(collect(stats.frames, [](auto& f) { return f.aoMs; }));
+    // Screen-space reflections: GPU ms of their passes (median), and the last frame's mean and
+    // most steps per traced ray and the share of traced rays that hit.
+    json["ssr_ms"] = median(collect(stats.frames, [](auto& f) { return f.ssrMs; }));
+    json["ssr_steps_mean"] = last.ssrStepsMean;
+    json["ssr_steps_max"] = last.ssrStepsMax;
+    json["ssr_hit_rate"] = last.ssrHitRate;
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;

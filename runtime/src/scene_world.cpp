@@ -94,6 +94,7 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     sceneBrdf_ = scene->brdf;
     sceneAntiAliasing_ = scene->aa;
     sceneMsaa_ = scene->msaa;
+    sceneSsr_ = scene->ssr;
     sceneBloom_ = scene->bloom;
     sceneExposure_ = scene->exposure;
     sceneExposureCompensation_ = scene->exposureCompensation;

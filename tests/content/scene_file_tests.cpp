@@ -334,6 +334,7 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     scene.bloom = 0.0f;  // the scene turns bloom off
     scene.exposure = SceneExposure::Auto;
     scene.exposureCompensation = -0.5f;
+    scene.ssr = SceneSsrMode::Hiz;  // issue 18
     std::string error;
     const std::string text = sceneToJson(scene, error);
     ASSERT_EQ(error, "");
@@ -345,9 +346,10 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     EXPECT_EQ(loaded->bloom, 0.0f);
     EXPECT_EQ(loaded->exposure, SceneExposure::Auto);
     EXPECT_EQ(loaded->exposureCompensation, -0.5f);
+    EXPECT_EQ(loaded->ssr, SceneSsrMode::Hiz);
 
     const std::string bad = R"({"format": "candela.scene", "version": 1, "aa": "msaa8",
-                               "msaa": 3, "bloom": 3, "entities": []})";
+                               "msaa": 3, "bloom": 3, "ssr": "raymarch", "entities": []})";
     Diagnostics badDiagnostics;
     auto fallback = parseSceneJson(std::as_bytes(std::span(bad)), "bad.scene.json", badDiagnostics);
     ASSERT_TRUE(fallback);
@@ -358,6 +360,8 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("/aa")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/msaa")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/bloom")) << badDiagnostics.toString();
+    EXPECT_FALSE(fallback->ssr.has_value());
+    EXPECT_TRUE(badDiagnostics.mentions("/ssr")) << badDiagnostics.toString();
 }
 
 // Issue 25: the top-level "ambient_occlusion" (mode, radius, intensity) survives save and

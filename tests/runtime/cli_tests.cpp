@@ -592,6 +592,41 @@ TEST(Cli, AoFlagAndSceneSettingChooseTheAmbientOcclusion) {
     EXPECT_NE(bad.output.find("off, gtao or reference"), std::string::npos) << bad.output;
 }
 
+// Issue 18: --ssr picks the screen-space reflections: off declares no SSR pass and reports
+// zeros; hiz and reference trace (stats ssr_ms, ssr_steps_mean, ssr_steps_max, ssr_hit_rate),
+// Hi-Z in fewer steps; a bad value is refused.
+TEST(Cli, SsrFlagChoosesTheReflectionsAndReportsSteps) {
+    auto dir = tempDir();
+    // A floor and boxes, one of them glossy (roughness 0.3, under the cut-off).
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/ambient_occlusion.scene.json";
+    auto stats = [&](const std::string& name, const std::string& args) {
+        RunResult r = runCandela(args + " --stats " + (dir / (name + ".json")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return nlohmann::json::parse(readBytes(dir / (name + ".json")));
+    };
+    const nlohmann::json off = stats("off", kTriangle + "--ssr off");
+    EXPECT_EQ(off["ssr_ms"].get<double>(), 0.0);
+    EXPECT_EQ(off["ssr_steps_max"].get<uint32_t>(), 0u);
+    EXPECT_EQ(off["ssr_hit_rate"].get<double>(), 0.0);
+    const std::string run = "run " + scene + " --headless --size 48x32 --aa off --ao off --ssr ";
+    const nlohmann::json hiz = stats("hiz", run + "hiz");
+    const nlohmann::json reference = stats("reference", run + "reference");
+    for (const nlohmann::json* s : {&hiz, &reference}) {
+        EXPECT_TRUE((*s)["passes"].contains("ssr_trace")) << (*s)["passes"].dump();
+        EXPECT_GT((*s)["ssr_ms"].get<double>(), 0.0);
+        EXPECT_GT((*s)["ssr_steps_mean"].get<double>(), 0.0);
+        EXPECT_GT((*s)["ssr_hit_rate"].get<double>(), 0.0);
+        EXPECT_LE((*s)["ssr_hit_rate"].get<double>(), 1.0);
+    }
+    EXPECT_LT(hiz["ssr_steps_mean"].get<double>(), reference["ssr_steps_mean"].get<double>());
+    EXPECT_LT(hiz["ssr_steps_max"].get<uint32_t>(), 128u);  // SsrSettings' maxIterations
+
+    RunResult bad = runCandela(kTriangle + "--ssr linear");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("off, hiz or reference"), std::string::npos) << bad.output;
+}
+
 TEST(Cli, UnknownIblModeIsRejected) {
     RunResult r = runCandela(kTriangle + "--ibl fancy");
     EXPECT_EQ(r.exitCode, 2);

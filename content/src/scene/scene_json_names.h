@@ -53,6 +53,10 @@ inline constexpr EnumNames<SceneAntiAliasing, 3> kSceneAntiAliasing{
      {SceneAntiAliasing::Fxaa, "fxaa"},
      {SceneAntiAliasing::Taa, "taa"}}};
 
+inline constexpr EnumNames<SceneSsrMode, 3> kSceneSsrModes{
+    {{SceneSsrMode::Off, "off"},
+     {SceneSsrMode::Hiz, "hiz"},
+     {SceneSsrMode::Reference, "reference"}}};
 inline constexpr EnumNames<SceneAoMode, 3> kSceneAoModes{{{SceneAoMode::Off, "off"},
                                                           {SceneAoMode::Gtao, "gtao"},
                                                           {SceneAoMode::Reference, "reference"}}};

@@ -674,6 +674,12 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             }
         }
     }
+    if (root.contains("ssr")) {
+        SceneSsrMode ssr = SceneSsrMode::Off;
+        if (reader.clean([&] { reader.enumeration(root, "", "ssr", kSceneSsrModes, ssr); })) {
+            scene.ssr = ssr;
+        }
+    }
     const json* ao = nullptr;
     if (reader.object(root, "", "ambient_occlusion", ao)) {
         // Like "brdf": a bad value is reported and its default kept; the scene still loads.

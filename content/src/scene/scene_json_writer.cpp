@@ -247,6 +247,7 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     if (scene.aa) document["aa"] = std::string(nameOf(kSceneAntiAliasing, *scene.aa));
     if (scene.msaa) document["msaa"] = *scene.msaa;
     if (scene.bloom) document["bloom"] = *scene.bloom;
+    if (scene.ssr) document["ssr"] = std::string(nameOf(kSceneSsrModes, *scene.ssr));
     if (scene.exposure)
         document["exposure"] = std::string(nameOf(kSceneExposures, *scene.exposure));
     if (scene.exposureCompensation) document["exposure_compensation"] = *scene.exposureCompensation;

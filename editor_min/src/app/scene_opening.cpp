@@ -45,6 +45,7 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     frameSettings.bloom = opened.world->sceneBloom();
     frameSettings.exposure = opened.world->sceneExposure();
     frameSettings.exposureCompensation = opened.world->sceneExposureCompensation();
+    frameSettings.ssr = opened.world->sceneSsr();
     opened.scene->setSceneFrameSettings(frameSettings);
     opened.scene->setSceneAmbientOcclusion(opened.world->sceneAmbientOcclusion());
     opened.scene->setSceneMaterialLayers(opened.world->sceneMaterialLayers());

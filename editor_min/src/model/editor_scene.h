@@ -29,15 +29,15 @@ public:
     const std::filesystem::path& sourcePath() const { return sourcePath_; }
     // The opened file's scene-wide "brdf" (unset: none), written back by save().
     void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneSettings_.brdf = brdf; }
-    // The opened file's scene-wide "aa", "msaa", "bloom", "exposure" and
-    // "exposure_compensation" (the other fields of `settings` are ignored), written back by
-    // save().
+    // The opened file's scene-wide "aa", "msaa", "bloom", "exposure", "exposure_compensation"
+    // and "ssr" (the other fields of `settings` are ignored), written back by save().
     void setSceneFrameSettings(const content::SceneDocument& settings) {
         sceneSettings_.aa = settings.aa;
         sceneSettings_.msaa = settings.msaa;
         sceneSettings_.bloom = settings.bloom;
         sceneSettings_.exposure = settings.exposure;
         sceneSettings_.exposureCompensation = settings.exposureCompensation;
+        sceneSettings_.ssr = settings.ssr;
     }
     // The scene-wide "ambient_occlusion" (unset: none), edited in the inspector when nothing is
     // selected, sent to the renderer every frame and written back by save(). Radius and

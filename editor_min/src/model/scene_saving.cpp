@@ -53,6 +53,7 @@ std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path
     document.bloom = settings.bloom;
     document.exposure = settings.exposure;
     document.exposureCompensation = settings.exposureCompensation;
+    document.ssr = settings.ssr;
     document.ambientOcclusion = settings.ambientOcclusion;
     document.materialLayers = settings.materialLayers;
     return content::saveSceneFile(target, document, options);

@@ -47,5 +47,6 @@ void addMaterialRows(ReportContext& context);
 void addAmbientOcclusionRows(ReportContext& context);
 void addShadowRows(ReportContext& context);
 void addAnimationRows(ReportContext& context);
+void addSsrRows(ReportContext& context);
 
 }  // namespace candela::report

@@ -114,6 +114,10 @@ enum class SceneExposure { Manual, Auto };
 // "intensity"}); the command line's --ao overrides the mode. Mirrors render::AoMode.
 enum class SceneAoMode { Off, Gtao, Reference };
 
+// Screen-space reflections (top-level "ssr": "off", "hiz" or "reference"); the command line's
+// --ssr overrides it. Mirrors render::SsrMode.
+enum class SceneSsrMode { Off, Hiz, Reference };
+
 struct SceneAmbientOcclusion {
     std::optional<SceneAoMode> mode;  // unset: the engine's default
     float radius = 1.5f;              // metres, > 0
@@ -135,6 +139,7 @@ struct SceneDocument {
     std::optional<SceneExposure> exposure;      // unset: manual
     std::optional<float> exposureCompensation;  // "exposure_compensation", EV (auto only)
     std::optional<SceneAmbientOcclusion> ambientOcclusion;  // unset: defaults
+    std::optional<SceneSsrMode> ssr;                        // unset: the engine's default (off)
     // Top-level "materialLayers": the shared layer library, by unique name. A material's
     // "layers" (at most kMaxMaterialLayers) name library layers; each copy starts as the
     // library's and may change any of its parameters, and is written back in full.

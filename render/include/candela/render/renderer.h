@@ -37,6 +37,8 @@ class GpuContext;
 class GpuLightBuffer;
 class LightingPass;
 class AmbientOcclusionPass;
+class SsrPass;
+struct EnvironmentDescriptors;
 class SceneResources;
 class TonemapPass;
 class TaaPass;
@@ -125,6 +127,10 @@ private:
     // Auto exposure: meters last frame's histogram, adapts, and returns this frame's EV100.
     float autoExposureEv100(const FrameInputs& inputs);
     void declareHistogram(uint32_t hdrId, uint32_t hdrVersion);
+    // Screen-space reflections after lighting: the Hi-Z pyramid, the trace and the composite
+    // into the HDR target; returns its version after the composite.
+    uint32_t declareSsr(const SceneHandles& h, const EnvironmentDescriptors& environment, bool sky,
+                        bool mobileIbl, float skyIntensity);
     // captureMotionVectors: copies the frame's final motion vectors into motionReadback_.
     void declareMotionCapture();
 
@@ -173,6 +179,13 @@ private:
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<LightingPass> lightingPass_;
     std::unique_ptr<AmbientOcclusionPass> aoPass_;  // made on the first frame with AO
+    std::unique_ptr<SsrPass> ssrPass_;              // made on the first frame with a glossy surface
+    bool ssrTraced_ = false;  // this frame declared the SSR trace (its counters)
+    // SSR's temporal filter: two reflection histories like TAA's (made when the options ask
+    // for it), the one written last frame and whether it holds a frame.
+    std::array<GpuImage, 2> ssrHistory_;
+    uint32_t ssrHistoryWrite_ = 0;
+    bool ssrHistoryValid_ = false;
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;

@@ -102,6 +102,30 @@ struct AmbientOcclusionSettings {
     uint32_t temporalFrames = 16;  // most frames the accumulation averages (1 / n lowest blend)
 };
 
+// Screen-space reflections (`--ssr`, the scene file's "ssr"; render/README.md "Screen-space
+// reflections"). They replace the environment's split-sum specular where a ray finds the
+// reflected surface on screen, in proportion to its confidence.
+enum class SsrMode {
+    Off,        // no pass in the graph
+    Hiz,        // Hi-Z tracing against a nearest-depth pyramid (seed 004 section 4)
+    Reference,  // a linear march in small steps at full resolution: for measurement only
+};
+const char* ssrModeName(SsrMode mode);  // "off", "hiz", "reference"
+
+struct SsrSettings {
+    // Surfaces at least this rough get no ray (and the confidence fades to 0 from 3/4 of it);
+    // a frame with no material under it declares no SSR pass.
+    float roughnessCutoff = 0.4f;
+    uint32_t maxIterations = 128;       // Hi-Z steps per ray (climb, descend or cross)
+    float thickness = 0.5f;             // metres behind a depth-buffer surface that are solid
+    float referenceStepPixels = 0.5f;   // the reference march's step along the screen
+    uint32_t referenceMaxSteps = 8192;  // the reference march's cap
+    // Temporal filtering: last frame's reflection reprojected with the motion vectors, clamped
+    // to this frame's neighbourhood (rejecting disoccluded history) and blended by this weight.
+    bool temporal = true;
+    float temporalBlend = 0.25f;
+};
+
 struct RendererOptions {
     LightCulling lightCulling = LightCulling::Clustered;
     LightAssignmentDevice lightAssignment = LightAssignmentDevice::Auto;
@@ -151,6 +175,8 @@ struct RendererOptions {
     // Texels of local-light maps re-rendered per frame (0: no limit). Past it, a changed light
     // whose last maps are still in the atlas keeps them for the frame (shadow_maps_kept).
     uint64_t shadowRenderBudget = uint64_t(4) << 20;
+    SsrMode ssr = SsrMode::Off;
+    SsrSettings ssrSettings;
 };
 
 // The frame graph of the last frame (--stats `frame_graph`).
@@ -214,6 +240,14 @@ struct RendererStats {
     uint32_t shadowMapsCached = 0;
     uint32_t shadowMapsKept = 0;
     double shadowAtlasUsed = 0.0;
+    // Screen-space reflections (--stats ssr_*): GPU ms of the Hi-Z, trace and composite
+    // passes, the mean and most steps of a traced ray, and the share of traced rays that hit
+    // (0 in frames that trace none).
+    double ssrMs = 0.0;
+    double ssrStepsMean = 0.0;
+    uint32_t ssrStepsMax = 0;
+    double ssrHitRate = 0.0;
+    uint32_t ssrRays = 0;
 };
 
 }  // namespace candela::render

@@ -66,6 +66,9 @@ struct ApplicationOptions {
     std::optional<float> exposureCompensation;
     // --ao; unset: the world's scene-file "ambient_occlusion" mode, else gtao.
     std::optional<render::AoMode> ao;
+    // --ssr; unset: the world's scene-file "ssr", else off (render/README.md "Screen-space
+    // reflections" gives the cost).
+    std::optional<render::SsrMode> ssr;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
@@ -74,7 +77,7 @@ struct ApplicationOptions {
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
     // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
-    // --brdf, --ao, --area-lights.
+    // --brdf, --ao, --area-lights, --ssr.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

@@ -55,6 +55,10 @@ public:
     }
     // The forward pass's MSAA samples the last scene file asks for ("msaa"), if it sets them.
     std::optional<uint32_t> sceneMsaa() const { return sceneMsaa_; }
+    // The screen-space reflections the last scene file asks for ("ssr"), if it names them.
+    std::optional<content::SceneSsrMode> sceneSsr() const { return sceneSsr_; }
+    // Built-in scenes (the demo) ask for reflections as a scene file would.
+    void setSceneSsr(std::optional<content::SceneSsrMode> mode) { sceneSsr_ = mode; }
     // The bloom strength the last scene file asks for ("bloom"; 0: off), if it sets one.
     std::optional<float> sceneBloom() const { return sceneBloom_; }
     // The exposure mode and compensation the last scene file asks for, if it sets them.
@@ -107,6 +111,7 @@ private:
     std::vector<content::MaterialLayer> sceneMaterialLayers_;
     std::optional<content::SceneAntiAliasing> sceneAntiAliasing_;
     std::optional<uint32_t> sceneMsaa_;
+    std::optional<content::SceneSsrMode> sceneSsr_;
     std::optional<float> sceneBloom_;
     std::optional<content::SceneExposure> sceneExposure_;
     std::optional<float> sceneExposureCompensation_;

@@ -1,0 +1,284 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "ssr_bindings.h"
+// Screen-space reflection rays (seed 004 section 4, pass 3), one per pixel whose roughness is
+// under the cut-off, in screen space: x, y in pixels and z the reverse-Z depth, which is
+// affine along a projected line, so the ray is a straight line in (x, y, z).
+// - Hi-Z (mode 0): start at level 0; while the ray stays in front of a cell's nearest depth,
+//   move to the cell's boundary (plus a small offset, so a ray always enters the next cell)
+//   and climb a level; where it reaches the nearest depth inside the cell, move to it and
+//   descend; a hit is a level-0 cell whose depth the ray reaches (within the thickness; a ray
+//   found further behind a surface ends as a miss). At most maxIterations steps.
+// - Reference (mode 1): a linear march in steps of referenceStepPixels against level 0.
+// Cone tracing (pass 5): the reflected radiance comes from the pre-convolved level whose
+// texels match the footprint of a cone around the ray as wide as the GGX lobe (tan of its
+// half-angle = alpha), at the distance the ray travelled on screen: level 0's texel for a
+// mirror, wider blur for rougher surfaces and farther hits.
+// Writes confidence x (radiance at the hit x the split sum's specular reflectance - the
+// environment's own split-sum specular there), so the composite replaces the environment's
+// specular by the reflection in proportion to the confidence instead of adding to it.
+#include "common/ibl.glsl"
+#include "ssr_levels.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = SSR_BINDING_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
+layout(binding = SSR_BINDING_BASE_COLOR) uniform sampler2D gbufferBaseColor;
+layout(binding = SSR_BINDING_SPECULAR_MODEL) uniform sampler2D gbufferSpecularModel;
+layout(binding = SSR_BINDING_HIZ, r32f) uniform readonly image2D hiz;
+layout(binding = SSR_BINDING_COLOR, rgba16f) uniform readonly image2D colorPyramid;
+layout(binding = SSR_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
+layout(binding = SSR_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
+layout(binding = SSR_BINDING_REFLECTION, rgba32f) uniform writeonly image2D reflection;
+layout(std430, binding = SSR_BINDING_COUNTERS) buffer Counters {
+    uint stepsLow;
+    uint stepsHigh;
+    uint stepsMax;
+    uint hits;
+    uint rays;
+} counters;
+
+layout(push_constant) uniform Push {
+    uint mode;  // 0: Hi-Z, 1: reference
+    uint maxIterations;
+    uint levelCount;
+    uint flags;  // 1: the frame has a sky (take its specular out), 2: the LUT is bound
+    float roughnessCutoff;
+    float thickness;  // metres behind a depth-buffer surface that count as solid
+    float referenceStepPixels;
+    float skyIntensity;
+    float prefilteredMipCount;
+} push;
+
+const uint kShadingUnlit = 0u;  // shading_models.glsl's ID (without its specialisation constants)
+const float kCrossingOffset = 0.01;  // pixels past a cell boundary: the ray never stays in a cell
+
+shared uint groupSteps;
+shared uint groupMax;
+shared uint groupHits;
+shared uint groupRays;
+
+struct Ray {
+    vec3 origin;     // (pixel x, pixel y, reverse-Z depth)
+    vec3 direction;  // per pixel of screen travel
+    float extent;    // pixels to the end of the ray (the near plane or far away)
+};
+
+struct TraceResult {
+    bool hit;
+    vec2 position;  // pixels
+    uint steps;
+};
+
+float levelDepth(uint level, ivec2 cell) {
+    SsrLevel l = ssrLevel(level);
+    return imageLoad(hiz, l.origin + clamp(cell, ivec2(0), l.size - 1)).r;
+}
+
+bool onScreen(vec2 p) {
+    return all(greaterThanEqual(p, vec2(0.0))) && all(lessThan(p, vec2(camera.frameInfo.xy)));
+}
+
+// Whether a ray at depth `rayDepth` that reached a surface of depth `surfaceDepth` is within
+// the thickness behind it (and not passing far behind a thin object). near: the near plane.
+bool withinThickness(float rayDepth, float surfaceDepth, float near) {
+    return near / max(rayDepth, 1e-12) - near / surfaceDepth <= push.thickness;
+}
+
+TraceResult traceHiZ(Ray ray, float near) {
+    TraceResult r = TraceResult(false, vec2(0.0), 0u);
+    vec2 dirSign = vec2(ray.direction.x >= 0.0 ? 1.0 : 0.0, ray.direction.y >= 0.0 ? 1.0 : 0.0);
+    vec2 invDir = 1.0 / max(abs(ray.direction.xy), vec2(1e-12)) * sign(ray.direction.xy + 1e-30);
+    // Leave the start pixel first (it holds the surface the ray starts on).
+    vec2 startBoundary = floor(ray.origin.xy) + dirSign;
+    vec2 tb0 = (startBoundary - ray.origin.xy) * invDir;
+    float t = min(tb0.x, tb0.y) + kCrossingOffset;
+    int level = 0;
+    int top = int(push.levelCount) - 1;
+    while (r.steps < push.maxIterations) {
+        r.steps += 1u;
+        vec3 pos = ray.origin + ray.direction * t;
+        if (t > ray.extent || !onScreen(pos.xy) || pos.z <= 0.0) break;
+        float cellSize = float(1 << level);
+        vec2 cell = floor(pos.xy / cellSize);
+        float nearest = levelDepth(uint(level), ivec2(cell));
+        vec2 tb = ((cell + dirSign) * cellSize - pos.xy) * invDir;
+        float tCross = min(tb.x, tb.y);
+        if (pos.z <= nearest) {  // at or behind the nearest surface of the cell
+            if (level > 0) {
+                --level;
+                continue;
+            }
+            // Further behind than the thickness: the ray passes behind a surface, where the
+            // depth buffer cannot say what it meets. A miss (the sky's light stays), which
+            // also bounds the steps: no level-0 march through the shadow of an object.
+            r.hit = withinThickness(pos.z, nearest, near);
+            r.position = pos.xy;
+            return r;
+        }
+        float tPlane = ray.direction.z < 0.0 ? (nearest - pos.z) / ray.direction.z : 1e30;
+        if (tPlane <= tCross) {
+            t += tPlane;
+            if (level == 0) {
+                r.hit = true;
+                r.position = (ray.origin + ray.direction * t).xy;
+                return r;
+            }
+            --level;
+        } else {
+            t += tCross + kCrossingOffset;
+            level = min(level + 1, top);
+        }
+    }
+    return r;
+}
+
+TraceResult traceLinear(Ray ray, float near) {
+    TraceResult r = TraceResult(false, vec2(0.0), 0u);
+    float h = push.referenceStepPixels;
+    // Start one step out of the start pixel's surface, as the Hi-Z trace does.
+    for (float t = h; r.steps < push.maxIterations; t += h) {
+        r.steps += 1u;
+        vec3 pos = ray.origin + ray.direction * t;
+        if (t > ray.extent || !onScreen(pos.xy) || pos.z <= 0.0) break;
+        if (all(equal(floor(pos.xy), floor(ray.origin.xy)))) continue;
+        float depth = levelDepth(0u, ivec2(floor(pos.xy)));
+        if (pos.z <= depth && withinThickness(pos.z, depth, near)) {
+            r.hit = true;
+            r.position = pos.xy;
+            return r;
+        }
+    }
+    return r;
+}
+
+// The pre-convolved radiance around `p` (pixels) at a fractional level: bilinear in each of
+// the two nearest levels, linear between them; level 0 alone is the hit texel itself.
+vec3 levelRadiance(int level, vec2 p) {
+    SsrLevel l = ssrLevel(uint(level));
+    vec2 q = p / float(1 << level) - 0.5;
+    ivec2 i = ivec2(floor(q));
+    vec2 f = q - vec2(i);
+    ivec2 hi = l.size - 1;
+    vec3 c00 = imageLoad(colorPyramid, l.origin + clamp(i, ivec2(0), hi)).rgb;
+    vec3 c10 = imageLoad(colorPyramid, l.origin + clamp(i + ivec2(1, 0), ivec2(0), hi)).rgb;
+    vec3 c01 = imageLoad(colorPyramid, l.origin + clamp(i + ivec2(0, 1), ivec2(0), hi)).rgb;
+    vec3 c11 = imageLoad(colorPyramid, l.origin + clamp(i + 1, ivec2(0), hi)).rgb;
+    return mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
+}
+
+vec3 coneRadiance(vec2 hit, ivec2 hitPixel, float travelled, float roughness) {
+    float alpha = roughness * roughness;
+    float footprint = 2.0 * travelled * alpha;  // the cone's diameter at the hit, pixels
+    float level = clamp(log2(max(footprint, 1e-6)), 0.0, float(push.levelCount - 1u));
+    if (level <= 0.0) return imageLoad(colorPyramid, hitPixel).rgb;
+    int below = int(floor(level));
+    int above = min(below + 1, int(push.levelCount) - 1);
+    vec3 fine = below == 0 ? imageLoad(colorPyramid, hitPixel).rgb : levelRadiance(below, hit);
+    return mix(fine, levelRadiance(above, hit), level - float(below));
+}
+
+// Fades the confidence to 0 over the last 4% of the screen, where the rays that would have
+// found something just off it leave.
+float edgeFade(vec2 p) {
+    vec2 size = vec2(camera.frameInfo.xy);
+    vec2 margin = max(size * 0.04, vec2(1.0));
+    vec2 d = min(p, size - p) / margin;
+    return saturate(min(d.x, d.y));
+}
+
+void countRay(bool traced, bool hit, uint steps) {
+    if (!traced) return;
+    atomicAdd(groupSteps, steps);
+    atomicMax(groupMax, steps);
+    atomicAdd(groupRays, 1u);
+    if (hit) atomicAdd(groupHits, 1u);
+}
+
+void main() {
+    if (gl_LocalInvocationIndex == 0u) {
+        groupSteps = 0u;
+        groupMax = 0u;
+        groupHits = 0u;
+        groupRays = 0u;
+    }
+    barrier();
+
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = ivec2(camera.frameInfo.xy);
+    bool inside = all(lessThan(pixel, size));
+    vec4 result = vec4(0.0);
+    bool traced = false;
+    TraceResult hit = TraceResult(false, vec2(0.0), 0u);
+    float depth = inside ? levelDepth(0u, pixel) : 0.0;
+    vec4 gb1 = inside ? texelFetch(gbufferNormalRoughMetal, pixel, 0) : vec4(0.0);
+    vec4 gb2 = inside ? texelFetch(gbufferSpecularModel, pixel, 0) : vec4(0.0);
+    float roughness = gb1.z;
+    uint model = uint(gb2.g * 255.0 + 0.5);
+    if (inside && depth > 0.0 && model != kShadingUnlit && roughness < push.roughnessCutoff) {
+        vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
+        vec4 world = camera.inverseViewProjection * vec4(ndc, depth, 1.0);
+        vec3 P = world.xyz / world.w;
+        vec3 N = octDecode(gb1.xy);
+        vec3 V = safeNormalize(camera.cameraPosition.xyz - P);
+        vec3 R = reflect(-V, N);
+        float NoV = saturate(dot(N, V));
+        vec4 clipP = camera.viewProjection * vec4(P, 1.0);
+        float near = clipP.z;  // reverse-Z with an infinite far plane: clip z is the near plane
+        // The ray's end: far along R, or just short of the near plane when R faces the camera.
+        float L = 1000.0;
+        vec4 clipQ = camera.viewProjection * vec4(P + R * L, 1.0);
+        float wMin = near * 1.5;
+        if (clipQ.w < wMin) {
+            L *= (clipP.w - wMin) / max(clipP.w - clipQ.w, 1e-12);
+            clipQ = camera.viewProjection * vec4(P + R * L, 1.0);
+        }
+        vec3 start = vec3(vec2(pixel) + 0.5, depth);
+        vec3 end = vec3((clipQ.xy / clipQ.w * 0.5 + 0.5) * vec2(size), clipQ.z / clipQ.w);
+        vec3 d = end - start;
+        float len = length(d.xy);
+        if (clipP.w > wMin && len > 1e-3) {
+            traced = true;
+            Ray ray = Ray(start, d / len, len);
+            hit = push.mode == 0u ? traceHiZ(ray, near) : traceLinear(ray, near);
+            if (hit.hit) {
+                // A hit on a surface facing away from the ray is one the depth buffer cannot
+                // vouch for (its front is hidden): no confidence.
+                ivec2 hitPixel = clamp(ivec2(floor(hit.position)), ivec2(0), size - 1);
+                vec3 hitN = octDecode(texelFetch(gbufferNormalRoughMetal, hitPixel, 0).xy);
+                float facing = dot(hitN, R) < 0.0 ? 1.0 : 0.0;
+                float confidence = edgeFade(hit.position) * facing *
+                                   (1.0 - smoothstep(0.75 * push.roughnessCutoff,
+                                                     push.roughnessCutoff, roughness));
+                vec4 gb0 = texelFetch(gbufferBaseColor, pixel, 0);
+                vec3 F0 = mix(vec3(0.08 * gb2.r), gb0.rgb, gb1.w);
+                vec3 weight = (push.flags & 2u) != 0u
+                                  ? environmentBrdfFromLut(environmentBrdfLut, F0, roughness, NoV)
+                                  : envBrdfApprox(F0, roughness, NoV);
+                vec3 radiance = coneRadiance(hit.position, hitPixel,
+                                             length(hit.position - start.xy), roughness);
+                vec3 environment = vec3(0.0);
+                if ((push.flags & 1u) != 0u) {
+                    float mip = prefilteredMipOfRoughness(roughness, push.prefilteredMipCount);
+                    environment = textureLod(prefilteredCube, R, mip).rgb * weight *
+                                  (push.skyIntensity * gb0.a);
+                }
+                if (all(lessThan(abs(radiance), vec3(3e38)))) {  // never carry Inf or NaN on
+                    result = vec4((radiance * weight - environment) * confidence, confidence);
+                }
+            }
+        }
+    }
+    if (inside) imageStore(reflection, pixel, result);
+
+    // A hit counts where it gives the reflection (not one on a surface facing away).
+    countRay(traced, result.a > 0.0, hit.steps);
+    barrier();
+    if (gl_LocalInvocationIndex == 0u && groupRays > 0u) {
+        uint before = atomicAdd(counters.stepsLow, groupSteps);
+        if (before > 0xFFFFFFFFu - groupSteps) atomicAdd(counters.stepsHigh, 1u);
+        atomicMax(counters.stepsMax, groupMax);
+        atomicAdd(counters.hits, groupHits);
+        atomicAdd(counters.rays, groupRays);
+    }
+}

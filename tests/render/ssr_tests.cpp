@@ -1,0 +1,164 @@
+// Issue 18: screen-space reflections by Hi-Z tracing. A mirror floor under an emissive box
+// against a CPU ray trace (edges ±1 pixel), at an odd resolution too, the step counts of
+// Hi-Z against the linear reference march, and no pass where nothing is glossy.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "ssr_scene.h"
+
+namespace candela::render::test {
+namespace {
+
+// One device for the whole binary: making one costs as much as a 128x128 frame on lavapipe.
+GpuContext& sharedContext() {
+    static GpuContext context(requiredValidation());
+    return context;
+}
+
+RendererOptions ssrOptions(SsrMode mode) {
+    RendererOptions options;
+    options.ssr = mode;
+    return options;
+}
+
+bool hasPass(const RendererStats& stats, const std::string& name) {
+    return std::any_of(stats.passMs.begin(), stats.passMs.end(),
+                       [&](const RendererStats::PassTime& p) { return p.first == name; });
+}
+
+void expectMirrorMatchesRayTrace(uint32_t width, uint32_t height, SsrMode mode,
+                                 RendererStats* statsOut = nullptr) {
+    GpuContext& context = sharedContext();
+    MirrorUnderBox mirror(width, height);
+    RendererStats stats;
+    const CapturedFrame frame = mirror.scene().render(context, ssrOptions(mode), &stats);
+    const MirrorComparison c = compareMirror(mirror, frame);
+    EXPECT_TRUE(c.finite);
+    EXPECT_GT(c.boxRadiance, 1.0);
+    // The reflection covers a fair part of the floor, at the box's radiance, and nothing else
+    // on the floor is lit (no sky, no light: the floor shows only what it mirrors).
+    EXPECT_GT(c.boxPixels, width * height / 100) << width << "x" << height;
+    EXPECT_EQ(c.boxPixelsWrong, 0u) << "worst relative error " << c.worstBoxError;
+    EXPECT_GT(c.blackPixels, width * height / 10);
+    EXPECT_EQ(c.blackPixelsWrong, 0u);
+    EXPECT_TRUE(hasPass(stats, "ssr_trace"));
+    EXPECT_GT(stats.ssrHitRate, 0.0);
+    EXPECT_LT(stats.ssrHitRate, 1.0);
+    if (statsOut) *statsOut = stats;
+}
+
+TEST(Ssr, MirrorFloorShowsTheBoxWhereARayTracePutsIt) {
+    RendererStats stats;
+    expectMirrorMatchesRayTrace(128, 128, SsrMode::Hiz, &stats);
+    EXPECT_LT(stats.ssrStepsMax, RendererOptions{}.ssrSettings.maxIterations);  // none stuck
+
+    // Without SSR the same floor shows nothing: the reflection above came from the trace.
+    GpuContext& context = sharedContext();
+    MirrorUnderBox mirror(128, 128);
+    RendererStats offStats;
+    const MirrorComparison off =
+        compareMirror(mirror, mirror.scene().render(context, ssrOptions(SsrMode::Off), &offStats));
+    EXPECT_EQ(off.boxPixelsWrong, off.boxPixels);
+    EXPECT_FALSE(hasPass(offStats, "ssr_trace"));
+    EXPECT_EQ(offStats.ssrMs, 0.0);
+}
+
+TEST(Ssr, OddResolutionsMirrorLikeEvenOnes) {
+    // Hi-Z levels of 127x95 round up (64x48, 32x24, ..., 1x1): a coarse texel still covers
+    // every finer one, so no ray slips past a surface at a level's last row or column.
+    expectMirrorMatchesRayTrace(127, 95, SsrMode::Hiz);
+    expectMirrorMatchesRayTrace(97, 129, SsrMode::Hiz);
+}
+
+TEST(Ssr, HizTakesAQuarterOfTheLinearMarchStepsForTheSameHits) {
+    RendererStats hiz, reference;
+    expectMirrorMatchesRayTrace(128, 128, SsrMode::Hiz, &hiz);
+    expectMirrorMatchesRayTrace(128, 128, SsrMode::Reference, &reference);
+    // The same rays hit (within 1% of them) and both match the ray trace above; Hi-Z takes at
+    // most a quarter of the steps, and no ray runs out of iterations.
+    std::printf(
+        "hiz: steps mean %.2f max %u hit rate %.4f; reference: steps mean %.2f max %u "
+        "hit rate %.4f\n",
+        hiz.ssrStepsMean, hiz.ssrStepsMax, hiz.ssrHitRate, reference.ssrStepsMean,
+        reference.ssrStepsMax, reference.ssrHitRate);
+    EXPECT_NEAR(hiz.ssrHitRate, reference.ssrHitRate, 0.01);
+    EXPECT_LE(4.0 * hiz.ssrStepsMean, reference.ssrStepsMean)
+        << "hiz " << hiz.ssrStepsMean << " reference " << reference.ssrStepsMean;
+    EXPECT_LT(hiz.ssrStepsMax, RendererOptions{}.ssrSettings.maxIterations);
+    EXPECT_LT(reference.ssrStepsMax, RendererOptions{}.ssrSettings.referenceMaxSteps);
+}
+
+TEST(Ssr, FramesWithoutGlossySurfacesDeclareNoPass) {
+    GpuContext& context = sharedContext();
+    MirrorUnderBox rough(64, 64, 0.8f);  // over the cut-off
+    RendererStats stats;
+    const CapturedFrame frame = rough.scene().render(context, ssrOptions(SsrMode::Hiz), &stats);
+    EXPECT_FALSE(hasPass(stats, "ssr_trace"));
+    EXPECT_FALSE(hasPass(stats, "ssr_hiz0"));
+    EXPECT_EQ(stats.ssrMs, 0.0);
+    EXPECT_EQ(stats.ssrRays, 0u);
+    EXPECT_GT(frame.width, 0u);
+}
+
+// Frames from one renderer (its SSR history carries over) with the box moved by `offsets`,
+// each with motion vectors from the previous frame's offset; returns the last.
+CapturedFrame renderMoving(MirrorUnderBox& mirror, const std::vector<float>& offsets,
+                           std::vector<CapturedFrame>* all = nullptr) {
+    GpuContext& context = sharedContext();
+    TestScene& scene = mirror.scene();
+    SceneResources resources(context);
+    FrameSequence frames(context, scene.width, scene.height, ssrOptions(SsrMode::Hiz));
+    CapturedFrame last;
+    float previous = offsets.front();
+    for (float x : offsets) {
+        FrameInputs inputs = scene.prepare(resources);
+        std::vector<DrawItem>& draws = scene.draws;
+        const glm::mat4 boxWorld = draws[1].world;
+        draws[1].world = glm::translate(glm::mat4(1.0f), {x, 0.0f, 0.0f}) * boxWorld;
+        const std::vector<glm::mat4> previousWorlds = {
+            draws[0].world, glm::translate(glm::mat4(1.0f), {previous, 0.0f, 0.0f}) * boxWorld};
+        inputs.scene.previousWorlds = previousWorlds;
+        previous = x;
+        last = frames.render(inputs, resources);
+        if (all) all->push_back(last);
+    }
+    return last;
+}
+
+// The largest difference of the floor's radiance between two frames, relative to `scale`.
+double worstFloorDifference(const MirrorUnderBox& mirror, const CapturedFrame& a,
+                            const CapturedFrame& b, double scale) {
+    double worst = 0.0;
+    for (uint32_t y = 0; y < a.height; ++y) {
+        for (uint32_t x = 0; x < a.width; ++x) {
+            if (mirror.truth(int(x), int(y)) == MirrorUnderBox::Truth::NotFloor) continue;
+            worst = std::max(worst,
+                             std::abs(double(hdrPixel(a, x, y)[1]) - hdrPixel(b, x, y)[1]) / scale);
+        }
+    }
+    return worst;
+}
+
+TEST(Ssr, MovingObjectLeavesNoTrailAndAStillViewStaysPut) {
+    MirrorUnderBox mirror(64, 64);
+    // The box slides sideways by 0.4 m a frame for 4 frames: after them the floor shows what a
+    // frame without history shows (no part of the old reflections left over 5%).
+    const CapturedFrame moved = renderMoving(mirror, {0.0f, 0.4f, 0.8f, 1.2f, 1.6f});
+    const CapturedFrame fresh = renderMoving(mirror, {1.6f});
+    const double box = compareMirror(mirror, fresh).boxRadiance;
+    EXPECT_LT(worstFloorDifference(mirror, moved, fresh, box), 0.05);
+    // Still: every frame is the first (the filter converges at once and stays).
+    std::vector<CapturedFrame> still;
+    renderMoving(mirror, {0.0f, 0.0f, 0.0f}, &still);
+    for (const CapturedFrame& f : still) {
+        EXPECT_LT(worstFloorDifference(mirror, f, still.front(), box), 1e-4);
+        EXPECT_TRUE(compareMirror(mirror, f).finite);
+    }
+}
+
+}  // namespace
+}  // namespace candela::render::test
