@@ -25,6 +25,7 @@ enum class LightField : std::uint8_t {
     SourceLength,
     InnerConeAngle,
     OuterConeAngle,
+    Volumetric,
 };
 
 // How validateLight checks a field (the editor's limits follow from it too).
@@ -56,7 +57,7 @@ struct LightFieldInfo {
     std::array<float, 3> Light::*channels;
 };
 
-inline constexpr std::array<LightFieldInfo, 8> kLightFieldTable{{
+inline constexpr std::array<LightFieldInfo, 9> kLightFieldTable{{
     {LightField::Color, "color", "", LightFieldRule::ColorChannels, kMaxLightColorChannel, "Colour",
      "Set Light Colour", LightFieldWidget::Color, 0, 0, 0, "", false, nullptr, &Light::color},
     {LightField::Lumens, "lumens", "lm", LightFieldRule::NonNegative, kMaxLumens, "Lumens",
@@ -79,6 +80,9 @@ inline constexpr std::array<LightFieldInfo, 8> kLightFieldTable{{
     {LightField::OuterConeAngle, "outerConeAngle", "rad", LightFieldRule::ConeAngle, 0,
      "Outer cone", "Set Outer Cone", LightFieldWidget::Angle, 0, 0.0f, 90.0f, "", false,
      &Light::outerConeAngle, nullptr},
+    {LightField::Volumetric, "volumetric", "", LightFieldRule::NonNegative, kMaxVolumetricScale,
+     "Volumetric", "Set Volumetric Scale", LightFieldWidget::Drag, 0.01f, 0.0f, 100.0f, "%.2f",
+     true, &Light::volumetric, nullptr},
 }};
 
 using LightFieldSet = std::uint32_t;
@@ -121,15 +125,16 @@ inline constexpr const char* kCastShadowsKey = "castShadows";
 inline constexpr std::array<LightTypeInfo, 3> kLightTypeTable{{
     {LightType::Point, "point", "Point", "point", LightPower::Lumens,
      fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
-              LightField::SourceRadius, LightField::SourceLength),
+              LightField::SourceRadius, LightField::SourceLength, LightField::Volumetric),
      LightOutline::FalloffSphere, false},
     {LightType::Spot, "spot", "Spot", "spot", LightPower::Lumens,
      fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
               LightField::SourceRadius, LightField::SourceLength, LightField::InnerConeAngle,
-              LightField::OuterConeAngle),
+              LightField::OuterConeAngle, LightField::Volumetric),
      LightOutline::Cone, false},
     {LightType::Directional, "directional", "Directional", "directional", LightPower::Lux,
-     fieldSet(LightField::Color, LightField::Lux), LightOutline::Direction, true},
+     fieldSet(LightField::Color, LightField::Lux, LightField::Volumetric), LightOutline::Direction,
+     true},
 }};
 
 inline constexpr std::size_t kLightTypeCount = kLightTypeTable.size();
