@@ -66,6 +66,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["exposure_ev100"] = last.exposureEv100;
     json["exposure_adapted_ev100"] = last.adaptedEv100;
     json["ao_ms"] = median(collect(stats.frames, [](auto& f) { return f.aoMs; }));
+    json["volumetrics_ms"] = median(collect(stats.frames, [](auto& f) { return f.volumetricsMs; }));
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;

@@ -44,5 +44,6 @@ void addMaterialRows(ReportContext& context);
 void addAmbientOcclusionRows(ReportContext& context);
 void addShadowRows(ReportContext& context);
 void addAnimationRows(ReportContext& context);
+void addVolumetricsRows(ReportContext& context);
 
 }  // namespace candela::report

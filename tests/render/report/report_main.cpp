@@ -89,6 +89,7 @@ int main(int argc, char** argv) {
         section("ambient occlusion", [&] { addAmbientOcclusionRows(context); });
         section("shadows", [&] { addShadowRows(context); });
         section("animation", [&] { addAnimationRows(context); });
+        section("volumetrics", [&] { addVolumetricsRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());

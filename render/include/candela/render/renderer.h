@@ -36,6 +36,7 @@ class GpuContext;
 class GpuLightBuffer;
 class LightingPass;
 class AmbientOcclusionPass;
+class VolumetricsPass;
 class SceneResources;
 class TonemapPass;
 class TaaPass;
@@ -171,7 +172,8 @@ private:
     std::unique_ptr<TrianglePass> trianglePass_;
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<LightingPass> lightingPass_;
-    std::unique_ptr<AmbientOcclusionPass> aoPass_;  // made on the first frame with AO
+    std::unique_ptr<AmbientOcclusionPass> aoPass_;      // made on the first frame with AO
+    std::unique_ptr<VolumetricsPass> volumetricsPass_;  // made on the first frame with a medium
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;

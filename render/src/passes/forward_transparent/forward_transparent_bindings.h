@@ -21,6 +21,9 @@
 #define FORWARD_BINDING_SHADOW_VIEWS 23
 #define FORWARD_BINDING_SHADOW_LIGHTS 24
 #define FORWARD_BINDING_SHADOW_ATLAS_COMPARE 25
+// The integrated froxel grid and its shape (common/froxel_lookup.glsl; passes/volumetrics).
+#define FORWARD_BINDING_FROXEL_PARAMS 26
+#define FORWARD_BINDING_FROXEL_INTEGRATED 27
 
 // transparent_occupancy.frag (camera in its vertex stage, gbuffer.vert).
 #define TRANSPARENT_OCCUPANCY_BINDING_DEPTH 1

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "candela/content/components/fog.h"
 #include "candela/render/renderer_options.h"
 #include "candela/render/validation_mode.h"
 #include "candela/runtime/input_script.h"
@@ -61,6 +62,11 @@ struct ApplicationOptions {
     std::optional<float> exposureCompensation;
     // --ao; unset: the world's scene-file "ambient_occlusion" mode, else gtao.
     std::optional<render::AoMode> ao;
+    // --volumetrics; unset: froxels when the scene has a medium (render/README.md
+    // "Volumetric lighting"), which is the only way a frame draws one.
+    std::optional<render::VolumetricsMode> volumetrics;
+    // --fog SIGMA_S[,SIGMA_A[,G]]: a uniform medium replacing the scene's Fog (or adding one).
+    std::optional<content::Fog> fog;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
@@ -69,7 +75,7 @@ struct ApplicationOptions {
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
     // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
-    // --brdf, --ao.
+    // --brdf, --ao, --volumetrics, --fog.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //
