@@ -226,5 +226,44 @@ TEST_F(Volumetrics, ABlendedPaneInFogLooksLikeAnOpaqueWallAtItsDepth) {
     EXPECT_GT(plain, 0.2) << "the medium must change the pane";
 }
 
+// Shadows carve the medium: a box beside a shadow-casting point light darkens the fog in the
+// wedge behind it (from the light), and leaves the fog above that wedge as it was.
+TEST_F(Volumetrics, ShadowsCarveTheMediumBehindABox) {
+    TestScene scene = wallScene(black());
+    scene.add(content::makeBox({0.15f, 0.15f, 0.15f}), black(),
+              glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -4.0f)));
+    scene.lights.push_back(pointLight(glm::vec3(-0.8f, 0.0f, -4.0f), 2000.0f, 8.0f));
+    SceneResources resources(context);
+    FrameInputs inputs = scene.prepare(resources);
+    content::Fog fog;
+    fog.scattering = 0.1f;
+    inputs.scene.fog = fog;
+    // Mean green over a block of pixels: the wedge right of the box at its height, and the
+    // same columns 40 pixels higher, where the rays pass above the wedge.
+    auto block = [](const CapturedFrame& f, uint32_t y0) {
+        double sum = 0.0;
+        for (uint32_t y = y0; y < y0 + 8; ++y)
+            for (uint32_t x = 80; x < 100; ++x)
+                sum += hdrPixel(f, x, y)[1];
+        return sum / 160.0;
+    };
+    for (VolumetricsMode mode : {VolumetricsMode::Reference, VolumetricsMode::Froxels}) {
+        SCOPED_TRACE(volumetricsModeName(mode));
+        RendererOptions options;
+        options.volumetrics = mode;
+        FrameSequence frames(context, scene.width, scene.height, options);
+        scene.lights[0].light.castShadows = false;
+        const CapturedFrame lit = frames.render(inputs, resources);
+        scene.lights[0].light.castShadows = true;
+        const CapturedFrame shadowed = frames.render(inputs, resources);
+        const double wedge = block(shadowed, 60) / block(lit, 60);
+        const double above = block(shadowed, 20) / block(lit, 20);
+        std::printf("%s: fog behind the box %.3f of unshadowed, above it %.3f\n",
+                    volumetricsModeName(mode), wedge, above);
+        EXPECT_LT(wedge, 0.85);
+        EXPECT_NEAR(above, 1.0, 0.03);
+    }
+}
+
 }  // namespace
 }  // namespace candela::render::test
