@@ -55,8 +55,11 @@ float mediumShadow(Light light, uint index, vec3 P) {
 // Radiance scattered toward the camera per metre at P by one light, per unit sigma_s:
 // p(theta) * E * T_light, E the light's irradiance at P (eq. 9 falloff, spot cone; sources
 // as points) and T_light the transmittance from a local light to P (the density at P along
-// the whole leg). toCamera: unit, from P to the camera.
-vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT) {
+// the whole leg). toCamera: unit, from P to the camera. P stands for a ball of radius
+// `sampleRadius` (a froxel; 0 for a point): a light inside it gets the ball's mean inverse
+// square, 3 / r^2 at its centre, instead of a spike that one sample would spread over the
+// whole froxel.
+vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT, float sampleRadius) {
     float scale = lightScales[index];
     if (scale <= 0.0) return vec3(0.0);
     Light light = loadLight(index, push.lights.y);
@@ -71,7 +74,8 @@ vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT) {
         float window = attenuationWindow(distanceSq, light.invAttenuationRadius);
         if (window <= 0.0) return vec3(0.0);
         travel = d * inversesqrt(max(distanceSq, 1e-12));
-        irradiance = light.intensity * (window * inverseSquare(distanceSq) *
+        float spreadSq = max(distanceSq, sampleRadius * sampleRadius / 3.0);
+        irradiance = light.intensity * (window * inverseSquare(spreadSq) *
                                         exp(-sigmaT * sqrt(distanceSq)));
         if (light.type == kLightSpot) irradiance *= spotAttenuation(light, -travel);
     }
@@ -79,14 +83,15 @@ vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT) {
     return irradiance * (scale * phase * mediumShadow(light, index, P));
 }
 
-// Every light's in-scattering at P, per metre, and the extinction there (1/m) in w.
-vec4 mediumAt(vec3 P, vec3 toCamera) {
+// Every light's in-scattering at P (a ball of radius sampleRadius), per metre, and the
+// extinction there (1/m) in w.
+vec4 mediumAt(vec3 P, vec3 toCamera, float sampleRadius) {
     float density = mediumDensity(P);
     float sigmaT = (push.medium.x + push.medium.y) * density;
     vec3 sum = vec3(0.0);
     if (push.medium.x > 0.0) {
         for (uint i = 0u; i < push.lights.x; ++i)
-            sum += lightInScattering(i, P, toCamera, sigmaT);
+            sum += lightInScattering(i, P, toCamera, sigmaT, sampleRadius);
     }
     return vec4(sum * (push.medium.x * density), sigmaT);
 }

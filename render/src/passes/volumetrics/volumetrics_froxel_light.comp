@@ -19,7 +19,14 @@ void main() {
     vec3 origin = camera.cameraPosition.xyz;
     vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
     vec3 perDepth = (nearPoint.xyz / nearPoint.w - origin) / push.range.y;
-    float d = 0.5 * (sliceBoundaryDepth(float(f.z)) + sliceBoundaryDepth(float(f.z + 1u)));
+    float near = sliceBoundaryDepth(float(f.z));
+    float far = sliceBoundaryDepth(float(f.z + 1u));
+    float d = 0.5 * (near + far);
     vec3 P = origin + perDepth * d;
-    froxelMedium[froxelIndex(f)] = mediumAt(P, -normalize(perDepth));
+    // Half the froxel's larger side: across (to the next column's ray) or along the view.
+    vec4 nextPoint = camera.inverseViewProjection *
+                     vec4(ndc + vec2(2.0 / float(push.grid.x), 0.0), 1.0, 1.0);
+    vec3 nextPerDepth = (nextPoint.xyz / nextPoint.w - origin) / push.range.y;
+    float radius = 0.5 * max(d * length(nextPerDepth - perDepth), (far - near) * length(perDepth));
+    froxelMedium[froxelIndex(f)] = mediumAt(P, -normalize(perDepth), radius);
 }

@@ -31,7 +31,7 @@ void main() {
     float transmittance = 1.0;
     for (uint i = 0u; i < push.grid.w; ++i) {
         vec3 P = origin + direction * ((float(i) + 0.5) * dt);
-        integrateStep(mediumAt(P, -direction), dt, radiance, transmittance);
+        integrateStep(mediumAt(P, -direction, 0.0), dt, radiance, transmittance);
     }
     vec4 surface = imageLoad(hdrRadiance, pixel);
     imageStore(hdrRadiance, pixel, vec4(surface.rgb * transmittance + radiance, surface.a));
