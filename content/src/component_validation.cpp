@@ -162,6 +162,31 @@ ValueProblems validateSky(Sky& sky) {
     return problems;
 }
 
+ValueProblems validateFog(Fog& fog) {
+    ValueProblems problems;
+    for (auto [field, value] :
+         {std::pair{"scattering", &fog.scattering}, std::pair{"absorption", &fog.absorption}}) {
+        if (std::isnan(*value) || *value < 0) {
+            reject(problems, field, "must not be negative (1/m), got " + text(*value));
+        } else {
+            clampAbove(problems, field, *value, kMaxFogCoefficient, " 1/m");
+        }
+    }
+    if (!finite(fog.anisotropy) || !(std::fabs(fog.anisotropy) < 1.0f)) {
+        reject(problems, "anisotropy",
+               "the Henyey-Greenstein g must lie strictly between -1 and 1, got " +
+                   text(fog.anisotropy));
+    }
+    if (!finite(fog.heightFalloff) || fog.heightFalloff < 0) {
+        reject(problems, "heightFalloff",
+               "must be finite and not negative (1/m), got " + text(fog.heightFalloff));
+    }
+    if (!finite(fog.baseHeight)) {
+        reject(problems, "baseHeight", "must be finite, got " + text(fog.baseHeight));
+    }
+    return problems;
+}
+
 ValueProblems validateRotation(const std::array<float, 4>& q) {
     ValueProblems problems;
     const float lengthSq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];

@@ -39,6 +39,7 @@
 #include "passes/taa/taa_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
+#include "passes/volumetrics/volumetrics_pass.h"
 #include "vk/image_transfer.h"
 #include "vk/vk_check.h"
 
@@ -66,6 +67,20 @@ const char* antiAliasingName(AntiAliasing aa) {
             return "taa";
     }
     return "unknown";
+}
+
+const char* volumetricsModeName(VolumetricsMode mode) {
+    switch (mode) {
+        case VolumetricsMode::Off:
+            return "off";
+        case VolumetricsMode::Volumes:
+            return "volumes";
+        case VolumetricsMode::Froxels:
+            return "froxels";
+        case VolumetricsMode::Reference:
+            return "reference";
+    }
+    return "?";
 }
 
 const char* aoModeName(AoMode mode) {
@@ -720,6 +735,88 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.hdr.version = declareSsr(h, environment, features.ibl.has_value(),
                                    features.ibl == IblMode::Mobile, inputs.scene.skyIntensity);
     }
+    std::optional<ResourceHandle> froxels;  // the integrated grid, for blended surfaces too
+    // Volumetric lighting over the lit opaque surfaces and the background (frames whose scene
+    // has a medium): froxels (lit, integrated, composited by depth) or the reference march.
+    // `volumes` (seed 004 §3's per-light volumes) is not built yet and draws froxels.
+    if (inputs.scene.fog && options_.volumetrics != VolumetricsMode::Off) {
+        if (!volumetricsPass_) volumetricsPass_ = std::make_unique<VolumetricsPass>(context_);
+        volumetricsPass_->prepare(inputs.scene.lights, features.shadows);
+        VolumetricsPass::Inputs volume;
+        volume.camera = &cameraBuffer_;
+        volume.lights = &lights_->buffer();
+        volume.lightCount = lights_->count();
+        volume.lightCapacity = lights_->capacity();
+        volume.fog = *inputs.scene.fog;
+        volume.nearPlane = inputs.scene.camera.nearPlane;
+        volume.settings = options_.volumetricsSettings;
+        volume.grid = VolumetricsPass::froxelGrid(width_, height_, volume.settings);
+        const ResourceHandle scales =
+            g.importBuffer("volumetrics.light_scales", &volumetricsPass_->lightScales());
+        auto readLights = [&](FrameGraph::PassBuilder& p) {
+            p.read(h.camera, Use::Uniform);
+            p.read(h.lights, Use::StorageRead);
+            p.read(scales, Use::StorageRead);
+            if (features.shadows) {
+                p.read(shadowAtlas, Use::Sampled);
+                p.read(shadowViews, Use::StorageRead);
+                p.read(shadowLights, Use::StorageRead);
+            }
+        };
+        if (options_.volumetrics == VolumetricsMode::Reference) {
+            features_.push_back("volumetrics_reference");
+            auto p = g.addPass("volumetrics_reference", PassKind::Device,
+                               [this, ids, volume, shadowDescriptors](PassContext& ctx) {
+                                   VolumetricsPass::Inputs in = volume;
+                                   in.depth = ctx.image(ids.depth);
+                                   in.hdr = ctx.image(ids.hdr);
+                                   in.shadows = &shadowDescriptors;
+                                   volumetricsPass_->recordReference(ctx.cmd(), in);
+                               });
+            readLights(p);
+            p.read(h.depth, Use::Sampled);
+            h.hdr = p.write(h.hdr, Use::StorageReadWrite);
+        } else {
+            features_.push_back("volumetrics_froxels");
+            volumetricsPass_->setFroxelParams(volume);
+            const VkDeviceSize bytes = VolumetricsPass::froxelBufferBytes(volume.grid);
+            ResourceHandle medium = g.createBuffer("volumetrics.froxel_medium", bytes,
+                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+            ResourceHandle integrated = g.createBuffer("volumetrics.froxel_integrated", bytes,
+                                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+            auto light = g.addPass("volumetrics_froxel_light", PassKind::Device,
+                                   [this, medium, volume, shadowDescriptors](PassContext& ctx) {
+                                       VolumetricsPass::Inputs in = volume;
+                                       in.shadows = &shadowDescriptors;
+                                       volumetricsPass_->recordFroxelLight(ctx.cmd(), in,
+                                                                           ctx.buffer(medium));
+                                   });
+            readLights(light);
+            medium = light.write(medium, Use::StorageWrite);
+            auto integrate =
+                g.addPass("volumetrics_froxel_integrate", PassKind::Device,
+                          [this, medium, integrated, volume](PassContext& ctx) {
+                              volumetricsPass_->recordFroxelIntegrate(
+                                  ctx.cmd(), volume, ctx.buffer(medium), ctx.buffer(integrated));
+                          });
+            integrate.read(h.camera, Use::Uniform);
+            integrate.read(medium, Use::StorageRead);
+            integrated = integrate.write(integrated, Use::StorageWrite);
+            auto composite = g.addPass("volumetrics_composite", PassKind::Device,
+                                       [this, ids, integrated, volume](PassContext& ctx) {
+                                           VolumetricsPass::Inputs in = volume;
+                                           in.depth = ctx.image(ids.depth);
+                                           in.hdr = ctx.image(ids.hdr);
+                                           volumetricsPass_->recordComposite(
+                                               ctx.cmd(), in, ctx.buffer(integrated));
+                                       });
+            composite.read(h.camera, Use::Uniform);
+            composite.read(h.depth, Use::Sampled);
+            composite.read(integrated, Use::StorageRead);
+            h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
+            froxels = integrated;
+        }
+    }
     if (blended) {
         // MSAA: multisampled copies of the targets, made only for frames with blended draws.
         const VkSampleCountFlagBits samples = transparentPass_->samples();
@@ -772,9 +869,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
         auto p =
             g.addPass("forward_transparent", PassKind::Device,
-                      [this, shadingInputs, &resources](PassContext& ctx) {
-                          transparentPass_->recordShading(ctx.cmd(), resources, shadingInputs(ctx));
+                      [this, shadingInputs, froxels, &resources](PassContext& ctx) {
+                          ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
+                          if (froxels) {
+                              in.froxelParams = &volumetricsPass_->froxelParams();
+                              in.froxelIntegrated = ctx.buffer(*froxels);
+                          }
+                          transparentPass_->recordShading(ctx.cmd(), resources, in);
                       });
+        if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
         if (msaa) {
             // Drawn into, then resolved into hdr and motion (their last use).
             p.read(msaaDepth, Use::DepthRead);
@@ -1211,6 +1314,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.bloomMs = 0.0;
     stats_.skinningMs = 0.0;
     stats_.aoMs = 0.0;
+    stats_.volumetricsMs = 0.0;
     stats_.shadowMs = 0.0;
     stats_.ssrMs = 0.0;
     stats_.ssrStepsMean = 0.0;
@@ -1229,6 +1333,7 @@ const RendererStats& Renderer::collectStats() {
         if (name.starts_with("bloom_")) stats_.bloomMs += ms;
         if (name == "skinning") stats_.skinningMs += ms;
         if (name.starts_with("ambient_occlusion_")) stats_.aoMs += ms;
+        if (name.starts_with("volumetrics_")) stats_.volumetricsMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
         if (name.starts_with("ssr_")) stats_.ssrMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;

@@ -505,6 +505,10 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                                                           : 0.0f;
         rendererOptions.ao = aoFor(options, world.get());
         rendererOptions.ssr = ssrFor(options, world.get());
+        // Froxels by default: the cheaper method from 16 lights up on the figures in
+        // render/README.md "Volumetric lighting"; it draws only in frames with a medium.
+        rendererOptions.volumetrics =
+            options.volumetrics.value_or(render::VolumetricsMode::Froxels);
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
@@ -590,6 +594,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                 frame.scene.changedLights = s.extracted.changedLights;
                 frame.scene.lightsRestructured = s.extracted.lightsRestructured;
                 frame.scene.skyIntensity = s.extracted.skyIntensity;
+                frame.scene.fog = options.fog ? options.fog : s.extracted.fog;
                 if (const auto& ao = world->sceneAmbientOcclusion()) {
                     frame.scene.aoRadius = ao->radius;
                     frame.scene.aoIntensity = ao->intensity;

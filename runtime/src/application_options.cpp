@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "candela/content/component_validation.h"
 #include "candela/runtime/exit_code.h"
 
 namespace candela::runtime {
@@ -91,6 +92,37 @@ constexpr std::pair<const char*, render::SsrMode> kSsrModes[] = {
     {"off", render::SsrMode::Off},
     {"hiz", render::SsrMode::Hiz},
     {"reference", render::SsrMode::Reference}};
+constexpr std::pair<const char*, render::VolumetricsMode> kVolumetricsModes[] = {
+    {"off", render::VolumetricsMode::Off},
+    {"volumes", render::VolumetricsMode::Volumes},
+    {"froxels", render::VolumetricsMode::Froxels},
+    {"reference", render::VolumetricsMode::Reference}};
+
+// SIGMA_S[,SIGMA_A[,G]]: 1, 2 or 3 numbers by the Fog component's rules (validateFog); an
+// empty string when they hold, else what is wrong.
+std::string parseFog(const std::string& text, content::Fog& fog) {
+    float values[3] = {0.0f, 0.0f, 0.0f};
+    size_t count = 0;
+    const char* at = text.data();
+    const char* end = text.data() + text.size();
+    while (true) {
+        if (count == 3) return "at most three numbers (SIGMA_S,SIGMA_A,G)";
+        auto [ptr, ec] = std::from_chars(at, end, values[count]);
+        if (ec != std::errc()) return "'" + text + "' is not a list of numbers";
+        ++count;
+        if (ptr == end) break;
+        if (*ptr != ',') return "'" + text + "' is not a comma-separated list of numbers";
+        at = ptr + 1;
+    }
+    fog = content::Fog{};
+    fog.scattering = values[0];
+    fog.absorption = values[1];
+    fog.anisotropy = values[2];
+    for (const content::ValueProblem& problem : content::validateFog(fog)) {
+        if (!problem.clamped) return problem.field + " " + problem.message;
+    }
+    return {};
+}
 
 }  // namespace
 
@@ -122,7 +154,12 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --ao off|gtao|reference   sky light occlusion (default: the scene file's, else "
            "gtao)\n"
            "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
-           "                            (default: the scene file's, else off)\n";
+           "                            (default: the scene file's, else off)\n"
+           "  --volumetrics off|volumes|froxels|reference   light scattered in the medium\n"
+           "                            (default: froxels when the scene has fog, else off;\n"
+           "                            volumes is not built yet and draws froxels)\n"
+           "  --fog SIGMA_S[,SIGMA_A[,G]]   a uniform medium (1/m, Henyey-Greenstein g),\n"
+           "                            replacing the scene's fog\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -253,6 +290,20 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--ssr needs off, hiz or reference, got '" + v + "'");
             }
             options.ssr = ssr;
+        } else if (arg == "--volumetrics") {
+            render::VolumetricsMode mode{};
+            if (!value() || !parseChoice(v, kVolumetricsModes, mode)) {
+                return fail("--volumetrics needs off, volumes, froxels or reference, got '" + v +
+                            "'");
+            }
+            options.volumetrics = mode;
+        } else if (arg == "--fog") {
+            if (!value()) return fail("--fog needs SIGMA_S[,SIGMA_A[,G]] (per metre)");
+            content::Fog fog;
+            if (std::string problem = parseFog(v, fog); !problem.empty()) {
+                return fail("--fog: " + problem);
+            }
+            options.fog = fog;
         } else if (others == OtherArguments::Keep) {
             result.arguments.push_back(arg);
         } else if (!arg.empty() && arg[0] == '-') {

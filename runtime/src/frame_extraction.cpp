@@ -5,8 +5,10 @@
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "candela/content/component_validation.h"
 #include "candela/content/components/animation.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/scene_components.h"
@@ -190,6 +192,12 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
         out.skyExrPath = sky.exrPath;
         out.skyIntensity =
             std::isfinite(sky.intensity) && sky.intensity >= 0.0f ? sky.intensity : 0.0f;
+    });
+    // A medium the loader's rules reject (code may emplace any values) draws no fog.
+    out.fog.reset();
+    registry.view<const content::Fog>().each([&](const content::Fog& fog) {
+        content::Fog checked = fog;
+        if (!content::anyRejected(content::validateFog(checked))) out.fog = checked;
     });
 }
 

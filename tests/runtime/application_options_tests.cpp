@@ -145,3 +145,30 @@ TEST(ApplicationOptions, HelpAsksForTheUsageAndSucceeds) {
         EXPECT_NE(ApplicationOptions::standardFlagsUsage().find(flag), std::string::npos) << flag;
     }
 }
+
+// Issue 17: --volumetrics picks the method, --fog SIGMA_S[,SIGMA_A[,G]] a uniform medium by
+// the Fog component's rules.
+TEST(ApplicationOptions, VolumetricsAndFogFlags) {
+    CommandLine result = parseCommandLine({"--volumetrics", "reference", "--fog", "0.1,0.02,-0.6"});
+    ASSERT_TRUE(result) << result.error;
+    EXPECT_EQ(result.options->volumetrics, candela::render::VolumetricsMode::Reference);
+    ASSERT_TRUE(result.options->fog);
+    EXPECT_EQ(result.options->fog->scattering, 0.1f);
+    EXPECT_EQ(result.options->fog->absorption, 0.02f);
+    EXPECT_EQ(result.options->fog->anisotropy, -0.6f);
+    CommandLine one = parseCommandLine({"--fog", "0.05"});
+    ASSERT_TRUE(one) << one.error;
+    EXPECT_EQ(one.options->fog->scattering, 0.05f);
+    EXPECT_EQ(one.options->fog->absorption, 0.0f);
+    EXPECT_EQ(one.options->fog->anisotropy, 0.0f);
+    EXPECT_FALSE(parseCommandLine({}).options->fog);
+    EXPECT_FALSE(parseCommandLine({}).options->volumetrics);
+
+    EXPECT_NE(parseError({"--volumetrics", "fast"}).find("got 'fast'"), std::string::npos);
+    EXPECT_NE(parseError({"--fog", "-0.1"}).find("scattering must not be negative"),
+              std::string::npos);
+    EXPECT_NE(parseError({"--fog", "0.1,0,1"}).find("anisotropy"), std::string::npos);
+    EXPECT_NE(parseError({"--fog", "0.1,x"}).find("'0.1,x'"), std::string::npos);
+    EXPECT_NE(parseError({"--fog", "0.1,0,0,4"}).find("at most three"), std::string::npos);
+    EXPECT_NE(parseError({"--fog"}).find("--fog needs"), std::string::npos);
+}

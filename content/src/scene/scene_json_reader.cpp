@@ -521,6 +521,20 @@ public:
                 e.sky = value;
             }
         }
+        if (const json* f = nullptr; object(j, p, "fog", f)) {
+            Fog value;
+            if (clean([&] {
+                    const std::string q = p + "/fog";
+                    number(*f, q, "scattering", value.scattering);
+                    number(*f, q, "absorption", value.absorption);
+                    number(*f, q, "anisotropy", value.anisotropy);
+                    number(*f, q, "heightFalloff", value.heightFalloff);
+                    number(*f, q, "baseHeight", value.baseHeight);
+                    report(q, validateFog(value));
+                })) {
+                e.fog = value;
+            }
+        }
         if (auto it = j.find("gameData"); it != j.end()) e.gameDataJson = it->dump();
         return e;
     }

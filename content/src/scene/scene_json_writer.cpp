@@ -208,6 +208,14 @@ struct Writer {
             out["sky"] = {{"exr", e.sky->exrPath},
                           {"intensity", number(e.sky->intensity, p + "/sky/intensity")}};
         }
+        if (e.fog) {
+            const std::string q = p + "/fog/";
+            out["fog"] = {{"scattering", number(e.fog->scattering, q + "scattering")},
+                          {"absorption", number(e.fog->absorption, q + "absorption")},
+                          {"anisotropy", number(e.fog->anisotropy, q + "anisotropy")},
+                          {"heightFalloff", number(e.fog->heightFalloff, q + "heightFalloff")},
+                          {"baseHeight", number(e.fog->baseHeight, q + "baseHeight")}};
+        }
         if (!e.gameDataJson.empty()) {
             json data = json::parse(e.gameDataJson, nullptr, false);
             if (data.is_discarded() && error.empty()) {

@@ -12,6 +12,7 @@
 
 #include "candela/content/components/animation.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
@@ -174,6 +175,35 @@ void drawCamera(EditorScene& scene, ecs::Entity e) {
     ImGui::Text("EV100 %.2f", render::ev100FromCamera(c));
 }
 
+// A participating medium (issue 17): coefficients per metre, the phase function's g, and the
+// optional height falloff. Values past the loader's rules are refused or clamped by commit().
+void drawFog(EditorScene& scene, ecs::Entity e) {
+    const auto* current = scene.registry().tryGet<content::Fog>(e);
+    if (!current) return;
+    const bool open = ImGui::CollapsingHeader("Fog", ImGuiTreeNodeFlags_DefaultOpen);
+    if (ImGui::BeginPopupContextItem("fog context")) {
+        if (ImGui::MenuItem("Remove fog")) {
+            scene.execute(removeComponent<content::Fog>(scene, e, "Remove Fog"));
+        }
+        ImGui::EndPopup();
+        return;
+    }
+    if (!open) return;
+    content::Fog f = *current;
+    commit(scene, e, ImGui::DragFloat("Scattering", &f.scattering, 0.001f, 0.0f, 10.0f, "%.4f /m"),
+           f, "Set Fog Scattering");
+    commit(scene, e, ImGui::DragFloat("Absorption", &f.absorption, 0.001f, 0.0f, 10.0f, "%.4f /m"),
+           f, "Set Fog Absorption");
+    commit(scene, e, ImGui::SliderFloat("Anisotropy g", &f.anisotropy, -0.95f, 0.95f), f,
+           "Set Fog Anisotropy");
+    commit(scene, e,
+           ImGui::DragFloat("Height falloff", &f.heightFalloff, 0.01f, 0.0f, 10.0f, "%.3f /m"), f,
+           "Set Fog Height Falloff");
+    commit(scene, e,
+           ImGui::DragFloat("Base height", &f.baseHeight, 0.05f, -1.0e4f, 1.0e4f, "%.2f m"), f,
+           "Set Fog Base Height");
+}
+
 // Material layers (issue 21): the material's layers (copies of the scene library's, edited
 // per material), adding one from the library, removing one, and the mask. Every change goes
 // through `edited`, i.e. one undoable "Edit Material" command (drags merge into one step).
@@ -334,6 +364,9 @@ void drawAddComponent(EditorScene& scene, ecs::Entity e) {
         if (!scene.registry().has<content::Camera>(e) && ImGui::MenuItem("Camera")) {
             scene.execute(setComponent(scene, e, content::Camera{}, "Add Camera"));
         }
+        if (!scene.registry().has<content::Fog>(e) && ImGui::MenuItem("Fog")) {
+            scene.execute(setComponent(scene, e, content::Fog{}, "Add Fog"));
+        }
         ImGui::EndPopup();
     }
 }
@@ -386,6 +419,7 @@ void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
     // Each section re-reads its component: an edit above may have replaced it this frame.
     if (scene.registry().valid(e)) drawLight(scene, e);
     if (scene.registry().valid(e)) drawCamera(scene, e);
+    if (scene.registry().valid(e)) drawFog(scene, e);
     if (scene.registry().valid(e)) drawMaterials(scene, e);
     if (scene.registry().valid(e)) drawAnimation(scene, e);
     if (scene.registry().valid(e)) drawAddComponent(scene, e);

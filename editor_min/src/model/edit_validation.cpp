@@ -32,6 +32,10 @@ EditCheck checkEdit(content::Camera& value) {
     return fromProblems(content::validateCamera(value));
 }
 
+EditCheck checkEdit(content::Fog& value) {
+    return fromProblems(content::validateFog(value));
+}
+
 EditCheck checkEdit(ecs::LocalTransform& value) {
     const ecs::Quat& q = value.rotation;
     return fromProblems(content::validateRotation(std::array<float, 4>{q.x, q.y, q.z, q.w}));

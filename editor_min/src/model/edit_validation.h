@@ -5,6 +5,7 @@
 #include <string>
 
 #include "candela/content/components/camera.h"
+#include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 #include "candela/content/material.h"
 #include "candela/ecs/transform.h"
@@ -19,6 +20,7 @@ struct EditCheck {
 // May clamp fields of `value`.
 EditCheck checkEdit(content::Light& value);
 EditCheck checkEdit(content::Camera& value);
+EditCheck checkEdit(content::Fog& value);
 EditCheck checkEdit(ecs::LocalTransform& value);
 EditCheck checkEdit(content::Material& value);
 

@@ -32,6 +32,7 @@ EntitySnapshot snapshotEntity(EditorScene& scene, ecs::Entity e) {
     s.light = copyOf<content::Light>(registry, e);
     s.camera = copyOf<content::Camera>(registry, e);
     s.sky = copyOf<content::Sky>(registry, e);
+    s.fog = copyOf<content::Fog>(registry, e);
     s.gameData = copyOf<content::GameData>(registry, e);
     if (const auto* member = registry.tryGet<content::SceneMember>(e)) s.sceneOrder = member->order;
     return s;
@@ -58,6 +59,7 @@ ecs::Entity restoreEntity(EditorScene& scene, const EntitySnapshot& s) {
     emplaceIf(registry, e, s.light);
     emplaceIf(registry, e, s.camera);
     emplaceIf(registry, e, s.sky);
+    emplaceIf(registry, e, s.fog);
     emplaceIf(registry, e, s.gameData);
     registry.emplace<content::SceneMember>(e, content::SceneMember{s.sceneOrder});
     if (ecs::Entity parent = scene.find(s.parentId); parent != ecs::kNullEntity) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "candela/content/components/camera.h"
+#include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
@@ -28,6 +29,7 @@ struct EntitySnapshot {
     std::optional<content::Light> light;
     std::optional<content::Camera> camera;
     std::optional<content::Sky> sky;
+    std::optional<content::Fog> fog;
     std::optional<content::GameData> gameData;
     uint32_t sceneOrder = 0;
 };

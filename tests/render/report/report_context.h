@@ -48,5 +48,6 @@ void addAmbientOcclusionRows(ReportContext& context);
 void addShadowRows(ReportContext& context);
 void addAnimationRows(ReportContext& context);
 void addSsrRows(ReportContext& context);
+void addVolumetricsRows(ReportContext& context);
 
 }  // namespace candela::report

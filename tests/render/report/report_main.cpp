@@ -139,6 +139,7 @@ int main(int argc, char** argv) {
         section("shadows", [&] { addShadowRows(context); });
         section("animation", [&] { addAnimationRows(context); });
         section("screen-space reflections", [&] { addSsrRows(context); });
+        section("volumetrics", [&] { addVolumetricsRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "candela/content/components/camera.h"
+#include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/sky.h"
 #include "candela/content/material.h"
@@ -31,6 +32,9 @@ inline constexpr float kMaxLux = 1e7f;                 // the sun at noon is ~1.
 inline constexpr float kMaxLightColorChannel = 1e3f;   // colour is a multiplier, normally <= 1
 inline constexpr float kMaxSkyIntensity = 1e6f;        // multiplies the sky's cd/m^2
 inline constexpr float kMaxEmissiveLuminance = 1e10f;  // cd/m^2; the sun's disc is ~1.6e9
+// Fog coefficients (1/m): 1e3 already hides everything past a millimetre.
+inline constexpr float kMaxFogCoefficient = 1e3f;
+inline constexpr float kMaxVolumetricScale = 1e3f;  // multiplies a light's in-scattering
 
 struct ValueProblem {
     std::string field;     // as the scene file names it: "lumens", "verticalFov", "exr"
@@ -44,6 +48,9 @@ bool anyRejected(const ValueProblems& problems);
 ValueProblems validateLight(Light& light);
 ValueProblems validateCamera(Camera& camera);
 ValueProblems validateSky(Sky& sky);
+// Negative or non-finite coefficients, |anisotropy| >= 1 (the phase function has a pole) and a
+// negative or non-finite height falloff are rejected.
+ValueProblems validateFog(Fog& fog);
 // A unit quaternion x, y, z, w; a zero (or non-finite) one has no orientation.
 ValueProblems validateRotation(const std::array<float, 4>& rotation);
 // emissiveFactor x emissiveStrength: negative values and luminances over

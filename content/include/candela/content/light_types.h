@@ -27,6 +27,7 @@ enum class LightField : std::uint8_t {
     OuterConeAngle,
     Width,
     Height,
+    Volumetric,
 };
 
 // How validateLight checks a field (the editor's limits follow from it too).
@@ -58,7 +59,7 @@ struct LightFieldInfo {
     std::array<float, 3> Light::*channels;
 };
 
-inline constexpr std::array<LightFieldInfo, 10> kLightFieldTable{{
+inline constexpr std::array<LightFieldInfo, 11> kLightFieldTable{{
     {LightField::Color, "color", "", LightFieldRule::ColorChannels, kMaxLightColorChannel, "Colour",
      "Set Light Colour", LightFieldWidget::Color, 0, 0, 0, "", false, nullptr, &Light::color},
     {LightField::Lumens, "lumens", "lm", LightFieldRule::NonNegative, kMaxLumens, "Lumens",
@@ -87,6 +88,9 @@ inline constexpr std::array<LightFieldInfo, 10> kLightFieldTable{{
     {LightField::Height, "height", "m", LightFieldRule::Positive, kMaxAreaLightSize, "Height",
      "Set Height", LightFieldWidget::Drag, 0.01f, 0.001f, 100.0f, "%.3f m", true, &Light::height,
      nullptr},
+    {LightField::Volumetric, "volumetric", "", LightFieldRule::NonNegative, kMaxVolumetricScale,
+     "Volumetric", "Set Volumetric Scale", LightFieldWidget::Drag, 0.01f, 0.0f, 100.0f, "%.2f",
+     true, &Light::volumetric, nullptr},
 }};
 
 using LightFieldSet = std::uint32_t;
@@ -132,15 +136,16 @@ inline constexpr const char* kCastShadowsKey = "castShadows";
 inline constexpr std::array<LightTypeInfo, 5> kLightTypeTable{{
     {LightType::Point, "point", "Point", "point", LightPower::Lumens,
      fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
-              LightField::SourceRadius, LightField::SourceLength),
+              LightField::SourceRadius, LightField::SourceLength, LightField::Volumetric),
      LightOutline::FalloffSphere, false},
     {LightType::Spot, "spot", "Spot", "spot", LightPower::Lumens,
      fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,
               LightField::SourceRadius, LightField::SourceLength, LightField::InnerConeAngle,
-              LightField::OuterConeAngle),
+              LightField::OuterConeAngle, LightField::Volumetric),
      LightOutline::Cone, false},
     {LightType::Directional, "directional", "Directional", "directional", LightPower::Lux,
-     fieldSet(LightField::Color, LightField::Lux), LightOutline::Direction, true},
+     fieldSet(LightField::Color, LightField::Lux, LightField::Volumetric), LightOutline::Direction,
+     true},
     // No KHR type: glTF gives these by extras.shape on a point or spot light.
     {LightType::Rect, "rect", "Rectangle", nullptr, LightPower::AreaLumens,
      fieldSet(LightField::Color, LightField::Lumens, LightField::AttenuationRadius,

@@ -23,6 +23,7 @@
 
 #include "candela/content/atomic_file_write.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/scene_components.h"
 #include "candela/content/components/sky.h"
@@ -93,6 +94,7 @@ struct SceneEntity {
     std::optional<Light> light;
     std::optional<Camera> camera;
     std::optional<Sky> sky;
+    std::optional<Fog> fog;  // "fog": {"scattering", "absorption", "anisotropy", ...}
     // Free-form game data as JSON text; empty when none. Loading gives the canonical form
     // (compact, object keys sorted), which saving and loading again preserves exactly.
     std::string gameDataJson;

@@ -4,8 +4,10 @@
 #include <cstdint>
 
 #include <glm/glm.hpp>
+#include <optional>
 #include <span>
 
+#include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 
 namespace candela::render {
@@ -85,6 +87,9 @@ struct FrameScene {
     // AoMode is on.
     float aoRadius = 1.5f;  // render/README.md "Ambient occlusion": why 1.5
     float aoIntensity = 1.0f;
+    // The participating medium (render/README.md "Volumetric lighting"), drawn in the mode
+    // RendererOptions::volumetrics names; unset: clear air.
+    std::optional<content::Fog> fog;
 };
 
 }  // namespace candela::render

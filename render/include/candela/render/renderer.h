@@ -39,6 +39,7 @@ class LightingPass;
 class AmbientOcclusionPass;
 class SsrPass;
 struct EnvironmentDescriptors;
+class VolumetricsPass;
 class SceneResources;
 class TonemapPass;
 class TaaPass;
@@ -186,6 +187,8 @@ private:
     std::array<GpuImage, 2> ssrHistory_;
     uint32_t ssrHistoryWrite_ = 0;
     bool ssrHistoryValid_ = false;
+    std::unique_ptr<AmbientOcclusionPass> aoPass_;      // made on the first frame with AO
+    std::unique_ptr<VolumetricsPass> volumetricsPass_;  // made on the first frame with a medium
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;

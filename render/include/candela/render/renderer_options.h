@@ -86,6 +86,25 @@ enum class AoSpecular {
 };
 
 // What the AO passes do. radius and intensity come from the scene (FrameScene) each frame.
+// Volumetric lighting in a participating medium (render/README.md "Volumetric lighting"; only
+// in frames whose scene has a FogMedium).
+enum class VolumetricsMode {
+    Off,        // no medium is drawn even if the scene has one
+    Volumes,    // seed 004 §3: each light's volume marched at half resolution
+    Froxels,    // a view-aligned grid lit from the cluster lists, integrated front to back
+    Reference,  // every light, many steps per pixel at full resolution: for measurement only
+};
+const char* volumetricsModeName(VolumetricsMode mode);  // "off", "volumes", "froxels", ...
+
+struct VolumetricsSettings {
+    // Froxel grid at 1280x720 (scaled with the image, at least 8x8), exponential depth slices
+    // from the near plane to `froxelFar` metres.
+    uint32_t froxelsX = 160, froxelsY = 90, froxelSlices = 64;
+    float froxelFar = 100.0f;
+    uint32_t referenceSteps = 256;  // per pixel, uniformly over the ray up to referenceFar
+    float referenceFar = 100.0f;    // metres; past it the medium is not drawn (both modes)
+};
+
 struct AmbientOcclusionSettings {
     float radius = 1.5f;              // metres the horizon search (and the reference's rays) reach
     float intensity = 1.0f;           // 0: no occlusion, 1: as measured
@@ -162,6 +181,10 @@ struct RendererOptions {
     ExposureMode exposure = ExposureMode::Manual;
     AutoExposureSettings autoExposure;
     AoMode ao = AoMode::Off;
+    // Off here so tests render without a medium unless they ask; the application's default
+    // (a medium in the scene turns it on) is ApplicationOptions'.
+    VolumetricsMode volumetrics = VolumetricsMode::Off;
+    VolumetricsSettings volumetricsSettings;
     // The pass settings other than radius and intensity (those are the scene's, per frame).
     AmbientOcclusionSettings aoSettings;
     // Shadows (render/README.md "Shadows"): lights with castShadows get maps when on.
@@ -203,6 +226,7 @@ struct RendererStats {
                                     // GPU: timestamps around the assignment passes
     double lightingMs = 0.0;        // GPU timestamps around the lighting dispatch
     double aoMs = 0.0;              // GPU timestamps around the ambient occlusion passes
+    double volumetricsMs = 0.0;     // GPU timestamps around the volumetric lighting passes
     uint64_t lightEvaluations = 0;  // light-pixel pairs the shader evaluated (countLightPairs)
     uint64_t litPairs = 0;          // ... of which the light reaches the pixel
     // Frames whose list buffer had to grow (the CPU path's first frame always does: it sizes

@@ -21,6 +21,9 @@
 #define SHADOW_VIEWS_BINDING FORWARD_BINDING_SHADOW_VIEWS
 #define SHADOW_LIGHTS_BINDING FORWARD_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
+#define FROXEL_PARAMS_BINDING FORWARD_BINDING_FROXEL_PARAMS
+#define FROXEL_INTEGRATED_BINDING FORWARD_BINDING_FROXEL_INTEGRATED
+#include "common/froxel_lookup.glsl"
 
 layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
 // Image-based lighting as the deferred pass does it: 0 none, 1 split sum, 2 mobile.
@@ -154,6 +157,11 @@ void main() {
             }
         }
     }
+    // The medium in front of the surface (froxels): attenuated by it, its in-scattering added,
+    // so a pane of full coverage shows what an opaque wall there would.
+    vec4 medium = froxelsAt(gl_FragCoord.xy, vec2(camera.frameInfo.xy),
+                            froxelParams.range.x / max(gl_FragCoord.z, 1e-30));
+    radiance = radiance * medium.a + medium.rgb;
     outRadiance = vec4(radiance, saturate(s.baseColor.a));
     outMotion = vec4(screenMotion(inCurrentClip, inPreviousClip), 0.0, outRadiance.a);
 }

@@ -27,6 +27,9 @@
 #define FORWARD_BINDING_LTC_MAGNITUDE 27
 #define AREA_LIGHT_LTC_MATRIX_BINDING FORWARD_BINDING_LTC_MATRIX
 #define AREA_LIGHT_LTC_MAGNITUDE_BINDING FORWARD_BINDING_LTC_MAGNITUDE
+// The integrated froxel grid and its shape (common/froxel_lookup.glsl; passes/volumetrics).
+#define FORWARD_BINDING_FROXEL_PARAMS 28
+#define FORWARD_BINDING_FROXEL_INTEGRATED 29
 
 // transparent_occupancy.frag (camera in its vertex stage, gbuffer.vert).
 #define TRANSPARENT_OCCUPANCY_BINDING_DEPTH 1

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstring>
 
 #include "candela/render/gpu_context.h"
 #include "candela/render/gpu_image.h"
@@ -64,7 +65,13 @@ void setViewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
 }  // namespace
 
 ForwardTransparentPass::ForwardTransparentPass(GpuContext& context, VkSampleCountFlagBits samples)
-    : context_(context), samples_(samples), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {
+    : context_(context),
+      samples_(samples),
+      pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}),
+      noMedium_(context, 32,
+                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                MemoryLocation::HostVisible) {
+    std::memset(noMedium_.mapped(), 0, 32);
     // Occupancy: no attachments; the fragment shader tests against the G-buffer depth itself,
     // so the depth image stays in the layout the occupancy compute pass read it in.
     GraphicsPipelineDesc occupancy;
@@ -193,6 +200,10 @@ void ForwardTransparentPass::buildShadingPipeline() {
         {FORWARD_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_FROXEL_PARAMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
@@ -354,6 +365,11 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
     VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo previousInfo{previousWorlds_->handle(), 0, VK_WHOLE_SIZE};
+    const bool froxels = in.froxelParams != nullptr;
+    VkDescriptorBufferInfo froxelParamsInfo{
+        froxels ? in.froxelParams->handle() : noMedium_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo froxelInfo{froxels ? in.froxelIntegrated.handle() : noMedium_.handle(),
+                                      0, VK_WHOLE_SIZE};
     DrawPush push{};
     push.directionalCount = in.directionalCount;
     push.grid = toGpu(*in.grid);
@@ -381,7 +397,9 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
             storageBufferWrite(FORWARD_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
             sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
             sampledImageWrite(FORWARD_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
-            sampledImageWrite(FORWARD_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude)};
+            sampledImageWrite(FORWARD_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude),
+            uniformBufferWrite(FORWARD_BINDING_FROXEL_PARAMS, &froxelParamsInfo),
+            storageBufferWrite(FORWARD_BINDING_FROXEL_INTEGRATED, &froxelInfo)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};

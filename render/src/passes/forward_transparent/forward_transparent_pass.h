@@ -88,6 +88,9 @@ public:
         const EnvironmentDescriptors* environment;  // the sky (features().ibl), or placeholders
         float skyIntensity;
         const ShadowDescriptors* shadows;  // the atlas and tables, or placeholders
+        // Froxels (passes/volumetrics), read in the fragment shader; null: no medium.
+        const GpuBuffer* froxelParams = nullptr;
+        BufferRef froxelIntegrated;
     };
     void recordShading(VkCommandBuffer cmd, SceneResources& resources,
                        const ShadingInputs& in) const;
@@ -117,6 +120,8 @@ private:
     Pipeline merge_;
     Pipeline expand_;       // MSAA only
     Sampler pointSampler_;  // G-buffer and depth reads
+    // Zeros: froxel parameters saying "no medium", bound when the frame has no froxels.
+    GpuBuffer noMedium_;
 };
 
 }  // namespace candela::render

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "candela/content/components/fog.h"
 #include "candela/render/renderer_options.h"
 #include "candela/render/validation_mode.h"
 #include "candela/runtime/input_script.h"
@@ -69,6 +70,11 @@ struct ApplicationOptions {
     // --ssr; unset: the world's scene-file "ssr", else off (render/README.md "Screen-space
     // reflections" gives the cost).
     std::optional<render::SsrMode> ssr;
+    // --volumetrics; unset: froxels when the scene has a medium (render/README.md
+    // "Volumetric lighting"), which is the only way a frame draws one.
+    std::optional<render::VolumetricsMode> volumetrics;
+    // --fog SIGMA_S[,SIGMA_A[,G]]: a uniform medium replacing the scene's Fog (or adding one).
+    std::optional<content::Fog> fog;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
@@ -77,7 +83,7 @@ struct ApplicationOptions {
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
     // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
-    // --brdf, --ao, --area-lights, --ssr.
+    // --brdf, --ao, --area-lights, --ssr, --volumetrics, --fog.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 // Reads the ECS once per frame into the plain arrays the renderer draws: mesh draws, lights
 // and the camera. The renderer never sees the registry.
@@ -28,6 +29,7 @@ struct ExtractedFrame {
     bool hasCamera = false;              // false: no entity has Camera + WorldTransform
     float skyIntensity = 1.0f;           // the Sky component's
     std::string skyExrPath;              // the Sky component's file as stored (empty: no sky)
+    std::optional<content::Fog> fog;     // a Fog component's medium (the last one seen)
     std::vector<render::TextLine> text;  // the frame's DebugText lines (debug_text.h)
 
     // GPU materials made for scene-file material overrides, per entity; remade when the

@@ -25,6 +25,9 @@ struct Light {
     float sourceLength = 0.0f;          // metres; > 0 makes a tube along local +X (eq. 16-20)
     float innerConeAngle = 0.0f;        // radians, spot only
     float outerConeAngle = 0.7853982f;  // radians, spot only
+    // Scales this light's in-scattering in a Fog medium (artist control, seed 004 §3); 0: the
+    // light lights no fog. Surfaces are lit the same whatever it is.
+    float volumetric = 1.0f;
     // Renders a shadow map for this light. Scene files and glTF default it per type
     // (LightTypeInfo::castsShadowsByDefault: directional yes, local lights no); code that builds
     // a Light gets no shadows unless it asks.

@@ -1,0 +1,20 @@
+#pragma once
+// Fog component: a participating medium filling the scene (issue 17, seed 004 §3). Uniform
+// scattering and absorption coefficients per metre, optionally thinning with height, and a
+// Henyey-Greenstein phase function. In-scattered radiance per metre is
+// sigmaS * density * p(theta) * E, E a light's irradiance at the point (render/README.md
+// "Volumetric lighting").
+namespace candela::content {
+
+struct Fog {
+    float scattering = 0.02f;  // sigma_s, 1/m at the base height
+    float absorption = 0.0f;   // sigma_a, 1/m at the base height
+    float anisotropy = 0.0f;   // Henyey-Greenstein g, in (-1, 1); 0 is isotropic
+    // Density exp(-heightFalloff * (y - baseHeight)) (1/m); 0: the same density everywhere.
+    float heightFalloff = 0.0f;
+    float baseHeight = 0.0f;  // metres, world Y
+
+    bool operator==(const Fog&) const = default;
+};
+
+}  // namespace candela::content

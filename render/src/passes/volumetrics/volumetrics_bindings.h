@@ -1,0 +1,24 @@
+// Bindings of the volumetric lighting shaders (passes/volumetrics), shared by the GLSL and
+// volumetrics_pass.cpp (valid in C++ and GLSL). Camera and lights: common/shared_bindings.h.
+#ifndef CANDELA_VOLUMETRICS_BINDINGS_H
+#define CANDELA_VOLUMETRICS_BINDINGS_H
+
+#include "common/shared_bindings.h"
+
+#define VOLUMETRICS_BINDING_DEPTH 2
+#define VOLUMETRICS_BINDING_HDR 3
+// Per light (same index as the light buffer): its volumetric scale.
+#define VOLUMETRICS_BINDING_LIGHT_SCALES 4
+// Froxels: per froxel (in-scattered radiance per metre, extinction per metre), then per slice
+// boundary (in-scattered radiance from the camera, transmittance).
+#define VOLUMETRICS_BINDING_FROXEL_MEDIUM 5
+#define VOLUMETRICS_BINDING_FROXEL_INTEGRATED 6
+// The froxel grid's shape for common/froxel_lookup.glsl (VolumetricsPass::FroxelParams).
+#define VOLUMETRICS_BINDING_FROXEL_PARAMS 11
+// Shadows (common/shadows.glsl, passes/shadows/shadow_pass.h).
+#define VOLUMETRICS_BINDING_SHADOW_ATLAS 7
+#define VOLUMETRICS_BINDING_SHADOW_VIEWS 8
+#define VOLUMETRICS_BINDING_SHADOW_LIGHTS 9
+#define VOLUMETRICS_BINDING_SHADOW_ATLAS_COMPARE 10
+
+#endif

@@ -1,0 +1,35 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "volumetrics_bindings.h"
+// Froxels, step 2: each column of the grid integrates its froxels front to back, storing at
+// each slice's far boundary the radiance scattered toward the camera from the near plane to
+// there and the transmittance over that distance.
+#include "common/camera.glsl"
+#include "volumetric_step.glsl"
+#include "volumetrics_push.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std430, binding = VOLUMETRICS_BINDING_FROXEL_MEDIUM) readonly buffer FroxelMedium {
+    vec4 froxelMedium[];
+};
+layout(std430, binding = VOLUMETRICS_BINDING_FROXEL_INTEGRATED) writeonly buffer FroxelIntegrated {
+    vec4 froxelIntegrated[];
+};
+
+void main() {
+    uvec2 column = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(column, push.grid.xy))) return;
+    vec2 ndc = (vec2(column) + 0.5) / vec2(push.grid.xy) * 2.0 - 1.0;
+    vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    // Metres along the ray per metre of view depth.
+    float stretch = length(nearPoint.xyz / nearPoint.w - camera.cameraPosition.xyz) / push.range.y;
+    vec3 radiance = vec3(0.0);
+    float transmittance = 1.0;
+    for (uint z = 0u; z < push.grid.z; ++z) {
+        uint index = froxelIndex(uvec3(column, z));
+        float dt = (sliceBoundaryDepth(float(z + 1u)) - sliceBoundaryDepth(float(z))) * stretch;
+        integrateStep(froxelMedium[index], dt, radiance, transmittance);
+        froxelIntegrated[index] = vec4(radiance, transmittance);
+    }
+}

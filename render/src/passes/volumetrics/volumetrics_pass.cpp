@@ -1,0 +1,232 @@
+#include "passes/volumetrics/volumetrics_pass.h"
+
+#include <algorithm>
+#include <cstring>
+#include <glm/vec4.hpp>
+
+#include "candela/render/gpu_context.h"
+#include "common/specialization_ids.h"
+#include "passes/shadows/shadow_pass.h"
+#include "passes/volumetrics/volumetrics_bindings.h"
+#include "shaders/volumetrics_composite.comp.spv.h"
+#include "shaders/volumetrics_froxel_integrate.comp.spv.h"
+#include "shaders/volumetrics_froxel_light.comp.spv.h"
+#include "shaders/volumetrics_reference.comp.spv.h"
+
+namespace candela::render {
+
+namespace {
+
+// Matches the push block of volumetrics_push.glsl.
+struct VolumetricsPush {
+    glm::vec4 medium;   // sigma_s, sigma_a, g, height falloff
+    glm::vec4 range;    // base height, near, far, unused
+    glm::uvec4 grid;    // froxels x, y, slices, reference steps
+    glm::uvec4 lights;  // count, capacity
+};
+
+constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+
+uint32_t groups(uint32_t count, uint32_t size) {
+    return (count + size - 1) / size;
+}
+
+float nearOf(const VolumetricsPass::Inputs& in) {
+    return std::max(in.nearPlane, 1e-4f);
+}
+
+float farOf(const VolumetricsPass::Inputs& in) {
+    return std::max(in.settings.froxelFar, nearOf(in) * 2.0f);
+}
+
+VolumetricsPush pushFor(const VolumetricsPass::Inputs& in) {
+    const float nearPlane = nearOf(in);
+    const float farPlane = farOf(in);
+    return {
+        glm::vec4(in.fog.scattering, in.fog.absorption, in.fog.anisotropy, in.fog.heightFalloff),
+        glm::vec4(in.fog.baseHeight, nearPlane, farPlane, 0.0f),
+        glm::uvec4(in.grid, std::max(in.settings.referenceSteps, 1u)),
+        glm::uvec4(in.lightCount, in.lightCapacity, 0u, 0u)};
+}
+
+// The bindings of the shaders that light the medium (reference, froxel lighting).
+constexpr DescriptorBinding kLightingBindings[] = {
+    {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+    {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+    {VOLUMETRICS_BINDING_LIGHT_SCALES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+    {VOLUMETRICS_BINDING_SHADOW_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+    {VOLUMETRICS_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+    {VOLUMETRICS_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+    {VOLUMETRICS_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+};
+
+}  // namespace
+
+VolumetricsPass::VolumetricsPass(GpuContext& context)
+    : context_(context), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {
+    const DescriptorBinding integrate[] = {
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+        {VOLUMETRICS_BINDING_FROXEL_MEDIUM, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+        {VOLUMETRICS_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+    };
+    froxelIntegrate_ = Pipeline::compute(context, volumetrics_froxel_integrate_comp_spv, integrate,
+                                         sizeof(VolumetricsPush));
+    const DescriptorBinding composite[] = {
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+        {VOLUMETRICS_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {VOLUMETRICS_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+        {VOLUMETRICS_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+        {VOLUMETRICS_BINDING_FROXEL_PARAMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+    };
+    composite_ = Pipeline::compute(context, volumetrics_composite_comp_spv, composite, 0);
+    froxelParams_ = GpuBuffer(context, sizeof(FroxelParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                              MemoryLocation::HostVisible);
+}
+
+glm::uvec3 VolumetricsPass::froxelGrid(uint32_t width, uint32_t height,
+                                       const VolumetricsSettings& settings) {
+    // The settings' grid is the one at 1280x720; it scales with the image.
+    const uint32_t x = (width * settings.froxelsX + 1279) / 1280;
+    const uint32_t y = (height * settings.froxelsY + 719) / 720;
+    return {std::max(x, 1u), std::max(y, 1u), std::max(settings.froxelSlices, 1u)};
+}
+
+VkDeviceSize VolumetricsPass::froxelBufferBytes(const glm::uvec3& grid) {
+    return VkDeviceSize(grid.x) * grid.y * grid.z * sizeof(glm::vec4);
+}
+
+void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadows) {
+    const VkDeviceSize bytes = std::max<VkDeviceSize>(lights.size(), 1) * sizeof(float);
+    if (lightScales_.size() < bytes) {
+        lightScales_ = GpuBuffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                 MemoryLocation::HostVisible);
+    }
+    auto* scales = static_cast<float*>(lightScales_.mapped());
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const float s = lights[i].light.volumetric;
+        scales[i] = s >= 0.0f && s <= 1e3f ? s : 0.0f;  // NaN and negatives light no medium
+    }
+    if (built_ && shadows == shadows_) return;
+    shadows_ = shadows;
+    SpecializationConstants constants;
+    constants.set(SPEC_SHADOWS_ENABLED, shadows);
+    const DescriptorBinding reference[] = {
+        kLightingBindings[0],
+        kLightingBindings[1],
+        kLightingBindings[2],
+        kLightingBindings[3],
+        kLightingBindings[4],
+        kLightingBindings[5],
+        kLightingBindings[6],
+        {VOLUMETRICS_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {VOLUMETRICS_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    };
+    reference_ = Pipeline::compute(context_, volumetrics_reference_comp_spv, reference,
+                                   sizeof(VolumetricsPush), &constants);
+    const DescriptorBinding light[] = {
+        kLightingBindings[0],
+        kLightingBindings[1],
+        kLightingBindings[2],
+        kLightingBindings[3],
+        kLightingBindings[4],
+        kLightingBindings[5],
+        kLightingBindings[6],
+        {VOLUMETRICS_BINDING_FROXEL_MEDIUM, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+    };
+    froxelLight_ = Pipeline::compute(context_, volumetrics_froxel_light_comp_spv, light,
+                                     sizeof(VolumetricsPush), &constants);
+    built_ = true;
+}
+
+void VolumetricsPass::setFroxelParams(const Inputs& in) {
+    const FroxelParams params{glm::uvec4(in.grid, 1u), glm::vec4(nearOf(in), farOf(in), 0, 0)};
+    std::memcpy(froxelParams_.mapped(), &params, sizeof(params));
+}
+
+void VolumetricsPass::recordReference(VkCommandBuffer cmd, const Inputs& in) const {
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo scaleInfo{lightScales_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo hdr{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
+        storageBufferWrite(VOLUMETRICS_BINDING_LIGHT_SCALES, &scaleInfo),
+        sampledImageWrite(VOLUMETRICS_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
+        storageBufferWrite(VOLUMETRICS_BINDING_SHADOW_VIEWS, &in.shadows->views),
+        storageBufferWrite(VOLUMETRICS_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
+        sampledImageWrite(VOLUMETRICS_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
+        sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
+        storageImageWrite(VOLUMETRICS_BINDING_HDR, &hdr),
+    };
+    const VolumetricsPush push = pushFor(in);
+    reference_.bind(cmd);
+    reference_.pushDescriptors(cmd, writes);
+    reference_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(in.hdr.desc().width, 8), groups(in.hdr.desc().height, 8), 1);
+}
+
+void VolumetricsPass::recordFroxelLight(VkCommandBuffer cmd, const Inputs& in,
+                                        const BufferRef& medium) const {
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo scaleInfo{lightScales_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo mediumInfo{medium.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
+        storageBufferWrite(VOLUMETRICS_BINDING_LIGHT_SCALES, &scaleInfo),
+        sampledImageWrite(VOLUMETRICS_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
+        storageBufferWrite(VOLUMETRICS_BINDING_SHADOW_VIEWS, &in.shadows->views),
+        storageBufferWrite(VOLUMETRICS_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
+        sampledImageWrite(VOLUMETRICS_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
+        storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo),
+    };
+    const VolumetricsPush push = pushFor(in);
+    froxelLight_.bind(cmd);
+    froxelLight_.pushDescriptors(cmd, writes);
+    froxelLight_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(in.grid.x, 4), groups(in.grid.y, 4), groups(in.grid.z, 4));
+}
+
+void VolumetricsPass::recordFroxelIntegrate(VkCommandBuffer cmd, const Inputs& in,
+                                            const BufferRef& medium,
+                                            const BufferRef& integrated) const {
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo mediumInfo{medium.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo integratedInfo{integrated.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo),
+        storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_INTEGRATED, &integratedInfo),
+    };
+    const VolumetricsPush push = pushFor(in);
+    froxelIntegrate_.bind(cmd);
+    froxelIntegrate_.pushDescriptors(cmd, writes);
+    froxelIntegrate_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(in.grid.x, 8), groups(in.grid.y, 8), 1);
+}
+
+void VolumetricsPass::recordComposite(VkCommandBuffer cmd, const Inputs& in,
+                                      const BufferRef& integrated) const {
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo hdr{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorBufferInfo integratedInfo{integrated.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo paramsInfo{froxelParams_.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
+        storageImageWrite(VOLUMETRICS_BINDING_HDR, &hdr),
+        storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_INTEGRATED, &integratedInfo),
+        uniformBufferWrite(VOLUMETRICS_BINDING_FROXEL_PARAMS, &paramsInfo),
+    };
+    composite_.bind(cmd);
+    composite_.pushDescriptors(cmd, writes);
+    vkCmdDispatch(cmd, groups(in.hdr.desc().width, 8), groups(in.hdr.desc().height, 8), 1);
+}
+
+}  // namespace candela::render

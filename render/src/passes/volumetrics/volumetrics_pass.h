@@ -1,0 +1,82 @@
+#pragma once
+// Volumetric lighting in the scene's medium (render/README.md "Volumetric lighting", issue 17):
+// the per-pixel ray-marched reference, and froxels (a view-aligned grid lit per froxel,
+// integrated front to back and composited over the lit HDR target by depth).
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <span>
+
+#include "candela/content/components/fog.h"
+#include "candela/render/frame_scene.h"
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/pipeline.h"
+#include "candela/render/renderer_options.h"
+#include "frame_graph/graph_resources.h"
+#include "vk/sampler.h"
+
+namespace candela::render {
+
+class GpuContext;
+struct ShadowDescriptors;
+
+class VolumetricsPass {
+public:
+    explicit VolumetricsPass(GpuContext& context);
+
+    // Froxels across and down the image and depth slices: one froxel per 8x8 pixels (160x90
+    // at 1280x720) unless the settings give a grid, and settings.froxelSlices slices.
+    static glm::uvec3 froxelGrid(uint32_t width, uint32_t height,
+                                 const VolumetricsSettings& settings);
+    // Bytes of each froxel buffer (one vec4 per froxel).
+    static VkDeviceSize froxelBufferBytes(const glm::uvec3& grid);
+
+    // Each light's volumetric scale, indexed as the light buffer; rewritten every frame (the
+    // renderer waits for the previous frame before recording). `shadows`: the variant that
+    // reads the shadow maps.
+    void prepare(std::span<const LightInstance> lights, bool shadows);
+    const GpuBuffer& lightScales() const { return lightScales_; }
+
+    // The grid's shape as common/froxel_lookup.glsl reads it (the composite and blended
+    // surfaces), written by setFroxelParams for the frame.
+    struct FroxelParams {
+        glm::uvec4 grid;  // x, y, slices, 1: the frame has froxels
+        glm::vec4 range;  // near, far
+    };
+    const GpuBuffer& froxelParams() const { return froxelParams_; }
+
+    struct Inputs {
+        ImageRef depth;  // Sampled
+        ImageRef hdr;    // StorageReadWrite
+        const GpuBuffer* camera = nullptr;
+        const GpuBuffer* lights = nullptr;
+        uint32_t lightCount = 0;
+        uint32_t lightCapacity = 0;
+        const ShadowDescriptors* shadows = nullptr;
+        content::Fog fog;
+        float nearPlane = 0.05f;
+        VolumetricsSettings settings;
+        glm::uvec3 grid{1u};
+    };
+    void setFroxelParams(const Inputs& in);
+    void recordReference(VkCommandBuffer cmd, const Inputs& in) const;
+    // Froxels: light into `medium`, integrate into `integrated` (both StorageWrite, the first
+    // then StorageRead), composite `integrated` (StorageRead) over in.hdr.
+    void recordFroxelLight(VkCommandBuffer cmd, const Inputs& in, const BufferRef& medium) const;
+    void recordFroxelIntegrate(VkCommandBuffer cmd, const Inputs& in, const BufferRef& medium,
+                               const BufferRef& integrated) const;
+    void recordComposite(VkCommandBuffer cmd, const Inputs& in, const BufferRef& integrated) const;
+
+private:
+    GpuContext& context_;
+    bool shadows_ = false;
+    bool built_ = false;
+    Pipeline reference_;
+    Pipeline froxelLight_;
+    Pipeline froxelIntegrate_;
+    Pipeline composite_;
+    Sampler pointSampler_;
+    GpuBuffer lightScales_;
+    GpuBuffer froxelParams_;
+};
+
+}  // namespace candela::render

@@ -1,0 +1,24 @@
+// The push constants of every volumetric lighting shader, and the froxel grid's geometry.
+#ifndef CANDELA_VOLUMETRICS_PUSH_GLSL
+#define CANDELA_VOLUMETRICS_PUSH_GLSL
+
+// Matches VolumetricsPush in volumetrics_pass.cpp.
+layout(push_constant) uniform Push {
+    vec4 medium;  // x: sigma_s, y: sigma_a (1/m), z: g, w: height falloff (1/m)
+    vec4 range;   // x: base height (m), y: near, z: far (view depth, m), w: unused
+    uvec4 grid;   // froxels x, y, slices; w: reference steps
+    uvec4 lights; // x: count, y: buffer capacity
+} push;
+
+// View depth (m) of slice boundary b (common/froxel_lookup.glsl's slicing).
+float sliceBoundaryDepth(float b) {
+    if (b <= 0.0) return 0.0;
+    return push.range.y * pow(push.range.z / push.range.y, b / float(push.grid.z));
+}
+
+// Index of froxel (x, y, slice) in the froxel buffers.
+uint froxelIndex(uvec3 f) {
+    return (f.z * push.grid.y + f.y) * push.grid.x + f.x;
+}
+
+#endif
