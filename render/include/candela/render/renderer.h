@@ -187,7 +187,6 @@ private:
     std::array<GpuImage, 2> ssrHistory_;
     uint32_t ssrHistoryWrite_ = 0;
     bool ssrHistoryValid_ = false;
-    std::unique_ptr<AmbientOcclusionPass> aoPass_;      // made on the first frame with AO
     std::unique_ptr<VolumetricsPass> volumetricsPass_;  // made on the first frame with a medium
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
