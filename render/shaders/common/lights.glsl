@@ -223,9 +223,9 @@ bool localLightRepresentative(Light light) {
 // the representative point is off by 222 % at roughness 0.1, sin sigma 0.4, LTC within a few
 // %): the sphere as the disk facing P with the same cone (ltcSphereIntegral) at luminance
 // I / (pi r^2), the tube as its segment with I spread along it (ltcLineIntegral). Diffuse,
-// falloff window, spot cone and incident illuminance exactly as evaluateLocalLight's.
-LightIncidence evaluateLocalLightLtc(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
-    LightIncidence o = evaluateLocalLight(light, P, N, R, alpha);
+// falloff window, spot cone and incident illuminance stay evaluateLocalLight's (`o`): only the
+// specular fields are replaced, so evaluateLocalLight runs once per light whatever the mode.
+LightIncidence withLtcSpecular(LightIncidence o, Light light, vec3 P, vec3 N, vec3 R, float alpha) {
     vec3 toCenter = light.position - P;
     vec3 halfSegment = light.tubeAxis * (0.5 * light.sourceLength);
     vec3 L0 = toCenter - halfSegment;
@@ -285,10 +285,11 @@ LightIncidence evaluateLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
                               (quality == kAreaQualityDefault && !kAreaLightsLtc);
         return evaluateAreaLight(light, P, N, R, alpha, representative);
     }
+    LightIncidence o = evaluateLocalLight(light, P, N, R, alpha);  // point, spot, sphere, tube
 #ifdef AREA_LIGHT_LTC_MATRIX_BINDING
-    if (localLightByLtc(light, P)) return evaluateLocalLightLtc(light, P, N, R, alpha);
+    if (localLightByLtc(light, P)) o = withLtcSpecular(o, light, P, N, R, alpha);
 #endif
-    return evaluateLocalLight(light, P, N, R, alpha);  // point and spot, sphere and tube
+    return o;
 }
 
 #endif
