@@ -76,6 +76,11 @@ GpuLight packLight(const LightInstance& instance) {
         g.spotScale = 1.0f;
         g.spotOffset = float(uint32_t(l.quality));
     }
+    // Point and spot lights have no shape parameters: shape[0] carries the quality for their
+    // sphere and tube (lights.glsl localLightRepresentative).
+    if (l.type == content::LightType::Point || l.type == content::LightType::Spot) {
+        g.shape[0] = float(uint32_t(l.quality));
+    }
     return g;
 }
 

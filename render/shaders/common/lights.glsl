@@ -210,6 +210,69 @@ LightIncidence evaluateDirectionalLight(Light light, vec3 N) {
 
 #include "common/area_lights.glsl"
 
+// Per-light `quality` of a point or spot light (sphere, tube): Light.shape.x (gpu_light.cpp),
+// coded as an area light's (kAreaQuality*).
+bool localLightRepresentative(Light light) {
+    uint quality = uint(light.shape.x);
+    return quality == kAreaQualityRepresentative || (quality == kAreaQualityDefault && !kAreaLightsLtc);
+}
+
+#ifdef AREA_LIGHT_LTC_MATRIX_BINDING
+// A sphere (sourceRadius > 0, sourceLength 0) or tube (sourceLength > 0) light whose
+// specular is its fitted LTC integrated over the light (issue 15, report "area lights by LTC":
+// the representative point is off by 222 % at roughness 0.1, sin sigma 0.4, LTC within a few
+// %): the sphere as the disk facing P with the same cone (ltcSphereIntegral) at luminance
+// I / (pi r^2), the tube as its segment with I spread along it (ltcLineIntegral). Diffuse,
+// falloff window, spot cone and incident illuminance stay evaluateLocalLight's (`o`): only the
+// specular fields are replaced, so evaluateLocalLight runs once per light whatever the mode.
+LightIncidence withLtcSpecular(LightIncidence o, Light light, vec3 P, vec3 N, vec3 R, float alpha) {
+    vec3 toCenter = light.position - P;
+    vec3 halfSegment = light.tubeAxis * (0.5 * light.sourceLength);
+    vec3 L0 = toCenter - halfSegment;
+    vec3 Ld = 2.0 * halfSegment;
+    bool tube = kTubeLightsEnabled && light.sourceLength > 0.0;
+    // The window's distance as evaluateLocalLight measures it (nearest point of the segment).
+    vec3 windowPoint = tube ? L0 + saturate(-dot(L0, Ld) / max(dot(Ld, Ld), 1e-30)) * Ld : toCenter;
+    vec3 intensity =
+        light.intensity * attenuationWindow(dot(windowPoint, windowPoint), light.invAttenuationRadius);
+    if (kSpotLightsEnabled && light.type == kLightSpot) intensity *= spotAttenuation(light, o.diffuseL);
+
+    vec3 V = 2.0 * dot(N, R) * N - R;  // R = reflect(-V, N)
+    vec2 uv = ltcTableUv(sqrt(alpha), saturate(dot(N, V)));
+    mat3 frame = ltcShadingFrame(N, V);
+    mat3 minv = ltcInverseMatrix(texture(ltcMatrixTable, uv));
+    float integral;  // the unit-magnitude lobe's integral per candela
+    if (tube) {
+        integral = ltcLineIntegral(minv, frame * L0, frame * (L0 + Ld));
+    } else {
+        float radius = light.sourceRadius;
+        integral = ltcSphereIntegral(minv, frame * toCenter, radius) / (PI * radius * radius);
+    }
+    o.specularLtc = texture(ltcMagnitudeTable, uv).xy;
+    o.specularL = R;
+    o.specularIlluminance = intensity * integral;
+    return o;
+}
+#endif
+
+// Sphere and tube lights go by LTC when the shader binds the table, the light's quality (or
+// the renderer's default) says ltc, and the sphere is not so small against its distance that
+// its luminance I / (pi r^2) loses precision (sin sigma under 1e-3: a point, where the
+// representative point is exact). A tube's radius is left out of its specular as lineIrradiance
+// leaves it out of its diffuse: ltcLineIntegral is the segment alone (no cylinder width, no
+// end caps), which for the thin tubes it is meant for (radius << distance) is what the light is.
+bool localLightByLtc(Light light, vec3 P) {
+#ifdef AREA_LIGHT_LTC_MATRIX_BINDING
+    if (localLightRepresentative(light)) return false;
+    if (kTubeLightsEnabled && light.sourceLength > 0.0) return true;
+    if (!kSphereLightsEnabled || !(light.sourceRadius > 0.0)) return false;
+    vec3 toCenter = light.position - P;
+    return light.sourceRadius * light.sourceRadius > 1e-6 * dot(toCenter, toCenter);
+#else
+    return false;
+#endif
+}
+
 // The incidence of any light: one function per light type, chosen by its type code. A new type
 // adds its function above and its case here (render/README.md "Adding a light type").
 LightIncidence evaluateLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
@@ -222,7 +285,11 @@ LightIncidence evaluateLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
                               (quality == kAreaQualityDefault && !kAreaLightsLtc);
         return evaluateAreaLight(light, P, N, R, alpha, representative);
     }
-    return evaluateLocalLight(light, P, N, R, alpha);  // point and spot, sphere and tube
+    LightIncidence o = evaluateLocalLight(light, P, N, R, alpha);  // point, spot, sphere, tube
+#ifdef AREA_LIGHT_LTC_MATRIX_BINDING
+    if (localLightByLtc(light, P)) o = withLtcSpecular(o, light, P, N, R, alpha);
+#endif
+    return o;
 }
 
 #endif

@@ -8,7 +8,7 @@ namespace candela::content {
 // Rect and Disk (issue 15) are one-sided area emitters facing the node's -Z.
 enum class LightType : std::uint8_t { Point, Spot, Directional, Rect, Disk };
 
-// How an area light (rect, disk) is shaded: the renderer's default (its --area-lights), or a
+// How an area light (rect, disk) or a sphere or tube light is shaded: the renderer's default (its --area-lights), or a
 // per-light override ("quality" in scene files): seed 004's representative point or LTC.
 enum class AreaLightQuality : std::uint8_t { Default, Representative, Ltc };
 
@@ -32,7 +32,7 @@ struct Light {
     // (LightTypeInfo::castsShadowsByDefault: directional yes, local lights no); code that builds
     // a Light gets no shadows unless it asks.
     bool castShadows = false;
-    AreaLightQuality quality = AreaLightQuality::Default;  // rect and disk only
+    AreaLightQuality quality = AreaLightQuality::Default;  // rect, disk, sphere, tube
 };
 
 }  // namespace candela::content
