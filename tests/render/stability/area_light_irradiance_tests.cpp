@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "error_stats.h"
+#include "form_factors.h"
 #include "light_accuracy.h"
 
 using namespace candela::stability;
@@ -18,32 +19,6 @@ using namespace candela::stability;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Form factor from a point to the rectangle [0, a] x [0, b] at height h, the point under the
-// corner.
-double cornerFormFactor(double a, double b, double h) {
-    const double A = a / h, B = b / h;
-    const double sa = std::sqrt(1.0 + A * A), sb = std::sqrt(1.0 + B * B);
-    return (A / sa * std::atan(B / sa) + B / sb * std::atan(A / sb)) / (2.0 * kPi);
-}
-
-double signedCorner(double x, double y, double h) {
-    const double s = (x < 0 ? -1.0 : 1.0) * (y < 0 ? -1.0 : 1.0);
-    return s * cornerFormFactor(std::fabs(x), std::fabs(y), h);
-}
-
-// Point at the origin, ceiling rectangle [x0, x1] x [y0, y1] at height h facing it.
-double rectFormFactor(double x0, double x1, double y0, double y1, double h) {
-    return signedCorner(x1, y1, h) - signedCorner(x0, y1, h) - signedCorner(x1, y0, h) +
-           signedCorner(x0, y0, h);
-}
-
-// Point at horizontal distance rho from the axis of a parallel disk of radius r at height h.
-double diskFormFactor(double r, double h, double rho) {
-    const double H = h * h + rho * rho;
-    return 0.5 *
-           (1.0 - (H - r * r) / std::sqrt((H + r * r) * (H + r * r) - 4.0 * r * r * rho * rho));
-}
 
 struct Case {
     double h, size, offset;
@@ -69,9 +44,10 @@ std::vector<Case> floorCases() {
             for (double size : {0.05, 0.2, 0.5, 1.0, 2.0, 6.0}) {
                 for (double offset : {0.0, 0.1, 0.4, 1.0, 2.5}) {
                     const double x = offset, y = 0.2 * offset;
-                    const double ff = disk ? diskFormFactor(0.5 * size, h, std::hypot(x, y))
-                                           : rectFormFactor(-0.5 * size - x, 0.5 * size - x,
-                                                            -0.3 * size - y, 0.3 * size - y, h);
+                    const double ff =
+                        disk ? parallelDiskFormFactor(0.5 * size, h, std::hypot(x, y))
+                             : parallelRectangleFormFactor(-0.5 * size - x, 0.5 * size - x,
+                                                           -0.3 * size - y, 0.3 * size - y, h);
                     cases.push_back({h, size, offset, disk, kPi * ff});
                 }
             }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "error_stats.h"
+#include "form_factors.h"
 #include "light_accuracy.h"
 #include "ltc_fit.h"
 #include "ltc_ggx_table.inc"
@@ -23,13 +24,6 @@ using candela::ltc::Vec3;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Form factor from a point to a parallel disk of radius r at height h whose centre is offset by
-// a horizontally (the classic closed form; r^2 / (h^2 + r^2) straight under it).
-double parallelDiskFormFactor(double r, double h, double a) {
-    const double sum = h * h + a * a + r * r;
-    return 0.5 * (1.0 - (h * h + a * a - r * r) / std::sqrt(sum * sum - 4.0 * a * a * r * r));
-}
 
 struct Disk {
     Vec3 center, u, v;  // lit side towards u x v

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "error_stats.h"
+#include "form_factors.h"
 #include "light_accuracy.h"
 #include "ltc_fit.h"
 
@@ -18,25 +19,6 @@ using namespace candela::stability;
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// Form factor from a point to the rectangle [0, a] x [0, b] at height h above it, the point
-// under the corner (the classic closed form; a quarter of the infinite plane gives 1/4).
-double cornerFormFactor(double a, double b, double h) {
-    const double A = a / h, B = b / h;
-    const double sa = std::sqrt(1.0 + A * A), sb = std::sqrt(1.0 + B * B);
-    return (A / sa * std::atan(B / sa) + B / sb * std::atan(A / sb)) / (2.0 * kPi);
-}
-
-double signedCorner(double x, double y, double h) {
-    const double s = (x < 0 ? -1.0 : 1.0) * (y < 0 ? -1.0 : 1.0);
-    return s * cornerFormFactor(std::fabs(x), std::fabs(y), h);
-}
-
-// The rectangle [x0, x1] x [y0, y1] at height h, by inclusion-exclusion of corner rectangles.
-double parallelRectangleFormFactor(double x0, double x1, double y0, double y1, double h) {
-    return signedCorner(x1, y1, h) - signedCorner(x0, y1, h) - signedCorner(x1, y0, h) +
-           signedCorner(x0, y0, h);
-}
 
 struct Quad {
     std::array<std::array<double, 3>, 4> p;  // clockwise as seen from the lit side
