@@ -1,6 +1,7 @@
 #include "passes/volumetrics/volumetrics_pass.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <glm/vec4.hpp>
 
@@ -143,24 +144,37 @@ void VolumetricsPass::setFroxelParams(const Inputs& in) {
     std::memcpy(froxelParams_.mapped(), &params, sizeof(params));
 }
 
-void VolumetricsPass::recordReference(VkCommandBuffer cmd, const Inputs& in) const {
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo scaleInfo{lightScales_.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
-                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorImageInfo hdr{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
-    const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
-        storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
-        storageBufferWrite(VOLUMETRICS_BINDING_LIGHT_SCALES, &scaleInfo),
+// The descriptors both passes that light the medium read (the reference march and the froxel
+// lighting): camera, lights, their volumetric scales and the shadow maps. `extra` follows them.
+template <size_t N>
+std::array<VkWriteDescriptorSet, 7 + N> VolumetricsPass::lightingWrites(
+    const Inputs& in, LightingInfos& infos,
+    const std::array<VkWriteDescriptorSet, N>& extra) const {
+    infos.camera = {in.camera->handle(), 0, VK_WHOLE_SIZE};
+    infos.lights = {in.lights->handle(), 0, VK_WHOLE_SIZE};
+    infos.scales = {lightScales_.handle(), 0, VK_WHOLE_SIZE};
+    std::array<VkWriteDescriptorSet, 7 + N> writes{
+        uniformBufferWrite(CAMERA_BINDING, &infos.camera),
+        storageBufferWrite(LIGHT_BUFFER_BINDING, &infos.lights),
+        storageBufferWrite(VOLUMETRICS_BINDING_LIGHT_SCALES, &infos.scales),
         sampledImageWrite(VOLUMETRICS_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
         storageBufferWrite(VOLUMETRICS_BINDING_SHADOW_VIEWS, &in.shadows->views),
         storageBufferWrite(VOLUMETRICS_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
         sampledImageWrite(VOLUMETRICS_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
-        sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
-        storageImageWrite(VOLUMETRICS_BINDING_HDR, &hdr),
     };
+    std::copy(extra.begin(), extra.end(), writes.begin() + 7);
+    return writes;
+}
+
+void VolumetricsPass::recordReference(VkCommandBuffer cmd, const Inputs& in) const {
+    VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo hdr{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    LightingInfos infos;
+    const auto writes =
+        lightingWrites(in, infos,
+                       std::array{sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
+                                  storageImageWrite(VOLUMETRICS_BINDING_HDR, &hdr)});
     const VolumetricsPush push = pushFor(in);
     reference_.bind(cmd);
     reference_.pushDescriptors(cmd, writes);
@@ -170,20 +184,10 @@ void VolumetricsPass::recordReference(VkCommandBuffer cmd, const Inputs& in) con
 
 void VolumetricsPass::recordFroxelLight(VkCommandBuffer cmd, const Inputs& in,
                                         const BufferRef& medium) const {
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo scaleInfo{lightScales_.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo mediumInfo{medium.handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
-        storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
-        storageBufferWrite(VOLUMETRICS_BINDING_LIGHT_SCALES, &scaleInfo),
-        sampledImageWrite(VOLUMETRICS_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
-        storageBufferWrite(VOLUMETRICS_BINDING_SHADOW_VIEWS, &in.shadows->views),
-        storageBufferWrite(VOLUMETRICS_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
-        sampledImageWrite(VOLUMETRICS_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
-        storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo),
-    };
+    LightingInfos infos;
+    const auto writes = lightingWrites(
+        in, infos, std::array{storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo)});
     const VolumetricsPush push = pushFor(in);
     froxelLight_.bind(cmd);
     froxelLight_.pushDescriptors(cmd, writes);

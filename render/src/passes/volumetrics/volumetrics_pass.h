@@ -2,6 +2,7 @@
 // Volumetric lighting in the scene's medium (render/README.md "Volumetric lighting", issue 17):
 // the per-pixel ray-marched reference, and froxels (a view-aligned grid lit per froxel,
 // integrated front to back and composited over the lit HDR target by depth).
+#include <array>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <span>
@@ -67,6 +68,14 @@ public:
     void recordComposite(VkCommandBuffer cmd, const Inputs& in, const BufferRef& integrated) const;
 
 private:
+    struct LightingInfos {
+        VkDescriptorBufferInfo camera, lights, scales;
+    };
+    template <size_t N>
+    std::array<VkWriteDescriptorSet, 7 + N> lightingWrites(
+        const Inputs& in, LightingInfos& infos,
+        const std::array<VkWriteDescriptorSet, N>& extra) const;
+
     GpuContext& context_;
     bool shadows_ = false;
     bool built_ = false;
