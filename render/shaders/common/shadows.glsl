@@ -197,6 +197,25 @@ bool shadowViewAt(Light light, uint lightIndex, vec3 P, out ShadowView view) {
     return true;
 }
 
+// One unfiltered lookup of P in a light's map: P's depth from the light (`receiver`, metres) and
+// the nearest blocker's at P's texel. False without a map or outside it. The map's view `v`
+// comes back for its texel size.
+bool shadowMapLookup(Light light, uint lightIndex, vec3 P, out ShadowView v, out float receiver,
+                     out float blocker) {
+    receiver = 0.0;
+    blocker = 0.0;
+    if (!shadowViewAt(light, lightIndex, P, v)) return false;
+    vec4 clip = v.worldToClip * vec4(P, 1.0);
+    if (clip.w <= 0.0) return false;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return false;
+    receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
+                   ? v.params.w - clip.z * (v.params.w - v.params.z)
+                   : clip.w;
+    blocker = shadowBlockerDepth(v, ivec2(floor(v.tile.xy + uv * v.tile.z)));
+    return true;
+}
+
 // Subsurface thickness (seed 000 section 2.3, "samples the shadow map differently"): how far
 // the light travelled inside matter before reaching P, the depth of P behind the nearest
 // blocker in the light's map (metres, 0 when nothing is in front of P or the light has no map).
@@ -204,15 +223,8 @@ bool shadowViewAt(Light light, uint lightIndex, vec3 P, out ShadowView view) {
 float shadowThickness(Light light, uint lightIndex, vec3 P) {
     if (!kShadowsEnabled) return 0.0;
     ShadowView v;
-    if (!shadowViewAt(light, lightIndex, P, v)) return 0.0;
-    vec4 clip = v.worldToClip * vec4(P, 1.0);
-    if (clip.w <= 0.0) return 0.0;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
-    float receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
-                         ? v.params.w - clip.z * (v.params.w - v.params.z)
-                         : clip.w;
-    float blocker = shadowBlockerDepth(v, ivec2(floor(v.tile.xy + uv * v.tile.z)));
+    float receiver, blocker;
+    if (!shadowMapLookup(light, lightIndex, P, v, receiver, blocker)) return 0.0;
     return max(receiver - blocker, 0.0);
 }
 
