@@ -61,6 +61,16 @@ constexpr DescriptorBinding kLightingBindings[] = {
     {VOLUMETRICS_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
 };
 
+// The lighting passes' bindings (kLightingBindings) followed by a pass's own.
+template <size_t N>
+std::array<DescriptorBinding, 7 + N> withLightingBindings(
+    const std::array<DescriptorBinding, N>& extra) {
+    std::array<DescriptorBinding, 7 + N> bindings{};
+    std::copy(std::begin(kLightingBindings), std::end(kLightingBindings), bindings.begin());
+    std::copy(extra.begin(), extra.end(), bindings.begin() + 7);
+    return bindings;
+}
+
 }  // namespace
 
 VolumetricsPass::VolumetricsPass(GpuContext& context)
@@ -111,29 +121,14 @@ void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadow
     shadows_ = shadows;
     SpecializationConstants constants;
     constants.set(SPEC_SHADOWS_ENABLED, shadows);
-    const DescriptorBinding reference[] = {
-        kLightingBindings[0],
-        kLightingBindings[1],
-        kLightingBindings[2],
-        kLightingBindings[3],
-        kLightingBindings[4],
-        kLightingBindings[5],
-        kLightingBindings[6],
-        {VOLUMETRICS_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-        {VOLUMETRICS_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
-    };
+    const auto reference = withLightingBindings(std::array{
+        DescriptorBinding{VOLUMETRICS_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                          kCompute},
+        DescriptorBinding{VOLUMETRICS_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute}});
     reference_ = Pipeline::compute(context_, volumetrics_reference_comp_spv, reference,
                                    sizeof(VolumetricsPush), &constants);
-    const DescriptorBinding light[] = {
-        kLightingBindings[0],
-        kLightingBindings[1],
-        kLightingBindings[2],
-        kLightingBindings[3],
-        kLightingBindings[4],
-        kLightingBindings[5],
-        kLightingBindings[6],
-        {VOLUMETRICS_BINDING_FROXEL_MEDIUM, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-    };
+    const auto light = withLightingBindings(std::array{DescriptorBinding{
+        VOLUMETRICS_BINDING_FROXEL_MEDIUM, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute}});
     froxelLight_ = Pipeline::compute(context_, volumetrics_froxel_light_comp_spv, light,
                                      sizeof(VolumetricsPush), &constants);
     built_ = true;
