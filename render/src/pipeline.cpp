@@ -1,5 +1,6 @@
 #include "candela/render/pipeline.h"
 
+#include <chrono>
 #include <utility>
 
 #include "candela/render/gpu_context.h"
@@ -24,6 +25,12 @@ VkWriteDescriptorSet descriptorWrite(uint32_t binding, VkDescriptorType type) {
     write.descriptorCount = 1;
     write.descriptorType = type;
     return write;
+}
+
+uint64_t nanosecondsSince(std::chrono::steady_clock::time_point start) {
+    return uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                        std::chrono::steady_clock::now() - start)
+                        .count());
 }
 
 }  // namespace
@@ -91,8 +98,10 @@ Pipeline Pipeline::compute(GpuContext& context, std::span<const uint32_t> spirv,
     info.stage.pName = "main";
     info.stage.pSpecializationInfo = specialization ? specialization->info() : nullptr;
     info.layout = p.layout_;
+    const auto start = std::chrono::steady_clock::now();
     VkResult result =
         vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline_);
+    context.notePipelineCreated(nanosecondsSince(start));
     vkDestroyShaderModule(context.device(), module, nullptr);
     if (result != VK_SUCCESS) throwVkError("vkCreateComputePipelines", result);
     return p;
@@ -199,8 +208,10 @@ Pipeline Pipeline::graphics(GpuContext& context, const GraphicsPipelineDesc& des
     info.pColorBlendState = &colorBlend;
     info.pDynamicState = &dynamic;
     info.layout = p.layout_;
+    const auto start = std::chrono::steady_clock::now();
     VkResult result =
         vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline_);
+    context.notePipelineCreated(nanosecondsSince(start));
     vkDestroyShaderModule(device, vertex, nullptr);
     vkDestroyShaderModule(device, fragment, nullptr);
     if (result != VK_SUCCESS) throwVkError("vkCreateGraphicsPipelines", result);

@@ -465,7 +465,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     features_ = features.names();
     // Layers blend in the G-buffer pass only; the lighting variant does not change with them.
-    gbufferPass_->prepare(usesMaterialLayers(inputs.scene, resources));
+    gbufferPass_->prepare(usesMaterialLayers(inputs.scene, resources),
+                          features.materialExtensions());
     if (gbufferPass_->materialLayers()) features_.push_back("material_layers");
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
     uploadFrameData(inputs);
@@ -1035,6 +1036,9 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     frameRecorded_ = true;
     stats_.frameGraph = executor_->stats();
     stats_.frameGraph.recordMs = recordMs;
+    const GpuContext::PipelineStatistics pipelines = context_.pipelineStatistics();
+    stats_.pipelinesCreated = pipelines.created;
+    stats_.pipelineCreateMs = pipelines.createMs;
     return cmd;
 }
 

@@ -117,6 +117,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
         {"compiled_frames",
          std::count_if(stats.frames.begin(), stats.frames.end(),
                        [](const render::RendererStats& f) { return !f.frameGraph.reused; })}};
+    json["pipelines"] = {{"created", last.pipelinesCreated}, {"create_ms", last.pipelineCreateMs}};
     if (!last.brdfLutSource.empty()) {
         json["brdf_lut"] = {{"source", last.brdfLutSource}, {"ms", last.brdfLutMs}};
     }

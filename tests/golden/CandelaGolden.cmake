@@ -113,6 +113,10 @@ function(candela_add_golden_test)
                    -P ${CANDELA_GOLDEN_MODULE_DIR}/run_golden.cmake)
   set_tests_properties(golden.${ARG_NAME} PROPERTIES LABELS golden
                        ENVIRONMENT CANDELA_VALIDATION=require TIMEOUT 300)
+  # In the engine's own tree, the release stage of scripts/test builds what goldens run.
+  if(COMMAND candela_release_stage AND TARGET "${ARG_ENGINE}")
+    candela_release_stage(${ARG_ENGINE} candela-golden)
+  endif()
 endfunction()
 
 function(candela_add_golden_tests_from_json)

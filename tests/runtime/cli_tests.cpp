@@ -67,6 +67,28 @@ TEST(Cli, HeadlessRunWritesCaptureAndStats) {
     EXPECT_FALSE(stats["features"].empty());
 }
 
+// Passes build their pipelines when a frame first uses them: the triangle's frame has no
+// G-buffer or lighting, so its run compiles neither; a lit scene's run compiles its own.
+TEST(Cli, StatsCountPipelinesAndOnlyLitFramesBuildTheLightingOnes) {
+    auto dir = tempDir();
+    RunResult triangle = runCandela(kTriangle + "--frames 1 --stats " + (dir / "t.json").string());
+    ASSERT_EQ(triangle.exitCode, 0) << triangle.output;
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/spot_light.scene.json";
+    RunResult lit = runCandela("run " + scene + " --headless --size 32x32 --frames 1 --stats " +
+                               (dir / "l.json").string());
+    ASSERT_EQ(lit.exitCode, 0) << lit.output;
+    const nlohmann::json t = nlohmann::json::parse(readBytes(dir / "t.json"))["pipelines"];
+    const nlohmann::json l = nlohmann::json::parse(readBytes(dir / "l.json"))["pipelines"];
+    ASSERT_TRUE(t.is_object() && l.is_object());
+    EXPECT_GT(t["created"].get<int>(), 0);
+    EXPECT_GE(t["create_ms"].get<double>(), 0.0);
+    // The G-buffer and the lighting variant of the scene, at least; compiled once each.
+    EXPECT_GE(l["created"].get<int>(), t["created"].get<int>() + 2);
+    EXPECT_LE(l["created"].get<int>(), t["created"].get<int>() + 8);
+    EXPECT_GT(l["create_ms"].get<double>(), t["create_ms"].get<double>());
+}
+
 TEST(Cli, CapturesAreIdenticalRunAfterRun) {
     auto dir = tempDir();
     for (const char* ext : {".exr", ".png"}) {

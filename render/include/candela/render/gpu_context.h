@@ -57,6 +57,20 @@ public:
     // Records into a fresh command buffer, submits it and waits: for uploads and readbacks.
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
 
+    // Pipelines created since start-up and the wall-clock time their creation took (--stats
+    // `pipelines`): on a CPU device, compiling shaders is most of a short run's cost.
+    struct PipelineStatistics {
+        uint32_t created = 0;
+        double createMs = 0.0;
+    };
+    PipelineStatistics pipelineStatistics() const {
+        return {pipelinesCreated_.load(), double(pipelineCreateNs_.load()) * 1e-6};
+    }
+    void notePipelineCreated(uint64_t nanoseconds) {
+        pipelinesCreated_.fetch_add(1);
+        pipelineCreateNs_.fetch_add(nanoseconds);
+    }
+
 private:
     void createInstance(const GpuContextOptions& options);
     void pickPhysicalDevice(const std::string& preferred);
@@ -74,6 +88,8 @@ private:
     std::string deviceName_;
     bool echoValidationMessages_ = true;
     std::atomic<uint32_t> validationMessages_{0};
+    std::atomic<uint32_t> pipelinesCreated_{0};
+    std::atomic<uint64_t> pipelineCreateNs_{0};
 
     friend VKAPI_ATTR VkBool32 VKAPI_CALL
     onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,

@@ -244,6 +244,10 @@ struct RendererStats {
     // (empty until a frame needed it), and the milliseconds it took to build or load.
     std::string brdfLutSource;
     double brdfLutMs = 0.0;
+    // Pipelines the device has created since start-up, and the milliseconds that took
+    // (--stats `pipelines`): the renderer builds a pass's pipelines when a frame first uses it.
+    uint32_t pipelinesCreated = 0;
+    double pipelineCreateMs = 0.0;
     double taaMs = 0.0;    // GPU: the TAA resolve and its copy back (--stats taa_ms)
     double bloomMs = 0.0;  // GPU: the bloom pyramid and composite (--stats bloom_ms)
 

@@ -72,6 +72,11 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context, VkSampleCoun
                 VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                 MemoryLocation::HostVisible) {
     std::memset(noMedium_.mapped(), 0, 32);
+}
+
+// The occupancy, merge and MSAA-expand pipelines: built on the first frame with blended draws
+// (most frames have none, and compiling them would only slow every run's start).
+void ForwardTransparentPass::buildFixedPipelines() {
     // Occupancy: no attachments; the fragment shader tests against the G-buffer depth itself,
     // so the depth image stays in the layout the occupancy compute pass read it in.
     GraphicsPipelineDesc occupancy;
@@ -88,7 +93,7 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context, VkSampleCoun
         {TRANSPARENT_OCCUPANCY_BINDING_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
     };
-    occupancy_ = Pipeline::graphics(context, occupancy, occupancyBindings, sizeof(DrawPush));
+    occupancy_ = Pipeline::graphics(context_, occupancy, occupancyBindings, sizeof(DrawPush));
 
     const DescriptorBinding mergeBindings[] = {
         {MERGE_BINDING_TILE_MASKS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -97,7 +102,7 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context, VkSampleCoun
         {MERGE_BINDING_TRANSPARENT_BOUNDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_COMPUTE_BIT},
     };
-    merge_ = Pipeline::compute(context, transparent_occupancy_merge_comp_spv, mergeBindings,
+    merge_ = Pipeline::compute(context_, transparent_occupancy_merge_comp_spv, mergeBindings,
                                sizeof(GpuClusterParams));
 
     if (samples_ != VK_SAMPLE_COUNT_1_BIT) {
@@ -117,8 +122,9 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context, VkSampleCoun
             {MSAA_EXPAND_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
              VK_SHADER_STAGE_FRAGMENT_BIT},
         };
-        expand_ = Pipeline::graphics(context, expand, expandBindings, 0);
+        expand_ = Pipeline::graphics(context_, expand, expandBindings, 0);
     }
+    fixedBuilt_ = true;
 }
 
 ImageDesc ForwardTransparentPass::msaaHdrDesc(uint32_t width, uint32_t height,
@@ -239,6 +245,7 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
         sorted_.push_back(scene.draws[index]);
         sortedIndex_.push_back(index);
     }
+    if (!fixedBuilt_) buildFixedPipelines();
     if (!built_ || !(features == features_)) {
         features_ = features;
         buildShadingPipeline();

@@ -66,22 +66,18 @@ std::vector<DescriptorBinding> gbufferBindings(bool materialLayers) {
 
 }  // namespace
 
-GBufferPass::GBufferPass(GpuContext& context) : context_(context) {
-    pipeline_ = Pipeline::graphics(context, gbufferDesc(gbuffer_frag_spv, false),
-                                   gbufferBindings(false), sizeof(DrawPush));
-    extendedPipeline_ = Pipeline::graphics(context, gbufferDesc(gbuffer_extended_frag_spv, true),
-                                           gbufferBindings(false), sizeof(DrawPush));
-}
+GBufferPass::GBufferPass(GpuContext& context) : context_(context) {}
 
-void GBufferPass::prepare(bool materialLayers) {
+void GBufferPass::prepare(bool materialLayers, bool extended) {
     materialLayers_ = materialLayers;
-    if (!materialLayers || layeredBuilt_) return;
-    layeredPipeline_ = Pipeline::graphics(context_, gbufferDesc(gbuffer_layered_frag_spv, false),
-                                          gbufferBindings(true), sizeof(DrawPush));
-    extendedLayeredPipeline_ =
-        Pipeline::graphics(context_, gbufferDesc(gbuffer_extended_layered_frag_spv, true),
-                           gbufferBindings(true), sizeof(DrawPush));
-    layeredBuilt_ = true;
+    Pipeline& pipeline = variants_[variantIndex(materialLayers, extended)];
+    if (pipeline.handle() != VK_NULL_HANDLE) return;
+    const std::span<const uint32_t> fragments[4] = {gbuffer_frag_spv, gbuffer_extended_frag_spv,
+                                                    gbuffer_layered_frag_spv,
+                                                    gbuffer_extended_layered_frag_spv};
+    pipeline = Pipeline::graphics(
+        context_, gbufferDesc(fragments[variantIndex(materialLayers, extended)], extended),
+        gbufferBindings(materialLayers), sizeof(DrawPush));
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
@@ -123,9 +119,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     VkRect2D scissor{{0, 0}, {width, height}};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    const Pipeline& pipeline =
-        materialLayers_ ? (targets.extended ? extendedLayeredPipeline_ : layeredPipeline_)
-                        : (targets.extended ? extendedPipeline_ : pipeline_);
+    const Pipeline& pipeline = variants_[variantIndex(materialLayers_, targets.extended)];
     pipeline.bind(cmd);
 
     const GpuBuffer& materials = resources.materialBuffer();

@@ -1,5 +1,7 @@
 #pragma once
 // Rasterises the scene's meshes into the G-buffer, depth and the HDR target (emissive).
+#include <array>
+
 #include "candela/render/frame_scene.h"
 #include "candela/render/pipeline.h"
 #include "frame_graph/graph_resources.h"
@@ -14,9 +16,10 @@ struct GBufferTargets;
 class GBufferPass {
 public:
     explicit GBufferPass(GpuContext& context);
-    // Whether this frame's opaque draws include a layered material: picks the variants that
-    // blend material layers (built on first use, so frames without layers never pay for them).
-    void prepare(bool materialLayers);
+    // Whether this frame's opaque draws include a layered material (the variants that blend
+    // material layers) and write the extended targets (anisotropy, clear coat): picks the
+    // pipeline, built on first use, so a run compiles only the variants its frames draw with.
+    void prepare(bool materialLayers, bool extended);
     bool materialLayers() const { return materialLayers_; }
     // Colour, motion, HDR and depth in attachment-optimal layouts (frame graph:
     // ColorAttachment, DepthWrite); all are cleared. `previousWorlds`: one mat4 per scene draw
@@ -29,12 +32,14 @@ public:
 
 private:
     GpuContext& context_;
-    Pipeline pipeline_;
-    Pipeline extendedPipeline_;  // also writes targets.anisotropy and targets.clearCoat
-    Pipeline layeredPipeline_;   // gbuffer_layered.frag, once prepare(true) was called
-    Pipeline extendedLayeredPipeline_;
+    // Indexed by variantIndex(): plain, extended (also writes targets.anisotropy and
+    // targets.clearCoat), layered (gbuffer_layered.frag), extended and layered. Empty until
+    // prepare() first asks for the variant.
+    std::array<Pipeline, 4> variants_;
+    static size_t variantIndex(bool materialLayers, bool extended) {
+        return (materialLayers ? 2 : 0) + (extended ? 1 : 0);
+    }
     bool materialLayers_ = false;
-    bool layeredBuilt_ = false;
 };
 
 }  // namespace candela::render

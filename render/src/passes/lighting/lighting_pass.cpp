@@ -85,10 +85,10 @@ void setMaterialExtensionConstants(SpecializationConstants& constants,
     constants.set(SPEC_CLEAR_COAT_ENABLED, features.clearCoat);
 }
 
+// No pipeline yet: the first setFeatures() compiles the variant the scene needs (the lighting
+// shader is the slowest to compile; a default variant would be thrown away).
 LightingPass::LightingPass(GpuContext& context)
-    : context_(context), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {
-    setFeatures({});
-}
+    : context_(context), pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}) {}
 
 LightingPass::~LightingPass() = default;
 
