@@ -867,16 +867,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             msaaMotion = e.write(msaaMotion, Use::ColorAttachment);
             msaaDepth = e.write(msaaDepth, Use::DepthWrite);
         }
-        auto p =
-            g.addPass("forward_transparent", PassKind::Device,
-                      [this, shadingInputs, froxels, &resources](PassContext& ctx) {
-                          ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
-                          if (froxels) {
-                              in.froxelParams = &volumetricsPass_->froxelParams();
-                              in.froxelIntegrated = ctx.buffer(*froxels);
-                          }
-                          transparentPass_->recordShading(ctx.cmd(), resources, in);
-                      });
+        auto p = g.addPass("forward_transparent", PassKind::Device,
+                           [this, shadingInputs, froxels, &resources](PassContext& ctx) {
+                               ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
+                               if (froxels) {
+                                   in.froxelParams = &volumetricsPass_->froxelParams();
+                                   in.froxelIntegrated = ctx.buffer(*froxels);
+                               }
+                               transparentPass_->recordShading(ctx.cmd(), resources, in);
+                           });
         if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
         if (msaa) {
             // Drawn into, then resolved into hdr and motion (their last use).
@@ -1213,6 +1212,22 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
         p.read(depth, Use::Sampled);
         pyramid = p.write(pyramid, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
     }
+    // The pre-integrated visibility: level 0 is 100%, each coarser level from the pyramid's
+    // depth ranges and the level below it.
+    ResourceHandle visibility =
+        g.createImage("ssr.visibility", SsrPass::visibilityDesc(width_, height_));
+    for (uint32_t level = 0; level < levels; ++level) {
+        const ResourceHandle source = pyramid, target = visibility;
+        auto p =
+            g.addPass("ssr_visibility" + std::to_string(level), PassKind::Device,
+                      [this, source, target, level](PassContext& ctx) {
+                          ssrPass_->recordVisibility(ctx.cmd(), cameraBuffer_, ctx.image(source),
+                                                     ctx.image(target), level, width_, height_);
+                      });
+        p.read(camera, Use::Uniform);
+        p.read(pyramid, Use::StorageRead);
+        visibility = p.write(visibility, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
+    }
     // The pre-convolved scene: the lit HDR radiance and its blurred levels.
     ResourceHandle hdr = h.hdr;
     ResourceHandle colors = g.createImage("ssr.colors", SsrPass::colorDesc(width_, height_));
@@ -1241,14 +1256,15 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
     const ResourceHandle normal = h.color[1], baseColor = h.color[0], specular = h.color[2];
     {
         auto p = g.addPass("ssr_trace", PassKind::Device,
-                           [this, in, environment, normal, baseColor, specular, pyramid, colors,
-                            reflection](PassContext& ctx) {
+                           [this, in, environment, normal, baseColor, specular, pyramid, visibility,
+                            colors, reflection](PassContext& ctx) {
                                SsrPass::TraceInputs inputs = in;
                                inputs.environment = &environment;
                                inputs.normalRoughMetal = ctx.image(normal);
                                inputs.baseColor = ctx.image(baseColor);
                                inputs.specularModel = ctx.image(specular);
                                inputs.pyramid = ctx.image(pyramid);
+                               inputs.visibility = ctx.image(visibility);
                                inputs.colors = ctx.image(colors);
                                ssrPass_->recordTrace(ctx.cmd(), inputs, ctx.image(reflection));
                            });
@@ -1257,6 +1273,7 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
         p.read(baseColor, Use::Sampled);
         p.read(specular, Use::Sampled);
         p.read(pyramid, Use::StorageRead);
+        p.read(visibility, Use::StorageRead);
         p.read(colors, Use::StorageRead);
         p.write(counters, Use::StorageReadWrite);
         reflection = p.write(reflection, Use::StorageWrite);
