@@ -36,6 +36,10 @@
 // The pre-integrated visibility of each Hi-Z cell (ssr_visibility.comp): R32F, the pyramid's
 // layout.
 #define SSR_BINDING_VISIBILITY 16
+// The ambient occlusion the lighting pass applied (its AO image and specular occlusion, or the
+// LUT as a placeholder without it), so the trace takes out the sky's specular as occluded.
+#define SSR_BINDING_AMBIENT_OCCLUSION 17
+#define SSR_BINDING_SPECULAR_OCCLUSION 18
 
 // Highest Hi-Z level + 1 (a 65536-pixel side needs 17).
 #define SSR_MAX_LEVELS 16

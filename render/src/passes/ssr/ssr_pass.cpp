@@ -38,6 +38,8 @@ struct TracePush {
     float prefilteredMipCount;
     uint32_t coneSamples;
     uint32_t referenceRays;
+    uint32_t aoMode;
+    float aoIntensity;
 };
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -94,6 +96,8 @@ SsrPass::SsrPass(GpuContext& context)
         {SSR_BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
         {SSR_BINDING_PREFILTERED, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_BRDF_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {SSR_BINDING_AMBIENT_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {SSR_BINDING_SPECULAR_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_REFLECTION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
         {SSR_BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
     };
@@ -264,6 +268,11 @@ void SsrPass::recordTrace(VkCommandBuffer cmd, const TraceInputs& in,
     VkDescriptorImageInfo colors{VK_NULL_HANDLE, in.colors.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorImageInfo output{VK_NULL_HANDLE, reflection.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorBufferInfo counterInfo{counters_.handle(), 0, VK_WHOLE_SIZE};
+    // Without ambient occlusion the LUT stands in (the shader does not read it then).
+    const VkDescriptorImageInfo occlusion =
+        in.ambientOcclusion ? sampled(*in.ambientOcclusion) : in.environment->brdfLut;
+    const VkDescriptorImageInfo specularOcclusion =
+        in.specularOcclusion ? sampled(*in.specularOcclusion) : in.environment->brdfLut;
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
         sampledImageWrite(SSR_BINDING_NORMAL, &normal),
@@ -274,6 +283,8 @@ void SsrPass::recordTrace(VkCommandBuffer cmd, const TraceInputs& in,
         storageImageWrite(SSR_BINDING_COLOR, &colors),
         sampledImageWrite(SSR_BINDING_PREFILTERED, &in.environment->prefiltered),
         sampledImageWrite(SSR_BINDING_BRDF_LUT, &in.environment->brdfLut),
+        sampledImageWrite(SSR_BINDING_AMBIENT_OCCLUSION, &occlusion),
+        sampledImageWrite(SSR_BINDING_SPECULAR_OCCLUSION, &specularOcclusion),
         storageImageWrite(SSR_BINDING_REFLECTION, &output),
         storageBufferWrite(SSR_BINDING_COUNTERS, &counterInfo),
     };
@@ -289,7 +300,9 @@ void SsrPass::recordTrace(VkCommandBuffer cmd, const TraceInputs& in,
         in.skyIntensity,
         in.environment->prefilteredMipCount,
         in.settings.coneSamples,
-        reference ? in.settings.referenceRays : 1u};
+        reference ? in.settings.referenceRays : 1u,
+        in.ambientOcclusion ? in.aoMode : 0u,
+        in.aoIntensity};
     trace_.bind(cmd);
     trace_.pushDescriptors(cmd, writes);
     trace_.pushConstants(cmd, &push, sizeof(push));

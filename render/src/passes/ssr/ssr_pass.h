@@ -4,6 +4,7 @@
 // (Hi-Z or the linear reference march), and a composite that replaces the environment's
 // split-sum specular by the reflection in proportion to its confidence.
 #include <cstdint>
+#include <optional>
 
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/pipeline.h"
@@ -57,6 +58,11 @@ public:
         const EnvironmentDescriptors* environment;
         bool hasEnvironment = false;  // take the sky's split-sum specular out where rays hit
         bool hasLut = false;          // weight by the LUT, else by seed 001's fit
+        // The ambient occlusion the lighting pass applied to the sky's specular (Sampled; unset
+        // without it) and its variant (lighting.comp's kAoMode) and intensity.
+        std::optional<ImageRef> ambientOcclusion, specularOcclusion;
+        uint32_t aoMode = 0;
+        float aoIntensity = 1.0f;
         float skyIntensity = 1.0f;
         SsrMode mode = SsrMode::Hiz;
         SsrSettings settings;

@@ -24,6 +24,7 @@
 // environment's own split-sum specular there, as the lighting pass added it), so the
 // composite replaces the environment's specular by the reflection in proportion to the
 // confidence instead of adding to it.
+#include "common/ambient_occlusion.glsl"
 #include "common/ibl.glsl"
 #include "ssr_levels.glsl"
 
@@ -37,6 +38,8 @@ layout(binding = SSR_BINDING_VISIBILITY, r32f) uniform readonly image2D visibili
 layout(binding = SSR_BINDING_COLOR, rgba16f) uniform readonly image2D colorPyramid;
 layout(binding = SSR_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
 layout(binding = SSR_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
+layout(binding = SSR_BINDING_AMBIENT_OCCLUSION) uniform sampler2D ambientOcclusion;
+layout(binding = SSR_BINDING_SPECULAR_OCCLUSION) uniform sampler2D specularOcclusion;
 layout(binding = SSR_BINDING_REFLECTION, rgba32f) uniform writeonly image2D reflection;
 layout(std430, binding = SSR_BINDING_COUNTERS) buffer Counters {
     uint stepsLow;
@@ -59,6 +62,8 @@ layout(push_constant) uniform Push {
     float prefilteredMipCount;
     uint coneSamples;    // most circles along a cone
     uint referenceRays;  // lobe rays per rough pixel in the reference mode
+    uint aoMode;         // the lighting pass's (kAoOff... in ambient_occlusion.glsl)
+    float aoIntensity;
 } push;
 
 const uint kShadingUnlit = 0u;  // shading_models.glsl's ID (without its specialisation constants)
@@ -395,8 +400,19 @@ void main() {
             vec3 environment = vec3(0.0);
             if ((push.flags & 1u) != 0u) {
                 float mip = prefilteredMipOfRoughness(roughness, push.prefilteredMipCount);
+                // As the lighting pass occluded it (material and ambient occlusion). Its
+                // multiple scattering (energy-conserving BRDF) stays: it is the sky's
+                // irradiance over the hemisphere, not the lobe's radiance, which is all the
+                // ray knows (render/README.md "Screen-space reflections").
+                float horizons = push.aoMode == kAoReference || push.aoMode == kAoGtaoHorizonSpecular
+                                     ? texelFetch(specularOcclusion, pixel, 0).r
+                                     : 1.0;
+                float occlusion = environmentSpecularVisibility(
+                    push.aoMode, push.aoIntensity,
+                    push.aoMode == kAoOff ? 1.0 : texelFetch(ambientOcclusion, pixel, 0).w,
+                    horizons, NoV, roughness, gb0.a);
                 environment = textureLod(prefilteredCube, R, mip).rgb * weight *
-                              (push.skyIntensity * gb0.a);
+                              (push.skyIntensity * occlusion);
             }
             result = vec4((radiance * weight - environment) * confidence, confidence);
         }
