@@ -13,13 +13,15 @@
 //   mirror traces R; a rougher surface traces referenceRays rays importance-sampled from its
 //   GGX lobe and averages what each hits at full resolution (no pre-convolution, no cone):
 //   the glossy reflection the cone below approximates.
-// Cone tracing (pass 5, coneTrace): around a Hi-Z ray that hit, a cone as wide as the GGX lobe
-// (tan of its half-angle = alpha) is sampled by circles that fill it, from the hit back
-// toward the ray's start, each from the pre-convolved level (ssr_color.comp) whose texels
-// match its diameter, weighted by how much of the ray's depth across the circle lies in the
-// Hi-Z cell's depth range (does the cone meet the cell's volume) times the cell's
-// pre-integrated visibility (ssr_visibility.comp, pass 2), until the weights reach 100%. A
-// cone narrower than a pixel at the hit (a mirror) reads the hit texel alone.
+// Cone tracing (pass 5, coneGather): a cone as wide as the GGX lobe (tan of its half-angle =
+// alpha) around the Hi-Z ray is sampled by circles that fill it, from the hit (or a miss's
+// last point on screen) back toward the ray's start, each from the pre-convolved level
+// (ssr_color.comp) whose texels match its diameter, weighted by how much of the ray's depth
+// across the circle lies in the Hi-Z cell's depth range (does the cone meet the cell's
+// volume) times the cell's pre-integrated visibility (ssr_visibility.comp, pass 2), until the
+// weights reach 100%. A hit takes the weighted mean; a miss also takes the summed weight as
+// its confidence (the lobe met something the ray passed by). A cone narrower than a pixel (a
+// mirror) reads the hit texel alone.
 // Writes confidence x (radiance at the hit x the split sum's specular reflectance - the
 // environment's own split-sum specular there, as the lighting pass added it), so the
 // composite replaces the environment's specular by the reflection in proportion to the
@@ -113,7 +115,7 @@ bool withinThickness(float rayDepth, float surfaceDepth, float near) {
 }
 
 TraceResult traceHiZ(Ray ray, float near) {
-    TraceResult r = TraceResult(false, vec2(0.0), 0u);
+    TraceResult r = TraceResult(false, ray.origin.xy, 0u);
     vec2 dirSign = vec2(ray.direction.x >= 0.0 ? 1.0 : 0.0, ray.direction.y >= 0.0 ? 1.0 : 0.0);
     vec2 invDir = 1.0 / max(abs(ray.direction.xy), vec2(1e-12)) * sign(ray.direction.xy + 1e-30);
     // Leave the start pixel first (it holds the surface the ray starts on).
@@ -126,6 +128,7 @@ TraceResult traceHiZ(Ray ray, float near) {
         r.steps += 1u;
         vec3 pos = ray.origin + ray.direction * t;
         if (t > ray.extent || !onScreen(pos.xy) || pos.z <= 0.0) break;
+        r.position = pos.xy;  // a miss's last point on screen (where its cone ends)
         float cellSize = float(1 << level);
         vec2 cell = floor(pos.xy / cellSize);
         float nearest = levelDepth(uint(level), ivec2(cell));
@@ -208,21 +211,16 @@ float levelOfDiameter(float diameter) {
     return clamp(log2(max(diameter, 1e-6)), 0.0, float(push.levelCount - 1u));
 }
 
-// Cone tracing (pass 5): the radiance a cone around `ray` gathers, `travelled` pixels along it
-// to the hit. Circles inscribed in the cone, the first centred on the hit, each next one
-// touching the one before on the side of the ray's start: centre t, radius t tan, so the next
-// centre is t (1 - tan) / (1 + tan). Each circle's weight: the share of the ray's depth across
-// the circle (where it enters and leaves it) inside its Hi-Z cell's [farthest, nearest] (the
-// cone meets the cell's volume there: 0 where it passes in front of or behind everything)
-// times the cell's visibility, until the weights sum to 1; the last is cut to what is left.
-// The radiance is the weighted mean, so confidence is the trace's alone; with no weight at
-// all (the circles only graze the cells' ranges), the hit's own pre-convolved read.
-vec3 coneTrace(Ray ray, vec2 hit, ivec2 hitPixel, float travelled, float roughness) {
-    float tanHalf = roughness * roughness;
-    float atHit = levelOfDiameter(2.0 * travelled * tanHalf);
-    if ((push.flags & 4u) == 0u || travelled * tanHalf < 0.5) {
-        return preconvolvedRadiance(hit, hitPixel, atHit);
-    }
+// Cone tracing (pass 5): what a cone around `ray` gathers back from `travelled` pixels along
+// it (the hit, or a miss's last point on screen): circles inscribed in the cone, the first
+// centred there, each next one touching the one before on the side of the ray's start (centre
+// t, radius t tan: the next centre is t (1 - tan) / (1 + tan)). Each circle's weight: the
+// share of the ray's depth across the circle (where it enters and leaves it) inside its Hi-Z
+// cell's [farthest, nearest] (the cone meets the cell's volume there: 0 where it passes in
+// front of or behind everything) times the cell's pre-integrated visibility, until the weights
+// reach 1 (the last is cut to what is left). Returns the weighted mean radiance and the summed
+// weight (0: the cone met nothing).
+vec4 coneGather(Ray ray, float travelled, float tanHalf) {
     vec3 sum = vec3(0.0);
     float weight = 0.0;
     float t = travelled;
@@ -242,13 +240,26 @@ vec3 coneTrace(Ray ray, vec2 hit, ivec2 hitPixel, float travelled, float roughne
                                       : (lo <= range.x && lo >= range.y ? 1.0 : 0.0);
         float w = min(meets * levelVisibility(cellLevel, cell), 1.0 - weight);
         if (w > 0.0) {
-            ivec2 centrePixel = clamp(ivec2(floor(centre)), ivec2(0), ivec2(camera.frameInfo.xy) - 1);
+            ivec2 centrePixel =
+                clamp(ivec2(floor(centre)), ivec2(0), ivec2(camera.frameInfo.xy) - 1);
             sum += w * preconvolvedRadiance(centre, centrePixel, level);
             weight += w;
         }
         t *= (1.0 - tanHalf) / (1.0 + tanHalf);
     }
-    return weight > 1e-6 ? sum / weight : preconvolvedRadiance(hit, hitPixel, atHit);
+    return vec4(weight > 0.0 ? sum / weight : vec3(0.0), weight);
+}
+
+// The reflected radiance at a hit: the cone's weighted mean, or where the cone is narrower
+// than a pixel at the hit (a mirror), cone tracing is off, or the circles met nothing, one
+// pre-convolved read at the hit (the hit texel for a mirror).
+vec3 coneTrace(Ray ray, vec2 hit, ivec2 hitPixel, float travelled, float roughness) {
+    float tanHalf = roughness * roughness;
+    if ((push.flags & 4u) != 0u && travelled * tanHalf >= 0.5) {
+        vec4 gathered = coneGather(ray, travelled, tanHalf);
+        if (gathered.a > 1e-6) return gathered.rgb;
+    }
+    return preconvolvedRadiance(hit, hitPixel, levelOfDiameter(2.0 * travelled * tanHalf));
 }
 
 // Fades the confidence to 0 over the last 4% of the screen, where the rays that would have
@@ -382,10 +393,20 @@ void main() {
                     ivec2 hitPixel = clamp(ivec2(floor(hit.position)), ivec2(0), size - 1);
                     radiance = coneTrace(ray, hit.position, hitPixel,
                                          length(hit.position - start.xy), roughness);
-                    if (any(greaterThanEqual(abs(radiance), vec3(3e38))) ||
-                        any(isnan(radiance))) {
-                        confidence = 0.0;  // never carry Inf or NaN on
+                } else if (push.mode == 0u && (push.flags & 4u) != 0u) {
+                    // A miss: the lobe around it may still meet what the ray passed by (the
+                    // glossy spread of a reflection beyond its mirror image). The cone's
+                    // summed weight is the confidence; the sky fills the rest.
+                    float tanHalf = roughness * roughness;
+                    float travelled = length(hit.position - start.xy);
+                    if (travelled * tanHalf >= 0.5) {
+                        vec4 gathered = coneGather(ray, travelled, tanHalf);
+                        radiance = gathered.rgb;
+                        confidence = gathered.a * edgeFade(hit.position);
                     }
+                }
+                if (any(greaterThanEqual(abs(radiance), vec3(3e38))) || any(isnan(radiance))) {
+                    confidence = 0.0;  // never carry Inf or NaN on
                 }
             }
         }
