@@ -741,9 +741,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         hasGlossySurface(inputs.scene, resources, options_.ssrSettings.roughnessCutoff)) {
         ssrHistoryValid_ = ssrHistoryWas;
         // As LightingPass::setFeatures picks its variant.
-        const uint32_t aoMode =
-            features.ao == AoMode::Gtao && features.aoSpecularFromHorizons ? 3u
-                                                                           : uint32_t(features.ao);
+        const uint32_t aoMode = features.ao == AoMode::Gtao && features.aoSpecularFromHorizons
+                                    ? 3u
+                                    : uint32_t(features.ao);
         h.hdr.version = declareSsr(h, environment, features.ibl.has_value(),
                                    features.ibl == IblMode::Mobile, inputs.scene.skyIntensity,
                                    SsrOcclusion{occlusion, specularOcclusion, aoMode, aoIntensity});
