@@ -435,6 +435,14 @@ struct Renderer::SceneHandles {
     ResourceHandle anisotropy, clearCoat;
 };
 
+// The ambient occlusion the lighting pass applied to the sky's specular, which the SSR trace
+// takes out as occluded (unset handles: none).
+struct Renderer::SsrOcclusion {
+    std::optional<ResourceHandle> occlusion, specular;
+    uint32_t mode = 0;  // lighting.comp's kAoMode
+    float intensity = 1.0f;
+};
+
 uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resources,
                                 uint32_t hdrId) {
     FrameGraph& g = *graph_;
@@ -733,8 +741,13 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     if (options_.ssr != SsrMode::Off &&
         hasGlossySurface(inputs.scene, resources, options_.ssrSettings.roughnessCutoff)) {
         ssrHistoryValid_ = ssrHistoryWas;
+        // As LightingPass::setFeatures picks its variant.
+        const uint32_t aoMode = features.ao == AoMode::Gtao && features.aoSpecularFromHorizons
+                                    ? 3u
+                                    : uint32_t(features.ao);
         h.hdr.version = declareSsr(h, environment, features.ibl.has_value(),
-                                   features.ibl == IblMode::Mobile, inputs.scene.skyIntensity);
+                                   features.ibl == IblMode::Mobile, inputs.scene.skyIntensity,
+                                   SsrOcclusion{occlusion, specularOcclusion, aoMode, aoIntensity});
     }
     std::optional<ResourceHandle> froxels;  // the integrated grid, for blended surfaces too
     // Volumetric lighting over the lit opaque surfaces and the background (frames whose scene
@@ -1190,7 +1203,8 @@ uint32_t Renderer::declareBloom(uint32_t hdrId, uint32_t hdrVersion) {
 }
 
 uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptors& environment,
-                              bool sky, bool mobileIbl, float skyIntensity) {
+                              bool sky, bool mobileIbl, float skyIntensity,
+                              const SsrOcclusion& ao) {
     FrameGraph& g = *graph_;
     features_.push_back(std::string("ssr_") + ssrModeName(options_.ssr));
     if (!ssrPass_) ssrPass_ = std::make_unique<SsrPass>(context_);
@@ -1217,6 +1231,22 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
         p.read(depth, Use::Sampled);
         pyramid = p.write(pyramid, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
     }
+    // The pre-integrated visibility: level 0 is 100%, each coarser level from the pyramid's
+    // depth ranges and the level below it.
+    ResourceHandle visibility =
+        g.createImage("ssr.visibility", SsrPass::visibilityDesc(width_, height_));
+    for (uint32_t level = 0; level < levels; ++level) {
+        const ResourceHandle source = pyramid, target = visibility;
+        auto p =
+            g.addPass("ssr_visibility" + std::to_string(level), PassKind::Device,
+                      [this, source, target, level](PassContext& ctx) {
+                          ssrPass_->recordVisibility(ctx.cmd(), cameraBuffer_, ctx.image(source),
+                                                     ctx.image(target), level, width_, height_);
+                      });
+        p.read(camera, Use::Uniform);
+        p.read(pyramid, Use::StorageRead);
+        visibility = p.write(visibility, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
+    }
     // The pre-convolved scene: the lit HDR radiance and its blurred levels.
     ResourceHandle hdr = h.hdr;
     ResourceHandle colors = g.createImage("ssr.colors", SsrPass::colorDesc(width_, height_));
@@ -1238,6 +1268,8 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
     in.hasEnvironment = sky;
     in.hasLut = brdfLut_ != nullptr && !mobileIbl;
     in.skyIntensity = skyIntensity;
+    in.aoMode = ao.mode;
+    in.aoIntensity = ao.intensity;
     in.mode = options_.ssr;
     in.settings = options_.ssrSettings;
     in.width = width_;
@@ -1245,14 +1277,17 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
     const ResourceHandle normal = h.color[1], baseColor = h.color[0], specular = h.color[2];
     {
         auto p = g.addPass("ssr_trace", PassKind::Device,
-                           [this, in, environment, normal, baseColor, specular, pyramid, colors,
-                            reflection](PassContext& ctx) {
+                           [this, in, environment, normal, baseColor, specular, pyramid, visibility,
+                            colors, reflection, ao = ao](PassContext& ctx) {
                                SsrPass::TraceInputs inputs = in;
                                inputs.environment = &environment;
                                inputs.normalRoughMetal = ctx.image(normal);
                                inputs.baseColor = ctx.image(baseColor);
                                inputs.specularModel = ctx.image(specular);
                                inputs.pyramid = ctx.image(pyramid);
+                               inputs.visibility = ctx.image(visibility);
+                               if (ao.occlusion) inputs.ambientOcclusion = ctx.image(*ao.occlusion);
+                               if (ao.specular) inputs.specularOcclusion = ctx.image(*ao.specular);
                                inputs.colors = ctx.image(colors);
                                ssrPass_->recordTrace(ctx.cmd(), inputs, ctx.image(reflection));
                            });
@@ -1261,7 +1296,10 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
         p.read(baseColor, Use::Sampled);
         p.read(specular, Use::Sampled);
         p.read(pyramid, Use::StorageRead);
+        p.read(visibility, Use::StorageRead);
         p.read(colors, Use::StorageRead);
+        if (ao.occlusion) p.read(*ao.occlusion, Use::Sampled);
+        if (ao.specular) p.read(*ao.specular, Use::Sampled);
         p.write(counters, Use::StorageReadWrite);
         reflection = p.write(reflection, Use::StorageWrite);
     }

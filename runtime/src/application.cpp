@@ -86,7 +86,9 @@ render::AntiAliasing antiAliasingFor(const ApplicationOptions& options, const Sc
     return render::AntiAliasing::Taa;
 }
 
-// --ssr, else the scene file's "ssr", else off (render/README.md "Screen-space reflections").
+// --ssr, else the scene file's "ssr", else hiz: the renderer declares no SSR pass in a frame
+// without a surface under the roughness cut-off, so only frames with a glossy surface pay
+// (render/README.md "Screen-space reflections").
 render::SsrMode ssrFor(const ApplicationOptions& options, const SceneWorld* world) {
     if (options.ssr) return *options.ssr;
     if (world && world->sceneSsr()) {
@@ -99,7 +101,7 @@ render::SsrMode ssrFor(const ApplicationOptions& options, const SceneWorld* worl
                 return render::SsrMode::Reference;
         }
     }
-    return render::SsrMode::Off;
+    return render::SsrMode::Hiz;
 }
 
 // --ao, else the scene file's "ambient_occlusion" mode, else GTAO (render/README.md

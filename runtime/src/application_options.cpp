@@ -154,7 +154,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --ao off|gtao|reference   sky light occlusion (default: the scene file's, else "
            "gtao)\n"
            "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
-           "                            (default: the scene file's, else off)\n"
+           "                            (default: the scene file's, else hiz)\n"
            "  --volumetrics off|volumes|froxels|reference   light scattered in the medium\n"
            "                            (default: froxels when the scene has fog, else off;\n"
            "                            volumes is not built yet and draws froxels)\n"

@@ -2,7 +2,8 @@
 # recorded in HASHES (SHA-256 of the expected .exr and .png before the energy-conserving BRDF
 # became the default) with `--brdf ue4` and requires byte-identical files. A golden added later
 # (no recorded hash) is skipped with a note. Seed 000 had no ambient occlusion, antialiasing,
-# bloom or auto exposure: `--ao off --aa off --bloom 0 --exposure manual`; its sphere and tube
+# bloom, screen-space reflections or auto exposure: `--ao off --aa off --bloom 0 --ssr off
+# --exposure manual`; its sphere and tube
 # lights shaded by the representative point (issue 15 made LTC the default): `--area-lights
 # representative`. orb_game.exr was re-recorded then: lavapipe compiles the larger lighting
 # shader (the LTC branch for sphere and tube lights) with different float rounding, max
@@ -37,7 +38,8 @@ foreach(config IN LISTS configs)
   file(MAKE_DIRECTORY "${OUT}")
   execute_process(
     COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
-            --frames "${GOLDEN_FRAMES}" --brdf ue4 --ao off --aa off --bloom 0 --exposure manual
+            --frames "${GOLDEN_FRAMES}" --brdf ue4 --ao off --aa off --bloom 0 --ssr off
+            --exposure manual
             --area-lights representative
             --capture "${exr}" --capture "${png}"
     RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)

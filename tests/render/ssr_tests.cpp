@@ -92,6 +92,78 @@ TEST(Ssr, HizTakesAQuarterOfTheLinearMarchStepsForTheSameHits) {
     EXPECT_LT(reference.ssrStepsMax, RendererOptions{}.ssrSettings.referenceMaxSteps);
 }
 
+// Where a ray hits, the reflection replaces the sky's split-sum specular as the lighting pass
+// left it, ambient occlusion included. A mirror floor (white metal: no diffuse) in front of
+// an emissive wall standing on it, under a uniform sky: the floor by the wall's foot reflects
+// the wall and is occluded by it, yet shows the wall exactly as with AO off, while GTAO darkens
+// the sky's reflection further out (it is at work on this floor).
+TEST(Ssr, ReplacesTheSkySpecularAsAmbientOcclusionLeftIt) {
+    GpuContext& context = sharedContext();
+    TestScene scene;
+    scene.width = 64;
+    scene.height = 64;
+    content::Material mirror;
+    mirror.baseColorFactor = {1.0f, 1.0f, 1.0f, 1.0f};
+    mirror.metallicFactor = 1.0f;
+    mirror.roughnessFactor = 0.0f;
+    scene.add(content::makePlane(10.0f), mirror);
+    content::Material glow;
+    glow.shadingModel = content::ShadingModel::Unlit;
+    glow.baseColorFactor = {0.0f, 0.0f, 0.0f, 1.0f};
+    glow.emissiveFactor = {1.0f, 1.0f, 1.0f};
+    const float emission = 4.0f;
+    glow.emissiveStrength = emission;
+    scene.add(content::makeBox({1.5f, 0.5f, 0.25f}), glow,
+              glm::translate(glm::mat4(1.0f), {0.0f, 0.5f, -3.0f}));
+    scene.lookAt({0.0f, 0.8f, 0.5f}, {0.0f, 0.1f, -3.0f}, {0.0f, 1.0f, 0.0f});
+    scene.environment = Environment::uniform(context, 1.0f);
+    RendererOptions off = ssrOptions(SsrMode::Hiz);
+    RendererOptions gtao = off;
+    gtao.ao = AoMode::Gtao;
+    const CapturedFrame a = scene.render(context, off);
+    const CapturedFrame b = scene.render(context, gtao);
+    auto floorAt = [&](int x, int y) {
+        std::optional<glm::vec3> p = scene.pixelOnPlane(uint32_t(x), uint32_t(y));
+        return p && p->z > -2.7f;  // in front of the wall (not the wall itself)
+    };
+    auto green = [](const CapturedFrame& f, int x, int y) {
+        return double(hdrPixel(f, uint32_t(x), uint32_t(y))[1]);
+    };
+    // Floor pixels that mirror the wall (and whose neighbours do: edges left out), away from
+    // the screen border, where the confidence fades.
+    auto mirrorsWall = [&](int x, int y) {
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                if (!floorAt(x + dx, y + dy) || green(a, x + dx, y + dy) < 0.5 * emission) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    };
+    double worstWall = 0.0, worstSky = 0.0;
+    uint32_t wallPixels = 0;
+    const int border = 4;
+    for (int y = border; y < int(a.height) - border; ++y) {
+        for (int x = border; x < int(a.width) - border; ++x) {
+            if (!floorAt(x, y)) continue;
+            const double d = std::abs(green(a, x, y) - green(b, x, y));
+            if (mirrorsWall(x, y)) {
+                worstWall = std::max(worstWall, d / emission);
+                ++wallPixels;
+            } else if (green(a, x, y) < 1.5) {
+                worstSky = std::max(worstSky, d);  // the sky's radiance is 1
+            }
+        }
+    }
+    std::printf("wall pixels %u: worst |gtao - off| / wall %.2e; sky: worst %.4f\n", wallPixels,
+                worstWall, worstSky);
+    EXPECT_GT(wallPixels, 20u);
+    EXPECT_LT(worstWall, 1e-3);
+    EXPECT_GT(worstSky, 0.01);
+    EXPECT_EQ(b.nonFiniteHdrValues(), 0u);
+}
+
 TEST(Ssr, FramesWithoutGlossySurfacesDeclareNoPass) {
     GpuContext& context = sharedContext();
     MirrorUnderBox rough(64, 64, 0.8f);  // over the cut-off

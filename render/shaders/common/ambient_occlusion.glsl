@@ -6,6 +6,13 @@
 #include "common/camera.glsl"
 #include "common/math.glsl"
 
+// The lighting pass's ambient occlusion variants (its SPEC_AMBIENT_OCCLUSION constant; the SSR
+// trace's push constant).
+const uint kAoOff = 0u;
+const uint kAoGtao = 1u;
+const uint kAoReference = 2u;
+const uint kAoGtaoHorizonSpecular = 3u;  // GTAO, specular occlusion from its horizon slice
+
 vec3 aoWorldFromDepth(vec2 pixelCentre, float depth) {
     vec2 ndc = pixelCentre / vec2(camera.frameInfo.xy) * 2.0 - 1.0;
     vec4 world = camera.inverseViewProjection * vec4(ndc, depth, 1.0);
@@ -44,6 +51,34 @@ vec3 multiBounceOcclusion(float visibility, vec3 albedo) {
 // hemisphere) and, with a visibility of 1, leaves specular untouched exactly.
 float specularOcclusionFromVisibility(float visibility, float NoV, float roughness) {
     return saturate(pow(NoV + visibility, exp2(-16.0 * roughness - 1.0)) - 1.0 + visibility);
+}
+
+// The visibility the lighting pass gives the environment's specular (its split sum and the
+// multiple scattering with it): the material's `occlusion` without ambient occlusion; with it,
+// the reference's lobe visibility, or the visibility form above, for GTAO with horizons
+// blended in for smooth lobes (GTAO's horizons in the slice that holds R: right for lobes
+// narrow enough to stay in that slice, too dark for rough ones, which the visibility form
+// handles better; measured, render/README.md "Ambient occlusion"), each at `aoIntensity`,
+// then the minimum with the material's occlusion (both see the same nearby geometry: a crease
+// is not darkened twice). aoVisibility: the AO image's w; horizonVisibility: the specular
+// occlusion image's r (unused by plain GTAO).
+float environmentSpecularVisibility(uint aoMode, float aoIntensity, float aoVisibility,
+                                    float horizonVisibility, float NoV, float roughness,
+                                    float occlusion) {
+    if (aoMode == kAoOff) return occlusion;
+    float specularVisibility;
+    if (aoMode == kAoReference) {
+        specularVisibility = mix(1.0, saturate(horizonVisibility), aoIntensity);
+    } else {
+        float visibility = mix(1.0, saturate(aoVisibility), aoIntensity);
+        specularVisibility = specularOcclusionFromVisibility(visibility, NoV, roughness);
+        if (aoMode == kAoGtaoHorizonSpecular) {
+            float fromHorizons = mix(1.0, saturate(horizonVisibility), aoIntensity);
+            specularVisibility =
+                mix(fromHorizons, specularVisibility, smoothstep(0.35, 0.65, roughness));
+        }
+    }
+    return min(specularVisibility, occlusion);
 }
 
 #endif

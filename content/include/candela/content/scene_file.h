@@ -141,7 +141,7 @@ struct SceneDocument {
     std::optional<SceneExposure> exposure;      // unset: manual
     std::optional<float> exposureCompensation;  // "exposure_compensation", EV (auto only)
     std::optional<SceneAmbientOcclusion> ambientOcclusion;  // unset: defaults
-    std::optional<SceneSsrMode> ssr;                        // unset: the engine's default (off)
+    std::optional<SceneSsrMode> ssr;                        // unset: the engine's default (hiz)
     // Top-level "materialLayers": the shared layer library, by unique name. A material's
     // "layers" (at most kMaxMaterialLayers) name library layers; each copy starts as the
     // library's and may change any of its parameters, and is written back in full.

@@ -130,8 +130,10 @@ private:
     void declareHistogram(uint32_t hdrId, uint32_t hdrVersion);
     // Screen-space reflections after lighting: the Hi-Z pyramid, the trace and the composite
     // into the HDR target; returns its version after the composite.
+    // The ambient occlusion the lighting pass applied to the sky's specular (renderer.cpp).
+    struct SsrOcclusion;
     uint32_t declareSsr(const SceneHandles& h, const EnvironmentDescriptors& environment, bool sky,
-                        bool mobileIbl, float skyIntensity);
+                        bool mobileIbl, float skyIntensity, const SsrOcclusion& ao);
     // captureMotionVectors: copies the frame's final motion vectors into motionReadback_.
     void declareMotionCapture();
 

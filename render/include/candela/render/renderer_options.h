@@ -138,7 +138,14 @@ struct SsrSettings {
     uint32_t maxIterations = 128;       // Hi-Z steps per ray (climb, descend or cross)
     float thickness = 0.5f;             // metres behind a depth-buffer surface that are solid
     float referenceStepPixels = 0.5f;   // the reference march's step along the screen
-    uint32_t referenceMaxSteps = 8192;  // the reference march's cap
+    uint32_t referenceMaxSteps = 8192;  // the reference march's cap (per ray)
+    // The reference's rays per pixel of a rough surface (importance-sampled from its GGX lobe;
+    // a mirror traces one).
+    uint32_t referenceRays = 64;
+    // Cone tracing (seed 004 section 4, pass 5): circles along the cone weighted by the
+    // pre-integrated visibility; off: one pre-convolved read at the hit.
+    bool coneTracing = true;
+    uint32_t coneSamples = 8;  // most circles along a cone
     // Temporal filtering: last frame's reflection reprojected with the motion vectors, clamped
     // to this frame's neighbourhood (rejecting disoccluded history) and blended by this weight.
     bool temporal = true;

@@ -34,10 +34,6 @@ const uint kIblReference = 3u;
 layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 // Ambient occlusion of the sky's light: none, GTAO (specular occlusion from the visibility)
 // or the ray-marched reference (specular visibility measured too).
-const uint kAoOff = 0u;
-const uint kAoGtao = 1u;
-const uint kAoReference = 2u;
-const uint kAoGtaoHorizonSpecular = 3u;  // GTAO, specular occlusion from its horizon slice
 layout(constant_id = SPEC_AMBIENT_OCCLUSION) const uint kAoMode = 0u;
 
 layout(binding = LIGHTING_BINDING_GBUFFER_BASE_COLOR) uniform sampler2D gbufferBaseColor;
@@ -438,26 +434,12 @@ vec3 occludedAmbientRadiance(PixelShading px, ivec2 pixel, float occlusion) {
     vec4 ao = texelFetch(ambientOcclusion, pixel, 0);
     float visibility = mix(1.0, saturate(ao.w), push.aoIntensity);
     vec3 bentNormal = safeNormalize(ao.xyz);
-    float specularVisibility;
-    if (kAoMode == kAoReference) {
-        specularVisibility = mix(1.0, saturate(texelFetch(specularOcclusion, pixel, 0).r),
-                                 push.aoIntensity);
-    } else {
-        specularVisibility = specularOcclusionFromVisibility(
-            visibility, saturate(dot(px.N, px.V)), px.surface.roughness);
-        if (kAoMode == kAoGtaoHorizonSpecular) {
-            // GTAO's horizons in the slice that holds R: right for lobes narrow enough to stay
-            // in that slice, too dark for rough ones, which the visibility form handles better
-            // (measured, render/README.md "Ambient occlusion"): blended by roughness.
-            float fromHorizons = mix(1.0, saturate(texelFetch(specularOcclusion, pixel, 0).r),
-                                     push.aoIntensity);
-            specularVisibility = mix(fromHorizons, specularVisibility,
-                                     smoothstep(0.35, 0.65, px.surface.roughness));
-        }
-    }
-    // The material's occlusion (baked from the mesh's own shape) and the screen-space one see
-    // the same nearby geometry: the minimum, not the product, so a crease is not darkened
-    // twice.
+    bool horizons = kAoMode == kAoReference || kAoMode == kAoGtaoHorizonSpecular;
+    float horizonVisibility = horizons ? texelFetch(specularOcclusion, pixel, 0).r : 1.0;
+    // Shared with ssr_trace.comp, which takes out exactly this much of the sky's specular.
+    float specularVisibility =
+        environmentSpecularVisibility(kAoMode, push.aoIntensity, ao.w, horizonVisibility,
+                                      saturate(dot(px.N, px.V)), px.surface.roughness, occlusion);
     visibility = min(visibility, occlusion);
     specularVisibility = min(specularVisibility, occlusion);
     AmbientTerms t = ambientTermsOf(px.surface);

@@ -11,7 +11,8 @@
 #define SSR_BINDING_NORMAL 3
 #define SSR_BINDING_BASE_COLOR 4
 #define SSR_BINDING_SPECULAR_MODEL 5
-// The Hi-Z pyramid (R32F, every level in one image: ssr_pass.h), read-write while built.
+// The Hi-Z pyramid (RGBA32F: nearest depth in r, farthest in g; every level in one image:
+// ssr_pass.h), read-write while built.
 #define SSR_BINDING_HIZ 6
 // The lit HDR radiance the rays read (trace), and the one the reflection is added to
 // (composite).
@@ -32,6 +33,13 @@
 #define SSR_BINDING_MOTION 13
 #define SSR_BINDING_HISTORY 14
 #define SSR_BINDING_HISTORY_OUTPUT 15
+// The pre-integrated visibility of each Hi-Z cell (ssr_visibility.comp): R32F, the pyramid's
+// layout.
+#define SSR_BINDING_VISIBILITY 16
+// The ambient occlusion the lighting pass applied (its AO image and specular occlusion, or the
+// LUT as a placeholder without it), so the trace takes out the sky's specular as occluded.
+#define SSR_BINDING_AMBIENT_OCCLUSION 17
+#define SSR_BINDING_SPECULAR_OCCLUSION 18
 
 // Highest Hi-Z level + 1 (a 65536-pixel side needs 17).
 #define SSR_MAX_LEVELS 16

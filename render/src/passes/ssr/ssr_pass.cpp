@@ -11,6 +11,7 @@
 #include "shaders/ssr_hiz.comp.spv.h"
 #include "shaders/ssr_temporal.comp.spv.h"
 #include "shaders/ssr_trace.comp.spv.h"
+#include "shaders/ssr_visibility.comp.spv.h"
 
 namespace candela::render {
 
@@ -35,6 +36,10 @@ struct TracePush {
     float referenceStepPixels;
     float skyIntensity;
     float prefilteredMipCount;
+    uint32_t coneSamples;
+    uint32_t referenceRays;
+    uint32_t aoMode;
+    float aoIntensity;
 };
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -67,6 +72,12 @@ SsrPass::SsrPass(GpuContext& context)
         {SSR_BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
     };
     color_ = Pipeline::compute(context, ssr_color_comp_spv, color, sizeof(HizPush));
+    const DescriptorBinding visibility[] = {
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+        {SSR_BINDING_HIZ, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+        {SSR_BINDING_VISIBILITY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    };
+    visibility_ = Pipeline::compute(context, ssr_visibility_comp_spv, visibility, sizeof(HizPush));
     const DescriptorBinding temporal[] = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
         {SSR_BINDING_REFLECTION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
@@ -81,9 +92,12 @@ SsrPass::SsrPass(GpuContext& context)
         {SSR_BINDING_BASE_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_SPECULAR_MODEL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_HIZ, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+        {SSR_BINDING_VISIBILITY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
         {SSR_BINDING_COLOR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
         {SSR_BINDING_PREFILTERED, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_BRDF_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {SSR_BINDING_AMBIENT_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {SSR_BINDING_SPECULAR_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {SSR_BINDING_REFLECTION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
         {SSR_BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
     };
@@ -113,8 +127,15 @@ ImageDesc SsrPass::pyramidDesc(uint32_t width, uint32_t height) {
         h = halfUp(h);
         column += h;
     }
-    return {VK_FORMAT_R32_SFLOAT,      width + halfUp(width), std::max(height, column), 1, false,
-            VK_IMAGE_USAGE_STORAGE_BIT};
+    return {
+        VK_FORMAT_R32G32B32A32_SFLOAT, width + halfUp(width), std::max(height, column), 1, false,
+        VK_IMAGE_USAGE_STORAGE_BIT};
+}
+
+ImageDesc SsrPass::visibilityDesc(uint32_t width, uint32_t height) {
+    ImageDesc desc = pyramidDesc(width, height);
+    desc.format = VK_FORMAT_R32_SFLOAT;
+    return desc;
 }
 
 ImageDesc SsrPass::colorDesc(uint32_t width, uint32_t height) {
@@ -183,6 +204,29 @@ void SsrPass::recordColor(VkCommandBuffer cmd, const GpuBuffer& camera, const Im
     vkCmdDispatch(cmd, groups(width), groups(height), 1);
 }
 
+void SsrPass::recordVisibility(VkCommandBuffer cmd, const GpuBuffer& camera,
+                               const ImageRef& pyramid, const ImageRef& visibility, uint32_t level,
+                               uint32_t width, uint32_t height) const {
+    VkDescriptorBufferInfo cameraInfo{camera.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorImageInfo pyramidInfo{VK_NULL_HANDLE, pyramid.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo visibilityInfo{VK_NULL_HANDLE, visibility.view(),
+                                         VK_IMAGE_LAYOUT_GENERAL};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageImageWrite(SSR_BINDING_HIZ, &pyramidInfo),
+        storageImageWrite(SSR_BINDING_VISIBILITY, &visibilityInfo),
+    };
+    for (uint32_t l = 0; l < level; ++l) {
+        width = halfUp(width);
+        height = halfUp(height);
+    }
+    const HizPush push{level};
+    visibility_.bind(cmd);
+    visibility_.pushDescriptors(cmd, writes);
+    visibility_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(width), groups(height), 1);
+}
+
 void SsrPass::recordTemporal(VkCommandBuffer cmd, const GpuBuffer& camera, const ImageRef& current,
                              const ImageRef& motion, const ImageRef& history, bool historyValid,
                              float blend, const ImageRef& filtered) const {
@@ -220,31 +264,45 @@ void SsrPass::recordTrace(VkCommandBuffer cmd, const TraceInputs& in,
     const VkDescriptorImageInfo baseColor = sampled(in.baseColor);
     const VkDescriptorImageInfo specular = sampled(in.specularModel);
     VkDescriptorImageInfo pyramid{VK_NULL_HANDLE, in.pyramid.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo visibility{VK_NULL_HANDLE, in.visibility.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorImageInfo colors{VK_NULL_HANDLE, in.colors.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorImageInfo output{VK_NULL_HANDLE, reflection.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorBufferInfo counterInfo{counters_.handle(), 0, VK_WHOLE_SIZE};
+    // Without ambient occlusion the LUT stands in (the shader does not read it then).
+    const VkDescriptorImageInfo occlusion =
+        in.ambientOcclusion ? sampled(*in.ambientOcclusion) : in.environment->brdfLut;
+    const VkDescriptorImageInfo specularOcclusion =
+        in.specularOcclusion ? sampled(*in.specularOcclusion) : in.environment->brdfLut;
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
         sampledImageWrite(SSR_BINDING_NORMAL, &normal),
         sampledImageWrite(SSR_BINDING_BASE_COLOR, &baseColor),
         sampledImageWrite(SSR_BINDING_SPECULAR_MODEL, &specular),
         storageImageWrite(SSR_BINDING_HIZ, &pyramid),
+        storageImageWrite(SSR_BINDING_VISIBILITY, &visibility),
         storageImageWrite(SSR_BINDING_COLOR, &colors),
         sampledImageWrite(SSR_BINDING_PREFILTERED, &in.environment->prefiltered),
         sampledImageWrite(SSR_BINDING_BRDF_LUT, &in.environment->brdfLut),
+        sampledImageWrite(SSR_BINDING_AMBIENT_OCCLUSION, &occlusion),
+        sampledImageWrite(SSR_BINDING_SPECULAR_OCCLUSION, &specularOcclusion),
         storageImageWrite(SSR_BINDING_REFLECTION, &output),
         storageBufferWrite(SSR_BINDING_COUNTERS, &counterInfo),
     };
     const bool reference = in.mode == SsrMode::Reference;
-    const TracePush push{reference ? 1u : 0u,
-                         reference ? in.settings.referenceMaxSteps : in.settings.maxIterations,
-                         levelCount(in.width, in.height),
-                         (in.hasEnvironment ? 1u : 0u) | (in.hasLut ? 2u : 0u),
-                         in.settings.roughnessCutoff,
-                         in.settings.thickness,
-                         in.settings.referenceStepPixels,
-                         in.skyIntensity,
-                         in.environment->prefilteredMipCount};
+    const TracePush push{
+        reference ? 1u : 0u,
+        reference ? in.settings.referenceMaxSteps : in.settings.maxIterations,
+        levelCount(in.width, in.height),
+        (in.hasEnvironment ? 1u : 0u) | (in.hasLut ? 2u : 0u) | (in.settings.coneTracing ? 4u : 0u),
+        in.settings.roughnessCutoff,
+        in.settings.thickness,
+        in.settings.referenceStepPixels,
+        in.skyIntensity,
+        in.environment->prefilteredMipCount,
+        in.settings.coneSamples,
+        reference ? in.settings.referenceRays : 1u,
+        in.ambientOcclusion ? in.aoMode : 0u,
+        in.aoIntensity};
     trace_.bind(cmd);
     trace_.pushDescriptors(cmd, writes);
     trace_.pushConstants(cmd, &push, sizeof(push));

@@ -4,6 +4,7 @@
 // (Hi-Z or the linear reference march), and a composite that replaces the environment's
 // split-sum specular by the reflection in proportion to its confidence.
 #include <cstdint>
+#include <optional>
 
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/pipeline.h"
@@ -22,9 +23,11 @@ public:
 
     // Levels of the Hi-Z pyramid of a width x height frame: sizes halve rounding up down to 1x1.
     static uint32_t levelCount(uint32_t width, uint32_t height);
-    // R32F holding every level (ssr_levels.glsl): level 0 at the origin, the others in a column
-    // to its right, each below the one before.
+    // RGBA32F holding every level (ssr_levels.glsl): level 0 at the origin, the others in a
+    // column to its right, each below the one before; nearest depth in r, farthest in g.
     static ImageDesc pyramidDesc(uint32_t width, uint32_t height);
+    // R32F pre-integrated visibility of each cell in the same layout.
+    static ImageDesc visibilityDesc(uint32_t width, uint32_t height);
     // RGBA16F pre-convolved scene in the same layout.
     static ImageDesc colorDesc(uint32_t width, uint32_t height);
     // RGBA32F: what the trace adds to each pixel (rgb) and its confidence (a).
@@ -40,14 +43,26 @@ public:
     void recordColor(VkCommandBuffer cmd, const GpuBuffer& camera, const ImageRef& hdr,
                      const ImageRef& colors, uint32_t level, uint32_t width, uint32_t height) const;
 
+    // Level `level` of the pre-integrated visibility from the pyramid's levels `level` and
+    // `level` - 1 and the visibility of the latter (level 0: 100%).
+    void recordVisibility(VkCommandBuffer cmd, const GpuBuffer& camera, const ImageRef& pyramid,
+                          const ImageRef& visibility, uint32_t level, uint32_t width,
+                          uint32_t height) const;
+
     struct TraceInputs {
         const GpuBuffer* camera;
         ImageRef normalRoughMetal, baseColor, specularModel;  // Sampled
         ImageRef pyramid;                                     // StorageRead
+        ImageRef visibility;                                  // StorageRead: pre-integrated
         ImageRef colors;                                      // StorageRead: pre-convolved
         const EnvironmentDescriptors* environment;
         bool hasEnvironment = false;  // take the sky's split-sum specular out where rays hit
         bool hasLut = false;          // weight by the LUT, else by seed 001's fit
+        // The ambient occlusion the lighting pass applied to the sky's specular (Sampled; unset
+        // without it) and its variant (lighting.comp's kAoMode) and intensity.
+        std::optional<ImageRef> ambientOcclusion, specularOcclusion;
+        uint32_t aoMode = 0;
+        float aoIntensity = 1.0f;
         float skyIntensity = 1.0f;
         SsrMode mode = SsrMode::Hiz;
         SsrSettings settings;
@@ -76,6 +91,7 @@ public:
 private:
     Pipeline hiz_;
     Pipeline color_;
+    Pipeline visibility_;
     Pipeline trace_;
     Pipeline temporal_;
     Pipeline composite_;

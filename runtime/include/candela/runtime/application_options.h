@@ -67,8 +67,8 @@ struct ApplicationOptions {
     std::optional<float> exposureCompensation;
     // --ao; unset: the world's scene-file "ambient_occlusion" mode, else gtao.
     std::optional<render::AoMode> ao;
-    // --ssr; unset: the world's scene-file "ssr", else off (render/README.md "Screen-space
-    // reflections" gives the cost).
+    // --ssr; unset: the world's scene-file "ssr", else hiz (render/README.md "Screen-space
+    // reflections" gives the cost; frames without a glossy surface declare no pass).
     std::optional<render::SsrMode> ssr;
     // --volumetrics; unset: froxels when the scene has a medium (render/README.md
     // "Volumetric lighting"), which is the only way a frame draws one.
