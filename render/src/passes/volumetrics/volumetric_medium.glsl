@@ -14,17 +14,12 @@
 #include "common/shadows.glsl"
 #include "volumetric_step.glsl"
 #include "volumetrics_push.glsl"
+#include "volumetric_density.glsl"
 
 layout(std430, binding = VOLUMETRICS_BINDING_LIGHT_SCALES) readonly buffer LightScales {
     float lightScales[];
 };
 
-
-// Relative density at P: 1 everywhere, or thinning with height above the base.
-float mediumDensity(vec3 P) {
-    if (push.medium.w <= 0.0) return 1.0;
-    return exp(min(-push.medium.w * (P.y - push.range.x), 30.0));
-}
 
 // Henyey-Greenstein phase function (1/sr), cosTheta between the light's travel and the
 // direction scattered toward the camera; 1 / (4 pi) at g = 0.
