@@ -71,14 +71,16 @@ vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT, float sa
     return irradiance * (scale * phase * mediumShadow(light, index, P));
 }
 
-// Every light's in-scattering at P (a ball of radius sampleRadius), per metre, and the
-// extinction there (1/m) in w.
+// The in-scattering at P (a ball of radius sampleRadius) of the batch of lights the push
+// constants name (lights.z, the first, and lights.w of them), per metre, and the extinction
+// there (1/m) in w.
 vec4 mediumAt(vec3 P, vec3 toCamera, float sampleRadius) {
     float density = mediumDensity(P);
     float sigmaT = (push.medium.x + push.medium.y) * density;
     vec3 sum = vec3(0.0);
     if (push.medium.x > 0.0) {
-        for (uint i = 0u; i < push.lights.x; ++i)
+        uint end = min(push.lights.z + push.lights.w, push.lights.x);
+        for (uint i = push.lights.z; i < end; ++i)
             sum += lightInScattering(i, P, toCamera, sigmaT, sampleRadius);
     }
     return vec4(sum * (push.medium.x * density), sigmaT);

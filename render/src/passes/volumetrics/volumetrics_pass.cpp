@@ -201,11 +201,34 @@ void VolumetricsPass::recordReference(VkCommandBuffer cmd, const Inputs& in) con
         lightingWrites(in, infos,
                        std::array{sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
                                   storageImageWrite(VOLUMETRICS_BINDING_HDR, &hdr)});
-    const VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
+    VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
     reference_.bind(cmd);
     reference_.pushDescriptors(cmd, writes);
-    reference_.pushConstants(cmd, &push, sizeof(push));
-    vkCmdDispatch(cmd, groups(in.hdr.desc().width, 8), groups(in.hdr.desc().height, 8), 1);
+    // Lights in batches of at most kReferenceLightSamples / steps, one dispatch each: lavapipe
+    // (llvmpipe) ends a shader invocation's loops after 65,535 iterations in all, so one
+    // dispatch of 128 steps x 4,096 lights silently marched an eighth of the ray (the
+    // reference came out 26 times too dark at 8x8 pixels: docs/speed-vs-error.md).
+    constexpr uint32_t kReferenceLightSamples = 32768;
+    const uint32_t batch = std::max(kReferenceLightSamples / push.grid.w, 1u);
+    for (uint32_t first = 0; first == 0 || first < in.lightCount; first += batch) {
+        if (first > 0) {
+            // This batch adds to what the previous one stored.
+            const VkMemoryBarrier2 barrier{
+                VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                nullptr,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+            const VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO, nullptr, 0, 1,
+                                              &barrier};
+            vkCmdPipelineBarrier2(cmd, &dependency);
+        }
+        push.lights.z = first;
+        push.lights.w = batch;
+        reference_.pushConstants(cmd, &push, sizeof(push));
+        vkCmdDispatch(cmd, groups(in.hdr.desc().width, 8), groups(in.hdr.desc().height, 8), 1);
+    }
 }
 
 void VolumetricsPass::recordFroxelLight(VkCommandBuffer cmd, const Inputs& in,
