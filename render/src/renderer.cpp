@@ -751,8 +751,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     std::optional<ResourceHandle> froxels;  // the integrated grid, for blended surfaces too
     // Volumetric lighting over the lit opaque surfaces and the background (frames whose scene
-    // has a medium): froxels (lit, integrated, composited by depth) or the reference march.
-    // `volumes` (seed 004 §3's per-light volumes) is not built yet and draws froxels.
+    // has a medium): seed 004 §3's per-light volumes (marched at half resolution, blurred,
+    // upsampled), froxels (lit, integrated, composited by depth) or the reference march.
     if (inputs.scene.fog && options_.volumetrics != VolumetricsMode::Off) {
         if (!volumetricsPass_) volumetricsPass_ = std::make_unique<VolumetricsPass>(context_);
         volumetricsPass_->prepare(inputs.scene.lights, features.shadows);
@@ -791,44 +791,87 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             p.read(h.depth, Use::Sampled);
             h.hdr = p.write(h.hdr, Use::StorageReadWrite);
         } else {
-            features_.push_back("volumetrics_froxels");
-            volumetricsPass_->setFroxelParams(volume);
-            const VkDeviceSize bytes = VolumetricsPass::froxelBufferBytes(volume.grid);
-            ResourceHandle medium = g.createBuffer("volumetrics.froxel_medium", bytes,
-                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-            ResourceHandle integrated = g.createBuffer("volumetrics.froxel_integrated", bytes,
+            // Per-light volumes light only opaque surfaces; blended ones read the froxel grid,
+            // made for them in frames that have them.
+            const bool volumes = options_.volumetrics == VolumetricsMode::Volumes;
+            if (!volumes || blended) {
+                if (!volumes) features_.push_back("volumetrics_froxels");
+                volumetricsPass_->setFroxelParams(volume);
+                const VkDeviceSize bytes = VolumetricsPass::froxelBufferBytes(volume.grid);
+                ResourceHandle medium = g.createBuffer("volumetrics.froxel_medium", bytes,
                                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-            auto light = g.addPass("volumetrics_froxel_light", PassKind::Device,
-                                   [this, medium, volume, shadowDescriptors](PassContext& ctx) {
-                                       VolumetricsPass::Inputs in = volume;
-                                       in.shadows = &shadowDescriptors;
-                                       volumetricsPass_->recordFroxelLight(ctx.cmd(), in,
-                                                                           ctx.buffer(medium));
-                                   });
-            readLights(light);
-            medium = light.write(medium, Use::StorageWrite);
-            auto integrate =
-                g.addPass("volumetrics_froxel_integrate", PassKind::Device,
-                          [this, medium, integrated, volume](PassContext& ctx) {
-                              volumetricsPass_->recordFroxelIntegrate(
-                                  ctx.cmd(), volume, ctx.buffer(medium), ctx.buffer(integrated));
-                          });
-            integrate.read(h.camera, Use::Uniform);
-            integrate.read(medium, Use::StorageRead);
-            integrated = integrate.write(integrated, Use::StorageWrite);
-            auto composite = g.addPass("volumetrics_composite", PassKind::Device,
-                                       [this, ids, integrated, volume](PassContext& ctx) {
+                ResourceHandle integrated = g.createBuffer("volumetrics.froxel_integrated", bytes,
+                                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                auto light = g.addPass("volumetrics_froxel_light", PassKind::Device,
+                                       [this, medium, volume, shadowDescriptors](PassContext& ctx) {
                                            VolumetricsPass::Inputs in = volume;
-                                           in.depth = ctx.image(ids.depth);
-                                           in.hdr = ctx.image(ids.hdr);
-                                           volumetricsPass_->recordComposite(
-                                               ctx.cmd(), in, ctx.buffer(integrated));
+                                           in.shadows = &shadowDescriptors;
+                                           volumetricsPass_->recordFroxelLight(ctx.cmd(), in,
+                                                                               ctx.buffer(medium));
                                        });
-            composite.read(h.camera, Use::Uniform);
-            composite.read(h.depth, Use::Sampled);
-            composite.read(integrated, Use::StorageRead);
-            h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
-            froxels = integrated;
+                readLights(light);
+                medium = light.write(medium, Use::StorageWrite);
+                auto integrate = g.addPass("volumetrics_froxel_integrate", PassKind::Device,
+                                           [this, medium, integrated, volume](PassContext& ctx) {
+                                               volumetricsPass_->recordFroxelIntegrate(
+                                                   ctx.cmd(), volume, ctx.buffer(medium),
+                                                   ctx.buffer(integrated));
+                                           });
+                integrate.read(h.camera, Use::Uniform);
+                integrate.read(medium, Use::StorageRead);
+                froxels = integrate.write(integrated, Use::StorageWrite);
+            }
+            if (volumes) {
+                features_.push_back("volumetrics_volumes");
+                const ImageDesc half = VolumetricsPass::volumesDesc(width_, height_);
+                ResourceHandle marched = g.createImage("volumetrics.volumes_marched", half);
+                ResourceHandle blurred = g.createImage("volumetrics.volumes_blurred", half);
+                auto march = g.addPass(
+                    "volumetrics_volumes_march", PassKind::Device,
+                    [this, ids, marched, volume, shadowDescriptors](PassContext& ctx) {
+                        VolumetricsPass::Inputs in = volume;
+                        in.depth = ctx.image(ids.depth);
+                        in.shadows = &shadowDescriptors;
+                        volumetricsPass_->recordVolumesMarch(ctx.cmd(), in, ctx.image(marched));
+                    });
+                readLights(march);
+                march.read(h.depth, Use::Sampled);
+                marched = march.write(marched, Use::StorageWrite);
+                auto blur =
+                    g.addPass("volumetrics_volumes_blur", PassKind::Device,
+                              [this, marched, blurred, volume](PassContext& ctx) {
+                                  volumetricsPass_->recordVolumesBlur(
+                                      ctx.cmd(), volume, ctx.image(marched), ctx.image(blurred));
+                              });
+                blur.read(h.camera, Use::Uniform);
+                blur.read(marched, Use::StorageRead);
+                blurred = blur.write(blurred, Use::StorageWrite);
+                auto composite = g.addPass("volumetrics_volumes_composite", PassKind::Device,
+                                           [this, ids, blurred, volume](PassContext& ctx) {
+                                               VolumetricsPass::Inputs in = volume;
+                                               in.depth = ctx.image(ids.depth);
+                                               in.hdr = ctx.image(ids.hdr);
+                                               volumetricsPass_->recordVolumesComposite(
+                                                   ctx.cmd(), in, ctx.image(blurred));
+                                           });
+                composite.read(h.camera, Use::Uniform);
+                composite.read(h.depth, Use::Sampled);
+                composite.read(blurred, Use::StorageRead);
+                h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
+            } else {
+                auto composite = g.addPass(
+                    "volumetrics_composite", PassKind::Device,
+                    [this, ids, integrated = *froxels, volume](PassContext& ctx) {
+                        VolumetricsPass::Inputs in = volume;
+                        in.depth = ctx.image(ids.depth);
+                        in.hdr = ctx.image(ids.hdr);
+                        volumetricsPass_->recordComposite(ctx.cmd(), in, ctx.buffer(integrated));
+                    });
+                composite.read(h.camera, Use::Uniform);
+                composite.read(h.depth, Use::Sampled);
+                composite.read(*froxels, Use::StorageRead);
+                h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
+            }
         }
     }
     if (blended) {
@@ -881,16 +924,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             msaaMotion = e.write(msaaMotion, Use::ColorAttachment);
             msaaDepth = e.write(msaaDepth, Use::DepthWrite);
         }
-        auto p =
-            g.addPass("forward_transparent", PassKind::Device,
-                      [this, shadingInputs, froxels, &resources](PassContext& ctx) {
-                          ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
-                          if (froxels) {
-                              in.froxelParams = &volumetricsPass_->froxelParams();
-                              in.froxelIntegrated = ctx.buffer(*froxels);
-                          }
-                          transparentPass_->recordShading(ctx.cmd(), resources, in);
-                      });
+        auto p = g.addPass("forward_transparent", PassKind::Device,
+                           [this, shadingInputs, froxels, &resources](PassContext& ctx) {
+                               ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
+                               if (froxels) {
+                                   in.froxelParams = &volumetricsPass_->froxelParams();
+                                   in.froxelIntegrated = ctx.buffer(*froxels);
+                               }
+                               transparentPass_->recordShading(ctx.cmd(), resources, in);
+                           });
         if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
         if (msaa) {
             // Drawn into, then resolved into hdr and motion (their last use).

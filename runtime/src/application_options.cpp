@@ -156,8 +156,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
            "                            (default: the scene file's, else hiz)\n"
            "  --volumetrics off|volumes|froxels|reference   light scattered in the medium\n"
-           "                            (default: froxels when the scene has fog, else off;\n"
-           "                            volumes is not built yet and draws froxels)\n"
+           "                            (default: volumes when the scene has fog, else off)\n"
            "  --fog SIGMA_S[,SIGMA_A[,G]]   a uniform medium (1/m, Henyey-Greenstein g),\n"
            "                            replacing the scene's fog\n";
 }

@@ -9,6 +9,7 @@
 
 #include "candela/content/components/animation.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
@@ -208,6 +209,10 @@ constexpr float kPillarHeight = 4.4f;
 constexpr int kPillarsPerRow = 6;
 constexpr float kFirstPillarZ = -8.0f;
 constexpr float kPillarSpacing = 2.8f;
+// Volumetric scales (content::Light::volumetric) of the lights the dust should show.
+constexpr float kDustGlow = 6.0f;
+constexpr float kDustSunShafts = 0.002f;
+constexpr float kDustAreaLights = 0.15f;
 
 }  // namespace
 
@@ -413,6 +418,10 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     content::Light bulb = pointLight({1.0f, 0.78f, 0.55f}, 1800.0f, 9.0f);
     bulb.sourceRadius = 0.08f;
     bulb.castShadows = true;
+    // The dust glows around the bulb and the neon (issue 17): their volumetric scale lifts
+    // the thin medium's in-scattering near them above the drifting lights' (the seed's
+    // artist control, render/README.md "Volumetric lighting").
+    bulb.volumetric = kDustGlow;
     ecs::Entity bulbEntity = place(registry, "lamp bulb", {-2.0f, 3.4f, -5.2f});
     registry.emplace<content::Light>(bulbEntity, bulb);
     draw(bulbEntity, bulbGlass);
@@ -423,6 +432,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     magenta.sourceLength = 3.0f;
     magenta.sourceRadius = 0.03f;
     magenta.castShadows = true;
+    magenta.volumetric = kDustGlow;
     ecs::Entity backNeon = place(registry, "neon tube", {0.0f, 5.2f, -9.4f});
     registry.emplace<content::Light>(backNeon, magenta);
     draw(backNeon, neonMagenta);
@@ -430,6 +440,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     cyan.sourceLength = 1.6f;
     cyan.sourceRadius = 0.03f;
     cyan.castShadows = true;
+    cyan.volumetric = kDustGlow;
     for (float side : {-1.0f, 1.0f}) {
         for (int i = 0; i < 3; ++i) {
             ecs::Entity e =
@@ -445,6 +456,9 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     content::Light ceilingDisk = pointLight({1.0f, 0.93f, 0.82f}, 2400.0f, 8.0f);
     ceilingDisk.type = content::LightType::Disk;
     ceilingDisk.sourceRadius = 0.3f;
+    // The medium lights area shapes as points shining every way (render/README.md
+    // "Volumetric lighting"); at full scale the disks over the aisle would fog its top white.
+    ceilingDisk.volumetric = kDustAreaLights;
     for (float z : {-2.0f, 3.5f}) {
         registry.emplace<content::Light>(
             place(registry, "ceiling disk light", {0.0f, 4.3f, z},
@@ -455,6 +469,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     window.type = content::LightType::Rect;
     window.width = 1.6f;
     window.height = 1.0f;
+    window.volumetric = kDustAreaLights;
     registry.emplace<content::Light>(
         place(registry, "window rect light", {-6.45f, 2.4f, 1.0f},
               ecs::Quat::fromAxisAngle({0.0f, 1.0f, 0.0f}, -0.5f * kPi)),
@@ -477,6 +492,13 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
         registry.emplace<DriftingLight>(e, drift);
     }
 
+    // Dust in the hall (issue 17): a thin, slightly forward-scattering medium.
+    content::Fog dust;
+    dust.scattering = 0.015f;
+    dust.absorption = 0.005f;
+    dust.anisotropy = 0.3f;
+    registry.emplace<content::Fog>(place(registry, "dust", {}), dust);
+
     // The sky (the renderer's image-based lighting reads it; the background stays a dim night
     // until then).
     ecs::Entity sky = place(registry, "sky", {});
@@ -495,6 +517,9 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
         sun.lux = skySun->lux;
         sun.color = {1.0f, 0.97f, 0.92f};
         sun.castShadows = true;
+        // Through the dust, a hundred-thousand-lux sun would fog the hall over; a small
+        // volumetric scale leaves shafts through the open roof and the windows.
+        sun.volumetric = kDustSunShafts;
         registry.emplace<content::Light>(
             place(registry, "sun", {}, ecs::Quat::fromAxisAngle(axis, angle)), sun);
     }

@@ -102,7 +102,10 @@ struct VolumetricsSettings {
     uint32_t froxelsX = 160, froxelsY = 90, froxelSlices = 64;
     float froxelFar = 100.0f;
     uint32_t referenceSteps = 256;  // per pixel, uniformly over the ray up to referenceFar
-    float referenceFar = 100.0f;    // metres; past it the medium is not drawn (both modes)
+    // Per-light volumes: steps per light along each half-resolution pixel's segment inside
+    // the light's volume (the 4x4 dither and the blur make 16 sets of offsets of them).
+    uint32_t volumeSteps = 16;
+    float referenceFar = 100.0f;  // metres; past it the medium is not drawn (both modes)
 };
 
 struct AmbientOcclusionSettings {

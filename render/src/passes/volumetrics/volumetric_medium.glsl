@@ -14,17 +14,12 @@
 #include "common/shadows.glsl"
 #include "volumetric_step.glsl"
 #include "volumetrics_push.glsl"
+#include "volumetric_density.glsl"
 
 layout(std430, binding = VOLUMETRICS_BINDING_LIGHT_SCALES) readonly buffer LightScales {
     float lightScales[];
 };
 
-
-// Relative density at P: 1 everywhere, or thinning with height above the base.
-float mediumDensity(vec3 P) {
-    if (push.medium.w <= 0.0) return 1.0;
-    return exp(min(-push.medium.w * (P.y - push.range.x), 30.0));
-}
 
 // Henyey-Greenstein phase function (1/sr), cosTheta between the light's travel and the
 // direction scattered toward the camera; 1 / (4 pi) at g = 0.
@@ -76,14 +71,16 @@ vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT, float sa
     return irradiance * (scale * phase * mediumShadow(light, index, P));
 }
 
-// Every light's in-scattering at P (a ball of radius sampleRadius), per metre, and the
-// extinction there (1/m) in w.
+// The in-scattering at P (a ball of radius sampleRadius) of the batch of lights the push
+// constants name (lights.z, the first, and lights.w of them), per metre, and the extinction
+// there (1/m) in w.
 vec4 mediumAt(vec3 P, vec3 toCamera, float sampleRadius) {
     float density = mediumDensity(P);
     float sigmaT = (push.medium.x + push.medium.y) * density;
     vec3 sum = vec3(0.0);
     if (push.medium.x > 0.0) {
-        for (uint i = 0u; i < push.lights.x; ++i)
+        uint end = min(push.lights.z + push.lights.w, push.lights.x);
+        for (uint i = push.lights.z; i < end; ++i)
             sum += lightInScattering(i, P, toCamera, sigmaT, sampleRadius);
     }
     return vec4(sum * (push.medium.x * density), sigmaT);

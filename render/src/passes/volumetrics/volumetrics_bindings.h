@@ -15,6 +15,10 @@
 #define VOLUMETRICS_BINDING_FROXEL_INTEGRATED 6
 // The froxel grid's shape for common/froxel_lookup.glsl (VolumetricsPass::FroxelParams).
 #define VOLUMETRICS_BINDING_FROXEL_PARAMS 11
+// Per-light volumes: the half-resolution march and its bilateral blur, each (in-scattered
+// radiance, view depth) per pixel.
+#define VOLUMETRICS_BINDING_VOLUMES_MARCHED 12
+#define VOLUMETRICS_BINDING_VOLUMES_BLURRED 13
 // Shadows (common/shadows.glsl, passes/shadows/shadow_pass.h).
 #define VOLUMETRICS_BINDING_SHADOW_ATLAS 7
 #define VOLUMETRICS_BINDING_SHADOW_VIEWS 8

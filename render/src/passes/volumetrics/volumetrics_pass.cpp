@@ -13,6 +13,9 @@
 #include "shaders/volumetrics_froxel_integrate.comp.spv.h"
 #include "shaders/volumetrics_froxel_light.comp.spv.h"
 #include "shaders/volumetrics_reference.comp.spv.h"
+#include "shaders/volumetrics_volumes_blur.comp.spv.h"
+#include "shaders/volumetrics_volumes_composite.comp.spv.h"
+#include "shaders/volumetrics_volumes_march.comp.spv.h"
 
 namespace candela::render {
 
@@ -40,13 +43,14 @@ float farOf(const VolumetricsPass::Inputs& in) {
     return std::max(in.settings.froxelFar, nearOf(in) * 2.0f);
 }
 
-VolumetricsPush pushFor(const VolumetricsPass::Inputs& in) {
+// `steps`: the reference's per pixel, or the per-light volumes' per light and pixel.
+VolumetricsPush pushFor(const VolumetricsPass::Inputs& in, uint32_t steps) {
     const float nearPlane = nearOf(in);
     const float farPlane = farOf(in);
     return {
         glm::vec4(in.fog.scattering, in.fog.absorption, in.fog.anisotropy, in.fog.heightFalloff),
         glm::vec4(in.fog.baseHeight, nearPlane, farPlane, 0.0f),
-        glm::uvec4(in.grid, std::max(in.settings.referenceSteps, 1u)),
+        glm::uvec4(in.grid, std::max(steps, 1u)),
         glm::uvec4(in.lightCount, in.lightCapacity, 0u, 0u)};
 }
 
@@ -90,6 +94,21 @@ VolumetricsPass::VolumetricsPass(GpuContext& context)
         {VOLUMETRICS_BINDING_FROXEL_PARAMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
     };
     composite_ = Pipeline::compute(context, volumetrics_composite_comp_spv, composite, 0);
+    const DescriptorBinding blur[] = {
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+        {VOLUMETRICS_BINDING_VOLUMES_MARCHED, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+        {VOLUMETRICS_BINDING_VOLUMES_BLURRED, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    };
+    volumesBlur_ = Pipeline::compute(context, volumetrics_volumes_blur_comp_spv, blur,
+                                     sizeof(VolumetricsPush));
+    const DescriptorBinding volumesComposite[] = {
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+        {VOLUMETRICS_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+        {VOLUMETRICS_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+        {VOLUMETRICS_BINDING_VOLUMES_BLURRED, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    };
+    volumesComposite_ = Pipeline::compute(context, volumetrics_volumes_composite_comp_spv,
+                                          volumesComposite, sizeof(VolumetricsPush));
     froxelParams_ = GpuBuffer(context, sizeof(FroxelParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                               MemoryLocation::HostVisible);
 }
@@ -104,6 +123,11 @@ glm::uvec3 VolumetricsPass::froxelGrid(uint32_t width, uint32_t height,
 
 VkDeviceSize VolumetricsPass::froxelBufferBytes(const glm::uvec3& grid) {
     return VkDeviceSize(grid.x) * grid.y * grid.z * sizeof(glm::vec4);
+}
+
+ImageDesc VolumetricsPass::volumesDesc(uint32_t width, uint32_t height) {
+    return {VK_FORMAT_R32G32B32A32_SFLOAT, (width + 1) / 2, (height + 1) / 2, 1, false,
+            VK_IMAGE_USAGE_STORAGE_BIT};
 }
 
 void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadows) {
@@ -131,6 +155,13 @@ void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadow
         VOLUMETRICS_BINDING_FROXEL_MEDIUM, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute}});
     froxelLight_ = Pipeline::compute(context_, volumetrics_froxel_light_comp_spv, light,
                                      sizeof(VolumetricsPush), &constants);
+    const auto march = withLightingBindings(
+        std::array{DescriptorBinding{VOLUMETRICS_BINDING_DEPTH,
+                                     VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+                   DescriptorBinding{VOLUMETRICS_BINDING_VOLUMES_MARCHED,
+                                     VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute}});
+    volumesMarch_ = Pipeline::compute(context_, volumetrics_volumes_march_comp_spv, march,
+                                      sizeof(VolumetricsPush), &constants);
     built_ = true;
 }
 
@@ -170,11 +201,34 @@ void VolumetricsPass::recordReference(VkCommandBuffer cmd, const Inputs& in) con
         lightingWrites(in, infos,
                        std::array{sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
                                   storageImageWrite(VOLUMETRICS_BINDING_HDR, &hdr)});
-    const VolumetricsPush push = pushFor(in);
+    VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
     reference_.bind(cmd);
     reference_.pushDescriptors(cmd, writes);
-    reference_.pushConstants(cmd, &push, sizeof(push));
-    vkCmdDispatch(cmd, groups(in.hdr.desc().width, 8), groups(in.hdr.desc().height, 8), 1);
+    // Lights in batches of at most kReferenceLightSamples / steps, one dispatch each: lavapipe
+    // (llvmpipe) ends a shader invocation's loops after 65,535 iterations in all, so one
+    // dispatch of 128 steps x 4,096 lights silently marched an eighth of the ray (the
+    // reference came out 26 times too dark at 8x8 pixels: docs/speed-vs-error.md).
+    constexpr uint32_t kReferenceLightSamples = 32768;
+    const uint32_t batch = std::max(kReferenceLightSamples / push.grid.w, 1u);
+    for (uint32_t first = 0; first == 0 || first < in.lightCount; first += batch) {
+        if (first > 0) {
+            // This batch adds to what the previous one stored.
+            const VkMemoryBarrier2 barrier{
+                VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                nullptr,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+            const VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO, nullptr, 0, 1,
+                                              &barrier};
+            vkCmdPipelineBarrier2(cmd, &dependency);
+        }
+        push.lights.z = first;
+        push.lights.w = batch;
+        reference_.pushConstants(cmd, &push, sizeof(push));
+        vkCmdDispatch(cmd, groups(in.hdr.desc().width, 8), groups(in.hdr.desc().height, 8), 1);
+    }
 }
 
 void VolumetricsPass::recordFroxelLight(VkCommandBuffer cmd, const Inputs& in,
@@ -183,7 +237,7 @@ void VolumetricsPass::recordFroxelLight(VkCommandBuffer cmd, const Inputs& in,
     LightingInfos infos;
     const auto writes = lightingWrites(
         in, infos, std::array{storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo)});
-    const VolumetricsPush push = pushFor(in);
+    const VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
     froxelLight_.bind(cmd);
     froxelLight_.pushDescriptors(cmd, writes);
     froxelLight_.pushConstants(cmd, &push, sizeof(push));
@@ -201,7 +255,7 @@ void VolumetricsPass::recordFroxelIntegrate(VkCommandBuffer cmd, const Inputs& i
         storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo),
         storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_INTEGRATED, &integratedInfo),
     };
-    const VolumetricsPush push = pushFor(in);
+    const VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
     froxelIntegrate_.bind(cmd);
     froxelIntegrate_.pushDescriptors(cmd, writes);
     froxelIntegrate_.pushConstants(cmd, &push, sizeof(push));
@@ -225,6 +279,60 @@ void VolumetricsPass::recordComposite(VkCommandBuffer cmd, const Inputs& in,
     };
     composite_.bind(cmd);
     composite_.pushDescriptors(cmd, writes);
+    vkCmdDispatch(cmd, groups(in.hdr.desc().width, 8), groups(in.hdr.desc().height, 8), 1);
+}
+
+void VolumetricsPass::recordVolumesMarch(VkCommandBuffer cmd, const Inputs& in,
+                                         const ImageRef& marched) const {
+    VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo target{VK_NULL_HANDLE, marched.view(), VK_IMAGE_LAYOUT_GENERAL};
+    LightingInfos infos;
+    const auto writes =
+        lightingWrites(in, infos,
+                       std::array{sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
+                                  storageImageWrite(VOLUMETRICS_BINDING_VOLUMES_MARCHED, &target)});
+    const VolumetricsPush push = pushFor(in, in.settings.volumeSteps);
+    volumesMarch_.bind(cmd);
+    volumesMarch_.pushDescriptors(cmd, writes);
+    volumesMarch_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(marched.desc().width, 8), groups(marched.desc().height, 8), 1);
+}
+
+void VolumetricsPass::recordVolumesBlur(VkCommandBuffer cmd, const Inputs& in,
+                                        const ImageRef& marched, const ImageRef& blurred) const {
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorImageInfo source{VK_NULL_HANDLE, marched.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo target{VK_NULL_HANDLE, blurred.view(), VK_IMAGE_LAYOUT_GENERAL};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageImageWrite(VOLUMETRICS_BINDING_VOLUMES_MARCHED, &source),
+        storageImageWrite(VOLUMETRICS_BINDING_VOLUMES_BLURRED, &target),
+    };
+    const VolumetricsPush push = pushFor(in, in.settings.volumeSteps);
+    volumesBlur_.bind(cmd);
+    volumesBlur_.pushDescriptors(cmd, writes);
+    volumesBlur_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(blurred.desc().width, 8), groups(blurred.desc().height, 8), 1);
+}
+
+void VolumetricsPass::recordVolumesComposite(VkCommandBuffer cmd, const Inputs& in,
+                                             const ImageRef& blurred) const {
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo hdr{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo source{VK_NULL_HANDLE, blurred.view(), VK_IMAGE_LAYOUT_GENERAL};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
+        storageImageWrite(VOLUMETRICS_BINDING_HDR, &hdr),
+        storageImageWrite(VOLUMETRICS_BINDING_VOLUMES_BLURRED, &source),
+    };
+    const VolumetricsPush push = pushFor(in, in.settings.volumeSteps);
+    volumesComposite_.bind(cmd);
+    volumesComposite_.pushDescriptors(cmd, writes);
+    volumesComposite_.pushConstants(cmd, &push, sizeof(push));
     vkCmdDispatch(cmd, groups(in.hdr.desc().width, 8), groups(in.hdr.desc().height, 8), 1);
 }
 

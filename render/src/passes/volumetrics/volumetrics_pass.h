@@ -1,7 +1,9 @@
 #pragma once
 // Volumetric lighting in the scene's medium (render/README.md "Volumetric lighting", issue 17):
-// the per-pixel ray-marched reference, and froxels (a view-aligned grid lit per froxel,
-// integrated front to back and composited over the lit HDR target by depth).
+// the per-pixel ray-marched reference; seed 004 §3's per-light volumes (each light's volume
+// marched at half resolution with dithered starts, blurred and upsampled bilaterally); and
+// froxels (a view-aligned grid lit per froxel, integrated front to back and composited over
+// the lit HDR target by depth).
 #include <array>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -30,6 +32,8 @@ public:
                                  const VolumetricsSettings& settings);
     // Bytes of each froxel buffer (one vec4 per froxel).
     static VkDeviceSize froxelBufferBytes(const glm::uvec3& grid);
+    // The per-light volumes' half-resolution targets (in-scattered radiance, view depth).
+    static ImageDesc volumesDesc(uint32_t width, uint32_t height);
 
     // Each light's volumetric scale, indexed as the light buffer; rewritten every frame (the
     // renderer waits for the previous frame before recording). `shadows`: the variant that
@@ -66,6 +70,13 @@ public:
     void recordFroxelIntegrate(VkCommandBuffer cmd, const Inputs& in, const BufferRef& medium,
                                const BufferRef& integrated) const;
     void recordComposite(VkCommandBuffer cmd, const Inputs& in, const BufferRef& integrated) const;
+    // Per-light volumes: march into `marched`, blur it into `blurred` (each StorageWrite, then
+    // StorageRead), upsample and composite `blurred` over in.hdr.
+    void recordVolumesMarch(VkCommandBuffer cmd, const Inputs& in, const ImageRef& marched) const;
+    void recordVolumesBlur(VkCommandBuffer cmd, const Inputs& in, const ImageRef& marched,
+                           const ImageRef& blurred) const;
+    void recordVolumesComposite(VkCommandBuffer cmd, const Inputs& in,
+                                const ImageRef& blurred) const;
 
 private:
     struct LightingInfos {
@@ -83,6 +94,9 @@ private:
     Pipeline froxelLight_;
     Pipeline froxelIntegrate_;
     Pipeline composite_;
+    Pipeline volumesMarch_;
+    Pipeline volumesBlur_;
+    Pipeline volumesComposite_;
     Sampler pointSampler_;
     GpuBuffer lightScales_;
     GpuBuffer froxelParams_;

@@ -7,7 +7,7 @@ layout(push_constant) uniform Push {
     vec4 medium;  // x: sigma_s, y: sigma_a (1/m), z: g, w: height falloff (1/m)
     vec4 range;   // x: base height (m), y: near, z: far (view depth, m), w: unused
     uvec4 grid;   // froxels x, y, slices; w: reference steps
-    uvec4 lights; // x: count, y: buffer capacity
+    uvec4 lights; // x: count, y: buffer capacity; z, w: the reference's batch (first, count)
 } push;
 
 // View depth (m) of slice boundary b (common/froxel_lookup.glsl's slicing).

@@ -4,7 +4,8 @@
 // Reference volumetric lighting, for measurement (render/README.md "Volumetric lighting"):
 // every pixel marches its view ray from the camera to the surface (or the far distance) in
 // `grid.w` equal steps, each lit by every light with its shadow, and attenuates the lit
-// surface behind: hdr = hdr * T + L.
+// surface behind: hdr = hdr * T + L. The lights come in batches, one dispatch each (push
+// lights.z, lights.w): the first applies T and adds its lights' L, the others add theirs.
 #include "volumetric_medium.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -34,5 +35,6 @@ void main() {
         integrateStep(mediumAt(P, -direction, 0.0), dt, radiance, transmittance);
     }
     vec4 surface = imageLoad(hdrRadiance, pixel);
+    if (push.lights.z > 0u) transmittance = 1.0;  // a later batch: T is applied already
     imageStore(hdrRadiance, pixel, vec4(surface.rgb * transmittance + radiance, surface.a));
 }

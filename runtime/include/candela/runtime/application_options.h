@@ -70,7 +70,7 @@ struct ApplicationOptions {
     // --ssr; unset: the world's scene-file "ssr", else hiz (render/README.md "Screen-space
     // reflections" gives the cost; frames without a glossy surface declare no pass).
     std::optional<render::SsrMode> ssr;
-    // --volumetrics; unset: froxels when the scene has a medium (render/README.md
+    // --volumetrics; unset: volumes when the scene has a medium (render/README.md
     // "Volumetric lighting"), which is the only way a frame draws one.
     std::optional<render::VolumetricsMode> volumetrics;
     // --fog SIGMA_S[,SIGMA_A[,G]]: a uniform medium replacing the scene's Fog (or adding one).

@@ -1,0 +1,62 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "volumetrics_bindings.h"
+// Per-light volumes, step 1 (seed 004 §3), at half resolution: each pixel's view ray (through
+// the full-resolution pixel 2q and ending at its depth) crosses each light's volume (a
+// sphere, a cone or, for the sun, the whole screen: light_volume.glsl) and marches the
+// segment inside in `grid.w` steps starting at the pixel's 4x4 Bayer offset. Each sample is
+// lit as the seed's white diffuse surface facing the light gives E (unfiltered shadow),
+// scaled by the step and sigma_s with the Henyey-Greenstein phase in place of 1/pi, and by
+// the view leg's transmittance to it. Stores (in-scattered radiance, view depth) for the
+// bilateral blur and upsample.
+#include "light_volume.glsl"
+#include "volumetric_medium.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(binding = VOLUMETRICS_BINDING_DEPTH) uniform sampler2D gbufferDepth;
+layout(binding = VOLUMETRICS_BINDING_VOLUMES_MARCHED, rgba32f) uniform writeonly image2D marched;
+
+// 4x4 ordered dither (Bayer), in sixteenths: neighbouring pixels start their march at
+// offsets that a 4x4 neighbourhood covers evenly, so the blur turns 16 steps into 256.
+const float kBayer4x4[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0,
+                                      9.0, 15.0, 7.0, 13.0, 5.0);
+
+void main() {
+    ivec2 half_ = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = ivec2(camera.frameInfo.xy);
+    ivec2 halfSize = (size + 1) / 2;
+    if (half_.x >= halfSize.x || half_.y >= halfSize.y) return;
+    ivec2 pixel = min(half_ * 2, size - 1);
+    vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
+    vec3 origin = camera.cameraPosition.xyz;
+    vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    vec3 perDepth = (nearPoint.xyz / nearPoint.w - origin) / push.range.y;
+    float depth = texelFetch(gbufferDepth, pixel, 0).r;
+    // Reverse-Z: view depth = near / depth; 0 is the background, marched to the far distance.
+    float viewDepth = depth > 0.0 ? min(push.range.y / depth, push.range.z) : push.range.z;
+    float surfaceT = viewDepth * length(perDepth);
+    vec3 direction = normalize(perDepth);
+    float dither = (kBayer4x4[(half_.y & 3) * 4 + (half_.x & 3)] + 0.5) / 16.0;
+    float steps = float(max(push.grid.w, 1u));
+    vec3 radiance = vec3(0.0);
+    if (push.medium.x > 0.0) {
+        for (uint i = 0u; i < push.lights.x; ++i) {
+            if (lightScales[i] <= 0.0) continue;
+            Light light = loadLight(i, push.lights.y);
+            vec2 segment = lightVolumeSegment(light, origin, direction, surfaceT);
+            if (segment.x >= segment.y) continue;
+            float dt = (segment.y - segment.x) / steps;
+            for (float s = dither; s < steps; s += 1.0) {
+                float t = segment.x + s * dt;
+                vec3 P = origin + direction * t;
+                float density = mediumDensity(P);
+                float sigmaT = (push.medium.x + push.medium.y) * density;
+                radiance += lightInScattering(i, P, -direction, sigmaT, 0.0) *
+                            (push.medium.x * density * exp(-viewOpticalDepth(origin, direction, t)) *
+                             dt);
+            }
+        }
+    }
+    imageStore(marched, half_, vec4(radiance, viewDepth));
+}
