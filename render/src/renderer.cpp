@@ -20,6 +20,7 @@
 #include "ibl/environment_brdf_lut.h"
 #include "ibl/environment_descriptors.h"
 #include "ibl/environment_sampling_table.h"
+#include "lights/area_light_textures.h"
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
 #include "lights/ltc_table_texture.h"
@@ -270,6 +271,7 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     lightingPass_ = std::make_unique<LightingPass>(context_);
     environmentPlaceholders_ = std::make_unique<EnvironmentPlaceholders>(context_);
     ltcTable_ = std::make_unique<LtcTableTexture>(context_);
+    areaLightTextures_ = std::make_unique<AreaLightTextures>(context_);
     transparentPass_ = std::make_unique<ForwardTransparentPass>(
         context_, forwardMsaaSamples(context_, options_.msaaSamples));
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
@@ -387,7 +389,10 @@ void Renderer::restartTemporalHistory() {
 
 void Renderer::uploadFrameData(const FrameInputs& inputs) {
     const FrameScene& scene = inputs.scene;
-    lights_->update(context_, scene.lights, scene.changedLights, scene.lightsRestructured);
+    // Textured rects' images first: a changed atlas moves slots, so every light is repacked.
+    const bool texturesMoved = areaLightTextures_->update(context_, scene.lights);
+    lights_->update(context_, scene.lights, scene.changedLights,
+                    scene.lightsRestructured || texturesMoved, areaLightTextures_.get());
     const CameraView& view = scene.camera;
     clusters_->setView(view, width_, height_);
 
@@ -673,6 +678,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         samplingTable_ && features.ibl == IblMode::Reference ? &samplingTable_->buffer() : nullptr);
     environment.ltcMatrix = ltcTable_->matrix();
     environment.ltcMagnitude = ltcTable_->magnitude();
+    environment.areaLightTextures = areaLightTextures_->descriptor();
     const float skyIntensity = inputs.scene.skyIntensity;
     {
         auto p = g.addPass(
@@ -867,16 +873,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             msaaMotion = e.write(msaaMotion, Use::ColorAttachment);
             msaaDepth = e.write(msaaDepth, Use::DepthWrite);
         }
-        auto p =
-            g.addPass("forward_transparent", PassKind::Device,
-                      [this, shadingInputs, froxels, &resources](PassContext& ctx) {
-                          ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
-                          if (froxels) {
-                              in.froxelParams = &volumetricsPass_->froxelParams();
-                              in.froxelIntegrated = ctx.buffer(*froxels);
-                          }
-                          transparentPass_->recordShading(ctx.cmd(), resources, in);
-                      });
+        auto p = g.addPass("forward_transparent", PassKind::Device,
+                           [this, shadingInputs, froxels, &resources](PassContext& ctx) {
+                               ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
+                               if (froxels) {
+                                   in.froxelParams = &volumetricsPass_->froxelParams();
+                                   in.froxelIntegrated = ctx.buffer(*froxels);
+                               }
+                               transparentPass_->recordShading(ctx.cmd(), resources, in);
+                           });
         if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
         if (msaa) {
             // Drawn into, then resolved into hdr and motion (their last use).
