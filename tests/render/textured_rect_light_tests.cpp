@@ -1,6 +1,8 @@
 // Textured rect lights (issue 15): the emissive image modulates a rect's luminance, scaled to
 // average luminance 1 (lights/area_light_textures.h), read by LTC where the lobe's mean
-// direction meets the rect and at the representative point in seed 004's mode.
+// direction meets the rect and at the representative point in seed 004's mode. One render:
+// six rects over a floor, each far enough from the others that their falloff windows never
+// overlap, LTC and representative chosen per light ("quality").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,30 +13,30 @@
 
 using namespace candela::render;
 using namespace candela::render::test;
+using candela::content::AreaLightQuality;
 using candela::content::makePlane;
 using candela::content::Rgba8Image;
 
 namespace {
 
-// A white Lambert floor seen from 5 m above (screen right = world +X), under a 1.6 x 1 m rect
-// 1.2 m up, facing down: its +X along world +X.
-TestScene rectOverFloor(std::shared_ptr<const Rgba8Image> image) {
-    TestScene scene;
-    scene.width = scene.height = 64;
-    scene.add(makePlane(20.0f), lambertWhite());
-    scene.lookAt({0.0f, 5.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f});
+constexpr float kSpacing = 4.0f;  // between rects; each light's window reaches 1.9 m
+constexpr float kHeight = 1.2f;
+
+// A 1.6 x 1 m rect kHeight above the floor point `at`, facing down, its +X along world +X.
+LightInstance rectOver(glm::vec3 at, std::shared_ptr<const Rgba8Image> image,
+                       AreaLightQuality quality) {
     LightInstance rect;
     rect.light.type = candela::content::LightType::Rect;
     rect.light.lumens = 2000.0f;
-    rect.light.attenuationRadius = 30.0f;
+    rect.light.attenuationRadius = 1.9f;
     rect.light.width = 1.6f;
     rect.light.height = 1.0f;
+    rect.light.quality = quality;
     rect.light.texture = image ? candela::content::registerLightTexture("", std::move(image)) : 0;
-    rect.position = {0.0f, 1.2f, 0.0f};
+    rect.position = at + glm::vec3(0.0f, kHeight, 0.0f);
     rect.direction = {0.0f, -1.0f, 0.0f};
     rect.tubeAxis = {1.0f, 0.0f, 0.0f};
-    scene.lights = {rect};
-    return scene;
+    return rect;
 }
 
 // `width` x 2 texels: the left half `left`, the right half `right` (sRGB bytes).
@@ -52,56 +54,69 @@ std::shared_ptr<const Rgba8Image> halves(uint32_t width, const uint8_t left[3],
     return image;
 }
 
-RendererOptions withAreaLights(AreaLightMode mode) {
-    RendererOptions options;
-    options.areaLights = mode;
-    return options;
+// The pixel nearest the floor point `at` (the camera looks straight down, screen right = +X).
+std::pair<uint32_t, uint32_t> pixelAt(const TestScene& scene, glm::vec3 at) {
+    glm::vec4 clip = scene.camera.projection * scene.camera.view * glm::vec4(at, 1.0f);
+    glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {uint32_t((ndc.x * 0.5f + 0.5f) * float(scene.width)),
+            uint32_t((ndc.y * 0.5f + 0.5f) * float(scene.height))};
 }
 
 }  // namespace
 
-// Any one-colour grey image is the untextured rect: the image is normalised to average
-// luminance 1, so lumens stay lumens. By LTC and by the representative point.
-TEST(TexturedRectLight, UniformGreyImageShadesAsUntextured) {
+// Columns: LTC, representative. Rows: untextured, a one-colour grey image (the same light: the
+// image is normalised to average luminance 1, so lumens stay lumens), an image red on its left
+// half and blue on its right. Seen from below (the lit side) the image's left column is along
+// the rect's +X edge, so the floor under +X is red and under -X blue: 0.5 m off the centre the
+// integral over the light gives 2.08 times more of the nearer half's colour.
+TEST(TexturedRectLight, ImagesModulateTheRectAndKeepItsPower) {
     GpuContext context(requiredValidation());
-    const uint8_t grey[3] = {90, 90, 90};
-    for (AreaLightMode mode : {AreaLightMode::Ltc, AreaLightMode::Representative}) {
-        CapturedFrame plain = rectOverFloor(nullptr).render(context, withAreaLights(mode));
-        CapturedFrame textured =
-            rectOverFloor(halves(8, grey, grey)).render(context, withAreaLights(mode));
-        ASSERT_EQ(textured.nonFiniteHdrValues(), 0u);
-        double worst = 0.0, lit = 0.0;
-        for (size_t i = 0; i < plain.hdrRgb.size(); ++i) {
-            lit = std::max(lit, double(plain.hdrRgb[i]));
-            worst = std::max(worst, double(std::abs(textured.hdrRgb[i] - plain.hdrRgb[i])) /
-                                        std::max(double(plain.hdrRgb[i]), 1e-3));
-        }
-        std::printf("%s: uniform image vs untextured, worst relative difference %.2e\n",
-                    mode == AreaLightMode::Ltc ? "ltc" : "representative", worst);
-        EXPECT_GT(lit, 1.0);
-        EXPECT_LT(worst, 2e-3);  // the half-float atlas
+    const uint8_t grey[3] = {90, 90, 90}, red[3] = {255, 0, 0}, blue[3] = {0, 0, 255};
+    const std::shared_ptr<const Rgba8Image> images[3] = {nullptr, halves(8, grey, grey),
+                                                         halves(16, red, blue)};
+    const AreaLightQuality modes[2] = {AreaLightQuality::Ltc, AreaLightQuality::Representative};
+    TestScene scene;
+    scene.width = scene.height = 96;
+    scene.add(makePlane(40.0f), lambertWhite());
+    scene.lookAt({0.5f * kSpacing, 14.0f, kSpacing}, {0.5f * kSpacing, 0.0f, kSpacing},
+                 {0.0f, 0.0f, -1.0f});
+    auto centre = [](int mode, int row) {
+        return glm::vec3(kSpacing * float(mode), 0.0f, kSpacing * float(row));
+    };
+    for (int row = 0; row < 3; ++row) {
+        for (int mode = 0; mode < 2; ++mode)
+            scene.lights.push_back(rectOver(centre(mode, row), images[row], modes[mode]));
     }
-    EXPECT_EQ(context.validationMessages(), 0u);
-}
+    CapturedFrame frame = scene.render(context);
+    ASSERT_EQ(frame.nonFiniteHdrValues(), 0u);
 
-// An image red on its left half, blue on its right: seen from below (the lit side), the left
-// column is along the rect's +X edge, so the floor under +X is red and under -X blue.
-TEST(TexturedRectLight, ImageHalvesColourTheFloorBelowThem) {
-    GpuContext context(requiredValidation());
-    const uint8_t red[3] = {255, 0, 0}, blue[3] = {0, 0, 255};
-    for (AreaLightMode mode : {AreaLightMode::Ltc, AreaLightMode::Representative}) {
-        TestScene scene = rectOverFloor(halves(16, red, blue));
-        CapturedFrame frame = scene.render(context, withAreaLights(mode));
-        ASSERT_EQ(frame.nonFiniteHdrValues(), 0u);
-        const uint32_t y = scene.height / 2;
-        for (uint32_t x : {scene.width / 2 - 6, scene.width / 2 + 6}) {
-            const auto point = scene.pixelOnPlane(x, y);
-            ASSERT_TRUE(point.has_value());
+    for (int mode = 0; mode < 2; ++mode) {
+        const char* name = mode == 0 ? "ltc" : "representative";
+        double worst = 0.0;
+        for (float dx : {-0.9f, -0.4f, 0.0f, 0.3f, 0.7f}) {
+            for (float dz : {-0.6f, 0.0f, 0.5f}) {
+                const glm::vec3 offset(dx, 0.0f, dz);
+                auto [px, py] = pixelAt(scene, centre(mode, 0) + offset);
+                auto [qx, qy] = pixelAt(scene, centre(mode, 1) + offset);
+                const float plain = hdrPixel(frame, px, py)[1];
+                ASSERT_GT(plain, 1.0f) << name;
+                worst =
+                    std::max(worst, double(std::abs(hdrPixel(frame, qx, qy)[1] - plain)) / plain);
+            }
+        }
+        std::printf("%s: one-colour image vs untextured, worst relative difference %.2e\n", name,
+                    worst);
+        EXPECT_LT(worst, 2e-3) << name;  // the half-float atlas
+
+        for (float dx : {-0.5f, 0.5f}) {
+            auto [x, y] = pixelAt(scene, centre(mode, 2) + glm::vec3(dx, 0.0f, 0.0f));
             const float* rgb = hdrPixel(frame, x, y);
-            const bool underPlusX = point->x > 0.0f;
-            EXPECT_GT(underPlusX ? rgb[0] : rgb[2], 2.0f * (underPlusX ? rgb[2] : rgb[0]))
-                << "pixel " << x << " at world x " << point->x << ": " << rgb[0] << " " << rgb[1]
-                << " " << rgb[2];
+            const float nearer = dx > 0.0f ? rgb[0] : rgb[2];
+            const float further = dx > 0.0f ? rgb[2] : rgb[0];
+            std::printf(
+                "%s: %.1f m off the centre, nearer half / further half %.2f (integral 2.08)\n",
+                name, dx, nearer / further);
+            EXPECT_GT(nearer, 1.3f * further) << name << " at " << dx;
         }
     }
     EXPECT_EQ(context.validationMessages(), 0u);
