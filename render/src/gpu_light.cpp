@@ -29,7 +29,7 @@ glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
 
 }  // namespace
 
-GpuLight packLight(const LightInstance& instance) {
+GpuLight packLight(const LightInstance& instance, uint32_t textureSlot) {
     const content::Light& l = instance.light;
     GpuLight g{};
     store(g.position, instance.position);
@@ -72,8 +72,9 @@ GpuLight packLight(const LightInstance& instance) {
     g.spotScale = 1.0f / std::max(cosInner - cosOuter, 1e-4f);
     g.spotOffset = -cosOuter * g.spotScale;
     if (area) {
-        // No cone: spotOffset carries the per-light quality (area_lights.glsl).
-        g.spotScale = 1.0f;
+        // No cone: spotOffset carries the per-light quality, spotScale 1 + a textured rect's
+        // atlas slot (area_lights.glsl); culling reads neither for a half-space bound.
+        g.spotScale = 1.0f + (l.type == content::LightType::Rect ? float(textureSlot) : 0.0f);
         g.spotOffset = float(uint32_t(l.quality));
     }
     // Point and spot lights have no shape parameters: shape[0] carries the quality for their

@@ -23,6 +23,7 @@ static_assert(sizeof(GpuLight) == 80, "std430 layout of struct Light");
 
 // Converts photometric units (lumens -> candela, lux) and cone angles; sanitises values that
 // would poison the image (negative or non-finite inputs become a light that adds nothing).
-GpuLight packLight(const LightInstance& light);
+// `textureSlot`: a textured rect's 1 + atlas tile (lights/area_light_textures.h), 0 untextured.
+GpuLight packLight(const LightInstance& light, uint32_t textureSlot = 0);
 
 }  // namespace candela::render

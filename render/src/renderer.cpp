@@ -20,6 +20,7 @@
 #include "ibl/environment_brdf_lut.h"
 #include "ibl/environment_descriptors.h"
 #include "ibl/environment_sampling_table.h"
+#include "lights/area_light_textures.h"
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
 #include "lights/ltc_table_texture.h"
@@ -270,6 +271,7 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     lightingPass_ = std::make_unique<LightingPass>(context_);
     environmentPlaceholders_ = std::make_unique<EnvironmentPlaceholders>(context_);
     ltcTable_ = std::make_unique<LtcTableTexture>(context_);
+    areaLightTextures_ = std::make_unique<AreaLightTextures>(context_);
     transparentPass_ = std::make_unique<ForwardTransparentPass>(
         context_, forwardMsaaSamples(context_, options_.msaaSamples));
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
@@ -387,7 +389,10 @@ void Renderer::restartTemporalHistory() {
 
 void Renderer::uploadFrameData(const FrameInputs& inputs) {
     const FrameScene& scene = inputs.scene;
-    lights_->update(context_, scene.lights, scene.changedLights, scene.lightsRestructured);
+    // Textured rects' images first: a changed atlas moves slots, so every light is repacked.
+    const bool texturesMoved = areaLightTextures_->update(context_, scene.lights);
+    lights_->update(context_, scene.lights, scene.changedLights,
+                    scene.lightsRestructured || texturesMoved, areaLightTextures_.get());
     const CameraView& view = scene.camera;
     clusters_->setView(view, width_, height_);
 
@@ -682,6 +687,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         samplingTable_ && features.ibl == IblMode::Reference ? &samplingTable_->buffer() : nullptr);
     environment.ltcMatrix = ltcTable_->matrix();
     environment.ltcMagnitude = ltcTable_->magnitude();
+    environment.areaLightTextures = areaLightTextures_->descriptor();
     const float skyIntensity = inputs.scene.skyIntensity;
     {
         auto p = g.addPass(

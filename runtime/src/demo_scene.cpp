@@ -1,4 +1,5 @@
 #include "demo_scene.h"
+#include "demo_screen_image.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +18,7 @@
 #include "candela/content/diagnostics.h"
 #include "candela/content/environment_map.h"
 #include "candela/content/exr_image.h"
+#include "candela/content/light_texture.h"
 #include "candela/content/procedural_mesh.h"
 #include "candela/ecs/hierarchy.h"
 #include "candela/ecs/transform.h"
@@ -474,6 +476,18 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
         place(registry, "window rect light", {-6.45f, 2.4f, 1.0f},
               ecs::Quat::fromAxisAngle({0.0f, 1.0f, 0.0f}, -0.5f * kPi)),
         window);
+
+    // A screen on the right wall facing the hall: a rect light showing a test card (a textured
+    // rect, issue 15), its -Z turned to -X.
+    content::Light screen = pointLight({1.0f, 1.0f, 1.0f}, 2000.0f, 8.0f);
+    screen.type = content::LightType::Rect;
+    screen.width = 2.0f;
+    screen.height = 1.125f;
+    screen.texture = content::registerLightTexture("", demoScreenImage());
+    registry.emplace<content::Light>(
+        place(registry, "screen rect light", {6.45f, 2.6f, 0.5f},
+              ecs::Quat::fromAxisAngle({0.0f, 1.0f, 0.0f}, 0.5f * kPi)),
+        screen);
 
     // Hundreds of coloured lights drifting through the hall; each has its own Lissajous
     // figure, so the pattern never visibly repeats within the tour.

@@ -7,7 +7,9 @@
 #include <numbers>
 
 #include "candela/content/gltf_loader.h"
+#include "candela/content/light_texture.h"
 #include "candela/content/light_units.h"
+#include "candela/content/png_writer.h"
 #include "gltf_test_documents.h"
 #include "test_paths.h"
 
@@ -189,6 +191,49 @@ TEST(GltfFeatures, ExtrasShapeMakesRectAndDiskLights) {
     EXPECT_NE(messages.find("lights[2].extras.width"), std::string::npos) << messages;
     EXPECT_NE(messages.find("lights[3]"), std::string::npos) << messages;
     EXPECT_NE(messages.find("lights[4].extras.shape"), std::string::npos) << messages;
+}
+
+// Issue 15: extras.texture names a rect light's emissive image, relative to the glTF file. A
+// file that cannot be used is an error naming extras.texture, the light and the file; the rect
+// stays a rect, untextured.
+TEST(GltfFeatures, ExtrasTextureGivesARectItsImage) {
+    const std::filesystem::path gltf = testing::tempPath("screen.gltf");
+    const std::uint8_t texels[2 * 1 * 4] = {255, 0, 0, 255, 0, 0, 255, 255};
+    ASSERT_EQ(writePng(gltf.parent_path() / "card.png", 2, 1, 4, texels), "");
+    json doc = quadDocument();
+    doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    auto rect = [](const char* name, const char* texture) {
+        return json{
+            {"type", "point"},
+            {"name", name},
+            {"intensity", 50.0},
+            {"extras", {{"shape", "rect"}, {"width", 1.6}, {"height", 0.9}, {"texture", texture}}}};
+    };
+    doc["extensions"]["KHR_lights_punctual"]["lights"] =
+        json::array({rect("screen", "card.png"), rect("broken", "missing.png")});
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics, gltf);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    ASSERT_EQ(m->lights.size(), 2u);
+    const auto screen = findLightTexture(m->lights[0].light.texture);
+    ASSERT_TRUE(screen);
+    EXPECT_EQ(screen->file, "card.png");
+    ASSERT_TRUE(screen->image);
+    EXPECT_EQ(screen->image->width, 2u);
+    EXPECT_EQ(screen->image->rgba[0], 255);
+    EXPECT_EQ(screen->image->rgba[6], 255);
+    const Light& broken = m->lights[1].light;
+    EXPECT_EQ(broken.type, LightType::Rect);
+    EXPECT_GT(broken.lumens, 0.0f);  // still lights, untextured
+    const auto missing = findLightTexture(broken.texture);
+    ASSERT_TRUE(missing);  // the file name is kept (a scene saved again names it)
+    EXPECT_EQ(missing->file, "missing.png");
+    EXPECT_FALSE(missing->image);
+    const std::string messages = diagnostics.toString();
+    EXPECT_NE(messages.find("lights[1].extras.texture"), std::string::npos) << messages;
+    EXPECT_NE(messages.find("'broken'"), std::string::npos) << messages;
+    EXPECT_NE(messages.find("missing.png"), std::string::npos) << messages;
+    EXPECT_EQ(messages.find("lights[0]"), std::string::npos) << messages;
 }
 
 TEST(GltfFeatures, MaterialExtensionsAndEngineExtras) {

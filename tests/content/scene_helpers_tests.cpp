@@ -12,10 +12,14 @@
 
 #include "candela/content/asset_cache.h"
 #include "candela/content/builtin_meshes.h"
+#include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/content/light_texture.h"
+#include "candela/content/png_writer.h"
 #include "candela/content/scene_file.h"
 #include "candela/content/scene_instantiation.h"
+#include "test_paths.h"
 
 namespace candela::content {
 namespace {
@@ -153,6 +157,45 @@ TEST(SceneHelpers, BadLookAtNamesTheElement) {
     EXPECT_TRUE(diagnostics.mentions("/entities/2/transform/lookAt/1"));
     // A bad transform is dropped whole (the entity keeps the identity), as other bad values.
     EXPECT_EQ(scene->entities[2].transform.translation, (std::array<float, 3>{0, 0, 0}));
+}
+
+// Issue 15: a rect's "texture" is decoded when the scene is instantiated, relative to the scene
+// file; an unreadable one is an error naming the file, the element, the light and the image, the
+// rect stays (untextured), and saving writes the name back.
+TEST(SceneHelpers, RectLightTexturesLoadAtInstantiationAndSaveBack) {
+    const std::filesystem::path sceneFile = testing::tempPath("level.scene.json");
+    const std::uint8_t texel[4] = {10, 200, 30, 255};
+    ASSERT_EQ(writePng(sceneFile.parent_path() / "card.png", 1, 1, 4, texel), "");
+    Diagnostics diagnostics;
+    auto scene = parse(R"(
+        {"name": "screen", "light": {"type": "rect", "width": 1.6, "height": 0.9,
+                                     "texture": "card.png"}},
+        {"name": "broken", "light": {"type": "rect", "texture": "gone.png"}})",
+                       diagnostics);
+    ASSERT_TRUE(scene) << diagnostics.toString();
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.toString();
+    ecs::Registry registry;
+    AssetCache cache;
+    const auto entities = instantiateScene(registry, *scene, sceneFile, cache, diagnostics);
+    ASSERT_EQ(entities.size(), 2u);
+    const auto screen = findLightTexture(registry.get<Light>(entities[0]).texture);
+    ASSERT_TRUE(screen);
+    ASSERT_TRUE(screen->image);
+    EXPECT_EQ(screen->image->rgba[1], 200);
+    const Light& broken = registry.get<Light>(entities[1]);
+    EXPECT_EQ(broken.type, LightType::Rect);
+    ASSERT_TRUE(findLightTexture(broken.texture));
+    EXPECT_FALSE(findLightTexture(broken.texture)->image);
+    const std::string messages = diagnostics.toString();
+    EXPECT_NE(messages.find("/entities/1/light/texture"), std::string::npos) << messages;
+    EXPECT_NE(messages.find("'broken'"), std::string::npos) << messages;
+    EXPECT_NE(messages.find("gone.png"), std::string::npos) << messages;
+    EXPECT_EQ(messages.find("/entities/0/"), std::string::npos) << messages;
+
+    std::string error;
+    const std::string saved = sceneToJson(*scene, error);
+    EXPECT_NE(saved.find("\"texture\": \"card.png\""), std::string::npos) << saved;
+    EXPECT_NE(saved.find("\"texture\": \"gone.png\""), std::string::npos) << saved;
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 // KHR_lights_punctual lights -> engine Light components (photometric units, SPEC.md), and
 // glTF cameras -> engine Camera components.
 #include <algorithm>
+#include <filesystem>
 #include <numbers>
 
 #include "candela/content/component_validation.h"
+#include "candela/content/light_texture.h"
 #include "candela/content/light_types.h"
 #include "candela/content/light_units.h"
 #include "gltf_context.h"
@@ -101,6 +103,33 @@ NamedLight convertLight(Context& context, const tinygltf::Light& source,
         } else {
             context.warning(element + ".extras",
                             std::string(f.name) + " must be a finite number >= 0; ignored");
+        }
+    }
+    // Engine extension (issue 15): extras.texture, a PNG or JPEG file relative to the glTF
+    // file, is the emissive image of a rect light. Unreadable: an error naming the file and
+    // the light, and the rect stays untextured.
+    if (const tinygltf::Value* texture = member(source.extras, "texture")) {
+        const std::string where = element + ".extras.texture";
+        if (light.type != LightType::Rect) {
+            context.warning(where,
+                            "only a rect light (extras.shape \"rect\") has a texture; "
+                            "ignored");
+        } else if (!texture->IsString() || texture->Get<std::string>().empty()) {
+            context.error(where,
+                          "must be a file name (a PNG or JPEG image); the rect is "
+                          "untextured");
+        } else {
+            const std::string name = texture->Get<std::string>();
+            const std::filesystem::path file =
+                std::filesystem::path(context.file).parent_path() / name;
+            std::string problem;
+            auto image = loadLightTexture(file, problem);
+            const bool loaded = image != nullptr;
+            light.texture = registerLightTexture(name, std::move(image));
+            if (!loaded) {
+                context.error(where, "light '" + source.name + "': cannot use " + file.string() +
+                                         ": " + problem + "; the rect is untextured");
+            }
         }
     }
     // Engine extension: extras.castShadows (bool), else the type's default.

@@ -8,6 +8,7 @@
 #include "candela/content/components/animation.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/content/light_texture.h"
 #include "candela/content/model_instantiation.h"
 #include "scene_animation.h"
 
@@ -112,7 +113,25 @@ std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDo
         if (!source.materialOverrides.empty()) {
             registry.emplace<MaterialOverrides>(e, MaterialOverrides{source.materialOverrides});
         }
-        if (source.light) registry.emplace<Light>(e, *source.light);
+        if (source.light) {
+            Light light = *source.light;
+            const auto texture = findLightTexture(light.texture);
+            if (texture && !texture->image && !texture->file.empty()) {
+                // A rect's emissive image (issue 15); unreadable: untextured, with an error.
+                const std::filesystem::path file = resolveScenePath(sceneFile, texture->file);
+                std::string problem;
+                auto image = loadLightTexture(file, problem);
+                if (image) {
+                    light.texture = registerLightTexture(texture->file, std::move(image));
+                } else {
+                    diagnostics.error(sceneFile.string(),
+                                      "/entities/" + std::to_string(i) + "/light/texture",
+                                      "light '" + source.name + "': cannot use " + file.string() +
+                                          ": " + problem + "; the rect is untextured");
+                }
+            }
+            registry.emplace<Light>(e, light);
+        }
         if (source.camera) registry.emplace<Camera>(e, *source.camera);
         if (source.sky) registry.emplace<Sky>(e, *source.sky);
         if (source.fog) registry.emplace<Fog>(e, *source.fog);

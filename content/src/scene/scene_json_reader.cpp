@@ -8,6 +8,7 @@
 
 #include "candela/content/builtin_meshes.h"
 #include "candela/content/component_validation.h"
+#include "candela/content/light_texture.h"
 #include "candela/content/scene_file.h"
 #include "scene_json_names.h"
 
@@ -352,6 +353,10 @@ public:
         l.castShadows = lightTypeInfo(l.type).castsShadowsByDefault;
         boolean(j, p, kCastShadowsKey, l.castShadows);
         enumeration(j, p, "quality", kAreaLightQualities, l.quality);
+        // A rect's emissive image, relative to the scene file (decoded when instantiated).
+        std::string texture;
+        string(j, p, "texture", texture);
+        if (!texture.empty()) l.texture = registerLightTexture(texture, nullptr);
         // Every field of the light type table (content/light_types.h), whatever the type.
         for (const LightFieldInfo& f : kLightFieldTable) {
             if (f.channels) {

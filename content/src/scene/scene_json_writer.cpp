@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "candela/content/light_texture.h"
 #include "candela/content/scene_file.h"
 #include "scene_json_names.h"
 
@@ -143,6 +144,9 @@ struct Writer {
         out[kCastShadowsKey] = l.castShadows;
         if (l.quality != AreaLightQuality::Default) {
             out["quality"] = nameOf(kAreaLightQualities, l.quality);
+        }
+        if (const auto texture = findLightTexture(l.texture); texture && !texture->file.empty()) {
+            out["texture"] = texture->file;
         }
         return out;
     }

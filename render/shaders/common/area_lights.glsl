@@ -15,6 +15,7 @@
 #define CANDELA_AREA_LIGHTS_GLSL
 
 #include "common/area_light_representative.glsl"
+#include "common/area_light_texture.glsl"
 #include "common/ltc.glsl"
 #include "common/ltc_area_lights.glsl"
 #include "common/ltc_disk.glsl"
@@ -59,6 +60,68 @@ float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv) {
     return ltcPolygonIntegral(minv, polygon, 4);
 }
 
+// A textured rect's atlas slot (Light.spotScale = 1 + slot, gpu_light.cpp); 0: untextured, and
+// always 0 where the shader binds no atlas.
+uint areaTextureSlot(Light light) {
+#ifdef AREA_LIGHT_TEXTURED
+    return light.type == LIGHT_TYPE_RECT ? uint(max(light.spotScale, 1.0) + 0.5) - 1u : 0u;
+#else
+    return 0u;
+#endif
+}
+
+// The image a lobe sees on a textured rect, by LTC (Heitz et al. 2016, section 5.3): in the
+// lobe's cosine space (the rect moved by M^-1, where the lobe is a plain cosine) the point
+// where the rect's mean direction `direction` (ltcPolygonVectorSum) meets it; the mip from the
+// cosine's footprint there, twice the plane's distance (half the cosine's power falls within 45
+// degrees), against the moved rect's size. M^-1 is linear, so the moved rect's affine
+// coordinates are the image's uv.
+vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction) {
+#ifdef AREA_LIGHT_TEXTURED
+    vec3 p0 = minv * polygon[0];
+    vec3 e1 = minv * polygon[1] - p0;  // along the rect's +X
+    vec3 e2 = minv * polygon[3] - p0;  // along its +Y
+    vec3 n = cross(e1, e2);
+    float area = length(n);
+    float offset = dot(n, p0);  // area x the plane's distance
+    float approach = dot(n, direction);
+    // Nothing above the horizon (direction 0): the integral is 0, any point will do.
+    vec3 hit = abs(approach) > 1e-12 * area * length(direction) ? direction * (offset / approach)
+                                                                 : p0 + 0.5 * (e1 + e2);
+    vec3 d = hit - p0;
+    float e11 = dot(e1, e1), e12 = dot(e1, e2), e22 = dot(e2, e2);
+    float det = max(e11 * e22 - e12 * e12, 1e-30);
+    vec2 uv = vec2(e22 * dot(d, e1) - e12 * dot(d, e2), e11 * dot(d, e2) - e12 * dot(d, e1)) / det;
+    float lod = areaLightTextureLod(2.0 * abs(offset) / max(area, 1e-30), sqrt(area));
+    return areaLightTexture(slot, clamp(uv, vec2(0.0), vec2(1.0)), lod);
+#else
+    return vec3(1.0);
+#endif
+}
+
+// areaShapeIntegral, and in `texel` what a textured rect (slot > 0) shows the lobe (1 for an
+// untextured shape): one edge sum gives both.
+float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv, uint slot, out vec3 texel) {
+    texel = vec3(1.0);
+    if (s.isDisk || slot == 0u) return areaShapeIntegral(s, P, toLocal, minv);
+    vec3 polygon[4];
+    rectPolygon(s, P, toLocal, polygon);
+    vec3 sum = ltcPolygonVectorSum(minv, polygon, 4);
+    texel = areaLtcTexture(slot, polygon, minv, sum);
+    return max(sum.z * (0.5 / PI), 0.0);
+}
+
+// The image at plane coordinates q of a textured rect, filtered over `footprint` metres.
+vec3 areaPlaneTexture(AreaShape s, uint slot, vec2 q, float footprint) {
+#ifdef AREA_LIGHT_TEXTURED
+    if (slot == 0u) return vec3(1.0);
+    vec2 uv = clamp(q / max(2.0 * s.halfSize, vec2(1e-12)) + 0.5, vec2(0.0), vec2(1.0));
+    return areaLightTexture(slot, uv, areaLightTextureLod(footprint, sqrt(areaShapeArea(s))));
+#else
+    return vec3(1.0);
+#endif
+}
+
 // Exact irradiance per unit luminance (pi x the form factor) at P with normal N.
 float areaExactDiffuse(AreaShape s, vec3 P, vec3 N) {
     if (dot(P - s.center, s.normal) <= 0.0) return 0.0;  // behind: one-sided
@@ -97,32 +160,76 @@ float areaLtcSpecular(AreaShape s, vec3 P, vec3 N, vec3 V, float roughness,
 }
 #endif
 
+// Representative mode's texture reads (seed 004 section 1 gives none; the image at the sample
+// point, pre-filtered over the lobe's footprint on the rect): diffuse at the sample along L,
+// over twice the height (the cosine's footprint, as in the LTC read); specular at the centre of
+// the cone's intersection (along L), over the cone's footprint there (2 t tan alpha).
+vec3 areaRepresentativeDiffuseTexture(AreaShape s, uint slot, vec3 P, vec3 L) {
+    if (slot == 0u) return vec3(1.0);
+    bool hit;
+    float t;
+    vec2 q = areaPlaneHit(s, P, L, areaPlaneCoords(s, P), hit, t);
+    return areaPlaneTexture(s, slot, q, 2.0 * dot(P - s.center, s.normal));
+}
+vec3 areaRepresentativeSpecularTexture(AreaShape s, uint slot, vec3 P, vec3 L, float alpha) {
+    if (slot == 0u) return vec3(1.0);
+    bool hit;
+    float t;
+    vec2 q = areaPlaneHit(s, P, L, areaPlaneCoords(s, P), hit, t);
+    return areaPlaneTexture(s, slot, q, 2.0 * t * tan(min(alpha, 1.5)));
+}
+
 LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alpha,
                                  bool representative) {
     AreaShape s = areaShapeOf(light);
     vec3 toCenter = s.center - P;
     float window = attenuationWindow(dot(toCenter, toCenter), light.invAttenuationRadius);
     vec3 luminance = light.intensity * window;
+    uint slot = areaTextureSlot(light);
+    // A textured rect's image as each lobe sees it (1 untextured): by LTC where the lobe's
+    // mean direction meets the rect; in representative mode at the sample point, over the
+    // footprint of the cosine (twice the height) or of the seed's specular cone.
+    vec3 diffuseTexel = vec3(1.0);
+    vec3 specularTexel = vec3(1.0);
+    float height = dot(-toCenter, s.normal);
 
     LightIncidence o;
     vec3 representativeL;
     float representativeDiffuse = areaRepresentativeDiffuse(s, P, N, false, representativeL);
     o.diffuseL = representativeL;
-    float diffuse = representative ? representativeDiffuse : areaExactDiffuse(s, P, N);
+    float diffuse;
+    if (representative) {
+        diffuse = representativeDiffuse;
+        diffuseTexel = areaRepresentativeDiffuseTexture(s, slot, P, representativeL);
+    } else {
+        diffuse = height <= 0.0 ? 0.0
+                                : PI * areaShapeIntegral(s, P, transpose(tangentFrame(N)),
+                                                         mat3(1.0), slot, diffuseTexel);
+    }
     o.specularLtc = vec2(0.0);
     float specular;
 #ifdef AREA_LIGHT_LTC_MATRIX_BINDING
     if (!representative) {
         vec3 V = 2.0 * dot(N, R) * N - R;  // R = reflect(-V, N)
-        specular = areaLtcSpecular(s, P, N, V, sqrt(alpha), o.specularLtc);
+        if (slot == 0u) {
+            specular = areaLtcSpecular(s, P, N, V, sqrt(alpha), o.specularLtc);
+        } else {
+            vec2 uv = ltcTableUv(sqrt(alpha), saturate(dot(N, V)));
+            o.specularLtc = texture(ltcMagnitudeTable, uv).xy;
+            specular = height <= 0.0 ? 0.0
+                                     : areaShapeIntegral(s, P, ltcShadingFrame(N, V),
+                                                         ltcInverseMatrix(texture(ltcMatrixTable, uv)),
+                                                         slot, specularTexel);
+        }
         o.specularL = R;
     } else
 #endif
     {
         specular = areaRepresentativeSpecular(s, P, N, R, alpha, o.specularL);
+        specularTexel = areaRepresentativeSpecularTexture(s, slot, P, o.specularL, alpha);
     }
-    o.diffuseIlluminance = luminance * diffuse;
-    o.specularIlluminance = luminance * specular;
+    o.diffuseIlluminance = luminance * diffuse * diffuseTexel;
+    o.specularIlluminance = luminance * specular * specularTexel;
     // Normal incidence, no surface cosine (wrap and transmission).
     vec3 unused;
     o.incidentIlluminance = luminance * areaPointIrradiance(s, P, safeNormalize(toCenter), s.center,

@@ -9,14 +9,19 @@
 
 #include "math.glsl"
 
-// The z-component of one edge's vector form factor for unit v1, v2: the angle between them
-// times the z of their normalised cross product. The angle from atan of the half-chord is
-// accurate at small and at large angles alike (acos of the dot product is not near 0).
-float ltcEdgeIntegral(vec3 v1, vec3 v2) {
+// One edge's vector form factor (times 2 pi) for unit v1, v2: the angle between them times
+// their normalised cross product. The angle from atan of the half-chord is accurate at small and
+// at large angles alike (acos of the dot product is not near 0).
+vec3 ltcEdgeVector(vec3 v1, vec3 v2) {
     vec3 c = cross(v1, v2);
     float sinTheta = length(c);
     float theta = 2.0 * atan(length(v1 - v2), length(v1 + v2));
-    return c.z * (theta / max(sinTheta, 1e-7));
+    return c * (theta / max(sinTheta, 1e-7));
+}
+
+// Its z-component: the edge's share of the cosine integral.
+float ltcEdgeIntegral(vec3 v1, vec3 v2) {
+    return ltcEdgeVector(v1, v2).z;
 }
 
 // Sutherland-Hodgman against z >= 0: a convex polygon of `count` vertices (3 or 4) keeps at
@@ -34,25 +39,34 @@ int ltcClipToHorizon(vec3 polygon[4], int count, out vec3 clipped[5]) {
     return n;
 }
 
-// The integral of the cosine lobe moved by M over a convex polygon (3 or 4 vertices, relative
-// to the shading point), given M^-1. Vertices wind clockwise as seen from the lit side; the
-// polygon's back side receives nothing (one-sided emitters).
-float ltcPolygonIntegral(mat3 minv, vec3 polygon[4], int count) {
+// The vector form factor (times 2 pi) of a convex polygon (3 or 4 vertices, relative to the
+// shading point) moved by M^-1 and clipped to the horizon: the sum of its edges' vectors. Its z
+// is 2 pi x the cosine lobe's integral; its direction is the polygon's mean direction (by solid
+// angle) in the lobe's cosine space, where a textured rect reads its image (area_lights.glsl).
+// Vertices wind clockwise as seen from the lit side; zero when nothing is above the horizon.
+vec3 ltcPolygonVectorSum(mat3 minv, vec3 polygon[4], int count) {
     vec3 moved[4];
     for (int i = 0; i < count; ++i) moved[i] = minv * polygon[i];
     vec3 clipped[5];
     int n = ltcClipToHorizon(moved, count, clipped);
-    if (n < 3) return 0.0;
-    float sum = 0.0;
+    if (n < 3) return vec3(0.0);
+    vec3 sum = vec3(0.0);
     vec3 first = safeNormalize(clipped[0]);
     vec3 previous = first;
     for (int i = 1; i < n; ++i) {
         vec3 current = safeNormalize(clipped[i]);
-        sum += ltcEdgeIntegral(previous, current);
+        sum += ltcEdgeVector(previous, current);
         previous = current;
     }
-    sum += ltcEdgeIntegral(previous, first);
-    return max(sum * (0.5 / PI), 0.0);
+    sum += ltcEdgeVector(previous, first);
+    return sum;
+}
+
+// The integral of the cosine lobe moved by M over a convex polygon (3 or 4 vertices, relative
+// to the shading point), given M^-1. Vertices wind clockwise as seen from the lit side; the
+// polygon's back side receives nothing (one-sided emitters).
+float ltcPolygonIntegral(mat3 minv, vec3 polygon[4], int count) {
+    return max(ltcPolygonVectorSum(minv, polygon, count).z * (0.5 / PI), 0.0);
 }
 
 #endif

@@ -27,6 +27,8 @@ struct EnvironmentDescriptors {
     // (lights/ltc_table_texture.h), filled in by the renderer.
     VkDescriptorImageInfo ltcMatrix{};
     VkDescriptorImageInfo ltcMagnitude{};
+    // Textured rect lights' images (lights/area_light_textures.h).
+    VkDescriptorImageInfo areaLightTextures{};
 };
 
 class EnvironmentPlaceholders {

@@ -4,11 +4,13 @@
 #include <glm/glm.hpp>
 
 #include "gpu_light.h"
+#include "lights/area_light_textures.h"
 
 namespace candela::render {
 
 void GpuLightBuffer::update(GpuContext& context, std::span<const LightInstance> lights,
-                            std::span<const uint32_t> changed, bool rewriteAll) {
+                            std::span<const uint32_t> changed, bool rewriteAll,
+                            const AreaLightTextures* textures) {
     count_ = uint32_t(lights.size());
     if (count_ > capacity_ || !buffer_.handle()) {
         capacity_ = std::max<uint32_t>(64, std::max(count_, capacity_ * 2));
@@ -19,20 +21,21 @@ void GpuLightBuffer::update(GpuContext& context, std::span<const LightInstance> 
     rewritten_ = 0;
     if (rewriteAll) {
         for (uint32_t i = 0; i < count_; ++i)
-            write(i, lights[i]);
+            write(i, lights[i], textures);
         rewritten_ = count_;
         return;
     }
     for (uint32_t slot : changed) {
         if (slot < count_) {
-            write(slot, lights[slot]);
+            write(slot, lights[slot], textures);
             ++rewritten_;
         }
     }
 }
 
-void GpuLightBuffer::write(uint32_t slot, const LightInstance& light) {
-    const GpuLight g = packLight(light);
+void GpuLightBuffer::write(uint32_t slot, const LightInstance& light,
+                           const AreaLightTextures* textures) {
+    const GpuLight g = packLight(light, textures ? textures->slotOf(light.light.texture) : 0u);
     auto* streams = static_cast<glm::vec4*>(buffer_.mapped());
     glm::vec4* stream[kStreams];
     for (uint32_t s = 0; s < kStreams; ++s)

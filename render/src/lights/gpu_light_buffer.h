@@ -10,6 +10,7 @@
 
 namespace candela::render {
 
+class AreaLightTextures;
 class GpuContext;
 
 class GpuLightBuffer {
@@ -17,9 +18,11 @@ public:
     static constexpr uint32_t kStreams = 5;
 
     // Brings the buffer in line with `lights`; rewrites `changed` slots, or all of them when
-    // `rewriteAll` (new or removed lights, first use).
+    // `rewriteAll` (new or removed lights, first use). `textures`: where textured rects' images
+    // sit (null: every rect untextured).
     void update(GpuContext& context, std::span<const LightInstance> lights,
-                std::span<const uint32_t> changed, bool rewriteAll);
+                std::span<const uint32_t> changed, bool rewriteAll,
+                const AreaLightTextures* textures = nullptr);
 
     const GpuBuffer& buffer() const { return buffer_; }
     uint32_t capacity() const { return capacity_; }
@@ -27,7 +30,7 @@ public:
     uint32_t rewrittenLastUpdate() const { return rewritten_; }
 
 private:
-    void write(uint32_t slot, const LightInstance& light);
+    void write(uint32_t slot, const LightInstance& light, const AreaLightTextures* textures);
 
     GpuBuffer buffer_;
     uint32_t capacity_ = 0;

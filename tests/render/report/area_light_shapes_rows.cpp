@@ -64,10 +64,18 @@ std::vector<std::array<double, 2>> viewsFor(double size) {
     return views;
 }
 
+// The textured rect's image (shaders/report_light_texture.glsl): quadrants of luminance
+// (u < 1/2 ? 1.5 : 0.5) x (v < 1/2 ? 1.5 : 0.5) in the rect's (u, v), average 1.
+double reportTexture(double u, double v) {
+    return (u < 0.5 ? 1.5 : 0.5) * (v < 0.5 ? 1.5 : 0.5);
+}
+
 // Diffuse irradiance and specular D Vis(height-correlated Smith) NoL, F0 = 1, per unit
 // luminance, integrated over the light by the midpoint rule (n x n points: the rect's grid, the
-// disk's radius x angle).
-std::array<double, 2> reference(bool disk, double size, const Vec3& V, double alpha, int n) {
+// disk's radius x angle); a textured rect's luminance times its image at each point (n even:
+// no point on the image's edges).
+std::array<double, 2> reference(bool disk, bool textured, double size, const Vec3& V, double alpha,
+                                int n) {
     double diffuse = 0.0, specular = 0.0;
     const double half = 0.5 * size;
     for (int i = 0; i < n; ++i) {
@@ -81,6 +89,7 @@ std::array<double, 2> reference(bool disk, double size, const Vec3& V, double al
                 u = ((i + 0.5) / n - 0.5) * size, v = ((j + 0.5) / n - 0.5) * size;
                 area = (size / n) * (size / n);
             }
+            if (textured) area *= reportTexture((i + 0.5) / n, (j + 0.5) / n);
             const Vec3 p = kCentre + u * kAcross + v * kAxisY;
             const double distanceSq = ref::dot(p, p);
             const Vec3 L = unit(p);
@@ -148,6 +157,7 @@ void addAreaLightShapeRows(ReportContext& context) {
         const char* name;
         bool disk;
         Mode mode;
+        bool textured = false;
     };
     const Variant variants[] = {
         {"Rect light: representative point (seed 004 section 1)", false, kRepresentative},
@@ -158,7 +168,13 @@ void addAreaLightShapeRows(ReportContext& context) {
         {"Disk light: representative, unclamped p' / p'' (diffuse)", true,
          kRepresentativeUnclamped},
         {"Disk light: LTC (Heitz-Hill disk integral, fitted specular)", true, kLtc},
+        {"Textured rect light: representative point, image at the sample", false, kRepresentative,
+         true},
+        {"Textured rect light: LTC, image where the lobe's mean direction meets it", false, kLtc,
+         true},
     };
+    // Which reference set a variant reads: rect, disk, textured rect.
+    const auto referenceSet = [](const Variant& v) { return v.textured ? 2 : v.disk ? 1 : 0; };
     // The references, once per shape: [disk][roughness][size][view] -> (diffuse, specular).
     std::vector<AreaShapeSample> samples;
     std::vector<std::array<double, 2>> references;
@@ -173,10 +189,11 @@ void addAreaLightShapeRows(ReportContext& context) {
                     s.b = {float(V[0]), float(V[1]), float(V[2]), float(roughness)};
                     s.c = {float(kAcross[0]), float(kAcross[1]), float(kAcross[2]),
                            float(0.5 * size)};
-                    s.d = {float(0.5 * size), float(variant.mode), 0.0f, 0.0f};
+                    s.d = {float(0.5 * size), float(variant.mode), variant.textured ? 1.0f : 0.0f,
+                           0.0f};
                     samples.push_back(s);
                     if (variant.mode == kRepresentative) {  // the first variant of each shape
-                        references.push_back(reference(variant.disk, size, V,
+                        references.push_back(reference(variant.disk, variant.textured, size, V,
                                                        ref::alphaFromRoughness(roughness), grid));
                     }
                 }
@@ -192,8 +209,10 @@ void addAreaLightShapeRows(ReportContext& context) {
         {CostFunction::RectLtc, iterations},
         {CostFunction::DiskRepresentative, iterations},
         {CostFunction::DiskLtc, iterations},
+        {CostFunction::TexturedRectRepresentative, iterations},
+        {CostFunction::TexturedRectLtc, iterations},
     });
-    const Cost* costOf[] = {&ns[1], &ns[1], &ns[2], &ns[3], &ns[3], &ns[4]};
+    const Cost* costOf[] = {&ns[1], &ns[1], &ns[2], &ns[3], &ns[3], &ns[4], &ns[5], &ns[6]};
 
     ReportTable table;
     table.title = "Rect and disk lights: error by roughness and size";
@@ -205,7 +224,12 @@ void addAreaLightShapeRows(ReportContext& context) {
         "reference| / sum reference), diffuse / specular. Reference: the same BRDF (GGX D, "
         "height-correlated Smith, F0 = 1) "
         "and the irradiance integrated over the light by the midpoint rule in double (" +
-        std::to_string(grid) + "^2 points). LTC reads the checked-in table (fp32, bilinear).";
+        std::to_string(grid) +
+        "^2 points). LTC reads the checked-in table (fp32, bilinear). "
+        "Textured rect: an image of four quadrants of luminance 2.25, 0.75, 0.75, 0.25 (average "
+        "1) on the rect, integrated times the BRDF over the light; the approximations read it "
+        "once per lobe, pre-filtered over the lobe's footprint (the renderer's 256-texel mip "
+        "chain, box-filtered here in closed form).";
     table.header = {"variant", "roughness"};
     for (double size : kSizes) {
         char text[64];
@@ -215,7 +239,7 @@ void addAreaLightShapeRows(ReportContext& context) {
     const size_t perVariant = samples.size() / std::size(variants);
     for (size_t v = 0; v < std::size(variants); ++v) {
         const Variant& variant = variants[v];
-        const size_t shapeBase = (variant.disk ? 1 : 0) * perVariant;
+        const size_t shapeBase = size_t(referenceSet(variant)) * perVariant;
         Errors diffuse, specular;
         size_t k = 0;
         for (double roughness : kRoughness) {

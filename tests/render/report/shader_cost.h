@@ -38,6 +38,9 @@ enum class CostFunction : uint32_t {
     RectLtc = 22,
     DiskRepresentative = 23,
     DiskLtc = 24,
+    // Textured rect lights: the same with the image read once per lobe.
+    TexturedRectRepresentative = 25,
+    TexturedRectLtc = 26,
 };
 
 struct CostJob {

@@ -32,6 +32,7 @@ class FrameGraph;
 class FrameGraphExecutor;
 class FrameSubmitter;
 class LtcTableTexture;
+class AreaLightTextures;
 class GBufferPass;
 class GpuContext;
 class GpuLightBuffer;
@@ -198,6 +199,7 @@ private:
     std::unique_ptr<EnvironmentBrdfLut> brdfLut_;
     std::unique_ptr<EnvironmentPlaceholders> environmentPlaceholders_;
     std::unique_ptr<LtcTableTexture> ltcTable_;  // area lights (lights/ltc_table_texture.h)
+    std::unique_ptr<AreaLightTextures> areaLightTextures_;  // textured rects' images
     std::unique_ptr<EnvironmentSamplingTable> samplingTable_;
     std::vector<std::string> features_;
     RendererStats stats_;

@@ -30,6 +30,10 @@
 // The integrated froxel grid and its shape (common/froxel_lookup.glsl; passes/volumetrics).
 #define FORWARD_BINDING_FROXEL_PARAMS 28
 #define FORWARD_BINDING_FROXEL_INTEGRATED 29
+// Textured rect lights' image atlas (lights/area_light_textures.h); 30 is
+// PREVIOUS_WORLDS_BINDING.
+#define FORWARD_BINDING_AREA_LIGHT_TEXTURES 31
+#define AREA_LIGHT_TEXTURE_BINDING FORWARD_BINDING_AREA_LIGHT_TEXTURES
 
 // transparent_occupancy.frag (camera in its vertex stage, gbuffer.vert).
 #define TRANSPARENT_OCCUPANCY_BINDING_DEPTH 1

@@ -211,6 +211,8 @@ void ForwardTransparentPass::buildShadingPipeline() {
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
+        {FORWARD_BINDING_AREA_LIGHT_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_FRAGMENT_BIT},
     };
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
         bindings.push_back({FORWARD_BINDING_FIRST_TEXTURE + slot,
@@ -406,7 +408,9 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
             sampledImageWrite(FORWARD_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
             sampledImageWrite(FORWARD_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude),
             uniformBufferWrite(FORWARD_BINDING_FROXEL_PARAMS, &froxelParamsInfo),
-            storageBufferWrite(FORWARD_BINDING_FROXEL_INTEGRATED, &froxelInfo)};
+            storageBufferWrite(FORWARD_BINDING_FROXEL_INTEGRATED, &froxelInfo),
+            sampledImageWrite(FORWARD_BINDING_AREA_LIGHT_TEXTURES,
+                              &in.environment->areaLightTextures)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};

@@ -157,6 +157,8 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
          VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHTING_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_AREA_LIGHT_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
     };
     pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
     built_ = true;
@@ -231,6 +233,7 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
         sampledImageWrite(LIGHTING_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
         sampledImageWrite(LIGHTING_BINDING_LTC_MATRIX, &env.ltcMatrix),
         sampledImageWrite(LIGHTING_BINDING_LTC_MAGNITUDE, &env.ltcMagnitude),
+        sampledImageWrite(LIGHTING_BINDING_AREA_LIGHT_TEXTURES, &env.areaLightTextures),
     };
     Push push{toGpu(*in.grid),           in.directionalCount, in.skyIntensity,
               env.prefilteredMipCount,   in.referenceSamples, in.aoIntensity,

@@ -4,6 +4,7 @@
 // host's double-precision integrals over the light (area_shape_reference.h).
 #extension GL_GOOGLE_include_directive : require
 
+#include "report_light_texture.glsl"
 #include "common/brdf.glsl"
 #include "common/lights.glsl"
 
@@ -12,7 +13,8 @@ layout(local_size_x = 64) in;
 // Must match AreaShapeSample in area_light_shapes_rows.cpp.
 // a.xyz light centre, a.w 1 for a disk; b.xyz V, b.w roughness; c.xyz the light's X axis,
 // c.w half width (disk: radius); d.x half height, d.y mode (0 representative, 1 its unclamped
-// diffuse, 2 ltc). The surface is at the origin with N = +Z; the light faces it.
+// diffuse, 2 ltc), d.z 1 for a textured rect (report_light_texture.glsl's image). The surface is
+// at the origin with N = +Z; the light faces it.
 struct AreaShapeSample {
     vec4 a;
     vec4 b;
@@ -69,16 +71,23 @@ void main() {
     float alpha = alphaFromRoughness(roughness);
     uint mode = uint(s.d.y);
     vec3 P = vec3(0.0);
+    uint slot = s.d.z > 0.5 ? 1u : 0u;
     if (mode == 2u) {
-        float diffuse = areaExactDiffuse(shape, P, N);
+        vec3 diffuseTexel, specularTexel;
+        float diffuse = PI * areaShapeIntegral(shape, P, transpose(tangentFrame(N)), mat3(1.0),
+                                               slot, diffuseTexel);
         vec4 nf = tableBilinear(roughness, V.z, 1u);
         mat3 minv = ltcInverseMatrix(tableBilinear(roughness, V.z, 0u));
-        values[i] = vec2(diffuse, nf.x * areaLtcSpecularIntegral(shape, P, N, V, minv));
+        float specular = nf.x * areaShapeIntegral(shape, P, ltcShadingFrame(N, V), minv, slot,
+                                                  specularTexel);
+        values[i] = vec2(diffuse * diffuseTexel.x, specular * specularTexel.x);
         return;
     }
     vec3 L;
     float diffuse = areaRepresentativeDiffuse(shape, P, N, mode == 1u, L);
+    diffuse *= areaRepresentativeDiffuseTexture(shape, slot, P, L).x;
     float illuminance = areaRepresentativeSpecular(shape, P, N, R, alpha, L);
+    illuminance *= areaRepresentativeSpecularTexture(shape, slot, P, L, alpha).x;
     vec3 H = safeNormalize(V + L);
     float NoL = saturate(L.z);
     float specular = distributionGgx(alpha * alpha, saturate(H.z)) *

@@ -5,6 +5,7 @@
 // loop overhead it subtracts. Loops stay far under llvmpipe's 65,535 iterations per invocation.
 #extension GL_GOOGLE_include_directive : require
 
+#include "report_light_texture.glsl"
 #include "common/ibl.glsl"
 #include "common/lights.glsl"
 #include "area_light_integration.glsl"
@@ -36,6 +37,8 @@ const uint kRectRepresentative = 21u;
 const uint kRectLtc = 22u;
 const uint kDiskRepresentative = 23u;
 const uint kDiskLtc = 24u;
+const uint kTexturedRectRepresentative = 25u;
+const uint kTexturedRectLtc = 26u;
 
 layout(std430, binding = 0) writeonly buffer Sums {
     float sums[];
@@ -102,17 +105,28 @@ AreaShape costShape(bool disk, float size) {
     return s;
 }
 
-float areaShading(bool disk, bool ltc, vec3 V, float roughness, float size) {
+// `slot` 1: a textured rect (report_light_texture.glsl's image, read once per lobe).
+float areaShading(bool disk, bool ltc, vec3 V, float roughness, float size, uint slot) {
     AreaShape s = costShape(disk, size);
     vec3 N = vec3(0.0, 0.0, 1.0);
     float alpha = alphaFromRoughness(roughness);
     if (ltc) {
         mat3 minv = ltcInverseMatrix(vec4(1.0, 0.1 * roughness, -0.1 * roughness, 0.5 + roughness));
-        return areaExactDiffuse(s, vec3(0.0), N) + areaLtcSpecularIntegral(s, vec3(0.0), N, V, minv);
+        if (slot == 0u) {
+            return areaExactDiffuse(s, vec3(0.0), N) + areaLtcSpecularIntegral(s, vec3(0.0), N, V, minv);
+        }
+        vec3 diffuseTexel, specularTexel;
+        float diffuse = PI * areaShapeIntegral(s, vec3(0.0), transpose(tangentFrame(N)), mat3(1.0),
+                                               slot, diffuseTexel);
+        float specular = areaShapeIntegral(s, vec3(0.0), ltcShadingFrame(N, V), minv, slot,
+                                           specularTexel);
+        return diffuse * diffuseTexel.x + specular * specularTexel.x;
     }
     vec3 L;
     float diffuse = areaRepresentativeDiffuse(s, vec3(0.0), N, false, L);
+    diffuse *= areaRepresentativeDiffuseTexture(s, slot, vec3(0.0), L).x;
     float e = areaRepresentativeSpecular(s, vec3(0.0), N, reflect(-V, N), alpha, L);
+    e *= areaRepresentativeSpecularTexture(s, slot, vec3(0.0), L, alpha).x;
     vec3 H = safeNormalize(V + L);
     return diffuse + distributionGgx(alpha * alpha, saturate(H.z)) *
            visibilitySmithGgxCorrelated(alpha, saturate(V.z), saturate(L.z)) * e;
@@ -182,13 +196,19 @@ void main() {
         case kTubeLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV)); break;
         case kPointLightShading: TIMED_LOOP(pointLightShading(AREA_VIEW, 0.1 + 0.9 * y)); break;
         case kRectRepresentative:
-            TIMED_LOOP(areaShading(false, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z));
+            TIMED_LOOP(areaShading(false, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z, 0u));
             break;
-        case kRectLtc: TIMED_LOOP(areaShading(false, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z)); break;
+        case kRectLtc: TIMED_LOOP(areaShading(false, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z, 0u)); break;
         case kDiskRepresentative:
-            TIMED_LOOP(areaShading(true, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z));
+            TIMED_LOOP(areaShading(true, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z, 0u));
             break;
-        case kDiskLtc: TIMED_LOOP(areaShading(true, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z)); break;
+        case kDiskLtc: TIMED_LOOP(areaShading(true, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z, 0u)); break;
+        case kTexturedRectRepresentative:
+            TIMED_LOOP(areaShading(false, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z, 1u));
+            break;
+        case kTexturedRectLtc:
+            TIMED_LOOP(areaShading(false, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z, 1u));
+            break;
         default: break;
     }
     sums[id] = sum;

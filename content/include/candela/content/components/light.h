@@ -8,8 +8,9 @@ namespace candela::content {
 // Rect and Disk (issue 15) are one-sided area emitters facing the node's -Z.
 enum class LightType : std::uint8_t { Point, Spot, Directional, Rect, Disk };
 
-// How an area light (rect, disk) or a sphere or tube light is shaded: the renderer's default (its --area-lights), or a
-// per-light override ("quality" in scene files): seed 004's representative point or LTC.
+// How an area light (rect, disk) or a sphere or tube light is shaded: the renderer's default (its
+// --area-lights), or a per-light override ("quality" in scene files): seed 004's representative
+// point or LTC.
 enum class AreaLightQuality : std::uint8_t { Default, Representative, Ltc };
 
 struct Light {
@@ -33,6 +34,13 @@ struct Light {
     // a Light gets no shadows unless it asks.
     bool castShadows = false;
     AreaLightQuality quality = AreaLightQuality::Default;  // rect, disk, sphere, tube
+    // Rect only: an emissive image on the light (a screen, a window; issue 15): an id into
+    // content/light_texture.h's table (the file as the scene file's "texture" or glTF's
+    // extras.texture names it, and the decoded image), 0 for none. An id keeps Light trivially
+    // copyable (byte-compared change checks). The image modulates the luminance and is scaled so
+    // that its average luminance is the light's Lambertian luminance: lumens = average
+    // luminance x pi x area whatever the image.
+    std::uint32_t texture = 0;
 };
 
 }  // namespace candela::content

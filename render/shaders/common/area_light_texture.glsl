@@ -1,0 +1,57 @@
+// Textured rect lights (issue 15): the emissive image, pre-filtered into a mip chain
+// (render/src/lights/area_light_textures.h: one 256 x 256 tile per image, side by side, texels
+// scaled to average luminance 1), read at one point of the rect with the mip whose texels match
+// the footprint of the lobe there (Heitz et al. 2016, section 5.3). Shaders that bind the atlas
+// define AREA_LIGHT_TEXTURE_BINDING before including lights.glsl; elsewhere a textured rect
+// shades as untextured (its average).
+#ifndef CANDELA_AREA_LIGHT_TEXTURE_GLSL
+#define CANDELA_AREA_LIGHT_TEXTURE_GLSL
+
+const float kAreaLightTextureTile = 256.0;   // AreaLightTextures::kTileSize
+const float kAreaLightTextureMaxLod = 8.0;   // AreaLightTextures::kMipLevels - 1
+
+// The lobe's footprint on the light (its half-power diameter) spans this many texels of the mip
+// read: the lobe's weight is concentrated inside that diameter, and a trilinear read already
+// spreads over about two texels. 3 puts a floor 0.5 m off the centre of a 1.6 x 1 m red/blue rect
+// 1.2 m above it at 1.8 times more of the nearer half's colour (the integral: 2.08; 1 texel: 1.0,
+// the whole image averaged; 8: 16); the report's textured-rect rows measure it over a grid.
+const float kAreaLightTextureTexelsPerFootprint = 3.0;
+
+// The mip for a lobe whose footprint on the light is `footprint` long, the light `size` across.
+float areaLightTextureLod(float footprint, float size) {
+    float texels = footprint / (max(size, 1e-12) * kAreaLightTextureTexelsPerFootprint) *
+                   kAreaLightTextureTile;
+    return clamp(log2(max(texels, 1.0)), 0.0, kAreaLightTextureMaxLod);
+}
+
+#if defined(AREA_LIGHT_TEXTURE_BINDING)
+#define AREA_LIGHT_TEXTURED
+layout(binding = AREA_LIGHT_TEXTURE_BINDING) uniform sampler2D areaLightTextures;
+
+// One mip level of atlas slot `slot` (1 + tile) at `uv` ((0, 0) the rect's -X -Y corner, (1, 1)
+// its +X +Y corner), bilinear, kept half a texel inside the tile so no other image bleeds in.
+// The image reads as seen from the lit side (looking along the node's +Z): its top row along the
+// +Y edge, its left column along the +X edge.
+vec3 areaLightTextureLevel(uint slot, vec2 uv, float level, float tiles) {
+    float margin = 0.5 / (kAreaLightTextureTile * exp2(-level));
+    vec2 inTile = clamp(1.0 - uv, vec2(margin), vec2(1.0 - margin));
+    vec2 atlasUv = vec2((float(slot - 1u) + inTile.x) / tiles, inTile.y);
+    return textureLod(areaLightTextures, atlasUv, level).rgb;
+}
+
+// Trilinear by hand: each of the two levels with its own margin (one margin for both, the
+// coarser's, pinned every read above mip 7 to the tile's centre).
+vec3 areaLightTexture(uint slot, vec2 uv, float lod) {
+    float tiles = float(textureSize(areaLightTextures, 0).x) / kAreaLightTextureTile;
+    float fine = floor(lod);
+    vec3 a = areaLightTextureLevel(slot, uv, fine, tiles);
+    vec3 b = areaLightTextureLevel(slot, uv, min(fine + 1.0, kAreaLightTextureMaxLod), tiles);
+    return mix(a, b, lod - fine);
+}
+#elif defined(AREA_LIGHT_TEXTURE_FUNCTION)
+// The includer (the report's shaders) defines vec3 areaLightTexture(uint slot, vec2 uv,
+// float lod) itself, with the same arguments.
+#define AREA_LIGHT_TEXTURED
+#endif
+
+#endif
