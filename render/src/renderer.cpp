@@ -24,6 +24,7 @@
 #include "lights/gpu_light_types.h"
 #include "lights/ltc_table_texture.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
+#include "passes/atmosphere/atmosphere_pass.h"
 #include "passes/bloom/bloom_pass.h"
 #include "passes/debug_text/debug_text_pass.h"
 #include "passes/exposure/exposure_bindings.h"
@@ -438,6 +439,14 @@ struct Renderer::SceneHandles {
 uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resources,
                                 uint32_t hdrId) {
     FrameGraph& g = *graph_;
+    // The atmosphere's tables come first; its sky cube is the environment the frame lights with.
+    if (inputs.scene.atmosphere) {
+        if (!atmospherePass_) {
+            atmospherePass_ = std::make_unique<AtmospherePass>(context_, options_.atmosphere);
+        }
+        atmospherePass_->declareTables(g, AtmospherePass::frameOf(inputs.scene));
+        resources.setEnvironment(atmospherePass_->environment());
+    }
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
     // Shadow maps for the lights that cast; none, and the variant leaves shadows out.
     features.shadows = shadowPass_->prepare(inputs.scene, resources, options_, width_, height_);
@@ -726,6 +735,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         if (features.countLightPairs) p.write(pairCounts, Use::StorageWrite);
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
+    if (inputs.scene.atmosphere) {
+        features_.push_back("atmosphere");
+        h.hdr = atmospherePass_->declareBackground(g, h.camera, h.depth, h.hdr, cameraBuffer_);
+    }
     ssrTraced_ = false;
     const bool ssrHistoryWas = ssrHistoryValid_;
     ssrHistoryValid_ = false;  // unless this frame filters (a frame without SSR breaks it)
@@ -867,16 +880,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             msaaMotion = e.write(msaaMotion, Use::ColorAttachment);
             msaaDepth = e.write(msaaDepth, Use::DepthWrite);
         }
-        auto p =
-            g.addPass("forward_transparent", PassKind::Device,
-                      [this, shadingInputs, froxels, &resources](PassContext& ctx) {
-                          ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
-                          if (froxels) {
-                              in.froxelParams = &volumetricsPass_->froxelParams();
-                              in.froxelIntegrated = ctx.buffer(*froxels);
-                          }
-                          transparentPass_->recordShading(ctx.cmd(), resources, in);
-                      });
+        auto p = g.addPass("forward_transparent", PassKind::Device,
+                           [this, shadingInputs, froxels, &resources](PassContext& ctx) {
+                               ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
+                               if (froxels) {
+                                   in.froxelParams = &volumetricsPass_->froxelParams();
+                                   in.froxelIntegrated = ctx.buffer(*froxels);
+                               }
+                               transparentPass_->recordShading(ctx.cmd(), resources, in);
+                           });
         if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
         if (msaa) {
             // Drawn into, then resolved into hdr and motion (their last use).
@@ -1315,6 +1327,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.skinningMs = 0.0;
     stats_.aoMs = 0.0;
     stats_.volumetricsMs = 0.0;
+    stats_.skyMs = 0.0;
     stats_.shadowMs = 0.0;
     stats_.ssrMs = 0.0;
     stats_.ssrStepsMean = 0.0;
@@ -1334,6 +1347,7 @@ const RendererStats& Renderer::collectStats() {
         if (name == "skinning") stats_.skinningMs += ms;
         if (name.starts_with("ambient_occlusion_")) stats_.aoMs += ms;
         if (name.starts_with("volumetrics_")) stats_.volumetricsMs += ms;
+        if (name.starts_with("atmosphere_")) stats_.skyMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
         if (name.starts_with("ssr_")) stats_.ssrMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
