@@ -880,15 +880,16 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             msaaMotion = e.write(msaaMotion, Use::ColorAttachment);
             msaaDepth = e.write(msaaDepth, Use::DepthWrite);
         }
-        auto p = g.addPass("forward_transparent", PassKind::Device,
-                           [this, shadingInputs, froxels, &resources](PassContext& ctx) {
-                               ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
-                               if (froxels) {
-                                   in.froxelParams = &volumetricsPass_->froxelParams();
-                                   in.froxelIntegrated = ctx.buffer(*froxels);
-                               }
-                               transparentPass_->recordShading(ctx.cmd(), resources, in);
-                           });
+        auto p =
+            g.addPass("forward_transparent", PassKind::Device,
+                      [this, shadingInputs, froxels, &resources](PassContext& ctx) {
+                          ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
+                          if (froxels) {
+                              in.froxelParams = &volumetricsPass_->froxelParams();
+                              in.froxelIntegrated = ctx.buffer(*froxels);
+                          }
+                          transparentPass_->recordShading(ctx.cmd(), resources, in);
+                      });
         if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
         if (msaa) {
             // Drawn into, then resolved into hdr and motion (their last use).

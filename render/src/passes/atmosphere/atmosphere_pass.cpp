@@ -47,6 +47,7 @@ AtmospherePass::AtmospherePass(GpuContext& context, const AtmosphereSettings& se
     : context_(context),
       settings_(settings),
       linear_(context, SamplerDesc{VK_FILTER_LINEAR, false}),
+      nearest_(context, SamplerDesc{VK_FILTER_NEAREST}),
       filter_(context) {
     const uint32_t pushBytes = sizeof(Push);
     const DescriptorBinding transmittance[] = {storage(ATMOSPHERE_BINDING_DESTINATION)};
@@ -270,7 +271,7 @@ ResourceHandle AtmospherePass::declareBackground(FrameGraph& g, ResourceHandle c
                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
             VkDescriptorImageInfo svIn{linear_.handle(), ctx.image(sv).view(),
                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-            VkDescriptorImageInfo depthIn{linear_.handle(), ctx.image(depth).view(),
+            VkDescriptorImageInfo depthIn{nearest_.handle(), ctx.image(depth).view(),
                                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
             VkDescriptorImageInfo out{VK_NULL_HANDLE, target.view(), VK_IMAGE_LAYOUT_GENERAL};
             VkWriteDescriptorSet writes[] = {

@@ -77,6 +77,7 @@ private:
     GpuContext& context_;
     AtmosphereSettings settings_;
     Sampler linear_;
+    Sampler nearest_;  // the depth (D32 has no linear filtering)
     Pipeline transmittancePipeline_;
     Pipeline multiplePipeline_;
     Pipeline skyViewPipeline_;
