@@ -30,8 +30,10 @@ struct ExtractedFrame {
     float skyIntensity = 1.0f;           // the Sky component's
     std::string skyExrPath;              // the Sky component's file as stored (empty: no sky)
     std::optional<content::Fog> fog;     // a Fog component's medium (the last one seen)
-    std::optional<content::Atmosphere> atmosphere;  // an Atmosphere component's (the last)
     std::vector<render::TextLine> text;  // the frame's DebugText lines (debug_text.h)
+
+    // An Atmosphere component's sky (the last one seen), checked by validateAtmosphere.
+    std::optional<content::Atmosphere> atmosphere;
 
     // GPU materials made for scene-file material overrides, per entity; remade when the
     // entity's MaterialOverrides change.
