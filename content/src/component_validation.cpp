@@ -187,6 +187,73 @@ ValueProblems validateFog(Fog& fog) {
     return problems;
 }
 
+ValueProblems validateAtmosphere(Atmosphere& a) {
+    ValueProblems problems;
+    auto notNegative = [&](const char* field, float value, const char* unit) {
+        if (!finite(value) || value < 0) {
+            reject(problems, field,
+                   std::string("must be finite and not negative") + unit + ", got " + text(value));
+        }
+    };
+    auto positive = [&](const char* field, float value, const char* unit) {
+        if (!finite(value) || !(value > 0)) {
+            reject(problems, field,
+                   std::string("must be finite and positive") + unit + ", got " + text(value));
+        }
+    };
+    for (auto [field, rgb] : {std::pair{"rayleighScattering", &a.rayleighScattering},
+                              std::pair{"ozoneAbsorption", &a.ozoneAbsorption},
+                              std::pair{"groundAlbedo", &a.groundAlbedo}}) {
+        for (float c : *rgb) {
+            if (!finite(c) || c < 0) {
+                reject(problems, field, "channels must be finite and not negative, got " + text(c));
+                break;
+            }
+        }
+    }
+    for (float c : a.groundAlbedo) {
+        if (c > 1.0f) {
+            reject(problems, "groundAlbedo", "channels must not exceed 1, got " + text(c));
+            break;
+        }
+    }
+    notNegative("mieScattering", a.mieScattering, " (1/m)");
+    notNegative("mieAbsorption", a.mieAbsorption, " (1/m)");
+    positive("rayleighScaleHeight", a.rayleighScaleHeight, " (m)");
+    positive("mieScaleHeight", a.mieScaleHeight, " (m)");
+    notNegative("ozoneCenterHeight", a.ozoneCenterHeight, " (m)");
+    positive("ozoneWidth", a.ozoneWidth, " (m)");
+    positive("groundRadius", a.groundRadius, " (m)");
+    positive("atmosphereHeight", a.atmosphereHeight, " (m)");
+    notNegative("solarIlluminance", a.solarIlluminance, " (lux)");
+    if (!finite(a.mieAnisotropy) || !(std::fabs(a.mieAnisotropy) < 1.0f)) {
+        reject(problems, "mieAnisotropy",
+               "the phase function's g must lie strictly between -1 and 1, got " +
+                   text(a.mieAnisotropy));
+    }
+    if (!finite(a.sunAngularDiameter) || !(a.sunAngularDiameter > 0) ||
+        a.sunAngularDiameter > 20.0f) {
+        reject(problems, "sunAngularDiameter",
+               "must lie in (0, 20] degrees, got " + text(a.sunAngularDiameter));
+    }
+    if (!finite(a.latitude) || std::fabs(a.latitude) > 90.0f) {
+        reject(problems, "latitude", "must lie in [-90, 90] degrees, got " + text(a.latitude));
+    }
+    if (!finite(a.dayOfYear) || a.dayOfYear < 1.0f || a.dayOfYear > 366.0f) {
+        reject(problems, "dayOfYear", "must lie in [1, 366], got " + text(a.dayOfYear));
+    }
+    if (!finite(a.timeOfDay) || a.timeOfDay > 24.0f) {
+        reject(problems, "timeOfDay",
+               "must be hours in [0, 24] (negative: keep the light's direction), got " +
+                   text(a.timeOfDay));
+    }
+    // Past these the single-precision shaders lose the planet (radii in km keep 7 digits).
+    clampAbove(problems, "groundRadius", a.groundRadius, 1e9f, " m");
+    clampAbove(problems, "atmosphereHeight", a.atmosphereHeight, 1e7f, " m");
+    clampAbove(problems, "solarIlluminance", a.solarIlluminance, kMaxLux, " lux");
+    return problems;
+}
+
 ValueProblems validateRotation(const std::array<float, 4>& q) {
     ValueProblems problems;
     const float lengthSq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];

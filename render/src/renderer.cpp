@@ -25,6 +25,7 @@
 #include "lights/gpu_light_types.h"
 #include "lights/ltc_table_texture.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
+#include "passes/atmosphere/atmosphere_pass.h"
 #include "passes/bloom/bloom_pass.h"
 #include "passes/debug_text/debug_text_pass.h"
 #include "passes/exposure/exposure_bindings.h"
@@ -451,6 +452,14 @@ struct Renderer::SsrOcclusion {
 uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resources,
                                 uint32_t hdrId) {
     FrameGraph& g = *graph_;
+    // The atmosphere's tables come first; its sky cube is the environment the frame lights with.
+    if (inputs.scene.atmosphere) {
+        if (!atmospherePass_) {
+            atmospherePass_ = std::make_unique<AtmospherePass>(context_, options_.atmosphere);
+        }
+        atmospherePass_->declareTables(g, AtmospherePass::frameOf(inputs.scene));
+        resources.setEnvironment(atmospherePass_->environment());
+    }
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
     // Shadow maps for the lights that cast; none, and the variant leaves shadows out.
     features.shadows = shadowPass_->prepare(inputs.scene, resources, options_, width_, height_);
@@ -740,6 +749,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
         if (features.countLightPairs) p.write(pairCounts, Use::StorageWrite);
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
+    }
+    if (inputs.scene.atmosphere) {
+        features_.push_back("atmosphere");
+        h.hdr = atmospherePass_->declareBackground(g, h.camera, h.depth, h.hdr, cameraBuffer_);
     }
     ssrTraced_ = false;
     const bool ssrHistoryWas = ssrHistoryValid_;
@@ -1405,6 +1418,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.skinningMs = 0.0;
     stats_.aoMs = 0.0;
     stats_.volumetricsMs = 0.0;
+    stats_.skyMs = 0.0;
     stats_.shadowMs = 0.0;
     stats_.ssrMs = 0.0;
     stats_.ssrStepsMean = 0.0;
@@ -1424,6 +1438,7 @@ const RendererStats& Renderer::collectStats() {
         if (name == "skinning") stats_.skinningMs += ms;
         if (name.starts_with("ambient_occlusion_")) stats_.aoMs += ms;
         if (name.starts_with("volumetrics_")) stats_.volumetricsMs += ms;
+        if (name.starts_with("atmosphere_")) stats_.skyMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
         if (name.starts_with("ssr_")) stats_.ssrMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;

@@ -20,6 +20,7 @@
 #include "candela/render/renderer.h"
 #include "candela/render/scene_resources.h"
 #include "candela/render/swapchain.h"
+#include "candela/runtime/atmosphere_sun.h"
 #include "candela/runtime/exit_code.h"
 #include "candela/runtime/frame_extraction.h"
 #include "candela/runtime/layer_pass_context.h"
@@ -162,6 +163,7 @@ struct Session {
     std::vector<std::filesystem::path> capturesMissed;
     int exitCode = kExitOk;
     SkyLoader sky;
+    AtmosphereSun sun;  // the atmosphere's sun among the frame's lights
 };
 
 struct SystemEntry {
@@ -603,7 +605,19 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                     frame.scene.aoIntensity = ao->intensity;
                 }
                 frame.text = std::move(s.extracted.text);
-                updateSky(s);
+                // An atmosphere (the scene's, or Earth's for --atmosphere and the sun flags)
+                // replaces the EXR sky and makes the first directional light its sun.
+                frame.scene.atmosphere = s.extracted.atmosphere;
+                if (!frame.scene.atmosphere &&
+                    (options.atmosphere || options.sunElevationDegrees || options.timeOfDayHours)) {
+                    frame.scene.atmosphere = content::Atmosphere{};
+                }
+                if (frame.scene.atmosphere) {
+                    frame.scene.skyIntensity = 1.0f;  // the sky is physical, in cd/m^2
+                    s.sun.apply({options.sunElevationDegrees, options.timeOfDayHours}, frame.scene);
+                } else {
+                    updateSky(s);
+                }
                 resources = s.resources.get();
             }
             for (auto& callback : beforeRender)

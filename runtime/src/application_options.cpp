@@ -34,6 +34,12 @@ bool parseFraction(const std::string& text, float& value) {
     return ec == std::errc() && ptr == end && value >= 0.0f && value <= 1.0f;
 }
 
+bool parseFloat(const std::string& text, float& value) {
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    return ec == std::errc() && ptr == end && std::isfinite(value);
+}
+
 bool parseSeconds(const std::string& text, double& value) {
     const char* end = text.data() + text.size();
     auto [ptr, ec] = std::from_chars(text.data(), end, value);
@@ -158,7 +164,10 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --volumetrics off|volumes|froxels|reference   light scattered in the medium\n"
            "                            (default: volumes when the scene has fog, else off)\n"
            "  --fog SIGMA_S[,SIGMA_A[,G]]   a uniform medium (1/m, Henyey-Greenstein g),\n"
-           "                            replacing the scene's fog\n";
+           "                            replacing the scene's fog\n"
+           "  --atmosphere              a physically based sky (Earth's) instead of the EXR sky\n"
+           "  --sun-elevation DEG       the atmosphere's sun this high, keeping its azimuth\n"
+           "  --time-of-day HH:MM       the atmosphere's sun where it stands then (solar time)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -303,6 +312,22 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--fog: " + problem);
             }
             options.fog = fog;
+        } else if (arg == "--atmosphere") {
+            options.atmosphere = true;
+        } else if (arg == "--sun-elevation") {
+            float degrees = 0.0f;
+            if (!value() || !parseFloat(v, degrees) || !(std::fabs(degrees) <= 90.0f)) {
+                return fail("--sun-elevation needs degrees in [-90, 90], got '" + v + "'");
+            }
+            options.sunElevationDegrees = degrees;
+        } else if (arg == "--time-of-day") {
+            int hours = -1, minutes = -1;
+            char tail = 0;
+            if (!value() || std::sscanf(v.c_str(), "%d:%d%c", &hours, &minutes, &tail) != 2 ||
+                hours < 0 || minutes < 0 || minutes > 59 || hours * 60 + minutes > 24 * 60) {
+                return fail("--time-of-day needs HH:MM between 00:00 and 24:00, got '" + v + "'");
+            }
+            options.timeOfDayHours = float(hours) + float(minutes) / 60.0f;
         } else if (others == OtherArguments::Keep) {
             result.arguments.push_back(arg);
         } else if (!arg.empty() && arg[0] == '-') {

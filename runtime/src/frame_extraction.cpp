@@ -7,6 +7,7 @@
 
 #include "candela/content/component_validation.h"
 #include "candela/content/components/animation.h"
+#include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
@@ -198,6 +199,11 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
     registry.view<const content::Fog>().each([&](const content::Fog& fog) {
         content::Fog checked = fog;
         if (!content::anyRejected(content::validateFog(checked))) out.fog = checked;
+    });
+    out.atmosphere.reset();
+    registry.view<const content::Atmosphere>().each([&](const content::Atmosphere& atmosphere) {
+        content::Atmosphere checked = atmosphere;
+        if (!content::anyRejected(content::validateAtmosphere(checked))) out.atmosphere = checked;
     });
 }
 

@@ -73,6 +73,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["ssr_steps_max"] = last.ssrStepsMax;
     json["ssr_hit_rate"] = last.ssrHitRate;
     json["volumetrics_ms"] = median(collect(stats.frames, [](auto& f) { return f.volumetricsMs; }));
+    json["sky_ms"] = median(collect(stats.frames, [](auto& f) { return f.skyMs; }));
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;

@@ -32,7 +32,9 @@ std::string selectAnimation(LoadedScene& scene, const std::string& clip) {
 int runScene(const RunOptions& options, std::vector<std::shared_ptr<FrameLayer>> layers) {
     std::string error;
     std::optional<LoadedScene> scene =
-        loadScene(options.scene, error, options.app.environment.has_value());
+        loadScene(options.scene, error,
+                  options.app.environment.has_value() || options.app.atmosphere ||
+                      options.app.sunElevationDegrees || options.app.timeOfDayHours);
     if (!scene) {
         std::fprintf(stderr, "candela: %s\n", error.c_str());
         return kExitBadArguments;

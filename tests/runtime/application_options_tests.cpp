@@ -146,6 +146,28 @@ TEST(ApplicationOptions, HelpAsksForTheUsageAndSucceeds) {
     }
 }
 
+// Issue 16: --atmosphere gives the scene Earth's atmosphere; --sun-elevation DEG and
+// --time-of-day HH:MM place its sun; bad values name the flag and the value.
+TEST(ApplicationOptions, AtmosphereFlags) {
+    CommandLine result =
+        parseCommandLine({"--atmosphere", "--sun-elevation", "12.5", "--time-of-day", "17:45"});
+    ASSERT_TRUE(result.options) << result.error;
+    EXPECT_TRUE(result.options->atmosphere);
+    ASSERT_TRUE(result.options->sunElevationDegrees);
+    EXPECT_EQ(*result.options->sunElevationDegrees, 12.5f);
+    ASSERT_TRUE(result.options->timeOfDayHours);
+    EXPECT_EQ(*result.options->timeOfDayHours, 17.75f);
+    EXPECT_FALSE(parseCommandLine({}).options->atmosphere);
+    EXPECT_NE(parseError({"--sun-elevation", "91"}).find("'91'"), std::string::npos);
+    EXPECT_NE(parseError({"--sun-elevation", "high"}).find("--sun-elevation needs"),
+              std::string::npos);
+    EXPECT_NE(parseError({"--time-of-day", "25:00"}).find("'25:00'"), std::string::npos);
+    EXPECT_NE(parseError({"--time-of-day", "12:60"}).find("HH:MM"), std::string::npos);
+    EXPECT_NE(parseError({"--time-of-day", "noon"}).find("--time-of-day needs"), std::string::npos);
+    for (const char* flag : {"--atmosphere", "--sun-elevation DEG", "--time-of-day HH:MM"})
+        EXPECT_NE(ApplicationOptions::standardFlagsUsage().find(flag), std::string::npos) << flag;
+}
+
 // Issue 17: --volumetrics picks the method, --fog SIGMA_S[,SIGMA_A[,G]] a uniform medium by
 // the Fog component's rules.
 TEST(ApplicationOptions, VolumetricsAndFogFlags) {

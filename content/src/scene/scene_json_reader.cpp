@@ -368,6 +368,26 @@ public:
         report(p, validateLight(l));
     }
 
+    void atmosphere(const json& j, const std::string& p, Atmosphere& a) {
+        numbers(j, p, "rayleighScattering", a.rayleighScattering);
+        number(j, p, "rayleighScaleHeight", a.rayleighScaleHeight);
+        number(j, p, "mieScattering", a.mieScattering);
+        number(j, p, "mieAbsorption", a.mieAbsorption);
+        number(j, p, "mieScaleHeight", a.mieScaleHeight);
+        number(j, p, "mieAnisotropy", a.mieAnisotropy);
+        numbers(j, p, "ozoneAbsorption", a.ozoneAbsorption);
+        number(j, p, "ozoneCenterHeight", a.ozoneCenterHeight);
+        number(j, p, "ozoneWidth", a.ozoneWidth);
+        number(j, p, "groundRadius", a.groundRadius);
+        number(j, p, "atmosphereHeight", a.atmosphereHeight);
+        numbers(j, p, "groundAlbedo", a.groundAlbedo);
+        number(j, p, "solarIlluminance", a.solarIlluminance);
+        number(j, p, "sunAngularDiameter", a.sunAngularDiameter);
+        number(j, p, "latitude", a.latitude);
+        number(j, p, "dayOfYear", a.dayOfYear);
+        number(j, p, "timeOfDay", a.timeOfDay);
+        report(p, validateAtmosphere(a));
+    }
     void camera(const json& j, const std::string& p, Camera& c) {
         enumeration(j, p, "projection", kProjections, c.projection);
         number(j, p, "verticalFov", c.verticalFov);
@@ -539,6 +559,10 @@ public:
                 })) {
                 e.fog = value;
             }
+        }
+        if (const json* a = nullptr; object(j, p, "atmosphere", a)) {
+            Atmosphere value;
+            if (clean([&] { atmosphere(*a, p + "/atmosphere", value); })) e.atmosphere = value;
         }
         if (auto it = j.find("gameData"); it != j.end()) e.gameDataJson = it->dump();
         return e;

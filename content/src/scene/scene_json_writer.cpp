@@ -220,6 +220,28 @@ struct Writer {
                           {"heightFalloff", number(e.fog->heightFalloff, q + "heightFalloff")},
                           {"baseHeight", number(e.fog->baseHeight, q + "baseHeight")}};
         }
+        if (e.atmosphere) {
+            const Atmosphere& a = *e.atmosphere;
+            const std::string q = p + "/atmosphere/";
+            out["atmosphere"] = {
+                {"rayleighScattering", numbers(a.rayleighScattering, q + "rayleighScattering")},
+                {"rayleighScaleHeight", number(a.rayleighScaleHeight, q + "rayleighScaleHeight")},
+                {"mieScattering", number(a.mieScattering, q + "mieScattering")},
+                {"mieAbsorption", number(a.mieAbsorption, q + "mieAbsorption")},
+                {"mieScaleHeight", number(a.mieScaleHeight, q + "mieScaleHeight")},
+                {"mieAnisotropy", number(a.mieAnisotropy, q + "mieAnisotropy")},
+                {"ozoneAbsorption", numbers(a.ozoneAbsorption, q + "ozoneAbsorption")},
+                {"ozoneCenterHeight", number(a.ozoneCenterHeight, q + "ozoneCenterHeight")},
+                {"ozoneWidth", number(a.ozoneWidth, q + "ozoneWidth")},
+                {"groundRadius", number(a.groundRadius, q + "groundRadius")},
+                {"atmosphereHeight", number(a.atmosphereHeight, q + "atmosphereHeight")},
+                {"groundAlbedo", numbers(a.groundAlbedo, q + "groundAlbedo")},
+                {"solarIlluminance", number(a.solarIlluminance, q + "solarIlluminance")},
+                {"sunAngularDiameter", number(a.sunAngularDiameter, q + "sunAngularDiameter")},
+                {"latitude", number(a.latitude, q + "latitude")},
+                {"dayOfYear", number(a.dayOfYear, q + "dayOfYear")},
+                {"timeOfDay", number(a.timeOfDay, q + "timeOfDay")}};
+        }
         if (!e.gameDataJson.empty()) {
             json data = json::parse(e.gameDataJson, nullptr, false);
             if (data.is_discarded() && error.empty()) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "candela/content/components/animation.h"
+#include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
@@ -204,6 +205,42 @@ void drawFog(EditorScene& scene, ecs::Entity e) {
            "Set Fog Base Height");
 }
 
+// The physically based sky (issue 16): the sun's time of day and place, the ground albedo and
+// the aerosol haze; the rest (Earth's coefficients) is left to the scene file. Values past the
+// loader's rules are refused or clamped by commit().
+void drawAtmosphere(EditorScene& scene, ecs::Entity e) {
+    const auto* current = scene.registry().tryGet<content::Atmosphere>(e);
+    if (!current) return;
+    const bool open = ImGui::CollapsingHeader("Atmosphere", ImGuiTreeNodeFlags_DefaultOpen);
+    if (ImGui::BeginPopupContextItem("atmosphere context")) {
+        if (ImGui::MenuItem("Remove atmosphere")) {
+            scene.execute(removeComponent<content::Atmosphere>(scene, e, "Remove Atmosphere"));
+        }
+        ImGui::EndPopup();
+        return;
+    }
+    if (!open) return;
+    content::Atmosphere a = *current;
+    commit(scene, e, ImGui::DragFloat("Time of day", &a.timeOfDay, 0.05f, -1.0f, 24.0f, "%.2f h"),
+           a, "Set Atmosphere Time Of Day");
+    commit(scene, e, ImGui::DragFloat("Latitude", &a.latitude, 0.5f, -90.0f, 90.0f, "%.1f deg"), a,
+           "Set Atmosphere Latitude");
+    commit(scene, e, ImGui::DragFloat("Day of year", &a.dayOfYear, 1.0f, 1.0f, 366.0f, "%.0f"), a,
+           "Set Atmosphere Day");
+    commit(scene, e, ImGui::ColorEdit3("Ground albedo", a.groundAlbedo.data()), a,
+           "Set Atmosphere Ground Albedo");
+    float mie = a.mieScattering * 1e6f;
+    const bool haze = ImGui::DragFloat("Mie scattering", &mie, 0.05f, 0.0f, 1000.0f, "%.2f /Mm");
+    a.mieScattering = mie * 1e-6f;
+    commit(scene, e, haze, a, "Set Atmosphere Haze");
+    commit(scene, e, ImGui::SliderFloat("Mie g", &a.mieAnisotropy, -0.95f, 0.95f), a,
+           "Set Atmosphere Mie Anisotropy");
+    commit(scene, e,
+           ImGui::DragFloat("Solar illuminance", &a.solarIlluminance, 100.0f, 0.0f, 1.0e6f,
+                            "%.0f lux"),
+           a, "Set Atmosphere Solar Illuminance");
+}
+
 // Material layers (issue 21): the material's layers (copies of the scene library's, edited
 // per material), adding one from the library, removing one, and the mask. Every change goes
 // through `edited`, i.e. one undoable "Edit Material" command (drags merge into one step).
@@ -367,6 +404,9 @@ void drawAddComponent(EditorScene& scene, ecs::Entity e) {
         if (!scene.registry().has<content::Fog>(e) && ImGui::MenuItem("Fog")) {
             scene.execute(setComponent(scene, e, content::Fog{}, "Add Fog"));
         }
+        if (!scene.registry().has<content::Atmosphere>(e) && ImGui::MenuItem("Atmosphere")) {
+            scene.execute(setComponent(scene, e, content::Atmosphere{}, "Add Atmosphere"));
+        }
         ImGui::EndPopup();
     }
 }
@@ -420,6 +460,7 @@ void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
     if (scene.registry().valid(e)) drawLight(scene, e);
     if (scene.registry().valid(e)) drawCamera(scene, e);
     if (scene.registry().valid(e)) drawFog(scene, e);
+    if (scene.registry().valid(e)) drawAtmosphere(scene, e);
     if (scene.registry().valid(e)) drawMaterials(scene, e);
     if (scene.registry().valid(e)) drawAnimation(scene, e);
     if (scene.registry().valid(e)) drawAddComponent(scene, e);

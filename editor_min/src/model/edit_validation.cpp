@@ -36,6 +36,10 @@ EditCheck checkEdit(content::Fog& value) {
     return fromProblems(content::validateFog(value));
 }
 
+EditCheck checkEdit(content::Atmosphere& value) {
+    return fromProblems(content::validateAtmosphere(value));
+}
+
 EditCheck checkEdit(ecs::LocalTransform& value) {
     const ecs::Quat& q = value.rotation;
     return fromProblems(content::validateRotation(std::array<float, 4>{q.x, q.y, q.z, q.w}));

@@ -4,6 +4,7 @@
 // reject is refused, and a value the loader would clamp is clamped here, with a notice.
 #include <string>
 
+#include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
@@ -21,6 +22,7 @@ struct EditCheck {
 EditCheck checkEdit(content::Light& value);
 EditCheck checkEdit(content::Camera& value);
 EditCheck checkEdit(content::Fog& value);
+EditCheck checkEdit(content::Atmosphere& value);
 EditCheck checkEdit(ecs::LocalTransform& value);
 EditCheck checkEdit(content::Material& value);
 

@@ -33,6 +33,7 @@ EntitySnapshot snapshotEntity(EditorScene& scene, ecs::Entity e) {
     s.camera = copyOf<content::Camera>(registry, e);
     s.sky = copyOf<content::Sky>(registry, e);
     s.fog = copyOf<content::Fog>(registry, e);
+    s.atmosphere = copyOf<content::Atmosphere>(registry, e);
     s.gameData = copyOf<content::GameData>(registry, e);
     if (const auto* member = registry.tryGet<content::SceneMember>(e)) s.sceneOrder = member->order;
     return s;
@@ -60,6 +61,7 @@ ecs::Entity restoreEntity(EditorScene& scene, const EntitySnapshot& s) {
     emplaceIf(registry, e, s.camera);
     emplaceIf(registry, e, s.sky);
     emplaceIf(registry, e, s.fog);
+    emplaceIf(registry, e, s.atmosphere);
     emplaceIf(registry, e, s.gameData);
     registry.emplace<content::SceneMember>(e, content::SceneMember{s.sceneOrder});
     if (ecs::Entity parent = scene.find(s.parentId); parent != ecs::kNullEntity) {

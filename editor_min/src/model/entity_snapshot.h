@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
@@ -30,6 +31,7 @@ struct EntitySnapshot {
     std::optional<content::Camera> camera;
     std::optional<content::Sky> sky;
     std::optional<content::Fog> fog;
+    std::optional<content::Atmosphere> atmosphere;
     std::optional<content::GameData> gameData;
     uint32_t sceneOrder = 0;
 };

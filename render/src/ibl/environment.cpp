@@ -84,6 +84,14 @@ std::unique_ptr<Environment> Environment::fromMap(GpuContext& context,
     return env;
 }
 
+std::unique_ptr<Environment> Environment::forDevice(GpuContext& context, uint32_t cubeFaceSize,
+                                                    const std::string& name) {
+    std::unique_ptr<Environment> env(new Environment(context));
+    env->stats_.source = name;
+    env->allocate(cubeFaceSize);
+    return env;
+}
+
 std::unique_ptr<Environment> Environment::uniform(GpuContext& context, float radiance) {
     return fromMap(context, uniformMap(radiance), "uniform");
 }

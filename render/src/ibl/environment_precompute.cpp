@@ -9,12 +9,10 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/gpu_image.h"
 #include "candela/render/pipeline.h"
+#include "ibl/environment_filter.h"
 #include "ibl/ibl_bindings.h"
-#include "shaders/cube_downsample.comp.spv.h"
 #include "shaders/cube_resample.comp.spv.h"
-#include "shaders/irradiance_sh.comp.spv.h"
 #include "shaders/latlong_to_cube.comp.spv.h"
-#include "shaders/prefilter_ggx.comp.spv.h"
 #include "vk/image_view.h"
 #include "vk/memory_barrier.h"
 #include "vk/sampler.h"
@@ -25,15 +23,10 @@ namespace {
 
 // fp16 holds 65504: brighter texels (the sun's disc) are clamped there rather than becoming Inf.
 constexpr float kMaxRadiance = 65000.0f;
-constexpr uint32_t kShFaceSize = 32;
 
 const DescriptorBinding kSampleAndWrite[] = {
     {IBL_BINDING_SOURCE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
     {IBL_BINDING_DESTINATION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-};
-const DescriptorBinding kSampleAndBuffer[] = {
-    {IBL_BINDING_SOURCE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_COMPUTE_BIT},
-    {IBL_BINDING_DESTINATION, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 
 uint32_t groups(uint32_t size) {
@@ -71,14 +64,6 @@ GpuImage uploadSource(GpuContext& context, const content::EnvironmentMap& map) {
     return image;
 }
 
-void writeBarrier(VkCommandBuffer cmd, const GpuImage& image) {
-    // Whole-image: the next dispatch samples what this one wrote (GENERAL stays GENERAL).
-    transitionImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-}
-
 }  // namespace
 
 uint32_t sourceCubeFaceSize(const content::EnvironmentMap& map) {
@@ -104,28 +89,14 @@ void precomputeEnvironment(GpuContext& context, const content::EnvironmentMap& m
                                     cubeSource ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE
                                                : VK_SAMPLER_ADDRESS_MODE_REPEAT,
                                     VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE});
-    Sampler linear(context, {VK_FILTER_LINEAR, false});
-    Sampler trilinear(context, {VK_FILTER_LINEAR, true});
     Pipeline resample =
         Pipeline::compute(context,
                           cubeSource ? std::span<const uint32_t>(cube_resample_comp_spv)
                                      : std::span<const uint32_t>(latlong_to_cube_comp_spv),
                           kSampleAndWrite, 8);
-    Pipeline downsample = Pipeline::compute(context, cube_downsample_comp_spv, kSampleAndWrite, 4);
-    Pipeline prefilter = Pipeline::compute(context, prefilter_ggx_comp_spv, kSampleAndWrite, 20);
-    Pipeline projectSh = Pipeline::compute(context, irradiance_sh_comp_spv, kSampleAndBuffer, 8);
-
+    const EnvironmentFilter filter(context);
+    const EnvironmentViews views(context, cube, prefiltered);
     const uint32_t cubeFace = cube.desc().width;
-    const uint32_t cubeMips = cube.desc().mipLevels;
-    std::vector<ImageView> cubeWriteViews, cubeReadViews, prefilteredWriteViews;
-    for (uint32_t mip = 0; mip < cubeMips; ++mip) {
-        cubeWriteViews.emplace_back(context, cube, VK_IMAGE_VIEW_TYPE_2D_ARRAY, mip, 1);
-        cubeReadViews.emplace_back(context, cube, VK_IMAGE_VIEW_TYPE_CUBE, mip, 1);
-    }
-    for (uint32_t mip = 0; mip < prefiltered.desc().mipLevels; ++mip) {
-        prefilteredWriteViews.emplace_back(context, prefiltered, VK_IMAGE_VIEW_TYPE_2D_ARRAY, mip,
-                                           1);
-    }
 
     context.submitAndWait([&](VkCommandBuffer cmd) {
         for (const GpuImage* image : {&cube, &prefiltered}) {
@@ -133,74 +104,24 @@ void precomputeEnvironment(GpuContext& context, const content::EnvironmentMap& m
                             VK_PIPELINE_STAGE_2_NONE, 0, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                             VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         }
-        auto dispatch = [&](const Pipeline& pipeline, VkSampler sampler, VkImageView input,
-                            VkImageView output, const void* push, uint32_t pushBytes,
-                            uint32_t faceSize) {
-            VkDescriptorImageInfo in{sampler, input, VK_IMAGE_LAYOUT_GENERAL};
-            if (input == source.view()) in.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-            VkDescriptorImageInfo out{VK_NULL_HANDLE, output, VK_IMAGE_LAYOUT_GENERAL};
-            VkWriteDescriptorSet writes[] = {sampledImageWrite(IBL_BINDING_SOURCE, &in),
-                                             storageImageWrite(IBL_BINDING_DESTINATION, &out)};
-            pipeline.bind(cmd);
-            pipeline.pushDescriptors(cmd, writes);
-            pipeline.pushConstants(cmd, push, pushBytes);
-            vkCmdDispatch(cmd, groups(faceSize), groups(faceSize), 6);
-        };
-
+        VkDescriptorImageInfo in{sourceSampler.handle(), source.view(),
+                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+        VkDescriptorImageInfo out{VK_NULL_HANDLE, views.cubeWrite[0].handle(),
+                                  VK_IMAGE_LAYOUT_GENERAL};
+        VkWriteDescriptorSet writes[] = {sampledImageWrite(IBL_BINDING_SOURCE, &in),
+                                         storageImageWrite(IBL_BINDING_DESTINATION, &out)};
         struct {
             uint32_t faceSize;
             float maxRadiance;
         } resamplePush{cubeFace, kMaxRadiance};
-        dispatch(resample, sourceSampler.handle(), source.view(), cubeWriteViews[0].handle(),
-                 &resamplePush, sizeof(resamplePush), cubeFace);
-        for (uint32_t mip = 1; mip < cubeMips; ++mip) {
-            writeBarrier(cmd, cube);
-            uint32_t face = std::max(cubeFace >> mip, 1u);
-            dispatch(downsample, linear.handle(), cubeReadViews[mip - 1].handle(),
-                     cubeWriteViews[mip].handle(), &face, sizeof(face), face);
-        }
-        writeBarrier(cmd, cube);
-
-        const uint32_t levels = prefiltered.desc().mipLevels;
-        for (uint32_t mip = 0; mip < levels; ++mip) {
-            struct {
-                uint32_t faceSize;
-                uint32_t sampleCount;
-                float roughness;
-                float environmentFaceSize;
-                float environmentMipCount;
-            } push{std::max(prefiltered.desc().width >> mip, 1u), kPrefilterSampleCount,
-                   levels > 1 ? float(mip) / float(levels - 1) : 1.0f, float(cubeFace),
-                   float(cubeMips)};
-            dispatch(prefilter, trilinear.handle(), cube.view(),
-                     prefilteredWriteViews[mip].handle(), &push, sizeof(push), push.faceSize);
-        }
-
-        uint32_t shMip = 0;
-        while ((cubeFace >> shMip) > kShFaceSize && shMip + 1 < cubeMips)
-            ++shMip;
-        struct {
-            uint32_t faceSize;
-            float lod;
-        } shPush{std::max(cubeFace >> shMip, 1u), float(shMip)};
-        VkDescriptorImageInfo in{trilinear.handle(), cube.view(), VK_IMAGE_LAYOUT_GENERAL};
-        VkDescriptorBufferInfo out{irradianceSh.handle(), 0, VK_WHOLE_SIZE};
-        VkWriteDescriptorSet writes[] = {sampledImageWrite(IBL_BINDING_SOURCE, &in),
-                                         storageBufferWrite(IBL_BINDING_DESTINATION, &out)};
-        projectSh.bind(cmd);
-        projectSh.pushDescriptors(cmd, writes);
-        projectSh.pushConstants(cmd, &shPush, sizeof(shPush));
-        vkCmdDispatch(cmd, 1, 1, 1);
-
-        for (const GpuImage* image : {&cube, &prefiltered}) {
-            transitionImage(
-                cmd, *image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT);
-        }
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-                      VK_ACCESS_2_MEMORY_READ_BIT);
+        resample.bind(cmd);
+        resample.pushDescriptors(cmd, writes);
+        resample.pushConstants(cmd, &resamplePush, sizeof(resamplePush));
+        vkCmdDispatch(cmd, groups(cubeFace), groups(cubeFace), 6);
+        filter.recordMips(cmd, cube, views);
+        filter.recordPrefilter(cmd, cube, prefiltered, views);
+        filter.recordIrradiance(cmd, cube, irradianceSh);
+        EnvironmentFilter::finish(cmd, cube, prefiltered);
     });
 }
 

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
@@ -27,7 +28,7 @@ namespace candela::content {
 // Far beyond any real lamp (a stadium floodlight is ~1e6 lm), yet small enough that intensity
 // x colour x BRDF x exposure stays finite in 32-bit floats.
 inline constexpr float kMaxLumens = 1e12f;
-inline constexpr float kMaxAreaLightSize = 1e4f;  // metres, a rect light's width or height
+inline constexpr float kMaxAreaLightSize = 1e4f;       // metres, a rect light's width or height
 inline constexpr float kMaxLux = 1e7f;                 // the sun at noon is ~1.2e5 lux
 inline constexpr float kMaxLightColorChannel = 1e3f;   // colour is a multiplier, normally <= 1
 inline constexpr float kMaxSkyIntensity = 1e6f;        // multiplies the sky's cd/m^2
@@ -51,6 +52,10 @@ ValueProblems validateSky(Sky& sky);
 // Negative or non-finite coefficients, |anisotropy| >= 1 (the phase function has a pole) and a
 // negative or non-finite height falloff are rejected.
 ValueProblems validateFog(Fog& fog);
+// Negative or non-finite coefficients, albedo or illuminance, scale heights and radii that are
+// not positive, an anisotropy with |g| >= 1, a sun diameter outside (0, 20] degrees, a latitude
+// outside [-90, 90], a day outside [1, 366] and a time of day past 24 hours are rejected.
+ValueProblems validateAtmosphere(Atmosphere& atmosphere);
 // A unit quaternion x, y, z, w; a zero (or non-finite) one has no orientation.
 ValueProblems validateRotation(const std::array<float, 4>& rotation);
 // emissiveFactor x emissiveStrength: negative values and luminances over

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "candela/content/atomic_file_write.h"
+#include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
@@ -95,6 +96,8 @@ struct SceneEntity {
     std::optional<Camera> camera;
     std::optional<Sky> sky;
     std::optional<Fog> fog;  // "fog": {"scattering", "absorption", "anisotropy", ...}
+    // "atmosphere": {"rayleighScattering": [r, g, b], "mieScattering", ...} (atmosphere.h)
+    std::optional<Atmosphere> atmosphere;
     // Free-form game data as JSON text; empty when none. Loading gives the canonical form
     // (compact, object keys sorted), which saving and loading again preserves exactly.
     std::string gameDataJson;

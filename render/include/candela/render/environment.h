@@ -49,6 +49,12 @@ public:
     // The same radiance from every direction (the neutral sky, and the white furnace).
     static std::unique_ptr<Environment> uniform(GpuContext& context, float radiance);
 
+    // Images and SH buffer of a `cubeFaceSize` cube (a power of two, 16..512) with undefined
+    // contents, for a sky the device draws itself (the atmosphere); its maker fills them and
+    // leaves the cubes in SHADER_READ_ONLY_OPTIMAL before anything samples them.
+    static std::unique_ptr<Environment> forDevice(GpuContext& context, uint32_t cubeFaceSize,
+                                                  const std::string& name);
+
     ~Environment();
     Environment(const Environment&) = delete;
     Environment& operator=(const Environment&) = delete;

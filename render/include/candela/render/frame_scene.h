@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 
+#include "candela/content/components/atmosphere.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 
@@ -90,6 +91,10 @@ struct FrameScene {
     // The participating medium (render/README.md "Volumetric lighting"), drawn in the mode
     // RendererOptions::volumetrics names; unset: clear air.
     std::optional<content::Fog> fog;
+    // The physically based sky (render/README.md "Atmosphere"): set, it replaces the
+    // environment for image-based lighting and the background; the first directional light in
+    // `lights` is its sun.
+    std::optional<content::Atmosphere> atmosphere;
 };
 
 }  // namespace candela::render

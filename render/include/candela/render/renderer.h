@@ -38,6 +38,7 @@ class GpuContext;
 class GpuLightBuffer;
 class LightingPass;
 class AmbientOcclusionPass;
+class AtmospherePass;
 class SsrPass;
 struct EnvironmentDescriptors;
 class VolumetricsPass;
@@ -191,6 +192,7 @@ private:
     uint32_t ssrHistoryWrite_ = 0;
     bool ssrHistoryValid_ = false;
     std::unique_ptr<VolumetricsPass> volumetricsPass_;  // made on the first frame with a medium
+    std::unique_ptr<AtmospherePass> atmospherePass_;    // made on the first frame with a sky
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;

@@ -155,6 +155,20 @@ struct SsrSettings {
     float temporalBlend = 0.25f;
 };
 
+// The atmosphere's tables (render/README.md "Atmosphere"; Hillaire 2020's sizes and sample
+// counts, but 64 transmittance samples for 40, which keeps every texel within 1e-3 of the
+// exact integral; docs/speed-vs-error.md measures them against a finer reference): texels of the
+// transmittance, multiple-scattering and sky-view tables, ray-marching samples for each, and
+// the face size of the sky cube that image-based lighting filters.
+struct AtmosphereSettings {
+    uint32_t transmittanceWidth = 256, transmittanceHeight = 64, transmittanceSteps = 64;
+    uint32_t multipleScatteringSize = 32, multipleScatteringSteps = 20;
+    uint32_t skyViewWidth = 192, skyViewHeight = 108, skyViewSteps = 30;
+    uint32_t cubeFaceSize = 64;
+    // The sky cube is re-lit when the sun moved more than this (degrees) since the last.
+    float iblUpdateDegrees = 0.1f;
+};
+
 struct RendererOptions {
     LightCulling lightCulling = LightCulling::Clustered;
     LightAssignmentDevice lightAssignment = LightAssignmentDevice::Auto;
@@ -210,6 +224,7 @@ struct RendererOptions {
     uint64_t shadowRenderBudget = uint64_t(4) << 20;
     SsrMode ssr = SsrMode::Off;
     SsrSettings ssrSettings;
+    AtmosphereSettings atmosphere;
 };
 
 // The frame graph of the last frame (--stats `frame_graph`).
@@ -232,11 +247,14 @@ struct RendererStats {
     uint32_t clusters = 0;
     uint32_t clustersOccupied = 0;
     uint64_t lightClusterPairs = 0;
-    double lightAssignMs = 0.0;     // CPU: assignment and list upload (not the geometry wait);
-                                    // GPU: timestamps around the assignment passes
-    double lightingMs = 0.0;        // GPU timestamps around the lighting dispatch
-    double aoMs = 0.0;              // GPU timestamps around the ambient occlusion passes
-    double volumetricsMs = 0.0;     // GPU timestamps around the volumetric lighting passes
+    double lightAssignMs = 0.0;  // CPU: assignment and list upload (not the geometry wait);
+                                 // GPU: timestamps around the assignment passes
+    double lightingMs = 0.0;     // GPU timestamps around the lighting dispatch
+    double aoMs = 0.0;           // GPU timestamps around the ambient occlusion passes
+    double volumetricsMs = 0.0;  // GPU timestamps around the volumetric lighting passes
+    // GPU timestamps around the atmosphere's passes (--stats sky_ms): its tables, this frame's
+    // share of the sky cube's amortised update and the sky background.
+    double skyMs = 0.0;
     uint64_t lightEvaluations = 0;  // light-pixel pairs the shader evaluated (countLightPairs)
     uint64_t litPairs = 0;          // ... of which the light reaches the pixel
     // Frames whose list buffer had to grow (the CPU path's first frame always does: it sizes

@@ -75,6 +75,13 @@ struct ApplicationOptions {
     std::optional<render::VolumetricsMode> volumetrics;
     // --fog SIGMA_S[,SIGMA_A[,G]]: a uniform medium replacing the scene's Fog (or adding one).
     std::optional<content::Fog> fog;
+    // --atmosphere: the default Earth atmosphere for a scene without an Atmosphere component
+    // (a glTF too); its sky replaces the EXR sky. --sun-elevation DEG moves the sun to that
+    // elevation keeping its azimuth; --time-of-day HH:MM places it by the atmosphere's latitude
+    // and day of the year (render/README.md "Atmosphere"). Either gives the scene an atmosphere.
+    bool atmosphere = false;
+    std::optional<float> sunElevationDegrees;
+    std::optional<float> timeOfDayHours;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
@@ -83,7 +90,8 @@ struct ApplicationOptions {
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
     // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
-    // --brdf, --ao, --area-lights, --ssr, --volumetrics, --fog.
+    // --brdf, --ao, --area-lights, --ssr, --volumetrics, --fog, --atmosphere,
+    // --sun-elevation, --time-of-day.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

@@ -32,6 +32,9 @@ struct ExtractedFrame {
     std::optional<content::Fog> fog;     // a Fog component's medium (the last one seen)
     std::vector<render::TextLine> text;  // the frame's DebugText lines (debug_text.h)
 
+    // An Atmosphere component's sky (the last one seen), checked by validateAtmosphere.
+    std::optional<content::Atmosphere> atmosphere;
+
     // GPU materials made for scene-file material overrides, per entity; remade when the
     // entity's MaterialOverrides change.
     struct OverrideMaterials {

@@ -1,0 +1,112 @@
+// The Atmosphere component (issue 16) in scene files: every field survives a save and a load,
+// missing fields take Earth's defaults, and a value outside its domain (negative coefficients,
+// a scale height of 0, |g| >= 1, a latitude past the pole, ...) drops the component with an
+// error naming the file and the element.
+#include <gtest/gtest.h>
+
+#include <span>
+#include <string>
+
+#include "candela/content/component_validation.h"
+#include "candela/content/scene_file.h"
+
+namespace candela::content {
+namespace {
+
+std::optional<SceneDocument> parse(const std::string& text, Diagnostics& diagnostics) {
+    return parseSceneJson(std::as_bytes(std::span(text)), "sky.scene.json", diagnostics);
+}
+
+std::string sceneWithAtmosphere(const std::string& atmosphereJson) {
+    return R"({"format": "candela.scene", "version": 1, "entities": [{"name": "air", "atmosphere": )" +
+           atmosphereJson + "}]}";
+}
+
+TEST(AtmosphereComponent, EveryFieldRoundTripsThroughASceneFile) {
+    Atmosphere a;
+    a.rayleighScattering = {1e-6f, 2e-6f, 3e-6f};
+    a.rayleighScaleHeight = 7000.0f;
+    a.mieScattering = 2e-5f;
+    a.mieAbsorption = 1e-6f;
+    a.mieScaleHeight = 1500.0f;
+    a.mieAnisotropy = 0.7f;
+    a.ozoneAbsorption = {0.5e-6f, 1.5e-6f, 0.1e-6f};
+    a.ozoneCenterHeight = 22000.0f;
+    a.ozoneWidth = 20000.0f;
+    a.groundRadius = 3.4e6f;
+    a.atmosphereHeight = 80000.0f;
+    a.groundAlbedo = {0.1f, 0.2f, 0.4f};
+    a.solarIlluminance = 100000.0f;
+    a.sunAngularDiameter = 1.0f;
+    a.latitude = -33.9f;
+    a.dayOfYear = 355.0f;
+    a.timeOfDay = 17.25f;
+    SceneDocument scene;
+    scene.entities.emplace_back().atmosphere = a;
+    std::string error;
+    const std::string text = sceneToJson(scene, error);
+    ASSERT_EQ(error, "");
+    Diagnostics diagnostics;
+    auto loaded = parse(text, diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
+    ASSERT_TRUE(loaded->entities.at(0).atmosphere);
+    EXPECT_EQ(*loaded->entities[0].atmosphere, a);
+}
+
+TEST(AtmosphereComponent, AnEmptyObjectIsEarth) {
+    Diagnostics diagnostics;
+    auto loaded = parse(sceneWithAtmosphere("{}"), diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    ASSERT_TRUE(loaded->entities.at(0).atmosphere);
+    EXPECT_EQ(*loaded->entities[0].atmosphere, Atmosphere{});
+    EXPECT_FLOAT_EQ(loaded->entities[0].atmosphere->rayleighScattering[2], 33.1e-6f);
+}
+
+TEST(AtmosphereComponent, BadValuesAreErrorsNamingTheFileAndTheElement) {
+    struct Case {
+        const char* atmosphere;
+        const char* element;
+        const char* words;
+    };
+    const Case cases[] = {
+        {R"({"rayleighScattering": [1e-6, -1e-6, 0]})", "/entities/0/atmosphere/rayleighScattering",
+         "not negative"},
+        {R"({"rayleighScattering": [1e-6, 2e-6]})", "/entities/0/atmosphere/rayleighScattering",
+         "array of 3"},
+        {R"({"mieScattering": -1})", "/entities/0/atmosphere/mieScattering", "not negative"},
+        {R"({"rayleighScaleHeight": 0})", "/entities/0/atmosphere/rayleighScaleHeight", "positive"},
+        {R"({"mieAnisotropy": 1})", "/entities/0/atmosphere/mieAnisotropy", "between -1 and 1"},
+        {R"({"groundAlbedo": [0.5, 1.5, 0.5]})", "/entities/0/atmosphere/groundAlbedo", "exceed 1"},
+        {R"({"latitude": 91})", "/entities/0/atmosphere/latitude", "[-90, 90]"},
+        {R"({"dayOfYear": 0})", "/entities/0/atmosphere/dayOfYear", "[1, 366]"},
+        {R"({"timeOfDay": 25})", "/entities/0/atmosphere/timeOfDay", "[0, 24]"},
+        {R"({"sunAngularDiameter": 0})", "/entities/0/atmosphere/sunAngularDiameter", "(0, 20]"},
+        {R"({"solarIlluminance": "bright"})", "/entities/0/atmosphere/solarIlluminance",
+         "expected a number"},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.atmosphere);
+        Diagnostics diagnostics;
+        auto loaded = parse(sceneWithAtmosphere(c.atmosphere), diagnostics);
+        ASSERT_TRUE(loaded);
+        EXPECT_FALSE(loaded->entities.at(0).atmosphere) << "a bad atmosphere is left out";
+        const std::string text = diagnostics.toString();
+        EXPECT_NE(text.find("sky.scene.json"), std::string::npos) << text;
+        EXPECT_NE(text.find(c.element), std::string::npos) << text;
+        EXPECT_NE(text.find(c.words), std::string::npos) << text;
+    }
+}
+
+TEST(AtmosphereComponent, AbsurdSunIsClampedWithAWarning) {
+    Atmosphere a;
+    a.solarIlluminance = 1e30f;
+    const ValueProblems problems = validateAtmosphere(a);
+    EXPECT_FALSE(anyRejected(problems));
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_TRUE(problems[0].clamped);
+    EXPECT_EQ(a.solarIlluminance, kMaxLux);
+}
+
+}  // namespace
+}  // namespace candela::content
