@@ -40,6 +40,7 @@
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "passes/volumetrics/volumetrics_pass.h"
+#include "passes/wires/wire_pass.h"
 #include "vk/image_transfer.h"
 #include "vk/vk_check.h"
 
@@ -817,6 +818,50 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             froxels = integrated;
         }
     }
+    // Wires (seed 004 §6) over the lit frame and its medium, under the blended surfaces.
+    if (!inputs.scene.wires.empty()) {
+        if (!wirePass_) wirePass_ = std::make_unique<WirePass>(context_);
+        if (wirePass_->prepare(inputs.scene, features, options_.wires)) {
+            features_.push_back("wires");
+            const glm::mat4& projection = inputs.scene.camera.projection;
+            const float pixelRadiusPerDepth = 1.0f / (std::abs(projection[1][1]) * float(height_));
+            const float nearPlane = inputs.scene.camera.nearPlane;
+            auto p = g.addPass("wires", PassKind::Device,
+                               [this, ids, environment, skyIntensity, shadowDescriptors,
+                                pixelRadiusPerDepth, nearPlane](PassContext& ctx) {
+                                   WirePass::Inputs in{};
+                                   in.hdr = ctx.image(ids.hdr);
+                                   in.depth = ctx.image(ids.depth);
+                                   in.camera = &cameraBuffer_;
+                                   in.lights = &lights_->buffer();
+                                   in.clusterRanges = &clusters_->ranges();
+                                   in.lightIndices = &clusters_->indices();
+                                   in.depthRange = &clusters_->depthRange();
+                                   in.grid = &clusters_->grid();
+                                   in.directionalCount = clusters_->directionalCount();
+                                   in.environment = &environment;
+                                   in.skyIntensity = skyIntensity;
+                                   in.shadows = &shadowDescriptors;
+                                   in.pixelRadiusPerDepth = pixelRadiusPerDepth;
+                                   in.nearPlane = nearPlane;
+                                   wirePass_->record(ctx.cmd(), in);
+                               });
+            p.read(h.depth, Use::DepthRead);
+            p.read(h.camera, Use::Uniform, kRasterStages);
+            p.read(h.lights, Use::StorageRead, kFragmentStage);
+            if (features.clustered) {
+                p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
+                p.read(h.clusters.indices, Use::StorageRead, kFragmentStage);
+                p.read(h.clusters.depthRange, Use::StorageRead, kFragmentStage);
+            }
+            if (features.shadows) {
+                p.read(shadowAtlas, Use::Sampled, kFragmentStage);
+                p.read(shadowViews, Use::StorageRead, kFragmentStage);
+                p.read(shadowLights, Use::StorageRead, kFragmentStage);
+            }
+            h.hdr = p.write(h.hdr, Use::ColorAttachment);
+        }
+    }
     if (blended) {
         // MSAA: multisampled copies of the targets, made only for frames with blended draws.
         const VkSampleCountFlagBits samples = transparentPass_->samples();
@@ -867,16 +912,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             msaaMotion = e.write(msaaMotion, Use::ColorAttachment);
             msaaDepth = e.write(msaaDepth, Use::DepthWrite);
         }
-        auto p =
-            g.addPass("forward_transparent", PassKind::Device,
-                      [this, shadingInputs, froxels, &resources](PassContext& ctx) {
-                          ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
-                          if (froxels) {
-                              in.froxelParams = &volumetricsPass_->froxelParams();
-                              in.froxelIntegrated = ctx.buffer(*froxels);
-                          }
-                          transparentPass_->recordShading(ctx.cmd(), resources, in);
-                      });
+        auto p = g.addPass("forward_transparent", PassKind::Device,
+                           [this, shadingInputs, froxels, &resources](PassContext& ctx) {
+                               ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
+                               if (froxels) {
+                                   in.froxelParams = &volumetricsPass_->froxelParams();
+                                   in.froxelIntegrated = ctx.buffer(*froxels);
+                               }
+                               transparentPass_->recordShading(ctx.cmd(), resources, in);
+                           });
         if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
         if (msaa) {
             // Drawn into, then resolved into hdr and motion (their last use).

@@ -49,5 +49,6 @@ void addShadowRows(ReportContext& context);
 void addAnimationRows(ReportContext& context);
 void addSsrRows(ReportContext& context);
 void addVolumetricsRows(ReportContext& context);
+void addWireRows(ReportContext& context);
 
 }  // namespace candela::report

@@ -1,0 +1,165 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "wire_bindings.h"
+#include "common/specialization_ids.h"
+// Wire shading and coverage (seed 004 §6). Geometric antialiasing: the pixel's coverage of the
+// wire's (clamped) width from its distance to the centre line, a one-pixel box across the
+// wire, so the coverages down any column sum to exactly the width and a moving wire keeps its
+// energy; times wire.vert's fade (real / clamped radius). Shading aliasing: a pixel-thin wire
+// shows a pixel several normals at once, so its normal is bent toward the camera and its
+// diffuse term is half-Lambert ((N.L / 2 + 1/2)^2), blended into the true cylinder normal and
+// Lambert as the wire grows wider on screen. Lit like the forward transparent pass: the
+// clustered lights (with shadows) and the sky. Output straight alpha, blended "over".
+#include "common/ambient_lighting.glsl"
+#include "common/camera.glsl"
+#include "common/clusters.glsl"
+#include "common/light_buffer.glsl"
+#include "common/shading_models.glsl"
+#define SHADOW_ATLAS_BINDING WIRE_BINDING_SHADOW_ATLAS
+#define SHADOW_ATLAS_COMPARE_BINDING WIRE_BINDING_SHADOW_ATLAS_COMPARE
+#define SHADOW_VIEWS_BINDING WIRE_BINDING_SHADOW_VIEWS
+#define SHADOW_LIGHTS_BINDING WIRE_BINDING_SHADOW_LIGHTS
+#include "common/shadows.glsl"
+#include "wire_segment.glsl"
+
+layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
+// Image-based lighting: 0 none, 1 split sum, 2 mobile.
+layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
+
+layout(std430, binding = WIRE_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
+    uint clusterRanges[];
+};
+layout(std430, binding = WIRE_BINDING_LIGHT_INDICES) readonly buffer LightIndices {
+    uint lightIndices[];
+};
+layout(std430, binding = WIRE_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
+    uint depthRange[];
+};
+layout(binding = WIRE_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
+layout(binding = WIRE_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
+layout(std430, binding = WIRE_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
+    vec4 irradianceSh[9];
+};
+
+const uint kListOverflow = 0xffffffffu;
+// Screen widths (pixels) over which the shading turns from bent normals and half-Lambert (a
+// wire a pixel or less wide) to the cylinder's own normals and Lambert.
+const float kBentBelowPx = 1.0;
+const float kCylinderAbovePx = 4.0;
+
+layout(location = 0) noperspective in float inAcross;
+layout(location = 1) noperspective in float inExtentPx;
+layout(location = 2) noperspective in float inHalfWidthPx;
+layout(location = 3) noperspective in float inFade;
+layout(location = 4) flat in uint inSegment;
+
+layout(location = 0) out vec4 outRadiance;  // cd/m^2, a = coverage
+
+vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha,
+                   float halfLambert, uint index) {
+    Light light = loadLight(index, camera.frameInfo.w);
+    LightIncidence incidence = evaluateLight(light, P, N, R, alpha);
+    float visibility = any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))
+                           ? shadowVisibility(light, index, P, N)
+                           : 1.0;
+    // Half-Lambert (seed 004 §6): wraps the diffuse term round the wire, so the few normals a
+    // thin wire shows a pixel light it alike; weighted in by thinness.
+    float wrapped = 0.5 * dot(N, incidence.diffuseL) + 0.5;
+    incidence.diffuseIlluminance = mix(incidence.diffuseIlluminance,
+                                       incidence.incidentIlluminance * (wrapped * wrapped),
+                                       halfLambert);
+    incidence.diffuseIlluminance *= visibility;
+    incidence.specularIlluminance *= visibility;
+    incidence.incidentIlluminance *= visibility;
+    return shadeSurface(surface, N, V, incidence);
+}
+
+void main() {
+    const WireSegment s = segments[inSegment];
+    // Coverage of a pixel-wide box centred on the pixel by the clamped width [-h, h]: exact
+    // for h >= 1/2, which the clamp guarantees. The naive line keeps full coverage.
+    const float distancePx = abs(inAcross) * inExtentPx;
+    const float coverage = draw.mode == WIRE_MODE_NAIVE
+                               ? 1.0
+                               : clamp(inHalfWidthPx + 0.5 - distancePx, 0.0, 1.0);
+    const float alpha = coverage * inFade;
+    if (alpha <= 0.0) discard;
+
+    vec3 radiance = s.emissive.rgb;
+    if (s.end.w < 0.5) {
+        Surface surface;
+        clearSurfaceExtensions(surface);
+        surface.baseColor = s.baseColor.rgb;
+        surface.roughness = s.emissive.a;
+        surface.metallic = s.baseColor.a;
+        surface.specular = 0.5;
+        surface.shadingModel = kShadingDefaultLit;
+        surface.customData = vec4(0.0);
+
+        vec2 ndc = gl_FragCoord.xy / draw.targetSize * 2.0 - 1.0;
+        vec4 world = camera.inverseViewProjection * vec4(ndc, gl_FragCoord.z, 1.0);
+        vec3 P = world.xyz / world.w;
+        vec3 V = safeNormalize(camera.cameraPosition.xyz - P);
+        vec3 T = safeNormalize(s.end.xyz - s.start.xyz);
+        // The normal bent toward the camera: the view direction without its part along T.
+        vec3 bent = safeNormalize(V - T * dot(V, T));
+        // The cylinder's own normal at this pixel: across the wire by the pixel's signed
+        // offset over the real half width, toward the camera by the rest of the unit circle.
+        vec3 axisPoint = s.start.xyz + T * dot(P - s.start.xyz, T);
+        vec3 side = P - axisPoint;
+        side = safeNormalize(side - bent * dot(side, bent));
+        float realHalfWidthPx = inHalfWidthPx * inFade;
+        float a = clamp(distancePx / max(realHalfWidthPx, 1e-3), 0.0, 1.0);
+        vec3 cylinder = normalize(side * a + bent * sqrt(max(1.0 - a * a, 0.0)));
+        float thick = smoothstep(kBentBelowPx, kCylinderAbovePx, 2.0 * realHalfWidthPx);
+        vec3 N = safeNormalize(mix(bent, cylinder, thick));
+        float halfLambert = 1.0 - thick;
+        vec3 R = reflect(-V, N);
+        float roughnessAlpha = alphaFromRoughness(surface.roughness);
+        surface.directionalAlbedo =
+            specularDirectionalAlbedo(environmentBrdfLut, surface.roughness, saturate(dot(N, V)));
+
+        if (kIblMode != 0u) {
+            vec4 sh[9] = irradianceSh;
+            radiance += environmentAmbient(surface, N, V, sh, prefilteredCube,
+                                           draw.prefilteredMipCount, environmentBrdfLut,
+                                           kIblMode == 2u) *
+                        draw.skyIntensity;
+        }
+        if (kClustered) {
+            for (uint i = 0u; i < draw.directionalCount; ++i) {
+                radiance += lightRadiance(surface, P, N, V, R, roughnessAlpha, halfLambert,
+                                          lightIndices[i]);
+            }
+            // Local lights from the cluster's list: they reach the wire where an opaque or
+            // blended surface shares its cluster (wires do not mark clusters themselves).
+            uint cluster = clusterOfPixel(draw.grid, uvec2(gl_FragCoord.xy), gl_FragCoord.z,
+                                          uintBitsToFloat(depthRange[2]),
+                                          uintBitsToFloat(depthRange[3]));
+            uint first = clusterRanges[2u * cluster];
+            uint count = clusterRanges[2u * cluster + 1u];
+            if (count == kListOverflow) {
+                for (uint i = 0u; i < camera.frameInfo.z; ++i) {
+                    if (!lightInEveryCluster(uint(lightData[3u * camera.frameInfo.w + i].w))) {
+                        radiance += lightRadiance(surface, P, N, V, R, roughnessAlpha,
+                                                  halfLambert, i);
+                    }
+                }
+            } else {
+                uint quarterBit = quarterBitOfPixel(draw.grid, uvec2(gl_FragCoord.xy));
+                for (uint i = 0u; i < count; ++i) {
+                    uint light = lightOfEntry(lightIndices[first + i], quarterBit);
+                    if (light != kNoLight) {
+                        radiance += lightRadiance(surface, P, N, V, R, roughnessAlpha,
+                                                  halfLambert, light);
+                    }
+                }
+            }
+        } else {
+            for (uint i = 0u; i < camera.frameInfo.z; ++i) {
+                radiance += lightRadiance(surface, P, N, V, R, roughnessAlpha, halfLambert, i);
+            }
+        }
+    }
+    outRadiance = vec4(radiance, alpha);
+}

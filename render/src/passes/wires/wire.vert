@@ -1,0 +1,72 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "wire_bindings.h"
+#include "common/camera.glsl"
+#include "common/clusters.glsl"
+#include "wire_segment.glsl"
+// Wire antialiasing (seed 004 §6, Persson's "phone-wire AA"): each segment becomes a
+// camera-facing quad, six vertices per segment, no vertex buffer. Its radius is clamped to at
+// least one pixel's radius at the wire's depth (so it never falls between pixel centres and
+// never flickers) and the alpha is multiplied by real radius / clamped radius (so its energy,
+// width x radiance, stays the real wire's). The quad reaches one pixel past the clamped edge
+// for the coverage ramp wire.frag computes from the distance to the centre line.
+
+// Across the quad: -1 at one long edge, +1 at the other (linear in screen space).
+layout(location = 0) noperspective out float outAcross;
+layout(location = 1) noperspective out float outExtentPx;     // |across| = 1, in pixels
+layout(location = 2) noperspective out float outHalfWidthPx;  // the clamped radius in pixels
+layout(location = 3) noperspective out float outFade;         // real / clamped radius
+layout(location = 4) flat out uint outSegment;
+
+// Two triangles: (end, side) of each of the six vertices.
+const vec2 kCorners[6] = vec2[](vec2(0, -1), vec2(1, -1), vec2(1, 1), vec2(0, -1), vec2(1, 1),
+                                vec2(0, 1));
+
+vec2 toPixels(vec4 clip) {
+    return (clip.xy / clip.w * 0.5 + 0.5) * draw.targetSize;
+}
+
+void main() {
+    const uint segment = uint(gl_VertexIndex) / 6u;
+    const vec2 corner = kCorners[uint(gl_VertexIndex) % 6u];
+    const WireSegment s = segments[segment];
+    outSegment = segment;
+    vec4 c0 = camera.viewProjection * vec4(s.start.xyz, 1.0);
+    vec4 c1 = camera.viewProjection * vec4(s.end.xyz, 1.0);
+    // clip.w is the view depth: the part of the segment before the near plane is cut off
+    // (clip coordinates are linear along the segment). Wholly behind: a degenerate quad.
+    const float nearW = draw.nearPlane;
+    if (c0.w < nearW && c1.w < nearW) {
+        gl_Position = vec4(0.0, 0.0, -1.0, 1.0);
+        outAcross = 0.0;
+        outExtentPx = 0.0;
+        outHalfWidthPx = 0.0;
+        outFade = 0.0;
+        return;
+    }
+    if (c0.w < nearW) c0 = mix(c0, c1, (nearW - c0.w) / (c1.w - c0.w));
+    if (c1.w < nearW) c1 = mix(c1, c0, (nearW - c1.w) / (c0.w - c1.w));
+
+    vec2 along = toPixels(c1) - toPixels(c0);
+    along = dot(along, along) > 1e-12 ? normalize(along) : vec2(1.0, 0.0);
+    const vec2 across = vec2(-along.y, along.x);
+
+    vec4 clip = corner.x > 0.5 ? c1 : c0;
+    const float radius = s.start.w;
+    // A pixel's radius in metres at this depth (half the pixel's footprint).
+    const float pixelRadius = clip.w * draw.pixelRadiusPerDepth;
+    float clamped = max(radius, pixelRadius);
+    float fade = radius / clamped;
+    if (draw.mode == WIRE_MODE_NAIVE) {
+        clamped = pixelRadius;  // a line one pixel wide whatever the wire's width
+        fade = 1.0;
+    }
+    const float halfWidthPx = 0.5 * clamped / pixelRadius;
+    const float extentPx = draw.mode == WIRE_MODE_NAIVE ? halfWidthPx : halfWidthPx + 1.0;
+    clip.xy += across * (corner.y * extentPx) * (2.0 / draw.targetSize) * clip.w;
+    gl_Position = clip;
+    outAcross = corner.y;
+    outExtentPx = extentPx;
+    outHalfWidthPx = halfWidthPx;
+    outFade = fade;
+}
