@@ -415,9 +415,6 @@ TEST(GltfFeatures, CamerasMatricesStripsU8IndicesAndVertexColours) {
     EXPECT_EQ(node.camera, 1);
 }
 
-}  // namespace
-}  // namespace candela::content
-
 // Issue 19 (seed 004 §6): LINES / LINE_STRIP / LINE_LOOP primitives whose material's extras
 // gives wireRadius become wires (index pairs, the radius in metres); lines without it stay
 // skipped with a warning; a radius that is not a finite positive number is an error naming
@@ -464,3 +461,6 @@ TEST(GltfFeatures, LinePrimitivesWithWireRadiusBecomeWires) {
     EXPECT_TRUE(diagnostics.mentions("lines")) << text;
     EXPECT_FALSE(diagnostics.mentions("meshes[0].primitives[1]")) << text;
 }
+
+}  // namespace
+}  // namespace candela::content

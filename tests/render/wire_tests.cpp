@@ -39,7 +39,9 @@ TEST(Wires, ColumnEnergyIsWidthTimesRadianceFrom20PixelsDownToATenth) {
         // The naive line is a pixel wide whatever the wire: 1 / width times the energy.
         const CapturedFrame line = naive.render(inputs, resources);
         const double naiveError = worstColumnError(line, expected);
-        if (width <= 0.3f) EXPECT_GT(naiveError, 1.0) << width << " px wide";
+        if (width <= 0.3f) {
+            EXPECT_GT(naiveError, 1.0) << width << " px wide";
+        }
     }
 }
 
