@@ -33,9 +33,11 @@ struct WireScene {
         wire.segments = {0, 1};
     }
 
-    FrameInputs place(float depth, float height) {
+    // `slope`: the wire's rise per unit of x (0: horizontal).
+    FrameInputs place(float depth, float height, float slope = 0.0f) {
         // Far wider than the view at any depth used here.
-        wire.positions = {{-1000.0f, height, -depth}, {1000.0f, height, -depth}};
+        wire.positions = {{-1000.0f, height - 1000.0f * slope, -depth},
+                          {1000.0f, height + 1000.0f * slope, -depth}};
         draws = {{&wire, &material, glm::mat4(1.0f)}};
         FrameInputs inputs;
         inputs.scene.camera = camera;

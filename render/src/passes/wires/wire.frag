@@ -3,9 +3,9 @@
 #include "wire_bindings.h"
 #include "common/specialization_ids.h"
 // Wire shading and coverage (seed 004 §6). Geometric antialiasing: the pixel's coverage of the
-// wire's (clamped) width from its distance to the centre line, a one-pixel box across the
-// wire, so the coverages down any column sum to exactly the width and a moving wire keeps its
-// energy; times wire.vert's fade (real / clamped radius). Shading aliasing: a pixel-thin wire
+// wire's (clamped) width from its distance to the centre line, a box across the wire one
+// pixel step wide, so the coverages down any column sum to exactly the wire's cross-section
+// and a moving wire keeps its energy; times wire.vert's fade (real / clamped radius). Shading aliasing: a pixel-thin wire
 // shows a pixel several normals at once, so its normal is bent toward the camera and its
 // diffuse term is half-Lambert ((N.L / 2 + 1/2)^2), blended into the true cylinder normal and
 // Lambert as the wire grows wider on screen. Lit like the forward transparent pass: the
@@ -52,6 +52,7 @@ layout(location = 1) noperspective in float inExtentPx;
 layout(location = 2) noperspective in float inHalfWidthPx;
 layout(location = 3) noperspective in float inFade;
 layout(location = 4) flat in uint inSegment;
+layout(location = 5) flat in float inPixelStep;
 
 layout(location = 0) out vec4 outRadiance;  // cd/m^2, a = coverage
 
@@ -76,12 +77,18 @@ vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha,
 
 void main() {
     const WireSegment s = segments[inSegment];
-    // Coverage of a pixel-wide box centred on the pixel by the clamped width [-h, h]: exact
-    // for h >= 1/2, which the clamp guarantees. The naive line keeps full coverage.
+    // Coverage: the overlap of the clamped width [-h, h] with a box across the wire centred
+    // on the pixel, as wide as the step between neighbouring pixel centres across the wire
+    // (b, 1 for an axis-aligned wire), over b. The boxes of a column (a row, for a wire
+    // steeper than 45 degrees) then tile the line without gap or overlap, so the coverages
+    // sum to the wire's cross-section 2h / b wherever it lies: no energy lost, no flicker.
+    // The naive line keeps full coverage.
     const float distancePx = abs(inAcross) * inExtentPx;
-    const float coverage = draw.mode == WIRE_MODE_NAIVE
-                               ? 1.0
-                               : clamp(inHalfWidthPx + 0.5 - distancePx, 0.0, 1.0);
+    const float b = inPixelStep;
+    const float overlap = min(distancePx + 0.5 * b, inHalfWidthPx) -
+                          max(distancePx - 0.5 * b, -inHalfWidthPx);
+    const float coverage =
+        draw.mode == WIRE_MODE_NAIVE ? 1.0 : clamp(overlap / b, 0.0, 1.0);
     const float alpha = coverage * inFade;
     if (alpha <= 0.0) discard;
 

@@ -17,6 +17,10 @@ layout(location = 1) noperspective out float outExtentPx;     // |across| = 1, i
 layout(location = 2) noperspective out float outHalfWidthPx;  // the clamped radius in pixels
 layout(location = 3) noperspective out float outFade;         // real / clamped radius
 layout(location = 4) flat out uint outSegment;
+// The distance across the wire between neighbouring pixel centres along the screen axis the
+// wire runs less along (1 for a horizontal or vertical wire, 1/sqrt(2) at 45 degrees):
+// wire.frag's box width.
+layout(location = 5) flat out float outPixelStep;
 
 // Two triangles: (end, side) of each of the six vertices.
 const vec2 kCorners[6] = vec2[](vec2(0, -1), vec2(1, -1), vec2(1, 1), vec2(0, -1), vec2(1, 1),
@@ -50,6 +54,7 @@ void main() {
     vec2 along = toPixels(c1) - toPixels(c0);
     along = dot(along, along) > 1e-12 ? normalize(along) : vec2(1.0, 0.0);
     const vec2 across = vec2(-along.y, along.x);
+    outPixelStep = max(abs(along.x), abs(along.y));
 
     vec4 clip = corner.x > 0.5 ? c1 : c0;
     const float radius = s.start.w;
