@@ -70,7 +70,7 @@ doc = {
     "nodes": [
         {"mesh": 0, "name": "ground"},
         {"mesh": 1, "name": "power lines"},
-        {"camera": 0, "name": "camera", "translation": [0, 1.7, 6],
+        {"camera": 0, "name": "camera", "translation": [0.5, 1.7, 6],
          "rotation": [0.0871557, 0, 0, 0.9961947]},
     ],
     "meshes": [
@@ -89,7 +89,7 @@ doc = {
             "roughnessFactor": 0.35}},
         {"name": "glowing wire", "extras": {"wireRadius": 0.02, "shadingModel": "unlit"},
          "emissiveFactor": [1, 0.4, 0.1],
-         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 2000}},
+         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 20000}},
          "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1]}},
     ],
     "extensionsUsed": ["KHR_materials_emissive_strength"],

@@ -90,7 +90,9 @@ void main() {
     const float coverage =
         draw.mode == WIRE_MODE_NAIVE ? 1.0 : clamp(overlap / b, 0.0, 1.0);
     const float alpha = coverage * inFade;
-    if (alpha <= 0.0) discard;
+    // (Written so that a NaN alpha is discarded too: lavapipe interpolates NaN for a wire in
+    // the camera's vertical plane under a pitched camera, not yet understood.)
+    if (!(alpha > 0.0)) discard;
 
     vec3 radiance = s.emissive.rgb;
     if (s.end.w < 0.5) {
@@ -117,9 +119,12 @@ void main() {
         side = safeNormalize(side - bent * dot(side, bent));
         float realHalfWidthPx = inHalfWidthPx * inFade;
         float a = clamp(distancePx / max(realHalfWidthPx, 1e-3), 0.0, 1.0);
-        vec3 cylinder = normalize(side * a + bent * sqrt(max(1.0 - a * a, 0.0)));
+        vec3 cylinder = safeNormalize(side * a + bent * sqrt(max(1.0 - a * a, 0.0)));
         float thick = smoothstep(kBentBelowPx, kCylinderAbovePx, 2.0 * realHalfWidthPx);
         vec3 N = safeNormalize(mix(bent, cylinder, thick));
+        // Degenerate frames (looking along the wire; a pixel on its silhouette whose offset
+        // has no part across it): face the camera rather than shade a zero normal.
+        if (dot(N, N) < 0.5) N = V;
         float halfLambert = 1.0 - thick;
         vec3 R = reflect(-V, N);
         float roughnessAlpha = alphaFromRoughness(surface.roughness);

@@ -30,6 +30,18 @@ vec2 toPixels(vec4 clip) {
     return (clip.xy / clip.w * 0.5 + 0.5) * draw.targetSize;
 }
 
+// Narrows `range` (parameters along the segment) to where the plane distance, linear from d0
+// at the start to d1 at the end, is >= 0.
+void clipSegment(float d0, float d1, inout vec2 range) {
+    if (d0 < 0.0 && d1 < 0.0) {
+        range = vec2(1.0, 0.0);
+    } else if (d0 < 0.0) {
+        range.x = max(range.x, d0 / (d0 - d1));
+    } else if (d1 < 0.0) {
+        range.y = min(range.y, d0 / (d0 - d1));
+    }
+}
+
 void main() {
     const uint segment = uint(gl_VertexIndex) / 6u;
     const vec2 corner = kCorners[uint(gl_VertexIndex) % 6u];
@@ -37,19 +49,29 @@ void main() {
     outSegment = segment;
     vec4 c0 = camera.viewProjection * vec4(s.start.xyz, 1.0);
     vec4 c1 = camera.viewProjection * vec4(s.end.xyz, 1.0);
-    // clip.w is the view depth: the part of the segment before the near plane is cut off
-    // (clip coordinates are linear along the segment). Wholly behind: a degenerate quad.
-    const float nearW = draw.nearPlane;
-    if (c0.w < nearW && c1.w < nearW) {
+    // Clip coordinates are linear along the segment: keep the part in front of the near plane
+    // (clip.w is the view depth) and within half a screen of the view on each side, so the
+    // rasteriser never clips a quad itself (lavapipe's clipper returns NaN attributes for
+    // these slivers) and far-off ends keep their precision. Nothing left: a degenerate quad.
+    vec2 range = vec2(0.0, 1.0);
+    const float kSides = 2.0;  // |x|, |y| <= 2 w: half a screen beyond each edge
+    clipSegment(c0.w - draw.nearPlane, c1.w - draw.nearPlane, range);
+    clipSegment(kSides * c0.w - c0.x, kSides * c1.w - c1.x, range);
+    clipSegment(kSides * c0.w + c0.x, kSides * c1.w + c1.x, range);
+    clipSegment(kSides * c0.w - c0.y, kSides * c1.w - c1.y, range);
+    clipSegment(kSides * c0.w + c0.y, kSides * c1.w + c1.y, range);
+    if (!(range.x < range.y)) {
         gl_Position = vec4(0.0, 0.0, -1.0, 1.0);
         outAcross = 0.0;
         outExtentPx = 0.0;
         outHalfWidthPx = 0.0;
         outFade = 0.0;
+        outPixelStep = 1.0;
         return;
     }
-    if (c0.w < nearW) c0 = mix(c0, c1, (nearW - c0.w) / (c1.w - c0.w));
-    if (c1.w < nearW) c1 = mix(c1, c0, (nearW - c1.w) / (c0.w - c1.w));
+    const vec4 start = mix(c0, c1, range.x);
+    c1 = mix(c0, c1, range.y);
+    c0 = start;
 
     vec2 along = toPixels(c1) - toPixels(c0);
     along = dot(along, along) > 1e-12 ? normalize(along) : vec2(1.0, 0.0);
