@@ -123,7 +123,7 @@ void addWireRows(ReportContext& context) {
          worst, cost});
     std::snprintf(worst, sizeof(worst),
                   "%.3g px wide (a pixel-wide line, 1 / width too bright); flicker: column sums "
-                  "change by %.2g%%",
+                  "change by %.2g%% (the line jumps a whole row instead)",
                   naive.worstWidth, 100.0 * naive.flicker);
     std::snprintf(cost, sizeof(cost), "wire pass %s ms (2,000 segments, 256x256)",
                   formatNumber(naiveMs).c_str());
