@@ -89,4 +89,40 @@ TEST_F(Wires, ASubpixelWireMovingByEighthPixelsKeepsItsColumnSums) {
     EXPECT_LT(worst, 0.05);
 }
 
+// A wire running away from a pitched camera in its vertical plane: on screen a vertical line
+// whose ends differ in depth, the case lavapipe's clipper once turned into NaN coverage. Its
+// row sums (the energy across it) match the same wire a millimetre to the side.
+TEST_F(Wires, AWireInAPitchedCamerasVerticalPlaneKeepsItsEnergy) {
+    WireScene scene;
+    const glm::mat4 pitched = glm::rotate(glm::mat4(1.0f), glm::radians(-10.0f), {1, 0, 0});
+    auto rowSums = [&](float x) {
+        scene.camera.view = pitched;
+        scene.wire.positions = {{x, 2.0f, -1.0f}, {x, 2.0f, -120.0f}};
+        scene.draws = {{&scene.wire, &scene.material, glm::mat4(1.0f)}};
+        FrameInputs inputs;
+        inputs.scene.camera = scene.camera;
+        inputs.scene.wires = scene.draws;
+        const CapturedFrame frame = render(inputs);
+        EXPECT_EQ(frame.nonFiniteHdrValues(), 0u) << "x = " << x;
+        std::vector<double> sums(frame.height, 0.0);
+        for (uint32_t y = 0; y < frame.height; ++y) {
+            for (uint32_t column = 0; column < frame.width; ++column)
+                sums[y] += hdrPixel(frame, column, y)[0];
+        }
+        return sums;
+    };
+    const std::vector<double> inPlane = rowSums(0.0f);
+    const std::vector<double> aside = rowSums(1e-3f);
+    double worst = 0.0;
+    uint32_t lit = 0;
+    for (uint32_t y = 0; y < kSize; ++y) {
+        if (aside[y] < 0.05 * kEmission) continue;  // rows the wire does not cross
+        ++lit;
+        worst = std::max(worst, std::abs(inPlane[y] / aside[y] - 1.0));
+    }
+    std::printf("wire in the vertical plane: %u rows, worst row energy error %.2e\n", lit, worst);
+    EXPECT_GT(lit, kSize / 4);
+    EXPECT_LT(worst, 0.05);
+}
+
 }  // namespace

@@ -1,15 +1,15 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "wire_bindings.h"
 #include "common/specialization_ids.h"
+#include "wire_bindings.h"
 // Wire shading and coverage (seed 004 §6). Geometric antialiasing: the pixel's coverage of the
 // wire's (clamped) width from its distance to the centre line, a box across the wire one
 // pixel step wide, so the coverages down any column sum to exactly the wire's cross-section
-// and a moving wire keeps its energy; times wire.vert's fade (real / clamped radius). Shading aliasing: a pixel-thin wire
-// shows a pixel several normals at once, so its normal is bent toward the camera and its
-// diffuse term is half-Lambert ((N.L / 2 + 1/2)^2), blended into the true cylinder normal and
-// Lambert as the wire grows wider on screen. Lit like the forward transparent pass: the
-// clustered lights (with shadows) and the sky. Output straight alpha, blended "over".
+// and a moving wire keeps its energy; times wire.vert's fade (real / clamped radius). Shading
+// aliasing: a pixel-thin wire shows a pixel several normals at once, so its normal is bent toward
+// the camera and its diffuse term is half-Lambert ((N.L / 2 + 1/2)^2), blended into the true
+// cylinder normal and Lambert as the wire grows wider on screen. Lit like the forward transparent
+// pass: the clustered lights (with shadows) and the sky. Output straight alpha, blended "over".
 #include "common/ambient_lighting.glsl"
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
@@ -47,17 +47,16 @@ const uint kListOverflow = 0xffffffffu;
 const float kBentBelowPx = 1.0;
 const float kCylinderAbovePx = 4.0;
 
-layout(location = 0) noperspective in float inAcross;
-layout(location = 1) noperspective in float inExtentPx;
-layout(location = 2) noperspective in float inHalfWidthPx;
-layout(location = 3) noperspective in float inFade;
+layout(location = 0) flat in vec4 inEndsPx;
+layout(location = 1) flat in vec2 inHalfWidthPx;
+layout(location = 2) flat in vec2 inFade;
 layout(location = 4) flat in uint inSegment;
 layout(location = 5) flat in float inPixelStep;
 
 layout(location = 0) out vec4 outRadiance;  // cd/m^2, a = coverage
 
-vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha,
-                   float halfLambert, uint index) {
+vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha, float halfLambert,
+                   uint index) {
     Light light = loadLight(index, camera.frameInfo.w);
     LightIncidence incidence = evaluateLight(light, P, N, R, alpha);
     float visibility = any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))
@@ -66,9 +65,9 @@ vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha,
     // Half-Lambert (seed 004 §6): wraps the diffuse term round the wire, so the few normals a
     // thin wire shows a pixel light it alike; weighted in by thinness.
     float wrapped = 0.5 * dot(N, incidence.diffuseL) + 0.5;
-    incidence.diffuseIlluminance = mix(incidence.diffuseIlluminance,
-                                       incidence.incidentIlluminance * (wrapped * wrapped),
-                                       halfLambert);
+    incidence.diffuseIlluminance =
+        mix(incidence.diffuseIlluminance, incidence.incidentIlluminance * (wrapped * wrapped),
+            halfLambert);
     incidence.diffuseIlluminance *= visibility;
     incidence.specularIlluminance *= visibility;
     incidence.incidentIlluminance *= visibility;
@@ -83,16 +82,23 @@ void main() {
     // steeper than 45 degrees) then tile the line without gap or overlap, so the coverages
     // sum to the wire's cross-section 2h / b wherever it lies: no energy lost, no flicker.
     // The naive line keeps full coverage.
-    const float distancePx = abs(inAcross) * inExtentPx;
+    // The pixel centre's distance to the centre line, and its place along the segment for the
+    // width and fade (linear on screen, as wire.vert's quad is).
+    const vec2 fromStart = gl_FragCoord.xy - inEndsPx.xy;
+    const vec2 line = inEndsPx.zw - inEndsPx.xy;
+    const float lengthSquared = dot(line, line);
+    const vec2 along = lengthSquared > 1e-12 ? line * inversesqrt(lengthSquared) : vec2(1.0, 0.0);
+    const float distancePx = abs(dot(fromStart, vec2(-along.y, along.x)));
+    const float t =
+        lengthSquared > 1e-12 ? clamp(dot(fromStart, line) / lengthSquared, 0.0, 1.0) : 0.0;
+    const float halfWidthPx = mix(inHalfWidthPx.x, inHalfWidthPx.y, t);
+    const float fade = mix(inFade.x, inFade.y, t);
     const float b = inPixelStep;
-    const float overlap = min(distancePx + 0.5 * b, inHalfWidthPx) -
-                          max(distancePx - 0.5 * b, -inHalfWidthPx);
-    const float coverage =
-        draw.mode == WIRE_MODE_NAIVE ? 1.0 : clamp(overlap / b, 0.0, 1.0);
-    const float alpha = coverage * inFade;
-    // (Written so that a NaN alpha is discarded too: lavapipe interpolates NaN for a wire in
-    // the camera's vertical plane under a pitched camera, not yet understood.)
-    if (!(alpha > 0.0)) discard;
+    const float overlap =
+        min(distancePx + 0.5 * b, halfWidthPx) - max(distancePx - 0.5 * b, -halfWidthPx);
+    const float coverage = draw.mode == WIRE_MODE_NAIVE ? 1.0 : clamp(overlap / b, 0.0, 1.0);
+    const float alpha = coverage * fade;
+    if (alpha <= 0.0) discard;
 
     vec3 radiance = s.emissive.rgb;
     if (s.end.w < 0.5) {
@@ -117,7 +123,7 @@ void main() {
         vec3 axisPoint = s.start.xyz + T * dot(P - s.start.xyz, T);
         vec3 side = P - axisPoint;
         side = safeNormalize(side - bent * dot(side, bent));
-        float realHalfWidthPx = inHalfWidthPx * inFade;
+        float realHalfWidthPx = halfWidthPx * fade;
         float a = clamp(distancePx / max(realHalfWidthPx, 1e-3), 0.0, 1.0);
         vec3 cylinder = safeNormalize(side * a + bent * sqrt(max(1.0 - a * a, 0.0)));
         float thick = smoothstep(kBentBelowPx, kCylinderAbovePx, 2.0 * realHalfWidthPx);
@@ -133,10 +139,10 @@ void main() {
 
         if (kIblMode != 0u) {
             vec4 sh[9] = irradianceSh;
-            radiance += environmentAmbient(surface, N, V, sh, prefilteredCube,
-                                           draw.prefilteredMipCount, environmentBrdfLut,
-                                           kIblMode == 2u) *
-                        draw.skyIntensity;
+            radiance +=
+                environmentAmbient(surface, N, V, sh, prefilteredCube, draw.prefilteredMipCount,
+                                   environmentBrdfLut, kIblMode == 2u) *
+                draw.skyIntensity;
         }
         if (kClustered) {
             for (uint i = 0u; i < draw.directionalCount; ++i) {
@@ -145,16 +151,16 @@ void main() {
             }
             // Local lights from the cluster's list: they reach the wire where an opaque or
             // blended surface shares its cluster (wires do not mark clusters themselves).
-            uint cluster = clusterOfPixel(draw.grid, uvec2(gl_FragCoord.xy), gl_FragCoord.z,
-                                          uintBitsToFloat(depthRange[2]),
-                                          uintBitsToFloat(depthRange[3]));
+            uint cluster =
+                clusterOfPixel(draw.grid, uvec2(gl_FragCoord.xy), gl_FragCoord.z,
+                               uintBitsToFloat(depthRange[2]), uintBitsToFloat(depthRange[3]));
             uint first = clusterRanges[2u * cluster];
             uint count = clusterRanges[2u * cluster + 1u];
             if (count == kListOverflow) {
                 for (uint i = 0u; i < camera.frameInfo.z; ++i) {
                     if (!lightInEveryCluster(uint(lightData[3u * camera.frameInfo.w + i].w))) {
-                        radiance += lightRadiance(surface, P, N, V, R, roughnessAlpha,
-                                                  halfLambert, i);
+                        radiance +=
+                            lightRadiance(surface, P, N, V, R, roughnessAlpha, halfLambert, i);
                     }
                 }
             } else {
@@ -162,8 +168,8 @@ void main() {
                 for (uint i = 0u; i < count; ++i) {
                     uint light = lightOfEntry(lightIndices[first + i], quarterBit);
                     if (light != kNoLight) {
-                        radiance += lightRadiance(surface, P, N, V, R, roughnessAlpha,
-                                                  halfLambert, light);
+                        radiance +=
+                            lightRadiance(surface, P, N, V, R, roughnessAlpha, halfLambert, light);
                     }
                 }
             }

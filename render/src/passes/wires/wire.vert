@@ -1,8 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "wire_bindings.h"
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
+#include "wire_bindings.h"
 #include "wire_segment.glsl"
 // Wire antialiasing (seed 004 §6, Persson's "phone-wire AA"): each segment becomes a
 // camera-facing quad, six vertices per segment, no vertex buffer. Its radius is clamped to at
@@ -11,11 +11,15 @@
 // width x radiance, stays the real wire's). The quad reaches one pixel past the clamped edge
 // for the coverage ramp wire.frag computes from the distance to the centre line.
 
-// Across the quad: -1 at one long edge, +1 at the other (linear in screen space).
-layout(location = 0) noperspective out float outAcross;
-layout(location = 1) noperspective out float outExtentPx;     // |across| = 1, in pixels
-layout(location = 2) noperspective out float outHalfWidthPx;  // the clamped radius in pixels
-layout(location = 3) noperspective out float outFade;         // real / clamped radius
+// The segment on screen and its width at each end, all flat: wire.frag measures each pixel's
+// distance to the centre line from gl_FragCoord itself rather than from interpolated values,
+// because lavapipe's clipper interpolates noperspective values by the ratio of the ends'
+// screen coordinates along the first axis on which their clip coordinates differ, 0 / 0 for
+// an edge of the quad that is vertical on screen (a wire in the vertical plane of a pitched
+// camera: clip x differs with w, x / w does not), which gave NaN coverage.
+layout(location = 0) flat out vec4 outEndsPx;       // xy start, zw end (pixels)
+layout(location = 1) flat out vec2 outHalfWidthPx;  // the clamped radius in pixels at each end
+layout(location = 2) flat out vec2 outFade;         // real / clamped radius at each end
 layout(location = 4) flat out uint outSegment;
 // The distance across the wire between neighbouring pixel centres along the screen axis the
 // wire runs less along (1 for a horizontal or vertical wire, 1/sqrt(2) at 45 degrees):
@@ -23,8 +27,8 @@ layout(location = 4) flat out uint outSegment;
 layout(location = 5) flat out float outPixelStep;
 
 // Two triangles: (end, side) of each of the six vertices.
-const vec2 kCorners[6] = vec2[](vec2(0, -1), vec2(1, -1), vec2(1, 1), vec2(0, -1), vec2(1, 1),
-                                vec2(0, 1));
+const vec2 kCorners[6] =
+    vec2[](vec2(0, -1), vec2(1, -1), vec2(1, 1), vec2(0, -1), vec2(1, 1), vec2(0, 1));
 
 vec2 toPixels(vec4 clip) {
     return (clip.xy / clip.w * 0.5 + 0.5) * draw.targetSize;
@@ -62,10 +66,9 @@ void main() {
     clipSegment(kSides * c0.w + c0.y, kSides * c1.w + c1.y, range);
     if (!(range.x < range.y)) {
         gl_Position = vec4(0.0, 0.0, -1.0, 1.0);
-        outAcross = 0.0;
-        outExtentPx = 0.0;
-        outHalfWidthPx = 0.0;
-        outFade = 0.0;
+        outEndsPx = vec4(0.0);
+        outHalfWidthPx = vec2(0.0);
+        outFade = vec2(0.0);
         outPixelStep = 1.0;
         return;
     }
@@ -78,22 +81,26 @@ void main() {
     const vec2 across = vec2(-along.y, along.x);
     outPixelStep = max(abs(along.x), abs(along.y));
 
-    vec4 clip = corner.x > 0.5 ? c1 : c0;
+    // Both ends' widths in every vertex, so the flat values do not depend on the provoking one.
     const float radius = s.start.w;
-    // A pixel's radius in metres at this depth (half the pixel's footprint).
-    const float pixelRadius = clip.w * draw.pixelRadiusPerDepth;
-    float clamped = max(radius, pixelRadius);
-    float fade = radius / clamped;
-    if (draw.mode == WIRE_MODE_NAIVE) {
-        clamped = pixelRadius;  // a line one pixel wide whatever the wire's width
-        fade = 1.0;
+    vec2 halfWidthPx, fade;
+    for (int end = 0; end < 2; ++end) {
+        // A pixel's radius in metres at this depth (half the pixel's footprint).
+        const float pixelRadius = (end == 0 ? c0.w : c1.w) * draw.pixelRadiusPerDepth;
+        float clamped = max(radius, pixelRadius);
+        fade[end] = radius / clamped;
+        if (draw.mode == WIRE_MODE_NAIVE) {
+            clamped = pixelRadius;  // a line one pixel wide whatever the wire's width
+            fade[end] = 1.0;
+        }
+        halfWidthPx[end] = 0.5 * clamped / pixelRadius;
     }
-    const float halfWidthPx = 0.5 * clamped / pixelRadius;
-    const float extentPx = draw.mode == WIRE_MODE_NAIVE ? halfWidthPx : halfWidthPx + 1.0;
+    const int end = corner.x > 0.5 ? 1 : 0;
+    vec4 clip = end == 1 ? c1 : c0;
+    const float extentPx = draw.mode == WIRE_MODE_NAIVE ? halfWidthPx[end] : halfWidthPx[end] + 1.0;
     clip.xy += across * (corner.y * extentPx) * (2.0 / draw.targetSize) * clip.w;
     gl_Position = clip;
-    outAcross = corner.y;
-    outExtentPx = extentPx;
+    outEndsPx = vec4(toPixels(c0), toPixels(c1));
     outHalfWidthPx = halfWidthPx;
     outFade = fade;
 }
