@@ -828,7 +828,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             const float nearPlane = inputs.scene.camera.nearPlane;
             auto p = g.addPass("wires", PassKind::Device,
                                [this, ids, environment, skyIntensity, shadowDescriptors,
-                                pixelRadiusPerDepth, nearPlane](PassContext& ctx) {
+                                pixelRadiusPerDepth, nearPlane, froxels](PassContext& ctx) {
                                    WirePass::Inputs in{};
                                    in.hdr = ctx.image(ids.hdr);
                                    in.depth = ctx.image(ids.depth);
@@ -844,6 +844,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                    in.shadows = &shadowDescriptors;
                                    in.pixelRadiusPerDepth = pixelRadiusPerDepth;
                                    in.nearPlane = nearPlane;
+                                   if (froxels) {
+                                       in.froxelParams = &volumetricsPass_->froxelParams();
+                                       in.froxelIntegrated = ctx.buffer(*froxels);
+                                   }
                                    wirePass_->record(ctx.cmd(), in);
                                });
             p.read(h.depth, Use::DepthRead);
@@ -859,6 +863,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 p.read(shadowViews, Use::StorageRead, kFragmentStage);
                 p.read(shadowLights, Use::StorageRead, kFragmentStage);
             }
+            if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
             h.hdr = p.write(h.hdr, Use::ColorAttachment);
         }
     }

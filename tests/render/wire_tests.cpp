@@ -26,7 +26,10 @@ protected:
     static void SetUpTestSuite() {
         context_ = new GpuContext(requiredValidation());
         resources_ = new SceneResources(*context_);
-        frames_ = new FrameSequence(*context_, kSize, kSize);
+        // Froxels: only frames with fog (the fog case) draw the medium.
+        RendererOptions options;
+        options.volumetrics = VolumetricsMode::Froxels;
+        frames_ = new FrameSequence(*context_, kSize, kSize, options);
     }
     static void TearDownTestSuite() {
         delete frames_;
@@ -123,6 +126,34 @@ TEST_F(Wires, AWireInAPitchedCamerasVerticalPlaneKeepsItsEnergy) {
     std::printf("wire in the vertical plane: %u rows, worst row energy error %.2e\n", lit, worst);
     EXPECT_GT(lit, kSize / 4);
     EXPECT_LT(worst, 0.05);
+}
+
+// A wire inside uniform fog (froxels, no lights, so no in-scattering): its column energy is
+// attenuated by the transmittance to it, as a blended surface's is.
+TEST_F(Wires, InFogAreAttenuatedByTheTransmittanceToThem) {
+    WireScene scene;
+    const float width = 2.5f;
+    const float depth = depthForWidth(width);
+    FrameInputs inputs = scene.place(depth, 0.0f);
+    candela::content::Fog fog;
+    fog.scattering = 0.08f;
+    fog.absorption = 0.04f;
+    inputs.scene.fog = fog;
+    const CapturedFrame frame = render(inputs);
+    ASSERT_EQ(frame.nonFiniteHdrValues(), 0u);
+    // Each column sees the wire along its own ray, longer than the view depth off the axis.
+    const std::vector<double> sums = columnSums(frame);
+    double error = 0.0;
+    for (uint32_t x = 0; x < kSize; ++x) {
+        const double slope = ((x + 0.5) / kSize * 2.0 - 1.0) * std::tan(kFov / 2.0);
+        const double distance = double(depth) * std::sqrt(1.0 + slope * slope);
+        const double expected = double(width) * kEmission * std::exp(-0.12 * distance);
+        error = std::max(error, std::abs(sums[x] / expected - 1.0));
+    }
+    std::printf("wire %.1f m into fog (T = %.3f on the axis): worst column energy error %.2e\n",
+                depth, std::exp(-0.12 * double(depth)), error);
+    // Froxels interpolate the transmittance between exponential slice boundaries.
+    EXPECT_LT(error, 0.02);
 }
 
 }  // namespace

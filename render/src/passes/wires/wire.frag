@@ -20,6 +20,9 @@
 #define SHADOW_VIEWS_BINDING WIRE_BINDING_SHADOW_VIEWS
 #define SHADOW_LIGHTS_BINDING WIRE_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
+#define FROXEL_PARAMS_BINDING WIRE_BINDING_FROXEL_PARAMS
+#define FROXEL_INTEGRATED_BINDING WIRE_BINDING_FROXEL_INTEGRATED
+#include "common/froxel_lookup.glsl"
 #include "wire_segment.glsl"
 
 layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
@@ -179,5 +182,11 @@ void main() {
             }
         }
     }
+    // The medium in front of the wire (froxels), as for the forward pass's blended surfaces:
+    // attenuated by it, its in-scattering added, so a fully covered pixel shows what an opaque
+    // surface there would.
+    vec4 medium = froxelsAt(gl_FragCoord.xy, vec2(camera.frameInfo.xy),
+                            froxelParams.range.x / max(gl_FragCoord.z, 1e-30));
+    radiance = radiance * medium.a + medium.rgb;
     outRadiance = vec4(radiance, alpha);
 }

@@ -52,6 +52,9 @@ public:
         const ShadowDescriptors* shadows;
         float pixelRadiusPerDepth;  // 1 / (projection[1][1] x target height)
         float nearPlane;
+        // Froxels (passes/volumetrics), read in the fragment shader; null: no medium.
+        const GpuBuffer* froxelParams = nullptr;
+        BufferRef froxelIntegrated;
     };
     void record(VkCommandBuffer cmd, const Inputs& in) const;
 
@@ -60,6 +63,8 @@ private:
 
     GpuContext& context_;
     GpuBuffer segments_;
+    // Zeros: froxel parameters saying "no medium", bound when the frame has no froxels.
+    GpuBuffer noMedium_;
     uint32_t segmentCount_ = 0;
     WireMode mode_ = WireMode::Coverage;
     LightingFeatures features_;
