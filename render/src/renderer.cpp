@@ -42,6 +42,7 @@
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "passes/volumetrics/volumetrics_pass.h"
+#include "passes/wires/wire_pass.h"
 #include "vk/image_transfer.h"
 #include "vk/vk_check.h"
 
@@ -891,6 +892,55 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 composite.read(*froxels, Use::StorageRead);
                 h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
             }
+        }
+    }
+    // Wires (seed 004 §6) over the lit frame and its medium, under the blended surfaces.
+    if (!inputs.scene.wires.empty()) {
+        if (!wirePass_) wirePass_ = std::make_unique<WirePass>(context_);
+        if (wirePass_->prepare(inputs.scene, features, options_.wires)) {
+            features_.push_back("wires");
+            const glm::mat4& projection = inputs.scene.camera.projection;
+            const float pixelRadiusPerDepth = 1.0f / (std::abs(projection[1][1]) * float(height_));
+            const float nearPlane = inputs.scene.camera.nearPlane;
+            auto p = g.addPass("wires", PassKind::Device,
+                               [this, ids, environment, skyIntensity, shadowDescriptors,
+                                pixelRadiusPerDepth, nearPlane, froxels](PassContext& ctx) {
+                                   WirePass::Inputs in{};
+                                   in.hdr = ctx.image(ids.hdr);
+                                   in.depth = ctx.image(ids.depth);
+                                   in.camera = &cameraBuffer_;
+                                   in.lights = &lights_->buffer();
+                                   in.clusterRanges = &clusters_->ranges();
+                                   in.lightIndices = &clusters_->indices();
+                                   in.depthRange = &clusters_->depthRange();
+                                   in.grid = &clusters_->grid();
+                                   in.directionalCount = clusters_->directionalCount();
+                                   in.environment = &environment;
+                                   in.skyIntensity = skyIntensity;
+                                   in.shadows = &shadowDescriptors;
+                                   in.pixelRadiusPerDepth = pixelRadiusPerDepth;
+                                   in.nearPlane = nearPlane;
+                                   if (froxels) {
+                                       in.froxelParams = &volumetricsPass_->froxelParams();
+                                       in.froxelIntegrated = ctx.buffer(*froxels);
+                                   }
+                                   wirePass_->record(ctx.cmd(), in);
+                               });
+            p.read(h.depth, Use::DepthRead);
+            p.read(h.camera, Use::Uniform, kRasterStages);
+            p.read(h.lights, Use::StorageRead, kFragmentStage);
+            if (features.clustered) {
+                p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
+                p.read(h.clusters.indices, Use::StorageRead, kFragmentStage);
+                p.read(h.clusters.depthRange, Use::StorageRead, kFragmentStage);
+            }
+            if (features.shadows) {
+                p.read(shadowAtlas, Use::Sampled, kFragmentStage);
+                p.read(shadowViews, Use::StorageRead, kFragmentStage);
+                p.read(shadowLights, Use::StorageRead, kFragmentStage);
+            }
+            if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
+            h.hdr = p.write(h.hdr, Use::ColorAttachment);
         }
     }
     if (blended) {

@@ -590,6 +590,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                 extractFrame(world->registry, *s.lightTable, *s.resources, aspect, s.extracted);
                 frame.scene.camera = s.extracted.camera;
                 frame.scene.draws = s.extracted.draws;
+                frame.scene.wires = s.extracted.wires;
                 frame.scene.previousWorlds = s.extracted.previousWorlds;
                 frame.scene.deforms = s.extracted.deforms;
                 frame.scene.jointMatrices = s.extracted.jointMatrices;

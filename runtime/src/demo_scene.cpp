@@ -334,6 +334,38 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     meshes->model.images.push_back(rustMask());
     const int32_t rustySphere = meshes->add(content::makeSphere(0.35f), rusty);
 
+    // Issue 19 (seed 004 §6): power lines across the sky over the back of the hall, seen
+    // between the roof ribs: three conductors sagging between poles every 15 m outside the
+    // side walls, 2.4 cm thick: under a pixel wide from the tour's viewpoints, drawn by the
+    // wire pass at their real energy instead of a pixel-wide line.
+    const int32_t powerLines = int32_t(meshes->model.meshes.size());
+    {
+        content::Mesh lines;
+        content::Material cable = material({0.35f, 0.36f, 0.38f}, 1.0f, 0.45f);
+        cable.wireRadius = 0.012f;
+        const int32_t cableMaterial = int32_t(meshes->model.materials.size());
+        meshes->model.materials.push_back(cable);
+        constexpr float kSpan = 15.0f, kSag = 0.5f;
+        constexpr int kSpans = 5, kPointsPerSpan = 10;
+        for (float height : {7.0f, 7.4f, 7.8f}) {
+            content::Wire wire;
+            wire.radius = cable.wireRadius;
+            wire.material = cableMaterial;
+            for (int i = 0; i <= kSpans * kPointsPerSpan; ++i) {
+                const float x = -0.5f * kSpan * float(kSpans) + kSpan * float(i) / kPointsPerSpan;
+                // A parabola per span: the pole ends at `height`, the middle kSag lower.
+                const float u = float(i % kPointsPerSpan) / kPointsPerSpan * 2.0f - 1.0f;
+                wire.positions.push_back({x, height - kSag * (1.0f - u * u), 0.0f});
+                if (i > 0)
+                    wire.segments.insert(wire.segments.end(), {uint32_t(i - 1), uint32_t(i)});
+            }
+            lines.wires.push_back(std::move(wire));
+        }
+        meshes->model.meshes.push_back(std::move(lines));
+    }
+    const int32_t pole = meshes->add(content::makeBox({0.12f, 4.0f, 0.12f}),
+                                     material({0.3f, 0.22f, 0.15f}, 0.0f, 0.8f));
+
     const content::Model& model = world.adoptModel(
         std::unique_ptr<content::Model>(new content::Model(std::move(meshes->model))));
     auto draw = [&](ecs::Entity e, int32_t mesh) {
@@ -363,6 +395,10 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
              rib);
     }
 
+    draw(place(registry, "power lines", {0.0f, 0.0f, -6.0f}), powerLines);
+    for (int i = 0; i <= 5; ++i) {
+        draw(place(registry, "power line pole", {-37.5f + 15.0f * float(i), 4.0f, -6.0f}), pole);
+    }
     // The helmet on a pedestal in the middle of the hall.
     draw(place(registry, "helmet pedestal", {0.0f, 0.5f, -3.0f}), pedestal);
     draw(place(registry, "helmet pedestal top", {0.0f, 1.02f, -3.0f}), gold);

@@ -92,6 +92,7 @@ PackedPose packPose(const content::Skin* skin, const content::MorphWeights* morp
 void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneResources& resources,
                   float aspect, ExtractedFrame& out) {
     out.draws.clear();
+    out.wires.clear();
     out.previousWorlds.clear();
     out.lastWorldNext.clear();
     out.deforms.clear();
@@ -115,6 +116,13 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
             if (instance.mesh < 0 ||
                 size_t(instance.mesh) >= uploaded.firstPrimitiveOfMesh.size()) {
                 return;
+            }
+            const content::Model& model = *instance.model;
+            for (const content::Wire& wire : model.meshes[size_t(instance.mesh)].wires) {
+                const bool named =
+                    wire.material >= 0 && size_t(wire.material) < model.materials.size();
+                out.wires.push_back(
+                    {&wire, named ? &model.materials[size_t(wire.material)] : nullptr, world});
             }
             uint32_t first = uploaded.firstPrimitiveOfMesh[instance.mesh];
             auto last = out.lastWorld.find(e.bits());

@@ -460,5 +460,52 @@ TEST(GltfFeatures, CamerasMatricesStripsU8IndicesAndVertexColours) {
     EXPECT_EQ(node.camera, 1);
 }
 
+// Issue 19 (seed 004 §6): LINES / LINE_STRIP / LINE_LOOP primitives whose material's extras
+// gives wireRadius become wires (index pairs, the radius in metres); lines without it stay
+// skipped with a warning; a radius that is not a finite positive number is an error naming
+// the file and the material's element, and its lines stay skipped.
+TEST(GltfFeatures, LinePrimitivesWithWireRadiusBecomeWires) {
+    json doc = quadDocument();
+    doc["materials"] = json::array({
+        {{"name", "plain"}},
+        {{"name", "cable"}, {"extras", {{"wireRadius", 0.02}}}},
+        {{"name", "inside out"}, {"extras", {{"wireRadius", -1.0}}}},
+        {{"name", "wordy"}, {"extras", {{"wireRadius", "NaN"}}}},
+    });
+    // The quad's four corners as lines (0-1, 2-3), a strip (0-1-2-3) and a loop.
+    auto lines = [](int mode, int material) {
+        return json{{"attributes", {{"POSITION", 0}}}, {"mode", mode}, {"material", material}};
+    };
+    doc["meshes"][0]["primitives"].push_back(lines(1, 1));  // LINES
+    doc["meshes"][0]["primitives"].push_back(lines(3, 1));  // LINE_STRIP
+    doc["meshes"][0]["primitives"].push_back(lines(2, 1));  // LINE_LOOP
+    doc["meshes"][0]["primitives"].push_back(lines(1, 0));  // no wireRadius: skipped
+    doc["meshes"][0]["primitives"].push_back(lines(1, 2));  // negative: skipped
+    doc["meshes"][0]["primitives"].push_back(lines(3, 3));  // not a number: skipped
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics, "wires.gltf");
+    ASSERT_TRUE(m) << diagnostics.toString();
+    const std::string text = diagnostics.toString();
+    ASSERT_EQ(m->meshes[0].primitives.size(), 1u) << text;  // the quad
+    ASSERT_EQ(m->meshes[0].wires.size(), 3u) << text;
+    const auto& wires = m->meshes[0].wires;
+    EXPECT_FLOAT_EQ(wires[0].radius, 0.02f);
+    EXPECT_EQ(wires[0].material, 1);
+    EXPECT_EQ(wires[0].positions.size(), 4u);
+    EXPECT_EQ(wires[0].segments, (std::vector<std::uint32_t>{0, 1, 2, 3}));
+    EXPECT_EQ(wires[1].segments, (std::vector<std::uint32_t>{0, 1, 1, 2, 2, 3}));
+    EXPECT_EQ(wires[2].segments, (std::vector<std::uint32_t>{0, 1, 1, 2, 2, 3, 3, 0}));
+    EXPECT_FLOAT_EQ(m->materials[2].wireRadius, 0.0f);
+    EXPECT_FLOAT_EQ(m->materials[3].wireRadius, 0.0f);
+    EXPECT_TRUE(diagnostics.mentions("wires.gltf")) << text;
+    EXPECT_TRUE(diagnostics.mentions("materials[2].extras.wireRadius")) << text;
+    EXPECT_TRUE(diagnostics.mentions("'inside out'")) << text;
+    EXPECT_TRUE(diagnostics.mentions("materials[3].extras.wireRadius")) << text;
+    EXPECT_TRUE(diagnostics.mentions("'wordy'")) << text;
+    EXPECT_TRUE(diagnostics.mentions("meshes[0].primitives[4]")) << text;  // plain lines
+    EXPECT_TRUE(diagnostics.mentions("lines")) << text;
+    EXPECT_FALSE(diagnostics.mentions("meshes[0].primitives[1]")) << text;
+}
+
 }  // namespace
 }  // namespace candela::content

@@ -63,3 +63,41 @@ TEST(FrameExtraction, SkinnedDrawsNameLastFramesDeformedVerticesForMotionVectors
     const render::DrawItem back = extract(0.3f);
     EXPECT_EQ(back.previousDeformedVertices, back.deformedVertices);
 }
+
+// Issue 19: a mesh's wires (content::Mesh::wires) go to the frame's wire list with the
+// instance's world matrix and their material, never to the mesh draws.
+TEST(FrameExtraction, WiresOfAMeshInstanceBecomeWireDraws) {
+    render::GpuContextOptions options;
+    options.validation = render::ValidationMode::Required;
+    render::GpuContext context(options);
+    render::SceneResources resources(context);
+
+    content::Model model;
+    content::Material cable;
+    cable.wireRadius = 0.01f;
+    model.materials.push_back(cable);
+    content::Wire wire;
+    wire.positions = {{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}};
+    wire.segments = {0, 1};
+    wire.radius = cable.wireRadius;
+    wire.material = 0;
+    content::Mesh& mesh = model.meshes.emplace_back();
+    mesh.primitives.push_back(content::makeBox({0.5f, 0.5f, 0.5f}));
+    mesh.wires.push_back(wire);
+
+    ecs::Registry registry;
+    LightTable lights(registry);
+    const ecs::Entity e = registry.create();
+    ecs::WorldTransform world;
+    world.matrix.m[13] = 7.0f;  // y
+    registry.emplace<ecs::WorldTransform>(e, world);
+    registry.emplace<content::MeshInstance>(e, content::MeshInstance{&model, 0});
+
+    ExtractedFrame frame;
+    extractFrame(registry, lights, resources, 1.0f, frame);
+    EXPECT_EQ(frame.draws.size(), 1u) << "the box only";
+    ASSERT_EQ(frame.wires.size(), 1u);
+    EXPECT_EQ(frame.wires[0].wire, &model.meshes[0].wires[0]);
+    EXPECT_EQ(frame.wires[0].material, &model.materials[0]);
+    EXPECT_FLOAT_EQ(frame.wires[0].world[3][1], 7.0f);
+}

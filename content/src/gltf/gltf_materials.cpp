@@ -2,6 +2,8 @@
 // KHR_materials_specular, KHR_materials_anisotropy, KHR_materials_clearcoat,
 // KHR_texture_transform) and the engine's `extras` -> Model::materials.
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "candela/content/component_validation.h"
 #include "gltf_context.h"
@@ -176,6 +178,25 @@ void readCavityExtra(Context& context, const std::string& element, const tinyglt
     }
 }
 
+// extras.wireRadius (seed 004 §6): the radius in metres of the wires drawn with this material.
+// Anything but a finite positive number is an error: the lines then stay skipped.
+void readWireRadiusExtra(Context& context, const std::string& element,
+                         const tinygltf::Value& extras, Material& material) {
+    const tinygltf::Value* value = member(extras, "wireRadius");
+    if (value == nullptr) return;
+    const double radius =
+        value->IsNumber() ? value->GetNumberAsDouble() : std::numeric_limits<double>::quiet_NaN();
+    if (!value->IsNumber() || !std::isfinite(radius) || radius <= 0.0 ||
+        radius > double(std::numeric_limits<float>::max())) {
+        const std::string given = value->IsNumber() ? std::to_string(radius) : "not a number";
+        context.error(element + ".wireRadius",
+                      "material '" + material.name + "': a wire radius must be a finite number " +
+                          "of metres above 0 (given: " + given + "); its lines are skipped");
+        return;
+    }
+    material.wireRadius = float(radius);
+}
+
 void readEngineExtras(Context& context, const std::string& element, const tinygltf::Value& extras,
                       Material& material) {
     if (!extras.IsObject()) return;
@@ -212,6 +233,7 @@ void readEngineExtras(Context& context, const std::string& element, const tinygl
     color("diffuseColor", material.diffuseColor);
     color("specularColor", material.specularColor);
     readCavityExtra(context, element, extras, material);
+    readWireRadiusExtra(context, element, extras, material);
 }
 
 Material convertMaterial(Context& context, const tinygltf::Material& source,

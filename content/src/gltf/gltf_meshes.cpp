@@ -226,6 +226,94 @@ std::optional<Primitive> convertPrimitive(Context& context, const tinygltf::Prim
     return primitive;
 }
 
+bool isLineMode(int mode) {
+    return mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_STRIP ||
+           mode == TINYGLTF_MODE_LINE_LOOP;
+}
+
+// Lines, strips and loops become index pairs (glTF 2.0 section 3.7.2.1).
+std::vector<std::uint32_t> toSegments(const std::vector<std::uint32_t>& in, int mode) {
+    if (mode == TINYGLTF_MODE_LINE) return in;
+    std::vector<std::uint32_t> out;
+    for (std::size_t i = 0; i + 1 < in.size(); ++i)
+        out.insert(out.end(), {in[i], in[i + 1]});
+    if (mode == TINYGLTF_MODE_LINE_LOOP && in.size() > 2) out.insert(out.end(), {in.back(), in[0]});
+    return out;
+}
+
+// A line primitive whose material has extras.wireRadius: a wire (seed 004 §6). Others are
+// skipped with a warning, as points are.
+std::optional<Wire> convertWire(Context& context, const tinygltf::Primitive& source,
+                                const std::string& element) {
+    const std::int32_t material =
+        validIndex(source.material, context.model.materials) ? source.material : kNoIndex;
+    const float radius =
+        material == kNoIndex
+            ? 0.0f
+            : context.model.materials[static_cast<std::size_t>(material)].wireRadius;
+    if (radius <= 0.0f) {
+        context.warning(element, "mode " + std::to_string(source.mode) +
+                                     " (lines) is not supported without a material whose "
+                                     "extras.wireRadius makes it a wire; primitive skipped");
+        return std::nullopt;
+    }
+    const GltfLoadOptions& options = context.options;
+    const AccessorLimits limits{options.maxElementsWithoutBufferView};
+    auto position = source.attributes.find("POSITION");
+    if (position == source.attributes.end()) {
+        context.error(element, "has no POSITION attribute; wire skipped");
+        return std::nullopt;
+    }
+    std::vector<float> flat;
+    if (std::string error = readFloats(context.document, position->second, 3, flat, limits);
+        !error.empty() || flat.empty() || flat.size() / 3 > options.maxVerticesPerPrimitive) {
+        context.error(element, "POSITION: " + (error.empty() ? "no or too many vertices" : error) +
+                                   "; wire skipped");
+        return std::nullopt;
+    }
+    if (!allFinite(flat)) {
+        context.error(element, "POSITION has NaN/Inf values; wire skipped");
+        return std::nullopt;
+    }
+    Wire wire;
+    wire.positions = packed<3>(flat);
+    wire.radius = radius;
+    wire.material = material;
+    std::vector<std::uint32_t> indices;
+    if (source.indices >= 0 || source.indices < -1) {
+        std::uint64_t indexCount = 0;
+        std::string error = accessorCount(context.document, source.indices, indexCount);
+        if (error.empty() && indexCount > options.maxIndicesPerPrimitive) {
+            error = std::to_string(indexCount) + " indices exceed the limit";
+        }
+        if (error.empty()) error = readIndices(context.document, source.indices, indices, limits);
+        if (!error.empty()) {
+            context.error(element, "indices: " + error + "; wire skipped");
+            return std::nullopt;
+        }
+        for (std::size_t i = 0; i < indices.size(); ++i) {
+            if (indices[i] >= wire.positions.size()) {
+                context.error(element, "index " + std::to_string(indices[i]) + " at position " +
+                                           std::to_string(i) + " is not below the vertex count " +
+                                           std::to_string(wire.positions.size()) +
+                                           "; wire skipped");
+                return std::nullopt;
+            }
+        }
+    } else {
+        indices.resize(wire.positions.size());
+        for (std::uint32_t i = 0; i < indices.size(); ++i)
+            indices[i] = i;
+    }
+    wire.segments = toSegments(indices, source.mode);
+    wire.segments.resize(wire.segments.size() / 2 * 2);
+    if (wire.segments.empty()) {
+        context.warning(element, "has no line segment; wire skipped");
+        return std::nullopt;
+    }
+    return wire;
+}
+
 // glTF requires every primitive of a mesh to have the same number of targets and the mesh's
 // weights to match it; otherwise the morph data is unusable and is dropped.
 void checkMorphTargetCounts(Context& context, const std::string& element, Mesh& mesh) {
@@ -260,6 +348,12 @@ void convertMeshes(Context& context) {
         for (std::size_t p = 0; p < meshes[m].primitives.size(); ++p) {
             const std::string element =
                 elementName("meshes", m) + "." + elementName("primitives", p);
+            if (isLineMode(meshes[m].primitives[p].mode)) {
+                if (auto wire = convertWire(context, meshes[m].primitives[p], element)) {
+                    mesh.wires.push_back(std::move(*wire));
+                }
+                continue;
+            }
             if (auto primitive = convertPrimitive(context, meshes[m].primitives[p], element)) {
                 mesh.primitives.push_back(std::move(*primitive));
             }

@@ -50,5 +50,6 @@ void addAnimationRows(ReportContext& context);
 void addSsrRows(ReportContext& context);
 void addVolumetricsRows(ReportContext& context);
 void addAtmosphereRows(ReportContext& context);
+void addWireRows(ReportContext& context);
 
 }  // namespace candela::report

@@ -130,6 +130,10 @@ struct Material {
     TextureRef clearcoatNormalTexture;     // linear, tangent space; none: the geometric normal
     float clearcoatNormalScale = 1;
 
+    // extras.wireRadius (metres, > 0): line primitives with this material are wires (wire.h);
+    // 0: lines with it are skipped.
+    float wireRadius = 0;
+
     MaterialLayering layering;  // compiled out of frames without layered materials
 
     bool anisotropic() const { return anisotropyStrength > 0; }

@@ -13,6 +13,7 @@
 #include "candela/content/components/light.h"
 #include "candela/content/image.h"
 #include "candela/content/material.h"
+#include "candela/content/wire.h"
 
 namespace candela::content {
 
@@ -55,6 +56,7 @@ struct Primitive {
 struct Mesh {
     std::string name;
     std::vector<Primitive> primitives;  // primitives that failed to load are left out
+    std::vector<Wire> wires;            // line primitives whose material has a wireRadius
     // Morph target weights when no node or animation sets them; one per target (all
     // primitives of a mesh have the same target count, or none of them keeps targets).
     std::vector<float> defaultWeights;

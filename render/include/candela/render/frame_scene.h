@@ -10,6 +10,8 @@
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
+#include "candela/content/material.h"
+#include "candela/content/wire.h"
 
 namespace candela::render {
 
@@ -59,6 +61,14 @@ struct DeformJob {
     uint32_t morphWeightCount = 0;
 };
 
+// One wire (content/wire.h) at `world`, shaded with `material` (content::Material; null: the
+// glTF default material). Both point into models that outlive the frame.
+struct WireDraw {
+    const content::Wire* wire = nullptr;
+    const content::Material* material = nullptr;
+    glm::mat4 world{1.0f};
+};
+
 struct LightInstance {
     content::Light light;
     glm::vec3 position{0.0f};
@@ -77,6 +87,8 @@ struct FrameScene {
     std::span<const glm::mat4> jointMatrices;
     std::span<const float> morphWeights;
     std::span<const LightInstance> lights;
+    // Wires (seed 004 §6): drawn by the wire pass after the lit frame, not by the mesh passes.
+    std::span<const WireDraw> wires;
     // Light slots whose data changed since the previous frame. When lightsRestructured is set
     // (lights added or removed, or the caller does not track changes) every light is rewritten.
     std::span<const uint32_t> changedLights;

@@ -25,6 +25,7 @@ namespace candela::render {
 
 class ClusterLightLists;
 class ForwardTransparentPass;
+class WirePass;
 class EnvironmentBrdfLut;
 class EnvironmentPlaceholders;
 class EnvironmentSamplingTable;
@@ -194,6 +195,7 @@ private:
     std::unique_ptr<VolumetricsPass> volumetricsPass_;  // made on the first frame with a medium
     std::unique_ptr<AtmospherePass> atmospherePass_;    // made on the first frame with a sky
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
+    std::unique_ptr<WirePass> wirePass_;  // made for the first frame with wires
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<SkinningPass> skinningPass_;    // made on the first frame with animation

@@ -96,6 +96,11 @@ enum class VolumetricsMode {
 };
 const char* volumetricsModeName(VolumetricsMode mode);  // "off", "volumes", "froxels", ...
 
+// Wires (seed 004 §6, render/README.md "Wires"): Persson's clamp to a pixel's radius with the
+// alpha scaled by real / clamped radius and coverage from the distance to the centre line, or
+// the naive line a pixel wide at full alpha it replaces (for measurement).
+enum class WireMode { Coverage, Naive };
+
 struct VolumetricsSettings {
     // Froxel grid at 1280x720 (scaled with the image, at least 8x8), exponential depth slices
     // from the near plane to `froxelFar` metres.
@@ -209,6 +214,7 @@ struct RendererOptions {
     // (a medium in the scene turns it on) is ApplicationOptions'.
     VolumetricsMode volumetrics = VolumetricsMode::Off;
     VolumetricsSettings volumetricsSettings;
+    WireMode wires = WireMode::Coverage;
     // The pass settings other than radius and intensity (those are the scene's, per frame).
     AmbientOcclusionSettings aoSettings;
     // Shadows (render/README.md "Shadows"): lights with castShadows get maps when on.

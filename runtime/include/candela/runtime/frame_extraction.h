@@ -20,6 +20,8 @@ struct ExtractedFrame {
     // Motion vectors: each draw's world matrix in the previous frame (its current one when the
     // entity is new), parallel to `draws`; kept per entity between frames.
     std::vector<glm::mat4> previousWorlds;
+    // The mesh instances' wires (content::Mesh::wires), drawn by the wire pass.
+    std::vector<render::WireDraw> wires;
     std::unordered_map<uint64_t, glm::mat4> lastWorld;      // per entity, last frame
     std::unordered_map<uint64_t, glm::mat4> lastWorldNext;  // being filled this frame
     std::span<const render::LightInstance> lights;          // the light table's slots
