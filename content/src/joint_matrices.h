@@ -8,6 +8,7 @@
 
 #include "candela/content/animation.h"
 #include "candela/content/components/animation.h"
+#include "candela/ecs/affine_multiply.h"
 
 namespace candela::content {
 
@@ -30,12 +31,16 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
     }
     constexpr float kInf = std::numeric_limits<float>::infinity();
     ecs::Vec3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
+    ecs::Mat4 toJoint;
     for (std::size_t j = 0; j < data.joints.size(); ++j) {
         const ecs::Mat4* jointWorld = world(j);
-        ecs::Mat4 inverseBind;
-        std::copy(data.inverseBindMatrices[j].begin(), data.inverseBindMatrices[j].end(),
-                  inverseBind.m);
-        skin.jointMatrices[j] = jointWorld ? toMesh * *jointWorld * inverseBind : ecs::Mat4{};
+        if (jointWorld) {
+            ecs::multiplyByAffine(toMesh, *jointWorld, toJoint);
+            ecs::multiplyMatrices(toJoint, data.inverseBindMatrices[j].data(),
+                                  skin.jointMatrices[j]);
+        } else {
+            skin.jointMatrices[j] = ecs::Mat4{};
+        }
         if (j >= skin.jointBounds.size()) continue;
         const std::array<float, 6>& box = skin.jointBounds[j];
         if (box[0] > box[3]) continue;  // the joint moves no vertex

@@ -1,6 +1,7 @@
 #include "skeleton_pose_pass.h"
 
 #include "candela/content/model.h"
+#include "candela/ecs/affine_multiply.h"
 #include "candela/ecs/hierarchy.h"
 #include "joint_matrices.h"
 
@@ -47,12 +48,10 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
     const Model& model = *player.model;
     AnimationPlayer::Scratch& s = player.scratch;
     const std::size_t count = model.nodes.size();
-    s.parent.assign(count, -1);
+    s.parentWorld.assign(count, kAbsent);
     s.localIndex.assign(count, kAbsent);
     s.worldIndex.assign(count, kAbsent);
-    s.rootParentWorld.assign(count, kAbsent);
     s.stampLocal.assign(count, 1);
-    s.world.resize(count);
     s.order.clear();
     s.order.reserve(count);
     s.skinNodes.clear();
@@ -90,15 +89,11 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
         if ((s.localIndex[n] == kAbsent) != (s.worldIndex[n] == kAbsent)) s.direct = false;
         const ecs::Entity entityParent = ecs::parentOf(registry, e);
         const ecs::Entity modelParent = entityOf(node.parent);
-        if (modelParent != ecs::kNullEntity) {
-            if (entityParent != modelParent) s.direct = false;
-            s.parent[n] = node.parent;
-        } else {
-            // Propagation places a root under its entity parent only when that has both
-            // transforms.
-            if (indexIn(pools.locals, registry, entityParent) != kAbsent)
-                s.rootParentWorld[n] = indexIn(pools.worlds, registry, entityParent);
-        }
+        if (modelParent != ecs::kNullEntity && entityParent != modelParent) s.direct = false;
+        // Propagation places a node under its entity parent only when that has both
+        // transforms.
+        if (indexIn(pools.locals, registry, entityParent) != kAbsent)
+            s.parentWorld[n] = indexIn(pools.worlds, registry, entityParent);
         std::uint32_t modelChildren = 0;
         for (std::int32_t child : node.children)
             if (entityOf(child) != ecs::kNullEntity) ++modelChildren;
@@ -136,17 +131,17 @@ void writeLocalsOnly(ecs::Registry& registry, const TransformPools& pools,
     }
 }
 
-void buildSkin(ecs::Registry& registry, AnimationPlayer& player, std::uint32_t meshNode,
-               ecs::Tick now) {
+void buildSkin(ecs::Registry& registry, AnimationPlayer& player, const ecs::WorldTransform* worlds,
+               std::uint32_t meshNode, ecs::Tick now) {
     const Model& model = *player.model;
     const AnimationPlayer::Scratch& s = player.scratch;
     Skin* skin = registry.tryGet<Skin>(player.nodeEntities[meshNode]);
     if (skin == nullptr) return;
     const SkinData& data = model.skins[static_cast<std::size_t>(skin->skin)];
-    const ecs::Mat4 toMesh = affineInverse(s.world[meshNode]);
+    const ecs::Mat4 toMesh = affineInverse(worlds[s.worldIndex[meshNode]].matrix);
     buildJointMatrices(*skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
         const auto node = static_cast<std::size_t>(data.joints[j]);
-        return s.worldIndex[node] == kAbsent ? nullptr : &s.world[node];
+        return s.worldIndex[node] == kAbsent ? nullptr : &worlds[s.worldIndex[node]].matrix;
     });
     skin->builtFrom = now;
     skin->previousIsCurrent = false;
@@ -177,28 +172,16 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
         } else {
             pose = locals[local];  // not animated: the entity's own (a game may move it)
         }
-        // Local-to-world, the same products in the same order as propagation, so the worlds
-        // it would compute are bit-for-bit these.
-        const std::int32_t parent = s.parent[n];
-        const std::uint32_t outer = s.rootParentWorld[n];
-        ecs::Mat4& world = s.world[n];
-        if (parent >= 0) {
-            world = ecs::composeWithLocal(s.world[static_cast<std::size_t>(parent)], pose.position,
-                                          pose.rotation, pose.scale);
-        } else if (outer != kAbsent) {
-            world = ecs::composeWithLocal(worlds[outer].matrix, pose.position, pose.rotation,
-                                          pose.scale);
-        } else {
-            world =
-                ecs::Mat4::fromTranslationRotationScale(pose.position, pose.rotation, pose.scale);
-        }
-        const std::uint32_t w = s.worldIndex[n];
-        worlds[w].matrix = world;
-        worldTicks[w] = now;
+        // Local-to-world with propagation's own product, so the worlds it would compute
+        // are bit for bit these. Parents come first in `order`: theirs are already written.
+        const std::uint32_t parent = s.parentWorld[n];
+        ecs::composeWorld(parent == kAbsent ? nullptr : &worlds[parent].matrix, pose.position,
+                          pose.rotation, pose.scale, worlds[s.worldIndex[n]].matrix);
+        worldTicks[s.worldIndex[n]] = now;
     }
     pools.worlds->noteChange(now);
     for (const std::uint32_t meshNode : s.skinNodes)
-        buildSkin(registry, player, meshNode, now);
+        buildSkin(registry, player, worlds, meshNode, now);
 }
 
 }  // namespace candela::content

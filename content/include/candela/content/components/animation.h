@@ -66,18 +66,16 @@ struct AnimationPlayer {
         std::vector<std::uint32_t> blendCursors;
         // The skeleton pass (skeleton_pose_pass.cpp), bound to the registry once and again
         // only when a transform pool or the hierarchy changes structure. Per model node: its
-        // parent in the pass (-1: a root, placed under rootParentWorld), its entity's dense
-        // index in the LocalTransform and WorldTransform pools (kAbsent: none), whether its
-        // LocalTransform changes are stamped (1: something besides a skin reads the node: a
-        // mesh, light or camera on it, no joint, or an entity attached under it), and its world
-        // matrix this frame. `order` lists the nodes parents first.
+        // entity's dense index in the LocalTransform and WorldTransform pools (kAbsent: none),
+        // its entity parent's WorldTransform index (kAbsent: a root for propagation), and
+        // whether its LocalTransform changes are stamped (1: something besides a skin reads
+        // the node: a mesh, light or camera on it, no joint, or an entity attached under it).
+        // `order` lists the nodes parents first.
         std::vector<std::uint32_t> order;
-        std::vector<std::int32_t> parent;
         std::vector<std::uint32_t> localIndex;
         std::vector<std::uint32_t> worldIndex;
-        std::vector<std::uint32_t> rootParentWorld;
+        std::vector<std::uint32_t> parentWorld;
         std::vector<std::uint8_t> stampLocal;
-        std::vector<ecs::Mat4> world;
         std::vector<std::uint32_t> skinNodes;  // mesh nodes whose Skin this player builds
         const void* localPool = nullptr;
         const void* worldPool = nullptr;
