@@ -86,6 +86,10 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
         const auto node = static_cast<std::size_t>(channel.node);
         const AnimationSampler& sampler = clip.samplers[static_cast<std::size_t>(channel.sampler)];
         ecs::LocalTransform& local = pose[node];
+        // A node's first channel this frame starts it from the rest pose (the model's, shared
+        // by every instance and so in cache), for the properties no channel animates.
+        if (channel.property != AnimatedProperty::Weights && !(s.touched[node] & kTransformTouched))
+            local = restPose(model.nodes[node]);
         switch (channel.property) {
             case AnimatedProperty::Translation:
                 sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
@@ -159,7 +163,10 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
     s.appliedClip = player.clip;
     s.appliedTime = player.time;
     std::fill(s.touched.begin(), s.touched.end(), std::uint8_t{0});
-    resetToRest(s, s.pose, s.weights);
+    // Nodes no channel touches keep their entity's transform (the skeleton pass reads it), so
+    // only a crossfade, where a node one clip leaves alone blends from its rest pose, needs
+    // the whole rest pose; otherwise sampleClip starts each animated node from rest itself.
+    if (player.nextClip >= 0) resetToRest(s, s.pose, s.weights);
     sampleClip(model, player.clip, player.time, player.loop, s, s.pose, s.weights, s.cursors);
     const float fade = player.fadeWeight();
     if (player.nextClip >= 0) {

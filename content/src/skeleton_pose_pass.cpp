@@ -107,6 +107,13 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
             skinMatchesModel(registry, player, n, e))
             s.skinNodes.push_back(static_cast<std::uint32_t>(n));
     }
+    s.passNodes.clear();
+    s.passNodes.reserve(count);
+    for (const std::uint32_t n : s.order) {
+        if (s.localIndex[n] == kAbsent) continue;  // no entity: nothing reads it
+        s.passNodes.push_back(
+            {n, s.localIndex[n], s.worldIndex[n], s.parentWorld[n], s.stampLocal[n]});
+    }
     s.localPool = pools.locals;
     s.worldPool = pools.worlds;
     s.localVersion = pools.locals ? pools.locals->structureVersion() : 0;
@@ -162,22 +169,19 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
     auto* worlds = pools.worlds->typedData<ecs::WorldTransform>();
     ecs::Tick* worldTicks = pools.worlds->changeTicks();
     const ecs::Tick now = registry.currentTick();
-    for (const std::uint32_t n : s.order) {
-        const std::uint32_t local = s.localIndex[n];
-        if (local == kAbsent) continue;  // no entity: nothing reads it (its subtree has none)
-        ecs::LocalTransform& pose = s.pose[n];
-        if (s.touched[n] & kTransformTouched) {
-            locals[local] = pose;
-            if (s.stampLocal[n]) pools.locals->stamp(local, now);
+    for (const AnimationPlayer::Scratch::PassNode& p : s.passNodes) {
+        ecs::LocalTransform& pose = s.pose[p.node];
+        if (s.touched[p.node] & kTransformTouched) {
+            locals[p.local] = pose;
+            if (p.stampLocal) pools.locals->stamp(p.local, now);
         } else {
-            pose = locals[local];  // not animated: the entity's own (a game may move it)
+            pose = locals[p.local];  // not animated: the entity's own (a game may move it)
         }
         // Local-to-world with propagation's own product, so the worlds it would compute
-        // are bit for bit these. Parents come first in `order`: theirs are already written.
-        const std::uint32_t parent = s.parentWorld[n];
-        ecs::composeWorld(parent == kAbsent ? nullptr : &worlds[parent].matrix, pose.position,
-                          pose.rotation, pose.scale, worlds[s.worldIndex[n]].matrix);
-        worldTicks[s.worldIndex[n]] = now;
+        // are bit for bit these. Parents come first: theirs are already written.
+        ecs::composeWorld(p.parentWorld == kAbsent ? nullptr : &worlds[p.parentWorld].matrix,
+                          pose.position, pose.rotation, pose.scale, worlds[p.world].matrix);
+        worldTicks[p.world] = now;
     }
     pools.worlds->noteChange(now);
     for (const std::uint32_t meshNode : s.skinNodes)

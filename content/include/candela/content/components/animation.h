@@ -76,6 +76,15 @@ struct AnimationPlayer {
         std::vector<std::uint32_t> worldIndex;
         std::vector<std::uint32_t> parentWorld;
         std::vector<std::uint8_t> stampLocal;
+        // The same, packed in `order` for the frame loop (one contiguous walk).
+        struct PassNode {
+            std::uint32_t node;
+            std::uint32_t local;
+            std::uint32_t world;
+            std::uint32_t parentWorld;
+            std::uint32_t stampLocal;
+        };
+        std::vector<PassNode> passNodes;
         std::vector<std::uint32_t> skinNodes;  // mesh nodes whose Skin this player builds
         const void* localPool = nullptr;
         const void* worldPool = nullptr;
