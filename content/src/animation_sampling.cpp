@@ -6,63 +6,53 @@
 namespace candela::content {
 namespace {
 
-[[gnu::always_inline]] inline void normalizeQuaternion(std::span<float> q) {
+void normalizeQuaternion(std::span<float> q) {
     const float length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if (length > 1e-20f) {
-        const float inverse = 1.0f / length;
         for (int c = 0; c < 4; ++c)
-            q[static_cast<std::size_t>(c)] *= inverse;
+            q[static_cast<std::size_t>(c)] /= length;
     } else {
         q[0] = q[1] = q[2] = 0;
         q[3] = 1;
     }
 }
 
-// sin(t theta) / sin(theta) as a power series in x - 1, x = cos(theta) (Eberly, "A Fast and
-// Accurate Algorithm for Computing SLERP", 2011): c_0 = t, c_i = c_(i-1) (t^2 - i^2) /
-// (i (2i + 1)) (x - 1). The terms shrink by at least (1 - x) / 2 each, so eight of them are
-// within 7e-9 of the trigonometric value for x >= 0.75 (theta <= 41 degrees, any key interval
-// a clip samples at a usable rate) with no acos or sine; both weights are evaluated together.
-constexpr float kSeriesMinCos = 0.75f;
-constexpr int kSeriesTerms = 8;
-// 1 / (i (2i + 1)) and i^2 for i = 1..7: multiplies, not divisions, in the loop.
-constexpr float kSeriesScale[kSeriesTerms] = {0,         1.0f / 3,  1.0f / 10, 1.0f / 21,
-                                              1.0f / 36, 1.0f / 55, 1.0f / 78, 1.0f / 105};
-constexpr float kSeriesSquare[kSeriesTerms] = {0, 1, 4, 9, 16, 25, 36, 49};
+// The arc between two keys: the cosine (made non-negative: the shorter arc), its sign, and
+// when the keys are far enough apart for the trigonometric form, the angle and its sine.
+struct Arc {
+    float sign;
+    bool trigonometric;
+    float theta;
+    float sinTheta;
+};
 
-void seriesWeights(float x, float t, float& wa, float& wb) {
-    const float d = x - 1;
-    const float u = 1 - t;
-    // Each term is under |d| / 2 times the one before: fewer terms reach the same 1e-8 when
-    // the keys are close (the usual case).
-    const int terms = d > -0.002f ? 3 : d > -0.05f ? 5 : kSeriesTerms;
-    float ca = u, cb = t;
-    wa = u;
-    wb = t;
-    const float uu = u * u, tt = t * t;
-    for (int i = 1; i < terms; ++i) {
-        const float scale = d * kSeriesScale[i];
-        ca *= (uu - kSeriesSquare[i]) * scale;
-        cb *= (tt - kSeriesSquare[i]) * scale;
-        wa += ca;
-        wb += cb;
-    }
-}
-
-// Shortest-arc spherical interpolation: the series above for the usual small key-to-key
-// angles, the trigonometric form for wide ones.
-void slerp(const float* a, const float* b, float t, std::span<float> out) {
+Arc arcBetween(const float* a, const float* b) {
     float cosTheta = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
     const float sign = cosTheta < 0 ? -1.0f : 1.0f;
-    cosTheta = std::min(cosTheta * sign, 1.0f);
-    float wa, wb;
-    if (cosTheta >= kSeriesMinCos) {
-        seriesWeights(cosTheta, t, wa, wb);
+    cosTheta *= sign;
+    if (!(cosTheta < 0.9995f)) return {sign, false, 0, 0};
+    const float theta = std::acos(cosTheta);
+    return {sign, true, theta, std::sin(theta)};
+}
+
+// Shortest-arc spherical interpolation; falls back to normalised lerp when nearly parallel.
+// `cached`: the interval's angle and sine from prepareSlerpAngles (the same values
+// arcBetween computes, so the same results), or null.
+void slerp(const float* a, const float* b, float t, std::span<float> out, const float* cached) {
+    float sign, wa = 1 - t, wb = t;
+    if (cached != nullptr) {
+        sign = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0 ? -1.0f : 1.0f;
+        if (cached[1] != 0) {
+            wa = std::sin((1 - t) * cached[0]) / cached[1];
+            wb = std::sin(t * cached[0]) / cached[1];
+        }
     } else {
-        const float theta = std::acos(cosTheta);
-        const float sinTheta = std::sin(theta);
-        wa = std::sin((1 - t) * theta) / sinTheta;
-        wb = std::sin(t * theta) / sinTheta;
+        const Arc arc = arcBetween(a, b);
+        sign = arc.sign;
+        if (arc.trigonometric) {
+            wa = std::sin((1 - t) * arc.theta) / arc.sinTheta;
+            wb = std::sin(t * arc.theta) / arc.sinTheta;
+        }
     }
     for (std::size_t c = 0; c < 4; ++c)
         out[c] = wa * a[c] + sign * wb * b[c];
@@ -89,6 +79,21 @@ std::size_t keyIntervalAt(const std::vector<float>& times, float time, std::uint
     k = keyIntervalAt(times, time);
     cursor = static_cast<std::uint32_t>(k);
     return k;
+}
+
+void prepareSlerpAngles(AnimationSampler& sampler) {
+    sampler.slerpAngles.clear();
+    if (sampler.interpolation != Interpolation::Linear || sampler.components != 4 ||
+        sampler.times.size() < 2 || sampler.values.size() != 4 * sampler.times.size())
+        return;
+    sampler.slerpAngles.resize(2 * (sampler.times.size() - 1));
+    for (std::size_t k = 0; k + 1 < sampler.times.size(); ++k) {
+        const Arc arc = arcBetween(&sampler.values[4 * k], &sampler.values[4 * (k + 1)]);
+        // A zero sine marks the normalised-lerp case (a real one is never 0 there: theta is
+        // at least acos(0.9995)).
+        sampler.slerpAngles[2 * k] = arc.theta;
+        sampler.slerpAngles[2 * k + 1] = arc.trigonometric ? arc.sinTheta : 0.0f;
+    }
 }
 
 float clipTime(float time, float duration, bool loop) {
@@ -128,7 +133,8 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
     const float* b = values + (k + 1) * stride;
     if (sampler.interpolation == Interpolation::Linear) {
         if (property == AnimatedProperty::Rotation) {
-            slerp(a, b, t, out);
+            const bool cached = sampler.slerpAngles.size() == 2 * (keys - 1);
+            slerp(a, b, t, out, cached ? sampler.slerpAngles.data() + 2 * k : nullptr);
         } else {
             for (std::size_t c = 0; c < n; ++c)
                 out[c] = a[c] + (b[c] - a[c]) * t;
