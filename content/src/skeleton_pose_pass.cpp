@@ -111,9 +111,14 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
     s.passNodes.reserve(count);
     for (const std::uint32_t n : s.order) {
         if (s.localIndex[n] == kAbsent) continue;  // no entity: nothing reads it
+        std::uint32_t parentPass = kAbsent;
+        for (std::size_t i = 0; i < s.passNodes.size(); ++i)
+            if (s.parentWorld[n] != kAbsent && s.passNodes[i].world == s.parentWorld[n])
+                parentPass = static_cast<std::uint32_t>(i);
         s.passNodes.push_back(
-            {n, s.localIndex[n], s.worldIndex[n], s.parentWorld[n], s.stampLocal[n]});
+            {n, s.localIndex[n], s.worldIndex[n], s.parentWorld[n], s.stampLocal[n], parentPass});
     }
+    s.passMoved.assign(s.passNodes.size(), 0);
     s.localPool = pools.locals;
     s.worldPool = pools.worlds;
     s.localVersion = pools.locals ? pools.locals->structureVersion() : 0;
@@ -169,14 +174,21 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
     auto* worlds = pools.worlds->typedData<ecs::WorldTransform>();
     ecs::Tick* worldTicks = pools.worlds->changeTicks();
     const ecs::Tick now = registry.currentTick();
-    for (const AnimationPlayer::Scratch::PassNode& p : s.passNodes) {
+    for (std::size_t i = 0; i < s.passNodes.size(); ++i) {
+        const AnimationPlayer::Scratch::PassNode& p = s.passNodes[i];
         ecs::LocalTransform& pose = s.pose[p.node];
-        if (s.touched[p.node] & kTransformTouched) {
+        const bool animated = (s.touched[p.node] & kTransformTouched) != 0;
+        if (animated) {
             locals[p.local] = pose;
             if (p.stampLocal) pools.locals->stamp(p.local, now);
         } else {
             pose = locals[p.local];  // not animated: the entity's own (a game may move it)
         }
+        // A node neither animated nor under one that moved keeps its world (and its change
+        // tick: readers that track moved entities see only what moved).
+        const bool moved = animated || (p.parentPass != kAbsent && s.passMoved[p.parentPass]);
+        s.passMoved[i] = moved ? 1 : 0;
+        if (!moved) continue;
         // Local-to-world with propagation's own product, so the worlds it would compute
         // are bit for bit these. Parents come first: theirs are already written.
         ecs::composeWorld(p.parentWorld == kAbsent ? nullptr : &worlds[p.parentWorld].matrix,

@@ -83,8 +83,10 @@ struct AnimationPlayer {
             std::uint32_t world;
             std::uint32_t parentWorld;
             std::uint32_t stampLocal;
+            std::uint32_t parentPass;  // the parent's position in passNodes, or kAbsent
         };
         std::vector<PassNode> passNodes;
+        std::vector<std::uint8_t> passMoved;   // per pass node: its world was written this frame
         std::vector<std::uint32_t> skinNodes;  // mesh nodes whose Skin this player builds
         const void* localPool = nullptr;
         const void* worldPool = nullptr;
