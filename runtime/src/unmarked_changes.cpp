@@ -39,9 +39,11 @@ std::size_t UnmarkedChangeCheck<T>::run(ecs::Registry& registry) {
         std::memcpy(&seen.value, &value, sizeof(T));
         if (registry.changedSince<T>(e, since)) return;  // marked: the frame sees it
         if constexpr (std::is_same_v<T, ecs::LocalTransform>) {
-            // Written together with its WorldTransform (the animation's skeleton pass does
-            // that for joints only skins read): already consistent, nothing to propagate.
-            if (registry.changedSince<ecs::WorldTransform>(e, since)) return;
+            // Written together with its WorldTransform after the last propagation (the
+            // animation's skeleton pass does that for joints only skins read): consistent.
+            if (propagatedAt_ != ecs::kNeverTick &&
+                registry.changedSince<ecs::WorldTransform>(e, propagatedAt_))
+                return;
         }
         unmarked.push_back(e);
         if (!seen.reported) {
