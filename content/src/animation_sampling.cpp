@@ -17,18 +17,42 @@ void normalizeQuaternion(std::span<float> q) {
     }
 }
 
-// Shortest-arc spherical interpolation; falls back to normalised lerp when nearly parallel.
-void slerp(const float* a, const float* b, float t, std::span<float> out) {
+// The arc between two keys: the cosine (made non-negative: the shorter arc), its sign, and
+// when the keys are far enough apart for the trigonometric form, the angle and its sine.
+struct Arc {
+    float sign;
+    bool trigonometric;
+    float theta;
+    float sinTheta;
+};
+
+Arc arcBetween(const float* a, const float* b) {
     float cosTheta = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
     const float sign = cosTheta < 0 ? -1.0f : 1.0f;
     cosTheta *= sign;
-    float wa = 1 - t;
-    float wb = t;
-    if (cosTheta < 0.9995f) {
-        const float theta = std::acos(cosTheta);
-        const float sinTheta = std::sin(theta);
-        wa = std::sin((1 - t) * theta) / sinTheta;
-        wb = std::sin(t * theta) / sinTheta;
+    if (!(cosTheta < 0.9995f)) return {sign, false, 0, 0};
+    const float theta = std::acos(cosTheta);
+    return {sign, true, theta, std::sin(theta)};
+}
+
+// Shortest-arc spherical interpolation; falls back to normalised lerp when nearly parallel.
+// `cached`: the interval's angle and sine from prepareSlerpAngles (the same values
+// arcBetween computes, so the same results), or null.
+void slerp(const float* a, const float* b, float t, std::span<float> out, const float* cached) {
+    float sign, wa = 1 - t, wb = t;
+    if (cached != nullptr) {
+        sign = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0 ? -1.0f : 1.0f;
+        if (cached[1] != 0) {
+            wa = std::sin((1 - t) * cached[0]) / cached[1];
+            wb = std::sin(t * cached[0]) / cached[1];
+        }
+    } else {
+        const Arc arc = arcBetween(a, b);
+        sign = arc.sign;
+        if (arc.trigonometric) {
+            wa = std::sin((1 - t) * arc.theta) / arc.sinTheta;
+            wb = std::sin(t * arc.theta) / arc.sinTheta;
+        }
     }
     for (std::size_t c = 0; c < 4; ++c)
         out[c] = wa * a[c] + sign * wb * b[c];
@@ -55,6 +79,21 @@ std::size_t keyIntervalAt(const std::vector<float>& times, float time, std::uint
     k = keyIntervalAt(times, time);
     cursor = static_cast<std::uint32_t>(k);
     return k;
+}
+
+void prepareSlerpAngles(AnimationSampler& sampler) {
+    sampler.slerpAngles.clear();
+    if (sampler.interpolation != Interpolation::Linear || sampler.components != 4 ||
+        sampler.times.size() < 2 || sampler.values.size() != 4 * sampler.times.size())
+        return;
+    sampler.slerpAngles.resize(2 * (sampler.times.size() - 1));
+    for (std::size_t k = 0; k + 1 < sampler.times.size(); ++k) {
+        const Arc arc = arcBetween(&sampler.values[4 * k], &sampler.values[4 * (k + 1)]);
+        // A zero sine marks the normalised-lerp case (a real one is never 0 there: theta is
+        // at least acos(0.9995)).
+        sampler.slerpAngles[2 * k] = arc.theta;
+        sampler.slerpAngles[2 * k + 1] = arc.trigonometric ? arc.sinTheta : 0.0f;
+    }
 }
 
 float clipTime(float time, float duration, bool loop) {
@@ -94,7 +133,8 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
     const float* b = values + (k + 1) * stride;
     if (sampler.interpolation == Interpolation::Linear) {
         if (property == AnimatedProperty::Rotation) {
-            slerp(a, b, t, out);
+            const bool cached = sampler.slerpAngles.size() == 2 * (keys - 1);
+            slerp(a, b, t, out, cached ? sampler.slerpAngles.data() + 2 * k : nullptr);
         } else {
             for (std::size_t c = 0; c < n; ++c)
                 out[c] = a[c] + (b[c] - a[c]) * t;

@@ -7,12 +7,12 @@
 #include "candela/content/animation_sampling.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/model.h"
+#include "candela/ecs/hierarchy.h"
+#include "joint_matrices.h"
+#include "skeleton_pose_pass.h"
 
 namespace candela::content {
 namespace {
-
-constexpr std::uint8_t kTransformTouched = 1;
-constexpr std::uint8_t kWeightsTouched = 2;
 
 // The entities each system visits, kept between frames so collecting them reuses capacity.
 struct AnimationWorkLists {
@@ -86,6 +86,10 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
         const auto node = static_cast<std::size_t>(channel.node);
         const AnimationSampler& sampler = clip.samplers[static_cast<std::size_t>(channel.sampler)];
         ecs::LocalTransform& local = pose[node];
+        // A node's first channel this frame starts it from the rest pose (the model's, shared
+        // by every instance and so in cache), for the properties no channel animates.
+        if (channel.property != AnimatedProperty::Weights && !(s.touched[node] & kTransformTouched))
+            local = restPose(model.nodes[node]);
         switch (channel.property) {
             case AnimatedProperty::Translation:
                 sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
@@ -126,9 +130,8 @@ ecs::Quat nlerp(ecs::Quat a, ecs::Quat b, float t) {
                            a.z + (sign * b.z - a.z) * t, a.w + (sign * b.w - a.w) * t});
 }
 
-// `locals`: the LocalTransform pool, fetched once per frame (null when none exists), so each
-// node's write and change stamp is one sparse lookup.
-void advancePlayer(ecs::Registry& registry, ecs::ComponentPool* locals, AnimationPlayer& player,
+// `pools`: the transform pools, fetched once per frame.
+void advancePlayer(ecs::Registry& registry, const TransformPools& pools, AnimationPlayer& player,
                    float deltaSeconds) {
     if (player.model == nullptr) return;
     const Model& model = *player.model;
@@ -160,7 +163,10 @@ void advancePlayer(ecs::Registry& registry, ecs::ComponentPool* locals, Animatio
     s.appliedClip = player.clip;
     s.appliedTime = player.time;
     std::fill(s.touched.begin(), s.touched.end(), std::uint8_t{0});
-    resetToRest(s, s.pose, s.weights);
+    // Nodes no channel touches keep their entity's transform (the skeleton pass reads it), so
+    // only a crossfade, where a node one clip leaves alone blends from its rest pose, needs
+    // the whole rest pose; otherwise sampleClip starts each animated node from rest itself.
+    if (player.nextClip >= 0) resetToRest(s, s.pose, s.weights);
     sampleClip(model, player.clip, player.time, player.loop, s, s.pose, s.weights, s.cursors);
     const float fade = player.fadeWeight();
     if (player.nextClip >= 0) {
@@ -179,31 +185,23 @@ void advancePlayer(ecs::Registry& registry, ecs::ComponentPool* locals, Animatio
             s.weights[i] += (s.blendWeights[i] - s.weights[i]) * fade;
     }
 
+    writeSkeletonPose(registry, pools, player);
     for (std::size_t n = 0; n < s.pose.size() && n < player.nodeEntities.size(); ++n) {
         const ecs::Entity e = player.nodeEntities[n];
-        if (s.touched[n] == 0 || e == ecs::kNullEntity) continue;
-        if (s.touched[n] & kTransformTouched) {
-            const std::uint32_t index =
-                locals && registry.valid(e) ? locals->indexOf(e) : ecs::ComponentPool::kAbsent;
-            if (index != ecs::ComponentPool::kAbsent) {
-                locals->typedData<ecs::LocalTransform>()[index] = s.pose[n];
-                locals->stamp(index, registry.currentTick());
-            }
-        }
-        if (s.touched[n] & kWeightsTouched) {
-            if (auto* morph = registry.tryGet<MorphWeights>(e)) {
-                const std::uint32_t begin = s.weightOffset[n];
-                const std::size_t count = s.weightOffset[n + 1] - begin;
-                if (morph->weights.size() == count) {
-                    morph->previousWeights = morph->weights;  // same size: no allocation
-                    std::copy_n(s.weights.begin() + begin, count, morph->weights.begin());
-                }
+        if (!(s.touched[n] & kWeightsTouched) || e == ecs::kNullEntity) continue;
+        if (auto* morph = registry.tryGet<MorphWeights>(e)) {
+            const std::uint32_t begin = s.weightOffset[n];
+            const std::size_t count = s.weightOffset[n + 1] - begin;
+            if (morph->weights.size() == count) {
+                morph->previousWeights = morph->weights;  // same size: no allocation
+                std::copy_n(s.weights.begin() + begin, count, morph->weights.begin());
             }
         }
     }
 }
 
-// Inverse of an affine matrix (last row 0 0 0 1), through the 3x3 adjugate.
+}  // namespace
+
 ecs::Mat4 affineInverse(const ecs::Mat4& m) {
     const float a = m(0, 0), b = m(0, 1), c = m(0, 2);
     const float d = m(1, 0), e = m(1, 1), f = m(1, 2);
@@ -228,11 +226,12 @@ ecs::Mat4 affineInverse(const ecs::Mat4& m) {
     return r;
 }
 
-// The joints' world transforms, looked up once per joint in the WorldTransform pool (fetched
-// once per frame) instead of through the registry per access.
+namespace {
+
+// The WorldTransform pool, fetched once per frame (null: no entity has one).
 struct JointWorlds {
     const ecs::Registry& registry;
-    const ecs::ComponentPool* pool;  // null: no entity has a WorldTransform
+    const ecs::ComponentPool* pool;
 
     std::uint32_t indexOf(ecs::Entity e) const {
         return pool && e != ecs::kNullEntity && registry.valid(e) ? pool->indexOf(e)
@@ -248,69 +247,52 @@ struct JointWorlds {
     }
 };
 
+// The mesh's and joints' dense WorldTransform indices, looked up again only when the pool's
+// structure changed (sized once: no allocation after).
+void refreshWorldIndices(const JointWorlds& worlds, ecs::Entity entity, Skin& skin) {
+    const std::uint32_t version = worlds.pool ? worlds.pool->structureVersion() : 0;
+    if (skin.worldPool == worlds.pool && skin.worldVersion == version &&
+        skin.jointWorldIndex.size() == skin.joints.size())
+        return;
+    skin.meshWorldIndex = worlds.indexOf(entity);
+    skin.jointWorldIndex.resize(skin.joints.size());
+    for (std::size_t j = 0; j < skin.joints.size(); ++j)
+        skin.jointWorldIndex[j] = worlds.indexOf(skin.joints[j]);
+    skin.worldPool = worlds.pool;
+    skin.worldVersion = version;
+}
+
 void updateSkin(const JointWorlds& worlds, ecs::Entity entity, Skin& skin) {
     if (skin.model == nullptr || skin.skin < 0) return;
     const SkinData& data = skin.model->skins[static_cast<std::size_t>(skin.skin)];
-    const std::uint32_t meshIndex = worlds.indexOf(entity);
-    ecs::Tick newest = worlds.tick(meshIndex);
-    for (ecs::Entity joint : skin.joints)
-        newest = std::max(newest, worlds.tick(worlds.indexOf(joint)));
+    refreshWorldIndices(worlds, entity, skin);
+    ecs::Tick newest = worlds.tick(skin.meshWorldIndex);
+    for (const std::uint32_t index : skin.jointWorldIndex)
+        newest = std::max(newest, worlds.tick(index));
+    const bool builtByPose = skin.builtByPose;
+    skin.builtByPose = false;
     if (skin.builtFrom != ecs::kNeverTick && newest == skin.builtFrom &&
         skin.jointMatrices.size() == data.joints.size()) {
+        // Built this frame by the skeleton pass from these very worlds: current.
+        if (builtByPose) return;
         if (!skin.previousIsCurrent) {  // still now: last frame's matrices equal this frame's
             skin.previousJointMatrices = skin.jointMatrices;
             skin.previousIsCurrent = true;
         }
         return;
     }
+    // Propagation moved something since (or nothing built them yet): from the worlds. A
+    // skin the pass built this frame keeps its previous matrices (they are last frame's).
+    if (builtByPose) std::swap(skin.previousJointMatrices, skin.jointMatrices);
     skin.builtFrom = newest;
     skin.previousIsCurrent = false;
-    const ecs::WorldTransform* meshWorld = worlds.world(meshIndex);
+    const ecs::WorldTransform* meshWorld = worlds.world(skin.meshWorldIndex);
     const ecs::Mat4 toMesh = meshWorld ? affineInverse(meshWorld->matrix) : ecs::Mat4::identity();
-    if (skin.jointMatrices.size() != data.joints.size())
-        skin.jointMatrices.assign(data.joints.size(), ecs::Mat4::identity());
-    // This frame's matrices become the previous ones; every joint below is rewritten, so the
-    // swap (no copy, no allocation) leaves nothing stale.
-    if (skin.previousJointMatrices.size() == skin.jointMatrices.size()) {
-        std::swap(skin.previousJointMatrices, skin.jointMatrices);
-    } else {
-        skin.previousJointMatrices = skin.jointMatrices;
-    }
-    constexpr float kInf = std::numeric_limits<float>::infinity();
-    ecs::Vec3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
-    for (std::size_t j = 0; j < data.joints.size(); ++j) {
-        const ecs::Entity joint = j < skin.joints.size() ? skin.joints[j] : ecs::kNullEntity;
-        const ecs::WorldTransform* world = worlds.world(worlds.indexOf(joint));
-        ecs::Mat4 inverseBind;
-        std::copy(data.inverseBindMatrices[j].begin(), data.inverseBindMatrices[j].end(),
-                  inverseBind.m);
-        skin.jointMatrices[j] = world ? toMesh * world->matrix * inverseBind : ecs::Mat4{};
-        if (j >= skin.jointBounds.size()) continue;
-        const std::array<float, 6>& box = skin.jointBounds[j];
-        if (box[0] > box[3]) continue;  // the joint moves no vertex
-        // The moved box's bounds from its centre and half size (Arvo): the centre moved by
-        // the matrix, the half size by its absolute values; the same box as moving all 8
-        // corners, at a quarter of the work.
-        const ecs::Mat4& m = skin.jointMatrices[j];
-        const ecs::Vec3 centre = m.transformPoint(
-            {0.5f * (box[0] + box[3]), 0.5f * (box[1] + box[4]), 0.5f * (box[2] + box[5])});
-        const float half[3] = {0.5f * (box[3] - box[0]), 0.5f * (box[4] - box[1]),
-                               0.5f * (box[5] - box[2])};
-        float reach[3];
-        for (int row = 0; row < 3; ++row) {
-            reach[row] = std::fabs(m(row, 0)) * half[0] + std::fabs(m(row, 1)) * half[1] +
-                         std::fabs(m(row, 2)) * half[2];
-        }
-        lo = {std::min(lo.x, centre.x - reach[0]), std::min(lo.y, centre.y - reach[1]),
-              std::min(lo.z, centre.z - reach[2])};
-        hi = {std::max(hi.x, centre.x + reach[0]), std::max(hi.y, centre.y + reach[1]),
-              std::max(hi.z, centre.z + reach[2])};
-    }
-    skin.boundsValid = lo.x <= hi.x;
-    if (skin.boundsValid) {
-        skin.boundsMin = lo;
-        skin.boundsMax = hi;
-    }
+    buildJointMatrices(skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
+        const ecs::WorldTransform* world =
+            j < skin.jointWorldIndex.size() ? worlds.world(skin.jointWorldIndex[j]) : nullptr;
+        return world ? &world->matrix : nullptr;
+    });
 }
 
 AnimationWorkLists& workLists(ecs::Registry& registry) {
@@ -326,12 +308,14 @@ void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkL
     registry.view<AnimationPlayer>().each(
         [&](ecs::Entity e, AnimationPlayer&) { lists.players.push_back(e); });
     const ecs::Storage<AnimationPlayer> players = registry.storage<AnimationPlayer>();
-    ecs::ComponentPool* locals = registry.view<ecs::LocalTransform>().empty()
-                                     ? nullptr
-                                     : &registry.storage<ecs::LocalTransform>().pool();
+    TransformPools pools;
+    if (!registry.view<ecs::LocalTransform>().empty())
+        pools.locals = &registry.storage<ecs::LocalTransform>().pool();
+    if (!registry.view<ecs::WorldTransform>().empty())
+        pools.worlds = &registry.storage<ecs::WorldTransform>().pool();
     jobs.parallelFor(lists.players.size(), kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
-            advancePlayer(registry, locals, players.get(lists.players[i]), deltaSeconds);
+            advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds);
     });
 }
 
@@ -352,6 +336,10 @@ void updateListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLi
 
 void advanceAnimationPlayers(ecs::Registry& registry, ecs::JobSystem& jobs, float deltaSeconds) {
     if (registry.view<AnimationPlayer>().empty()) return;
+    // This frame's pose gets a tick of its own: the skeleton pass stamps worlds and skins
+    // (Skin::builtFrom) with it, and propagation, which otherwise advances the tick, has
+    // nothing to do for joints the pass wrote.
+    registry.advanceTick();
     advanceListed(registry, jobs, workLists(registry), deltaSeconds);
 }
 
@@ -368,7 +356,8 @@ void addAnimationSystems(ecs::Scheduler& scheduler, std::function<float()> delta
                    [deltaSeconds](ecs::SystemContext& ctx) {
                        advanceAnimationPlayers(ctx.registry(), ctx.jobs(), deltaSeconds());
                    })
-        .writes<AnimationPlayer, ecs::LocalTransform, MorphWeights>()
+        .reads<ecs::HierarchyNode>()
+        .writes<AnimationPlayer, ecs::LocalTransform, ecs::WorldTransform, MorphWeights, Skin>()
         .writesResource<AnimationWorkLists>();
     scheduler
         .addSystem("joint matrices", ecs::Phase::PostUpdate,

@@ -2,63 +2,25 @@
 
 #include <algorithm>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
+#include <candela/ecs/affine_multiply.h>
 #include <candela/ecs/hierarchy.h>
 #include <candela/ecs/registry.h>
 #include <candela/ecs/transform.h>
 
 namespace candela::ecs {
-namespace {
-
-// out = parent * local, where local is affine (last row 0 0 0 1). The hot step of
-// propagation: with SSE2 it is 12 broadcasts, 12 multiplies and 9 adds on whole columns.
-inline void multiplyByAffine(const Mat4& parent, const Mat4& local, Mat4& out) noexcept {
-#if defined(__SSE2__)
-    const __m128 p0 = _mm_loadu_ps(parent.m + 0);
-    const __m128 p1 = _mm_loadu_ps(parent.m + 4);
-    const __m128 p2 = _mm_loadu_ps(parent.m + 8);
-    const __m128 p3 = _mm_loadu_ps(parent.m + 12);
-    // parent * (x, y, z, 0) for one column of the local matrix.
-    auto transform = [&](const float* column) {
-        const __m128 l = _mm_loadu_ps(column);
-        return _mm_add_ps(_mm_add_ps(_mm_mul_ps(p0, _mm_shuffle_ps(l, l, _MM_SHUFFLE(0, 0, 0, 0))),
-                                     _mm_mul_ps(p1, _mm_shuffle_ps(l, l, _MM_SHUFFLE(1, 1, 1, 1)))),
-                          _mm_mul_ps(p2, _mm_shuffle_ps(l, l, _MM_SHUFFLE(2, 2, 2, 2))));
-    };
-    _mm_storeu_ps(out.m + 0, transform(local.m + 0));
-    _mm_storeu_ps(out.m + 4, transform(local.m + 4));
-    _mm_storeu_ps(out.m + 8, transform(local.m + 8));
-    _mm_storeu_ps(out.m + 12, _mm_add_ps(transform(local.m + 12), p3));  // w = 1
-#else
-    for (int c = 0; c < 4; ++c) {
-        const float l0 = local.m[4 * c], l1 = local.m[4 * c + 1], l2 = local.m[4 * c + 2];
-        for (int i = 0; i < 4; ++i) {
-            out.m[4 * c + i] = parent.m[i] * l0 + parent.m[4 + i] * l1 + parent.m[8 + i] * l2 +
-                               (c == 3 ? parent.m[12 + i] : 0.0f);
-        }
-    }
-#endif
-}
-
-}  // namespace
 
 void TransformPropagation::rebuildOrder(Registry& registry, ComponentPool& local,
                                         ComponentPool& world) {
-    // Gather the entities with both transforms, with their depth and parent.
+    // Gather the entities with both transforms, with their parent.
     struct Entry {
         Entity entity;
         Entity parent;
-        std::uint32_t depth;
         std::uint32_t localIndex;
         std::uint32_t worldIndex;
     };
     std::vector<Entry> entries;
     entries.reserve(local.size());
     const ComponentPool* nodes = registry.pool<HierarchyNode>();
-    std::uint32_t maxDepth = 0;
     for (std::uint32_t i = 0; i < local.size(); ++i) {
         const Entity e = local.entities()[i];
         const std::uint32_t w = world.indexOf(e);
@@ -66,25 +28,52 @@ void TransformPropagation::rebuildOrder(Registry& registry, ComponentPool& local
         const std::uint32_t n = nodes ? nodes->indexOf(e) : ComponentPool::kAbsent;
         const HierarchyNode* node =
             n == ComponentPool::kAbsent ? nullptr : nodes->typedData<HierarchyNode>() + n;
-        const std::uint32_t depth = node ? node->depth : 0;
-        maxDepth = std::max(maxDepth, depth);
-        entries.push_back({e, node ? node->parent : kNullEntity, depth, i, w});
+        entries.push_back({e, node ? node->parent : kNullEntity, i, w});
     }
 
-    // Counting sort by depth: parents land before children.
-    std::vector<std::uint32_t> depthStart(std::size_t{maxDepth} + 2, 0);
-    for (const Entry& entry : entries)
-        ++depthStart[entry.depth + 1];
-    for (std::size_t d = 1; d < depthStart.size(); ++d)
-        depthStart[d] += depthStart[d - 1];
+    // Depth-first, one tree after another: parents land before children, and each tree
+    // (a character's skeleton, a prop and its parts) lies contiguous in the pools, so code
+    // that walks one tree at a time (the animation's skeleton pass) touches few cache lines.
     const std::size_t count = entries.size();
-    std::vector<std::uint32_t> order(count);
-    std::vector<std::uint32_t> slotOf(registry.entityPool().slotCount(), kNoParent);
-    for (std::uint32_t i = 0; i < count; ++i) {
-        const std::uint32_t slot = depthStart[entries[i].depth]++;
-        order[slot] = i;
-        slotOf[entries[i].entity.index()] = slot;
+    constexpr std::uint32_t kNotListed = 0xFFFFFFFFu;
+    std::vector<std::uint32_t> entryOf(registry.entityPool().slotCount(), kNotListed);
+    for (std::uint32_t i = 0; i < count; ++i)
+        entryOf[entries[i].entity.index()] = i;
+    auto listedParent = [&](const Entry& entry) {
+        return !entry.parent.isNull() && registry.valid(entry.parent) &&
+               entryOf[entry.parent.index()] != kNotListed;
+    };
+    std::vector<std::uint32_t> order;
+    order.reserve(count);
+    std::vector<std::uint32_t> stack;
+    for (std::uint32_t root = 0; root < count; ++root) {
+        if (listedParent(entries[root])) continue;
+        stack.push_back(root);
+        while (!stack.empty()) {
+            const std::uint32_t i = stack.back();
+            stack.pop_back();
+            order.push_back(i);
+            // Children pushed last to first, so they come out in sibling order.
+            const std::size_t mark = stack.size();
+            const std::uint32_t n =
+                nodes ? nodes->indexOf(entries[i].entity) : ComponentPool::kAbsent;
+            Entity child = n == ComponentPool::kAbsent
+                               ? kNullEntity
+                               : nodes->typedData<HierarchyNode>()[n].firstChild;
+            while (!child.isNull()) {
+                const std::uint32_t c = entryOf[child.index()];
+                if (c != kNotListed && entries[c].entity == child) stack.push_back(c);
+                const std::uint32_t cn = nodes->indexOf(child);
+                child = cn == ComponentPool::kAbsent
+                            ? kNullEntity
+                            : nodes->typedData<HierarchyNode>()[cn].nextSibling;
+            }
+            std::reverse(stack.begin() + static_cast<std::ptrdiff_t>(mark), stack.end());
+        }
     }
+    std::vector<std::uint32_t> slotOf(registry.entityPool().slotCount(), kNoParent);
+    for (std::uint32_t slot = 0; slot < order.size(); ++slot)
+        slotOf[entries[order[slot]].entity.index()] = slot;
     parent_.resize(count);
     for (std::size_t slot = 0; slot < count; ++slot) {
         const Entity parent = entries[order[slot]].parent;

@@ -155,6 +155,7 @@ void SceneWorld::updateTransforms() {
         checks_->transforms.run(registry);
     }
     ecs::propagateTransforms(registry);
+    if (checkUnmarkedChanges) checks_->transforms.notePropagated(registry.currentTick());
 }
 
 SceneBounds SceneWorld::bounds() {

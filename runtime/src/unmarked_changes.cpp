@@ -38,6 +38,13 @@ std::size_t UnmarkedChangeCheck<T>::run(ecs::Registry& registry) {
         if (std::memcmp(&seen.value, &value, sizeof(T)) == 0) return;
         std::memcpy(&seen.value, &value, sizeof(T));
         if (registry.changedSince<T>(e, since)) return;  // marked: the frame sees it
+        if constexpr (std::is_same_v<T, ecs::LocalTransform>) {
+            // Written together with its WorldTransform after the last propagation (the
+            // animation's skeleton pass does that for joints only skins read): consistent.
+            if (propagatedAt_ != ecs::kNeverTick &&
+                registry.changedSince<ecs::WorldTransform>(e, propagatedAt_))
+                return;
+        }
         unmarked.push_back(e);
         if (!seen.reported) {
             seen.reported = true;

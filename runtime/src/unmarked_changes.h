@@ -21,6 +21,10 @@ public:
 
     // Returns how many components were found changed but unmarked (and marks them).
     std::size_t run(ecs::Registry& registry);
+    // Called after transform propagation: a WorldTransform stamped later than `tick` was
+    // written by a system (the animation's skeleton pass writes a joint's local and world
+    // together), so its LocalTransform change is consistent, not unmarked.
+    void notePropagated(ecs::Tick tick) { propagatedAt_ = tick; }
 
 private:
     struct Seen {
@@ -31,6 +35,7 @@ private:
     std::string componentName_;
     std::unordered_map<std::uint64_t, Seen> seen_;
     ecs::Tick checkedUpTo_ = 0;
+    ecs::Tick propagatedAt_ = ecs::kNeverTick;
     std::uint32_t pass_ = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "candela/content/animation_sampling.h"
 #include "gltf_accessors.h"
 #include "gltf_context.h"
 
@@ -147,6 +148,10 @@ bool convertClip(Context& context, const tinygltf::Animation& from, const std::s
     }
     for (const AnimationSampler& sampler : clip.samplers) {
         if (!sampler.times.empty()) clip.duration = std::max(clip.duration, sampler.times.back());
+    }
+    for (const AnimationChannel& channel : clip.channels) {
+        if (channel.property == AnimatedProperty::Rotation)
+            prepareSlerpAngles(clip.samplers[static_cast<std::size_t>(channel.sampler)]);
     }
     return true;
 }

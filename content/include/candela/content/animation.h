@@ -29,6 +29,9 @@ struct AnimationSampler {
     std::vector<float> times;      // seconds, strictly increasing
     // Per key `components` floats; CUBICSPLINE keys hold in-tangent, value, out-tangent.
     std::vector<float> values;
+    // LINEAR rotations: per key interval, the arc's angle and its sine (0: the keys are close
+    // enough for normalised lerp); empty: computed when sampled. prepareSlerpAngles fills it.
+    std::vector<float> slerpAngles;
 };
 
 struct AnimationChannel {

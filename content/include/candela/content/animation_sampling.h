@@ -25,6 +25,11 @@ std::size_t keyIntervalAt(const std::vector<float>& times, float time);
 // The same, trying `cursor` and the interval after it before searching; updates `cursor`.
 std::size_t keyIntervalAt(const std::vector<float>& times, float time, std::uint32_t& cursor);
 
+// Fills sampler.slerpAngles for a LINEAR rotation sampler (each key interval's angle and its
+// sine, which slerp would otherwise compute with an acos and a sine per channel per frame);
+// clears them for any other sampler. The loader calls it; results are identical either way.
+void prepareSlerpAngles(AnimationSampler& sampler);
+
 // Wraps or clamps a play time into [0, duration].
 float clipTime(float time, float duration, bool loop);
 

@@ -64,6 +64,40 @@ struct AnimationPlayer {
         // sized for the model's largest clip, so switching clips allocates nothing.
         std::vector<std::uint32_t> cursors;
         std::vector<std::uint32_t> blendCursors;
+        // The skeleton pass (skeleton_pose_pass.cpp), bound to the registry once and again
+        // only when a transform pool or the hierarchy changes structure. Per model node: its
+        // entity's dense index in the LocalTransform and WorldTransform pools (kAbsent: none),
+        // its entity parent's WorldTransform index (kAbsent: a root for propagation), and
+        // whether its LocalTransform changes are stamped (1: something besides a skin reads
+        // the node: a mesh, light or camera on it, no joint, or an entity attached under it).
+        // `order` lists the nodes parents first.
+        std::vector<std::uint32_t> order;
+        std::vector<std::uint32_t> localIndex;
+        std::vector<std::uint32_t> worldIndex;
+        std::vector<std::uint32_t> parentWorld;
+        std::vector<std::uint8_t> stampLocal;
+        // The same, packed in `order` for the frame loop (one contiguous walk).
+        struct PassNode {
+            std::uint32_t node;
+            std::uint32_t local;
+            std::uint32_t world;
+            std::uint32_t parentWorld;
+            std::uint32_t stampLocal;
+            std::uint32_t parentPass;  // the parent's position in passNodes, or kAbsent
+        };
+        std::vector<PassNode> passNodes;
+        std::vector<std::uint8_t> passMoved;   // per pass node: its world was written this frame
+        std::vector<std::uint32_t> skinNodes;  // mesh nodes whose Skin this player builds
+        const void* localPool = nullptr;
+        const void* worldPool = nullptr;
+        std::uint32_t localVersion = 0;
+        std::uint32_t worldVersion = 0;
+        std::uint64_t hierarchyVersion = 0;
+        bool bound = false;
+        // The entities mirror the model's hierarchy: the pass writes their world transforms
+        // and builds the skins itself. Otherwise it only writes local transforms (stamped) and
+        // leaves the rest to propagation and updateSkins.
+        bool direct = false;
         // The pose last written: a paused player whose clip and time did not change writes
         // nothing (and so its skeleton's skins are not rebuilt).
         bool applied = false;
@@ -93,6 +127,15 @@ struct Skin {
     // whose skeleton did not move is skipped (a still character costs a few tick reads).
     ecs::Tick builtFrom = ecs::kNeverTick;
     bool previousIsCurrent = false;
+    // Built this frame by its player's skeleton pass from the worlds it wrote (stamped
+    // builtFrom): updateSkins keeps the matrices unless propagation changed a joint since.
+    bool builtByPose = false;
+    // Dense indices of the mesh's and joints' WorldTransform, valid while the pool's structure
+    // is unchanged (updateSkins' change-tick scan reads them instead of looking entities up).
+    std::uint32_t meshWorldIndex = 0xFFFFFFFFu;
+    std::vector<std::uint32_t> jointWorldIndex;
+    const void* worldPool = nullptr;
+    std::uint32_t worldVersion = 0;
 };
 
 struct MorphWeights {

@@ -1,0 +1,101 @@
+#pragma once
+// Skin joint matrices and deformed bounds from the joints' world matrices: shared by the
+// skeleton pass (worlds it has just computed) and updateSkins (worlds after propagation).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "candela/content/animation.h"
+#include "candela/content/components/animation.h"
+#include "candela/ecs/affine_multiply.h"
+
+namespace candela::content {
+
+// Inverse of an affine matrix (last row 0 0 0 1), through the 3x3 adjugate.
+ecs::Mat4 affineInverse(const ecs::Mat4& m);
+
+// Per joint j: toMesh * world(j) * inverse bind (a zero matrix where world(j) is null: the
+// joint is not shown), the previous frame's matrices kept by a swap (no copy, no allocation
+// once sized), and the deformed mesh's bounds from each joint's bind-space box.
+template <class JointWorld>
+void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMesh,
+                        JointWorld&& world) {
+    if (skin.jointMatrices.size() != data.joints.size())
+        skin.jointMatrices.assign(data.joints.size(), ecs::Mat4::identity());
+    // Every joint below is rewritten, so the swap leaves nothing stale.
+    if (skin.previousJointMatrices.size() == skin.jointMatrices.size()) {
+        std::swap(skin.previousJointMatrices, skin.jointMatrices);
+    } else {
+        skin.previousJointMatrices = skin.jointMatrices;
+    }
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    ecs::Vec3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
+    ecs::Mat4 toJoint;
+#if defined(__SSE2__)
+    __m128 low = _mm_set1_ps(kInf), high = _mm_set1_ps(-kInf);
+#endif
+    for (std::size_t j = 0; j < data.joints.size(); ++j) {
+        const ecs::Mat4* jointWorld = world(j);
+        if (jointWorld) {
+            ecs::multiplyByAffine(toMesh, *jointWorld, toJoint);
+            ecs::multiplyMatrices(toJoint, data.inverseBindMatrices[j].data(),
+                                  skin.jointMatrices[j]);
+        } else {
+            skin.jointMatrices[j] = ecs::Mat4{};
+        }
+        if (j >= skin.jointBounds.size()) continue;
+        const std::array<float, 6>& box = skin.jointBounds[j];
+        if (box[0] > box[3]) continue;  // the joint moves no vertex
+        // The moved box's bounds from its centre and half size (Arvo): the centre moved by
+        // the matrix, the half size by its absolute values; the same box as moving all 8
+        // corners, at a quarter of the work.
+        const ecs::Mat4& m = skin.jointMatrices[j];
+        const float centreIn[3] = {0.5f * (box[0] + box[3]), 0.5f * (box[1] + box[4]),
+                                   0.5f * (box[2] + box[5])};
+        const float half[3] = {0.5f * (box[3] - box[0]), 0.5f * (box[4] - box[1]),
+                               0.5f * (box[5] - box[2])};
+#if defined(__SSE2__)
+        // Whole columns, in transformPoint's and the scalar form's order (same results).
+        const __m128 c0 = _mm_loadu_ps(m.m), c1 = _mm_loadu_ps(m.m + 4);
+        const __m128 c2 = _mm_loadu_ps(m.m + 8), c3 = _mm_loadu_ps(m.m + 12);
+        const __m128 centre =
+            _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_set1_ps(centreIn[0])),
+                                             _mm_mul_ps(c1, _mm_set1_ps(centreIn[1]))),
+                                  _mm_mul_ps(c2, _mm_set1_ps(centreIn[2]))),
+                       c3);
+        const __m128 sign = _mm_set1_ps(-0.0f);
+        const __m128 reach =
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_andnot_ps(sign, c0), _mm_set1_ps(half[0])),
+                                  _mm_mul_ps(_mm_andnot_ps(sign, c1), _mm_set1_ps(half[1]))),
+                       _mm_mul_ps(_mm_andnot_ps(sign, c2), _mm_set1_ps(half[2])));
+        low = _mm_min_ps(low, _mm_sub_ps(centre, reach));
+        high = _mm_max_ps(high, _mm_add_ps(centre, reach));
+#else
+        const ecs::Vec3 centre = m.transformPoint({centreIn[0], centreIn[1], centreIn[2]});
+        float reach[3];
+        for (int row = 0; row < 3; ++row) {
+            reach[row] = std::fabs(m(row, 0)) * half[0] + std::fabs(m(row, 1)) * half[1] +
+                         std::fabs(m(row, 2)) * half[2];
+        }
+        lo = {std::min(lo.x, centre.x - reach[0]), std::min(lo.y, centre.y - reach[1]),
+              std::min(lo.z, centre.z - reach[2])};
+        hi = {std::max(hi.x, centre.x + reach[0]), std::max(hi.y, centre.y + reach[1]),
+              std::max(hi.z, centre.z + reach[2])};
+#endif
+    }
+#if defined(__SSE2__)
+    float lowOut[4], highOut[4];
+    _mm_storeu_ps(lowOut, low);
+    _mm_storeu_ps(highOut, high);
+    lo = {lowOut[0], lowOut[1], lowOut[2]};
+    hi = {highOut[0], highOut[1], highOut[2]};
+#endif
+    skin.boundsValid = lo.x <= hi.x;
+    if (skin.boundsValid) {
+        skin.boundsMin = lo;
+        skin.boundsMax = hi;
+    }
+}
+
+}  // namespace candela::content

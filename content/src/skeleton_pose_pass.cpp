@@ -1,0 +1,203 @@
+#include "skeleton_pose_pass.h"
+
+#include "candela/content/model.h"
+#include "candela/ecs/affine_multiply.h"
+#include "candela/ecs/hierarchy.h"
+#include "joint_matrices.h"
+
+namespace candela::content {
+namespace {
+
+constexpr std::uint32_t kAbsent = ecs::ComponentPool::kAbsent;
+
+std::uint32_t indexIn(const ecs::ComponentPool* pool, const ecs::Registry& registry,
+                      ecs::Entity e) {
+    return pool && e != ecs::kNullEntity && registry.valid(e) ? pool->indexOf(e) : kAbsent;
+}
+
+bool bindingIsCurrent(const ecs::Registry& registry, const TransformPools& pools,
+                      const AnimationPlayer::Scratch& s) {
+    return s.bound && s.localPool == pools.locals && s.worldPool == pools.worlds &&
+           (!pools.locals || pools.locals->structureVersion() == s.localVersion) &&
+           (!pools.worlds || pools.worlds->structureVersion() == s.worldVersion) &&
+           ecs::hierarchyVersion(registry) == s.hierarchyVersion;
+}
+
+// Is `e`'s Skin the one instantiateModel gave mesh node `node`, with the node entities as
+// its joints (what the pass builds from)?
+bool skinMatchesModel(const ecs::Registry& registry, const AnimationPlayer& player,
+                      std::size_t node, ecs::Entity e) {
+    const Model& model = *player.model;
+    const Skin* skin = registry.tryGet<Skin>(e);
+    if (skin == nullptr || skin->model != &model || skin->skin != model.nodes[node].skin)
+        return false;
+    const SkinData& data = model.skins[static_cast<std::size_t>(skin->skin)];
+    if (skin->joints.size() != data.joints.size()) return false;
+    for (std::size_t j = 0; j < data.joints.size(); ++j) {
+        const auto jointNode = static_cast<std::size_t>(data.joints[j]);
+        const ecs::Entity expected = jointNode < player.nodeEntities.size()
+                                         ? player.nodeEntities[jointNode]
+                                         : ecs::kNullEntity;
+        if (skin->joints[j] != expected) return false;
+    }
+    return true;
+}
+
+// Sizes and fills the pass's per-node tables (sizes are kept: rebinding allocates nothing).
+void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationPlayer& player) {
+    const Model& model = *player.model;
+    AnimationPlayer::Scratch& s = player.scratch;
+    const std::size_t count = model.nodes.size();
+    s.parentWorld.assign(count, kAbsent);
+    s.localIndex.assign(count, kAbsent);
+    s.worldIndex.assign(count, kAbsent);
+    s.stampLocal.assign(count, 1);
+    s.order.clear();
+    s.order.reserve(count);
+    s.skinNodes.clear();
+    s.skinNodes.reserve(count);
+    s.direct = true;
+
+    // Parents first: the roots, then each listed node's children (explicit queue, the order
+    // vector itself).
+    for (std::size_t n = 0; n < count; ++n)
+        if (model.nodes[n].parent == kNoIndex) s.order.push_back(static_cast<std::uint32_t>(n));
+    for (std::size_t i = 0; i < s.order.size() && s.order.size() <= count; ++i)
+        for (std::int32_t child : model.nodes[s.order[i]].children)
+            s.order.push_back(static_cast<std::uint32_t>(child));
+    if (s.order.size() != count) s.direct = false;  // not a forest (the loader rejects that)
+
+    // Joints whose only reader is a skin.
+    std::vector<std::uint8_t>& isJoint = s.stampLocal;  // reused below: 0 = joint, for now
+    for (const SkinData& skin : model.skins)
+        for (std::int32_t joint : skin.joints)
+            isJoint[static_cast<std::size_t>(joint)] = 0;
+
+    auto entityOf = [&](std::int32_t node) {
+        return node >= 0 && static_cast<std::size_t>(node) < player.nodeEntities.size()
+                   ? player.nodeEntities[static_cast<std::size_t>(node)]
+                   : ecs::kNullEntity;
+    };
+    for (std::size_t n = 0; n < count && s.direct; ++n) {
+        const Node& node = model.nodes[n];
+        const ecs::Entity e = entityOf(static_cast<std::int32_t>(n));
+        if (e == ecs::kNullEntity || !registry.valid(e)) continue;
+        s.localIndex[n] = indexIn(pools.locals, registry, e);
+        s.worldIndex[n] = indexIn(pools.worlds, registry, e);
+        // Propagation computes a node from its entity's parent: the pass must see the same
+        // parent, and both transforms (a half-transformed node is propagation's business).
+        if ((s.localIndex[n] == kAbsent) != (s.worldIndex[n] == kAbsent)) s.direct = false;
+        const ecs::Entity entityParent = ecs::parentOf(registry, e);
+        const ecs::Entity modelParent = entityOf(node.parent);
+        if (modelParent != ecs::kNullEntity && entityParent != modelParent) s.direct = false;
+        // Propagation places a node under its entity parent only when that has both
+        // transforms.
+        if (indexIn(pools.locals, registry, entityParent) != kAbsent)
+            s.parentWorld[n] = indexIn(pools.worlds, registry, entityParent);
+        std::uint32_t modelChildren = 0;
+        for (std::int32_t child : node.children)
+            if (entityOf(child) != ecs::kNullEntity) ++modelChildren;
+        const auto* links = registry.tryGet<ecs::HierarchyNode>(e);
+        const std::uint32_t entityChildren = links ? links->childCount : 0;
+        const bool onlySkinsRead = isJoint[n] == 0 && node.mesh == kNoIndex &&
+                                   node.camera == kNoIndex && node.light == kNoIndex &&
+                                   entityChildren == modelChildren;
+        s.stampLocal[n] = onlySkinsRead ? 0 : 1;
+        if (node.mesh != kNoIndex && node.skin != kNoIndex &&
+            skinMatchesModel(registry, player, n, e))
+            s.skinNodes.push_back(static_cast<std::uint32_t>(n));
+    }
+    s.passNodes.clear();
+    s.passNodes.reserve(count);
+    for (const std::uint32_t n : s.order) {
+        if (s.localIndex[n] == kAbsent) continue;  // no entity: nothing reads it
+        std::uint32_t parentPass = kAbsent;
+        for (std::size_t i = 0; i < s.passNodes.size(); ++i)
+            if (s.parentWorld[n] != kAbsent && s.passNodes[i].world == s.parentWorld[n])
+                parentPass = static_cast<std::uint32_t>(i);
+        s.passNodes.push_back(
+            {n, s.localIndex[n], s.worldIndex[n], s.parentWorld[n], s.stampLocal[n], parentPass});
+    }
+    s.passMoved.assign(s.passNodes.size(), 0);
+    s.localPool = pools.locals;
+    s.worldPool = pools.worlds;
+    s.localVersion = pools.locals ? pools.locals->structureVersion() : 0;
+    s.worldVersion = pools.worlds ? pools.worlds->structureVersion() : 0;
+    s.hierarchyVersion = ecs::hierarchyVersion(registry);
+    s.bound = true;
+}
+
+// The classic path: stamped locals for the animated nodes, nothing else.
+void writeLocalsOnly(ecs::Registry& registry, const TransformPools& pools,
+                     AnimationPlayer& player) {
+    const AnimationPlayer::Scratch& s = player.scratch;
+    if (pools.locals == nullptr) return;
+    auto* locals = pools.locals->typedData<ecs::LocalTransform>();
+    const ecs::Tick now = registry.currentTick();
+    for (std::size_t n = 0; n < s.pose.size() && n < player.nodeEntities.size(); ++n) {
+        if (!(s.touched[n] & kTransformTouched)) continue;
+        const std::uint32_t index = indexIn(pools.locals, registry, player.nodeEntities[n]);
+        if (index == kAbsent) continue;
+        locals[index] = s.pose[n];
+        pools.locals->stamp(index, now);
+    }
+}
+
+void buildSkin(ecs::Registry& registry, AnimationPlayer& player, const ecs::WorldTransform* worlds,
+               std::uint32_t meshNode, ecs::Tick now) {
+    const Model& model = *player.model;
+    const AnimationPlayer::Scratch& s = player.scratch;
+    Skin* skin = registry.tryGet<Skin>(player.nodeEntities[meshNode]);
+    if (skin == nullptr) return;
+    const SkinData& data = model.skins[static_cast<std::size_t>(skin->skin)];
+    const ecs::Mat4 toMesh = affineInverse(worlds[s.worldIndex[meshNode]].matrix);
+    buildJointMatrices(*skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
+        const auto node = static_cast<std::size_t>(data.joints[j]);
+        return s.worldIndex[node] == kAbsent ? nullptr : &worlds[s.worldIndex[node]].matrix;
+    });
+    skin->builtFrom = now;
+    skin->previousIsCurrent = false;
+    skin->builtByPose = true;
+}
+
+}  // namespace
+
+void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
+                       AnimationPlayer& player) {
+    AnimationPlayer::Scratch& s = player.scratch;
+    if (!bindingIsCurrent(registry, pools, s)) bind(registry, pools, player);
+    if (!s.direct || pools.locals == nullptr || pools.worlds == nullptr) {
+        writeLocalsOnly(registry, pools, player);
+        return;
+    }
+    auto* locals = pools.locals->typedData<ecs::LocalTransform>();
+    auto* worlds = pools.worlds->typedData<ecs::WorldTransform>();
+    ecs::Tick* worldTicks = pools.worlds->changeTicks();
+    const ecs::Tick now = registry.currentTick();
+    for (std::size_t i = 0; i < s.passNodes.size(); ++i) {
+        const AnimationPlayer::Scratch::PassNode& p = s.passNodes[i];
+        ecs::LocalTransform& pose = s.pose[p.node];
+        const bool animated = (s.touched[p.node] & kTransformTouched) != 0;
+        if (animated) {
+            locals[p.local] = pose;
+            if (p.stampLocal) pools.locals->stamp(p.local, now);
+        } else {
+            pose = locals[p.local];  // not animated: the entity's own (a game may move it)
+        }
+        // A node neither animated nor under one that moved keeps its world (and its change
+        // tick: readers that track moved entities see only what moved).
+        const bool moved = animated || (p.parentPass != kAbsent && s.passMoved[p.parentPass]);
+        s.passMoved[i] = moved ? 1 : 0;
+        if (!moved) continue;
+        // Local-to-world with propagation's own product, so the worlds it would compute
+        // are bit for bit these. Parents come first: theirs are already written.
+        ecs::composeWorld(p.parentWorld == kAbsent ? nullptr : &worlds[p.parentWorld].matrix,
+                          pose.position, pose.rotation, pose.scale, worlds[p.world].matrix);
+        worldTicks[p.world] = now;
+    }
+    pools.worlds->noteChange(now);
+    for (const std::uint32_t meshNode : s.skinNodes)
+        buildSkin(registry, player, worlds, meshNode, now);
+}
+
+}  // namespace candela::content
