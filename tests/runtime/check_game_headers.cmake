@@ -6,6 +6,7 @@
 # the engine-side ones below, which tools built into the engine (the `candela` executable, the
 # editor) use to reach the renderer and which games do not need.
 set(ENGINE_SIDE
+  runtime/include/candela/runtime/atmosphere_sun.h      # the atmosphere's sun (render lights)
   runtime/include/candela/runtime/frame_extraction.h    # ECS -> render arrays (render types)
   runtime/include/candela/runtime/layer_pass_context.h  # what a FrameLayer records with (Vulkan)
   runtime/include/candela/runtime/light_table.h         # render light slots
