@@ -47,6 +47,10 @@ std::filesystem::path tempDir() {
 }
 
 const std::string kTriangle = "run builtin:triangle --headless --size 64x48 ";
+// For demo runs that test something else (the camera path, the overlay, light culling): the
+// demo's reflections and fog are the slowest pipelines to build on lavapipe (about half of a
+// demo run's 30 s under the sanitizers); DemoRendersHeadlessWithEveryFeature keeps them.
+const std::string kDemoWithoutSsrAndVolumetrics = "--ssr off --volumetrics off ";
 
 }  // namespace
 
@@ -158,7 +162,8 @@ TEST(Cli, DemoRendersHeadlessWithEveryFeature) {
 // for every frame, and the frames along the path differ from each other.
 TEST(Cli, DemoCameraPathIsDeterministic) {
     auto dir = tempDir();
-    const std::string args = "demo --headless --size 96x54 --frames 3 --step 4 --capture-each ";
+    const std::string args = "demo --headless --size 96x54 --frames 3 --step 4 " +
+                             kDemoWithoutSsrAndVolumetrics + "--capture-each ";
     RunResult a = runCandela(args + (dir / "path_a").string());
     ASSERT_EQ(a.exitCode, 0) << a.output;
     RunResult b = runCandela(args + (dir / "path_b").string() + " --summary " +
@@ -180,7 +185,8 @@ TEST(Cli, DemoCameraPathIsDeterministic) {
 
 TEST(Cli, DemoHasHundredsOfLightsAndCullsThem) {
     auto dir = tempDir();
-    RunResult r = runCandela("demo --headless --size 96x54 --stats " + (dir / "d.json").string());
+    RunResult r = runCandela("demo --headless --size 96x54 " + kDemoWithoutSsrAndVolumetrics +
+                             "--stats " + (dir / "d.json").string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     nlohmann::json stats = nlohmann::json::parse(readBytes(dir / "d.json"));
     EXPECT_GE(stats["lights"].get<int>(), 256);
@@ -196,7 +202,8 @@ TEST(Cli, DemoHasHundredsOfLightsAndCullsThem) {
 // and it is a pass of the frame graph.
 TEST(Cli, DemoOverlayDrawsOnlyItsCorner) {
     auto dir = tempDir();
-    const std::string args = "demo --headless --size 640x360 --frames 2 --capture ";
+    const std::string args =
+        "demo --headless --size 640x360 --frames 2 " + kDemoWithoutSsrAndVolumetrics + "--capture ";
     RunResult plain = runCandela(args + (dir / "plain.png").string());
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
     RunResult overlay = runCandela(args + (dir / "overlay.png").string() + " --overlay" +
@@ -255,9 +262,10 @@ TEST(Cli, BadStepAndCaptureEachAreRejected) {
 TEST(Cli, DeviceLightAssignmentGivesTheSameImage) {
     auto dir = tempDir();
     for (const char* device : {"cpu", "gpu", "auto"}) {
-        RunResult r = runCandela(std::string("demo --headless --size 160x90 --frames 2 ") +
-                                 "--light-assign " + device + " --capture " +
-                                 (dir / (std::string("assign_") + device + ".exr")).string());
+        RunResult r =
+            runCandela("demo --headless --size 160x90 --frames 2 " + kDemoWithoutSsrAndVolumetrics +
+                       "--light-assign " + device + " --capture " +
+                       (dir / (std::string("assign_") + device + ".exr")).string());
         ASSERT_EQ(r.exitCode, 0) << device << ": " << r.output;
     }
     std::string cpu = readBytes(dir / "assign_cpu.exr");
