@@ -180,8 +180,14 @@ TEST(ClusteredLighting, MatchesBruteForceWith1024Lights) {
     expectClusteredMatchesBruteForce(1024, 128);
 }
 
-TEST(ClusteredLighting, MatchesBruteForceWith16384Lights) {
-    expectClusteredMatchesBruteForce(16384, 96);
+// 8,192, not more: lavapipe's loop limiter stops an invocation after 65,535 loop iterations in
+// all (every loop of the shader counts), so the brute-force reference, which walks every light
+// per pixel, is cut short once the lights' own loops (LTC polygon clipping and edges) add enough
+// iterations: at 16,384 lights it made 74.2 million light-pixel evaluations where 8,192 lights
+// made 46.4 million (not twice as many), and the comparison failed on the reference, not on the
+// clusters (the clustered lit pairs outnumbered brute force's, which culling cannot do).
+TEST(ClusteredLighting, MatchesBruteForceWith8192Lights) {
+    expectClusteredMatchesBruteForce(8192, 96);
 }
 
 // A device list buffer far too small for the frame: the clusters that do not fit evaluate every
