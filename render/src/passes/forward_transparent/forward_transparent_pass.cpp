@@ -124,7 +124,6 @@ void ForwardTransparentPass::buildFixedPipelines() {
         };
         expand_ = Pipeline::graphics(context_, expand, expandBindings, 0);
     }
-    fixedBuilt_ = true;
 }
 
 ImageDesc ForwardTransparentPass::msaaHdrDesc(uint32_t width, uint32_t height,
@@ -247,7 +246,7 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
         sorted_.push_back(scene.draws[index]);
         sortedIndex_.push_back(index);
     }
-    if (!fixedBuilt_) buildFixedPipelines();
+    if (occupancy_.handle() == VK_NULL_HANDLE) buildFixedPipelines();
     if (!built_ || !(features == features_)) {
         features_ = features;
         buildShadingPipeline();

@@ -106,7 +106,7 @@ public:
 
 private:
     void buildShadingPipeline();
-    void buildFixedPipelines();
+    void buildFixedPipelines();  // occupancy_, merge_, expand_: empty until the first blended frame
 
     GpuContext& context_;
     VkSampleCountFlagBits samples_;
@@ -116,7 +116,6 @@ private:
     std::vector<std::pair<float, uint32_t>> order_;  // (view depth, draw index) scratch
     LightingFeatures features_;
     bool built_ = false;
-    bool fixedBuilt_ = false;  // occupancy_, merge_, expand_
     Pipeline shading_;
     Pipeline occupancy_;
     Pipeline merge_;
