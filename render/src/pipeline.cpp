@@ -1,6 +1,9 @@
 #include "candela/render/pipeline.h"
 
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string_view>
 #include <utility>
 
 #include "candela/render/gpu_context.h"
@@ -31,6 +34,19 @@ uint64_t nanosecondsSince(std::chrono::steady_clock::time_point start) {
     return uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(
                         std::chrono::steady_clock::now() - start)
                         .count());
+}
+
+// CANDELA_PIPELINE_LOG=1: a line on stderr per pipeline built, with its SPIR-V size and the
+// driver's time, to find what a slow run compiles (--stats gives only the totals). On lavapipe
+// the time follows the shader's size after inlining: one call site per big function matters.
+void logPipelineCreation(const char* kind, size_t spirvWords, uint64_t createNs) {
+    static const bool enabled = [] {
+        const char* value = std::getenv("CANDELA_PIPELINE_LOG");
+        return value && *value && std::string_view(value) != "0";
+    }();
+    if (!enabled) return;
+    std::fprintf(stderr, "candela: %s pipeline, %zu SPIR-V words, %.1f ms\n", kind, spirvWords,
+                 double(createNs) * 1e-6);
 }
 
 }  // namespace
@@ -101,7 +117,9 @@ Pipeline Pipeline::compute(GpuContext& context, std::span<const uint32_t> spirv,
     const auto start = std::chrono::steady_clock::now();
     VkResult result =
         vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline_);
-    context.notePipelineCreated(nanosecondsSince(start));
+    const uint64_t createNs = nanosecondsSince(start);
+    context.notePipelineCreated(createNs);
+    logPipelineCreation("compute", spirv.size(), createNs);
     vkDestroyShaderModule(context.device(), module, nullptr);
     if (result != VK_SUCCESS) throwVkError("vkCreateComputePipelines", result);
     return p;
@@ -211,7 +229,9 @@ Pipeline Pipeline::graphics(GpuContext& context, const GraphicsPipelineDesc& des
     const auto start = std::chrono::steady_clock::now();
     VkResult result =
         vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline_);
-    context.notePipelineCreated(nanosecondsSince(start));
+    const uint64_t createNs = nanosecondsSince(start);
+    context.notePipelineCreated(createNs);
+    logPipelineCreation("graphics", desc.vertexSpirv.size() + desc.fragmentSpirv.size(), createNs);
     vkDestroyShaderModule(device, vertex, nullptr);
     vkDestroyShaderModule(device, fragment, nullptr);
     if (result != VK_SUCCESS) throwVkError("vkCreateGraphicsPipelines", result);

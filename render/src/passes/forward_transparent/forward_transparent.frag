@@ -40,14 +40,13 @@ layout(std430, binding = FORWARD_BINDING_LIGHT_INDICES) readonly buffer LightInd
 layout(std430, binding = FORWARD_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
     uint depthRange[];
 };
+#include "common/pixel_lights.glsl"
 layout(binding = FORWARD_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
 layout(binding = FORWARD_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
 layout(std430, binding = FORWARD_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
     vec4 irradianceSh[9];
 };
 
-// A cluster whose device-assigned list did not fit (light_assignment_pass.h): every light.
-const uint kListOverflow = 0xffffffffu;
 
 layout(push_constant) uniform Draw {
     mat4 world;
@@ -124,37 +123,13 @@ void main() {
                         (s.occlusion * draw.skyIntensity);
         }
 
-        if (kClustered) {
-            for (uint i = 0u; i < draw.directionalCount; ++i) {
-                radiance += lightRadiance(surface, P, N, V, R, alpha, lightIndices[i]);
-            }
-            // The cluster of this fragment; the transparency occupancy pass made sure it holds
-            // every light that reaches this depth, with the fragment's quarter in the masks.
-            uint cluster = clusterOfPixel(draw.grid, uvec2(gl_FragCoord.xy), gl_FragCoord.z,
-                                          uintBitsToFloat(depthRange[2]),
-                                          uintBitsToFloat(depthRange[3]));
-            uint first = clusterRanges[2u * cluster];
-            uint count = clusterRanges[2u * cluster + 1u];
-            if (count == kListOverflow) {
-                for (uint i = 0u; i < camera.frameInfo.z; ++i) {
-                    // Stream 3's w is the light type (light_buffer.glsl).
-                    if (!lightInEveryCluster(uint(lightData[3u * camera.frameInfo.w + i].w))) {
-                        radiance += lightRadiance(surface, P, N, V, R, alpha, i);
-                    }
-                }
-            } else {
-                uint quarterBit = quarterBitOfPixel(draw.grid, uvec2(gl_FragCoord.xy));
-                for (uint i = 0u; i < count; ++i) {
-                    uint light = lightOfEntry(lightIndices[first + i], quarterBit);
-                    if (light != kNoLight) {
-                        radiance += lightRadiance(surface, P, N, V, R, alpha, light);
-                    }
-                }
-            }
-        } else {
-            for (uint i = 0u; i < camera.frameInfo.z; ++i) {
-                radiance += lightRadiance(surface, P, N, V, R, alpha, i);
-            }
+        // The transparency occupancy pass made sure the fragment's cluster holds every light
+        // that reaches this depth, with the fragment's quarter in the masks.
+        PixelLights lights = pixelLights(kClustered, draw.directionalCount, draw.grid,
+                                         uvec2(gl_FragCoord.xy), gl_FragCoord.z);
+        for (uint k = 0u; k < pixelLightCount(lights); ++k) {
+            uint light = pixelLightAt(lights, k);
+            if (light != kNoLight) radiance += lightRadiance(surface, P, N, V, R, alpha, light);
         }
     }
     // The medium in front of the surface (froxels): attenuated by it, its in-scattering added,

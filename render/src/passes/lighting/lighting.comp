@@ -60,10 +60,8 @@ layout(std430, binding = LIGHTING_BINDING_PAIR_COUNTS) writeonly buffer PairCoun
 layout(std430, binding = LIGHTING_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
     uint depthRange[];
 };
+#include "common/pixel_lights.glsl"
 
-// A cluster whose list did not fit the device-assigned index buffer (light_assignment_pass.h):
-// it evaluates every light instead, so no light is ever dropped.
-const uint kListOverflow = 0xffffffffu;
 
 layout(binding = LIGHTING_BINDING_ENVIRONMENT) uniform samplerCube environmentCube;  // all mips
 // Roughness per mip.
@@ -143,32 +141,33 @@ struct PixelShading {
     uint litPairs;
 };
 
-void addLight(inout PixelShading px, uint lightIndex) {
+// One light's share of the pixel's radiance. A coated pixel takes each light twice: the base
+// layer, then the coat (coatLayer), which sees the light from its own normal and roughness and
+// is shadowed as the base is. Two passes rather than two evaluateLight calls, because compilers
+// inline evaluateLight once per call site.
+void addLight(inout PixelShading px, uint lightIndex, bool coatLayer) {
     Light light = loadLight(lightIndex, camera.frameInfo.w);
-    LightIncidence incidence = evaluateLight(light, px.P, px.N, px.R, px.alpha);
+    LightIncidence incidence =
+        evaluateLight(light, px.P, coatLayer ? px.surface.clearCoatN : px.N,
+                      coatLayer ? px.coatR : px.R, coatLayer ? px.coatAlpha : px.alpha);
     // Out of the light's range or cone nothing is lit whatever the map says: no sampling.
     float visibility = any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))
                            ? shadowVisibility(light, lightIndex, px.P, px.N)
                            : 1.0;
     incidence.diffuseIlluminance *= visibility;
     incidence.specularIlluminance *= visibility;
+    if (coatLayer) {
+        incidence.incidentIlluminance *= visibility;
+        px.radiance += clearCoatLobe(px.surface, px.V, incidence);
+        return;
+    }
     incidence.incidentIlluminance *= kSubsurfaceEnabled &&
                                              px.surface.shadingModel == kShadingSubsurface
                                          ? subsurfaceTransmittance(light, lightIndex, px.P)
                                          : visibility;
-    if (kClearCoatEnabled && px.surface.clearCoat > 0.0) {
-        // The coat sees the light from its own normal and roughness: a second incidence,
-        // shadowed as the base is.
-        LightIncidence coat =
-            evaluateLight(light, px.P, px.surface.clearCoatN, px.coatR, px.coatAlpha);
-        coat.diffuseIlluminance *= visibility;
-        coat.specularIlluminance *= visibility;
-        coat.incidentIlluminance *= visibility;
-        px.radiance += shadeSurface(px.surface, px.N, px.V, incidence) * px.coatAttenuation +
-                       clearCoatLobe(px.surface, px.V, coat);
-    } else {
-        px.radiance += shadeSurface(px.surface, px.N, px.V, incidence);
-    }
+    vec3 base = shadeSurface(px.surface, px.N, px.V, incidence);
+    bool coated = kClearCoatEnabled && px.surface.clearCoat > 0.0;
+    px.radiance += coated ? base * px.coatAttenuation : base;
     if (kCountLightPairs) {
         px.evaluations += 1u;
         px.litPairs += any(greaterThan(incidence.incidentIlluminance, vec3(0.0))) ? 1u : 0u;
@@ -498,29 +497,12 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
         }
     }
 
-    if (kClustered) {
-        for (uint i = 0u; i < push.directionalCount; ++i) addLight(px, lightIndices[i]);
-        uint cluster = clusterOfPixel(push.grid, uvec2(pixel), depth,
-                                      uintBitsToFloat(depthRange[2]), uintBitsToFloat(depthRange[3]));
-        uint first = clusterRanges[2u * cluster];
-        uint count = clusterRanges[2u * cluster + 1u];
-        if (count == kListOverflow) {
-            for (uint i = 0u; i < camera.frameInfo.z; ++i) {
-                // Stream 3's w is the light type (light_buffer.glsl).
-                if (!lightInEveryCluster(uint(lightData[3u * camera.frameInfo.w + i].w))) {
-                    addLight(px, i);
-                }
-            }
-        } else {
-            // Only the entries whose light reaches the pixel's quarter of the tile.
-            uint quarterBit = quarterBitOfPixel(push.grid, uvec2(pixel));
-            for (uint i = 0u; i < count; ++i) {
-                uint light = lightOfEntry(lightIndices[first + i], quarterBit);
-                if (light != kNoLight) addLight(px, light);
-            }
-        }
-    } else {
-        for (uint i = 0u; i < camera.frameInfo.z; ++i) addLight(px, i);
+    PixelLights lights =
+        pixelLights(kClustered, push.directionalCount, push.grid, uvec2(pixel), depth);
+    uint layers = kClearCoatEnabled && px.surface.clearCoat > 0.0 ? 2u : 1u;
+    for (uint k = 0u; k < pixelLightCount(lights) * layers; ++k) {
+        uint light = pixelLightAt(lights, k / layers);
+        if (light != kNoLight) addLight(px, light, k % layers == 1u);
     }
     vec4 previous = imageLoad(hdrRadiance, pixel);
     imageStore(hdrRadiance, pixel, vec4(previous.rgb + px.radiance, 1.0));

@@ -38,13 +38,13 @@ layout(std430, binding = WIRE_BINDING_LIGHT_INDICES) readonly buffer LightIndice
 layout(std430, binding = WIRE_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
     uint depthRange[];
 };
+#include "common/pixel_lights.glsl"
 layout(binding = WIRE_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
 layout(binding = WIRE_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
 layout(std430, binding = WIRE_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
     vec4 irradianceSh[9];
 };
 
-const uint kListOverflow = 0xffffffffu;
 // Screen widths (pixels) over which the shading turns from bent normals and half-Lambert (a
 // wire a pixel or less wide) to the cylinder's own normals and Lambert.
 const float kBentBelowPx = 1.0;
@@ -147,38 +147,14 @@ void main() {
                                    environmentBrdfLut, kIblMode == 2u) *
                 draw.skyIntensity;
         }
-        if (kClustered) {
-            for (uint i = 0u; i < draw.directionalCount; ++i) {
-                radiance += lightRadiance(surface, P, N, V, R, roughnessAlpha, halfLambert,
-                                          lightIndices[i]);
-            }
-            // Local lights from the cluster's list: they reach the wire where an opaque or
-            // blended surface shares its cluster (wires do not mark clusters themselves).
-            uint cluster =
-                clusterOfPixel(draw.grid, uvec2(gl_FragCoord.xy), gl_FragCoord.z,
-                               uintBitsToFloat(depthRange[2]), uintBitsToFloat(depthRange[3]));
-            uint first = clusterRanges[2u * cluster];
-            uint count = clusterRanges[2u * cluster + 1u];
-            if (count == kListOverflow) {
-                for (uint i = 0u; i < camera.frameInfo.z; ++i) {
-                    if (!lightInEveryCluster(uint(lightData[3u * camera.frameInfo.w + i].w))) {
-                        radiance +=
-                            lightRadiance(surface, P, N, V, R, roughnessAlpha, halfLambert, i);
-                    }
-                }
-            } else {
-                uint quarterBit = quarterBitOfPixel(draw.grid, uvec2(gl_FragCoord.xy));
-                for (uint i = 0u; i < count; ++i) {
-                    uint light = lightOfEntry(lightIndices[first + i], quarterBit);
-                    if (light != kNoLight) {
-                        radiance +=
-                            lightRadiance(surface, P, N, V, R, roughnessAlpha, halfLambert, light);
-                    }
-                }
-            }
-        } else {
-            for (uint i = 0u; i < camera.frameInfo.z; ++i) {
-                radiance += lightRadiance(surface, P, N, V, R, roughnessAlpha, halfLambert, i);
+        // Local lights from the cluster's list: they reach the wire where an opaque or blended
+        // surface shares its cluster (wires do not mark clusters themselves).
+        PixelLights lights = pixelLights(kClustered, draw.directionalCount, draw.grid,
+                                         uvec2(gl_FragCoord.xy), gl_FragCoord.z);
+        for (uint k = 0u; k < pixelLightCount(lights); ++k) {
+            uint light = pixelLightAt(lights, k);
+            if (light != kNoLight) {
+                radiance += lightRadiance(surface, P, N, V, R, roughnessAlpha, halfLambert, light);
             }
         }
     }
