@@ -177,7 +177,9 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --scattering-slices N     epipolar slices (default 512)\n"
            "  --scattering-samples N    samples per epipolar slice (default 256)\n"
            "  --scattering-initial-step N   every N-th sample marched first (default 16)\n"
-           "  --scattering-threshold X  relative change that refines an interval (default 0.2)\n";
+           "  --scattering-threshold X  relative change that refines an interval (default 0.2)\n"
+           "  --scattering-density X    the air's density for the shafts, times Earth's at the\n"
+           "                            camera's altitude (default 50: haze)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -345,6 +347,15 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
             } else {
                 options.scatteringSettings.initialStep = n;
             }
+        } else if (arg == "--scattering-density") {
+            float scale = 0.0f;
+            if (!value() || !parseFloat(v, scale) || !(scale >= 0.0f) || scale > 1e6f) {
+                return fail(
+                    "--scattering-density needs a scale from 0 to 1e6 of the air's "
+                    "density, got '" +
+                    v + "'");
+            }
+            options.scatteringSettings.densityScale = scale;
         } else if (arg == "--scattering-threshold") {
             float threshold = 0.0f;
             if (!value() || !parseFloat(v, threshold) || !(threshold > 0.0f)) {

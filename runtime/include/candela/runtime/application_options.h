@@ -82,7 +82,8 @@ struct ApplicationOptions {
     bool atmosphere = false;
     // --scattering; unset: epipolar (it draws only in frames with an atmosphere).
     // --scattering-slices, --scattering-samples, --scattering-initial-step,
-    // --scattering-threshold: epipolar sampling's parameters (render/README.md "Light shafts").
+    // --scattering-threshold: epipolar sampling's parameters; --scattering-density: the air's
+    // density scale (render/README.md "Light shafts").
     std::optional<render::ScatteringMode> scattering;
     render::ScatteringSettings scatteringSettings;
     std::optional<float> sunElevationDegrees;
