@@ -35,6 +35,7 @@
 #include "passes/fxaa/fxaa_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/lighting/lighting_pass.h"
+#include "passes/scattering/scattering_pass.h"
 #include "passes/shadows/shadow_pass.h"
 #include "passes/skinning/skinning_pass.h"
 #include "passes/ssr/ssr_pass.h"
@@ -82,6 +83,18 @@ const char* volumetricsModeName(VolumetricsMode mode) {
             return "froxels";
         case VolumetricsMode::Reference:
             return "reference";
+    }
+    return "?";
+}
+
+const char* scatteringModeName(ScatteringMode mode) {
+    switch (mode) {
+        case ScatteringMode::Off:
+            return "off";
+        case ScatteringMode::Epipolar:
+            return "epipolar";
+        case ScatteringMode::BruteForce:
+            return "brute-force";
     }
     return "?";
 }
@@ -440,6 +453,12 @@ struct Renderer::SceneHandles {
     ClusterLightLists::Lists clusters;
     bool extended = false;  // the anisotropy and clear-coat targets (gbuffer_targets.h)
     ResourceHandle anisotropy, clearCoat;
+};
+
+struct Renderer::ShadowReads {
+    bool shadows = false;  // the frame has shadow maps
+    ResourceHandle atlas, views, lights;
+    ShadowDescriptors descriptors;
 };
 
 // The ambient occlusion the lighting pass applied to the sky's specular, which the SSR trace
@@ -894,6 +913,11 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             }
         }
     }
+    // Light shafts (issue 16, seed 004 §2): the sun's light scattered by the air, over the lit
+    // frame and its medium, under the blended surfaces (frames whose scene has an atmosphere).
+    declareScattering(
+        inputs, h,
+        ShadowReads{features.shadows, shadowAtlas, shadowViews, shadowLights, shadowDescriptors});
     // Wires (seed 004 §6) over the lit frame and its medium, under the blended surfaces.
     if (!inputs.scene.wires.empty()) {
         if (!wirePass_) wirePass_ = std::make_unique<WirePass>(context_);
@@ -1313,6 +1337,135 @@ uint32_t Renderer::declareBloom(uint32_t hdrId, uint32_t hdrVersion) {
     return hdr.version;
 }
 
+void Renderer::declareScattering(const FrameInputs& inputs, SceneHandles& h,
+                                 const ShadowReads& shadowReads) {
+    const bool shadows = shadowReads.shadows;
+    scatteringMarched_ = false;
+    if (!inputs.scene.atmosphere || options_.scattering == ScatteringMode::Off) return;
+    ScatteringPass::Inputs in;
+    in.frame = ScatteringPass::frameOf(inputs.scene, options_.scatteringSettings, width_, height_);
+    if (in.frame.sunIndex < 0) return;
+    FrameGraph& g = *graph_;
+    if (!scatteringPass_) scatteringPass_ = std::make_unique<ScatteringPass>(context_);
+    scatteringPass_->prepare(options_.scattering, shadows);
+    scatteringMarched_ = true;
+    in.camera = &cameraBuffer_;
+    in.lights = &lights_->buffer();
+    in.lightCapacity = lights_->capacity();
+    in.shadowMaps = shadows;
+    in.settings = options_.scatteringSettings;
+    in.cascadeSize = options_.shadowCascadeSize;
+    in.nearPlane = inputs.scene.camera.nearPlane;
+    const bool epipolar = options_.scattering == ScatteringMode::Epipolar;
+    features_.push_back(epipolar ? "scattering_epipolar" : "scattering_brute_force");
+    const SceneHandles ids = h;
+    ResourceHandle counters =
+        g.importBuffer("scattering.counters", &scatteringPass_->counters(), true);
+    {
+        auto p = g.addPass("scattering_clear", PassKind::Device, [this](PassContext& ctx) {
+            scatteringPass_->recordClearCounters(ctx.cmd());
+        });
+        counters = p.write(counters, Use::TransferDst);
+    }
+    auto readCommon = [&](FrameGraph::PassBuilder& p) {
+        p.read(h.camera, Use::Uniform);
+        p.read(h.lights, Use::StorageRead);
+        if (shadows) {
+            p.read(shadowReads.atlas, Use::Sampled);
+            p.read(shadowReads.views, Use::StorageRead);
+            p.read(shadowReads.lights, Use::StorageRead);
+        }
+    };
+    const ShadowDescriptors shadowDescriptors = shadowReads.descriptors;  // the passes run later
+    if (!epipolar) {
+        auto p = g.addPass("scattering_brute_force", PassKind::Device,
+                           [this, ids, in, shadowDescriptors](PassContext& ctx) {
+                               ScatteringPass::Inputs frame = in;
+                               frame.depth = ctx.image(ids.depth);
+                               frame.hdr = ctx.image(ids.hdr);
+                               frame.shadows = &shadowDescriptors;
+                               scatteringPass_->recordBruteForce(ctx.cmd(), frame);
+                           });
+        readCommon(p);
+        p.read(h.depth, Use::Sampled);
+        counters = p.write(counters, Use::StorageReadWrite);
+        h.hdr = p.write(h.hdr, Use::StorageReadWrite);
+        return;
+    }
+    ResourceHandle coordinates =
+        g.createImage("scattering.coordinates", ScatteringPass::samplesDesc(in.settings));
+    ResourceHandle inscatter =
+        g.createImage("scattering.inscatter", ScatteringPass::samplesDesc(in.settings));
+    ResourceHandle tree =
+        g.createImage("scattering.tree", ScatteringPass::treeDesc(in.settings, in.cascadeSize));
+    ResourceHandle slices =
+        g.createBuffer("scattering.slices", ScatteringPass::slicesBytes(in.settings),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    {
+        auto p =
+            g.addPass("scattering_coordinates", PassKind::Device,
+                      [this, ids, in, shadowDescriptors, coordinates, slices](PassContext& ctx) {
+                          ScatteringPass::Inputs frame = in;
+                          frame.depth = ctx.image(ids.depth);
+                          frame.shadows = &shadowDescriptors;
+                          scatteringPass_->recordCoordinates(
+                              ctx.cmd(), frame, ctx.image(coordinates), ctx.buffer(slices));
+                      });
+        readCommon(p);
+        p.read(h.depth, Use::Sampled);
+        coordinates = p.write(coordinates, Use::StorageWrite);
+        slices = p.write(slices, Use::StorageWrite);
+    }
+    {
+        auto p = g.addPass("scattering_tree", PassKind::Device,
+                           [this, in, shadowDescriptors, slices, tree](PassContext& ctx) {
+                               ScatteringPass::Inputs frame = in;
+                               frame.shadows = &shadowDescriptors;
+                               scatteringPass_->recordTree(ctx.cmd(), frame, ctx.buffer(slices),
+                                                           ctx.image(tree));
+                           });
+        readCommon(p);
+        p.read(slices, Use::StorageRead);
+        tree = p.write(tree, Use::StorageWrite);
+    }
+    constexpr const char* kPhases[] = {"scattering_march", "scattering_refine",
+                                       "scattering_interpolate"};
+    for (uint32_t phase = 0; phase < 3; ++phase) {
+        auto p = g.addPass(kPhases[phase], PassKind::Device,
+                           [this, in, shadowDescriptors, phase, coordinates, slices, tree,
+                            inscatter](PassContext& ctx) {
+                               ScatteringPass::Inputs frame = in;
+                               frame.shadows = &shadowDescriptors;
+                               scatteringPass_->recordSamples(
+                                   ctx.cmd(), frame, phase, ctx.image(coordinates),
+                                   ctx.buffer(slices), ctx.image(tree), ctx.image(inscatter));
+                           });
+        readCommon(p);
+        p.read(coordinates, Use::StorageRead);
+        p.read(slices, Use::StorageRead);
+        p.read(tree, Use::Sampled);
+        counters = p.write(counters, Use::StorageReadWrite);
+        inscatter = p.write(inscatter, phase == 0 ? Use::StorageWrite : Use::StorageReadWrite);
+    }
+    auto p =
+        g.addPass("scattering_unwarp", PassKind::Device,
+                  [this, ids, in, shadowDescriptors, slices, tree, inscatter](PassContext& ctx) {
+                      ScatteringPass::Inputs frame = in;
+                      frame.depth = ctx.image(ids.depth);
+                      frame.hdr = ctx.image(ids.hdr);
+                      frame.shadows = &shadowDescriptors;
+                      scatteringPass_->recordUnwarp(ctx.cmd(), frame, ctx.buffer(slices),
+                                                    ctx.image(tree), ctx.image(inscatter));
+                  });
+    readCommon(p);
+    p.read(h.depth, Use::Sampled);
+    p.read(slices, Use::StorageRead);
+    p.read(tree, Use::Sampled);
+    p.read(inscatter, Use::StorageRead);
+    counters = p.write(counters, Use::StorageReadWrite);
+    h.hdr = p.write(h.hdr, Use::StorageReadWrite);
+}
+
 uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptors& environment,
                               bool sky, bool mobileIbl, float skyIntensity,
                               const SsrOcclusion& ao) {
@@ -1469,6 +1622,9 @@ const RendererStats& Renderer::collectStats() {
     stats_.aoMs = 0.0;
     stats_.volumetricsMs = 0.0;
     stats_.skyMs = 0.0;
+    stats_.scatteringMs = 0.0;
+    stats_.scatteringSamples = 0;
+    stats_.scatteringSteps = 0;
     stats_.shadowMs = 0.0;
     stats_.ssrMs = 0.0;
     stats_.ssrStepsMean = 0.0;
@@ -1489,6 +1645,7 @@ const RendererStats& Renderer::collectStats() {
         if (name.starts_with("ambient_occlusion_")) stats_.aoMs += ms;
         if (name.starts_with("volumetrics_")) stats_.volumetricsMs += ms;
         if (name.starts_with("atmosphere_")) stats_.skyMs += ms;
+        if (name.starts_with("scattering_")) stats_.scatteringMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
         if (name.starts_with("ssr_")) stats_.ssrMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
@@ -1501,6 +1658,11 @@ const RendererStats& Renderer::collectStats() {
             stats_.ssrStepsMean = double(c.steps) / c.rays;
             stats_.ssrHitRate = double(c.hits) / c.rays;
         }
+    }
+    if (scatteringMarched_) {
+        const ScatteringPass::Counts c = scatteringPass_->readCounters();
+        stats_.scatteringSamples = c.rays;
+        stats_.scatteringSteps = c.steps;
     }
     stats_.lightEvaluations = 0;
     stats_.litPairs = 0;

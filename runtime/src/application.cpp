@@ -514,6 +514,10 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         // render/README.md "Volumetric lighting"; it draws only in frames with a medium.
         rendererOptions.volumetrics =
             options.volumetrics.value_or(render::VolumetricsMode::Volumes);
+        // Light shafts by epipolar sampling by default (issue 16); they draw only in frames
+        // whose scene has an atmosphere.
+        rendererOptions.scattering = options.scattering.value_or(render::ScatteringMode::Epipolar);
+        rendererOptions.scatteringSettings = options.scatteringSettings;
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);

@@ -98,6 +98,10 @@ constexpr std::pair<const char*, render::SsrMode> kSsrModes[] = {
     {"off", render::SsrMode::Off},
     {"hiz", render::SsrMode::Hiz},
     {"reference", render::SsrMode::Reference}};
+constexpr std::pair<const char*, render::ScatteringMode> kScatteringModes[] = {
+    {"off", render::ScatteringMode::Off},
+    {"epipolar", render::ScatteringMode::Epipolar},
+    {"brute-force", render::ScatteringMode::BruteForce}};
 constexpr std::pair<const char*, render::VolumetricsMode> kVolumetricsModes[] = {
     {"off", render::VolumetricsMode::Off},
     {"volumes", render::VolumetricsMode::Volumes},
@@ -167,7 +171,15 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "                            replacing the scene's fog\n"
            "  --atmosphere              a physically based sky (Earth's) instead of the EXR sky\n"
            "  --sun-elevation DEG       the atmosphere's sun this high, keeping its azimuth\n"
-           "  --time-of-day HH:MM       the atmosphere's sun where it stands then (solar time)\n";
+           "  --time-of-day HH:MM       the atmosphere's sun where it stands then (solar time)\n"
+           "  --scattering off|epipolar|brute-force   light shafts in the atmosphere's air\n"
+           "                            (default: epipolar when the scene has an atmosphere)\n"
+           "  --scattering-slices N     epipolar slices (default 512)\n"
+           "  --scattering-samples N    samples per epipolar slice (default 256)\n"
+           "  --scattering-initial-step N   every N-th sample marched first (default 16)\n"
+           "  --scattering-threshold X  relative change that refines an interval (default 0.2)\n"
+           "  --scattering-density X    the air's density for the shafts, times Earth's at the\n"
+           "                            camera's altitude (default 50: haze)\n";
 }
 
 CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArguments others,
@@ -314,6 +326,42 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
             options.fog = fog;
         } else if (arg == "--atmosphere") {
             options.atmosphere = true;
+        } else if (arg == "--scattering") {
+            render::ScatteringMode mode{};
+            if (!value() || !parseChoice(v, kScatteringModes, mode)) {
+                return fail("--scattering needs off, epipolar or brute-force, got '" + v + "'");
+            }
+            options.scattering = mode;
+        } else if (arg == "--scattering-slices" || arg == "--scattering-samples" ||
+                   arg == "--scattering-initial-step") {
+            std::uint32_t n = 0;
+            const std::uint32_t least = arg == "--scattering-samples" ? 2u : 1u;
+            if (!value() || !parseUint(v, n) || n < least || n > 4096) {
+                return fail(arg + " needs a count from " + std::to_string(least) +
+                            " to 4096, got '" + v + "'");
+            }
+            if (arg == "--scattering-slices") {
+                options.scatteringSettings.slices = n;
+            } else if (arg == "--scattering-samples") {
+                options.scatteringSettings.samplesPerSlice = n;
+            } else {
+                options.scatteringSettings.initialStep = n;
+            }
+        } else if (arg == "--scattering-density") {
+            float scale = 0.0f;
+            if (!value() || !parseFloat(v, scale) || !(scale >= 0.0f) || scale > 1e6f) {
+                return fail(
+                    "--scattering-density needs a scale from 0 to 1e6 of the air's "
+                    "density, got '" +
+                    v + "'");
+            }
+            options.scatteringSettings.densityScale = scale;
+        } else if (arg == "--scattering-threshold") {
+            float threshold = 0.0f;
+            if (!value() || !parseFloat(v, threshold) || !(threshold > 0.0f)) {
+                return fail("--scattering-threshold needs a positive fraction, got '" + v + "'");
+            }
+            options.scatteringSettings.refinementThreshold = threshold;
         } else if (arg == "--sun-elevation") {
             float degrees = 0.0f;
             if (!value() || !parseFloat(v, degrees) || !(std::fabs(degrees) <= 90.0f)) {

@@ -74,6 +74,11 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["ssr_hit_rate"] = last.ssrHitRate;
     json["volumetrics_ms"] = median(collect(stats.frames, [](auto& f) { return f.volumetricsMs; }));
     json["sky_ms"] = median(collect(stats.frames, [](auto& f) { return f.skyMs; }));
+    // Light shafts: GPU ms of their passes (median), and the last frame's rays marched
+    // (epipolar samples and unwarp fix-ups, or pixels) and shadow tests taken by them.
+    json["scattering_ms"] = median(collect(stats.frames, [](auto& f) { return f.scatteringMs; }));
+    json["scattering_samples"] = last.scatteringSamples;
+    json["scattering_steps"] = last.scatteringSteps;
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;

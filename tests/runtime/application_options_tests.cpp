@@ -168,6 +168,31 @@ TEST(ApplicationOptions, AtmosphereFlags) {
         EXPECT_NE(ApplicationOptions::standardFlagsUsage().find(flag), std::string::npos) << flag;
 }
 
+// Issue 16: --scattering picks the light shafts' method (unset: the application's epipolar);
+// the epipolar parameters are checked counts and a positive threshold.
+TEST(ApplicationOptions, ScatteringFlags) {
+    CommandLine result =
+        parseCommandLine({"--scattering", "brute-force", "--scattering-slices", "64",
+                          "--scattering-samples", "32", "--scattering-initial-step", "4",
+                          "--scattering-threshold", "0.1", "--scattering-density", "200"});
+    ASSERT_TRUE(result) << result.error;
+    EXPECT_EQ(result.options->scattering, candela::render::ScatteringMode::BruteForce);
+    EXPECT_EQ(result.options->scatteringSettings.slices, 64u);
+    EXPECT_EQ(result.options->scatteringSettings.samplesPerSlice, 32u);
+    EXPECT_EQ(result.options->scatteringSettings.initialStep, 4u);
+    EXPECT_EQ(result.options->scatteringSettings.refinementThreshold, 0.1f);
+    EXPECT_EQ(result.options->scatteringSettings.densityScale, 200.0f);
+    EXPECT_FALSE(parseCommandLine({}).options->scattering);
+    EXPECT_NE(parseError({"--scattering", "fast"}).find("got 'fast'"), std::string::npos);
+    EXPECT_NE(parseError({"--scattering-samples", "1"}).find("from 2 to 4096"), std::string::npos);
+    EXPECT_NE(parseError({"--scattering-slices", "x"}).find("got 'x'"), std::string::npos);
+    EXPECT_NE(parseError({"--scattering-threshold", "0"}).find("positive"), std::string::npos);
+    EXPECT_NE(parseError({"--scattering-density", "-1"}).find("--scattering-density needs"),
+              std::string::npos);
+    EXPECT_NE(ApplicationOptions::standardFlagsUsage().find("--scattering off|epipolar"),
+              std::string::npos);
+}
+
 // Issue 17: --volumetrics picks the method, --fog SIGMA_S[,SIGMA_A[,G]] a uniform medium by
 // the Fog component's rules.
 TEST(ApplicationOptions, VolumetricsAndFogFlags) {

@@ -39,4 +39,15 @@ mat3 tangentFrame(vec3 N) {
     return mat3(t, bt, N);
 }
 
+// Where the ray origin + t * direction (direction unit) is inside the sphere: (enter, exit),
+// enter >= exit when it misses.
+vec2 raySphereSegment(vec3 origin, vec3 direction, vec3 centre, float radius) {
+    vec3 oc = origin - centre;
+    float b = dot(oc, direction);
+    float h = b * b - (dot(oc, oc) - radius * radius);
+    if (h <= 0.0) return vec2(1.0, 0.0);
+    h = sqrt(h);
+    return vec2(-b - h, -b + h);
+}
+
 #endif

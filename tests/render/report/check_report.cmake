@@ -45,6 +45,8 @@ foreach(row
     "| Sphere light, --area-lights ltc"
     "| Tube light, --area-lights representative"
     "| Tube light, --area-lights ltc"
+    "| Light shafts: epipolar, 160x96"
+    "| Light shafts: min/max tree, 160x96"
     "## Sphere lights: representative point / LTC"
     "## Tube lights: representative point / LTC"
     "## Figures"

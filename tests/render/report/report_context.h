@@ -50,6 +50,7 @@ void addAnimationRows(ReportContext& context);
 void addSsrRows(ReportContext& context);
 void addVolumetricsRows(ReportContext& context);
 void addAtmosphereRows(ReportContext& context);
+void addScatteringRows(ReportContext& context);
 void addWireRows(ReportContext& context);
 
 }  // namespace candela::report

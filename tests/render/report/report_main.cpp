@@ -141,6 +141,7 @@ int main(int argc, char** argv) {
         section("screen-space reflections", [&] { addSsrRows(context); });
         section("volumetrics", [&] { addVolumetricsRows(context); });
         section("atmosphere", [&] { addAtmosphereRows(context); });
+        section("light shafts", [&] { addScatteringRows(context); });
         section("wires", [&] { addWireRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",

@@ -43,6 +43,7 @@ class AtmospherePass;
 class SsrPass;
 struct EnvironmentDescriptors;
 class VolumetricsPass;
+class ScatteringPass;
 class SceneResources;
 class TonemapPass;
 class TaaPass;
@@ -137,6 +138,10 @@ private:
     struct SsrOcclusion;
     uint32_t declareSsr(const SceneHandles& h, const EnvironmentDescriptors& environment, bool sky,
                         bool mobileIbl, float skyIntensity, const SsrOcclusion& ao);
+    // Light shafts (frames whose scene has an atmosphere, options_.scattering not off): the
+    // epipolar passes or the brute-force march over h.hdr, which it advances.
+    struct ShadowReads;  // the frame's shadow atlas, views and per-light table (renderer.cpp)
+    void declareScattering(const FrameInputs& inputs, SceneHandles& h, const ShadowReads& shadows);
     // captureMotionVectors: copies the frame's final motion vectors into motionReadback_.
     void declareMotionCapture();
 
@@ -194,6 +199,8 @@ private:
     bool ssrHistoryValid_ = false;
     std::unique_ptr<VolumetricsPass> volumetricsPass_;  // made on the first frame with a medium
     std::unique_ptr<AtmospherePass> atmospherePass_;    // made on the first frame with a sky
+    std::unique_ptr<ScatteringPass> scatteringPass_;    // made on the first frame with shafts
+    bool scatteringMarched_ = false;  // this frame declared light shafts (their counters)
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<WirePass> wirePass_;  // made for the first frame with wires
     std::unique_ptr<TonemapPass> tonemapPass_;

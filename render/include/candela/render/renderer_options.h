@@ -96,6 +96,35 @@ enum class VolumetricsMode {
 };
 const char* volumetricsModeName(VolumetricsMode mode);  // "off", "volumes", "froxels", ...
 
+// Light shafts: the sun's light scattered by the atmosphere's air between the camera and the
+// surfaces, shadowed by the sun's cascades (render/README.md "Light shafts"; issue 16, seed 004
+// §2; only in frames whose scene has an atmosphere).
+enum class ScatteringMode {
+    Off,
+    Epipolar,    // Yusov 2013: epipolar samples, 1D min/max trees per slice, unwarped to pixels
+    BruteForce,  // every pixel marched in equal steps through every cascade: the reference
+};
+const char* scatteringModeName(ScatteringMode mode);  // "off", "epipolar", "brute-force"
+
+// Epipolar sampling's parameters (render/README.md "Light shafts" gives why each default).
+struct ScatteringSettings {
+    uint32_t slices = 512;           // epipolar lines from the sun to the screen border
+    uint32_t samplesPerSlice = 256;  // samples along each line
+    uint32_t initialStep = 16;       // every N-th sample is ray-marched first
+    // A sample between two initial ones is marched itself when their in-scattering differs by
+    // more than this fraction of the larger, or two neighbours' view distances do.
+    float refinementThreshold = 0.2f;
+    bool minMaxTree = true;          // false: the march steps texel by texel (for measurement)
+    uint32_t bruteForceSteps = 512;  // the reference's equal steps per pixel
+    // The air's scattering and extinction are the atmosphere's at the camera's altitude times
+    // this: at 1 (clear air) shafts tens of metres long scatter ~1e-3 of the sunlit surfaces'
+    // radiance and do not show; 50 is a hazy day's aerosol load.
+    float densityScale = 50.0f;
+    float maxDistance = 200.0f;  // metres marched for the sky (no surface)
+    // Measurement: the frame is replaced by the in-scattered radiance alone (no surfaces).
+    bool inscatteringOnly = false;
+};
+
 // Wires (seed 004 §6, render/README.md "Wires"): Persson's clamp to a pixel's radius with the
 // alpha scaled by real / clamped radius and coverage from the distance to the centre line, or
 // the naive line a pixel wide at full alpha it replaces (for measurement).
@@ -231,6 +260,10 @@ struct RendererOptions {
     SsrMode ssr = SsrMode::Off;
     SsrSettings ssrSettings;
     AtmosphereSettings atmosphere;
+    // Off here so tests render without shafts unless they ask; the application's default
+    // (epipolar when the scene has an atmosphere) is ApplicationOptions'.
+    ScatteringMode scattering = ScatteringMode::Off;
+    ScatteringSettings scatteringSettings;
 };
 
 // The frame graph of the last frame (--stats `frame_graph`).
@@ -261,6 +294,12 @@ struct RendererStats {
     // GPU timestamps around the atmosphere's passes (--stats sky_ms): its tables, this frame's
     // share of the sky cube's amortised update and the sky background.
     double skyMs = 0.0;
+    // Light shafts (--stats scattering_ms, scattering_samples): GPU time of their passes, the
+    // rays marched (epipolar: marched samples and unwarp fix-ups; brute force: pixels) and the
+    // shadow tests those marches took (min/max tree nodes or steps).
+    double scatteringMs = 0.0;
+    uint64_t scatteringSamples = 0;
+    uint64_t scatteringSteps = 0;
     uint64_t lightEvaluations = 0;  // light-pixel pairs the shader evaluated (countLightPairs)
     uint64_t litPairs = 0;          // ... of which the light reaches the pixel
     // Frames whose list buffer had to grow (the CPU path's first frame always does: it sizes

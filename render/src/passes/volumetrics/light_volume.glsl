@@ -6,17 +6,6 @@
 
 #include "common/lights.glsl"
 
-// Where the ray origin + t * direction (direction unit) is inside the sphere: (enter, exit),
-// enter >= exit when it misses.
-vec2 raySphereSegment(vec3 origin, vec3 direction, vec3 centre, float radius) {
-    vec3 oc = origin - centre;
-    float b = dot(oc, direction);
-    float h = b * b - (dot(oc, oc) - radius * radius);
-    if (h <= 0.0) return vec2(1.0, 0.0);
-    h = sqrt(h);
-    return vec2(-b - h, -b + h);
-}
-
 // Whether P is inside the spot's cone (apex at the light, half-angle acos(cosOuter)).
 bool insideCone(Light light, float cosOuter, vec3 P) {
     vec3 d = P - light.position;

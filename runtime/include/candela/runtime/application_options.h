@@ -80,6 +80,12 @@ struct ApplicationOptions {
     // elevation keeping its azimuth; --time-of-day HH:MM places it by the atmosphere's latitude
     // and day of the year (render/README.md "Atmosphere"). Either gives the scene an atmosphere.
     bool atmosphere = false;
+    // --scattering; unset: epipolar (it draws only in frames with an atmosphere).
+    // --scattering-slices, --scattering-samples, --scattering-initial-step,
+    // --scattering-threshold: epipolar sampling's parameters; --scattering-density: the air's
+    // density scale (render/README.md "Light shafts").
+    std::optional<render::ScatteringMode> scattering;
+    render::ScatteringSettings scatteringSettings;
     std::optional<float> sunElevationDegrees;
     std::optional<float> timeOfDayHours;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
@@ -91,7 +97,7 @@ struct ApplicationOptions {
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
     // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
     // --brdf, --ao, --area-lights, --ssr, --volumetrics, --fog, --atmosphere,
-    // --sun-elevation, --time-of-day.
+    // --sun-elevation, --time-of-day, --scattering and its parameters.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //
