@@ -14,17 +14,20 @@
 #ifndef CANDELA_AREA_LIGHTS_GLSL
 #define CANDELA_AREA_LIGHTS_GLSL
 
+#include "common/area_light_constant_intensity.glsl"
 #include "common/area_light_representative.glsl"
 #include "common/area_light_texture.glsl"
 #include "common/ltc.glsl"
 #include "common/ltc_area_lights.glsl"
 #include "common/ltc_disk.glsl"
 
-// Per-light `quality` (Light.spotOffset of area lights, gpu_light.cpp): 0 the renderer's
-// default, 1 representative, 2 ltc.
+// Per-light `quality` (Light.spotOffset of area lights, gpu_light.cpp, its low two bits): 0 the
+// renderer's default, 1 representative, 2 ltc; plus kAreaEmissionConstantIntensity for a
+// constant-intensity emitter.
 const uint kAreaQualityDefault = 0u;
 const uint kAreaQualityRepresentative = 1u;
 const uint kAreaQualityLtc = 2u;
+const uint kAreaEmissionConstantIntensity = 4u;
 
 AreaShape areaShapeOf(Light light) {
     AreaShape s;
@@ -179,8 +182,10 @@ vec3 areaRepresentativeSpecularTexture(AreaShape s, uint slot, vec3 P, vec3 L, f
     return areaPlaneTexture(s, slot, q, 2.0 * t * tan(min(alpha, 1.5)));
 }
 
+// `constantIntensity`: Light.intensity is I_A, and each lobe's constant-luminance result is
+// scaled by the seed's pre-integrated factor (area_light_constant_intensity.glsl), in either mode.
 LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alpha,
-                                 bool representative) {
+                                 bool representative, bool constantIntensity) {
     AreaShape s = areaShapeOf(light);
     vec3 toCenter = s.center - P;
     float window = attenuationWindow(dot(toCenter, toCenter), light.invAttenuationRadius);
@@ -228,12 +233,19 @@ LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alph
         specular = areaRepresentativeSpecular(s, P, N, R, alpha, o.specularL);
         specularTexel = areaRepresentativeSpecularTexture(s, slot, P, o.specularL, alpha);
     }
-    o.diffuseIlluminance = luminance * diffuse * diffuseTexel;
-    o.specularIlluminance = luminance * specular * specularTexel;
+    float diffuseFactor = 1.0;
+    float specularFactor = 1.0;
+    if (constantIntensity) {
+        diffuseFactor = constantIntensityDiffuseFactor(s, P);
+        specularFactor = constantIntensitySpecularFactor(s, P, R, alpha);
+    }
+    o.diffuseIlluminance = luminance * (diffuse * diffuseFactor) * diffuseTexel;
+    o.specularIlluminance = luminance * (specular * specularFactor) * specularTexel;
     // Normal incidence, no surface cosine (wrap and transmission).
     vec3 unused;
-    o.incidentIlluminance = luminance * areaPointIrradiance(s, P, safeNormalize(toCenter), s.center,
-                                                            areaShapeArea(s), unused);
+    o.incidentIlluminance = luminance * diffuseFactor *
+                            areaPointIrradiance(s, P, safeNormalize(toCenter), s.center,
+                                                areaShapeArea(s), unused);
     return o;
 }
 
