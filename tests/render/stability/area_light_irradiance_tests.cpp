@@ -1,8 +1,19 @@
 // Rect and disk lights (issue 15, render/shaders/common/area_lights.glsl) on the device:
 // irradiance on a floor under a ceiling light against the closed-form form factors. The "ltc"
 // mode's diffuse (Lambert's edge sum; Heitz and Hill's disk integral) within 1 %; seed 004's
-// representative point within 5 % under the centre and 8 % elsewhere where it is meant to hold
-// (lights small against their height), with its worst error on the whole grid printed.
+// representative point within 5 % under the centre and 8 % elsewhere where it can hold, with its
+// worst error on the whole grid printed.
+//
+// Where it cannot: off the centre, once the point's projection leaves the light (or its normal
+// ray misses it), p_c and p_r are both the light's nearest edge point, so the sample is the
+// integrand's maximum, carrying the whole area. For a light of side s at height h and a point
+// at horizontal offset o, moving the sample from the centre to that edge shortens d^2 by about
+// s o, and the irradiance (cos^2 / d^2, ~ h^2 / d^4) grows by about 2 s o / (h^2 + o^2): the
+// overestimate peaks near o = h at about s / h (measured on the host in double: s / h = 0.05 ->
+// 5.6 %, 0.1 -> 11 %, 0.25 -> 29 %, 0.5 -> 60 %, 1 -> 123 % at o = 1.5 h). So the 8 % holds at
+// every offset only for lights under h / 14 across, and for lights up to h / 8 within h / 4 of
+// the centre (the error grows with o there); past that the seed's point is not a bound, and
+// the ltc mode (1 %) is the one to use.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -65,7 +76,7 @@ TEST(AreaLightIrradiance, FloorUnderRectAndDiskMatchesTheFormFactor) {
     for (const Case& c : cases)
         samples.push_back(sampleOf(c));
     const auto values = evaluateOnDevice(harness, LightFunction::AreaLightDiffuse, samples);
-    WorstError ltc, centre, elsewhere, anywhere, unclamped;
+    WorstError ltc, centre, near, smallAnywhere, anywhere, unclamped;
     for (size_t i = 0; i < cases.size(); ++i) {
         const Case& c = cases[i];
         if (c.reference < 1e-3) continue;  // far off and tiny: fp32 edge sums cancel (ltc.glsl)
@@ -79,22 +90,29 @@ TEST(AreaLightIrradiance, FloorUnderRectAndDiskMatchesTheFormFactor) {
         const double representative = std::fabs(values[i][1] / c.reference - 1.0);
         anywhere.add(representative, describe);
         unclamped.add(std::fabs(values[i][2] / c.reference - 1.0), describe);
-        // The seed's point stands for the whole light: it holds while the light is small
-        // against its height (an eighth of it here) and the point not far off (a quarter).
+        // The seed's point stands for the whole light off the centre while the light is small
+        // against its height: under h / 14 at any offset, under h / 8 within h / 4 (see the top).
         if (c.offset == 0.0) {
             centre.add(representative, describe);
-        } else if (c.size <= c.h / 8.0 && c.offset <= c.h / 4.0) {
-            elsewhere.add(representative, describe);
+        } else {
+            if (c.size <= c.h / 14.0) smallAnywhere.add(representative, describe);
+            if (c.size <= c.h / 8.0 && c.offset <= c.h / 4.0) near.add(representative, describe);
         }
     }
     ltc.print("area light diffuse, ltc", "relative");
     centre.print("area light diffuse, representative, under the centre", "relative");
-    elsewhere.print("area light diffuse, representative, small lights off centre", "relative");
+    smallAnywhere.print("area light diffuse, representative, lights under h / 14, any offset",
+                        "relative");
+    near.print("area light diffuse, representative, lights under h / 8 within h / 4", "relative");
     anywhere.print("area light diffuse, representative, whole grid", "relative");
     unclamped.print("area light diffuse, representative unclamped, whole grid", "relative");
     EXPECT_LE(ltc.error, 0.01);
     EXPECT_LE(centre.error, 0.05);
-    EXPECT_LE(elsewhere.error, 0.08);
+    EXPECT_LE(smallAnywhere.error, 0.08);
+    EXPECT_LE(near.error, 0.08);
+    // Each region has cases (a grid change cannot empty it and pass vacuously).
+    EXPECT_GT(smallAnywhere.count, 0);
+    EXPECT_GT(near.count, 0);
     EXPECT_EQ(harness.validationMessages(), 0u);
 }
 
