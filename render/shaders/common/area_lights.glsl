@@ -79,7 +79,8 @@ uint areaTextureSlot(Light light) {
 // cosine's footprint there, twice the plane's distance (half the cosine's power falls within 45
 // degrees), against the moved rect's size. M^-1 is linear, so the moved rect's affine
 // coordinates are the image's uv.
-vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction) {
+vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction,
+                    float texelsPerFootprint) {
 #ifdef AREA_LIGHT_TEXTURED
     vec3 p0 = minv * polygon[0];
     vec3 e1 = minv * polygon[1] - p0;  // along the rect's +X
@@ -95,7 +96,8 @@ vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction) {
     float e11 = dot(e1, e1), e12 = dot(e1, e2), e22 = dot(e2, e2);
     float det = max(e11 * e22 - e12 * e12, 1e-30);
     vec2 uv = vec2(e22 * dot(d, e1) - e12 * dot(d, e2), e11 * dot(d, e2) - e12 * dot(d, e1)) / det;
-    float lod = areaLightTextureLod(2.0 * abs(offset) / max(area, 1e-30), sqrt(area));
+    float lod =
+        areaLightTextureLod(2.0 * abs(offset) / max(area, 1e-30), sqrt(area), texelsPerFootprint);
     return areaLightTexture(slot, clamp(uv, vec2(0.0), vec2(1.0)), lod);
 #else
     return vec3(1.0);
@@ -103,14 +105,18 @@ vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction) {
 }
 
 // areaShapeIntegral, and in `texel` what a textured rect (slot > 0) shows the lobe (1 for an
-// untextured shape): one edge sum gives both.
-float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv, uint slot, out vec3 texel) {
+// untextured shape): one edge sum gives both. `specular`: the read over
+// kAreaLightTextureTexelsPerSpecularFootprint (area_light_texture.glsl).
+float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv, uint slot, bool specular,
+                        out vec3 texel) {
     texel = vec3(1.0);
     if (s.isDisk || slot == 0u) return areaShapeIntegral(s, P, toLocal, minv);
     vec3 polygon[4];
     rectPolygon(s, P, toLocal, polygon);
     vec3 sum = ltcPolygonVectorSum(minv, polygon, 4);
-    texel = areaLtcTexture(slot, polygon, minv, sum);
+    texel = areaLtcTexture(slot, polygon, minv, sum,
+                           specular ? kAreaLightTextureTexelsPerSpecularFootprint
+                                    : kAreaLightTextureTexelsPerFootprint);
     return max(sum.z * (0.5 / PI), 0.0);
 }
 
@@ -209,7 +215,7 @@ LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alph
     } else {
         diffuse = height <= 0.0 ? 0.0
                                 : PI * areaShapeIntegral(s, P, transpose(tangentFrame(N)),
-                                                         mat3(1.0), slot, diffuseTexel);
+                                                         mat3(1.0), slot, false, diffuseTexel);
     }
     o.specularLtc = vec2(0.0);
     float specular;
@@ -224,7 +230,7 @@ LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alph
             specular = height <= 0.0 ? 0.0
                                      : areaShapeIntegral(s, P, ltcShadingFrame(N, V),
                                                          ltcInverseMatrix(texture(ltcMatrixTable, uv)),
-                                                         slot, specularTexel);
+                                                         slot, true, specularTexel);
         }
         o.specularL = R;
     } else

@@ -83,11 +83,11 @@ void main() {
     if (mode == 2u) {
         vec3 diffuseTexel, specularTexel;
         float diffuse = PI * areaShapeIntegral(shape, P, transpose(tangentFrame(N)), mat3(1.0),
-                                               slot, diffuseTexel);
+                                               slot, false, diffuseTexel);
         vec4 nf = tableBilinear(roughness, V.z, 1u);
         mat3 minv = ltcInverseMatrix(tableBilinear(roughness, V.z, 0u));
         float specular = nf.x * areaShapeIntegral(shape, P, ltcShadingFrame(N, V), minv, slot,
-                                                  specularTexel);
+                                                  true, specularTexel);
         values[i] = vec2(diffuse * diffuseTexel.x, specular * specularTexel.x) *
                     constantIntensityFactors(s, shape, P, R, alpha);
         return;

@@ -121,9 +121,9 @@ float areaShading(bool disk, bool ltc, vec3 V, float roughness, float size, uint
         }
         vec3 diffuseTexel, specularTexel;
         float diffuse = PI * areaShapeIntegral(s, vec3(0.0), transpose(tangentFrame(N)), mat3(1.0),
-                                               slot, diffuseTexel);
+                                               slot, false, diffuseTexel);
         float specular = areaShapeIntegral(s, vec3(0.0), ltcShadingFrame(N, V), minv, slot,
-                                           specularTexel);
+                                           true, specularTexel);
         return diffuse * diffuseTexel.x + specular * specularTexel.x;
     }
     vec3 L;
