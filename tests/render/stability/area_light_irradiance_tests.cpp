@@ -116,6 +116,57 @@ TEST(AreaLightIrradiance, FloorUnderRectAndDiskMatchesTheFormFactor) {
     EXPECT_EQ(harness.validationMessages(), 0u);
 }
 
+// The solid angle of the rectangle [x0, x1] x [y0, y1] at height h over the origin: a
+// constant-intensity light's irradiance per unit I_A on a parallel floor (cos theta_o = cos
+// theta_i, so I_A integral of cos / r^2 dA is I_A times the solid angle).
+double parallelRectangleSolidAngle(double x0, double x1, double y0, double y1, double h) {
+    const auto corner = [h](double x, double y) {
+        return std::atan2(x * y, h * std::sqrt(x * x + y * y + h * h));
+    };
+    return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
+}
+
+// Seed 004 section 1's constant-intensity variant on the floor grid: the exact Lambertian
+// irradiance times the pre-integrated diffuse factor (area_light_constant_intensity.glsl)
+// against the closed form I_A x solid angle, for rects. The factor is the luminance averaged
+// over the light's area, not weighted by what each part delivers, so it holds while the
+// luminance I_A r / h varies little over the light: within 2.5 % for lights up to h / 2
+// across (host double: s / h 0.5 -> 2.0 % worst, at o = h), 7.5 % at s = h, 23 % at 2 h, and
+// a light 24 h across (the grid's 6 m at 0.25 m) is 3.2x over, its far parts' large luminance
+// counted at full area; printed with the whole grid's worst.
+TEST(AreaLightIrradiance, ConstantIntensityRectFactorTracksTheSolidAngle) {
+    ComputeHarness harness;
+    std::vector<Case> cases;
+    for (const Case& c : floorCases()) {
+        if (!c.disk) cases.push_back(c);
+    }
+    std::vector<LightSample> samples;
+    for (const Case& c : cases)
+        samples.push_back(sampleOf(c));
+    const auto values = evaluateOnDevice(harness, LightFunction::AreaLightDiffuse, samples);
+    WorstError upToHalfHeight, anywhere;
+    for (size_t i = 0; i < cases.size(); ++i) {
+        const Case& c = cases[i];
+        const double x = c.offset, y = 0.2 * c.offset;
+        const double reference = parallelRectangleSolidAngle(
+            -0.5 * c.size - x, 0.5 * c.size - x, -0.3 * c.size - y, 0.3 * c.size - y, c.h);
+        if (reference < 1e-3) continue;
+        const auto describe = [&] {
+            return "h " + std::to_string(c.h) + " size " + std::to_string(c.size) + " offset " +
+                   std::to_string(c.offset) + ": " + std::to_string(values[i][3]) + " reference " +
+                   std::to_string(reference);
+        };
+        const double error = std::fabs(values[i][3] / reference - 1.0);
+        anywhere.add(error, describe);
+        if (c.size <= 0.5 * c.h) upToHalfHeight.add(error, describe);
+    }
+    upToHalfHeight.print("constant intensity, ltc x factor, lights up to h / 2", "relative");
+    anywhere.print("constant intensity, ltc x factor, whole grid", "relative");
+    EXPECT_LE(upToHalfHeight.error, 0.025);
+    EXPECT_GT(upToHalfHeight.count, 0);
+    EXPECT_EQ(harness.validationMessages(), 0u);
+}
+
 // One-sided: a shading point behind the light's plane, or a light facing away, gets nothing.
 TEST(AreaLightIrradiance, BackSideAndFacingAwayGetNothing) {
     ComputeHarness harness;
