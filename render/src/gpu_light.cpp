@@ -42,8 +42,12 @@ GpuLight packLight(const LightInstance& instance, uint32_t textureSlot) {
         // Lambertian one-sided emitter: luminance (cd/m^2) = lumens / (pi area); no area (or a
         // non-finite one) emits nothing.
         const float emitting = content::emitterArea(l);
+        // A constant-intensity emitter: intensity per square metre (cd/m^2) = lumens / (2 pi
+        // area), its flux spread evenly over the hemisphere in front.
+        const float perSteradian =
+            l.emission == content::AreaLightEmission::ConstantIntensity ? 2.0f : 1.0f;
         photometric = emitting > 0.0f && std::isfinite(emitting)
-                          ? l.lumens / (std::numbers::pi_v<float> * emitting)
+                          ? l.lumens / (perSteradian * std::numbers::pi_v<float> * emitting)
                           : 0.0f;
     }
     photometric = std::max(finiteOr(photometric, 0.0f), 0.0f);
@@ -72,10 +76,13 @@ GpuLight packLight(const LightInstance& instance, uint32_t textureSlot) {
     g.spotScale = 1.0f / std::max(cosInner - cosOuter, 1e-4f);
     g.spotOffset = -cosOuter * g.spotScale;
     if (area) {
-        // No cone: spotOffset carries the per-light quality, spotScale 1 + a textured rect's
-        // atlas slot (area_lights.glsl); culling reads neither for a half-space bound.
+        // No cone: spotOffset carries the per-light quality and emission, spotScale 1 + a textured
+        // rect's atlas slot (area_lights.glsl); culling reads neither for a half-space bound.
         g.spotScale = 1.0f + (l.type == content::LightType::Rect ? float(textureSlot) : 0.0f);
-        g.spotOffset = float(uint32_t(l.quality));
+        // + 4 for a constant-intensity emitter (kAreaEmissionConstantIntensity).
+        g.spotOffset =
+            float(uint32_t(l.quality) +
+                  (l.emission == content::AreaLightEmission::ConstantIntensity ? 4u : 0u));
     }
     // Point and spot lights have no shape parameters: shape[0] carries the quality for their
     // sphere and tube (lights.glsl localLightRepresentative).

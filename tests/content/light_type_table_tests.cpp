@@ -178,5 +178,32 @@ TEST(LightTypeTable, AreaLightsWithoutAnAreaAreRejectedByName) {
     EXPECT_NEAR(emitterArea(disk), 3.14159265f * 0.04f, 1e-6f);
 }
 
+// Seed 004 section 1's constant-intensity variant: a rect's or disk's "emission" loads, is written
+// back (and left out when Lambertian), and a misspelt value is an error naming its pointer.
+TEST(LightTypeTable, AreaLightEmissionRoundTripsAndRejectsUnknownValues) {
+    const std::string text = R"({"format": "candela.scene", "version": 1, "entities": [
+        {"name": "panel", "light": {"type": "rect", "width": 1, "height": 0.5,
+                                    "emission": "constantIntensity"}},
+        {"name": "plain", "light": {"type": "disk", "sourceRadius": 0.3}},
+        {"name": "typo", "light": {"type": "disk", "sourceRadius": 0.3,
+                                   "emission": "isotropic"}}]})";
+    Diagnostics diagnostics;
+    auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "emit.scene.json", diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    ASSERT_EQ(loaded->entities.size(), 3u);
+    ASSERT_TRUE(loaded->entities[0].light && loaded->entities[1].light);
+    EXPECT_EQ(loaded->entities[0].light->emission, AreaLightEmission::ConstantIntensity);
+    EXPECT_EQ(loaded->entities[1].light->emission, AreaLightEmission::Lambertian);
+    const std::string messages = diagnostics.toString();
+    EXPECT_NE(messages.find("/entities/2/light/emission"), std::string::npos) << messages;
+
+    loaded->entities.pop_back();
+    std::string error;
+    const std::string json = sceneToJson(*loaded, error);
+    ASSERT_TRUE(error.empty()) << error;
+    EXPECT_NE(json.find("\"emission\": \"constantIntensity\""), std::string::npos) << json;
+    EXPECT_EQ(json.find("lambertian"), std::string::npos) << json;
+}
+
 }  // namespace
 }  // namespace candela::content

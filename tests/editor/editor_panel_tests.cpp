@@ -3,13 +3,18 @@
 // field edits the light live as one undo step.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <string>
+
 #include "app/hierarchy_panel.h"
 #include "app/inspector_panel.h"
 #include "candela/content/asset_cache.h"
 #include "candela/content/component_validation.h"
 #include "candela/content/components/animation.h"
 #include "candela/content/components/light.h"
+#include "candela/content/light_texture.h"
 #include "candela/content/model.h"
+#include "candela/content/png_writer.h"
 #include "candela/content/scene_instantiation.h"
 #include "candela/ecs/hierarchy.h"
 #include "candela/ui/imgui_layer.h"
@@ -147,6 +152,50 @@ TEST_F(EditorPanels, TypedValuesTheLoaderWouldRejectAreRefusedAndAbsurdOnesClamp
     type("3e38");
     EXPECT_EQ(registry.get<content::Light>(lamp).lumens, content::kMaxLumens);
     EXPECT_GE(scene->commands().undoCount(), 1u);
+}
+
+// Issue 15: a rect light's emissive image from the inspector's Texture field: an unreadable
+// file is refused with a notice (no edit); a readable one is decoded and set as one undo step.
+TEST_F(EditorPanels, RectLightTextureFieldSetsTheImageAndRefusesUnreadableFiles) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "candela_editor_light_texture";
+    std::filesystem::create_directories(dir);
+    const std::string png = (dir / "screen.png").string();
+    const std::uint8_t pixels[2 * 2 * 3] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255};
+    ASSERT_EQ(content::writePng(png, 2, 2, 3, pixels), "");
+    const ecs::Entity lamp = scene->findByName("lamp");
+    registry.get<content::Light>(lamp).type = content::LightType::Rect;
+    frame(row("lamp"), true);
+    frame(row("lamp"), false);
+    frame(ImVec2(-1, -1), false);  // the inspector now shows the rect
+    ASSERT_TRUE(inspectorLayout.count("Set Light Texture"));
+    const ImVec2 field = inspectorLayout.at("Set Light Texture").center();
+    ImGuiIO& io = ImGui::GetIO();
+    constexpr int kEnter = 13;
+    io.KeyMap[ImGuiKey_Enter] = kEnter;
+    auto enter = [&](const std::string& text) {
+        frame(field, true);
+        frame(field, false);
+        for (char c : text) {  // one character per frame, as typed
+            io.AddInputCharacter(static_cast<unsigned>(c));
+            frame(field, false);
+        }
+        io.KeysDown[kEnter] = true;
+        frame(field, false);
+        io.KeysDown[kEnter] = false;
+        frame(ImVec2(-1, -1), false);
+    };
+    enter((dir / "missing.png").string());
+    EXPECT_EQ(registry.get<content::Light>(lamp).texture, 0u);
+    EXPECT_EQ(scene->commands().undoCount(), 0u);
+
+    enter(png);
+    const auto texture = content::findLightTexture(registry.get<content::Light>(lamp).texture);
+    ASSERT_TRUE(texture);
+    ASSERT_TRUE(texture->image);
+    EXPECT_EQ(texture->file, png);
+    EXPECT_EQ(scene->commands().undoLabel(), "Set Light Texture");
+    std::filesystem::remove_all(dir);
 }
 
 // Issue 20: the inspector's Animation section on an entity with a player: the button pauses

@@ -28,6 +28,10 @@ inline constexpr EnumNames<LightType, kLightTypeCount> kLightTypes = [] {
 // An area light's "quality"; absent means the renderer's default (AreaLightQuality::Default).
 inline constexpr EnumNames<AreaLightQuality, 2> kAreaLightQualities{
     {{AreaLightQuality::Representative, "representative"}, {AreaLightQuality::Ltc, "ltc"}}};
+// A rect or disk light's "emission"; absent means Lambertian.
+inline constexpr EnumNames<AreaLightEmission, 2> kAreaLightEmissions{
+    {{AreaLightEmission::Lambertian, "lambertian"},
+     {AreaLightEmission::ConstantIntensity, "constantIntensity"}}};
 inline constexpr EnumNames<Projection, 2> kProjections{
     {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}}};
 inline constexpr EnumNames<ExposureMode, 2> kExposureModes{

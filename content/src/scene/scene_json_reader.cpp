@@ -353,6 +353,7 @@ public:
         l.castShadows = lightTypeInfo(l.type).castsShadowsByDefault;
         boolean(j, p, kCastShadowsKey, l.castShadows);
         enumeration(j, p, "quality", kAreaLightQualities, l.quality);
+        enumeration(j, p, "emission", kAreaLightEmissions, l.emission);
         // A rect's emissive image, relative to the scene file (decoded when instantiated).
         std::string texture;
         string(j, p, "texture", texture);

@@ -145,6 +145,9 @@ struct Writer {
         if (l.quality != AreaLightQuality::Default) {
             out["quality"] = nameOf(kAreaLightQualities, l.quality);
         }
+        if (l.emission != AreaLightEmission::Lambertian) {
+            out["emission"] = nameOf(kAreaLightEmissions, l.emission);
+        }
         if (const auto texture = findLightTexture(l.texture); texture && !texture->file.empty()) {
             out["texture"] = texture->file;
         }

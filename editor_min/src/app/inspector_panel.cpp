@@ -17,8 +17,10 @@
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/content/light_texture.h"
 #include "candela/content/light_types.h"
 #include "candela/content/model.h"
+#include "candela/content/scene_file.h"
 #include "candela/ecs/transform.h"
 #include "candela/render/exposure.h"
 #include "model/edit_validation.h"
@@ -102,6 +104,31 @@ void drawTransform(EditorScene& scene, ecs::Entity e, InspectorState& state) {
     commit(scene, e, ImGui::DragFloat3("Scale", &t.scale.x, 0.01f), t, "Scale");
 }
 
+// A rect's emissive image (issue 15): the file as the scene file stores it (relative to it),
+// decoded when Enter is pressed; one that cannot be read is refused with a notice naming it and
+// the problem, and the light keeps its image. An empty name removes the image.
+void drawLightTexture(EditorScene& scene, ecs::Entity e, content::Light l) {
+    const auto current = content::findLightTexture(l.texture);
+    const std::string before = current ? current->file : std::string();
+    std::string file = before;
+    bool changed =
+        ImGui::InputText("Texture", &file, ImGuiInputTextFlags_EnterReturnsTrue) && file != before;
+    if (changed && file.empty()) {
+        l.texture = 0;
+    } else if (changed) {
+        std::string problem;
+        auto image =
+            content::loadLightTexture(content::resolveScenePath(scene.sourcePath(), file), problem);
+        if (image) {
+            l.texture = content::registerLightTexture(file, std::move(image));
+        } else {
+            editNotice = "Refused: light texture '" + file + "': " + problem;
+            changed = false;
+        }
+    }
+    commit(scene, e, changed, l, "Set Light Texture");
+}
+
 void drawLight(EditorScene& scene, ecs::Entity e) {
     const auto* current = scene.registry().tryGet<content::Light>(e);
     if (!current) return;
@@ -142,6 +169,7 @@ void drawLight(EditorScene& scene, ecs::Entity e) {
         commit(scene, e, changed, l, f.undoLabel);
     }
     commit(scene, e, ImGui::Checkbox("Cast shadows", &l.castShadows), l, "Set Cast Shadows");
+    if (l.type == content::LightType::Rect) drawLightTexture(scene, e, l);
 }
 
 void drawCamera(EditorScene& scene, ecs::Entity e) {

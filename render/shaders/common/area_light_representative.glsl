@@ -90,20 +90,26 @@ float areaRepresentativeDiffuse(AreaShape s, vec3 P, vec3 N, bool unclamped, out
 // Blinn-Phong gloss of a GGX alpha, g = 2 / alpha^2 - 2, the apex is 2 alpha: a cone of half
 // angle alpha (alpha = roughness^2). Its footprint on the plane (a circle of radius t tan alpha
 // at the hit distance t) is intersected with the shape, both taken as squares of their own
-// area; the intersection's centre gives the direction and its area the normalisation.
-// Returns the illuminance per unit luminance for the BRDF evaluated along L.
-float areaRepresentativeSpecular(AreaShape s, vec3 P, vec3 N, vec3 R, float alpha, out vec3 L) {
-    L = R;
+// area: [lo, hi] in plane coordinates; false when R misses the plane or the shape.
+bool areaSpecularConeFootprint(AreaShape s, vec3 P, vec3 R, float alpha, out vec2 lo,
+                               out vec2 hi) {
     bool hit;
     float t;
     vec2 q = areaPlaneHit(s, P, R, vec2(0.0), hit, t);
-    if (!hit) return 0.0;
     const float kSquareOfDisc = 0.886226925;  // sqrt(pi) / 2: half side of a unit disc's square
     float footprint = t * tan(min(alpha, 1.5)) * kSquareOfDisc;
     vec2 shapeHalf = s.isDisk ? s.halfSize * kSquareOfDisc : s.halfSize;
-    vec2 lo = max(q - footprint, -shapeHalf);
-    vec2 hi = min(q + footprint, shapeHalf);
-    if (any(lessThanEqual(hi, lo))) return 0.0;
+    lo = max(q - footprint, -shapeHalf);
+    hi = min(q + footprint, shapeHalf);
+    return hit && all(greaterThan(hi, lo));
+}
+
+// The intersection's centre gives the direction and its area the normalisation. Returns the
+// illuminance per unit luminance for the BRDF evaluated along L.
+float areaRepresentativeSpecular(AreaShape s, vec3 P, vec3 N, vec3 R, float alpha, out vec3 L) {
+    L = R;
+    vec2 lo, hi;
+    if (!areaSpecularConeFootprint(s, P, R, alpha, lo, hi)) return 0.0;
     vec2 extent = hi - lo;
     return areaPointIrradiance(s, P, N, areaPlanePoint(s, 0.5 * (lo + hi)), extent.x * extent.y,
                                L);

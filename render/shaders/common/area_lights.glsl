@@ -14,17 +14,20 @@
 #ifndef CANDELA_AREA_LIGHTS_GLSL
 #define CANDELA_AREA_LIGHTS_GLSL
 
+#include "common/area_light_constant_intensity.glsl"
 #include "common/area_light_representative.glsl"
 #include "common/area_light_texture.glsl"
 #include "common/ltc.glsl"
 #include "common/ltc_area_lights.glsl"
 #include "common/ltc_disk.glsl"
 
-// Per-light `quality` (Light.spotOffset of area lights, gpu_light.cpp): 0 the renderer's
-// default, 1 representative, 2 ltc.
+// Per-light `quality` (Light.spotOffset of area lights, gpu_light.cpp, its low two bits): 0 the
+// renderer's default, 1 representative, 2 ltc; plus kAreaEmissionConstantIntensity for a
+// constant-intensity emitter.
 const uint kAreaQualityDefault = 0u;
 const uint kAreaQualityRepresentative = 1u;
 const uint kAreaQualityLtc = 2u;
+const uint kAreaEmissionConstantIntensity = 4u;
 
 AreaShape areaShapeOf(Light light) {
     AreaShape s;
@@ -76,7 +79,8 @@ uint areaTextureSlot(Light light) {
 // cosine's footprint there, twice the plane's distance (half the cosine's power falls within 45
 // degrees), against the moved rect's size. M^-1 is linear, so the moved rect's affine
 // coordinates are the image's uv.
-vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction) {
+vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction,
+                    float texelsPerFootprint) {
 #ifdef AREA_LIGHT_TEXTURED
     vec3 p0 = minv * polygon[0];
     vec3 e1 = minv * polygon[1] - p0;  // along the rect's +X
@@ -92,7 +96,8 @@ vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction) {
     float e11 = dot(e1, e1), e12 = dot(e1, e2), e22 = dot(e2, e2);
     float det = max(e11 * e22 - e12 * e12, 1e-30);
     vec2 uv = vec2(e22 * dot(d, e1) - e12 * dot(d, e2), e11 * dot(d, e2) - e12 * dot(d, e1)) / det;
-    float lod = areaLightTextureLod(2.0 * abs(offset) / max(area, 1e-30), sqrt(area));
+    float lod =
+        areaLightTextureLod(2.0 * abs(offset) / max(area, 1e-30), sqrt(area), texelsPerFootprint);
     return areaLightTexture(slot, clamp(uv, vec2(0.0), vec2(1.0)), lod);
 #else
     return vec3(1.0);
@@ -100,14 +105,18 @@ vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction) {
 }
 
 // areaShapeIntegral, and in `texel` what a textured rect (slot > 0) shows the lobe (1 for an
-// untextured shape): one edge sum gives both.
-float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv, uint slot, out vec3 texel) {
+// untextured shape): one edge sum gives both. `specular`: the read over
+// kAreaLightTextureTexelsPerSpecularFootprint (area_light_texture.glsl).
+float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv, uint slot, bool specular,
+                        out vec3 texel) {
     texel = vec3(1.0);
     if (s.isDisk || slot == 0u) return areaShapeIntegral(s, P, toLocal, minv);
     vec3 polygon[4];
     rectPolygon(s, P, toLocal, polygon);
     vec3 sum = ltcPolygonVectorSum(minv, polygon, 4);
-    texel = areaLtcTexture(slot, polygon, minv, sum);
+    texel = areaLtcTexture(slot, polygon, minv, sum,
+                           specular ? kAreaLightTextureTexelsPerSpecularFootprint
+                                    : kAreaLightTextureTexelsPerFootprint);
     return max(sum.z * (0.5 / PI), 0.0);
 }
 
@@ -179,8 +188,10 @@ vec3 areaRepresentativeSpecularTexture(AreaShape s, uint slot, vec3 P, vec3 L, f
     return areaPlaneTexture(s, slot, q, 2.0 * t * tan(min(alpha, 1.5)));
 }
 
+// `constantIntensity`: Light.intensity is I_A, and each lobe's constant-luminance result is
+// scaled by the seed's pre-integrated factor (area_light_constant_intensity.glsl), in either mode.
 LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alpha,
-                                 bool representative) {
+                                 bool representative, bool constantIntensity) {
     AreaShape s = areaShapeOf(light);
     vec3 toCenter = s.center - P;
     float window = attenuationWindow(dot(toCenter, toCenter), light.invAttenuationRadius);
@@ -204,7 +215,7 @@ LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alph
     } else {
         diffuse = height <= 0.0 ? 0.0
                                 : PI * areaShapeIntegral(s, P, transpose(tangentFrame(N)),
-                                                         mat3(1.0), slot, diffuseTexel);
+                                                         mat3(1.0), slot, false, diffuseTexel);
     }
     o.specularLtc = vec2(0.0);
     float specular;
@@ -219,7 +230,7 @@ LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alph
             specular = height <= 0.0 ? 0.0
                                      : areaShapeIntegral(s, P, ltcShadingFrame(N, V),
                                                          ltcInverseMatrix(texture(ltcMatrixTable, uv)),
-                                                         slot, specularTexel);
+                                                         slot, true, specularTexel);
         }
         o.specularL = R;
     } else
@@ -228,12 +239,19 @@ LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alph
         specular = areaRepresentativeSpecular(s, P, N, R, alpha, o.specularL);
         specularTexel = areaRepresentativeSpecularTexture(s, slot, P, o.specularL, alpha);
     }
-    o.diffuseIlluminance = luminance * diffuse * diffuseTexel;
-    o.specularIlluminance = luminance * specular * specularTexel;
+    float diffuseFactor = 1.0;
+    float specularFactor = 1.0;
+    if (constantIntensity) {
+        diffuseFactor = constantIntensityDiffuseFactor(s, P);
+        specularFactor = constantIntensitySpecularFactor(s, P, R, alpha);
+    }
+    o.diffuseIlluminance = luminance * (diffuse * diffuseFactor) * diffuseTexel;
+    o.specularIlluminance = luminance * (specular * specularFactor) * specularTexel;
     // Normal incidence, no surface cosine (wrap and transmission).
     vec3 unused;
-    o.incidentIlluminance = luminance * areaPointIrradiance(s, P, safeNormalize(toCenter), s.center,
-                                                            areaShapeArea(s), unused);
+    o.incidentIlluminance = luminance * diffuseFactor *
+                            areaPointIrradiance(s, P, safeNormalize(toCenter), s.center,
+                                                areaShapeArea(s), unused);
     return o;
 }
 

@@ -56,7 +56,7 @@ struct Light {
                                  // rect, disk: the node's +X
     uint type;
     float spotScale;             // 1 / (cos inner - cos outer)
-    float spotOffset;            // -cos outer * spotScale; rect, disk: quality (area_lights.glsl)
+    float spotOffset;            // -cos outer * spotScale; rect, disk: quality + emission (area_lights.glsl)
     vec2 shape;                  // per-type parameters (render/src/lights/gpu_light_types.h)
 };
 
@@ -280,10 +280,12 @@ LightIncidence evaluateLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
     if ((kRectLightsEnabled && light.type == LIGHT_TYPE_RECT) ||
         (kDiskLightsEnabled && light.type == LIGHT_TYPE_DISK)) {
         // The per-light "quality" wins over the renderer's default.
-        uint quality = uint(light.spotOffset);
+        uint code = uint(light.spotOffset);
+        uint quality = code & 3u;
         bool representative = quality == kAreaQualityRepresentative ||
                               (quality == kAreaQualityDefault && !kAreaLightsLtc);
-        return evaluateAreaLight(light, P, N, R, alpha, representative);
+        return evaluateAreaLight(light, P, N, R, alpha, representative,
+                                 (code & kAreaEmissionConstantIntensity) != 0u);
     }
     LightIncidence o = evaluateLocalLight(light, P, N, R, alpha);  // point, spot, sphere, tube
 #ifdef AREA_LIGHT_LTC_MATRIX_BINDING

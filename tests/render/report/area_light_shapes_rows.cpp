@@ -73,9 +73,10 @@ double reportTexture(double u, double v) {
 // Diffuse irradiance and specular D Vis(height-correlated Smith) NoL, F0 = 1, per unit
 // luminance, integrated over the light by the midpoint rule (n x n points: the rect's grid, the
 // disk's radius x angle); a textured rect's luminance times its image at each point (n even:
-// no point on the image's edges).
-std::array<double, 2> reference(bool disk, bool textured, double size, const Vec3& V, double alpha,
-                                int n) {
+// no point on the image's edges). A constant-intensity light (seed 004 section 1's variant): per
+// unit intensity per square metre, the luminance towards the point 1 / cos theta_o.
+std::array<double, 2> reference(bool disk, bool textured, bool constantIntensity, double size,
+                                const Vec3& V, double alpha, int n) {
     double diffuse = 0.0, specular = 0.0;
     const double half = 0.5 * size;
     for (int i = 0; i < n; ++i) {
@@ -96,7 +97,8 @@ std::array<double, 2> reference(bool disk, bool textured, double size, const Vec
             const double cosLight = -ref::dot(L, kNormal);
             const double NoL = L[2];
             if (cosLight <= 0.0 || NoL <= 0.0) continue;
-            const double solidAngle = area * cosLight / distanceSq;
+            const double luminance = constantIntensity ? 1.0 / cosLight : 1.0;
+            const double solidAngle = luminance * area * cosLight / distanceSq;
             diffuse += NoL * solidAngle;
             if (V[2] > 0.0) {
                 const Vec3 H = unit(V + L);
@@ -158,6 +160,11 @@ void addAreaLightShapeRows(ReportContext& context) {
         bool disk;
         Mode mode;
         bool textured = false;
+        // A constant-intensity light (its own reference); `factors`: shaded with the seed's
+        // pre-integrated factors (else as a Lambertian light of luminance I_A, to show what the
+        // factors buy).
+        bool constantIntensity = false;
+        bool factors = false;
     };
     const Variant variants[] = {
         {"Rect light: representative point (seed 004 section 1)", false, kRepresentative},
@@ -172,13 +179,32 @@ void addAreaLightShapeRows(ReportContext& context) {
          true},
         {"Textured rect light: LTC, image where the lobe's mean direction meets it", false, kLtc,
          true},
+        {"Constant-intensity rect light: representative point x pre-integrated factors (seed 004 "
+         "section 1)",
+         false, kRepresentative, false, true, true},
+        {"Constant-intensity rect light: LTC x pre-integrated factors", false, kLtc, false, true,
+         true},
+        {"Constant-intensity rect light: representative point without the factors (luminance "
+         "I_A)",
+         false, kRepresentative, false, true, false},
+        {"Constant-intensity disk light: representative point x pre-integrated factors (seed 004 "
+         "section 1)",
+         true, kRepresentative, false, true, true},
+        {"Constant-intensity disk light: LTC x pre-integrated factors", true, kLtc, false, true,
+         true},
     };
-    // Which reference set a variant reads: rect, disk, textured rect.
-    const auto referenceSet = [](const Variant& v) { return v.textured ? 2 : v.disk ? 1 : 0; };
+    // Which reference set a variant reads: rect, disk, textured rect, constant-intensity rect
+    // and disk (in the order of their first, representative, variants).
+    const auto referenceSet = [](const Variant& v) {
+        if (v.constantIntensity) return v.disk ? 4 : 3;
+        return v.textured ? 2 : v.disk ? 1 : 0;
+    };
     // The references, once per shape: [disk][roughness][size][view] -> (diffuse, specular).
     std::vector<AreaShapeSample> samples;
     std::vector<std::array<double, 2>> references;
+    int setsDone = 0;
     for (const Variant& variant : variants) {
+        const bool firstOfSet = referenceSet(variant) == setsDone;  // computes the set
         for (double roughness : kRoughness) {
             for (double size : kSizes) {
                 for (const auto& view : viewsFor(size)) {
@@ -190,15 +216,17 @@ void addAreaLightShapeRows(ReportContext& context) {
                     s.c = {float(kAcross[0]), float(kAcross[1]), float(kAcross[2]),
                            float(0.5 * size)};
                     s.d = {float(0.5 * size), float(variant.mode), variant.textured ? 1.0f : 0.0f,
-                           0.0f};
+                           variant.factors ? 1.0f : 0.0f};
                     samples.push_back(s);
-                    if (variant.mode == kRepresentative) {  // the first variant of each shape
-                        references.push_back(reference(variant.disk, variant.textured, size, V,
+                    if (firstOfSet) {
+                        references.push_back(reference(variant.disk, variant.textured,
+                                                       variant.constantIntensity, size, V,
                                                        ref::alphaFromRoughness(roughness), grid));
                     }
                 }
             }
         }
+        if (firstOfSet) ++setsDone;
     }
     const auto device = evaluate(context.harness, samples);
 
@@ -211,8 +239,14 @@ void addAreaLightShapeRows(ReportContext& context) {
         {CostFunction::DiskLtc, iterations},
         {CostFunction::TexturedRectRepresentative, iterations},
         {CostFunction::TexturedRectLtc, iterations},
+        {CostFunction::RectRepresentativeConstantIntensity, iterations},
+        {CostFunction::RectLtcConstantIntensity, iterations},
+        {CostFunction::DiskRepresentativeConstantIntensity, iterations},
+        {CostFunction::DiskLtcConstantIntensity, iterations},
     });
-    const Cost* costOf[] = {&ns[1], &ns[1], &ns[2], &ns[3], &ns[3], &ns[4], &ns[5], &ns[6]};
+    const Cost* costOf[] = {&ns[1], &ns[1], &ns[2], &ns[3], &ns[3], &ns[4], &ns[5],
+                            &ns[6], &ns[7], &ns[8], &ns[1], &ns[9], &ns[10]};
+    static_assert(std::size(costOf) == std::size(variants));
 
     ReportTable table;
     table.title = "Rect and disk lights: error by roughness and size";
@@ -229,7 +263,12 @@ void addAreaLightShapeRows(ReportContext& context) {
         "Textured rect: an image of four quadrants of luminance 2.25, 0.75, 0.75, 0.25 (average "
         "1) on the rect, integrated times the BRDF over the light; the approximations read it "
         "once per lobe, pre-filtered over the lobe's footprint (the renderer's 256-texel mip "
-        "chain, box-filtered here in closed form).";
+        "chain, box-filtered here in closed form). Constant-intensity lights (seed 004 section 1's "
+        "variant, `emission` \"constantIntensity\"): every element radiates intensity I_A in "
+        "every direction in front, so the luminance towards the point is I_A / cos theta_o; the "
+        "reference integrates that, the approximations multiply the constant-luminance results "
+        "by the seed's pre-integrated factors (the mean of |x - P| / h over the light for "
+        "diffuse, over the specular cone's intersection with it for specular, in closed form).";
     table.header = {"variant", "roughness"};
     for (double size : kSizes) {
         char text[64];

@@ -41,6 +41,11 @@ enum class CostFunction : uint32_t {
     // Textured rect lights: the same with the image read once per lobe.
     TexturedRectRepresentative = 25,
     TexturedRectLtc = 26,
+    // Constant-intensity rect and disk lights: the same with seed 004's pre-integrated factors.
+    RectRepresentativeConstantIntensity = 27,
+    RectLtcConstantIntensity = 28,
+    DiskRepresentativeConstantIntensity = 29,
+    DiskLtcConstantIntensity = 30,
 };
 
 struct CostJob {

@@ -13,8 +13,9 @@ layout(local_size_x = 64) in;
 // Must match AreaShapeSample in area_light_shapes_rows.cpp.
 // a.xyz light centre, a.w 1 for a disk; b.xyz V, b.w roughness; c.xyz the light's X axis,
 // c.w half width (disk: radius); d.x half height, d.y mode (0 representative, 1 its unclamped
-// diffuse, 2 ltc), d.z 1 for a textured rect (report_light_texture.glsl's image). The surface is
-// at the origin with N = +Z; the light faces it.
+// diffuse, 2 ltc), d.z 1 for a textured rect (report_light_texture.glsl's image), d.w 1 for a
+// constant-intensity light (values per unit I_A: the seed's pre-integrated factors applied).
+// The surface is at the origin with N = +Z; the light faces it.
 struct AreaShapeSample {
     vec4 a;
     vec4 b;
@@ -53,6 +54,13 @@ vec4 tableBilinear(float roughness, float cosView, uint part) {
     return mix(top, bottom, f.y);
 }
 
+// (diffuse, specular) factors of a constant-intensity light, (1, 1) otherwise.
+vec2 constantIntensityFactors(AreaShapeSample sample_, AreaShape shape, vec3 P, vec3 R, float alpha) {
+    if (sample_.d.w < 0.5) return vec2(1.0);
+    return vec2(constantIntensityDiffuseFactor(shape, P),
+                constantIntensitySpecularFactor(shape, P, R, alpha));
+}
+
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= sampleCount) return;
@@ -75,12 +83,13 @@ void main() {
     if (mode == 2u) {
         vec3 diffuseTexel, specularTexel;
         float diffuse = PI * areaShapeIntegral(shape, P, transpose(tangentFrame(N)), mat3(1.0),
-                                               slot, diffuseTexel);
+                                               slot, false, diffuseTexel);
         vec4 nf = tableBilinear(roughness, V.z, 1u);
         mat3 minv = ltcInverseMatrix(tableBilinear(roughness, V.z, 0u));
         float specular = nf.x * areaShapeIntegral(shape, P, ltcShadingFrame(N, V), minv, slot,
-                                                  specularTexel);
-        values[i] = vec2(diffuse * diffuseTexel.x, specular * specularTexel.x);
+                                                  true, specularTexel);
+        values[i] = vec2(diffuse * diffuseTexel.x, specular * specularTexel.x) *
+                    constantIntensityFactors(s, shape, P, R, alpha);
         return;
     }
     vec3 L;
@@ -92,5 +101,5 @@ void main() {
     float NoL = saturate(L.z);
     float specular = distributionGgx(alpha * alpha, saturate(H.z)) *
                      visibilitySmithGgxCorrelated(alpha, saturate(V.z), NoL) * illuminance;
-    values[i] = vec2(diffuse, specular);
+    values[i] = vec2(diffuse, specular) * constantIntensityFactors(s, shape, P, R, alpha);
 }

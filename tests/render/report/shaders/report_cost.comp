@@ -39,6 +39,10 @@ const uint kDiskRepresentative = 23u;
 const uint kDiskLtc = 24u;
 const uint kTexturedRectRepresentative = 25u;
 const uint kTexturedRectLtc = 26u;
+const uint kRectRepresentativeConstantIntensity = 27u;
+const uint kRectLtcConstantIntensity = 28u;
+const uint kDiskRepresentativeConstantIntensity = 29u;
+const uint kDiskLtcConstantIntensity = 30u;
 
 layout(std430, binding = 0) writeonly buffer Sums {
     float sums[];
@@ -117,9 +121,9 @@ float areaShading(bool disk, bool ltc, vec3 V, float roughness, float size, uint
         }
         vec3 diffuseTexel, specularTexel;
         float diffuse = PI * areaShapeIntegral(s, vec3(0.0), transpose(tangentFrame(N)), mat3(1.0),
-                                               slot, diffuseTexel);
+                                               slot, false, diffuseTexel);
         float specular = areaShapeIntegral(s, vec3(0.0), ltcShadingFrame(N, V), minv, slot,
-                                           specularTexel);
+                                           true, specularTexel);
         return diffuse * diffuseTexel.x + specular * specularTexel.x;
     }
     vec3 L;
@@ -130,6 +134,28 @@ float areaShading(bool disk, bool ltc, vec3 V, float roughness, float size, uint
     vec3 H = safeNormalize(V + L);
     return diffuse + distributionGgx(alpha * alpha, saturate(H.z)) *
            visibilitySmithGgxCorrelated(alpha, saturate(V.z), saturate(L.z)) * e;
+}
+
+// A constant-intensity rect or disk (seed 004 section 1's variant): the same shading with the
+// pre-integrated diffuse and specular factors (area_light_constant_intensity.glsl).
+float areaShadingConstantIntensity(bool disk, bool ltc, vec3 V, float roughness, float size) {
+    AreaShape s = costShape(disk, size);
+    vec3 N = vec3(0.0, 0.0, 1.0);
+    vec3 R = reflect(-V, N);
+    float alpha = alphaFromRoughness(roughness);
+    float diffuseFactor = constantIntensityDiffuseFactor(s, vec3(0.0));
+    float specularFactor = constantIntensitySpecularFactor(s, vec3(0.0), R, alpha);
+    if (ltc) {
+        mat3 minv = ltcInverseMatrix(vec4(1.0, 0.1 * roughness, -0.1 * roughness, 0.5 + roughness));
+        return areaExactDiffuse(s, vec3(0.0), N) * diffuseFactor +
+               areaLtcSpecularIntegral(s, vec3(0.0), N, V, minv) * specularFactor;
+    }
+    vec3 L;
+    float diffuse = areaRepresentativeDiffuse(s, vec3(0.0), N, false, L);
+    float e = areaRepresentativeSpecular(s, vec3(0.0), N, R, alpha, L);
+    vec3 H = safeNormalize(V + L);
+    return diffuse * diffuseFactor + distributionGgx(alpha * alpha, saturate(H.z)) *
+           visibilitySmithGgxCorrelated(alpha, saturate(V.z), saturate(L.z)) * e * specularFactor;
 }
 
 // Each function gets its own loop (the switch is outside it, so no case pays for the others'
@@ -208,6 +234,18 @@ void main() {
             break;
         case kTexturedRectLtc:
             TIMED_LOOP(areaShading(false, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z, 1u));
+            break;
+        case kRectRepresentativeConstantIntensity:
+            TIMED_LOOP(areaShadingConstantIntensity(false, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z));
+            break;
+        case kRectLtcConstantIntensity:
+            TIMED_LOOP(areaShadingConstantIntensity(false, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z));
+            break;
+        case kDiskRepresentativeConstantIntensity:
+            TIMED_LOOP(areaShadingConstantIntensity(true, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z));
+            break;
+        case kDiskLtcConstantIntensity:
+            TIMED_LOOP(areaShadingConstantIntensity(true, true, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z));
             break;
         default: break;
     }

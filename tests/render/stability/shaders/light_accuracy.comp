@@ -32,7 +32,8 @@ const uint kLtcDisk = 11u;
 // Irradiance per unit luminance of a rect or disk light (area_lights.glsl) at P with normal N:
 // a.xyz centre, a.w 1 for a disk; b.xyz emitting normal, b.w half width (disk: radius);
 // c.xyz axis X, c.w half height; d.xyz P; N = +z.
-// -> (exact / "ltc" diffuse, representative diffuse, its unclamped variant, 0)
+// -> (exact / "ltc" diffuse, representative diffuse, its unclamped variant, the "ltc" diffuse x
+// the constant-intensity diffuse factor: irradiance per unit I_A of a constant-intensity light)
 const uint kAreaLightDiffuse = 20u;
 
 struct LightSample {
@@ -104,7 +105,9 @@ vec4 evaluate(LightSample s) {
             vec3 L;
             return vec4(areaExactDiffuse(shape, s.d.xyz, N),
                         areaRepresentativeDiffuse(shape, s.d.xyz, N, false, L),
-                        areaRepresentativeDiffuse(shape, s.d.xyz, N, true, L), 0.0);
+                        areaRepresentativeDiffuse(shape, s.d.xyz, N, true, L),
+                        areaExactDiffuse(shape, s.d.xyz, N) *
+                            constantIntensityDiffuseFactor(shape, s.d.xyz));
         }
         default: return vec4(0.0);
     }

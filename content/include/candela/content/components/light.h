@@ -13,6 +13,13 @@ enum class LightType : std::uint8_t { Point, Spot, Directional, Rect, Disk };
 // point or LTC.
 enum class AreaLightQuality : std::uint8_t { Default, Representative, Ltc };
 
+// How a rect or disk light spreads its power ("emission" in scene files): Lambertian (the same
+// luminance lumens / (pi area) in every direction), or seed 004 section 1's constant-intensity
+// light (every element radiates the same intensity in every direction in front of it: lumens /
+// (2 pi area) cd per square metre), shaded by the seed's pre-integrated diffuse and specular
+// factors (area_light_constant_intensity.glsl).
+enum class AreaLightEmission : std::uint8_t { Lambertian, ConstantIntensity };
+
 struct Light {
     LightType type = LightType::Point;
     std::array<float, 3> color{1.0f, 1.0f, 1.0f};  // linear RGB, multiplies the photometric value
@@ -33,7 +40,8 @@ struct Light {
     // (LightTypeInfo::castsShadowsByDefault: directional yes, local lights no); code that builds
     // a Light gets no shadows unless it asks.
     bool castShadows = false;
-    AreaLightQuality quality = AreaLightQuality::Default;  // rect, disk, sphere, tube
+    AreaLightQuality quality = AreaLightQuality::Default;        // rect, disk, sphere, tube
+    AreaLightEmission emission = AreaLightEmission::Lambertian;  // rect, disk
     // Rect only: an emissive image on the light (a screen, a window; issue 15): an id into
     // content/light_texture.h's table (the file as the scene file's "texture" or glTF's
     // extras.texture names it, and the decoded image), 0 for none. An id keeps Light trivially
