@@ -618,7 +618,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     camera.exposureMode = content::ExposureMode::Manual;
     // Manual exposure (--exposure manual, the goldens) suits the daylight outside, where the
     // tour starts; the demo meters and adapts (auto exposure) by default.
-    camera.manualEv100 = 13.0f;
+    camera.manualEv100 = 14.0f;
     camera.verticalFov = 0.95f;
     CameraPose start = demoCameraPath().pose(0.0);
     ecs::Entity cam = place(registry, "camera", start.position, start.rotation);
