@@ -613,7 +613,8 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                 // An atmosphere (the scene's, or Earth's for --atmosphere and the sun flags)
                 // replaces the EXR sky and makes the first directional light its sun.
                 frame.scene.atmosphere = s.extracted.atmosphere;
-                if (!frame.scene.atmosphere &&
+                if (options.atmosphereOff) frame.scene.atmosphere.reset();
+                if (!frame.scene.atmosphere && !options.atmosphereOff &&
                     (options.atmosphere || options.sunElevationDegrees || options.timeOfDayHours)) {
                     frame.scene.atmosphere = content::Atmosphere{};
                 }

@@ -170,6 +170,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --fog SIGMA_S[,SIGMA_A[,G]]   a uniform medium (1/m, Henyey-Greenstein g),\n"
            "                            replacing the scene's fog\n"
            "  --atmosphere              a physically based sky (Earth's) instead of the EXR sky\n"
+           "  --atmosphere off          no atmosphere, even where the scene has one\n"
            "  --sun-elevation DEG       the atmosphere's sun this high, keeping its azimuth\n"
            "  --time-of-day HH:MM       the atmosphere's sun where it stands then (solar time)\n"
            "  --scattering off|epipolar|brute-force   light shafts in the atmosphere's air\n"
@@ -325,7 +326,14 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
             }
             options.fog = fog;
         } else if (arg == "--atmosphere") {
-            options.atmosphere = true;
+            // `--atmosphere off` drops the scene's atmosphere (tests that exercise something
+            // else skip its passes); a bare --atmosphere adds one.
+            if (i + 1 < args.size() && args[i + 1] == "off") {
+                ++i;
+                options.atmosphereOff = true;
+            } else {
+                options.atmosphere = true;
+            }
         } else if (arg == "--scattering") {
             render::ScatteringMode mode{};
             if (!value() || !parseChoice(v, kScatteringModes, mode)) {

@@ -6,18 +6,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <numbers>
-#include <optional>
 
 #include "candela/content/components/animation.h"
+#include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
-#include "candela/content/components/sky.h"
 #include "candela/content/diagnostics.h"
-#include "candela/content/environment_map.h"
-#include "candela/content/exr_image.h"
 #include "candela/content/light_texture.h"
 #include "candela/content/procedural_mesh.h"
 #include "candela/ecs/hierarchy.h"
@@ -121,53 +118,6 @@ struct DemoMeshes {
     }
 };
 
-// The sky's sun, for a directional light that stands in for it: the direction of the brightest
-// texel of the lat-long image and the illuminance its disk (texels above a tenth of that
-// peak, within 5 degrees) delivers face on. nullopt when the image cannot be read.
-struct SkySun {
-    ecs::Vec3 towardSun;
-    float lux;
-};
-
-std::optional<SkySun> findSkySun(const std::filesystem::path& exr) {
-    content::Diagnostics diagnostics;
-    const std::optional<content::ExrImage> read = content::readExrImage(exr, diagnostics);
-    if (!read) return std::nullopt;
-    const content::FloatImage& image = read->image;
-    auto luminance = [](const float* t) {
-        return 0.2126f * t[0] + 0.7152f * t[1] + 0.0722f * t[2];
-    };
-    uint32_t bestX = 0, bestY = 0;
-    for (uint32_t y = 0; y < image.height; ++y) {
-        for (uint32_t x = 0; x < image.width; ++x) {
-            if (luminance(image.texel(x, y)) > luminance(image.texel(bestX, bestY))) {
-                bestX = x;
-                bestY = y;
-            }
-        }
-    }
-    const auto toward = content::latLongDirection(float(bestX) + 0.5f, float(bestY) + 0.5f,
-                                                  image.width, image.height);
-    const ecs::Vec3 sun{toward[0], toward[1], toward[2]};
-    const float peak = luminance(image.texel(bestX, bestY));
-    float lux = 0.0f;
-    for (uint32_t y = 0; y < image.height; ++y) {
-        for (uint32_t x = 0; x < image.width; ++x) {
-            const float l = luminance(image.texel(x, y));
-            if (l < 0.1f * peak) continue;
-            const auto d = content::latLongDirection(float(x) + 0.5f, float(y) + 0.5f, image.width,
-                                                     image.height);
-            const float cosine = ecs::dot(sun, ecs::Vec3{d[0], d[1], d[2]});
-            if (cosine < std::cos(5.0f * kPi / 180.0f)) continue;
-            const float latitude = (0.5f - (float(y) + 0.5f) / float(image.height)) * kPi;
-            const float solidAngle = (2.0f * kPi / float(image.width)) *
-                                     (kPi / float(image.height)) * std::cos(latitude);
-            lux += l * solidAngle * cosine;
-        }
-    }
-    return SkySun{sun, lux};
-}
-
 ecs::Entity place(ecs::Registry& registry, const std::string& name, ecs::Vec3 position,
                   ecs::Quat rotation = {}, ecs::Vec3 scale = {1.0f, 1.0f, 1.0f}) {
     ecs::Entity e = registry.create();
@@ -213,14 +163,27 @@ constexpr float kFirstPillarZ = -8.0f;
 constexpr float kPillarSpacing = 2.8f;
 // Volumetric scales (content::Light::volumetric) of the lights the dust should show.
 constexpr float kDustGlow = 6.0f;
-constexpr float kDustSunShafts = 0.002f;
+constexpr float kDustSunShafts = 0.05f;
 constexpr float kDustAreaLights = 0.15f;
+// The hall's walls end at y = kWallTop; the roof lies on them, open in slits over the nave
+// (skylights) between the ribs, and the side walls have windows between the pillars: the
+// sun's shafts through the dust (issue 17) come through both.
+constexpr float kWallTop = 5.2f;
+constexpr float kRoofHalfThickness = 0.1f;
+constexpr float kSkylightWidth = 0.8f;  // along z
+constexpr float kWindowWidth = 1.2f;    // along z
+constexpr float kWindowBottom = 3.4f, kWindowTop = 4.6f;
+constexpr float kHallBackZ = -10.0f, kHallFrontZ = 8.0f;
+constexpr float kDoorHalfWidth = 2.0f, kDoorHeight = 3.6f;
+// The power lines (issue 19) cross the meadow in front of the hall, against the sky.
+constexpr float kPowerLineZ = 22.0f;
 
 }  // namespace
 
 const CameraPath& demoCameraPath() {
-    // A tour: the entrance, the toon figures, the helmet, the sphere grid and neon, the
-    // back-lit panels, and a high view back over the hall.
+    // A tour: in through the door, the toon figures, the helmet, the sphere grid and neon, the
+    // back-lit panels, a high view back over the hall, then out of the door into the daylight
+    // (auto exposure adapts: issue 24) and a look up at the power lines across the sky.
     static const CameraPath path(
         {
             {{0.0f, 2.2f, 9.0f}, {0.0f, 1.6f, -3.0f}},
@@ -228,10 +191,17 @@ const CameraPath& demoCameraPath() {
             {{-1.4f, 1.9f, -0.6f}, {0.0f, 1.5f, -3.0f}},
             {{1.6f, 2.8f, -5.0f}, {0.0f, 3.0f, -9.2f}},
             {{3.6f, 1.5f, 3.4f}, {2.2f, 1.0f, -0.3f}},
-            {{2.5f, 4.2f, 6.5f}, {0.0f, 1.0f, -4.0f}},
+            {{1.5f, 3.0f, 5.0f}, {-1.0f, 1.0f, -4.0f}},
+            {{0.3f, 1.7f, 11.5f}, {0.0f, 4.5f, 30.0f}},
+            {{3.0f, 1.7f, 15.0f}, {-8.0f, 7.0f, kPowerLineZ}},
         },
         4.0f);
     return path;
+}
+
+float demoTimeOfDay(double seconds) {
+    const double loop = double(demoCameraPath().loopSeconds());
+    return kDemoDayStartHours + kDemoDayHoursPerSecond * float(std::fmod(seconds, loop));
 }
 
 void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
@@ -273,7 +243,36 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
                                     material({0.35f, 0.22f, 0.12f}, 0.0f, 0.7f));
     const int32_t backWall = meshes->add(content::makeBox({6.5f, 3.2f, 0.25f}),
                                          material({0.45f, 0.12f, 0.1f}, 0.0f, 0.9f));
-    const int32_t sideWall = meshes->add(content::makeBox({0.25f, 2.6f, 9.0f}), stone);
+    // Side walls in pieces around their windows: below, above, and the piers between.
+    const float hallHalfLength = 0.5f * (kHallFrontZ - kHallBackZ);
+    const int32_t sideWallBelow =
+        meshes->add(content::makeBox({0.25f, 0.5f * kWindowBottom, hallHalfLength}), stone);
+    const int32_t sideWallAbove = meshes->add(
+        content::makeBox({0.25f, 0.5f * (kWallTop - kWindowTop), hallHalfLength}), stone);
+    const float pierHalfHeight = 0.5f * (kWindowTop - kWindowBottom);
+    const int32_t innerPier = meshes->add(
+        content::makeBox({0.25f, pierHalfHeight, 0.5f * (kPillarSpacing - kWindowWidth)}), stone);
+    const float endPierLength = kFirstPillarZ + 0.5f * kPillarSpacing - 0.5f * kWindowWidth -
+                                kHallBackZ;  // the back wall to the first window
+    const int32_t endPier =
+        meshes->add(content::makeBox({0.25f, pierHalfHeight, 0.5f * endPierLength}), stone);
+    // The front wall, with a door 4 m wide, and the roof in panels between the skylights.
+    const float frontPieceHalfWidth = 0.5f * (7.0f - kDoorHalfWidth);
+    const int32_t frontWall =
+        meshes->add(content::makeBox({frontPieceHalfWidth, 0.5f * kWallTop, 0.125f}), stone);
+    const int32_t lintel = meshes->add(
+        content::makeBox({kDoorHalfWidth, 0.5f * (kWallTop - kDoorHeight), 0.125f}), stone);
+    const content::Material roofTiles = material({0.3f, 0.2f, 0.16f}, 0.0f, 0.85f);
+    const int32_t roofPanel = meshes->add(
+        content::makeBox({7.0f, kRoofHalfThickness, 0.5f * (kPillarSpacing - kSkylightWidth)}),
+        roofTiles);
+    const float endRoofLength =
+        kFirstPillarZ + 0.5f * kPillarSpacing - 0.5f * kSkylightWidth - kHallBackZ;
+    const int32_t endRoofPanel =
+        meshes->add(content::makeBox({7.0f, kRoofHalfThickness, 0.5f * endRoofLength}), roofTiles);
+    // The meadow around the hall, under the floor (which reaches 3 m past the door).
+    const int32_t meadow =
+        meshes->add(content::makePlane(80.0f, 8), material({0.12f, 0.22f, 0.06f}, 0.0f, 0.9f));
     const int32_t pedestal = meshes->add(content::makeBox({0.5f, 0.5f, 0.5f}),
                                          material({0.9f, 0.9f, 0.88f}, 0.0f, 0.25f));
     const int32_t gold = meshes->add(content::makeBox({0.55f, 0.04f, 0.55f}),
@@ -334,10 +333,10 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     meshes->model.images.push_back(rustMask());
     const int32_t rustySphere = meshes->add(content::makeSphere(0.35f), rusty);
 
-    // Issue 19 (seed 004 §6): power lines across the sky over the back of the hall, seen
-    // between the roof ribs: three conductors sagging between poles every 15 m outside the
-    // side walls, 2.4 cm thick: under a pixel wide from the tour's viewpoints, drawn by the
-    // wire pass at their real energy instead of a pixel-wide line.
+    // Issue 19 (seed 004 §6): power lines across the sky over the meadow in front of the
+    // hall, seen from the door on the way out: three conductors sagging between poles every 15 m
+    // outside the side walls, 2.4 cm thick: under a pixel wide from the tour's viewpoints, drawn by
+    // the wire pass at their real energy instead of a pixel-wide line.
     const int32_t powerLines = int32_t(meshes->model.meshes.size());
     {
         content::Mesh lines;
@@ -378,7 +377,28 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     draw(place(registry, "runner", {0.0f, 0.01f, -0.5f}), runner);
     draw(place(registry, "back wall", {0.0f, 3.2f, -9.75f}), backWall);
     for (float side : {-1.0f, 1.0f}) {
-        draw(place(registry, "side wall", {side * 6.75f, 2.6f, -1.0f}), sideWall);
+        const float wallX = side * 6.75f, hallCentreZ = 0.5f * (kHallFrontZ + kHallBackZ);
+        draw(place(registry, "side wall", {wallX, 0.5f * kWindowBottom, hallCentreZ}),
+             sideWallBelow);
+        draw(place(registry, "side wall", {wallX, 0.5f * (kWallTop + kWindowTop), hallCentreZ}),
+             sideWallAbove);
+        const float pierY = 0.5f * (kWindowBottom + kWindowTop);
+        // Windows midway between the pillars: interior piers behind the pillars, end piers
+        // from the first and last windows to the back and front walls.
+        for (int i = 1; i < kPillarsPerRow - 1; ++i) {
+            draw(place(registry, "window pier",
+                       {wallX, pierY, kFirstPillarZ + kPillarSpacing * float(i)}),
+                 innerPier);
+        }
+        const float firstWindowStart = kFirstPillarZ + 0.5f * kPillarSpacing - 0.5f * kWindowWidth;
+        draw(place(registry, "window pier", {wallX, pierY, 0.5f * (kHallBackZ + firstWindowStart)}),
+             endPier);
+        draw(place(registry, "window pier", {wallX, pierY, kHallFrontZ - 0.5f * endPierLength}),
+             endPier);
+        draw(place(registry, "front wall",
+                   {side * (kDoorHalfWidth + frontPieceHalfWidth), 0.5f * kWallTop,
+                    kHallFrontZ + 0.125f}),
+             frontWall);
         for (int i = 0; i < kPillarsPerRow; ++i) {
             float z = kFirstPillarZ + kPillarSpacing * float(i);
             float x = side * kColonnadeX;
@@ -395,9 +415,32 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
              rib);
     }
 
-    draw(place(registry, "power lines", {0.0f, 0.0f, -6.0f}), powerLines);
+    draw(place(registry, "door lintel",
+               {0.0f, 0.5f * (kWallTop + kDoorHeight), kHallFrontZ + 0.125f}),
+         lintel);
+    const float roofY = kWallTop + kRoofHalfThickness;
+    for (int i = 0; i + 1 < kPillarsPerRow; ++i) {
+        draw(place(registry, "roof",
+                   {0.0f, roofY, kFirstPillarZ + kPillarSpacing * (float(i) + 1.0f)}),
+             roofPanel);
+    }
+    const float firstSkylightStart = kFirstPillarZ + 0.5f * kPillarSpacing - 0.5f * kSkylightWidth;
+    draw(place(registry, "roof", {0.0f, roofY, 0.5f * (kHallBackZ + firstSkylightStart)}),
+         endRoofPanel);
+    // The last skylight lies past the last rib; the roof beyond it reaches the front wall.
+    const float lastSkylightEnd =
+        kFirstPillarZ + kPillarSpacing * (float(kPillarsPerRow) - 0.5f) + 0.5f * kSkylightWidth;
+    if (lastSkylightEnd < kHallFrontZ) {
+        draw(place(registry, "roof", {0.0f, roofY, 0.5f * (lastSkylightEnd + kHallFrontZ)}, {},
+                   {1.0f, 1.0f, (kHallFrontZ - lastSkylightEnd) / endRoofLength}),
+             endRoofPanel);
+    }
+    draw(place(registry, "meadow", {0.0f, -0.02f, 0.0f}), meadow);
+
+    draw(place(registry, "power lines", {0.0f, 0.0f, kPowerLineZ}), powerLines);
     for (int i = 0; i <= 5; ++i) {
-        draw(place(registry, "power line pole", {-37.5f + 15.0f * float(i), 4.0f, -6.0f}), pole);
+        draw(place(registry, "power line pole", {-37.5f + 15.0f * float(i), 4.0f, kPowerLineZ}),
+             pole);
     }
     // The helmet on a pedestal in the middle of the hall.
     draw(place(registry, "helmet pedestal", {0.0f, 0.5f, -3.0f}), pedestal);
@@ -542,41 +585,40 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
         registry.emplace<DriftingLight>(e, drift);
     }
 
-    // Dust in the hall (issue 17): a thin, slightly forward-scattering medium.
+    // Dust in the hall (issue 17): a thin, slightly forward-scattering medium. It settles:
+    // its density halves every 2 m up (a Fog fills the whole scene, and without the falloff
+    // the 100 m of it drawn behind the meadow would take seven eighths of the daylit sky's
+    // light away).
     content::Fog dust;
     dust.scattering = 0.015f;
     dust.absorption = 0.005f;
     dust.anisotropy = 0.3f;
+    dust.heightFalloff = std::numbers::ln2_v<float> / 2.0f;
     registry.emplace<content::Fog>(place(registry, "dust", {}), dust);
 
-    // The sky (the renderer's image-based lighting reads it; the background stays a dim night
-    // until then).
-    ecs::Entity sky = place(registry, "sky", {});
-    const std::filesystem::path skyFile = sharedAssets() / "env/qwantani_afternoon_puresky_1k.exr";
-    registry.emplace<content::Sky>(sky, content::Sky{skyFile.string(), 1.0f});
-    // A sun where the sky's sun is, as bright as its disk, casting shadows (render/README.md
-    // "Shadows"): the light travels along the node's -Z, away from the sun.
-    if (const std::optional<SkySun> skySun = findSkySun(skyFile)) {
-        const ecs::Vec3 travel{-skySun->towardSun.x, -skySun->towardSun.y, -skySun->towardSun.z};
-        const ecs::Vec3 minusZ{0.0f, 0.0f, -1.0f};
-        ecs::Vec3 axis = ecs::cross(minusZ, travel);
-        if (ecs::length(axis) < 1e-6f) axis = {1.0f, 0.0f, 0.0f};
-        const float angle = std::acos(std::clamp(ecs::dot(minusZ, travel), -1.0f, 1.0f));
-        content::Light sun;
-        sun.type = content::LightType::Directional;
-        sun.lux = skySun->lux;
-        sun.color = {1.0f, 0.97f, 0.92f};
-        sun.castShadows = true;
-        // Through the dust, a hundred-thousand-lux sun would fog the hall over; a small
-        // volumetric scale leaves shafts through the open roof and the windows.
-        sun.volumetric = kDustSunShafts;
-        registry.emplace<content::Light>(
-            place(registry, "sun", {}, ecs::Quat::fromAxisAngle(axis, angle)), sun);
-    }
+    // The sky: Earth's atmosphere (Hillaire 2020; render/README.md "Atmosphere"), which lights
+    // the scene and draws the background; its sun walks the day (demoTimeOfDay). Latitude 45
+    // north at the June solstice: from 9:00 to 17:00 the sun climbs from 48 degrees in the
+    // east over 68 at noon and sinks to 27 in the west, shining through the skylights and
+    // the east, then the west windows.
+    content::Atmosphere atmosphere;
+    atmosphere.timeOfDay = demoTimeOfDay(0.0);
+    registry.emplace<content::Atmosphere>(place(registry, "sky", {}), atmosphere);
+    // The atmosphere's sun (the first directional light: its direction and illuminance come
+    // from the time of day), casting shadows (render/README.md "Shadows").
+    content::Light sun;
+    sun.type = content::LightType::Directional;
+    sun.castShadows = true;
+    // Through the dust, a hundred-thousand-lux sun would fog the hall over; a small
+    // volumetric scale leaves shafts through the skylights and the windows.
+    sun.volumetric = kDustSunShafts;
+    registry.emplace<content::Light>(place(registry, "sun", {}), sun);
 
     content::Camera camera;
     camera.exposureMode = content::ExposureMode::Manual;
-    camera.manualEv100 = 4.5f;
+    // Manual exposure (--exposure manual, the goldens) suits the daylight outside, where the
+    // tour starts; the demo meters and adapts (auto exposure) by default.
+    camera.manualEv100 = 14.0f;
     camera.verticalFov = 0.95f;
     CameraPose start = demoCameraPath().pose(0.0);
     ecs::Entity cam = place(registry, "camera", start.position, start.rotation);
@@ -661,6 +703,16 @@ void addDemoSystems(Application& app) {
            [](SceneWorld& world, const FrameContext& f) { animateDemoLights(world, f.seconds); })
         .reads<DriftingLight>()
         .writes<ecs::LocalTransform>();
+    app.addSystem("demo day cycle", ecs::Phase::Update,
+                  [](SceneWorld& world, const FrameContext& f) {
+                      const float hours = demoTimeOfDay(f.seconds);
+                      world.registry.view<content::Atmosphere>().each(
+                          [&](ecs::Entity e, content::Atmosphere& atmosphere) {
+                              atmosphere.timeOfDay = hours;
+                              world.registry.markChanged<content::Atmosphere>(e);
+                          });
+                  })
+        .writes<content::Atmosphere>();
     app.addSystem("demo camera", updateDemoCamera);
     addFlyCameraSystem(app);
 }

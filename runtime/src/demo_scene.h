@@ -2,7 +2,8 @@
 // `candela demo`: the demo level. A colonnaded hall built from the engine's own primitives,
 // the shared sample models (the damaged helmet, the metal/rough sphere grid), hundreds of
 // animated coloured point lights, a lamp bulb (sphere light), neon tubes (tube lights),
-// back-lit subsurface panels, toon (Legacy diffuse/specular) figures and an HDR sky.
+// back-lit subsurface panels, toon (Legacy diffuse/specular) figures, and outside it a meadow
+// under a physically based sky (an Atmosphere) whose sun crosses the day as the tour runs.
 // Headless runs follow a scripted camera path by scene time; windows fly (WASD + mouse).
 #include <array>
 #include <cstdint>
@@ -16,8 +17,16 @@ namespace candela::runtime {
 
 class Application;
 
-// A dim blue night behind the scene, cd/m^2 (until the renderer draws the Sky component).
+// A dim blue night behind the scene, cd/m^2: what a run without the atmosphere's sky (a
+// renderer that skips it) shows behind the hall.
 inline constexpr std::array<float, 4> kDemoBackgroundRadiance = {0.02f, 0.03f, 0.06f, 1.0f};
+
+// The day cycle over the hall (issue 16): the atmosphere's time of day (hours, solar time)
+// starts at kDemoDayStartHours and advances kDemoDayHoursPerSecond per second of scene time,
+// starting again with the camera path's loop (9:00 to 17:00 over the 32 s tour).
+// --time-of-day HH:MM holds the sun still at that time instead.
+inline constexpr float kDemoDayStartHours = 9.0f;
+inline constexpr float kDemoDayHoursPerSecond = 0.25f;
 
 // Animated coloured point lights (besides the bulb, the tubes and the panel back-lights).
 inline constexpr uint32_t kDemoAnimatedLights = 288;
@@ -28,6 +37,9 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics);
 // The tour the camera takes in headless runs (and in a window until the user flies).
 const CameraPath& demoCameraPath();
 
+// The atmosphere's time of day at `seconds` of scene time (hours since solar midnight).
+float demoTimeOfDay(double seconds);
+
 // Moves the animated lights to their positions at `seconds`.
 void animateDemoLights(SceneWorld& world, double seconds);
 
@@ -36,8 +48,9 @@ void animateDemoLights(SceneWorld& world, double seconds);
 // the fly camera system, fly_camera.h).
 void updateDemoCamera(SceneWorld& world, const FrameContext& frame);
 
-// The demo's systems, in this order: the drifting lights (declared: they read their drift and
-// write LocalTransform), the camera (exclusive: taking over adds a FlyCamera), fly cameras.
+// The demo's systems, in this order: the fox, the drifting lights (declared: they read their
+// drift and write LocalTransform), the day cycle (writes the Atmosphere), the camera (exclusive:
+// taking over adds a FlyCamera), fly cameras.
 void addDemoSystems(Application& app);
 
 }  // namespace candela::runtime

@@ -158,13 +158,21 @@ TEST(ApplicationOptions, AtmosphereFlags) {
     ASSERT_TRUE(result.options->timeOfDayHours);
     EXPECT_EQ(*result.options->timeOfDayHours, 17.75f);
     EXPECT_FALSE(parseCommandLine({}).options->atmosphere);
+    // `--atmosphere off` drops one (the demo's, in tests about something else).
+    CommandLine off = parseCommandLine({"--atmosphere", "off", "--frames", "2"});
+    ASSERT_TRUE(off.options) << off.error;
+    EXPECT_TRUE(off.options->atmosphereOff);
+    EXPECT_FALSE(off.options->atmosphere);
+    EXPECT_EQ(off.options->frames, 2u);
+    EXPECT_FALSE(result.options->atmosphereOff);
     EXPECT_NE(parseError({"--sun-elevation", "91"}).find("'91'"), std::string::npos);
     EXPECT_NE(parseError({"--sun-elevation", "high"}).find("--sun-elevation needs"),
               std::string::npos);
     EXPECT_NE(parseError({"--time-of-day", "25:00"}).find("'25:00'"), std::string::npos);
     EXPECT_NE(parseError({"--time-of-day", "12:60"}).find("HH:MM"), std::string::npos);
     EXPECT_NE(parseError({"--time-of-day", "noon"}).find("--time-of-day needs"), std::string::npos);
-    for (const char* flag : {"--atmosphere", "--sun-elevation DEG", "--time-of-day HH:MM"})
+    for (const char* flag :
+         {"--atmosphere", "--atmosphere off", "--sun-elevation DEG", "--time-of-day HH:MM"})
         EXPECT_NE(ApplicationOptions::standardFlagsUsage().find(flag), std::string::npos) << flag;
 }
 

@@ -86,6 +86,8 @@ struct ApplicationOptions {
     // density scale (render/README.md "Light shafts").
     std::optional<render::ScatteringMode> scattering;
     render::ScatteringSettings scatteringSettings;
+    // --atmosphere off: none, even where the scene has an Atmosphere component.
+    bool atmosphereOff = false;
     std::optional<float> sunElevationDegrees;
     std::optional<float> timeOfDayHours;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
