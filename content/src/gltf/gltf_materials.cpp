@@ -231,9 +231,11 @@ void readHairExtra(Context& context, const std::string& element, const tinygltf:
         out = v;
     };
     const float lowest = -std::numeric_limits<float>::max();
-    number("rootRadius", style.rootRadius, 0.0f, "a radius must be a finite number of metres above 0");
+    number("rootRadius", style.rootRadius, 0.0f,
+           "a radius must be a finite number of metres above 0");
     style.tipRadius = style.rootRadius;  // a tip radius not given: the strand keeps its width
-    number("tipRadius", style.tipRadius, 0.0f, "a radius must be a finite number of metres above 0");
+    number("tipRadius", style.tipRadius, 0.0f,
+           "a radius must be a finite number of metres above 0");
     number("primaryShift", style.primaryShift, lowest, "a shift must be a finite number");
     number("secondaryShift", style.secondaryShift, lowest, "a shift must be a finite number");
     number("primaryExponent", style.primaryExponent, 0.0f,

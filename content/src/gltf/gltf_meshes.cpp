@@ -338,8 +338,9 @@ void convertLines(Context& context, const tinygltf::Primitive& source, const std
                   Mesh& mesh) {
     const std::int32_t material =
         validIndex(source.material, context.model.materials) ? source.material : kNoIndex;
-    const Material* m =
-        material == kNoIndex ? nullptr : &context.model.materials[static_cast<std::size_t>(material)];
+    const Material* m = material == kNoIndex
+                            ? nullptr
+                            : &context.model.materials[static_cast<std::size_t>(material)];
     if (m != nullptr && m->hair) {
         if (source.mode == TINYGLTF_MODE_LINE_LOOP) {
             context.warning(element, "a line loop has no root or tip; hair skipped");

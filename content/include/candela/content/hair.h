@@ -31,7 +31,7 @@ std::vector<float> strandParameters(const std::vector<std::array<float, 3>>& pos
 // `seed`: the same seed gives the same hair), each `length` metres long along the surface
 // normal, bent by a small deterministic random lean, in `pointsPerStrand` - 1 segments.
 // Empty when the surface has no triangle of positive area.
-Hair generateHair(const Primitive& surface, std::uint32_t count, float length,
-                  std::uint32_t seed, std::uint32_t pointsPerStrand = 5);
+Hair generateHair(const Primitive& surface, std::uint32_t count, float length, std::uint32_t seed,
+                  std::uint32_t pointsPerStrand = 5);
 
 }  // namespace candela::content

@@ -81,13 +81,15 @@ struct MaterialLayering {
 // glTF: material extras `hair` {rootRadius, tipRadius, color, primaryShift, secondaryShift,
 // primaryExponent, secondaryExponent} (content/README.md).
 struct HairStyle {
-    float rootRadius = 4e-5f;  // metres
-    float tipRadius = 1e-5f;   // metres
+    float rootRadius = 4e-5f;                         // metres
+    float tipRadius = 1e-5f;                          // metres
     std::array<float, 3> color{0.35f, 0.22f, 0.12f};  // linear
     float primaryShift = 0.1f;
     float secondaryShift = -0.1f;
     float primaryExponent = 80.0f;
     float secondaryExponent = 20.0f;
+
+    bool operator==(const HairStyle&) const = default;
 };
 
 struct Material {
