@@ -202,4 +202,53 @@ TEST_F(Hair, AFullNodePoolIsCountedAndDegradesGracefully) {
     EXPECT_GT(stats.hairNodes, 0u);
 }
 
+// Cost per 10,000 strands (render/README.md "Hair"; slow label, not a bound): 10,000 strands of
+// 4 segments on a ball filling a 256x256 view, lit by a sun and a point light; each hair pass's
+// GPU milliseconds (median of 3 frames after a warm-up frame), printed.
+TEST(HairCost, Per10000Strands) {
+    GpuContext context(requiredValidation());
+    SceneResources resources(context);
+    FrameSequence frames(context, 256, 256);
+    candela::content::HairStyle style;
+    style.rootRadius = 0.002f;
+    style.tipRadius = 0.0005f;
+    const candela::content::Hair ball = hairBall(10000);
+    const std::vector<HairDraw> draws{{&ball, &style, glm::mat4(1.0f)}};
+    std::vector<LightInstance> lights(2);
+    lights[0].light.type = candela::content::LightType::Directional;
+    lights[0].direction = glm::normalize(glm::vec3(0.5f, -1.0f, -0.4f));
+    lights[1] = pointLight(glm::vec3(0.8f, 0.6f, -1.8f), 300.0f, 4.0f);
+    FrameInputs inputs;
+    inputs.scene.camera = cameraAtOrigin();
+    inputs.scene.hair = draws;
+    inputs.scene.lights = lights;
+    std::vector<std::vector<double>> ms(4);
+    const char* names[] = {"hair_clear", "hair_fill", "hair_resolve", "hair_depth"};
+    RendererStats stats;
+    frames.render(inputs, resources, &stats);  // pipelines
+    for (int frame = 0; frame < 3; ++frame) {
+        frames.render(inputs, resources, &stats);
+        for (const auto& [name, time] : stats.passMs) {
+            for (size_t i = 0; i < 4; ++i) {
+                if (name == names[i]) ms[i].push_back(time);
+            }
+        }
+    }
+    EXPECT_EQ(stats.hairNodesDropped, 0u);
+    std::printf("10,000 strands (40,000 segments), 256x256: %llu fragments\n",
+                static_cast<unsigned long long>(stats.hairNodes));
+    // hair_depth runs only when a later pass reads the depth (the graph culls it here).
+    for (size_t i = 0; i < 4; ++i) {
+        if (i < 3) {
+            ASSERT_EQ(ms[i].size(), 3u) << names[i];
+        }
+        if (ms[i].size() != 3u) {
+            std::printf("%-13s culled (nothing later reads the depth)\n", names[i]);
+            continue;
+        }
+        std::sort(ms[i].begin(), ms[i].end());
+        std::printf("%-13s %8.2f ms (median of 3)\n", names[i], ms[i][1]);
+    }
+}
+
 }  // namespace
