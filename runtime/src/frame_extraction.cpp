@@ -205,8 +205,14 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
 
     out.lastWorld.swap(out.lastWorldNext);
     // Fur of entities not drawn this frame (destroyed, hidden) is let go.
-    std::erase_if(out.grownHair,
-                  [](auto& entry) { return !std::exchange(entry.second.seen, false); });
+    for (auto it = out.grownHair.begin(); it != out.grownHair.end();) {
+        if (it->second.seen) {
+            it->second.seen = false;
+            ++it;
+        } else {
+            it = out.grownHair.erase(it);
+        }
+    }
 
     lights.update();
     out.lights = lights.lights();
