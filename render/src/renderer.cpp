@@ -34,6 +34,7 @@
 #include "passes/forward_transparent/msaa_samples.h"
 #include "passes/fxaa/fxaa_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
+#include "passes/hair/hair_pass.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/scattering/scattering_pass.h"
 #include "passes/shadows/shadow_pass.h"
@@ -775,6 +776,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.hdr = atmospherePass_->declareBackground(g, h.camera, h.depth, h.hdr, cameraBuffer_);
     }
     ssrTraced_ = false;
+    hairDrawn_ = false;
     const bool ssrHistoryWas = ssrHistoryValid_;
     ssrHistoryValid_ = false;  // unless this frame filters (a frame without SSR breaks it)
     if (options_.ssr != SsrMode::Off &&
@@ -918,6 +920,98 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     declareScattering(
         inputs, h,
         ShadowReads{features.shadows, shadowAtlas, shadowViews, shadowLights, shadowDescriptors});
+    // Hair (seed 004 §5) over the lit frame, under the wires and blended surfaces, which then
+    // see its depth.
+    if (!inputs.scene.hair.empty()) {
+        if (!hairPass_) hairPass_ = std::make_unique<HairPass>(context_);
+        if (hairPass_->prepare(inputs.scene, features, options_.hairShading)) {
+            features_.push_back("hair");
+            hairDrawn_ = true;
+            const uint32_t capacity = uint32_t(std::min<uint64_t>(
+                uint64_t(std::max(options_.hairNodesPerPixel, 1u)) * width_ * height_, 1u << 26));
+            hairNodeCapacity_ = capacity;
+            const glm::mat4& projection = inputs.scene.camera.projection;
+            HairPass::Inputs base{};
+            base.nodeCapacity = capacity;
+            base.pixelRadiusPerDepth = 1.0f / (std::abs(projection[1][1]) * float(height_));
+            base.nearPlane = inputs.scene.camera.nearPlane;
+            base.skyIntensity = skyIntensity;
+            ResourceHandle heads = g.createBuffer(
+                "hair.heads", HairPass::headBytes(width_, height_),
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+            ResourceHandle nodes = g.createBuffer("hair.nodes", HairPass::nodeBytes(capacity),
+                                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+            ResourceHandle counters = g.importBuffer("hair.counters", &hairPass_->counters(), true);
+            auto inputsOf = [this, ids, base, heads, nodes, environment,
+                             shadowDescriptors](PassContext& ctx) {
+                HairPass::Inputs in = base;
+                in.hdr = ctx.image(ids.hdr);
+                in.depth = ctx.image(ids.depth);
+                in.heads = ctx.buffer(heads);
+                in.nodes = ctx.buffer(nodes);
+                in.camera = &cameraBuffer_;
+                in.lights = &lights_->buffer();
+                in.clusterRanges = &clusters_->ranges();
+                in.lightIndices = &clusters_->indices();
+                in.depthRange = &clusters_->depthRange();
+                in.grid = &clusters_->grid();
+                in.directionalCount = clusters_->directionalCount();
+                in.environment = &environment;
+                in.shadows = &shadowDescriptors;
+                return in;
+            };
+            {
+                auto p =
+                    g.addPass("hair_clear", PassKind::Device, [this, inputsOf](PassContext& ctx) {
+                        hairPass_->recordClear(ctx.cmd(), inputsOf(ctx));
+                    });
+                heads = p.write(heads, Use::TransferDst);
+                counters = p.write(counters, Use::TransferDst);
+            }
+            {
+                auto p =
+                    g.addPass("hair_fill", PassKind::Device, [this, inputsOf](PassContext& ctx) {
+                        hairPass_->recordFill(ctx.cmd(), inputsOf(ctx));
+                    });
+                p.read(h.depth, Use::DepthRead);
+                p.read(h.camera, Use::Uniform, kRasterStages);
+                heads = p.write(heads, Use::StorageReadWrite, kFragmentStage);
+                nodes = p.write(nodes, Use::StorageWrite, kFragmentStage);
+                counters = p.write(counters, Use::StorageReadWrite, kFragmentStage);
+            }
+            {
+                auto p =
+                    g.addPass("hair_resolve", PassKind::Device, [this, inputsOf](PassContext& ctx) {
+                        hairPass_->recordResolve(ctx.cmd(), inputsOf(ctx));
+                    });
+                p.read(h.camera, Use::Uniform, kRasterStages);
+                p.read(h.lights, Use::StorageRead, kFragmentStage);
+                p.read(heads, Use::StorageRead, kFragmentStage);
+                p.read(nodes, Use::StorageRead, kFragmentStage);
+                if (features.clustered) {
+                    p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
+                    p.read(h.clusters.indices, Use::StorageRead, kFragmentStage);
+                    p.read(h.clusters.depthRange, Use::StorageRead, kFragmentStage);
+                }
+                if (features.shadows) {
+                    p.read(shadowAtlas, Use::Sampled, kFragmentStage);
+                    p.read(shadowViews, Use::StorageRead, kFragmentStage);
+                    p.read(shadowLights, Use::StorageRead, kFragmentStage);
+                }
+                h.hdr = p.write(h.hdr, Use::ColorAttachment);
+            }
+            {
+                auto p =
+                    g.addPass("hair_depth", PassKind::Device, [this, inputsOf](PassContext& ctx) {
+                        hairPass_->recordDepth(ctx.cmd(), inputsOf(ctx));
+                    });
+                p.read(h.camera, Use::Uniform, kRasterStages);
+                p.read(heads, Use::StorageRead, kFragmentStage);
+                p.read(nodes, Use::StorageRead, kFragmentStage);
+                h.depth = p.write(h.depth, Use::DepthWrite);
+            }
+        }
+    }
     // Wires (seed 004 §6) over the lit frame and its medium, under the blended surfaces.
     if (!inputs.scene.wires.empty()) {
         if (!wirePass_) wirePass_ = std::make_unique<WirePass>(context_);
@@ -1649,6 +1743,15 @@ const RendererStats& Renderer::collectStats() {
         if (name == "shadows") stats_.shadowMs = ms;
         if (name.starts_with("ssr_")) stats_.ssrMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
+    }
+    stats_.hairNodes = 0;
+    stats_.hairNodesDropped = 0;
+    stats_.hairNodeCapacity = 0;
+    if (hairDrawn_) {
+        stats_.hairNodes = hairPass_->requestedNodes();
+        stats_.hairNodeCapacity = hairNodeCapacity_;
+        stats_.hairNodesDropped =
+            stats_.hairNodes > hairNodeCapacity_ ? stats_.hairNodes - hairNodeCapacity_ : 0;
     }
     if (ssrTraced_) {
         const SsrPass::Counts c = ssrPass_->readCounters();

@@ -595,6 +595,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                 frame.scene.camera = s.extracted.camera;
                 frame.scene.draws = s.extracted.draws;
                 frame.scene.wires = s.extracted.wires;
+                frame.scene.hair = s.extracted.hair;
                 frame.scene.previousWorlds = s.extracted.previousWorlds;
                 frame.scene.deforms = s.extracted.deforms;
                 frame.scene.jointMatrices = s.extracted.jointMatrices;

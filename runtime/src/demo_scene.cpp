@@ -11,6 +11,7 @@
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
+#include "candela/content/components/hair_growth.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
@@ -364,6 +365,9 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     }
     const int32_t pole = meshes->add(content::makeBox({0.12f, 4.0f, 0.12f}),
                                      material({0.3f, 0.22f, 0.15f}, 0.0f, 0.8f));
+    // Issue 19 (seed 004 §5): the furry creature's body, under its fur (placed below).
+    const int32_t furryBody =
+        meshes->add(content::makeSphere(0.25f, 24, 12), material({0.18f, 0.1f, 0.05f}, 0.0f, 0.9f));
 
     const content::Model& model = world.adoptModel(
         std::unique_ptr<content::Model>(new content::Model(std::move(meshes->model))));
@@ -441,6 +445,20 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     for (int i = 0; i <= 5; ++i) {
         draw(place(registry, "power line pole", {-37.5f + 15.0f * float(i), 4.0f, kPowerLineZ}),
              pole);
+    }
+    // Issue 19 (seed 004 §5): a furry creature by the left colonnade, fur grown on its body
+    // (content::HairGrowth, as a scene file's "hair" block) and drawn by the hair pass.
+    {
+        const ecs::Entity creature = place(registry, "furry creature", {-2.2f, 0.3f, -4.5f});
+        draw(creature, furryBody);
+        content::HairGrowth fur;
+        fur.count = 2500;
+        fur.length = 0.09f;
+        fur.seed = 19;
+        fur.style.rootRadius = 0.0012f;
+        fur.style.tipRadius = 0.0003f;
+        fur.style.color = {0.62f, 0.38f, 0.17f};
+        registry.emplace<content::HairGrowth>(creature, fur);
     }
     // The helmet on a pedestal in the middle of the hall.
     draw(place(registry, "helmet pedestal", {0.0f, 0.5f, -3.0f}), pedestal);

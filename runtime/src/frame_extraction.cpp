@@ -4,12 +4,14 @@
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
+#include <utility>
 
 #include "candela/content/component_validation.h"
 #include "candela/content/components/animation.h"
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
+#include "candela/content/components/hair_growth.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/scene_components.h"
@@ -93,6 +95,7 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                   float aspect, ExtractedFrame& out) {
     out.draws.clear();
     out.wires.clear();
+    out.hair.clear();
     out.previousWorlds.clear();
     out.lastWorldNext.clear();
     out.deforms.clear();
@@ -123,6 +126,37 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
                     wire.material >= 0 && size_t(wire.material) < model.materials.size();
                 out.wires.push_back(
                     {&wire, named ? &model.materials[size_t(wire.material)] : nullptr, world});
+            }
+            if (const auto* growth = registry.tryGet<content::HairGrowth>(e)) {
+                // Fur grown on the mesh (a scene file's "hair"): generated once per entity
+                // and kept while its mesh and settings stay the same.
+                const content::Mesh* mesh = &model.meshes[size_t(instance.mesh)];
+                ExtractedFrame::GrownHair& grown = out.grownHair[e.bits()];
+                if (grown.mesh != mesh || !(grown.growth == *growth)) {
+                    grown.mesh = mesh;
+                    grown.growth = *growth;
+                    content::Primitive surface;
+                    for (const content::Primitive& primitive : mesh->primitives) {
+                        const auto base = uint32_t(surface.positions.size());
+                        surface.positions.insert(surface.positions.end(),
+                                                 primitive.positions.begin(),
+                                                 primitive.positions.end());
+                        surface.normals.insert(surface.normals.end(), primitive.normals.begin(),
+                                               primitive.normals.end());
+                        surface.normals.resize(surface.positions.size());
+                        for (uint32_t index : primitive.indices)
+                            surface.indices.push_back(base + index);
+                    }
+                    grown.hair =
+                        content::generateHair(surface, growth->count, growth->length, growth->seed);
+                }
+                grown.seen = true;
+                out.hair.push_back({&grown.hair, &grown.growth.style, world});
+            }
+            for (const content::Hair& hair : model.meshes[size_t(instance.mesh)].hair) {
+                if (hair.material < 0 || size_t(hair.material) >= model.materials.size()) continue;
+                const auto& style = model.materials[size_t(hair.material)].hair;
+                if (style) out.hair.push_back({&hair, &*style, world});
             }
             uint32_t first = uploaded.firstPrimitiveOfMesh[instance.mesh];
             auto last = out.lastWorld.find(e.bits());
@@ -170,6 +204,15 @@ void extractFrame(ecs::Registry& registry, LightTable& lights, render::SceneReso
         });
 
     out.lastWorld.swap(out.lastWorldNext);
+    // Fur of entities not drawn this frame (destroyed, hidden) is let go.
+    for (auto it = out.grownHair.begin(); it != out.grownHair.end();) {
+        if (it->second.seen) {
+            it->second.seen = false;
+            ++it;
+        } else {
+            it = out.grownHair.erase(it);
+        }
+    }
 
     lights.update();
     out.lights = lights.lights();

@@ -83,6 +83,11 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;
     json["light_list_grew"] = last.lightListGrew;
+    // Hair's A-buffer (last frame): fragments the fill asked nodes for, those a full pool
+    // dropped, and the pool's size.
+    json["hair_nodes"] = last.hairNodes;
+    json["hair_nodes_dropped"] = last.hairNodesDropped;
+    json["hair_node_capacity"] = last.hairNodeCapacity;
     json["culling_efficiency"] = cullingEfficiency(last);
     // Shadows: GPU ms of the shadow depth pass (median over frames; 0 in frames whose maps
     // were all cached), lights with maps, rendered, cached and kept (over the render budget) maps

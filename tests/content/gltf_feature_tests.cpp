@@ -7,9 +7,11 @@
 #include <numbers>
 
 #include "candela/content/gltf_loader.h"
+#include "candela/content/hair.h"
 #include "candela/content/light_texture.h"
 #include "candela/content/light_units.h"
 #include "candela/content/png_writer.h"
+#include "candela/content/procedural_mesh.h"
 #include "gltf_test_documents.h"
 #include "test_paths.h"
 
@@ -505,6 +507,100 @@ TEST(GltfFeatures, LinePrimitivesWithWireRadiusBecomeWires) {
     EXPECT_TRUE(diagnostics.mentions("meshes[0].primitives[4]")) << text;  // plain lines
     EXPECT_TRUE(diagnostics.mentions("lines")) << text;
     EXPECT_FALSE(diagnostics.mentions("meshes[0].primitives[1]")) << text;
+}
+
+// Issue 19 (seed 004 §5): LINES / LINE_STRIP primitives whose material's extras has a `hair`
+// object become hair strands (Mesh::hair) with each position's place from root (0) to tip
+// (1); the style's keys are read, missing ones keep their defaults (a missing tip radius: the
+// root's), and a wrong key is an error naming materials[i].extras.hair.<key>, the material
+// making no hair.
+TEST(GltfFeatures, LinePrimitivesWithHairExtrasBecomeStrands) {
+    json doc = quadDocument();
+    doc["materials"] = json::array({
+        {{"name", "fur"},
+         {"extras",
+          {{"hair",
+            {{"rootRadius", 0.002},
+             {"tipRadius", 0.0005},
+             {"color", {0.5, 0.25, 0.125}},
+             {"primaryShift", 0.2},
+             {"secondaryShift", -0.3},
+             {"primaryExponent", 60.0},
+             {"secondaryExponent", 12.0}}}}}},
+        {{"name", "plain hair"}, {"extras", {{"hair", {{"rootRadius", 0.001}}}}}},
+        {{"name", "bad radius"}, {"extras", {{"hair", {{"tipRadius", -1.0}}}}}},
+        {{"name", "bad colour"}, {"extras", {{"hair", {{"color", {2.0, 0.0, 0.0}}}}}}},
+        {{"name", "bad exponent"}, {"extras", {{"hair", {{"primaryExponent", "sharp"}}}}}},
+        {{"name", "not an object"}, {"extras", {{"hair", 3}}}},
+    });
+    auto lines = [](int mode, int material) {
+        return json{{"attributes", {{"POSITION", 0}}}, {"mode", mode}, {"material", material}};
+    };
+    doc["meshes"][0]["primitives"].push_back(lines(3, 0));  // LINE_STRIP: one strand
+    doc["meshes"][0]["primitives"].push_back(lines(1, 1));  // LINES: two strands 0-1, 2-3
+    for (int bad = 2; bad < 6; ++bad)
+        doc["meshes"][0]["primitives"].push_back(lines(3, bad));
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics, "hair.gltf");
+    ASSERT_TRUE(m) << diagnostics.toString();
+    const std::string text = diagnostics.toString();
+    ASSERT_EQ(m->meshes[0].hair.size(), 2u) << text;
+    ASSERT_TRUE(m->materials[0].hair);
+    const HairStyle& style = *m->materials[0].hair;
+    EXPECT_FLOAT_EQ(style.rootRadius, 0.002f);
+    EXPECT_FLOAT_EQ(style.tipRadius, 0.0005f);
+    EXPECT_FLOAT_EQ(style.color[1], 0.25f);
+    EXPECT_FLOAT_EQ(style.primaryShift, 0.2f);
+    EXPECT_FLOAT_EQ(style.secondaryShift, -0.3f);
+    EXPECT_FLOAT_EQ(style.primaryExponent, 60.0f);
+    EXPECT_FLOAT_EQ(style.secondaryExponent, 12.0f);
+    ASSERT_TRUE(m->materials[1].hair);
+    EXPECT_FLOAT_EQ(m->materials[1].hair->tipRadius, 0.001f);  // the root's
+    for (int bad = 2; bad < 6; ++bad)
+        EXPECT_FALSE(m->materials[size_t(bad)].hair) << bad;
+    const Hair& strip = m->meshes[0].hair[0];
+    EXPECT_EQ(strip.segments, (std::vector<std::uint32_t>{0, 1, 1, 2, 2, 3}));
+    ASSERT_EQ(strip.rootToTip.size(), 4u);
+    EXPECT_FLOAT_EQ(strip.rootToTip[0], 0.0f);
+    EXPECT_FLOAT_EQ(strip.rootToTip[3], 1.0f);
+    EXPECT_GT(strip.rootToTip[1], 0.0f);
+    EXPECT_LT(strip.rootToTip[1], strip.rootToTip[2]);
+    const Hair& pairs = m->meshes[0].hair[1];
+    EXPECT_EQ(pairs.material, 1);
+    EXPECT_EQ(pairs.rootToTip, (std::vector<float>{0.0f, 1.0f, 0.0f, 1.0f}));
+    EXPECT_TRUE(diagnostics.mentions("hair.gltf")) << text;
+    EXPECT_TRUE(diagnostics.mentions("materials[2].extras.hair.tipRadius")) << text;
+    EXPECT_TRUE(diagnostics.mentions("materials[3].extras.hair.color")) << text;
+    EXPECT_TRUE(diagnostics.mentions("materials[4].extras.hair.primaryExponent")) << text;
+    EXPECT_TRUE(diagnostics.mentions("materials[5].extras.hair")) << text;
+    EXPECT_TRUE(diagnostics.mentions("'bad radius'")) << text;
+}
+
+// Hair generated on a mesh (scene files, the demo): the same seed gives the same strands, a
+// different seed others; every root lies on the surface and every strand has its length.
+TEST(GltfFeatures, GeneratedHairIsDeterministicAndRootedOnTheSurface) {
+    const Primitive sphere = makeSphere(0.5f, 16, 8);
+    const Hair a = generateHair(sphere, 200, 0.1f, 7, 4);
+    const Hair b = generateHair(sphere, 200, 0.1f, 7, 4);
+    const Hair c = generateHair(sphere, 200, 0.1f, 8, 4);
+    ASSERT_EQ(a.positions.size(), 800u);
+    ASSERT_EQ(a.segments.size(), 200u * 3u * 2u);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_NE(a.positions, c.positions);
+    for (std::size_t s = 0; s < 200; ++s) {
+        const auto& root = a.positions[4 * s];
+        const float r = std::sqrt(root[0] * root[0] + root[1] * root[1] + root[2] * root[2]);
+        EXPECT_NEAR(r, 0.5f, 0.02f) << s;  // on the (faceted) sphere
+        float length = 0.0f;
+        for (std::size_t k = 1; k < 4; ++k) {
+            const auto& p = a.positions[4 * s + k - 1];
+            const auto& q = a.positions[4 * s + k];
+            length += std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
+        }
+        EXPECT_NEAR(length, 0.1f, 1e-5f) << s;
+        EXPECT_FLOAT_EQ(a.rootToTip[4 * s], 0.0f);
+        EXPECT_FLOAT_EQ(a.rootToTip[4 * s + 3], 1.0f);
+    }
 }
 
 }  // namespace

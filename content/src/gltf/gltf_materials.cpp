@@ -197,6 +197,67 @@ void readWireRadiusExtra(Context& context, const std::string& element,
     material.wireRadius = float(radius);
 }
 
+// extras.hair (seed 004 §5): the material's line primitives are hair strands of this style.
+// Every key is optional (HairStyle's defaults); a key that is present but wrong (a radius not a
+// finite number of metres above 0, a colour not three finite numbers in [0, 1], a shift not
+// finite, an exponent not a finite number above 0) is an error naming
+// materials[i].extras.hair.<key>, and the material makes no hair (its lines stay skipped).
+void readHairExtra(Context& context, const std::string& element, const tinygltf::Value& extras,
+                   Material& material) {
+    const tinygltf::Value* hair = member(extras, "hair");
+    if (hair == nullptr) return;
+    const std::string where = element + ".hair";
+    if (!hair->IsObject()) {
+        context.error(where, "material '" + material.name +
+                                 "': hair must be an object (rootRadius, tipRadius, color, "
+                                 "primaryShift, secondaryShift, primaryExponent, "
+                                 "secondaryExponent); its lines are skipped");
+        return;
+    }
+    HairStyle style;
+    bool valid = true;
+    auto number = [&](const char* key, float& out, float above, const char* rule) {
+        const tinygltf::Value* value = member(*hair, key);
+        if (value == nullptr) return;
+        float v = 0;
+        if (!readNumber(*hair, key, v) || !(v > above)) {
+            const std::string given =
+                value->IsNumber() ? std::to_string(value->GetNumberAsDouble()) : "not a number";
+            context.error(where + "." + key, "material '" + material.name + "': " + rule +
+                                                 " (given: " + given + "); its lines are skipped");
+            valid = false;
+            return;
+        }
+        out = v;
+    };
+    const float lowest = -std::numeric_limits<float>::max();
+    number("rootRadius", style.rootRadius, 0.0f,
+           "a radius must be a finite number of metres above 0");
+    style.tipRadius = style.rootRadius;  // a tip radius not given: the strand keeps its width
+    number("tipRadius", style.tipRadius, 0.0f,
+           "a radius must be a finite number of metres above 0");
+    number("primaryShift", style.primaryShift, lowest, "a shift must be a finite number");
+    number("secondaryShift", style.secondaryShift, lowest, "a shift must be a finite number");
+    number("primaryExponent", style.primaryExponent, 0.0f,
+           "an exponent must be a finite number above 0");
+    number("secondaryExponent", style.secondaryExponent, 0.0f,
+           "an exponent must be a finite number above 0");
+    if (member(*hair, "color") != nullptr) {
+        std::array<float, 3> color{};
+        if (!readNumbers(*hair, "color", color) ||
+            std::any_of(color.begin(), color.end(), [](float c) { return c < 0.0f || c > 1.0f; })) {
+            context.error(where + ".color",
+                          "material '" + material.name +
+                              "': a hair colour must be three finite numbers in [0, 1] (linear "
+                              "RGB); its lines are skipped");
+            valid = false;
+        } else {
+            style.color = color;
+        }
+    }
+    if (valid) material.hair = style;
+}
+
 void readEngineExtras(Context& context, const std::string& element, const tinygltf::Value& extras,
                       Material& material) {
     if (!extras.IsObject()) return;
@@ -234,6 +295,7 @@ void readEngineExtras(Context& context, const std::string& element, const tinygl
     color("specularColor", material.specularColor);
     readCavityExtra(context, element, extras, material);
     readWireRadiusExtra(context, element, extras, material);
+    readHairExtra(context, element, extras, material);
 }
 
 Material convertMaterial(Context& context, const tinygltf::Material& source,

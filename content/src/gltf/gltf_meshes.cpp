@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "candela/content/hair.h"
 #include "candela/content/normal_generation.h"
 #include "candela/content/tangent_generation.h"
 #include "gltf_accessors.h"
@@ -241,44 +242,34 @@ std::vector<std::uint32_t> toSegments(const std::vector<std::uint32_t>& in, int 
     return out;
 }
 
-// A line primitive whose material has extras.wireRadius: a wire (seed 004 §6). Others are
-// skipped with a warning, as points are.
-std::optional<Wire> convertWire(Context& context, const tinygltf::Primitive& source,
-                                const std::string& element) {
-    const std::int32_t material =
-        validIndex(source.material, context.model.materials) ? source.material : kNoIndex;
-    const float radius =
-        material == kNoIndex
-            ? 0.0f
-            : context.model.materials[static_cast<std::size_t>(material)].wireRadius;
-    if (radius <= 0.0f) {
-        context.warning(element, "mode " + std::to_string(source.mode) +
-                                     " (lines) is not supported without a material whose "
-                                     "extras.wireRadius makes it a wire; primitive skipped");
-        return std::nullopt;
-    }
+// A line primitive's positions and segments (index pairs), shared by wires and hair. `what`
+// names the result in messages ("wire", "hair").
+struct LinePrimitive {
+    std::vector<std::array<float, 3>> positions;
+    std::vector<std::uint32_t> segments;
+};
+std::optional<LinePrimitive> readLines(Context& context, const tinygltf::Primitive& source,
+                                       const std::string& element, const std::string& what) {
     const GltfLoadOptions& options = context.options;
     const AccessorLimits limits{options.maxElementsWithoutBufferView};
     auto position = source.attributes.find("POSITION");
     if (position == source.attributes.end()) {
-        context.error(element, "has no POSITION attribute; wire skipped");
+        context.error(element, "has no POSITION attribute; " + what + " skipped");
         return std::nullopt;
     }
     std::vector<float> flat;
     if (std::string error = readFloats(context.document, position->second, 3, flat, limits);
         !error.empty() || flat.empty() || flat.size() / 3 > options.maxVerticesPerPrimitive) {
         context.error(element, "POSITION: " + (error.empty() ? "no or too many vertices" : error) +
-                                   "; wire skipped");
+                                   "; " + what + " skipped");
         return std::nullopt;
     }
     if (!allFinite(flat)) {
-        context.error(element, "POSITION has NaN/Inf values; wire skipped");
+        context.error(element, "POSITION has NaN/Inf values; " + what + " skipped");
         return std::nullopt;
     }
-    Wire wire;
-    wire.positions = packed<3>(flat);
-    wire.radius = radius;
-    wire.material = material;
+    LinePrimitive lines;
+    lines.positions = packed<3>(flat);
     std::vector<std::uint32_t> indices;
     if (source.indices >= 0 || source.indices < -1) {
         std::uint64_t indexCount = 0;
@@ -288,30 +279,86 @@ std::optional<Wire> convertWire(Context& context, const tinygltf::Primitive& sou
         }
         if (error.empty()) error = readIndices(context.document, source.indices, indices, limits);
         if (!error.empty()) {
-            context.error(element, "indices: " + error + "; wire skipped");
+            context.error(element, "indices: " + error + "; " + what + " skipped");
             return std::nullopt;
         }
         for (std::size_t i = 0; i < indices.size(); ++i) {
-            if (indices[i] >= wire.positions.size()) {
+            if (indices[i] >= lines.positions.size()) {
                 context.error(element, "index " + std::to_string(indices[i]) + " at position " +
                                            std::to_string(i) + " is not below the vertex count " +
-                                           std::to_string(wire.positions.size()) +
-                                           "; wire skipped");
+                                           std::to_string(lines.positions.size()) + "; " + what +
+                                           " skipped");
                 return std::nullopt;
             }
         }
     } else {
-        indices.resize(wire.positions.size());
+        indices.resize(lines.positions.size());
         for (std::uint32_t i = 0; i < indices.size(); ++i)
             indices[i] = i;
     }
-    wire.segments = toSegments(indices, source.mode);
-    wire.segments.resize(wire.segments.size() / 2 * 2);
-    if (wire.segments.empty()) {
-        context.warning(element, "has no line segment; wire skipped");
+    lines.segments = toSegments(indices, source.mode);
+    lines.segments.resize(lines.segments.size() / 2 * 2);
+    if (lines.segments.empty()) {
+        context.warning(element, "has no line segment; " + what + " skipped");
         return std::nullopt;
     }
+    return lines;
+}
+
+// A line primitive whose material has extras.wireRadius: a wire (seed 004 §6).
+std::optional<Wire> convertWire(Context& context, const tinygltf::Primitive& source,
+                                const std::string& element, std::int32_t material, float radius) {
+    auto lines = readLines(context, source, element, "wire");
+    if (!lines) return std::nullopt;
+    Wire wire;
+    wire.positions = std::move(lines->positions);
+    wire.segments = std::move(lines->segments);
+    wire.radius = radius;
+    wire.material = material;
     return wire;
+}
+
+// A line primitive whose material has extras.hair: hair strands (seed 004 §5), each segment
+// pointing from root toward tip as the file orders it.
+std::optional<Hair> convertHair(Context& context, const tinygltf::Primitive& source,
+                                const std::string& element, std::int32_t material) {
+    auto lines = readLines(context, source, element, "hair");
+    if (!lines) return std::nullopt;
+    Hair hair;
+    hair.positions = std::move(lines->positions);
+    hair.segments = std::move(lines->segments);
+    hair.rootToTip = strandParameters(hair.positions, hair.segments);
+    hair.material = material;
+    return hair;
+}
+
+// Lines: hair when the material has extras.hair, a wire when it has extras.wireRadius; others
+// are skipped with a warning, as points are.
+void convertLines(Context& context, const tinygltf::Primitive& source, const std::string& element,
+                  Mesh& mesh) {
+    const std::int32_t material =
+        validIndex(source.material, context.model.materials) ? source.material : kNoIndex;
+    const Material* m = material == kNoIndex
+                            ? nullptr
+                            : &context.model.materials[static_cast<std::size_t>(material)];
+    if (m != nullptr && m->hair) {
+        if (source.mode == TINYGLTF_MODE_LINE_LOOP) {
+            context.warning(element, "a line loop has no root or tip; hair skipped");
+        } else if (auto hair = convertHair(context, source, element, material)) {
+            mesh.hair.push_back(std::move(*hair));
+        }
+        return;
+    }
+    if (m == nullptr || m->wireRadius <= 0.0f) {
+        context.warning(element, "mode " + std::to_string(source.mode) +
+                                     " (lines) is not supported without a material whose "
+                                     "extras.wireRadius makes it a wire or extras.hair hair; "
+                                     "primitive skipped");
+        return;
+    }
+    if (auto wire = convertWire(context, source, element, material, m->wireRadius)) {
+        mesh.wires.push_back(std::move(*wire));
+    }
 }
 
 // glTF requires every primitive of a mesh to have the same number of targets and the mesh's
@@ -349,9 +396,7 @@ void convertMeshes(Context& context) {
             const std::string element =
                 elementName("meshes", m) + "." + elementName("primitives", p);
             if (isLineMode(meshes[m].primitives[p].mode)) {
-                if (auto wire = convertWire(context, meshes[m].primitives[p], element)) {
-                    mesh.wires.push_back(std::move(*wire));
-                }
+                convertLines(context, meshes[m].primitives[p], element, mesh);
                 continue;
             }
             if (auto primitive = convertPrimitive(context, meshes[m].primitives[p], element)) {

@@ -135,6 +135,7 @@ std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDo
         if (source.camera) registry.emplace<Camera>(e, *source.camera);
         if (source.sky) registry.emplace<Sky>(e, *source.sky);
         if (source.fog) registry.emplace<Fog>(e, *source.fog);
+        if (source.hair) registry.emplace<HairGrowth>(e, *source.hair);
         if (source.atmosphere) registry.emplace<Atmosphere>(e, *source.atmosphere);
         if (!source.gameDataJson.empty())
             registry.emplace<GameData>(e, GameData{source.gameDataJson});
@@ -192,6 +193,7 @@ SceneDocument captureScene(ecs::Registry& registry) {
         if (const auto* camera = registry.tryGet<Camera>(e)) out.camera = *camera;
         if (const auto* sky = registry.tryGet<Sky>(e)) out.sky = *sky;
         if (const auto* fog = registry.tryGet<Fog>(e)) out.fog = *fog;
+        if (const auto* hair = registry.tryGet<HairGrowth>(e)) out.hair = *hair;
         if (const auto* atmosphere = registry.tryGet<Atmosphere>(e)) out.atmosphere = *atmosphere;
         if (const auto* data = registry.tryGet<GameData>(e)) out.gameDataJson = data->json;
     }

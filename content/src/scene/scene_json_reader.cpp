@@ -141,6 +141,36 @@ public:
             allowed += (allowed.empty() ? "" : ", ") + std::string(entry.second);
         error(p + "/" + key, "'" + text + "' is not one of: " + allowed);
     }
+    // "hair": fur grown on the entity's mesh (components/hair_growth.h). Radii and exponents
+    // must be above 0, the colour in [0, 1], the count 1 to 1,000,000 and the length above 0.
+    void hair(const json& h, const std::string& p, bool hasMesh, HairGrowth& out) {
+        if (!hasMesh) return error(p, "hair grows on a mesh: the entity needs a \"mesh\"");
+        integer(h, p, "count", out.count, 1, 1000000);
+        number(h, p, "length", out.length);
+        integer(h, p, "seed", out.seed, 0, std::numeric_limits<std::uint32_t>::max());
+        if (!(out.length > 0.0f)) error(p + "/length", "a hair length must be above 0 metres");
+        const json* s = nullptr;
+        if (!object(h, p, "style", s)) return;
+        const std::string q = p + "/style";
+        HairStyle& style = out.style;
+        number(*s, q, "rootRadius", style.rootRadius);
+        style.tipRadius = style.rootRadius;  // not given: the strand keeps its width
+        number(*s, q, "tipRadius", style.tipRadius);
+        numbers(*s, q, "color", style.color);
+        number(*s, q, "primaryShift", style.primaryShift);
+        number(*s, q, "secondaryShift", style.secondaryShift);
+        number(*s, q, "primaryExponent", style.primaryExponent);
+        number(*s, q, "secondaryExponent", style.secondaryExponent);
+        if (!(style.rootRadius > 0.0f)) error(q + "/rootRadius", "a radius must be above 0");
+        if (!(style.tipRadius > 0.0f)) error(q + "/tipRadius", "a radius must be above 0");
+        for (float c : style.color) {
+            if (c < 0.0f || c > 1.0f) error(q + "/color", "a hair colour must be in [0, 1]");
+        }
+        if (!(style.primaryExponent > 0.0f))
+            error(q + "/primaryExponent", "an exponent must be above 0");
+        if (!(style.secondaryExponent > 0.0f))
+            error(q + "/secondaryExponent", "an exponent must be above 0");
+    }
     bool object(const json& parent, const std::string& p, const char* key, const json*& out) {
         auto it = parent.find(key);
         if (it == parent.end()) return false;
@@ -560,6 +590,10 @@ public:
                 })) {
                 e.fog = value;
             }
+        }
+        if (const json* h = nullptr; object(j, p, "hair", h)) {
+            HairGrowth value;
+            if (clean([&] { hair(*h, p + "/hair", e.mesh.has_value(), value); })) e.hair = value;
         }
         if (const json* a = nullptr; object(j, p, "atmosphere", a)) {
             Atmosphere value;

@@ -223,6 +223,23 @@ struct Writer {
                           {"heightFalloff", number(e.fog->heightFalloff, q + "heightFalloff")},
                           {"baseHeight", number(e.fog->baseHeight, q + "baseHeight")}};
         }
+        if (e.hair) {
+            const std::string q = p + "/hair/";
+            const HairStyle& s = e.hair->style;
+            out["hair"] = {
+                {"count", e.hair->count},
+                {"length", number(e.hair->length, q + "length")},
+                {"seed", e.hair->seed},
+                {"style",
+                 {{"rootRadius", number(s.rootRadius, q + "style/rootRadius")},
+                  {"tipRadius", number(s.tipRadius, q + "style/tipRadius")},
+                  {"color", {s.color[0], s.color[1], s.color[2]}},
+                  {"primaryShift", number(s.primaryShift, q + "style/primaryShift")},
+                  {"secondaryShift", number(s.secondaryShift, q + "style/secondaryShift")},
+                  {"primaryExponent", number(s.primaryExponent, q + "style/primaryExponent")},
+                  {"secondaryExponent",
+                   number(s.secondaryExponent, q + "style/secondaryExponent")}}}};
+        }
         if (e.atmosphere) {
             const Atmosphere& a = *e.atmosphere;
             const std::string q = p + "/atmosphere/";

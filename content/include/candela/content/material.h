@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,24 @@ struct MaterialLayering {
     bool used() const { return !layers.empty(); }
 };
 
+// A hair material (seed 004 §5): the strand's radius from root to tip, its colour (K_d of the
+// diffuse K_d sin(t, l)) and Kajiya-Kay's two highlights, each from a tangent tilted toward
+// the normal by its shift (the primary toward the tip, coloured by the light; the secondary
+// toward the root, coloured by the light and the hair) and sharpened by its exponent.
+// glTF: material extras `hair` {rootRadius, tipRadius, color, primaryShift, secondaryShift,
+// primaryExponent, secondaryExponent} (content/README.md).
+struct HairStyle {
+    float rootRadius = 4e-5f;                         // metres
+    float tipRadius = 1e-5f;                          // metres
+    std::array<float, 3> color{0.35f, 0.22f, 0.12f};  // linear
+    float primaryShift = 0.1f;
+    float secondaryShift = -0.1f;
+    float primaryExponent = 80.0f;
+    float secondaryExponent = 20.0f;
+
+    bool operator==(const HairStyle&) const = default;
+};
+
 struct Material {
     std::string name;
     ShadingModel shadingModel = ShadingModel::DefaultLit;
@@ -133,6 +152,9 @@ struct Material {
     // extras.wireRadius (metres, > 0): line primitives with this material are wires (wire.h);
     // 0: lines with it are skipped.
     float wireRadius = 0;
+
+    // extras.hair (seed 004 §5): line primitives with this material are hair strands (hair.h).
+    std::optional<HairStyle> hair;
 
     MaterialLayering layering;  // compiled out of frames without layered materials
 

@@ -11,6 +11,7 @@
 #include "candela/content/animation.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/light.h"
+#include "candela/content/hair.h"
 #include "candela/content/image.h"
 #include "candela/content/material.h"
 #include "candela/content/wire.h"
@@ -57,6 +58,7 @@ struct Mesh {
     std::string name;
     std::vector<Primitive> primitives;  // primitives that failed to load are left out
     std::vector<Wire> wires;            // line primitives whose material has a wireRadius
+    std::vector<Hair> hair;             // line primitives whose material has extras.hair
     // Morph target weights when no node or animation sets them; one per target (all
     // primitives of a mesh have the same target count, or none of them keeps targets).
     std::vector<float> defaultWeights;

@@ -25,6 +25,7 @@
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/fog.h"
+#include "candela/content/components/hair_growth.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/scene_components.h"
 #include "candela/content/components/sky.h"
@@ -98,6 +99,9 @@ struct SceneEntity {
     std::optional<Fog> fog;  // "fog": {"scattering", "absorption", "anisotropy", ...}
     // "atmosphere": {"rayleighScattering": [r, g, b], "mieScattering", ...} (atmosphere.h)
     std::optional<Atmosphere> atmosphere;
+    // "hair": {"count", "length", "seed", "style": {the glTF extras.hair keys}}, only with a
+    // "mesh": fur grown on it (components/hair_growth.h).
+    std::optional<HairGrowth> hair;
     // Free-form game data as JSON text; empty when none. Loading gives the canonical form
     // (compact, object keys sorted), which saving and loading again preserves exactly.
     std::string gameDataJson;

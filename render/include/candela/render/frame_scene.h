@@ -10,6 +10,7 @@
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
+#include "candela/content/hair.h"
 #include "candela/content/material.h"
 #include "candela/content/wire.h"
 
@@ -69,6 +70,14 @@ struct WireDraw {
     glm::mat4 world{1.0f};
 };
 
+// Hair strands (content/hair.h) at `world` in `style` (the material's extras.hair; null: not
+// drawn). Both point into models (or scenes) that outlive the frame.
+struct HairDraw {
+    const content::Hair* hair = nullptr;
+    const content::HairStyle* style = nullptr;
+    glm::mat4 world{1.0f};
+};
+
 struct LightInstance {
     content::Light light;
     glm::vec3 position{0.0f};
@@ -89,6 +98,8 @@ struct FrameScene {
     std::span<const LightInstance> lights;
     // Wires (seed 004 §6): drawn by the wire pass after the lit frame, not by the mesh passes.
     std::span<const WireDraw> wires;
+    // Hair (seed 004 §5): drawn by the hair pass (an A-buffer) after the lit frame.
+    std::span<const HairDraw> hair;
     // Light slots whose data changed since the previous frame. When lightsRestructured is set
     // (lights added or removed, or the caller does not track changes) every light is rewritten.
     std::span<const uint32_t> changedLights;

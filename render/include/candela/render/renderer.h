@@ -26,6 +26,7 @@ namespace candela::render {
 class ClusterLightLists;
 class ForwardTransparentPass;
 class WirePass;
+class HairPass;
 class EnvironmentBrdfLut;
 class EnvironmentPlaceholders;
 class EnvironmentSamplingTable;
@@ -203,6 +204,9 @@ private:
     bool scatteringMarched_ = false;  // this frame declared light shafts (their counters)
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
     std::unique_ptr<WirePass> wirePass_;  // made for the first frame with wires
+    std::unique_ptr<HairPass> hairPass_;  // made for the first frame with hair
+    bool hairDrawn_ = false;              // the last recorded frame drew hair (its stats)
+    uint32_t hairNodeCapacity_ = 0;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<SkinningPass> skinningPass_;    // made on the first frame with animation

@@ -130,6 +130,11 @@ struct ScatteringSettings {
 // the naive line a pixel wide at full alpha it replaces (for measurement).
 enum class WireMode { Coverage, Naive };
 
+// Hair (seed 004 §5, render/README.md "Hair"): Kajiya-Kay shading, or every strand fragment
+// unlit radiance 1 times its coverage (the GPAA measurement: a strand's column sums are its
+// width in pixels).
+enum class HairShading { Lit, Coverage };
+
 struct VolumetricsSettings {
     // Froxel grid at 1280x720 (scaled with the image, at least 8x8), exponential depth slices
     // from the near plane to `froxelFar` metres.
@@ -244,6 +249,11 @@ struct RendererOptions {
     VolumetricsMode volumetrics = VolumetricsMode::Off;
     VolumetricsSettings volumetricsSettings;
     WireMode wires = WireMode::Coverage;
+    HairShading hairShading = HairShading::Lit;
+    // The hair A-buffer's node pool: this many nodes per pixel of the target. Fragments beyond
+    // it are dropped (the nearest few of a pixel then may be missing) and counted
+    // (RendererStats::hairNodesDropped).
+    uint32_t hairNodesPerPixel = 8;
     // The pass settings other than radius and intensity (those are the scene's, per frame).
     AmbientOcclusionSettings aoSettings;
     // Shadows (render/README.md "Shadows"): lights with castShadows get maps when on.
@@ -308,6 +318,11 @@ struct RendererStats {
     // Clusters whose device-built list did not fit, so lighting evaluated every light there
     // (slower, never wrong), summed over frames; the CPU path never overflows.
     uint64_t lightListOverflows = 0;
+    // Hair (--stats hair_nodes, hair_nodes_dropped, hair_node_capacity): strand fragments the
+    // last frame's A-buffer fill asked for, those the full pool dropped, and the pool's size.
+    uint64_t hairNodes = 0;
+    uint64_t hairNodesDropped = 0;
+    uint64_t hairNodeCapacity = 0;
     // The frame graph (--stats `passes`, `frame_graph`): each live pass's GPU milliseconds
     // (a host pass: CPU), in execution order.
     using PassTime = std::pair<std::string, double>;

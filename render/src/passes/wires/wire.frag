@@ -14,6 +14,7 @@
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
 #include "common/light_buffer.glsl"
+#include "common/screen_segment.glsl"
 #include "common/shading_models.glsl"
 #define SHADOW_ATLAS_BINDING WIRE_BINDING_SHADOW_ATLAS
 #define SHADOW_ATLAS_COMPARE_BINDING WIRE_BINDING_SHADOW_ATLAS_COMPARE
@@ -79,27 +80,17 @@ vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha,
 
 void main() {
     const WireSegment s = segments[inSegment];
-    // Coverage: the overlap of the clamped width [-h, h] with a box across the wire centred
-    // on the pixel, as wide as the step between neighbouring pixel centres across the wire
-    // (b, 1 for an axis-aligned wire), over b. The boxes of a column (a row, for a wire
-    // steeper than 45 degrees) then tile the line without gap or overlap, so the coverages
-    // sum to the wire's cross-section 2h / b wherever it lies: no energy lost, no flicker.
-    // The naive line keeps full coverage.
-    // The pixel centre's distance to the centre line, and its place along the segment for the
-    // width and fade (linear on screen, as wire.vert's quad is).
-    const vec2 fromStart = gl_FragCoord.xy - inEndsPx.xy;
-    const vec2 line = inEndsPx.zw - inEndsPx.xy;
-    const float lengthSquared = dot(line, line);
-    const vec2 along = lengthSquared > 1e-12 ? line * inversesqrt(lengthSquared) : vec2(1.0, 0.0);
-    const float distancePx = abs(dot(fromStart, vec2(-along.y, along.x)));
-    const float t =
-        lengthSquared > 1e-12 ? clamp(dot(fromStart, line) / lengthSquared, 0.0, 1.0) : 0.0;
+    // Coverage of the clamped width (common/screen_segment.glsl), from the pixel centre's
+    // distance to the centre line; its place along the segment gives the width and fade
+    // (linear on screen, as wire.vert's quad is). The naive line keeps full coverage.
+    const vec2 place = pixelPlaceOnSegment(gl_FragCoord.xy, inEndsPx);
+    const float distancePx = place.x;
+    const float t = place.y;
     const float halfWidthPx = mix(inHalfWidthPx.x, inHalfWidthPx.y, t);
     const float fade = mix(inFade.x, inFade.y, t);
-    const float b = inPixelStep;
-    const float overlap =
-        min(distancePx + 0.5 * b, halfWidthPx) - max(distancePx - 0.5 * b, -halfWidthPx);
-    const float coverage = draw.mode == WIRE_MODE_NAIVE ? 1.0 : clamp(overlap / b, 0.0, 1.0);
+    const float coverage = draw.mode == WIRE_MODE_NAIVE
+                               ? 1.0
+                               : segmentCoverage(distancePx, halfWidthPx, inPixelStep);
     const float alpha = coverage * fade;
     if (alpha <= 0.0) discard;
 

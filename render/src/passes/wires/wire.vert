@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
+#include "common/screen_segment.glsl"
 #include "wire_bindings.h"
 #include "wire_segment.glsl"
 // Wire antialiasing (seed 004 §6, Persson's "phone-wire AA"): each segment becomes a
@@ -26,45 +27,15 @@ layout(location = 4) flat out uint outSegment;
 // wire.frag's box width.
 layout(location = 5) flat out float outPixelStep;
 
-// Two triangles: (end, side) of each of the six vertices.
-const vec2 kCorners[6] =
-    vec2[](vec2(0, -1), vec2(1, -1), vec2(1, 1), vec2(0, -1), vec2(1, 1), vec2(0, 1));
-
-vec2 toPixels(vec4 clip) {
-    return (clip.xy / clip.w * 0.5 + 0.5) * draw.targetSize;
-}
-
-// Narrows `range` (parameters along the segment) to where the plane distance, linear from d0
-// at the start to d1 at the end, is >= 0.
-void clipSegment(float d0, float d1, inout vec2 range) {
-    if (d0 < 0.0 && d1 < 0.0) {
-        range = vec2(1.0, 0.0);
-    } else if (d0 < 0.0) {
-        range.x = max(range.x, d0 / (d0 - d1));
-    } else if (d1 < 0.0) {
-        range.y = min(range.y, d0 / (d0 - d1));
-    }
-}
-
 void main() {
     const uint segment = uint(gl_VertexIndex) / 6u;
-    const vec2 corner = kCorners[uint(gl_VertexIndex) % 6u];
+    const vec2 corner = kSegmentQuadCorners[uint(gl_VertexIndex) % 6u];
     const WireSegment s = segments[segment];
     outSegment = segment;
     vec4 c0 = camera.viewProjection * vec4(s.start.xyz, 1.0);
     vec4 c1 = camera.viewProjection * vec4(s.end.xyz, 1.0);
-    // Clip coordinates are linear along the segment: keep the part in front of the near plane
-    // (clip.w is the view depth) and within half a screen of the view on each side, so the
-    // rasteriser never clips a quad itself (lavapipe's clipper returns NaN attributes for
-    // these slivers) and far-off ends keep their precision. Nothing left: a degenerate quad.
-    vec2 range = vec2(0.0, 1.0);
-    const float kSides = 2.0;  // |x|, |y| <= 2 w: half a screen beyond each edge
-    clipSegment(c0.w - draw.nearPlane, c1.w - draw.nearPlane, range);
-    clipSegment(kSides * c0.w - c0.x, kSides * c1.w - c1.x, range);
-    clipSegment(kSides * c0.w + c0.x, kSides * c1.w + c1.x, range);
-    clipSegment(kSides * c0.w - c0.y, kSides * c1.w - c1.y, range);
-    clipSegment(kSides * c0.w + c0.y, kSides * c1.w + c1.y, range);
-    if (!(range.x < range.y)) {
+    vec2 range;
+    if (!clipSegmentToView(c0, c1, draw.nearPlane, range)) {
         gl_Position = vec4(0.0, 0.0, -1.0, 1.0);
         outEndsPx = vec4(0.0);
         outHalfWidthPx = vec2(0.0);
@@ -72,14 +43,11 @@ void main() {
         outPixelStep = 1.0;
         return;
     }
-    const vec4 start = mix(c0, c1, range.x);
-    c1 = mix(c0, c1, range.y);
-    c0 = start;
 
-    vec2 along = toPixels(c1) - toPixels(c0);
+    vec2 along = clipToPixels(c1, draw.targetSize) - clipToPixels(c0, draw.targetSize);
     along = dot(along, along) > 1e-12 ? normalize(along) : vec2(1.0, 0.0);
     const vec2 across = vec2(-along.y, along.x);
-    outPixelStep = max(abs(along.x), abs(along.y));
+    outPixelStep = segmentPixelStep(along);
 
     // Both ends' widths in every vertex, so the flat values do not depend on the provoking one.
     const float radius = s.start.w;
@@ -100,7 +68,7 @@ void main() {
     const float extentPx = draw.mode == WIRE_MODE_NAIVE ? halfWidthPx[end] : halfWidthPx[end] + 1.0;
     clip.xy += across * (corner.y * extentPx) * (2.0 / draw.targetSize) * clip.w;
     gl_Position = clip;
-    outEndsPx = vec4(toPixels(c0), toPixels(c1));
+    outEndsPx = vec4(clipToPixels(c0, draw.targetSize), clipToPixels(c1, draw.targetSize));
     outHalfWidthPx = halfWidthPx;
     outFade = fade;
 }

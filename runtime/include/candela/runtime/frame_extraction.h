@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "candela/content/components/hair_growth.h"
+#include "candela/content/model.h"
 #include "candela/ecs/registry.h"
 #include "candela/render/frame_scene.h"
 #include "candela/render/scene_resources.h"
@@ -22,6 +24,16 @@ struct ExtractedFrame {
     std::vector<glm::mat4> previousWorlds;
     // The mesh instances' wires (content::Mesh::wires), drawn by the wire pass.
     std::vector<render::WireDraw> wires;
+    // The mesh instances' hair (content::Mesh::hair), drawn by the hair pass.
+    std::vector<render::HairDraw> hair;
+    // Fur grown on entities' meshes (content::HairGrowth), per entity: what `hair` points to.
+    struct GrownHair {
+        const content::Mesh* mesh = nullptr;
+        content::HairGrowth growth;
+        content::Hair hair;
+        bool seen = false;  // drawn this frame; others are dropped after extraction
+    };
+    std::unordered_map<uint64_t, GrownHair> grownHair;
     std::unordered_map<uint64_t, glm::mat4> lastWorld;      // per entity, last frame
     std::unordered_map<uint64_t, glm::mat4> lastWorldNext;  // being filled this frame
     std::span<const render::LightInstance> lights;          // the light table's slots

@@ -1,0 +1,43 @@
+// Bindings of the hair shaders (hair_fill.*, hair_resolve.frag, hair_depth.frag), shared with
+// hair_pass.cpp (valid in C++ and GLSL). Camera and lights: common/shared_bindings.h. The hair
+// passes have their own descriptor layouts (the forward pass is at lavapipe's 32 push
+// descriptors).
+#ifndef CANDELA_HAIR_BINDINGS_H
+#define CANDELA_HAIR_BINDINGS_H
+
+#include "common/shared_bindings.h"
+
+// The frame's strand segments, world space (HairSegment in hair_pass.cpp).
+#define HAIR_BINDING_SEGMENTS 2
+// The A-buffer: one list head per pixel, the node pool, and the pool's allocation counter.
+#define HAIR_BINDING_HEADS 3
+#define HAIR_BINDING_NODES 4
+#define HAIR_BINDING_COUNTERS 5
+#define HAIR_BINDING_CLUSTER_RANGES 6
+#define HAIR_BINDING_LIGHT_INDICES 7
+#define HAIR_BINDING_DEPTH_RANGE 8
+#define HAIR_BINDING_IRRADIANCE_SH 9
+// Shadows (common/shadows.glsl, passes/shadows/shadow_pass.h).
+#define HAIR_BINDING_SHADOW_ATLAS 10
+#define HAIR_BINDING_SHADOW_VIEWS 11
+#define HAIR_BINDING_SHADOW_LIGHTS 12
+#define HAIR_BINDING_SHADOW_ATLAS_COMPARE 13
+// The area lights' LTC table (lights/ltc_table_texture.h, common/area_lights.glsl).
+#define HAIR_BINDING_LTC_MATRIX 14
+#define HAIR_BINDING_LTC_MAGNITUDE 15
+#define AREA_LIGHT_LTC_MATRIX_BINDING HAIR_BINDING_LTC_MATRIX
+#define AREA_LIGHT_LTC_MAGNITUDE_BINDING HAIR_BINDING_LTC_MAGNITUDE
+
+// The push block's `mode`: lit (Kajiya-Kay), or every fragment unlit radiance 1 (its coverage
+// alone: the GPAA measurement, RendererOptions::hairShading).
+#define HAIR_MODE_LIT 0
+#define HAIR_MODE_COVERAGE 1
+
+// The end of a pixel's list (the heads' cleared value).
+#define HAIR_LIST_END 0xffffffffu
+// Fragments per pixel fully shaded, nearest first; the rest blend cheaply (hair_resolve.frag).
+#define HAIR_FULLY_SHADED 4
+// Nodes a pixel's walk visits at most (lavapipe's loop limiter allows 65,535 iterations).
+#define HAIR_MAX_WALK 4096
+
+#endif

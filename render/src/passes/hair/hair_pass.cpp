@@ -1,0 +1,315 @@
+#include "passes/hair/hair_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "candela/render/gpu_context.h"
+#include "candela/render/gpu_image.h"
+#include "clustered/cluster_grid.h"
+#include "clustered/gpu_cluster_params.h"
+#include "common/specialization_ids.h"
+#include "gbuffer_targets.h"
+#include "ibl/environment_descriptors.h"
+#include "passes/hair/hair_bindings.h"
+#include "passes/shadows/shadow_pass.h"
+#include "shaders/hair_depth.frag.spv.h"
+#include "shaders/hair_fill.frag.spv.h"
+#include "shaders/hair_fill.vert.spv.h"
+#include "shaders/hair_fullscreen.vert.spv.h"
+#include "shaders/hair_resolve.frag.spv.h"
+
+namespace candela::render {
+
+namespace {
+
+// hair_segment.glsl's HairSegment.
+struct HairSegment {
+    glm::vec4 start;       // xyz world, w radius
+    glm::vec4 end;         // xyz world, w radius
+    glm::vec4 color;       // rgb K_d
+    glm::vec4 highlights;  // shifts, exponents
+};
+
+// hair_segment.glsl's push block.
+struct HairPush {
+    GpuClusterParams grid;
+    float targetSize[2];
+    float pixelRadiusPerDepth;
+    float nearPlane;
+    uint32_t mode;
+    uint32_t directionalCount;
+    float skyIntensity;
+    uint32_t nodeCapacity;
+};
+
+constexpr VkDeviceSize kInitialSegments = 1024;
+constexpr VkDeviceSize kNodeBytes = 4 * sizeof(uint32_t);  // hair_segment.glsl's uvec4 node
+
+}  // namespace
+
+HairPass::HairPass(GpuContext& context)
+    : context_(context),
+      segments_(context, kInitialSegments * sizeof(HairSegment), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                MemoryLocation::HostVisible),
+      counters_(context, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                MemoryLocation::HostVisible) {
+    std::memset(counters_.mapped(), 0, 16);
+}
+
+HairPass::~HairPass() = default;
+
+VkDeviceSize HairPass::headBytes(uint32_t width, uint32_t height) {
+    return VkDeviceSize(width) * height * sizeof(uint32_t);
+}
+
+VkDeviceSize HairPass::nodeBytes(uint32_t nodeCapacity) {
+    return std::max<VkDeviceSize>(nodeCapacity, 1) * kNodeBytes;
+}
+
+uint32_t HairPass::requestedNodes() const {
+    return *static_cast<const uint32_t*>(counters_.mapped());
+}
+
+bool HairPass::prepare(const FrameScene& scene, const LightingFeatures& features,
+                       HairShading shading) {
+    size_t count = 0;
+    for (const HairDraw& draw : scene.hair) {
+        if (draw.hair && draw.style) count += draw.hair->segments.size() / 2;
+    }
+    segmentCount_ = uint32_t(count);
+    if (count == 0) return false;
+    if (count * sizeof(HairSegment) > segments_.size()) {
+        // The frame before has completed (one frame in flight): the old buffer is free.
+        const VkDeviceSize capacity =
+            std::max<VkDeviceSize>(count, 2 * segments_.size() / sizeof(HairSegment));
+        segments_ = GpuBuffer(context_, capacity * sizeof(HairSegment),
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryLocation::HostVisible);
+    }
+    auto* out = static_cast<HairSegment*>(segments_.mapped());
+    for (const HairDraw& draw : scene.hair) {
+        if (!draw.hair || !draw.style) continue;
+        const content::Hair& hair = *draw.hair;
+        const content::HairStyle& style = *draw.style;
+        const glm::vec4 color(style.color[0], style.color[1], style.color[2], 0.0f);
+        const glm::vec4 highlights(style.primaryShift, style.secondaryShift, style.primaryExponent,
+                                   style.secondaryExponent);
+        // Radii are world lengths: a scaled instance scales them by its mean axis scale.
+        const float scale =
+            (glm::length(glm::vec3(draw.world[0])) + glm::length(glm::vec3(draw.world[1])) +
+             glm::length(glm::vec3(draw.world[2]))) /
+            3.0f;
+        auto radiusAt = [&](uint32_t index) {
+            const float t = index < hair.rootToTip.size() ? hair.rootToTip[index] : 0.0f;
+            return scale * (style.rootRadius + t * (style.tipRadius - style.rootRadius));
+        };
+        for (size_t i = 0; i + 1 < hair.segments.size(); i += 2) {
+            const uint32_t ia = hair.segments[i], ib = hair.segments[i + 1];
+            const auto& a = hair.positions[ia];
+            const auto& b = hair.positions[ib];
+            const glm::vec3 p0 = glm::vec3(draw.world * glm::vec4(a[0], a[1], a[2], 1.0f));
+            const glm::vec3 p1 = glm::vec3(draw.world * glm::vec4(b[0], b[1], b[2], 1.0f));
+            *out++ = {glm::vec4(p0, radiusAt(ia)), glm::vec4(p1, radiusAt(ib)), color, highlights};
+        }
+    }
+    if (!built_ || !(features == features_) || shading != shading_) {
+        features_ = features;
+        shading_ = shading;
+        buildPipelines();
+    }
+    return true;
+}
+
+void HairPass::buildPipelines() {
+    const VkShaderStageFlags raster = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+    {
+        GraphicsPipelineDesc desc;
+        desc.vertexSpirv = hair_fill_vert_spv;  // no vertex input: six vertices per segment
+        desc.fragmentSpirv = hair_fill_frag_spv;
+        desc.depthFormat = GBufferTargets::kDepthFormat;
+        desc.depthWrite = false;
+        const DescriptorBinding bindings[] = {
+            {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, raster},
+            {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, raster},
+            {HAIR_BINDING_HEADS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+        };
+        fill_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
+    }
+    {
+        SpecializationConstants constants;
+        setShadingConstants(constants, features_);
+        constants.set(SPEC_IBL_MODE, features_.ibl ? 1u : 0u);
+        GraphicsPipelineDesc desc;
+        desc.vertexSpirv = hair_fullscreen_vert_spv;
+        desc.fragmentSpirv = hair_resolve_frag_spv;
+        desc.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};  // the HDR target
+        desc.alphaBlend = true;
+        desc.specialization = &constants;
+        const DescriptorBinding bindings[] = {
+            {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, raster},
+            {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_HEADS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_LIGHT_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_IRRADIANCE_SH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_SHADOW_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
+            {HAIR_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+             fragment},
+            {HAIR_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
+            {HAIR_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
+        };
+        resolve_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
+    }
+    {
+        GraphicsPipelineDesc desc;
+        desc.vertexSpirv = hair_fullscreen_vert_spv;
+        desc.fragmentSpirv = hair_depth_frag_spv;
+        desc.depthFormat = GBufferTargets::kDepthFormat;
+        desc.depthWrite = true;
+        desc.depthCompare = VK_COMPARE_OP_ALWAYS;  // the fill already tested every strand
+        const DescriptorBinding bindings[] = {
+            {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, raster},
+            {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_HEADS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+        };
+        depth_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
+    }
+    built_ = true;
+}
+
+void HairPass::pushCommon(VkCommandBuffer cmd, const Pipeline& pipeline, const Inputs& in) const {
+    const uint32_t width = in.depth.desc().width;
+    const uint32_t height = in.depth.desc().height;
+    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, {width, height}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    pipeline.bind(cmd);
+    HairPush push{};
+    push.grid = toGpu(*in.grid);
+    push.targetSize[0] = float(width);
+    push.targetSize[1] = float(height);
+    push.pixelRadiusPerDepth = in.pixelRadiusPerDepth;
+    push.nearPlane = in.nearPlane;
+    push.mode = shading_ == HairShading::Coverage ? HAIR_MODE_COVERAGE : HAIR_MODE_LIT;
+    push.directionalCount = in.directionalCount;
+    push.skyIntensity = in.skyIntensity;
+    push.nodeCapacity = in.nodeCapacity;
+    pipeline.pushConstants(cmd, &push, sizeof(push));
+}
+
+void HairPass::recordClear(VkCommandBuffer cmd, const Inputs& in) const {
+    vkCmdFillBuffer(cmd, in.heads.handle(), 0, VK_WHOLE_SIZE, HAIR_LIST_END);
+    vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0u);
+}
+
+namespace {
+
+VkRenderingAttachmentInfo depthAttachment(const ImageRef& depth, bool write) {
+    VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    info.imageView = depth.view();
+    info.imageLayout =
+        write ? VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+    info.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    info.storeOp = write ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_NONE;
+    return info;
+}
+
+}  // namespace
+
+void HairPass::recordFill(VkCommandBuffer cmd, const Inputs& in) const {
+    const VkRenderingAttachmentInfo depth = depthAttachment(in.depth, false);
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {in.depth.desc().width, in.depth.desc().height}};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo nodeInfo{in.nodes.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo counterInfo{counters_.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+                                           storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo),
+                                           storageBufferWrite(HAIR_BINDING_HEADS, &headInfo),
+                                           storageBufferWrite(HAIR_BINDING_NODES, &nodeInfo),
+                                           storageBufferWrite(HAIR_BINDING_COUNTERS, &counterInfo)};
+    pushCommon(cmd, fill_, in);
+    fill_.pushDescriptors(cmd, writes);
+    vkCmdDraw(cmd, 6 * segmentCount_, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+}
+
+void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = in.hdr.view();
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {in.hdr.desc().width, in.hdr.desc().height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    vkCmdBeginRendering(cmd, &rendering);
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo nodeInfo{in.nodes.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
+        storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo),
+        storageBufferWrite(HAIR_BINDING_HEADS, &headInfo),
+        storageBufferWrite(HAIR_BINDING_NODES, &nodeInfo),
+        storageBufferWrite(HAIR_BINDING_CLUSTER_RANGES, &rangesInfo),
+        storageBufferWrite(HAIR_BINDING_LIGHT_INDICES, &indicesInfo),
+        storageBufferWrite(HAIR_BINDING_DEPTH_RANGE, &depthRangeInfo),
+        storageBufferWrite(HAIR_BINDING_IRRADIANCE_SH, &in.environment->irradianceSh),
+        sampledImageWrite(HAIR_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
+        storageBufferWrite(HAIR_BINDING_SHADOW_VIEWS, &in.shadows->views),
+        storageBufferWrite(HAIR_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
+        sampledImageWrite(HAIR_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
+        sampledImageWrite(HAIR_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
+        sampledImageWrite(HAIR_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude)};
+    pushCommon(cmd, resolve_, in);
+    resolve_.pushDescriptors(cmd, writes);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+}
+
+void HairPass::recordDepth(VkCommandBuffer cmd, const Inputs& in) const {
+    const VkRenderingAttachmentInfo depth = depthAttachment(in.depth, true);
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {in.depth.desc().width, in.depth.desc().height}};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo nodeInfo{in.nodes.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+                                           storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo),
+                                           storageBufferWrite(HAIR_BINDING_HEADS, &headInfo),
+                                           storageBufferWrite(HAIR_BINDING_NODES, &nodeInfo)};
+    pushCommon(cmd, depth_, in);
+    depth_.pushDescriptors(cmd, writes);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+}
+
+}  // namespace candela::render

@@ -1,0 +1,90 @@
+#pragma once
+// Hair (seed 004 §5, TressFX-style strands; render/README.md "Hair"): strand segments
+// (content/hair.h) drawn as camera-facing quads into a per-pixel linked list (an A-buffer:
+// hair_fill.*), then resolved per pixel (hair_resolve.frag: sorted, the nearest fully shaded
+// with Kajiya-Kay, the rest blended cheaply) over the lit frame, and finally written into the
+// depth buffer where the hair is at least half opaque (hair_depth.frag). The node pool holds
+// RendererOptions::hairNodesPerPixel nodes per pixel; fragments beyond it are dropped and
+// counted (--stats hair_nodes_dropped).
+#include <glm/glm.hpp>
+
+#include "candela/render/frame_scene.h"
+#include "candela/render/gpu_buffer.h"
+#include "candela/render/pipeline.h"
+#include "candela/render/renderer_options.h"
+#include "frame_graph/graph_resources.h"
+#include "passes/lighting/lighting_pass.h"
+
+namespace candela::render {
+
+class GpuContext;
+struct ClusterGrid;
+struct EnvironmentDescriptors;
+struct ShadowDescriptors;
+
+class HairPass {
+public:
+    explicit HairPass(GpuContext& context);
+    ~HairPass();
+    HairPass(const HairPass&) = delete;
+    HairPass& operator=(const HairPass&) = delete;
+
+    // Writes the frame's segments in world space (one frame is in flight at a time, so the
+    // buffer is free) and selects the shader variants. False when there is no segment: the
+    // frame then records nothing of this pass.
+    bool prepare(const FrameScene& scene, const LightingFeatures& features, HairShading shading);
+    uint32_t segmentCount() const { return segmentCount_; }
+
+    // The A-buffer's sizes for a target of width x height.
+    static VkDeviceSize headBytes(uint32_t width, uint32_t height);
+    static VkDeviceSize nodeBytes(uint32_t nodeCapacity);
+    // The counter buffer the fill pass allocates nodes with; read back after the frame.
+    GpuBuffer& counters() { return counters_; }
+    // Nodes the last recorded frame asked for (beyond `capacity`: dropped).
+    uint32_t requestedNodes() const;
+
+    struct Inputs {
+        ImageRef hdr;
+        ImageRef depth;
+        BufferRef heads;
+        BufferRef nodes;
+        uint32_t nodeCapacity;
+        const GpuBuffer* camera;
+        const GpuBuffer* lights;
+        const GpuBuffer* clusterRanges;
+        const GpuBuffer* lightIndices;
+        const GpuBuffer* depthRange;
+        const ClusterGrid* grid;
+        uint32_t directionalCount;
+        const EnvironmentDescriptors* environment;
+        float skyIntensity;
+        const ShadowDescriptors* shadows;
+        float pixelRadiusPerDepth;  // 1 / (projection[1][1] x target height)
+        float nearPlane;
+    };
+    // heads <- HAIR_LIST_END, counters <- 0 (transfers).
+    void recordClear(VkCommandBuffer cmd, const Inputs& in) const;
+    // depth: DepthRead; heads, nodes, counters: read and written in the fragment stage.
+    void recordFill(VkCommandBuffer cmd, const Inputs& in) const;
+    // hdr: ColorAttachment (blended over); heads, nodes, lights read.
+    void recordResolve(VkCommandBuffer cmd, const Inputs& in) const;
+    // depth: DepthWrite; heads, nodes read.
+    void recordDepth(VkCommandBuffer cmd, const Inputs& in) const;
+
+private:
+    void buildPipelines();
+    void pushCommon(VkCommandBuffer cmd, const Pipeline& pipeline, const Inputs& in) const;
+
+    GpuContext& context_;
+    GpuBuffer segments_;
+    GpuBuffer counters_;
+    uint32_t segmentCount_ = 0;
+    HairShading shading_ = HairShading::Lit;
+    LightingFeatures features_;
+    bool built_ = false;
+    Pipeline fill_;
+    Pipeline resolve_;
+    Pipeline depth_;
+};
+
+}  // namespace candela::render

@@ -1,0 +1,221 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "common/specialization_ids.h"
+#include "hair_bindings.h"
+// The A-buffer resolve (seed 004 §5): walks the pixel's list to find the HAIR_FULLY_SHADED
+// nearest fragments in order (ties broken by segment index, so the result never depends on
+// the order the fill pushed them in), shades those fully and blends them front to back; the rest,
+// behind them, blend cheaply as one layer: their total opacity 1 - prod(1 - a) with their
+// coverage-weighted mean colour lit as the fully shaded ones are on average (their radiance
+// over their colour). Sums and products commute, so shuffling the strands changes nothing but
+// rounding. Output straight alpha, blended "over" the lit frame.
+//
+// Shading: Kajiya-Kay with TressFX's two highlights. Diffuse K_d sin(t, l) / pi with t the
+// strand's tangent; specular from tangents tilted toward the normal by the style's shifts,
+// sin(t', h)^p with its normalisation (p + 2) / (2 pi): the primary coloured by the light only,
+// the secondary by the light and the hair. Lit by the clustered lights (with their shadows)
+// and the sky's irradiance.
+#include "common/camera.glsl"
+#include "common/clusters.glsl"
+#include "common/ibl.glsl"
+#include "common/light_buffer.glsl"
+#include "common/shading_models.glsl"
+#define SHADOW_ATLAS_BINDING HAIR_BINDING_SHADOW_ATLAS
+#define SHADOW_ATLAS_COMPARE_BINDING HAIR_BINDING_SHADOW_ATLAS_COMPARE
+#define SHADOW_VIEWS_BINDING HAIR_BINDING_SHADOW_VIEWS
+#define SHADOW_LIGHTS_BINDING HAIR_BINDING_SHADOW_LIGHTS
+#include "common/shadows.glsl"
+#include "hair_segment.glsl"
+
+layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
+// Image-based lighting: 0 none, else the sky's SH irradiance lights the hair's diffuse.
+layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
+
+layout(std430, binding = HAIR_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
+    uint clusterRanges[];
+};
+layout(std430, binding = HAIR_BINDING_LIGHT_INDICES) readonly buffer LightIndices {
+    uint lightIndices[];
+};
+layout(std430, binding = HAIR_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
+    uint depthRange[];
+};
+layout(std430, binding = HAIR_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
+    vec4 irradianceSh[9];
+};
+
+layout(location = 0) out vec4 outRadiance;  // cd/m^2, a = the hair's opacity here
+
+const uint kListOverflow = 0xffffffffu;
+// The fibre's reflectance at its surface (a dielectric of index ~1.55: keratin).
+const float kHairF0 = 0.046;
+
+struct HairPoint {
+    vec3 P;
+    vec3 T;  // unit tangent, root to tip
+    vec3 V;
+    vec3 N;  // the normal facing the camera (V without its part along T)
+    vec3 color;
+    vec4 highlights;
+};
+
+// sin(t, h)^p with its normalisation: Kajiya-Kay's lobe about the tilted tangent t.
+float kajiyaKayLobe(vec3 T, vec3 H, float exponent) {
+    const float c = dot(T, H);
+    const float s = sqrt(max(1.0 - c * c, 0.0));
+    return (exponent + 2.0) / (2.0 * PI) * pow(s, exponent);
+}
+
+vec3 hairLightRadiance(HairPoint h, uint index) {
+    Light light = loadLight(index, camera.frameInfo.w);
+    LightIncidence incidence = evaluateLight(light, h.P, h.N, reflect(-h.V, h.N), 0.3);
+    if (!any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))) return vec3(0.0);
+    const vec3 E = incidence.incidentIlluminance * shadowVisibility(light, index, h.P, h.N);
+    const vec3 L = incidence.diffuseL;
+    const float TL = dot(h.T, L);
+    const float sinTL = sqrt(max(1.0 - TL * TL, 0.0));
+    const vec3 H = safeNormalize(L + h.V);
+    const vec3 primaryT = safeNormalize(h.T + h.highlights.x * h.N);
+    const vec3 secondaryT = safeNormalize(h.T + h.highlights.y * h.N);
+    const vec3 diffuse = h.color * (sinTL / PI);
+    const vec3 primary = vec3(kHairF0 * kajiyaKayLobe(primaryT, H, h.highlights.z));
+    const vec3 secondary = h.color * (kHairF0 * kajiyaKayLobe(secondaryT, H, h.highlights.w));
+    return E * (diffuse + primary + secondary);
+}
+
+vec3 shadeHair(float depth, uint segment) {
+    const HairSegment s = segments[segment];
+    if (draw.mode == HAIR_MODE_COVERAGE) return vec3(1.0);
+    HairPoint h;
+    const vec2 ndc = gl_FragCoord.xy / draw.targetSize * 2.0 - 1.0;
+    const vec4 world = camera.inverseViewProjection * vec4(ndc, depth, 1.0);
+    h.P = world.xyz / world.w;
+    h.V = safeNormalize(camera.cameraPosition.xyz - h.P);
+    h.T = safeNormalize(s.end.xyz - s.start.xyz);
+    h.N = safeNormalize(h.V - h.T * dot(h.V, h.T));
+    if (dot(h.N, h.N) < 0.5) h.N = h.V;  // looking along the strand
+    h.color = s.color.rgb;
+    h.highlights = s.highlights;
+    vec3 radiance = vec3(0.0);
+    if (kIblMode != 0u) {
+        vec4 sh[9] = irradianceSh;
+        radiance += h.color * (1.0 / PI) * shIrradiance(sh, h.N) * draw.skyIntensity;
+    }
+    if (kClustered) {
+        for (uint i = 0u; i < draw.directionalCount; ++i)
+            radiance += hairLightRadiance(h, lightIndices[i]);
+        const uint cluster =
+            clusterOfPixel(draw.grid, uvec2(gl_FragCoord.xy), depth,
+                           uintBitsToFloat(depthRange[2]), uintBitsToFloat(depthRange[3]));
+        const uint first = clusterRanges[2u * cluster];
+        const uint count = clusterRanges[2u * cluster + 1u];
+        if (count == kListOverflow) {
+            for (uint i = 0u; i < camera.frameInfo.z; ++i) {
+                if (!lightInEveryCluster(uint(lightData[3u * camera.frameInfo.w + i].w)))
+                    radiance += hairLightRadiance(h, i);
+            }
+        } else {
+            const uint quarterBit = quarterBitOfPixel(draw.grid, uvec2(gl_FragCoord.xy));
+            for (uint i = 0u; i < count; ++i) {
+                const uint light = lightOfEntry(lightIndices[first + i], quarterBit);
+                if (light != kNoLight) radiance += hairLightRadiance(h, light);
+            }
+        }
+    } else {
+        for (uint i = 0u; i < camera.frameInfo.z; ++i)
+            radiance += hairLightRadiance(h, i);
+    }
+    return radiance;
+}
+
+// Whether fragment (depth a, segment sa) is in front of (b, sb): reverse-Z, ties by segment.
+bool nearer(float a, uint sa, float b, uint sb) {
+    return a > b || (a == b && sa < sb);
+}
+
+// Whether fragment (depth b, segment sb) is behind (a, sa): the order's other side.
+bool farther(float b, uint sb, float a, uint sa) {
+    return nearer(a, sa, b, sb);
+}
+
+void main() {
+    const uint head = heads[pixelIndex(gl_FragCoord.xy)];
+    if (head == HAIR_LIST_END) discard;
+    // The HAIR_FULLY_SHADED nearest by selection: walk k finds the nearest fragment behind the
+    // one walk k - 1 found. (Depth, segment) orders the fragments strictly (a segment's quad
+    // covers a pixel once), so the choice never depends on the list's order. (An insertion
+    // sort into local arrays, evicting into the rest, gave order-dependent results on
+    // lavapipe.)
+    float depth[HAIR_FULLY_SHADED];
+    uint segment[HAIR_FULLY_SHADED];
+    float coverage[HAIR_FULLY_SHADED];
+    uint kept = 0u;
+    float previousDepth = 2.0;  // nearer than any fragment (reverse-Z depths are <= 1)
+    uint previousSegment = 0u;
+    for (uint k = 0u; k < HAIR_FULLY_SHADED; ++k) {
+        bool found = false;
+        float bestDepth = 0.0;
+        uint bestSegment = 0u;
+        float bestCoverage = 0.0;
+        uint node = head;
+        for (uint walked = 0u; node != HAIR_LIST_END && walked < HAIR_MAX_WALK; ++walked) {
+            const uvec4 n = nodes[node];
+            node = n.w;
+            const float d = uintBitsToFloat(n.x);
+            if (farther(d, n.y, previousDepth, previousSegment) &&
+                (!found || nearer(d, n.y, bestDepth, bestSegment))) {
+                found = true;
+                bestDepth = d;
+                bestSegment = n.y;
+                bestCoverage = uintBitsToFloat(n.z);
+            }
+        }
+        if (!found) break;
+        depth[k] = bestDepth;
+        segment[k] = bestSegment;
+        coverage[k] = bestCoverage;
+        kept = k + 1u;
+        previousDepth = bestDepth;
+        previousSegment = bestSegment;
+    }
+    // The rest (behind the last kept one): their transmittance, coverage-weighted colour sum
+    // and coverage sum, all order-independent.
+    float tailTransmittance = 1.0;
+    vec3 tailColor = vec3(0.0);
+    float tailWeight = 0.0;
+    if (kept == HAIR_FULLY_SHADED) {
+        uint node = head;
+        for (uint walked = 0u; node != HAIR_LIST_END && walked < HAIR_MAX_WALK; ++walked) {
+            const uvec4 n = nodes[node];
+            node = n.w;
+            if (!farther(uintBitsToFloat(n.x), n.y, previousDepth, previousSegment)) continue;
+            const float a = uintBitsToFloat(n.z);
+            tailTransmittance *= 1.0 - a;
+            tailColor +=
+                a * (draw.mode == HAIR_MODE_COVERAGE ? vec3(1.0) : segments[n.y].color.rgb);
+            tailWeight += a;
+        }
+    }
+    vec3 radiance = vec3(0.0);
+    float transmittance = 1.0;
+    vec3 litSum = vec3(0.0);    // sum of a x shaded radiance of the kept fragments
+    vec3 colorSum = vec3(0.0);  // sum of a x colour of the kept fragments
+    for (uint i = 0u; i < kept; ++i) {
+        const vec3 shaded = shadeHair(depth[i], segment[i]);
+        radiance += transmittance * coverage[i] * shaded;
+        transmittance *= 1.0 - coverage[i];
+        litSum += coverage[i] * shaded;
+        colorSum +=
+            coverage[i] * (draw.mode == HAIR_MODE_COVERAGE ? vec3(1.0) : segments[segment[i]].color.rgb);
+    }
+    if (tailWeight > 0.0) {
+        // Lit per unit of colour as the kept fragments are on average.
+        const vec3 lighting = litSum / max(colorSum, vec3(1e-6));
+        const vec3 tailRadiance = tailColor / tailWeight * lighting;
+        radiance += transmittance * (1.0 - tailTransmittance) * tailRadiance;
+        transmittance *= tailTransmittance;
+    }
+    const float alpha = 1.0 - transmittance;
+    if (!(alpha > 0.0)) discard;
+    outRadiance = vec4(radiance / alpha, alpha);
+}
