@@ -2,19 +2,38 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace candela::content {
 namespace {
 
-void normalizeQuaternion(std::span<float> q) {
+// q / |q|, or the identity for a zero quaternion. With SSE2 the squares are summed in the
+// scalar order ((x² + y²) + z²) + w² and the four correctly rounded divisions are one divps:
+// the same values as the scalar form, without four dependent scalar divisions per channel.
+inline void normalizeQuaternion(float* q) {
+#if defined(__SSE2__)
+    const __m128 v = _mm_loadu_ps(q);
+    const __m128 squares = _mm_mul_ps(v, v);
+    __m128 sum = _mm_add_ss(squares, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(1, 1, 1, 1)));
+    sum = _mm_add_ss(sum, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(2, 2, 2, 2)));
+    sum = _mm_add_ss(sum, _mm_shuffle_ps(squares, squares, _MM_SHUFFLE(3, 3, 3, 3)));
+    const __m128 length = _mm_sqrt_ss(sum);
+    if (_mm_cvtss_f32(length) > 1e-20f) {
+        _mm_storeu_ps(q, _mm_div_ps(v, _mm_shuffle_ps(length, length, _MM_SHUFFLE(0, 0, 0, 0))));
+        return;
+    }
+#else
     const float length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if (length > 1e-20f) {
         for (int c = 0; c < 4; ++c)
-            q[static_cast<std::size_t>(c)] /= length;
-    } else {
-        q[0] = q[1] = q[2] = 0;
-        q[3] = 1;
+            q[c] /= length;
+        return;
     }
+#endif
+    q[0] = q[1] = q[2] = 0;
+    q[3] = 1;
 }
 
 // The arc between two keys: the cosine (made non-negative: the shorter arc), its sign, and
@@ -38,7 +57,7 @@ Arc arcBetween(const float* a, const float* b) {
 // Shortest-arc spherical interpolation; falls back to normalised lerp when nearly parallel.
 // `cached`: the interval's angle and sine from prepareSlerpAngles (the same values
 // arcBetween computes, so the same results), or null.
-void slerp(const float* a, const float* b, float t, std::span<float> out, const float* cached) {
+void slerp(const float* a, const float* b, float t, float* out, const float* cached) {
     float sign, wa = 1 - t, wb = t;
     if (cached != nullptr) {
         sign = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0 ? -1.0f : 1.0f;
@@ -54,8 +73,14 @@ void slerp(const float* a, const float* b, float t, std::span<float> out, const 
             wb = std::sin(t * arc.theta) / arc.sinTheta;
         }
     }
+#if defined(__SSE2__)
+    // wa a + (sign wb) b on whole quaternions: the scalar form's products and sums.
+    _mm_storeu_ps(out, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(wa), _mm_loadu_ps(a)),
+                                  _mm_mul_ps(_mm_set1_ps(sign * wb), _mm_loadu_ps(b))));
+#else
     for (std::size_t c = 0; c < 4; ++c)
         out[c] = wa * a[c] + sign * wb * b[c];
+#endif
     normalizeQuaternion(out);
 }
 
@@ -123,7 +148,7 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
     const bool clamped = keys < 2 || time <= sampler.times.front() || k + 1 >= keys;
     if (clamped || sampler.interpolation == Interpolation::Step) {
         std::copy_n(values + k * stride + valueOffset, n, out.begin());
-        if (property == AnimatedProperty::Rotation) normalizeQuaternion(out);
+        if (property == AnimatedProperty::Rotation) normalizeQuaternion(out.data());
         return;
     }
     const float t0 = sampler.times[k];
@@ -134,7 +159,7 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
     if (sampler.interpolation == Interpolation::Linear) {
         if (property == AnimatedProperty::Rotation) {
             const bool cached = sampler.slerpAngles.size() == 2 * (keys - 1);
-            slerp(a, b, t, out, cached ? sampler.slerpAngles.data() + 2 * k : nullptr);
+            slerp(a, b, t, out.data(), cached ? sampler.slerpAngles.data() + 2 * k : nullptr);
         } else {
             for (std::size_t c = 0; c < n; ++c)
                 out[c] = a[c] + (b[c] - a[c]) * t;
@@ -156,7 +181,7 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
         const float valueB = b[n + c];
         out[c] = h00 * valueA + h10 * outTangentA + h01 * valueB + h11 * inTangentB;
     }
-    if (property == AnimatedProperty::Rotation) normalizeQuaternion(out);
+    if (property == AnimatedProperty::Rotation) normalizeQuaternion(out.data());
 }
 
 }  // namespace candela::content
