@@ -4,6 +4,7 @@
 #include <cmath>
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#include <xmmintrin.h>
 #endif
 
 namespace candela::content {
@@ -54,13 +55,14 @@ Arc arcBetween(const float* a, const float* b) {
     return {sign, true, theta, std::sin(theta)};
 }
 
-// Shortest-arc spherical interpolation; falls back to normalised lerp when nearly parallel.
-// `cached`: the interval's angle and sine from prepareSlerpAngles (the same values
+// Shortest-arc spherical interpolation, before the final normalisation (the caller's); falls
+// back to lerp when nearly parallel.
+// `cached`: the interval's angle, sine and arc sign from prepareSlerpAngles (the same values
 // arcBetween computes, so the same results), or null.
 void slerp(const float* a, const float* b, float t, float* out, const float* cached) {
     float sign, wa = 1 - t, wb = t;
     if (cached != nullptr) {
-        sign = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3] < 0 ? -1.0f : 1.0f;
+        sign = cached[2];
         if (cached[1] != 0) {
             wa = std::sin((1 - t) * cached[0]) / cached[1];
             wb = std::sin(t * cached[0]) / cached[1];
@@ -81,7 +83,6 @@ void slerp(const float* a, const float* b, float t, float* out, const float* cac
     for (std::size_t c = 0; c < 4; ++c)
         out[c] = wa * a[c] + sign * wb * b[c];
 #endif
-    normalizeQuaternion(out);
 }
 
 }  // namespace
@@ -111,13 +112,16 @@ void prepareSlerpAngles(AnimationSampler& sampler) {
     if (sampler.interpolation != Interpolation::Linear || sampler.components != 4 ||
         sampler.times.size() < 2 || sampler.values.size() != 4 * sampler.times.size())
         return;
-    sampler.slerpAngles.resize(2 * (sampler.times.size() - 1));
+    sampler.slerpAngles.resize(kSlerpAngleFloats * (sampler.times.size() - 1));
     for (std::size_t k = 0; k + 1 < sampler.times.size(); ++k) {
         const Arc arc = arcBetween(&sampler.values[4 * k], &sampler.values[4 * (k + 1)]);
+        float* interval = &sampler.slerpAngles[kSlerpAngleFloats * k];
         // A zero sine marks the normalised-lerp case (a real one is never 0 there: theta is
         // at least acos(0.9995)).
-        sampler.slerpAngles[2 * k] = arc.theta;
-        sampler.slerpAngles[2 * k + 1] = arc.trigonometric ? arc.sinTheta : 0.0f;
+        interval[0] = arc.theta;
+        interval[1] = arc.trigonometric ? arc.sinTheta : 0.0f;
+        interval[2] = arc.sign;
+        interval[3] = 0;  // padding: one interval per 16 bytes
     }
 }
 
@@ -136,19 +140,22 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
     sampleAnimation(sampler, property, time, out, cursor);
 }
 
-void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
-                     std::span<float> out, std::uint32_t& cursor) {
+void sampleAnimationUnnormalised(const AnimationSampler& sampler, AnimatedProperty property,
+                                 float time, std::span<float> out, std::uint32_t& cursor) {
     const std::size_t n = sampler.components;
     const std::size_t keys = sampler.times.size();
     const bool cubic = sampler.interpolation == Interpolation::CubicSpline;
     const std::size_t stride = cubic ? 3 * n : n;
     const std::size_t valueOffset = cubic ? n : 0;  // CUBICSPLINE: skip the in-tangent
     const float* values = sampler.values.data();
-    const std::size_t k = keyIntervalAt(sampler.times, time, cursor);
+    // The cursor's interval (forward playback: nearly always), else the search.
+    const float* times = sampler.times.data();
+    std::size_t k = cursor;
+    if (!(k + 1 < keys && times[k] <= time && time < times[k + 1] && time > times[0]))
+        k = keyIntervalAt(sampler.times, time, cursor);
     const bool clamped = keys < 2 || time <= sampler.times.front() || k + 1 >= keys;
     if (clamped || sampler.interpolation == Interpolation::Step) {
         std::copy_n(values + k * stride + valueOffset, n, out.begin());
-        if (property == AnimatedProperty::Rotation) normalizeQuaternion(out.data());
         return;
     }
     const float t0 = sampler.times[k];
@@ -158,8 +165,9 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
     const float* b = values + (k + 1) * stride;
     if (sampler.interpolation == Interpolation::Linear) {
         if (property == AnimatedProperty::Rotation) {
-            const bool cached = sampler.slerpAngles.size() == 2 * (keys - 1);
-            slerp(a, b, t, out.data(), cached ? sampler.slerpAngles.data() + 2 * k : nullptr);
+            const bool cached = sampler.slerpAngles.size() == kSlerpAngleFloats * (keys - 1);
+            slerp(a, b, t, out.data(),
+                  cached ? sampler.slerpAngles.data() + kSlerpAngleFloats * k : nullptr);
         } else {
             for (std::size_t c = 0; c < n; ++c)
                 out[c] = a[c] + (b[c] - a[c]) * t;
@@ -181,7 +189,46 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
         const float valueB = b[n + c];
         out[c] = h00 * valueA + h10 * outTangentA + h01 * valueB + h11 * inTangentB;
     }
+}
+
+void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
+                     std::span<float> out, std::uint32_t& cursor) {
+    sampleAnimationUnnormalised(sampler, property, time, out, cursor);
     if (property == AnimatedProperty::Rotation) normalizeQuaternion(out.data());
+}
+
+void normalizeQuaternions(std::span<float* const> quaternions) {
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    // Four at a time, structure of arrays: per lane the same squares summed in the same order,
+    // the same square root and the same divisions as normalizeQuaternion (same values), one
+    // sqrtps and four divps for four quaternions.
+    for (; i + 4 <= quaternions.size(); i += 4) {
+        __m128 x = _mm_loadu_ps(quaternions[i]), y = _mm_loadu_ps(quaternions[i + 1]);
+        __m128 z = _mm_loadu_ps(quaternions[i + 2]), w = _mm_loadu_ps(quaternions[i + 3]);
+        _MM_TRANSPOSE4_PS(x, y, z, w);
+        const __m128 sum =
+            _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z)),
+                       _mm_mul_ps(w, w));
+        const __m128 length = _mm_sqrt_ps(sum);
+        const __m128 usable = _mm_cmpgt_ps(length, _mm_set1_ps(1e-20f));
+        // Too short to normalise: the identity (0, 0, 0, 1).
+        auto pick = [&](__m128 normalised, __m128 fallback) {
+            return _mm_or_ps(_mm_and_ps(usable, normalised), _mm_andnot_ps(usable, fallback));
+        };
+        x = pick(_mm_div_ps(x, length), _mm_setzero_ps());
+        y = pick(_mm_div_ps(y, length), _mm_setzero_ps());
+        z = pick(_mm_div_ps(z, length), _mm_setzero_ps());
+        w = pick(_mm_div_ps(w, length), _mm_set1_ps(1.0f));
+        _MM_TRANSPOSE4_PS(x, y, z, w);
+        _mm_storeu_ps(quaternions[i], x);
+        _mm_storeu_ps(quaternions[i + 1], y);
+        _mm_storeu_ps(quaternions[i + 2], z);
+        _mm_storeu_ps(quaternions[i + 3], w);
+    }
+#endif
+    for (; i < quaternions.size(); ++i)
+        normalizeQuaternion(quaternions[i]);
 }
 
 }  // namespace candela::content

@@ -4,6 +4,7 @@
 // indices are in range, key times are finite and strictly increasing, and every sampler holds
 // exactly one value (three for CUBICSPLINE: in-tangent, value, out-tangent) per key.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,14 +24,17 @@ struct SkinData {
 enum class Interpolation : std::uint8_t { Step, Linear, CubicSpline };
 enum class AnimatedProperty : std::uint8_t { Translation, Rotation, Scale, Weights };
 
+inline constexpr std::size_t kSlerpAngleFloats = 4;
+
 struct AnimationSampler {
     Interpolation interpolation = Interpolation::Linear;
     std::uint32_t components = 0;  // floats per value: 3, 4 (x, y, z, w) or the target count
     std::vector<float> times;      // seconds, strictly increasing
     // Per key `components` floats; CUBICSPLINE keys hold in-tangent, value, out-tangent.
     std::vector<float> values;
-    // LINEAR rotations: per key interval, the arc's angle and its sine (0: the keys are close
-    // enough for normalised lerp); empty: computed when sampled. prepareSlerpAngles fills it.
+    // LINEAR rotations: per key interval kSlerpAngleFloats floats: the arc's angle, its sine
+    // (0: the keys are close enough for normalised lerp), the sign that takes the shorter arc
+    // and padding; empty: computed when sampled. prepareSlerpAngles fills it.
     std::vector<float> slerpAngles;
 };
 

@@ -19,6 +19,16 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
 void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
                      std::span<float> out, std::uint32_t& cursor);
 
+// The same, but a rotation comes out as interpolated, not yet unit length: callers that
+// sample many channels normalise them together afterwards with normalizeQuaternions (the
+// same values as sampleAnimation's).
+void sampleAnimationUnnormalised(const AnimationSampler& sampler, AnimatedProperty property,
+                                 float time, std::span<float> out, std::uint32_t& cursor);
+// Scales each quaternion (x, y, z, w; 4 floats at each pointer) to unit length, or makes it
+// the identity when its length is below 1e-20: four at a time with SSE2, the same values as
+// one at a time.
+void normalizeQuaternions(std::span<float* const> quaternions);
+
 // Index k of the key interval [times[k], times[k+1]] holding `time` (0 before the first key,
 // times.size() - 1 from the last key on).
 std::size_t keyIntervalAt(const std::vector<float>& times, float time);
