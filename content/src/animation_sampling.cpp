@@ -57,13 +57,21 @@ Arc arcBetween(const float* a, const float* b) {
 
 // Shortest-arc spherical interpolation, before the final normalisation (the caller's); falls
 // back to lerp when nearly parallel.
-// `cached`: the interval's angle, sine and arc sign from prepareSlerpAngles (the same values
-// arcBetween computes, so the same results), or null.
+// `cached`: the interval's entry from prepareSlerpAngles (the angle, sine and arc sign that
+// arcBetween computes, so the same results, or a corrected nlerp's coefficients), or null.
 void slerp(const float* a, const float* b, float t, float* out, const float* cached) {
     float sign, wa = 1 - t, wb = t;
     if (cached != nullptr) {
         sign = cached[2];
-        if (cached[1] != 0) {
+        if (cached[3] != 0) {
+            // Corrected normalised lerp (see prepareSlerpAngles): u(t) = t + w (2t - 1)
+            // (k1 + k2 w), w = t (1 - t), puts the normalised lerp within
+            // kNlerpErrorTolerance of the slerp, with no sine or division per frame.
+            const float w = t * (1 - t);
+            const float u = t + w * (2 * t - 1) * (cached[0] + cached[1] * w);
+            wa = 1 - u;
+            wb = u;
+        } else if (cached[1] != 0) {
             wa = std::sin((1 - t) * cached[0]) / cached[1];
             wb = std::sin(t * cached[0]) / cached[1];
         }
@@ -107,21 +115,85 @@ std::size_t keyIntervalAt(const std::vector<float>& times, float time, std::uint
     return k;
 }
 
+namespace {
+
+// The nlerp parameter u whose normalised lerp points exactly where slerp(t) does
+// (the slerp weights' ratio), and the arc angle a normalised lerp at u reaches.
+double exactNlerpParameter(double t, double theta) {
+    const double a = std::sin((1 - t) * theta), b = std::sin(t * theta);
+    return b / (a + b);
+}
+double nlerpAngle(double u, double theta) {
+    return std::atan2(u * std::sin(theta), (1 - u) + u * std::cos(theta));
+}
+
+struct NlerpFit {
+    float k1, k2;
+    double error;  // the largest arc angle to the slerp over the interval (radians)
+};
+
+// Least-squares fit of u(t) - t = w (2t - 1) (k1 + k2 w), w = t (1 - t) (the correction is
+// odd about t = 1/2, as slerp is symmetric), then its error measured on a fine grid.
+NlerpFit fitNlerp(double theta) {
+    constexpr int kFitSamples = 32, kCheckSamples = 256;
+    // (Nearly) equal keys: plain nlerp, off by about theta^3 / 60 at most (and u is 0/0).
+    if (theta < 1e-4) return {0, 0, theta * theta * theta};
+    double s11 = 0, s12 = 0, s22 = 0, r1 = 0, r2 = 0;
+    for (int i = 1; i < kFitSamples; ++i) {
+        const double t = static_cast<double>(i) / kFitSamples, w = t * (1 - t);
+        const double b1 = w * (2 * t - 1), b2 = b1 * w;
+        const double d = exactNlerpParameter(t, theta) - t;
+        s11 += b1 * b1;
+        s12 += b1 * b2;
+        s22 += b2 * b2;
+        r1 += b1 * d;
+        r2 += b2 * d;
+    }
+    const double det = s11 * s22 - s12 * s12;
+    NlerpFit fit{static_cast<float>((r1 * s22 - r2 * s12) / det),
+                 static_cast<float>((s11 * r2 - s12 * r1) / det), 0};
+    for (int i = 1; i < kCheckSamples; ++i) {
+        const double t = static_cast<double>(i) / kCheckSamples, w = t * (1 - t);
+        const double u = t + w * (2 * t - 1) * (fit.k1 + fit.k2 * w);
+        fit.error = std::max(fit.error, std::fabs(nlerpAngle(u, theta) - t * theta));
+    }
+    return fit;
+}
+
+}  // namespace
+
 void prepareSlerpAngles(AnimationSampler& sampler) {
     sampler.slerpAngles.clear();
+    sampler.rotationErrorBound = 0;
     if (sampler.interpolation != Interpolation::Linear || sampler.components != 4 ||
         sampler.times.size() < 2 || sampler.values.size() != 4 * sampler.times.size())
         return;
     sampler.slerpAngles.resize(kSlerpAngleFloats * (sampler.times.size() - 1));
     for (std::size_t k = 0; k + 1 < sampler.times.size(); ++k) {
-        const Arc arc = arcBetween(&sampler.values[4 * k], &sampler.values[4 * (k + 1)]);
+        const float* a = &sampler.values[4 * k];
+        const float* b = &sampler.values[4 * (k + 1)];
+        const Arc arc = arcBetween(a, b);
         float* interval = &sampler.slerpAngles[kSlerpAngleFloats * k];
-        // A zero sine marks the normalised-lerp case (a real one is never 0 there: theta is
-        // at least acos(0.9995)).
+        interval[2] = arc.sign;
+        // The keys' own arc, in double (unit keys: the loader's values may be a little off).
+        const double dot =
+            std::fabs(static_cast<double>(a[0]) * b[0] + static_cast<double>(a[1]) * b[1] +
+                      static_cast<double>(a[2]) * b[2] + static_cast<double>(a[3]) * b[3]);
+        const double theta = std::acos(std::min(1.0, dot));
+        const NlerpFit fit = fitNlerp(theta);
+        if (fit.error <= kNlerpErrorTolerance) {
+            interval[0] = fit.k1;
+            interval[1] = fit.k2;
+            interval[3] = 1;  // corrected nlerp
+            sampler.rotationErrorBound =
+                std::max(sampler.rotationErrorBound, static_cast<float>(fit.error));
+            continue;
+        }
+        // Too wide an arc for the correction: slerp, with its angle and sine. A zero sine
+        // would mark plain lerp (a real one is never 0 here: theta is at least acos(0.9995)).
         interval[0] = arc.theta;
         interval[1] = arc.trigonometric ? arc.sinTheta : 0.0f;
-        interval[2] = arc.sign;
-        interval[3] = 0;  // padding: one interval per 16 bytes
+        interval[3] = 0;
     }
 }
 
