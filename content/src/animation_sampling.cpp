@@ -162,7 +162,7 @@ NlerpFit fitNlerp(double theta) {
 
 }  // namespace
 
-void prepareSlerpAngles(AnimationSampler& sampler) {
+void prepareSlerpAngles(AnimationSampler& sampler, double nlerpTolerance) {
     sampler.slerpAngles.clear();
     sampler.rotationErrorBound = 0;
     if (sampler.interpolation != Interpolation::Linear || sampler.components != 4 ||
@@ -181,7 +181,7 @@ void prepareSlerpAngles(AnimationSampler& sampler) {
                       static_cast<double>(a[2]) * b[2] + static_cast<double>(a[3]) * b[3]);
         const double theta = std::acos(std::min(1.0, dot));
         const NlerpFit fit = fitNlerp(theta);
-        if (fit.error <= kNlerpErrorTolerance) {
+        if (nlerpTolerance > 0 && fit.error <= nlerpTolerance) {
             interval[0] = fit.k1;
             interval[1] = fit.k2;
             interval[3] = 1;  // corrected nlerp

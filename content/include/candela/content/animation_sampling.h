@@ -35,10 +35,13 @@ std::size_t keyIntervalAt(const std::vector<float>& times, float time);
 // The same, trying `cursor` and the interval after it before searching; updates `cursor`.
 std::size_t keyIntervalAt(const std::vector<float>& times, float time, std::uint32_t& cursor);
 
-// Fills sampler.slerpAngles for a LINEAR rotation sampler (each key interval's angle and its
-// sine, which slerp would otherwise compute with an acos and a sine per channel per frame);
-// clears them for any other sampler. The loader calls it; results are identical either way.
-void prepareSlerpAngles(AnimationSampler& sampler);
+// Fills sampler.slerpAngles for a LINEAR rotation sampler (clears them for any other): per
+// key interval either a corrected normalised lerp, where its error against slerp, measured
+// here, is at most `nlerpTolerance` radians (no sine per frame; sampler.rotationErrorBound
+// keeps the largest), or slerp's angle and sine (which slerp would otherwise compute with an
+// acos and a sine per channel per frame, same values). The loader calls it with
+// kNlerpErrorTolerance; 0 is the reference mode: exact slerp everywhere.
+void prepareSlerpAngles(AnimationSampler& sampler, double nlerpTolerance = kNlerpErrorTolerance);
 
 // Wraps or clamps a play time into [0, duration].
 float clipTime(float time, float duration, bool loop);
