@@ -90,10 +90,11 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
         const auto node = static_cast<std::size_t>(channel.node);
         const AnimationSampler& sampler = clip.samplers[static_cast<std::size_t>(channel.sampler)];
         ecs::LocalTransform& local = pose[node];
-        // A node's first channel this frame starts it from the rest pose (converted once by
-        // prepareScratch), for the properties no channel animates.
+        // A node's first channel this frame starts it from the rest pose (the model's, shared
+        // by every instance and so in cache even with thousands of players; the player's own
+        // converted copy is not), for the properties no channel animates.
         if (channel.property != AnimatedProperty::Weights && !(s.touched[node] & kTransformTouched))
-            local = s.restPose[node];
+            local = restPose(model.nodes[node]);
         switch (channel.property) {
             case AnimatedProperty::Translation:
                 sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
