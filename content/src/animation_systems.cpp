@@ -97,13 +97,15 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
             local = restPose(model.nodes[node]);
         switch (channel.property) {
             case AnimatedProperty::Translation:
-                sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
-                                cursor);
+                if (!sampleLinearInCursorInterval(sampler, false, t, &local.position.x, cursor))
+                    sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
+                                    cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Rotation:
-                sampleAnimationUnnormalised(sampler, channel.property, t,
-                                            std::span(&local.rotation.x, 4), cursor);
+                if (!sampleLinearInCursorInterval(sampler, true, t, &local.rotation.x, cursor))
+                    sampleAnimationUnnormalised(sampler, channel.property, t,
+                                                std::span(&local.rotation.x, 4), cursor);
                 s.touched[node] |= kTransformTouched;
                 // Queued after each write, so whatever a channel wrote last is normalised.
                 unnormalised[pending++] = &local.rotation.x;
@@ -113,7 +115,9 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
                 }
                 break;
             case AnimatedProperty::Scale:
-                sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3), cursor);
+                if (!sampleLinearInCursorInterval(sampler, false, t, &local.scale.x, cursor))
+                    sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3),
+                                    cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Weights: {
