@@ -1,6 +1,7 @@
 #include "candela/content/animation_systems.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -80,6 +81,9 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
     if (clipIndex < 0 || static_cast<std::size_t>(clipIndex) >= model.animations.size()) return;
     const AnimationClip& clip = model.animations[static_cast<std::size_t>(clipIndex)];
     const float t = clipTime(time, clip.duration, loop);
+    // Rotations are normalised four at a time (SSE2), the same values as one by one.
+    std::array<float*, 4> unnormalised{};
+    std::size_t pending = 0;
     for (std::size_t c = 0; c < clip.channels.size(); ++c) {
         const AnimationChannel& channel = clip.channels[c];
         std::uint32_t& cursor = cursors[c];
@@ -87,22 +91,33 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
         const AnimationSampler& sampler = clip.samplers[static_cast<std::size_t>(channel.sampler)];
         ecs::LocalTransform& local = pose[node];
         // A node's first channel this frame starts it from the rest pose (the model's, shared
-        // by every instance and so in cache), for the properties no channel animates.
+        // by every instance and so in cache even with thousands of players; the player's own
+        // converted copy is not), for the properties no channel animates.
         if (channel.property != AnimatedProperty::Weights && !(s.touched[node] & kTransformTouched))
             local = restPose(model.nodes[node]);
         switch (channel.property) {
             case AnimatedProperty::Translation:
-                sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
-                                cursor);
+                if (!sampleLinearInCursorInterval(sampler, false, t, &local.position.x, cursor))
+                    sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
+                                    cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Rotation:
-                sampleAnimation(sampler, channel.property, t, std::span(&local.rotation.x, 4),
-                                cursor);
+                if (!sampleLinearInCursorInterval(sampler, true, t, &local.rotation.x, cursor))
+                    sampleAnimationUnnormalised(sampler, channel.property, t,
+                                                std::span(&local.rotation.x, 4), cursor);
                 s.touched[node] |= kTransformTouched;
+                // Queued after each write, so whatever a channel wrote last is normalised.
+                unnormalised[pending++] = &local.rotation.x;
+                if (pending == unnormalised.size()) {
+                    normalizeQuaternions(unnormalised);
+                    pending = 0;
+                }
                 break;
             case AnimatedProperty::Scale:
-                sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3), cursor);
+                if (!sampleLinearInCursorInterval(sampler, false, t, &local.scale.x, cursor))
+                    sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3),
+                                    cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Weights: {
@@ -116,6 +131,7 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
             }
         }
     }
+    normalizeQuaternions(std::span<float* const>(unnormalised.data(), pending));
 }
 
 ecs::Vec3 lerp(ecs::Vec3 a, ecs::Vec3 b, float t) {
@@ -203,6 +219,8 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
 }  // namespace
 
 ecs::Mat4 affineInverse(const ecs::Mat4& m) {
+    // A mesh at the origin (most skinned meshes): the identity, as the adjugate would give.
+    if (isIdentity(m)) return ecs::Mat4::identity();
     const float a = m(0, 0), b = m(0, 1), c = m(0, 2);
     const float d = m(1, 0), e = m(1, 1), f = m(1, 2);
     const float g = m(2, 0), h = m(2, 1), i = m(2, 2);

@@ -15,6 +15,12 @@ namespace candela::content {
 // Inverse of an affine matrix (last row 0 0 0 1), through the 3x3 adjugate.
 ecs::Mat4 affineInverse(const ecs::Mat4& m);
 
+inline bool isIdentity(const ecs::Mat4& m) {
+    for (int i = 0; i < 16; ++i)
+        if (m.m[i] != (i % 5 == 0 ? 1.0f : 0.0f)) return false;
+    return true;
+}
+
 // Per joint j: toMesh * world(j) * inverse bind (a zero matrix where world(j) is null: the
 // joint is not shown), the previous frame's matrices kept by a swap (no copy, no allocation
 // once sized), and the deformed mesh's bounds from each joint's bind-space box.
@@ -35,12 +41,26 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
 #if defined(__SSE2__)
     __m128 low = _mm_set1_ps(kInf), high = _mm_set1_ps(-kInf);
 #endif
+    // A mesh at its world's origin (a character at the root, as the file places it) makes
+    // toMesh the identity, whose product changes no value (only a zero's sign): skipped.
+    const bool meshAtOrigin = isIdentity(toMesh);
     for (std::size_t j = 0; j < data.joints.size(); ++j) {
         const ecs::Mat4* jointWorld = world(j);
         if (jointWorld) {
-            ecs::multiplyByAffine(toMesh, *jointWorld, toJoint);
-            ecs::multiplyMatrices(toJoint, data.inverseBindMatrices[j].data(),
-                                  skin.jointMatrices[j]);
+            const ecs::Mat4* meshFromJoint = jointWorld;
+            if (!meshAtOrigin) {
+                ecs::multiplyByAffine(toMesh, *jointWorld, toJoint);
+                meshFromJoint = &toJoint;
+            }
+            // An affine inverse bind matrix (glTF's are; a file may still hold another) skips
+            // the products with its last row, which add exact zeros (same values).
+            const Matrix4& inverseBind = data.inverseBindMatrices[j];
+            if (inverseBind[3] == 0 && inverseBind[7] == 0 && inverseBind[11] == 0 &&
+                inverseBind[15] == 1) {
+                ecs::multiplyByAffine(*meshFromJoint, inverseBind.data(), skin.jointMatrices[j]);
+            } else {
+                ecs::multiplyMatrices(*meshFromJoint, inverseBind.data(), skin.jointMatrices[j]);
+            }
         } else {
             skin.jointMatrices[j] = ecs::Mat4{};
         }

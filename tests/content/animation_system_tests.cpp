@@ -114,6 +114,29 @@ TEST(AnimationSystems, FoxWalkPoseReachesTheNodeEntities) {
     }
 }
 
+// Forward playback takes the inline path (sampleLinearInCursorInterval, the cursor's key
+// interval or the next): frame after frame the entities hold exactly the general sampler's
+// values at the player's time.
+TEST(AnimationSystems, ForwardPlaybackPoseEqualsTheGeneralSamplerExactly) {
+    const Model fox = loadModel("Fox");
+    World world(fox);
+    AnimationPlayer& player = world.player();
+    const std::int32_t run = player.findClip("Run");
+    player.play(run);
+    const AnimationClip& clip = fox.animations[static_cast<std::size_t>(run)];
+    for (int frame = 0; frame < 60; ++frame) {
+        world.frame(1.0f / 60.0f);
+        for (const AnimationChannel& channel : clip.channels) {
+            const ecs::Entity e = player.nodeEntities[static_cast<std::size_t>(channel.node)];
+            const std::vector<float> expected = sampleChannel(clip, channel, player.time);
+            const std::vector<float> got =
+                localValue(world.registry.get<ecs::LocalTransform>(e), channel.property);
+            for (std::size_t c = 0; c < expected.size(); ++c)
+                ASSERT_EQ(got[c], expected[c]) << "frame " << frame << " node " << channel.node;
+        }
+    }
+}
+
 // The skeleton pass writes joints' worlds itself and leaves their locals unstamped: what it
 // wrote must be exactly what propagation computes from those locals, and an entity attached
 // under a joint (something else reading it) must still follow the joint.

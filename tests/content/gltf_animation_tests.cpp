@@ -3,7 +3,9 @@
 // animation data gives an error naming the file and element while the model still loads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "candela/content/animation_sampling.h"
@@ -325,4 +327,62 @@ TEST(GltfAnimation, MorphWeightsAtTimesMatchTheFilesKeys) {
 }
 
 }  // namespace
+// LINEAR rotations: sampling (corrected nlerp where prepareSlerpAngles measured it within
+// kNlerpErrorTolerance, slerp elsewhere) against slerp in double precision, at 97 times per
+// key interval, in every clip of Fox and CesiumMan: within the sampler's measured bound plus
+// float rounding.
+TEST(GltfAnimation, SampledRotationsStayWithinTheNlerpBoundOfSlerp) {
+    constexpr double kFloatRounding = 1e-6;
+    double worst = 0;
+    for (const char* name : {"Fox", "CesiumMan"}) {
+        const Model model = loadClean(name);
+        for (const AnimationClip& clip : model.animations) {
+            for (const AnimationChannel& channel : clip.channels) {
+                if (channel.property != AnimatedProperty::Rotation) continue;
+                const AnimationSampler& sampler =
+                    clip.samplers[static_cast<std::size_t>(channel.sampler)];
+                if (sampler.interpolation != Interpolation::Linear) continue;
+                EXPECT_LE(sampler.rotationErrorBound, kNlerpErrorTolerance);
+                for (std::size_t k = 0; k + 1 < sampler.times.size(); ++k) {
+                    const float* a = &sampler.values[4 * k];
+                    const float* b = &sampler.values[4 * (k + 1)];
+                    double dot = 0, lengthA = 0, lengthB = 0;
+                    for (int c = 0; c < 4; ++c) {
+                        dot += static_cast<double>(a[c]) * b[c];
+                        lengthA += static_cast<double>(a[c]) * a[c];
+                        lengthB += static_cast<double>(b[c]) * b[c];
+                    }
+                    const double sign = dot < 0 ? -1 : 1;
+                    const double theta =
+                        std::acos(std::min(1.0, std::fabs(dot) / std::sqrt(lengthA * lengthB)));
+                    for (int i = 1; i < 98; ++i) {
+                        const double t = i / 98.0;
+                        const double wa =
+                            theta < 1e-9 ? 1 - t : std::sin((1 - t) * theta) / std::sin(theta);
+                        const double wb = theta < 1e-9 ? t : std::sin(t * theta) / std::sin(theta);
+                        double exact[4], length = 0;
+                        for (int c = 0; c < 4; ++c) {
+                            exact[c] = wa * a[c] / std::sqrt(lengthA) +
+                                       sign * wb * b[c] / std::sqrt(lengthB);
+                            length += exact[c] * exact[c];
+                        }
+                        const float time = static_cast<float>(
+                            sampler.times[k] + t * (sampler.times[k + 1] - sampler.times[k]));
+                        float sampled[4];
+                        sampleAnimation(sampler, AnimatedProperty::Rotation, time, sampled);
+                        double difference = 0;
+                        for (int c = 0; c < 4; ++c)
+                            difference = std::max(
+                                difference, std::fabs(sampled[c] - exact[c] / std::sqrt(length)));
+                        worst = std::max(worst, difference);
+                        ASSERT_LE(difference, sampler.rotationErrorBound + kFloatRounding)
+                            << name << " clip " << clip.name << " key " << k << " t " << t;
+                    }
+                }
+            }
+        }
+    }
+    std::printf("largest difference from slerp: %.3g\n", worst);
+}
+
 }  // namespace candela::content

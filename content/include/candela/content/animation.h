@@ -4,6 +4,7 @@
 // indices are in range, key times are finite and strictly increasing, and every sampler holds
 // exactly one value (three for CUBICSPLINE: in-tangent, value, out-tangent) per key.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,15 +24,26 @@ struct SkinData {
 enum class Interpolation : std::uint8_t { Step, Linear, CubicSpline };
 enum class AnimatedProperty : std::uint8_t { Translation, Rotation, Scale, Weights };
 
+inline constexpr std::size_t kSlerpAngleFloats = 4;
+// A LINEAR rotation interval is sampled with a corrected normalised lerp (ozz-animation
+// samples with plain nlerp) where that stays within this arc angle (radians) of slerp, with
+// exact slerp elsewhere (docs/speed-vs-error.md).
+inline constexpr double kNlerpErrorTolerance = 2e-6;
+
 struct AnimationSampler {
     Interpolation interpolation = Interpolation::Linear;
     std::uint32_t components = 0;  // floats per value: 3, 4 (x, y, z, w) or the target count
     std::vector<float> times;      // seconds, strictly increasing
     // Per key `components` floats; CUBICSPLINE keys hold in-tangent, value, out-tangent.
     std::vector<float> values;
-    // LINEAR rotations: per key interval, the arc's angle and its sine (0: the keys are close
-    // enough for normalised lerp); empty: computed when sampled. prepareSlerpAngles fills it.
+    // LINEAR rotations: per key interval kSlerpAngleFloats floats, filled by
+    // prepareSlerpAngles; empty: slerp computed when sampled. Either {k1, k2, sign, 1}: a
+    // corrected normalised lerp (no sines; within kNlerpErrorTolerance of slerp), or
+    // {angle, sine, sign, 0}: slerp (sine 0: plain lerp, the keys nearly parallel).
     std::vector<float> slerpAngles;
+    // The largest arc angle (radians) between what sampling returns and exact slerp over the
+    // corrected-nlerp intervals (0: none), measured by prepareSlerpAngles.
+    float rotationErrorBound = 0;
 };
 
 struct AnimationChannel {

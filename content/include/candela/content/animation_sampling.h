@@ -19,16 +19,71 @@ void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property,
 void sampleAnimation(const AnimationSampler& sampler, AnimatedProperty property, float time,
                      std::span<float> out, std::uint32_t& cursor);
 
+// The same, but a rotation comes out as interpolated, not yet unit length: callers that
+// sample many channels normalise them together afterwards with normalizeQuaternions (the
+// same values as sampleAnimation's).
+void sampleAnimationUnnormalised(const AnimationSampler& sampler, AnimatedProperty property,
+                                 float time, std::span<float> out, std::uint32_t& cursor);
+// Scales each quaternion (x, y, z, w; 4 floats at each pointer) to unit length, or makes it
+// the identity when its length is below 1e-20: four at a time with SSE2, the same values as
+// one at a time.
+void normalizeQuaternions(std::span<float* const> quaternions);
+
+// The hot case of sampleAnimation, inline: a LINEAR translation or scale (3 components), or a
+// LINEAR rotation whose interval holds a corrected nlerp (see prepareSlerpAngles), at a time
+// in the cursor's key interval or the next one (forward playback). Writes the same values as
+// sampleAnimationUnnormalised and returns true; returns false (nothing written, cursor kept)
+// in every other case, for the caller to take the general path.
+inline bool sampleLinearInCursorInterval(const AnimationSampler& sampler, bool rotation, float time,
+                                         float* out, std::uint32_t& cursor) {
+    const std::size_t n = rotation ? 4 : 3;
+    const std::size_t keys = sampler.times.size();
+    if (sampler.interpolation != Interpolation::Linear || sampler.components != n) return false;
+    const float* times = sampler.times.data();
+    std::size_t k = cursor;
+    if (!(k + 1 < keys && times[k] <= time && time < times[k + 1] && time > times[0])) {
+        if (!(k + 2 < keys && times[k + 1] <= time && time < times[k + 2] && time > times[0]))
+            return false;
+        ++k;
+    }
+    const float* entry = nullptr;
+    if (rotation) {
+        if (sampler.slerpAngles.size() != kSlerpAngleFloats * (keys - 1)) return false;
+        entry = sampler.slerpAngles.data() + kSlerpAngleFloats * k;
+        if (entry[3] == 0) return false;  // an exact-slerp interval
+    }
+    cursor = static_cast<std::uint32_t>(k);
+    const float t0 = times[k];
+    const float t = (time - t0) / (times[k + 1] - t0);
+    const float* a = sampler.values.data() + k * n;
+    const float* b = a + n;
+    if (!rotation) {
+        for (std::size_t c = 0; c < 3; ++c)
+            out[c] = a[c] + (b[c] - a[c]) * t;
+        return true;
+    }
+    // The corrected nlerp's weights and sum, as the general path computes them.
+    const float w = t * (1 - t);
+    const float u = t + w * (2 * t - 1) * (entry[0] + entry[1] * w);
+    const float wa = 1 - u, wb = entry[2] * u;
+    for (std::size_t c = 0; c < 4; ++c)
+        out[c] = wa * a[c] + wb * b[c];
+    return true;
+}
+
 // Index k of the key interval [times[k], times[k+1]] holding `time` (0 before the first key,
 // times.size() - 1 from the last key on).
 std::size_t keyIntervalAt(const std::vector<float>& times, float time);
 // The same, trying `cursor` and the interval after it before searching; updates `cursor`.
 std::size_t keyIntervalAt(const std::vector<float>& times, float time, std::uint32_t& cursor);
 
-// Fills sampler.slerpAngles for a LINEAR rotation sampler (each key interval's angle and its
-// sine, which slerp would otherwise compute with an acos and a sine per channel per frame);
-// clears them for any other sampler. The loader calls it; results are identical either way.
-void prepareSlerpAngles(AnimationSampler& sampler);
+// Fills sampler.slerpAngles for a LINEAR rotation sampler (clears them for any other): per
+// key interval either a corrected normalised lerp, where its error against slerp, measured
+// here, is at most `nlerpTolerance` radians (no sine per frame; sampler.rotationErrorBound
+// keeps the largest), or slerp's angle and sine (which slerp would otherwise compute with an
+// acos and a sine per channel per frame, same values). The loader calls it with
+// kNlerpErrorTolerance; 0 is the reference mode: exact slerp everywhere.
+void prepareSlerpAngles(AnimationSampler& sampler, double nlerpTolerance = kNlerpErrorTolerance);
 
 // Wraps or clamps a play time into [0, duration].
 float clipTime(float time, float duration, bool loop);

@@ -10,9 +10,9 @@
 
 namespace candela::ecs {
 
-// out = parent * local, where local is affine (last row 0 0 0 1). The hot step of
-// propagation: with SSE2 it is 12 broadcasts, 12 multiplies and 9 adds on whole columns.
-inline void multiplyByAffine(const Mat4& parent, const Mat4& local, Mat4& out) noexcept {
+// out = parent * local, where local (16 floats, column-major) is affine (last row 0 0 0 1). The hot
+// step of propagation: with SSE2 it is 12 broadcasts, 12 multiplies and 9 adds on whole columns.
+inline void multiplyByAffine(const Mat4& parent, const float* local, Mat4& out) noexcept {
 #if defined(__SSE2__)
     const __m128 p0 = _mm_loadu_ps(parent.m + 0);
     const __m128 p1 = _mm_loadu_ps(parent.m + 4);
@@ -25,19 +25,23 @@ inline void multiplyByAffine(const Mat4& parent, const Mat4& local, Mat4& out) n
                                      _mm_mul_ps(p1, _mm_shuffle_ps(l, l, _MM_SHUFFLE(1, 1, 1, 1)))),
                           _mm_mul_ps(p2, _mm_shuffle_ps(l, l, _MM_SHUFFLE(2, 2, 2, 2))));
     };
-    _mm_storeu_ps(out.m + 0, transform(local.m + 0));
-    _mm_storeu_ps(out.m + 4, transform(local.m + 4));
-    _mm_storeu_ps(out.m + 8, transform(local.m + 8));
-    _mm_storeu_ps(out.m + 12, _mm_add_ps(transform(local.m + 12), p3));  // w = 1
+    _mm_storeu_ps(out.m + 0, transform(local + 0));
+    _mm_storeu_ps(out.m + 4, transform(local + 4));
+    _mm_storeu_ps(out.m + 8, transform(local + 8));
+    _mm_storeu_ps(out.m + 12, _mm_add_ps(transform(local + 12), p3));  // w = 1
 #else
     for (int c = 0; c < 4; ++c) {
-        const float l0 = local.m[4 * c], l1 = local.m[4 * c + 1], l2 = local.m[4 * c + 2];
+        const float l0 = local[4 * c], l1 = local[4 * c + 1], l2 = local[4 * c + 2];
         for (int i = 0; i < 4; ++i) {
             out.m[4 * c + i] = parent.m[i] * l0 + parent.m[4 + i] * l1 + parent.m[8 + i] * l2 +
                                (c == 3 ? parent.m[12 + i] : 0.0f);
         }
     }
 #endif
+}
+
+inline void multiplyByAffine(const Mat4& parent, const Mat4& local, Mat4& out) noexcept {
+    multiplyByAffine(parent, local.m, out);
 }
 
 // out = a * b for any column-major 4x4 b (16 floats), in Mat4's operator* order.
