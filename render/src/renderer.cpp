@@ -594,6 +594,22 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
     }
     const ShadowDescriptors shadowDescriptors = shadowPass_->descriptors(features.shadows);
+    // What every lit pass reads beside its own inputs: the light buffer, the cluster lists and
+    // the shadow maps (the lighting pass in its compute stage, hair, wires and blended surfaces
+    // in their fragment stage).
+    auto readLitInputs = [&](FrameGraph::PassBuilder& p, VkPipelineStageFlags2 stages) {
+        p.read(h.lights, Use::StorageRead, stages);
+        if (features.clustered) {
+            p.read(h.clusters.ranges, Use::StorageRead, stages);
+            p.read(h.clusters.indices, Use::StorageRead, stages);
+            p.read(h.clusters.depthRange, Use::StorageRead, stages);
+        }
+        if (features.shadows) {
+            p.read(shadowAtlas, Use::Sampled, stages);
+            p.read(shadowViews, Use::StorageRead, stages);
+            p.read(shadowLights, Use::StorageRead, stages);
+        }
+    };
 
     const SceneHandles ids = h;  // resource ids for the passes to look up
     auto gbufferViews = [ids](PassContext& ctx) {
@@ -755,19 +771,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             p.read(h.clearCoat, Use::Sampled);
         }
         p.read(h.camera, Use::Uniform);
-        p.read(h.lights, Use::StorageRead);
+        readLitInputs(p, kComputeStage);
         if (occlusion) p.read(*occlusion, Use::Sampled);
         if (specularOcclusion) p.read(*specularOcclusion, Use::Sampled);
-        if (features.clustered) {
-            p.read(h.clusters.ranges, Use::StorageRead);
-            p.read(h.clusters.indices, Use::StorageRead);
-            p.read(h.clusters.depthRange, Use::StorageRead);
-        }
-        if (features.shadows) {
-            p.read(shadowAtlas, Use::Sampled);
-            p.read(shadowViews, Use::StorageRead);
-            p.read(shadowLights, Use::StorageRead);
-        }
         if (features.countLightPairs) p.write(pairCounts, Use::StorageWrite);
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
@@ -985,19 +991,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                         hairPass_->recordResolve(ctx.cmd(), inputsOf(ctx));
                     });
                 p.read(h.camera, Use::Uniform, kRasterStages);
-                p.read(h.lights, Use::StorageRead, kFragmentStage);
                 p.read(heads, Use::StorageRead, kFragmentStage);
                 p.read(nodes, Use::StorageRead, kFragmentStage);
-                if (features.clustered) {
-                    p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
-                    p.read(h.clusters.indices, Use::StorageRead, kFragmentStage);
-                    p.read(h.clusters.depthRange, Use::StorageRead, kFragmentStage);
-                }
-                if (features.shadows) {
-                    p.read(shadowAtlas, Use::Sampled, kFragmentStage);
-                    p.read(shadowViews, Use::StorageRead, kFragmentStage);
-                    p.read(shadowLights, Use::StorageRead, kFragmentStage);
-                }
+                readLitInputs(p, kFragmentStage);
                 h.hdr = p.write(h.hdr, Use::ColorAttachment);
             }
             {
@@ -1046,17 +1042,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                });
             p.read(h.depth, Use::DepthRead);
             p.read(h.camera, Use::Uniform, kRasterStages);
-            p.read(h.lights, Use::StorageRead, kFragmentStage);
-            if (features.clustered) {
-                p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
-                p.read(h.clusters.indices, Use::StorageRead, kFragmentStage);
-                p.read(h.clusters.depthRange, Use::StorageRead, kFragmentStage);
-            }
-            if (features.shadows) {
-                p.read(shadowAtlas, Use::Sampled, kFragmentStage);
-                p.read(shadowViews, Use::StorageRead, kFragmentStage);
-                p.read(shadowLights, Use::StorageRead, kFragmentStage);
-            }
+            readLitInputs(p, kFragmentStage);
             if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
             h.hdr = p.write(h.hdr, Use::ColorAttachment);
         }
@@ -1131,17 +1117,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
         p.read(h.camera, Use::Uniform, kRasterStages);
         readDeformed(p);
-        p.read(h.lights, Use::StorageRead, kFragmentStage);
-        if (features.clustered) {
-            p.read(h.clusters.ranges, Use::StorageRead, kFragmentStage);
-            p.read(h.clusters.indices, Use::StorageRead, kFragmentStage);
-            p.read(h.clusters.depthRange, Use::StorageRead, kFragmentStage);
-        }
-        if (features.shadows) {
-            p.read(shadowAtlas, Use::Sampled, kFragmentStage);
-            p.read(shadowViews, Use::StorageRead, kFragmentStage);
-            p.read(shadowLights, Use::StorageRead, kFragmentStage);
-        }
+        readLitInputs(p, kFragmentStage);
         h.hdr = p.write(h.hdr, Use::ColorAttachment);
         h.motion = p.write(h.motion, Use::ColorAttachment);
         features_.push_back("forward_transparency");
