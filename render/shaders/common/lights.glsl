@@ -222,8 +222,8 @@ bool localLightRepresentative(Light light) {
 // specular is its fitted LTC integrated over the light (issue 15, report "area lights by LTC":
 // the representative point is off by 222 % at roughness 0.1, sin sigma 0.4, LTC within a few
 // %): the sphere as the disk facing P with the same cone (ltcSphereIntegral) at luminance
-// I / (pi r^2), the tube as the Lambertian capsule of the same lumens (ltcTubeIntegral: the
-// cylinder's closed-form line integral plus the end caps as disks facing P). Diffuse,
+// I / (pi r^2), the tube as the Lambertian capsule of the same lumens (ltcTubeIntegral: a thin
+// one the closed-form Lambertian line, a thick one its silhouette rectangle with the caps). Diffuse,
 // falloff window, spot cone and incident illuminance stay evaluateLocalLight's (`o`): only the
 // specular fields are replaced, so evaluateLocalLight runs once per light whatever the mode.
 LightIncidence withLtcSpecular(LightIncidence o, Light light, vec3 P, vec3 N, vec3 R, float alpha) {

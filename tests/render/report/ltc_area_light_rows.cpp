@@ -310,8 +310,10 @@ void addLtcAreaLightRows(ReportContext& context) {
         {"Tube light, --area-lights representative (eq. 16-20, correlated Smith)", reference,
          metric(tube.representative, tubeGridText), tube.representative.worst, "rel",
          tube.representative.where, relativeCost(ns[3]), measuredNs(ns[3])},
-        {"Tube light, --area-lights ltc (line integral)", reference, metric(tube.ltc, tubeGridText),
-         tube.ltc.worst, "rel", tube.ltc.where, relativeCost(ns[4]), measuredNs(ns[4])},
+        {"Tube light of radius 0, --area-lights ltc (Lambertian line) against the isotropic "
+         "segment",
+         reference, metric(tube.ltc, tubeGridText), tube.ltc.worst, "rel", tube.ltc.where,
+         relativeCost(ns[4]), measuredNs(ns[4])},
     };
     for (ReportRow& row : rows)
         context.report.rows.push_back(row);
@@ -334,7 +336,8 @@ void addLtcAreaLightRows(ReportContext& context) {
             {name + ", bare segment LTC (ltcLineIntegral: the tube before the capsule)",
              capsuleReference, metric(capsule.segment, tubeGridText), capsule.segment.worst, "rel",
              capsule.segment.where, relativeCost(ns[6]), measuredNs(ns[6])},
-            {name + ", --area-lights ltc (capsule: Lambertian cylinder + caps as facing disks)",
+            {name +
+                 ", --area-lights ltc (ltcTubeIntegral: silhouette rectangle run on over the caps)",
              capsuleReference, metric(capsule.capsule, tubeGridText), capsule.capsule.worst, "rel",
              capsule.capsule.where, relativeCost(ns[5]), measuredNs(ns[5])},
         };
@@ -382,8 +385,10 @@ void addLtcAreaLightRows(ReportContext& context) {
     tubeTable.title = "Tube lights: representative point / LTC, energy-conserving BRDF";
     tubeTable.intro =
         "The tube geometry and views of the representative-point table, energy-conserving lobe. "
-        "Cell: relative L1 error over the six views, representative point / LTC (ltc_line.glsl: "
-        "the segment's closed-form integral with |p| piecewise linear). Reference: " +
+        "Cell: relative L1 error over the six views, representative point / LTC (ltcTubeIntegral "
+        "at radius 0: the thin Lambertian tube's closed-form line, 4 / pi brighter across the "
+        "axis than this isotropic reference; the capsule tables below measure it against the "
+        "light it stands for). Reference: " +
         std::to_string(tubeSamples) + " midpoints along the segment in double.";
     context.report.tables.push_back(tubeTable);
 
