@@ -148,8 +148,9 @@ CapsuleSweep capsuleSweep(ReportContext& context, double radius, const std::vect
     std::vector<double> magnitudes, references;
     for (double roughness : kAreaLightRoughness) {
         const double alpha = stability::reference::alphaFromRoughness(roughness);
-        // A quarter of the lobe's angular width at 1 m between points (alpha 0.01: 2.5 mm).
-        const double spacing = spacingScale * std::max(alpha, 0.004) / 4.0;
+        // A quarter of the lobe's angular width at 1 m between points (alpha 0.01: 2.5 mm), at
+        // most 2 cm (the capsule's own curvature: 8 points around a 0.3 m cylinder were 5 % off).
+        const double spacing = spacingScale * std::min(std::max(alpha, 0.004) / 4.0, 0.02);
         for (double length : lengths) {
             for (const AreaLightView& g : tubeViews(length)) {
                 const Vec3 V = viewFor(g);
@@ -361,7 +362,7 @@ void addLtcAreaLightRows(ReportContext& context) {
             "The tube grid (centre 1 m away, 30 degrees off the normal, axis across the plane of "
             "incidence, six views) for a tube of this radius, against the Lambertian capsule of "
             "the same lumens (luminance lumens / (pi A)), integrated by midpoint quadrature over "
-            "its surface (points a quarter of the lobe width apart" +
+            "its surface (points a quarter of the lobe width apart, at most 2 cm" +
             std::string(quick ? ", 4x coarser in --quick" : "") +
             "). Cell: relative L1 over the views.";
         context.report.tables.push_back(table);
