@@ -19,6 +19,7 @@
 #include "common/area_light_texture.glsl"
 #include "common/ltc.glsl"
 #include "common/ltc_area_lights.glsl"
+#include "common/ltc_tube.glsl"
 #include "common/ltc_disk.glsl"
 
 // Per-light `quality` (Light.spotOffset of area lights, gpu_light.cpp, its low two bits): 0 the

@@ -222,7 +222,8 @@ bool localLightRepresentative(Light light) {
 // specular is its fitted LTC integrated over the light (issue 15, report "area lights by LTC":
 // the representative point is off by 222 % at roughness 0.1, sin sigma 0.4, LTC within a few
 // %): the sphere as the disk facing P with the same cone (ltcSphereIntegral) at luminance
-// I / (pi r^2), the tube as its segment with I spread along it (ltcLineIntegral). Diffuse,
+// I / (pi r^2), the tube as the Lambertian capsule of the same lumens (ltcTubeIntegral: a thin
+// one the closed-form Lambertian line, a thick one its silhouette rectangle with the caps). Diffuse,
 // falloff window, spot cone and incident illuminance stay evaluateLocalLight's (`o`): only the
 // specular fields are replaced, so evaluateLocalLight runs once per light whatever the mode.
 LightIncidence withLtcSpecular(LightIncidence o, Light light, vec3 P, vec3 N, vec3 R, float alpha) {
@@ -243,7 +244,7 @@ LightIncidence withLtcSpecular(LightIncidence o, Light light, vec3 P, vec3 N, ve
     mat3 minv = ltcInverseMatrix(texture(ltcMatrixTable, uv));
     float integral;  // the unit-magnitude lobe's integral per candela
     if (tube) {
-        integral = ltcLineIntegral(minv, frame * L0, frame * (L0 + Ld));
+        integral = ltcTubeIntegral(minv, frame * L0, frame * (L0 + Ld), light.sourceRadius);
     } else {
         float radius = light.sourceRadius;
         integral = ltcSphereIntegral(minv, frame * toCenter, radius) / (PI * radius * radius);
@@ -258,9 +259,8 @@ LightIncidence withLtcSpecular(LightIncidence o, Light light, vec3 P, vec3 N, ve
 // Sphere and tube lights go by LTC when the shader binds the table, the light's quality (or
 // the renderer's default) says ltc, and the sphere is not so small against its distance that
 // its luminance I / (pi r^2) loses precision (sin sigma under 1e-3: a point, where the
-// representative point is exact). A tube's radius is left out of its specular as lineIrradiance
-// leaves it out of its diffuse: ltcLineIntegral is the segment alone (no cylinder width, no
-// end caps), which for the thin tubes it is meant for (radius << distance) is what the light is.
+// representative point is exact). A tube's specular is its capsule's (ltc_tube.glsl); its
+// diffuse stays lineIrradiance's isotropic segment.
 bool localLightByLtc(Light light, vec3 P) {
 #ifdef AREA_LIGHT_LTC_MATRIX_BINDING
     if (localLightRepresentative(light)) return false;

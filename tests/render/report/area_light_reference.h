@@ -2,6 +2,7 @@
 // Double-precision specular of a sphere and of a segment (tube of radius 0) light, integrated
 // over the light: the surface is at the origin with N = +Z, F0 = 1 (Fresnel 1), the BRDF is
 // the lighting pass's D (eq. 3) and Vis (eq. 4), intensity 1 cd.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -77,6 +78,60 @@ inline double tubeSpecularReference(const Vec3& centre, const Vec3& axis, double
                stability::reference::inverseSquare(std::sqrt(distanceSq));
     }
     return sum / n;
+}
+
+// The Lambertian capsule a tube light of radius r is (issue 15): a cylinder of radius r around
+// the segment centre +- axis l / 2 and two hemispherical end caps, emitting the engine's tube
+// lumens (4 pi I, gpu_light.cpp: I = lumens / (4 pi)) evenly over its area A = 2 pi r l +
+// 4 pi r^2: luminance 4 I / A, I = 1 cd. Midpoint quadrature over the surface, about `spacing`
+// metres between points (cylinder: along x around; caps: cos theta x around, equal areas), each
+// element counted where it faces the shading point (the capsule is convex: nothing else hides
+// it), with the exact 1 / d^2.
+inline double capsuleSpecularReference(const Vec3& centre, const Vec3& axis, double length,
+                                       double radius, const Vec3& V, double alpha, double spacing,
+                                       bool correlated = true) {
+    namespace ref = stability::reference;
+    constexpr double kPi = std::numbers::pi;
+    const Vec3 helper = std::fabs(axis[2]) < 0.9 ? Vec3{0, 0, 1} : Vec3{1, 0, 0};
+    const Vec3 e1 = normalized(helper - ref::dot(helper, axis) * axis);
+    const Vec3 e2 = {axis[1] * e1[2] - axis[2] * e1[1], axis[2] * e1[0] - axis[0] * e1[2],
+                     axis[0] * e1[1] - axis[1] * e1[0]};
+    const double luminance = 4.0 / (2.0 * kPi * radius * length + 4.0 * kPi * radius * radius);
+    auto element = [&](const Vec3& X, const Vec3& normal, double area) {
+        const double distanceSq = ref::dot(X, X);
+        const Vec3 L = (1.0 / std::sqrt(distanceSq)) * X;
+        const double emitted = -ref::dot(normal, L);
+        if (emitted <= 0.0) return 0.0;
+        return specularTimesNoL(V, L, alpha, correlated) * emitted * area / distanceSq;
+    };
+    const int around = std::max(8, int(std::ceil(2.0 * kPi * radius / spacing)));
+    const int along = std::max(1, int(std::ceil(length / spacing)));
+    const double dpsi = 2.0 * kPi / around;
+    double sum = 0.0;
+    for (int j = 0; j < around; ++j) {
+        const double psi = (j + 0.5) * dpsi;
+        const Vec3 normal = std::cos(psi) * e1 + std::sin(psi) * e2;
+        for (int i = 0; i < along; ++i) {
+            const Vec3 X = centre + ((((i + 0.5) / along) - 0.5) * length) * axis + radius * normal;
+            sum += element(X, normal, (length / along) * radius * dpsi);
+        }
+    }
+    // Caps: z = cos theta uniform in [0, 1] gives equal areas r^2 dz dpsi.
+    const int rings = std::max(4, int(std::ceil(0.5 * kPi * radius / spacing)));
+    for (double side : {-1.0, 1.0}) {
+        const Vec3 end = centre + (0.5 * length * side) * axis;
+        for (int k = 0; k < rings; ++k) {
+            const double z = (k + 0.5) / rings;
+            const double rho = std::sqrt(1.0 - z * z);
+            for (int j = 0; j < around; ++j) {
+                const double psi = (j + 0.5) * dpsi;
+                const Vec3 normal =
+                    (side * z) * axis + (rho * std::cos(psi)) * e1 + (rho * std::sin(psi)) * e2;
+                sum += element(end + radius * normal, normal, radius * radius * dpsi / rings);
+            }
+        }
+    }
+    return luminance * sum;
 }
 
 // The report's area-light geometry (area_light_rows.cpp, ltc_area_light_rows.cpp): the light's

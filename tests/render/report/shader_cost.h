@@ -31,7 +31,8 @@ enum class CostFunction : uint32_t {
     MultipleScattering = 15,
     PointLight = 16,  // representative-point specular (correlated Smith) of a point light
     SphereLtc = 17,
-    TubeLtc = 18,
+    TubeLtc = 18,         // ltcTubeIntegral, radius 0 (the thin path: no caps)
+    TubeCapsuleLtc = 19,  // ltcTubeIntegral, radius 0.1 m (cylinder and both caps)
     // Rect and disk lights (area_light_shapes_rows.cpp): diffuse + specular of one light.
     PointLightShading = 20,
     RectRepresentative = 21,
@@ -46,6 +47,7 @@ enum class CostFunction : uint32_t {
     RectLtcConstantIntensity = 28,
     DiskRepresentativeConstantIntensity = 29,
     DiskLtcConstantIntensity = 30,
+    TubeSegmentLtc = 31,  // ltcLineIntegral, the bare segment (the tube before the capsule)
 };
 
 struct CostJob {

@@ -24,6 +24,7 @@ enum class LightFunction : uint32_t {
     Product = 9,
     LtcQuad = 10,
     LtcDisk = 11,
+    LtcTube = 12,
     AreaLightDiffuse = 20,
 };
 

@@ -44,13 +44,19 @@ float representativePointSpecular(Light light, vec3 V, float roughness) {
 // --area-lights ltc: the unit-magnitude LTC's integral over the sphere or tube, times the
 // light's luminance (sphere, I / (pi r^2)) or intensity (tube); the caller multiplies by the
 // table's magnitude. minvEntries: the table's M^-1 (00, 02, 20, 22) for this roughness and view.
-float ltcSpecular(Light light, vec3 V, vec4 minvEntries) {
+// A tube by its capsule (ltcTubeIntegral, the renderer's), or with `segmentOnly` by the bare
+// segment's isotropic line integral (the renderer's before the capsule).
+float ltcSpecular(Light light, vec3 V, vec4 minvEntries, bool segmentOnly) {
     mat3 frame = ltcShadingFrame(kSurfaceNormal, V);
     mat3 minv = ltcInverseMatrix(minvEntries);
     vec3 center = frame * light.position;
     if (light.sourceLength > 0.0) {
         vec3 halfSegment = frame * light.tubeAxis * (0.5 * light.sourceLength);
-        return light.intensity.x * ltcLineIntegral(minv, center - halfSegment, center + halfSegment);
+        if (segmentOnly) {
+            return light.intensity.x * ltcLineIntegral(minv, center - halfSegment, center + halfSegment);
+        }
+        return light.intensity.x *
+               ltcTubeIntegral(minv, center - halfSegment, center + halfSegment, light.sourceRadius);
     }
     float luminance = light.intensity.x / (PI * light.sourceRadius * light.sourceRadius);
     return luminance * ltcSphereIntegral(minv, center, light.sourceRadius);

@@ -32,6 +32,7 @@ const uint kMultipleScattering = 15u;
 const uint kPointLight = 16u;
 const uint kSphereLtc = 17u;
 const uint kTubeLtc = 18u;
+const uint kTubeCapsuleLtc = 19u;
 const uint kPointLightShading = 20u;
 const uint kRectRepresentative = 21u;
 const uint kRectLtc = 22u;
@@ -43,6 +44,7 @@ const uint kRectRepresentativeConstantIntensity = 27u;
 const uint kRectLtcConstantIntensity = 28u;
 const uint kDiskRepresentativeConstantIntensity = 29u;
 const uint kDiskLtcConstantIntensity = 30u;
+const uint kTubeSegmentLtc = 31u;
 
 layout(std430, binding = 0) writeonly buffer Sums {
     float sums[];
@@ -173,6 +175,7 @@ float areaShadingConstantIntensity(bool disk, bool ltc, vec3 V, float roughness,
 #define AREA_VIEW normalize(vec3(-0.5 + 0.2 * x, 0.2 * y, 0.866))
 #define SPHERE_LIGHT areaLight(0.1 + 0.2 * z, 0.0)
 #define TUBE_LIGHT areaLight(0.0, 0.5 + z)
+#define THICK_TUBE_LIGHT areaLight(0.1, 0.5 + z)
 // An M^-1 of the table's shape that changes with the inputs (the table fetch itself, two
 // texture reads in a renderer, is not timed), and the same point light shaded the same way.
 #define LTC_MINV vec4(0.5 + 0.5 * y, 0.1 * x, -0.1 * x, 0.3 + 0.7 * y)
@@ -218,8 +221,12 @@ void main() {
         case kPointLight:
             TIMED_LOOP(representativePointSpecular(POINT_LIGHT, AREA_VIEW, 0.1 + 0.9 * y, true));
             break;
-        case kSphereLtc: TIMED_LOOP(ltcSpecular(SPHERE_LIGHT, AREA_VIEW, LTC_MINV)); break;
-        case kTubeLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV)); break;
+        case kSphereLtc: TIMED_LOOP(ltcSpecular(SPHERE_LIGHT, AREA_VIEW, LTC_MINV, false)); break;
+        case kTubeLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV, false)); break;
+        case kTubeCapsuleLtc:
+            TIMED_LOOP(ltcSpecular(THICK_TUBE_LIGHT, AREA_VIEW, LTC_MINV, false));
+            break;
+        case kTubeSegmentLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV, true)); break;
         case kPointLightShading: TIMED_LOOP(pointLightShading(AREA_VIEW, 0.1 + 0.9 * y)); break;
         case kRectRepresentative:
             TIMED_LOOP(areaShading(false, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z, 0u));

@@ -65,7 +65,8 @@ vec2 evaluate(Sample s) {
             light.position = s.a.xyz;
             light.invAttenuationRadius = 0.0;
             light.intensity = vec3(1.0);
-            light.sourceRadius = s.a.w;
+            // A tube's negative radius asks for the bare segment's LTC (ltcSpecular).
+            light.sourceRadius = max(s.a.w, 0.0);
             light.direction = vec3(0.0, 0.0, -1.0);
             light.sourceLength = s.b.w;
             light.tubeAxis = s.c.yzw;
@@ -73,7 +74,7 @@ vec2 evaluate(Sample s) {
             light.spotScale = 0.0;
             light.spotOffset = 0.0;
             if (function == kAreaLightLtc) {
-                return vec2(ltcSpecular(light, s.b.xyz, s.d),
+                return vec2(ltcSpecular(light, s.b.xyz, s.d, s.a.w < 0.0),
                             representativePointSpecular(light, s.b.xyz, s.c.x, true));
             }
             return vec2(representativePointSpecular(light, s.b.xyz, s.c.x), 0.0);
