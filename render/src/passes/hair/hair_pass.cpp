@@ -10,6 +10,7 @@
 #include "clustered/gpu_cluster_params.h"
 #include "common/specialization_ids.h"
 #include "gbuffer_targets.h"
+#include "host_storage_array.h"
 #include "ibl/environment_descriptors.h"
 #include "passes/hair/hair_bindings.h"
 #include "passes/shadows/shadow_pass.h"
@@ -79,14 +80,7 @@ bool HairPass::prepare(const FrameScene& scene, const LightingFeatures& features
     }
     segmentCount_ = uint32_t(count);
     if (count == 0) return false;
-    if (count * sizeof(HairSegment) > segments_.size()) {
-        // The frame before has completed (one frame in flight): the old buffer is free.
-        const VkDeviceSize capacity =
-            std::max<VkDeviceSize>(count, 2 * segments_.size() / sizeof(HairSegment));
-        segments_ = GpuBuffer(context_, capacity * sizeof(HairSegment),
-                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryLocation::HostVisible);
-    }
-    auto* out = static_cast<HairSegment*>(segments_.mapped());
+    HairSegment* out = reserveHostStorageArray<HairSegment>(context_, segments_, count);
     for (const HairDraw& draw : scene.hair) {
         if (!draw.hair || !draw.style) continue;
         const content::Hair& hair = *draw.hair;

@@ -10,6 +10,7 @@
 #include "clustered/gpu_cluster_params.h"
 #include "common/specialization_ids.h"
 #include "gbuffer_targets.h"
+#include "host_storage_array.h"
 #include "ibl/environment_descriptors.h"
 #include "passes/shadows/shadow_pass.h"
 #include "passes/wires/wire_bindings.h"
@@ -63,14 +64,7 @@ bool WirePass::prepare(const FrameScene& scene, const LightingFeatures& features
     }
     segmentCount_ = uint32_t(count);
     if (count == 0) return false;
-    if (count * sizeof(WireSegment) > segments_.size()) {
-        // The frame before has completed (one frame in flight): the old buffer is free.
-        const VkDeviceSize capacity =
-            std::max<VkDeviceSize>(count, 2 * segments_.size() / sizeof(WireSegment));
-        segments_ = GpuBuffer(context_, capacity * sizeof(WireSegment),
-                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryLocation::HostVisible);
-    }
-    auto* out = static_cast<WireSegment*>(segments_.mapped());
+    WireSegment* out = reserveHostStorageArray<WireSegment>(context_, segments_, count);
     const content::Material defaults;  // the glTF default material
     for (const WireDraw& draw : scene.wires) {
         if (!draw.wire) continue;
