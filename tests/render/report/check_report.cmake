@@ -44,7 +44,7 @@ foreach(row
     "| Sphere light, --area-lights representative"
     "| Sphere light, --area-lights ltc"
     "| Tube light, --area-lights representative"
-    "| Tube light, --area-lights ltc"
+    "| Tube light of radius 0.30 m, --area-lights ltc"
     "| Light shafts: epipolar, 160x96"
     "| Light shafts: min/max tree, 160x96"
     "## Sphere lights: representative point / LTC"
