@@ -33,6 +33,10 @@ Swapchain::Swapchain(GpuContext& context, VkSurfaceKHR surface, uint32_t width, 
 }
 
 Swapchain::~Swapchain() {
+    // The last present still waits on its render-finished semaphore: no fence covers a present,
+    // so only an idle device makes the semaphores free to destroy (a window closed right after
+    // a present failed validation's VUID-vkDestroySemaphore-semaphore-01137 now and then).
+    vkDeviceWaitIdle(context_.device());
     destroy();
 }
 
