@@ -14,6 +14,7 @@
 #include "shaders/scattering_samples.comp.spv.h"
 #include "shaders/scattering_tree.comp.spv.h"
 #include "shaders/scattering_unwarp.comp.spv.h"
+#include "vk/memory_barrier.h"
 
 namespace candela::render {
 
@@ -320,16 +321,10 @@ void ScatteringPass::recordBruteForce(VkCommandBuffer cmd, const Inputs& in) con
     for (uint32_t first = 0; first < steps; first += kStepsPerBatch) {
         if (first > 0) {
             // This batch adds to what the previous one stored.
-            const VkMemoryBarrier2 barrier{
-                VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                nullptr,
+            memoryBarrier(
+                cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-            const VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO, nullptr, 0, 1,
-                                              &barrier};
-            vkCmdPipelineBarrier2(cmd, &dependency);
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         }
         push.batch.y = first;
         push.batch.z = std::min(kStepsPerBatch, steps - first);

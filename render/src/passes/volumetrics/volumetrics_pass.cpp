@@ -16,6 +16,7 @@
 #include "shaders/volumetrics_volumes_blur.comp.spv.h"
 #include "shaders/volumetrics_volumes_composite.comp.spv.h"
 #include "shaders/volumetrics_volumes_march.comp.spv.h"
+#include "vk/memory_barrier.h"
 
 namespace candela::render {
 
@@ -213,16 +214,10 @@ void VolumetricsPass::recordReference(VkCommandBuffer cmd, const Inputs& in) con
     for (uint32_t first = 0; first == 0 || first < in.lightCount; first += batch) {
         if (first > 0) {
             // This batch adds to what the previous one stored.
-            const VkMemoryBarrier2 barrier{
-                VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
-                nullptr,
+            memoryBarrier(
+                cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                 VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-            const VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO, nullptr, 0, 1,
-                                              &barrier};
-            vkCmdPipelineBarrier2(cmd, &dependency);
+                VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
         }
         push.lights.z = first;
         push.lights.w = batch;
