@@ -923,3 +923,41 @@ TEST(Cli, AntialiasingBloomAndExposureFlagsAndStats) {
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.output.find("--aa needs off, fxaa or taa"), std::string::npos) << bad.output;
 }
+
+// Issues 16 and 17: a scene file's top-level "scattering" and "volumetrics" choose the light
+// shafts and the medium's lighting, and the command line's flags override them.
+TEST(Cli, SceneFileChoosesScatteringAndVolumetricsAndFlagsOverrideIt) {
+    auto dir = tempDir() / "scattering_setting";
+    std::filesystem::create_directories(dir);
+    nlohmann::json scene = nlohmann::json::parse(
+        readBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/atmosphere_sky.scene.json"));
+    scene["scattering"] = "off";
+    scene["volumetrics"] = "off";
+    scene["entities"].push_back({{"name", "dust"}, {"fog", {{"scattering", 0.05}}}});
+    const auto scenePath = dir / "air.scene.json";
+    std::ofstream(scenePath) << scene.dump(2);
+    auto run = [&](const std::string& name, const std::string& extra) {
+        RunResult r = runCandela("run " + scenePath.string() +
+                                 " --headless --size 32x32 --frames 1 --aa off --ssr off --ao off "
+                                 "--bloom 0 --scattering-slices 16 --scattering-samples 32 "
+                                 "--stats " +
+                                 (dir / (name + ".json")).string() + extra);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return nlohmann::json::parse(readBytes(dir / (name + ".json")));
+    };
+    auto ranPassesStartingWith = [](const nlohmann::json& stats, const std::string& prefix) {
+        int count = 0;
+        for (const auto& [name, ms] : stats["passes"].items())
+            count += name.rfind(prefix, 0) == 0 ? 1 : 0;
+        return count;
+    };
+    const nlohmann::json off = run("off", "");
+    EXPECT_EQ(off["scattering_samples"].get<double>(), 0.0) << off.dump();
+    EXPECT_EQ(ranPassesStartingWith(off, "scattering"), 0) << off["passes"].dump();
+    EXPECT_EQ(ranPassesStartingWith(off, "volumetrics"), 0) << off["passes"].dump();
+    const nlohmann::json on = run("on", " --scattering epipolar --volumetrics froxels");
+    EXPECT_GT(on["scattering_samples"].get<double>(), 0.0) << on.dump();
+    EXPECT_GT(ranPassesStartingWith(on, "scattering"), 0) << on["passes"].dump();
+    EXPECT_TRUE(on["passes"].contains("volumetrics_froxel_light")) << on["passes"].dump();
+    EXPECT_EQ(on["validation_messages"].get<int>(), 0);
+}
