@@ -201,11 +201,11 @@ TEST(Cli, DemoHasHundredsOfLightsAndCullsThem) {
 
 // The stats overlay (ImGui) draws in the top-left corner only: with --overlay the frame
 // changes there and nowhere else (the window shows it by default; headless needs --overlay),
-// and it is a pass of the frame graph.
-TEST(Cli, DemoOverlayDrawsOnlyItsCorner) {
+// and it is a pass of the frame graph. The triangle scene: the overlay is the same layer over
+// any scene, and the demo's pipelines took most of this test's time.
+TEST(Cli, OverlayDrawsOnlyItsCorner) {
     auto dir = tempDir();
-    const std::string args =
-        "demo --headless --size 640x360 --frames 2 " + kDemoWithoutCostlyPasses + "--capture ";
+    const std::string args = "run builtin:triangle --headless --size 640x360 --frames 2 --capture ";
     RunResult plain = runCandela(args + (dir / "plain.png").string());
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
     RunResult overlay = runCandela(args + (dir / "overlay.png").string() + " --overlay" +
@@ -263,9 +263,11 @@ TEST(Cli, BadStepAndCaptureEachAreRejected) {
 // Light lists built in compute shaders are the CPU's lists, in the same order: the same bytes.
 TEST(Cli, DeviceLightAssignmentGivesTheSameImage) {
     auto dir = tempDir();
-    for (const char* device : {"cpu", "gpu", "auto"}) {
+    // "auto" chooses one of the two (ApplicationOptions.LightAssignFlagChoosesTheDevice parses
+    // it); the demo's hundreds of lights fill the clusters at any size.
+    for (const char* device : {"cpu", "gpu"}) {
         RunResult r =
-            runCandela("demo --headless --size 160x90 --frames 2 " + kDemoWithoutCostlyPasses +
+            runCandela("demo --headless --size 96x54 --frames 2 " + kDemoWithoutCostlyPasses +
                        "--light-assign " + device + " --capture " +
                        (dir / (std::string("assign_") + device + ".exr")).string());
         ASSERT_EQ(r.exitCode, 0) << device << ": " << r.output;
@@ -273,7 +275,6 @@ TEST(Cli, DeviceLightAssignmentGivesTheSameImage) {
     std::string cpu = readBytes(dir / "assign_cpu.exr");
     EXPECT_FALSE(cpu.empty());
     EXPECT_EQ(cpu, readBytes(dir / "assign_gpu.exr"));
-    EXPECT_EQ(cpu, readBytes(dir / "assign_auto.exr"));
     RunResult bad = runCandela(kTriangle + "--light-assign tpu");
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.output.find("--light-assign needs auto, cpu or gpu, got 'tpu'"),
