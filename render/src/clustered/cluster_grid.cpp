@@ -4,6 +4,18 @@
 
 namespace candela::render {
 
+uint32_t ClusterGrid::tileSizeFitting(uint32_t preferredTileSize, uint32_t slices, uint32_t width,
+                                      uint32_t height, uint64_t bytesPerCluster,
+                                      uint64_t maxBufferBytes) {
+    uint32_t tile = std::max(preferredTileSize, 1u);
+    auto bytes = [&](uint64_t t) {
+        return ((width + t - 1) / t) * ((height + t - 1) / t) * uint64_t(slices) * bytesPerCluster;
+    };
+    while (bytes(tile) > maxBufferBytes && tile < std::max(width, height))
+        tile *= 2;
+    return tile;
+}
+
 ClusterGrid ClusterGrid::make(uint32_t tileSize, uint32_t slices, uint32_t width, uint32_t height,
                               float projectionScaleX, float projectionScaleY, float nearPlane,
                               float farPlane) {

@@ -32,6 +32,12 @@ struct ClusterGrid {
     static ClusterGrid make(uint32_t tileSize, uint32_t slices, uint32_t width, uint32_t height,
                             float projectionScaleX, float projectionScaleY, float nearPlane,
                             float farPlane);
+    // The preferred tile size, doubled until a buffer of `bytesPerCluster` per cluster fits in
+    // `maxBufferBytes` (a device's maxStorageBufferRange): at 16 px and 64 slices, the cluster
+    // bounds of a 3840x2160 frame take 248 MB, past the 128 MiB many drivers bind.
+    static uint32_t tileSizeFitting(uint32_t preferredTileSize, uint32_t slices, uint32_t width,
+                                    uint32_t height, uint64_t bytesPerCluster,
+                                    uint64_t maxBufferBytes);
     void setSlicing(float sliceNearDepth, float sliceLogRatio) {
         sliceNear = sliceNearDepth;
         logRatio = sliceLogRatio;

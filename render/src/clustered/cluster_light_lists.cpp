@@ -52,9 +52,12 @@ uint32_t ClusterLightLists::directionalCount() const {
 }
 
 void ClusterLightLists::setView(const CameraView& view, uint32_t width, uint32_t height) {
-    *grid_ =
-        ClusterGrid::make(options_.tileSize, options_.slices, width, height, view.projection[0][0],
-                          view.projection[1][1], view.nearPlane, view.farPlane);
+    // The cluster bounds are the largest buffer per cluster: tiles grow until it binds.
+    const uint32_t tileSize = ClusterGrid::tileSizeFitting(
+        options_.tileSize, options_.slices, width, height, CLUSTER_BOUNDS_FLOATS * sizeof(float),
+        context_.properties().limits.maxStorageBufferRange);
+    *grid_ = ClusterGrid::make(tileSize, options_.slices, width, height, view.projection[0][0],
+                               view.projection[1][1], view.nearPlane, view.farPlane);
     projectionScale_ = {view.projection[0][0], view.projection[1][1]};
     width_ = width;
     height_ = height;
