@@ -222,11 +222,13 @@ bool localLightRepresentative(Light light) {
 // specular is its fitted LTC integrated over the light (issue 15, report "area lights by LTC":
 // the representative point is off by 222 % at roughness 0.1, sin sigma 0.4, LTC within a few
 // %): the sphere as the disk facing P with the same cone (ltcSphereIntegral) at luminance
-// I / (pi r^2), the tube as the Lambertian capsule of the same lumens (ltcTubeIntegral: a thin
-// one the closed-form Lambertian line, a thick one its silhouette rectangle with the caps). Diffuse,
-// falloff window, spot cone and incident illuminance stay evaluateLocalLight's (`o`): only the
-// specular fields are replaced, so evaluateLocalLight runs once per light whatever the mode.
-LightIncidence withLtcSpecular(LightIncidence o, Light light, vec3 P, vec3 N, vec3 R, float alpha) {
+// I / (pi r^2), the tube as the Lambertian capsule of the same lumens (ltcTubeIntegrals: a thin
+// one the closed-form Lambertian line, a thick one the outline of its cone). A tube's diffuse is
+// the same capsule's irradiance (the integral with M^-1 = identity), 4 / pi brighter across its
+// axis than lineIrradiance's isotropic segment of the same lumens; a sphere's stays
+// evaluateLocalLight's (exact). Falloff window, spot cone and incident illuminance stay `o`'s, so
+// evaluateLocalLight runs once per light whatever the mode.
+LightIncidence withLtcIntegrals(LightIncidence o, Light light, vec3 P, vec3 N, vec3 R, float alpha) {
     vec3 toCenter = light.position - P;
     vec3 halfSegment = light.tubeAxis * (0.5 * light.sourceLength);
     vec3 L0 = toCenter - halfSegment;
@@ -244,7 +246,9 @@ LightIncidence withLtcSpecular(LightIncidence o, Light light, vec3 P, vec3 N, ve
     mat3 minv = ltcInverseMatrix(texture(ltcMatrixTable, uv));
     float integral;  // the unit-magnitude lobe's integral per candela
     if (tube) {
-        integral = ltcTubeIntegral(minv, frame * L0, frame * (L0 + Ld), light.sourceRadius);
+        vec2 integrals = ltcTubeIntegrals(minv, frame * L0, frame * (L0 + Ld), light.sourceRadius);
+        integral = integrals.x;
+        o.diffuseIlluminance = intensity * (PI * integrals.y);
     } else {
         float radius = light.sourceRadius;
         integral = ltcSphereIntegral(minv, frame * toCenter, radius) / (PI * radius * radius);
@@ -259,8 +263,7 @@ LightIncidence withLtcSpecular(LightIncidence o, Light light, vec3 P, vec3 N, ve
 // Sphere and tube lights go by LTC when the shader binds the table, the light's quality (or
 // the renderer's default) says ltc, and the sphere is not so small against its distance that
 // its luminance I / (pi r^2) loses precision (sin sigma under 1e-3: a point, where the
-// representative point is exact). A tube's specular is its capsule's (ltc_tube.glsl); its
-// diffuse stays lineIrradiance's isotropic segment.
+// representative point is exact). A tube's specular and diffuse are its capsule's (ltc_tube.glsl).
 bool localLightByLtc(Light light, vec3 P) {
 #ifdef AREA_LIGHT_LTC_MATRIX_BINDING
     if (localLightRepresentative(light)) return false;
@@ -289,7 +292,7 @@ LightIncidence evaluateLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
     }
     LightIncidence o = evaluateLocalLight(light, P, N, R, alpha);  // point, spot, sphere, tube
 #ifdef AREA_LIGHT_LTC_MATRIX_BINDING
-    if (localLightByLtc(light, P)) o = withLtcSpecular(o, light, P, N, R, alpha);
+    if (localLightByLtc(light, P)) o = withLtcIntegrals(o, light, P, N, R, alpha);
 #endif
     return o;
 }

@@ -213,6 +213,63 @@ CapsuleSweep capsuleSweep(ReportContext& context, double radius, const std::vect
     return out;
 }
 
+// The tube's diffuse against the capsule's irradiance (capsuleIrradianceReference): the LTC
+// mode's (ltcTubeIntegrals with M^-1 = identity) and the representative mode's (lineIrradiance,
+// the isotropic segment of the same lumens), over lengths 0.25..2 m, centres 0, 30, 60 and 80
+// degrees off the normal, axes across the plane of incidence, in it, end-on and 15 degrees off
+// end-on (centre 1 m away; end-on, the nearer cap 0.5 m away).
+struct DiffuseError {
+    double worst = -1.0, mean = 0.0;
+    std::string where;
+};
+
+std::array<DiffuseError, 2> diffuseSweep(ReportContext& context, double radius,
+                                         const std::vector<double>& lengths, double spacing) {
+    std::vector<ValueSample> samples;
+    std::vector<double> references;
+    std::vector<std::string> labels;
+    const char* axisNames[] = {"across", "in the plane of incidence", "end-on",
+                               "15 deg off end-on"};
+    for (double length : lengths) {
+        for (double elevation : {0.0, 30.0, 60.0, 80.0}) {
+            const double theta = elevation * kPi / 180.0;
+            const Vec3 toward = {std::sin(theta), 0.0, std::cos(theta)};
+            const Vec3 inPlane = {std::cos(theta), 0.0, -std::sin(theta)};
+            const double tilt = 15.0 * kPi / 180.0;
+            const Vec3 axes[] = {kLightAlong, inPlane, toward,
+                                 std::cos(tilt) * toward + std::sin(tilt) * kLightAlong};
+            for (int a = 0; a < 4; ++a) {
+                const double distance = a >= 2 ? 0.5 + 0.5 * length + radius : 1.0;
+                const Vec3 centre = distance * toward;
+                ValueSample s;
+                s.a = {float(centre[0]), float(centre[1]), float(centre[2]), float(radius)};
+                s.b = {0.0f, 0.0f, 1.0f, float(length)};
+                s.c = {0.0f, float(axes[a][0]), float(axes[a][1]), float(axes[a][2])};
+                samples.push_back(s);
+                references.push_back(
+                    capsuleIrradianceReference(centre, axes[a], length, radius, spacing));
+                char text[96];
+                std::snprintf(text, sizeof(text), "length %.2f m, %.0f deg off N, axis %s", length,
+                              elevation, axisNames[a]);
+                labels.push_back(text);
+            }
+        }
+    }
+    const auto device = evaluateOnDevice(context.harness, ValueFunction::TubeDiffuse, samples);
+    std::array<DiffuseError, 2> out;
+    for (size_t i = 0; i < samples.size(); ++i) {
+        for (int m = 0; m < 2; ++m) {
+            const double error = std::fabs(device[i][m] / references[i] - 1.0);
+            out[m].mean += error / double(samples.size());
+            if (error > out[m].worst) {
+                out[m].worst = error;
+                out[m].where = labels[i];
+            }
+        }
+    }
+    return out;
+}
+
 std::string percent(double value) {
     char text[32];
     std::snprintf(text, sizeof(text), "%.1f %%", 100.0 * value);
@@ -264,7 +321,19 @@ void addLtcAreaLightRows(ReportContext& context) {
         {CostFunction::TubeLtc, iterations},
         {CostFunction::TubeCapsuleLtc, iterations},
         {CostFunction::TubeSegmentLtc, iterations},
+        {CostFunction::TubeCapsuleLtcShading, iterations},
+        {CostFunction::TubeRepresentativeShading, iterations},
+        {CostFunction::PointLightShading, iterations},
     });
+    // Diffuse + specular against a point light's diffuse + specular.
+    auto relativeShadingCost = [&](const Cost& c) {
+        std::string text =
+            formatShaderCost(c) + " diffuse + specular vs point light " + formatShaderCost(ns[9]);
+        if (c.ns > c.spread && ns[9].ns > ns[9].spread) {
+            text += " (" + formatNumber(c.ns / ns[9].ns) + "x the point light)";
+        }
+        return text;
+    };
     // "x ns vs point light y ns (r x)": cost relative to a point light shaded the same way.
     auto relativeCost = [&](const Cost& c) {
         std::string text = formatShaderCost(c) + " vs point light " + formatShaderCost(ns[0]);
@@ -337,12 +406,31 @@ void addLtcAreaLightRows(ReportContext& context) {
             {name + ", bare segment LTC (ltcLineIntegral: the tube before the capsule)",
              capsuleReference, metric(capsule.segment, tubeGridText), capsule.segment.worst, "rel",
              capsule.segment.where, relativeCost(ns[6]), measuredNs(ns[6])},
-            {name +
-                 ", --area-lights ltc (ltcTubeIntegral: silhouette rectangle run on over the caps)",
+            {name + ", --area-lights ltc (ltcTubeIntegral: the cone's outline, tangent edges + cap "
+                    "arcs)",
              capsuleReference, metric(capsule.capsule, tubeGridText), capsule.capsule.worst, "rel",
              capsule.capsule.where, relativeCost(ns[5]), measuredNs(ns[5])},
         };
         for (const ReportRow& row : capsuleRows)
+            context.report.rows.push_back(row);
+        const auto diffuse = diffuseSweep(context, radius, lengths, quick ? 0.02 : 0.005);
+        const std::string diffuseReference =
+            "irradiance integrated over the Lambertian capsule (the tube's lumens over its area; "
+            "double)";
+        const std::string diffuseGrid =
+            "relative error, worst of length 0.25..2 m x centre 0..80 deg off N x axis across, "
+            "in the plane, end-on, 15 deg off end-on; mean ";
+        const ReportRow diffuseRows[] = {
+            {name + ", --area-lights representative, diffuse (lineIrradiance: the isotropic "
+                    "segment)",
+             diffuseReference, diffuseGrid + percent(diffuse[1].mean), diffuse[1].worst, "rel",
+             diffuse[1].where, relativeShadingCost(ns[8]), measuredNs(ns[8])},
+            {name + ", --area-lights ltc, diffuse (ltcTubeIntegrals, M^-1 = identity: the "
+                    "capsule's irradiance)",
+             diffuseReference, diffuseGrid + percent(diffuse[0].mean), diffuse[0].worst, "rel",
+             diffuse[0].where, relativeShadingCost(ns[7]), measuredNs(ns[7])},
+        };
+        for (const ReportRow& row : diffuseRows)
             context.report.rows.push_back(row);
         ReportTable table;
         table.title = name + ": representative / bare segment LTC / capsule LTC";

@@ -48,6 +48,10 @@ enum class CostFunction : uint32_t {
     DiskRepresentativeConstantIntensity = 29,
     DiskLtcConstantIntensity = 30,
     TubeSegmentLtc = 31,  // ltcLineIntegral, the bare segment (the tube before the capsule)
+    // Tube lights of radius 0.1 m, diffuse + specular: the capsule by LTC (ltcTubeIntegrals, both
+    // integrals), and the representative point with lineIrradiance (evaluateLocalLight).
+    TubeCapsuleLtcShading = 32,
+    TubeRepresentativeShading = 33,
 };
 
 struct CostJob {

@@ -21,6 +21,7 @@ enum class ValueFunction : uint32_t {
     AreaLight = 6,
     VisibilityFast = 7,
     AreaLightLtc = 8,
+    TubeDiffuse = 9,
 };
 
 struct ValueSample {

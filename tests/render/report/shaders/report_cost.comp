@@ -45,6 +45,8 @@ const uint kRectLtcConstantIntensity = 28u;
 const uint kDiskRepresentativeConstantIntensity = 29u;
 const uint kDiskLtcConstantIntensity = 30u;
 const uint kTubeSegmentLtc = 31u;
+const uint kTubeCapsuleLtcShading = 32u;
+const uint kTubeRepresentativeShading = 33u;
 
 layout(std430, binding = 0) writeonly buffer Sums {
     float sums[];
@@ -90,14 +92,29 @@ Light areaLight(float sourceRadius, float sourceLength) {
 // Rect and disk lights: diffuse and specular (GGX along the representative direction, or the
 // LTC integral with an M^-1 made from the inputs: the two table fetches are not timed), F0 = 1.
 // The point light: evaluateLocalLight plus GGX along its direction, the baseline they compare to.
-float pointLightShading(vec3 V, float roughness) {
+float localLightShading(Light light, vec3 V, float roughness) {
     float alpha = alphaFromRoughness(roughness);
     vec3 N = vec3(0.0, 0.0, 1.0);
-    LightIncidence inc = evaluateLocalLight(areaLight(0.0, 0.0), vec3(0.0), N, reflect(-V, N), alpha);
+    LightIncidence inc = evaluateLocalLight(light, vec3(0.0), N, reflect(-V, N), alpha);
     vec3 H = safeNormalize(V + inc.specularL);
     return inc.diffuseIlluminance.x + distributionGgx(alpha * alpha, saturate(H.z)) *
            visibilitySmithGgxCorrelated(alpha, saturate(V.z), saturate(inc.specularL.z)) *
            inc.specularIlluminance.x;
+}
+
+float pointLightShading(vec3 V, float roughness) {
+    return localLightShading(areaLight(0.0, 0.0), V, roughness);
+}
+
+// A tube by LTC, diffuse + specular (F0 = 1, magnitude 1): the capsule's two integrals.
+float tubeLtcShading(Light light, vec3 V, vec4 minvEntries) {
+    vec3 N = vec3(0.0, 0.0, 1.0);
+    mat3 frame = ltcShadingFrame(N, V);
+    vec3 center = frame * light.position;
+    vec3 halfSegment = frame * light.tubeAxis * (0.5 * light.sourceLength);
+    vec2 integrals = ltcTubeIntegrals(ltcInverseMatrix(minvEntries), center - halfSegment,
+                                      center + halfSegment, light.sourceRadius);
+    return light.intensity.x * (integrals.x + PI * integrals.y);
 }
 
 AreaShape costShape(bool disk, float size) {
@@ -228,6 +245,10 @@ void main() {
             break;
         case kTubeSegmentLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV, true)); break;
         case kPointLightShading: TIMED_LOOP(pointLightShading(AREA_VIEW, 0.1 + 0.9 * y)); break;
+        case kTubeCapsuleLtcShading: TIMED_LOOP(tubeLtcShading(THICK_TUBE_LIGHT, AREA_VIEW, LTC_MINV)); break;
+        case kTubeRepresentativeShading:
+            TIMED_LOOP(localLightShading(THICK_TUBE_LIGHT, AREA_VIEW, 0.1 + 0.9 * y));
+            break;
         case kRectRepresentative:
             TIMED_LOOP(areaShading(false, false, AREA_VIEW, 0.1 + 0.9 * y, 0.1 + z, 0u));
             break;

@@ -24,6 +24,9 @@ const uint kVisibilityFast = 7u;    // a.x alpha, a.y NoV, a.z NoL -> (Hammon's 
 // As kAreaLight, d the table's M^-1 (00, 02, 20, 22) -> (LTC specular over the light with unit
 // magnitude, representative-point specular with the height-correlated Smith visibility)
 const uint kAreaLightLtc = 8u;
+// A tube light at a.xyz, radius a.w, length b.w, axis c.yzw, over N = +Z -> (the LTC mode's
+// diffuse: the capsule's irradiance, the representative mode's: lineIrradiance), lux per cd
+const uint kTubeDiffuse = 9u;
 
 struct Sample {
     vec4 a;
@@ -78,6 +81,12 @@ vec2 evaluate(Sample s) {
                             representativePointSpecular(light, s.b.xyz, s.c.x, true));
             }
             return vec2(representativePointSpecular(light, s.b.xyz, s.c.x), 0.0);
+        }
+        case kTubeDiffuse: {
+            vec3 halfSegment = s.c.yzw * (0.5 * s.b.w);
+            vec3 N = kSurfaceNormal;
+            return vec2(PI * ltcTubeIntegrals(mat3(1.0), s.a.xyz - halfSegment, s.a.xyz + halfSegment, s.a.w).y,
+                        lineIrradiance(N, s.a.xyz - halfSegment, s.a.xyz + halfSegment));
         }
         case kVisibilityFast:
             return vec2(visibilitySmithGgxCorrelatedFast(s.a.x, s.a.y, s.a.z),

@@ -30,7 +30,8 @@ const uint kProduct = 9u;  // a.x * a.y: tells whether the device keeps denormal
 const uint kLtcQuad = 10u;
 // ltcDiskIntegral with center a.xyz, axisU b.xyz, axisV c.xyz and M^-1 as for kLtcQuad.
 const uint kLtcDisk = 11u;
-// ltcTubeIntegral of the capsule around a.xyz..b.xyz of radius c.x, M^-1 as for kLtcQuad.
+// ltcTubeIntegrals of the capsule around a.xyz..b.xyz of radius c.x, M^-1 as for kLtcQuad:
+// (the lobe's integral, the form factor), per candela.
 const uint kLtcTube = 12u;
 // Irradiance per unit luminance of a rect or disk light (area_lights.glsl) at P with normal N:
 // a.xyz centre, a.w 1 for a disk; b.xyz emitting normal, b.w half width (disk: radius);
@@ -98,7 +99,7 @@ vec4 evaluate(LightSample s) {
         }
         case kLtcTube: {
             mat3 minv = mat3(vec3(s.a.w, 0.0, s.c.w), vec3(0.0, 1.0, 0.0), vec3(s.b.w, 0.0, s.d.w));
-            return vec4(ltcTubeIntegral(minv, s.a.xyz, s.b.xyz, s.c.x));
+            return vec4(ltcTubeIntegrals(minv, s.a.xyz, s.b.xyz, s.c.x), 0.0, 0.0);
         }
         case kAreaLightDiffuse: {
             AreaShape shape;
