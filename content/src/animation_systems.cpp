@@ -175,7 +175,8 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
         s.appliedTime == player.time) {
         return;  // paused (or speed 0) and not scrubbed: the entities already hold this pose
     }
-    s.applied = player.nextClip < 0;  // a crossfade always rewrites (its weight moves)
+    prefetchSkinOutputs(pools, player);  // needed after sampling: the sampling hides the wait
+    s.applied = player.nextClip < 0;     // a crossfade always rewrites (its weight moves)
     s.appliedClip = player.clip;
     s.appliedTime = player.time;
     std::fill(s.touched.begin(), s.touched.end(), std::uint8_t{0});
@@ -317,7 +318,7 @@ AnimationWorkLists& workLists(ecs::Registry& registry) {
     return registry.resources().getOrEmplace<AnimationWorkLists>();
 }
 
-constexpr std::size_t kPlayersPerJob = 8;
+constexpr std::size_t kPlayersPerJob = 16;  // prefetching runs within a job's range
 constexpr std::size_t kSkinsPerJob = 16;
 
 void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLists& lists,
@@ -331,9 +332,17 @@ void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkL
         pools.locals = &registry.storage<ecs::LocalTransform>().pool();
     if (!registry.view<ecs::WorldTransform>().empty())
         pools.worlds = &registry.storage<ecs::WorldTransform>().pool();
+    if (!registry.view<Skin>().empty()) pools.skins = &registry.storage<Skin>().pool();
     jobs.parallelFor(lists.players.size(), kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i)
+        for (std::size_t i = begin; i < end; ++i) {
+            // The next players' data is requested while this one works: the record two ahead
+            // (its address only: nothing of it is read), what it points to one ahead, in this
+            // job's range only (another job may be writing its players' scratch).
+            if (i + 2 < lists.players.size())
+                prefetchPlayerRecord(players.get(lists.players[i + 2]));
+            if (i + 1 < end) prefetchSkeletonPose(pools, players.get(lists.players[i + 1]));
             advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds);
+        }
     });
 }
 

@@ -4,6 +4,9 @@
 // outside the keys clamp to the first/last value. Allocation-free.
 #include <cstdint>
 #include <span>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 #include "candela/content/animation.h"
 
@@ -66,8 +69,16 @@ inline bool sampleLinearInCursorInterval(const AnimationSampler& sampler, bool r
     const float w = t * (1 - t);
     const float u = t + w * (2 * t - 1) * (entry[0] + entry[1] * w);
     const float wa = 1 - u, wb = entry[2] * u;
+#if defined(__SSE2__)
+    // One 16-byte store, per lane the same product and sum: normalizeQuaternions reloads the
+    // quaternion as one vector a few channels later, which four scalar stores would stall
+    // (a wide load cannot be forwarded from narrower stores still in flight).
+    _mm_storeu_ps(out, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(wa), _mm_loadu_ps(a)),
+                                  _mm_mul_ps(_mm_set1_ps(wb), _mm_loadu_ps(b))));
+#else
     for (std::size_t c = 0; c < 4; ++c)
         out[c] = wa * a[c] + wb * b[c];
+#endif
     return true;
 }
 

@@ -88,6 +88,14 @@ struct AnimationPlayer {
         std::vector<PassNode> passNodes;
         std::vector<std::uint8_t> passMoved;   // per pass node: its world was written this frame
         std::vector<std::uint32_t> skinNodes;  // mesh nodes whose Skin this player builds
+        // Per skin node, its entity's dense index in the Skin pool, looked up again only when
+        // that pool changes structure (the pass reads the Skin without a sparse lookup).
+        std::vector<std::uint32_t> skinIndex;
+        const void* skinPool = nullptr;
+        std::uint32_t skinVersion = 0;
+        // The dense index ranges [first, end) the pass writes in the LocalTransform and
+        // WorldTransform pools (bind's), so the player before this one can prefetch them.
+        std::uint32_t localFirst = 0, localEnd = 0, worldFirst = 0, worldEnd = 0;
         const void* localPool = nullptr;
         const void* worldPool = nullptr;
         std::uint32_t localVersion = 0;
