@@ -81,6 +81,30 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
     if (clipIndex < 0 || static_cast<std::size_t>(clipIndex) >= model.animations.size()) return;
     const AnimationClip& clip = model.animations[static_cast<std::size_t>(clipIndex)];
     const float t = clipTime(time, clip.duration, loop);
+    // One key search for the whole clip where its samplers share their key times: the
+    // interval k and its parameter, as each channel would find them (channel 0's cursor).
+    bool shared = false;
+    std::size_t sharedKey = 0;
+    float sharedT = 0;
+    if (clip.linearSharedTimes && !cursors.empty()) {
+        const std::vector<float>& times = clip.samplers.front().times;
+        std::size_t k = cursors[0];
+        if (!(k + 1 < times.size() && times[k] <= t && t < times[k + 1] && t > times[0]))
+            k = keyIntervalAt(times, t, cursors[0]);
+        if (t > times.front() && k + 1 < times.size()) {  // else clamped: each channel's own
+            shared = true;
+            sharedKey = k;
+            sharedT = (t - times[k]) / (times[k + 1] - times[k]);
+            cursors[0] = static_cast<std::uint32_t>(k);
+        }
+    }
+    // The clip's shared interval, else the channel's cursor interval or the next (forward
+    // playback); false: the general sampler's case (clamped, exact slerp, not LINEAR).
+    auto sampleInline = [&](const AnimationSampler& sampler, bool rotation, float* out,
+                            std::uint32_t& cursor) {
+        return (shared && sampleLinearAt(sampler, rotation, sharedKey, sharedT, out)) ||
+               sampleLinearInCursorInterval(sampler, rotation, t, out, cursor);
+    };
     // Rotations are normalised four at a time (SSE2), the same values as one by one.
     std::array<float*, 4> unnormalised{};
     std::size_t pending = 0;
@@ -97,13 +121,13 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
             local = restPose(model.nodes[node]);
         switch (channel.property) {
             case AnimatedProperty::Translation:
-                if (!sampleLinearInCursorInterval(sampler, false, t, &local.position.x, cursor))
+                if (!sampleInline(sampler, false, &local.position.x, cursor))
                     sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
                                     cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Rotation:
-                if (!sampleLinearInCursorInterval(sampler, true, t, &local.rotation.x, cursor))
+                if (!sampleInline(sampler, true, &local.rotation.x, cursor))
                     sampleAnimationUnnormalised(sampler, channel.property, t,
                                                 std::span(&local.rotation.x, 4), cursor);
                 s.touched[node] |= kTransformTouched;
@@ -115,7 +139,7 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
                 }
                 break;
             case AnimatedProperty::Scale:
-                if (!sampleLinearInCursorInterval(sampler, false, t, &local.scale.x, cursor))
+                if (!sampleInline(sampler, false, &local.scale.x, cursor))
                     sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3),
                                     cursor);
                 s.touched[node] |= kTransformTouched;
