@@ -75,6 +75,16 @@ void resetToRest(const AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransf
     std::copy(s.restWeights.begin(), s.restWeights.end(), weights.begin());
 }
 
+// The clip's shared interval (`shared`: key sharedKey at parameter sharedT), else the channel's
+// cursor interval or the next (forward playback); false: the general sampler's case (clamped,
+// exact slerp, not LINEAR). Always inlined: a call per channel costs as much as the sample.
+[[gnu::always_inline]] inline bool sampleInline(bool shared, std::size_t sharedKey, float sharedT,
+                                                float t, const AnimationSampler& sampler,
+                                                bool rotation, float* out, std::uint32_t& cursor) {
+    return (shared && sampleLinearAt(sampler, rotation, sharedKey, sharedT, out)) ||
+           sampleLinearInCursorInterval(sampler, rotation, t, out, cursor);
+}
+
 void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loop,
                 AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransform>& pose,
                 std::vector<float>& weights, std::vector<std::uint32_t>& cursors) {
@@ -98,13 +108,6 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
             cursors[0] = static_cast<std::uint32_t>(k);
         }
     }
-    // The clip's shared interval, else the channel's cursor interval or the next (forward
-    // playback); false: the general sampler's case (clamped, exact slerp, not LINEAR).
-    auto sampleInline = [&](const AnimationSampler& sampler, bool rotation, float* out,
-                            std::uint32_t& cursor) {
-        return (shared && sampleLinearAt(sampler, rotation, sharedKey, sharedT, out)) ||
-               sampleLinearInCursorInterval(sampler, rotation, t, out, cursor);
-    };
     // Rotations are normalised four at a time (SSE2), the same values as one by one.
     std::array<float*, 4> unnormalised{};
     std::size_t pending = 0;
@@ -121,13 +124,15 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
             local = restPose(model.nodes[node]);
         switch (channel.property) {
             case AnimatedProperty::Translation:
-                if (!sampleInline(sampler, false, &local.position.x, cursor))
+                if (!sampleInline(shared, sharedKey, sharedT, t, sampler, false, &local.position.x,
+                                  cursor))
                     sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
                                     cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Rotation:
-                if (!sampleInline(sampler, true, &local.rotation.x, cursor))
+                if (!sampleInline(shared, sharedKey, sharedT, t, sampler, true, &local.rotation.x,
+                                  cursor))
                     sampleAnimationUnnormalised(sampler, channel.property, t,
                                                 std::span(&local.rotation.x, 4), cursor);
                 s.touched[node] |= kTransformTouched;
@@ -139,7 +144,8 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
                 }
                 break;
             case AnimatedProperty::Scale:
-                if (!sampleInline(sampler, false, &local.scale.x, cursor))
+                if (!sampleInline(shared, sharedKey, sharedT, t, sampler, false, &local.scale.x,
+                                  cursor))
                     sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3),
                                     cursor);
                 s.touched[node] |= kTransformTouched;
