@@ -452,6 +452,15 @@ void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) 
             }
         }
     }
+    // Stored as centre and half size, what each frame's bounds need (computed here once, the
+    // same floats the frame would compute); a joint that moves no vertex gets half size -inf.
+    for (std::array<float, 6>& box : skin.jointBounds) {
+        const std::array<float, 6> minMax = box;
+        for (int a = 0; a < 3; ++a) {
+            box[a] = 0.5f * (minMax[a] + minMax[a + 3]);
+            box[a + 3] = 0.5f * (minMax[a + 3] - minMax[a]);
+        }
+    }
 }
 
 }  // namespace candela::content

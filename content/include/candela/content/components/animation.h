@@ -124,9 +124,9 @@ struct Skin {
     // The previous frame's matrices (motion vectors / TAA: skin the vertex twice, or keep the
     // previous deformed positions; see render/README.md "Animation").
     std::vector<ecs::Mat4> previousJointMatrices;
-    // Per joint, the bind-space box of the vertices it influences (min xyz, max xyz; empty when
-    // it influences none): the deformed mesh lies inside the union of these boxes moved by the
-    // joint matrices.
+    // Per joint, the bind-space box of the vertices it influences, as its centre xyz and half
+    // size xyz (half size -inf when it influences none): the deformed mesh lies inside the
+    // union of these boxes moved by the joint matrices.
     std::vector<std::array<float, 6>> jointBounds;
     // The deformed mesh's bounds in mesh space (what culling and clusters use).
     ecs::Vec3 boundsMin{}, boundsMax{};
