@@ -59,7 +59,7 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
     s.skinNodes.clear();
     s.skinNodes.reserve(count);
     s.skinIndex.reserve(count);
-    s.skinPool = nullptr;  // looked up again below the pass's binding
+    s.skinPool = nullptr;  // refreshSkinIndices looks the skins up again
     s.direct = true;
 
     // Parents first: the roots, then each listed node's children (explicit queue, the order
@@ -188,15 +188,17 @@ void buildSkin(AnimationPlayer& player, const TransformPools& pools,
     skin->builtByPose = true;
 }
 
-// One prefetch per cache line of [begin, end).
+// One prefetch per 64-byte cache line that [begin, begin + bytes) touches.
 void prefetchBytes(const void* begin, std::size_t bytes, bool forWriting) {
-    constexpr std::size_t kLine = 64;
-    const auto* p = static_cast<const char*>(begin);
-    for (std::size_t offset = 0; offset < bytes; offset += kLine) {
+    constexpr std::uintptr_t kLine = 64;
+    const auto first = reinterpret_cast<std::uintptr_t>(begin) & ~(kLine - 1);
+    const auto end = reinterpret_cast<std::uintptr_t>(begin) + bytes;
+    for (std::uintptr_t line = first; line < end; line += kLine) {
+        const auto* p = reinterpret_cast<const void*>(line);
         if (forWriting) {
-            __builtin_prefetch(p + offset, 1);
+            __builtin_prefetch(p, 1);
         } else {
-            __builtin_prefetch(p + offset, 0);
+            __builtin_prefetch(p, 0);
         }
     }
 }
