@@ -197,6 +197,20 @@ void prepareSlerpAngles(AnimationSampler& sampler, double nlerpTolerance) {
     }
 }
 
+void markSharedKeyTimes(AnimationClip& clip) {
+    clip.linearSharedTimes = false;
+    if (clip.samplers.empty()) return;
+    const std::vector<float>& times = clip.samplers.front().times;
+    if (times.size() < 2) return;
+    for (const AnimationSampler& sampler : clip.samplers) {
+        if (sampler.interpolation != Interpolation::Linear ||
+            sampler.times.size() != times.size() ||
+            !std::equal(times.begin(), times.end(), sampler.times.begin()))
+            return;
+    }
+    clip.linearSharedTimes = true;
+}
+
 float clipTime(float time, float duration, bool loop) {
     if (!(duration > 0)) return 0;
     if (loop) {

@@ -75,12 +75,39 @@ void resetToRest(const AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransf
     std::copy(s.restWeights.begin(), s.restWeights.end(), weights.begin());
 }
 
+// The clip's shared interval (`shared`: key sharedKey at parameter sharedT), else the channel's
+// cursor interval or the next (forward playback); false: the general sampler's case (clamped,
+// exact slerp, not LINEAR). Always inlined: a call per channel costs as much as the sample.
+[[gnu::always_inline]] inline bool sampleInline(bool shared, std::size_t sharedKey, float sharedT,
+                                                float t, const AnimationSampler& sampler,
+                                                bool rotation, float* out, std::uint32_t& cursor) {
+    return (shared && sampleLinearAt(sampler, rotation, sharedKey, sharedT, out)) ||
+           sampleLinearInCursorInterval(sampler, rotation, t, out, cursor);
+}
+
 void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loop,
                 AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransform>& pose,
                 std::vector<float>& weights, std::vector<std::uint32_t>& cursors) {
     if (clipIndex < 0 || static_cast<std::size_t>(clipIndex) >= model.animations.size()) return;
     const AnimationClip& clip = model.animations[static_cast<std::size_t>(clipIndex)];
     const float t = clipTime(time, clip.duration, loop);
+    // One key search for the whole clip where its samplers share their key times: the
+    // interval k and its parameter, as each channel would find them (channel 0's cursor).
+    bool shared = false;
+    std::size_t sharedKey = 0;
+    float sharedT = 0;
+    if (clip.linearSharedTimes && !cursors.empty()) {
+        const std::vector<float>& times = clip.samplers.front().times;
+        std::size_t k = cursors[0];
+        if (!(k + 1 < times.size() && times[k] <= t && t < times[k + 1] && t > times[0]))
+            k = keyIntervalAt(times, t, cursors[0]);
+        if (t > times.front() && k + 1 < times.size()) {  // else clamped: each channel's own
+            shared = true;
+            sharedKey = k;
+            sharedT = (t - times[k]) / (times[k + 1] - times[k]);
+            cursors[0] = static_cast<std::uint32_t>(k);
+        }
+    }
     // Rotations are normalised four at a time (SSE2), the same values as one by one.
     std::array<float*, 4> unnormalised{};
     std::size_t pending = 0;
@@ -97,13 +124,15 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
             local = restPose(model.nodes[node]);
         switch (channel.property) {
             case AnimatedProperty::Translation:
-                if (!sampleLinearInCursorInterval(sampler, false, t, &local.position.x, cursor))
+                if (!sampleInline(shared, sharedKey, sharedT, t, sampler, false, &local.position.x,
+                                  cursor))
                     sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
                                     cursor);
                 s.touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Rotation:
-                if (!sampleLinearInCursorInterval(sampler, true, t, &local.rotation.x, cursor))
+                if (!sampleInline(shared, sharedKey, sharedT, t, sampler, true, &local.rotation.x,
+                                  cursor))
                     sampleAnimationUnnormalised(sampler, channel.property, t,
                                                 std::span(&local.rotation.x, 4), cursor);
                 s.touched[node] |= kTransformTouched;
@@ -115,7 +144,8 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
                 }
                 break;
             case AnimatedProperty::Scale:
-                if (!sampleLinearInCursorInterval(sampler, false, t, &local.scale.x, cursor))
+                if (!sampleInline(shared, sharedKey, sharedT, t, sampler, false, &local.scale.x,
+                                  cursor))
                     sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3),
                                     cursor);
                 s.touched[node] |= kTransformTouched;
@@ -175,7 +205,8 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
         s.appliedTime == player.time) {
         return;  // paused (or speed 0) and not scrubbed: the entities already hold this pose
     }
-    s.applied = player.nextClip < 0;  // a crossfade always rewrites (its weight moves)
+    prefetchSkinOutputs(pools, player);  // needed after sampling: the sampling hides the wait
+    s.applied = player.nextClip < 0;     // a crossfade always rewrites (its weight moves)
     s.appliedClip = player.clip;
     s.appliedTime = player.time;
     std::fill(s.touched.begin(), s.touched.end(), std::uint8_t{0});
@@ -317,7 +348,7 @@ AnimationWorkLists& workLists(ecs::Registry& registry) {
     return registry.resources().getOrEmplace<AnimationWorkLists>();
 }
 
-constexpr std::size_t kPlayersPerJob = 8;
+constexpr std::size_t kPlayersPerJob = 16;  // prefetching runs within a job's range
 constexpr std::size_t kSkinsPerJob = 16;
 
 void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLists& lists,
@@ -331,9 +362,17 @@ void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkL
         pools.locals = &registry.storage<ecs::LocalTransform>().pool();
     if (!registry.view<ecs::WorldTransform>().empty())
         pools.worlds = &registry.storage<ecs::WorldTransform>().pool();
+    if (!registry.view<Skin>().empty()) pools.skins = &registry.storage<Skin>().pool();
     jobs.parallelFor(lists.players.size(), kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i)
+        for (std::size_t i = begin; i < end; ++i) {
+            // The next players' data is requested while this one works: the record two ahead
+            // (its address only: nothing of it is read), what it points to one ahead, in this
+            // job's range only (another job may be writing its players' scratch).
+            if (i + 2 < lists.players.size())
+                prefetchPlayerRecord(players.get(lists.players[i + 2]));
+            if (i + 1 < end) prefetchSkeletonPose(pools, players.get(lists.players[i + 1]));
             advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds);
+        }
     });
 }
 
@@ -411,6 +450,15 @@ void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) 
                     box[a + 3] = std::max(box[a + 3], hi[a]);
                 }
             }
+        }
+    }
+    // Stored as centre and half size, what each frame's bounds need (computed here once, the
+    // same floats the frame would compute); a joint that moves no vertex gets half size -inf.
+    for (std::array<float, 6>& box : skin.jointBounds) {
+        const std::array<float, 6> minMax = box;
+        for (int a = 0; a < 3; ++a) {
+            box[a] = 0.5f * (minMax[a] + minMax[a + 3]);
+            box[a + 3] = 0.5f * (minMax[a + 3] - minMax[a]);
         }
     }
 }

@@ -66,15 +66,13 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
         }
         if (j >= skin.jointBounds.size()) continue;
         const std::array<float, 6>& box = skin.jointBounds[j];
-        if (box[0] > box[3]) continue;  // the joint moves no vertex
+        if (!(box[3] >= 0)) continue;  // the joint moves no vertex
         // The moved box's bounds from its centre and half size (Arvo): the centre moved by
         // the matrix, the half size by its absolute values; the same box as moving all 8
         // corners, at a quarter of the work.
         const ecs::Mat4& m = skin.jointMatrices[j];
-        const float centreIn[3] = {0.5f * (box[0] + box[3]), 0.5f * (box[1] + box[4]),
-                                   0.5f * (box[2] + box[5])};
-        const float half[3] = {0.5f * (box[3] - box[0]), 0.5f * (box[4] - box[1]),
-                               0.5f * (box[5] - box[2])};
+        const float* centreIn = box.data();
+        const float* half = box.data() + 3;
 #if defined(__SSE2__)
         // Whole columns, in transformPoint's and the scalar form's order (same results).
         const __m128 c0 = _mm_loadu_ps(m.m), c1 = _mm_loadu_ps(m.m + 4);

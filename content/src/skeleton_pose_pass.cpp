@@ -1,5 +1,7 @@
 #include "skeleton_pose_pass.h"
 
+#include <algorithm>
+
 #include "candela/content/model.h"
 #include "candela/ecs/affine_multiply.h"
 #include "candela/ecs/hierarchy.h"
@@ -56,6 +58,8 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
     s.order.reserve(count);
     s.skinNodes.clear();
     s.skinNodes.reserve(count);
+    s.skinIndex.reserve(count);
+    s.skinPool = nullptr;  // refreshSkinIndices looks the skins up again
     s.direct = true;
 
     // Parents first: the roots, then each listed node's children (explicit queue, the order
@@ -119,6 +123,14 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
             {n, s.localIndex[n], s.worldIndex[n], s.parentWorld[n], s.stampLocal[n], parentPass});
     }
     s.passMoved.assign(s.passNodes.size(), 0);
+    s.localFirst = s.worldFirst = kAbsent;
+    s.localEnd = s.worldEnd = 0;
+    for (const AnimationPlayer::Scratch::PassNode& p : s.passNodes) {
+        s.localFirst = std::min(s.localFirst, p.local);
+        s.localEnd = std::max(s.localEnd, p.local + 1);
+        s.worldFirst = std::min(s.worldFirst, p.world);
+        s.worldEnd = std::max(s.worldEnd, p.world + 1);
+    }
     s.localPool = pools.locals;
     s.worldPool = pools.worlds;
     s.localVersion = pools.locals ? pools.locals->structureVersion() : 0;
@@ -143,12 +155,28 @@ void writeLocalsOnly(ecs::Registry& registry, const TransformPools& pools,
     }
 }
 
-void buildSkin(ecs::Registry& registry, AnimationPlayer& player, const ecs::WorldTransform* worlds,
-               std::uint32_t meshNode, ecs::Tick now) {
+// The dense Skin-pool indices of the player's skin nodes, refreshed when the pool changed
+// structure (skinIndex was sized by bind: no allocation).
+void refreshSkinIndices(const ecs::Registry& registry, const TransformPools& pools,
+                        AnimationPlayer::Scratch& s, const AnimationPlayer& player) {
+    const std::uint32_t version = pools.skins ? pools.skins->structureVersion() : 0;
+    if (s.skinPool == pools.skins && s.skinVersion == version &&
+        s.skinIndex.size() == s.skinNodes.size())
+        return;
+    s.skinIndex.resize(s.skinNodes.size());
+    for (std::size_t k = 0; k < s.skinNodes.size(); ++k)
+        s.skinIndex[k] = indexIn(pools.skins, registry, player.nodeEntities[s.skinNodes[k]]);
+    s.skinPool = pools.skins;
+    s.skinVersion = version;
+}
+
+void buildSkin(AnimationPlayer& player, const TransformPools& pools,
+               const ecs::WorldTransform* worlds, std::size_t k, ecs::Tick now) {
     const Model& model = *player.model;
     const AnimationPlayer::Scratch& s = player.scratch;
-    Skin* skin = registry.tryGet<Skin>(player.nodeEntities[meshNode]);
-    if (skin == nullptr) return;
+    if (pools.skins == nullptr || s.skinIndex[k] == kAbsent) return;
+    const std::uint32_t meshNode = s.skinNodes[k];
+    Skin* skin = pools.skins->typedData<Skin>() + s.skinIndex[k];
     const SkinData& data = model.skins[static_cast<std::size_t>(skin->skin)];
     const ecs::Mat4 toMesh = affineInverse(worlds[s.worldIndex[meshNode]].matrix);
     buildJointMatrices(*skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
@@ -160,7 +188,74 @@ void buildSkin(ecs::Registry& registry, AnimationPlayer& player, const ecs::Worl
     skin->builtByPose = true;
 }
 
+// One prefetch per 64-byte cache line that [begin, begin + bytes) touches.
+void prefetchBytes(const void* begin, std::size_t bytes, bool forWriting) {
+    constexpr std::uintptr_t kLine = 64;
+    const auto first = reinterpret_cast<std::uintptr_t>(begin) & ~(kLine - 1);
+    const auto end = reinterpret_cast<std::uintptr_t>(begin) + bytes;
+    for (std::uintptr_t line = first; line < end; line += kLine) {
+        const auto* p = reinterpret_cast<const void*>(line);
+        if (forWriting) {
+            __builtin_prefetch(p, 1);
+        } else {
+            __builtin_prefetch(p, 0);
+        }
+    }
+}
+
+template <class T>
+void prefetchVector(const std::vector<T>& v, bool forWriting) {
+    prefetchBytes(v.data(), v.size() * sizeof(T), forWriting);
+}
+
 }  // namespace
+
+void prefetchSkeletonPose(const TransformPools& pools, const AnimationPlayer& player) {
+    const AnimationPlayer::Scratch& s = player.scratch;
+    if (!s.bound || !s.direct || pools.locals == nullptr || pools.worlds == nullptr) return;
+    prefetchVector(s.cursors, true);
+    prefetchVector(s.touched, true);
+    prefetchVector(s.pose, true);
+    prefetchVector(s.passNodes, false);
+    prefetchVector(s.passMoved, true);
+    if (pools.skins != nullptr && s.skinPool == pools.skins &&
+        s.skinVersion == pools.skins->structureVersion()) {
+        for (const std::uint32_t index : s.skinIndex)
+            if (index != kAbsent)
+                prefetchBytes(pools.skins->typedData<Skin>() + index, sizeof(Skin), true);
+    }
+    // Ranges a skeleton laid out depth-first keeps compact; a scattered one is left alone.
+    constexpr std::uint32_t kMaxSpan = 4 * 64;
+    if (s.localFirst < s.localEnd && s.localEnd - s.localFirst <= kMaxSpan) {
+        prefetchBytes(pools.locals->typedData<ecs::LocalTransform>() + s.localFirst,
+                      (s.localEnd - s.localFirst) * sizeof(ecs::LocalTransform), true);
+    }
+    if (s.worldFirst < s.worldEnd && s.worldEnd - s.worldFirst <= kMaxSpan) {
+        prefetchBytes(pools.worlds->typedData<ecs::WorldTransform>() + s.worldFirst,
+                      (s.worldEnd - s.worldFirst) * sizeof(ecs::WorldTransform), true);
+        prefetchBytes(pools.worlds->changeTicks() + s.worldFirst,
+                      (s.worldEnd - s.worldFirst) * sizeof(ecs::Tick), true);
+    }
+}
+
+void prefetchPlayerRecord(const AnimationPlayer& player) {
+    prefetchBytes(&player, sizeof(AnimationPlayer), false);
+}
+
+void prefetchSkinOutputs(const TransformPools& pools, const AnimationPlayer& player) {
+    const AnimationPlayer::Scratch& s = player.scratch;
+    if (!s.bound || pools.skins == nullptr || s.skinPool != pools.skins ||
+        s.skinVersion != pools.skins->structureVersion())
+        return;
+    const Skin* skins = pools.skins->typedData<Skin>();
+    for (const std::uint32_t index : s.skinIndex) {
+        if (index == kAbsent) continue;
+        const Skin& skin = skins[index];
+        // buildJointMatrices swaps the two sets and then writes the older one.
+        prefetchVector(skin.previousJointMatrices, true);
+        prefetchVector(skin.jointBounds, false);
+    }
+}
 
 void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
                        AnimationPlayer& player) {
@@ -196,8 +291,9 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
         worldTicks[p.world] = now;
     }
     pools.worlds->noteChange(now);
-    for (const std::uint32_t meshNode : s.skinNodes)
-        buildSkin(registry, player, worlds, meshNode, now);
+    refreshSkinIndices(registry, pools, s, player);
+    for (std::size_t k = 0; k < s.skinNodes.size(); ++k)
+        buildSkin(player, pools, worlds, k, now);
 }
 
 }  // namespace candela::content

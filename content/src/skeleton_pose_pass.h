@@ -23,9 +23,11 @@ constexpr std::uint8_t kTransformTouched = 1;
 constexpr std::uint8_t kWeightsTouched = 2;
 
 // The LocalTransform and WorldTransform pools, fetched once per frame (null: none exists).
+// The Skin pool rides along: the pass builds its player's skins.
 struct TransformPools {
     ecs::ComponentPool* locals = nullptr;
     ecs::ComponentPool* worlds = nullptr;
+    ecs::ComponentPool* skins = nullptr;
 };
 
 // Writes player.scratch.pose (the nodes marked kTransformTouched; the others keep their
@@ -33,5 +35,17 @@ struct TransformPools {
 // parallel; allocates nothing once bound.
 void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
                        AnimationPlayer& player);
+
+// Asks the memory system for what writeSkeletonPose(player) will touch (its scratch and its
+// entities' transforms; a bound player only): a player's data lies in a dozen separate blocks
+// that the hardware prefetcher cannot guess, so the caller issues this one player ahead and the
+// misses overlap the current player's work. Reads only `player` and its own scratch.
+void prefetchSkeletonPose(const TransformPools& pools, const AnimationPlayer& player);
+// The first step of that, issued two players ahead: the player's own record (which holds the
+// addresses prefetchSkeletonPose reads).
+void prefetchPlayerRecord(const AnimationPlayer& player);
+// The last step, issued as the player starts sampling: the joint matrices its skins are
+// about to receive and their joint boxes (the sampling hides the wait).
+void prefetchSkinOutputs(const TransformPools& pools, const AnimationPlayer& player);
 
 }  // namespace candela::content

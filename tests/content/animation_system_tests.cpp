@@ -124,6 +124,9 @@ TEST(AnimationSystems, ForwardPlaybackPoseEqualsTheGeneralSamplerExactly) {
     const std::int32_t run = player.findClip("Run");
     player.play(run);
     const AnimationClip& clip = fox.animations[static_cast<std::size_t>(run)];
+    // Fox's samplers share one key-time accessor: this compares the once-per-clip interval
+    // path (sampleClip's shared key) with the general sampler.
+    ASSERT_TRUE(clip.linearSharedTimes);
     for (int frame = 0; frame < 60; ++frame) {
         world.frame(1.0f / 60.0f);
         for (const AnimationChannel& channel : clip.channels) {
@@ -135,6 +138,32 @@ TEST(AnimationSystems, ForwardPlaybackPoseEqualsTheGeneralSamplerExactly) {
                 ASSERT_EQ(got[c], expected[c]) << "frame " << frame << " node " << channel.node;
         }
     }
+}
+
+// Only a clip whose samplers are all LINEAR with bit-for-bit the same key times (two or more)
+// takes the once-per-clip key search.
+TEST(AnimationSystems, SharedKeyTimesNeedTheSameTimesAndLinearEverywhere) {
+    AnimationClip clip;
+    clip.samplers.resize(2);
+    for (AnimationSampler& sampler : clip.samplers) {
+        sampler.components = 3;
+        sampler.times = {0.0f, 0.5f, 1.0f};
+        sampler.values.assign(9, 0.0f);
+    }
+    markSharedKeyTimes(clip);
+    EXPECT_TRUE(clip.linearSharedTimes);
+    clip.samplers[1].times[1] = 0.25f;
+    markSharedKeyTimes(clip);
+    EXPECT_FALSE(clip.linearSharedTimes);
+    clip.samplers[1].times[1] = 0.5f;
+    clip.samplers[1].interpolation = Interpolation::Step;
+    markSharedKeyTimes(clip);
+    EXPECT_FALSE(clip.linearSharedTimes);
+    clip.samplers[1].interpolation = Interpolation::Linear;
+    for (AnimationSampler& sampler : clip.samplers)
+        sampler.times = {0.0f};
+    markSharedKeyTimes(clip);
+    EXPECT_FALSE(clip.linearSharedTimes);
 }
 
 // The skeleton pass writes joints' worlds itself and leaves their locals unstamped: what it

@@ -153,6 +153,7 @@ bool convertClip(Context& context, const tinygltf::Animation& from, const std::s
         if (channel.property == AnimatedProperty::Rotation)
             prepareSlerpAngles(clip.samplers[static_cast<std::size_t>(channel.sampler)]);
     }
+    markSharedKeyTimes(clip);
     return true;
 }
 

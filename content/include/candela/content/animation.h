@@ -57,6 +57,10 @@ struct AnimationClip {
     std::vector<AnimationSampler> samplers;
     std::vector<AnimationChannel> channels;
     float duration = 0;  // the last key time over all samplers
+    // Every sampler is LINEAR with the very same key times (glTF exporters usually give a
+    // clip's samplers one input accessor): sampling finds the key interval and its parameter
+    // once per clip, not once per channel (the same values). Set by markSharedKeyTimes.
+    bool linearSharedTimes = false;
 };
 
 }  // namespace candela::content

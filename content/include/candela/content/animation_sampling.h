@@ -4,6 +4,9 @@
 // outside the keys clamp to the first/last value. Allocation-free.
 #include <cstdint>
 #include <span>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 #include "candela/content/animation.h"
 
@@ -29,6 +32,42 @@ void sampleAnimationUnnormalised(const AnimationSampler& sampler, AnimatedProper
 // one at a time.
 void normalizeQuaternions(std::span<float* const> quaternions);
 
+// A LINEAR translation or scale (rotation false), or a LINEAR rotation whose key interval k
+// holds a corrected nlerp, at parameter t in [times[k], times[k+1]] (t = (time - times[k]) /
+// (times[k+1] - times[k]), k + 1 < keys): writes the same values as
+// sampleAnimationUnnormalised and returns true; false (nothing written) otherwise.
+inline bool sampleLinearAt(const AnimationSampler& sampler, bool rotation, std::size_t k, float t,
+                           float* out) {
+    const std::size_t n = rotation ? 4 : 3;
+    if (sampler.interpolation != Interpolation::Linear || sampler.components != n) return false;
+    const float* a = sampler.values.data() + k * n;
+    const float* b = a + n;
+    if (!rotation) {
+        for (std::size_t c = 0; c < 3; ++c)
+            out[c] = a[c] + (b[c] - a[c]) * t;
+        return true;
+    }
+    const std::size_t keys = sampler.times.size();
+    if (sampler.slerpAngles.size() != kSlerpAngleFloats * (keys - 1)) return false;
+    const float* entry = sampler.slerpAngles.data() + kSlerpAngleFloats * k;
+    if (entry[3] == 0) return false;  // an exact-slerp interval
+    // The corrected nlerp's weights and sum, as the general path computes them.
+    const float w = t * (1 - t);
+    const float u = t + w * (2 * t - 1) * (entry[0] + entry[1] * w);
+    const float wa = 1 - u, wb = entry[2] * u;
+#if defined(__SSE2__)
+    // One 16-byte store, per lane the same product and sum: normalizeQuaternions reloads the
+    // quaternion as one vector a few channels later, which four scalar stores would stall
+    // (a wide load cannot be forwarded from narrower stores still in flight).
+    _mm_storeu_ps(out, _mm_add_ps(_mm_mul_ps(_mm_set1_ps(wa), _mm_loadu_ps(a)),
+                                  _mm_mul_ps(_mm_set1_ps(wb), _mm_loadu_ps(b))));
+#else
+    for (std::size_t c = 0; c < 4; ++c)
+        out[c] = wa * a[c] + wb * b[c];
+#endif
+    return true;
+}
+
 // The hot case of sampleAnimation, inline: a LINEAR translation or scale (3 components), or a
 // LINEAR rotation whose interval holds a corrected nlerp (see prepareSlerpAngles), at a time
 // in the cursor's key interval or the next one (forward playback). Writes the same values as
@@ -46,28 +85,10 @@ inline bool sampleLinearInCursorInterval(const AnimationSampler& sampler, bool r
             return false;
         ++k;
     }
-    const float* entry = nullptr;
-    if (rotation) {
-        if (sampler.slerpAngles.size() != kSlerpAngleFloats * (keys - 1)) return false;
-        entry = sampler.slerpAngles.data() + kSlerpAngleFloats * k;
-        if (entry[3] == 0) return false;  // an exact-slerp interval
-    }
-    cursor = static_cast<std::uint32_t>(k);
     const float t0 = times[k];
     const float t = (time - t0) / (times[k + 1] - t0);
-    const float* a = sampler.values.data() + k * n;
-    const float* b = a + n;
-    if (!rotation) {
-        for (std::size_t c = 0; c < 3; ++c)
-            out[c] = a[c] + (b[c] - a[c]) * t;
-        return true;
-    }
-    // The corrected nlerp's weights and sum, as the general path computes them.
-    const float w = t * (1 - t);
-    const float u = t + w * (2 * t - 1) * (entry[0] + entry[1] * w);
-    const float wa = 1 - u, wb = entry[2] * u;
-    for (std::size_t c = 0; c < 4; ++c)
-        out[c] = wa * a[c] + wb * b[c];
+    if (!sampleLinearAt(sampler, rotation, k, t, out)) return false;
+    cursor = static_cast<std::uint32_t>(k);
     return true;
 }
 
@@ -84,6 +105,10 @@ std::size_t keyIntervalAt(const std::vector<float>& times, float time, std::uint
 // acos and a sine per channel per frame, same values). The loader calls it with
 // kNlerpErrorTolerance; 0 is the reference mode: exact slerp everywhere.
 void prepareSlerpAngles(AnimationSampler& sampler, double nlerpTolerance = kNlerpErrorTolerance);
+
+// Sets clip.linearSharedTimes: every sampler LINEAR, with two keys or more, and all with
+// bit-for-bit the same key times. The loader calls it.
+void markSharedKeyTimes(AnimationClip& clip);
 
 // Wraps or clamps a play time into [0, duration].
 float clipTime(float time, float duration, bool loop);

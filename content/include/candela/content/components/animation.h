@@ -88,6 +88,14 @@ struct AnimationPlayer {
         std::vector<PassNode> passNodes;
         std::vector<std::uint8_t> passMoved;   // per pass node: its world was written this frame
         std::vector<std::uint32_t> skinNodes;  // mesh nodes whose Skin this player builds
+        // Per skin node, its entity's dense index in the Skin pool, looked up again only when
+        // that pool changes structure (the pass reads the Skin without a sparse lookup).
+        std::vector<std::uint32_t> skinIndex;
+        const void* skinPool = nullptr;
+        std::uint32_t skinVersion = 0;
+        // The dense index ranges [first, end) the pass writes in the LocalTransform and
+        // WorldTransform pools (bind's), so the player before this one can prefetch them.
+        std::uint32_t localFirst = 0, localEnd = 0, worldFirst = 0, worldEnd = 0;
         const void* localPool = nullptr;
         const void* worldPool = nullptr;
         std::uint32_t localVersion = 0;
@@ -116,9 +124,9 @@ struct Skin {
     // The previous frame's matrices (motion vectors / TAA: skin the vertex twice, or keep the
     // previous deformed positions; see render/README.md "Animation").
     std::vector<ecs::Mat4> previousJointMatrices;
-    // Per joint, the bind-space box of the vertices it influences (min xyz, max xyz; empty when
-    // it influences none): the deformed mesh lies inside the union of these boxes moved by the
-    // joint matrices.
+    // Per joint, the bind-space box of the vertices it influences, as its centre xyz and half
+    // size xyz (half size -inf when it influences none): the deformed mesh lies inside the
+    // union of these boxes moved by the joint matrices.
     std::vector<std::array<float, 6>> jointBounds;
     // The deformed mesh's bounds in mesh space (what culling and clusters use).
     ecs::Vec3 boundsMin{}, boundsMax{};
