@@ -235,8 +235,8 @@ TEST_F(Hair, AStrandUnderAnotherIsDarkenedByItsSelfShadow) {
     const float radius = 0.005f;
     style.rootRadius = style.tipRadius = radius;
     style.color = {0.5f, 0.5f, 0.5f};
-    // Two level strands 2 m ahead, one 0.2 m above the other, under a sun straight above.
-    const float gap = 0.2f;
+    // Two level strands 2 m ahead, one 0.4 m above the other, under a sun straight above.
+    const float gap = 0.4f;
     candela::content::Hair pair;
     pair.positions = {{-0.6f, 0.5f * gap, -2.0f},
                       {0.6f, 0.5f * gap, -2.0f},
