@@ -350,7 +350,20 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
         };
         shadowDepth_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
     }
+    // Cleared and drawn only over the views' tiles (their bounding box: the atlas packs tiles
+    // from its corner), which is all the resolve reads.
     const uint32_t size = in.hairShadow.desc().width;
+    uint32_t x0 = size, y0 = size, x1 = 0, y1 = 0;
+    for (const GpuShadowView& v : views) {
+        x0 = std::min(x0, uint32_t(v.tile.x));
+        y0 = std::min(y0, uint32_t(v.tile.y));
+        x1 = std::max(x1, std::min(size, uint32_t(v.tile.x + v.tile.z)));
+        y1 = std::max(y1, std::min(size, uint32_t(v.tile.y + v.tile.z)));
+    }
+    if (x1 <= x0 || y1 <= y0) {  // no view: an empty frame of the pass
+        x0 = y0 = 0;
+        x1 = y1 = 1;
+    }
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depth.imageView = in.hairShadow.view();
     depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
@@ -358,7 +371,7 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
     depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     depth.clearValue.depthStencil = {0.0f, 0};  // reverse depth: no hair
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {size, size}};
+    rendering.renderArea = {{int32_t(x0), int32_t(y0)}, {x1 - x0, y1 - y0}};
     rendering.layerCount = 1;
     rendering.pDepthAttachment = &depth;
     vkCmdBeginRendering(cmd, &rendering);
