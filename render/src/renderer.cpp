@@ -482,6 +482,16 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         resources.setEnvironment(atmospherePass_->environment());
     }
     LightingFeatures features = featuresOf(inputs.scene, resources, options_);
+    // The reference samples the sky by a luminance table read back from its cube; the
+    // atmosphere's first cube is rendered in this frame, so that frame lights by the split
+    // sum and the reference starts with the next one.
+    if (features.ibl == IblMode::Reference && atmospherePass_ && inputs.scene.atmosphere &&
+        !atmospherePass_->environmentReadable()) {
+        features.ibl = IblMode::SplitSum;
+        std::fprintf(stderr,
+                     "note: --ibl reference starts on the second frame: the atmosphere's sky "
+                     "cube is rendered in the first\n");
+    }
     // Shadow maps for the lights that cast; none, and the variant leaves shadows out.
     features.shadows = shadowPass_->prepare(inputs.scene, resources, options_, width_, height_);
     lightingPass_->setFeatures(features);

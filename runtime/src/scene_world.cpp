@@ -95,6 +95,8 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     sceneAntiAliasing_ = scene->aa;
     sceneMsaa_ = scene->msaa;
     sceneSsr_ = scene->ssr;
+    sceneScattering_ = scene->scattering;
+    sceneVolumetrics_ = scene->volumetrics;
     sceneBloom_ = scene->bloom;
     sceneExposure_ = scene->exposure;
     sceneExposureCompensation_ = scene->exposureCompensation;

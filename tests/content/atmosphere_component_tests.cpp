@@ -9,17 +9,17 @@
 
 #include "candela/content/component_validation.h"
 #include "candela/content/scene_file.h"
+#include "scene_component_checks.h"
 
 namespace candela::content {
 namespace {
 
 std::optional<SceneDocument> parse(const std::string& text, Diagnostics& diagnostics) {
-    return parseSceneJson(std::as_bytes(std::span(text)), "sky.scene.json", diagnostics);
+    return testing::parseScene(text, "sky.scene.json", diagnostics);
 }
 
 std::string sceneWithAtmosphere(const std::string& atmosphereJson) {
-    return R"({"format": "candela.scene", "version": 1, "entities": [{"name": "air", "atmosphere": )" +
-           atmosphereJson + "}]}";
+    return testing::sceneWithComponent("atmosphere", atmosphereJson);
 }
 
 TEST(AtmosphereComponent, EveryFieldRoundTripsThroughASceneFile) {
@@ -64,38 +64,33 @@ TEST(AtmosphereComponent, AnEmptyObjectIsEarth) {
 }
 
 TEST(AtmosphereComponent, BadValuesAreErrorsNamingTheFileAndTheElement) {
-    struct Case {
-        const char* atmosphere;
-        const char* element;
-        const char* words;
-    };
-    const Case cases[] = {
-        {R"({"rayleighScattering": [1e-6, -1e-6, 0]})", "/entities/0/atmosphere/rayleighScattering",
-         "not negative"},
-        {R"({"rayleighScattering": [1e-6, 2e-6]})", "/entities/0/atmosphere/rayleighScattering",
-         "array of 3"},
-        {R"({"mieScattering": -1})", "/entities/0/atmosphere/mieScattering", "not negative"},
-        {R"({"rayleighScaleHeight": 0})", "/entities/0/atmosphere/rayleighScaleHeight", "positive"},
-        {R"({"mieAnisotropy": 1})", "/entities/0/atmosphere/mieAnisotropy", "between -1 and 1"},
-        {R"({"groundAlbedo": [0.5, 1.5, 0.5]})", "/entities/0/atmosphere/groundAlbedo", "exceed 1"},
-        {R"({"latitude": 91})", "/entities/0/atmosphere/latitude", "[-90, 90]"},
-        {R"({"dayOfYear": 0})", "/entities/0/atmosphere/dayOfYear", "[1, 366]"},
-        {R"({"timeOfDay": 25})", "/entities/0/atmosphere/timeOfDay", "[0, 24]"},
-        {R"({"sunAngularDiameter": 0})", "/entities/0/atmosphere/sunAngularDiameter", "(0, 20]"},
-        {R"({"solarIlluminance": "bright"})", "/entities/0/atmosphere/solarIlluminance",
-         "expected a number"},
-    };
-    for (const Case& c : cases) {
-        SCOPED_TRACE(c.atmosphere);
-        Diagnostics diagnostics;
-        auto loaded = parse(sceneWithAtmosphere(c.atmosphere), diagnostics);
-        ASSERT_TRUE(loaded);
-        EXPECT_FALSE(loaded->entities.at(0).atmosphere) << "a bad atmosphere is left out";
-        const std::string text = diagnostics.toString();
-        EXPECT_NE(text.find("sky.scene.json"), std::string::npos) << text;
-        EXPECT_NE(text.find(c.element), std::string::npos) << text;
-        EXPECT_NE(text.find(c.words), std::string::npos) << text;
-    }
+    testing::expectEachComponentIsRejected(
+        "sky.scene.json",
+        {
+            {sceneWithAtmosphere(R"({"rayleighScattering": [1e-6, -1e-6, 0]})"),
+             "/entities/0/atmosphere/rayleighScattering", "not negative"},
+            {sceneWithAtmosphere(R"({"rayleighScattering": [1e-6, 2e-6]})"),
+             "/entities/0/atmosphere/rayleighScattering", "array of 3"},
+            {sceneWithAtmosphere(R"({"mieScattering": -1})"),
+             "/entities/0/atmosphere/mieScattering", "not negative"},
+            {sceneWithAtmosphere(R"({"rayleighScaleHeight": 0})"),
+             "/entities/0/atmosphere/rayleighScaleHeight", "positive"},
+            {sceneWithAtmosphere(R"({"mieAnisotropy": 1})"), "/entities/0/atmosphere/mieAnisotropy",
+             "between -1 and 1"},
+            {sceneWithAtmosphere(R"({"groundAlbedo": [0.5, 1.5, 0.5]})"),
+             "/entities/0/atmosphere/groundAlbedo", "exceed 1"},
+            {sceneWithAtmosphere(R"({"latitude": 91})"), "/entities/0/atmosphere/latitude",
+             "[-90, 90]"},
+            {sceneWithAtmosphere(R"({"dayOfYear": 0})"), "/entities/0/atmosphere/dayOfYear",
+             "[1, 366]"},
+            {sceneWithAtmosphere(R"({"timeOfDay": 25})"), "/entities/0/atmosphere/timeOfDay",
+             "[0, 24]"},
+            {sceneWithAtmosphere(R"({"sunAngularDiameter": 0})"),
+             "/entities/0/atmosphere/sunAngularDiameter", "(0, 20]"},
+            {sceneWithAtmosphere(R"({"solarIlluminance": "bright"})"),
+             "/entities/0/atmosphere/solarIlluminance", "expected a number"},
+        },
+        [](const SceneEntity& entity) { return entity.atmosphere.has_value(); });
 }
 
 TEST(AtmosphereComponent, AbsurdSunIsClampedWithAWarning) {

@@ -8,17 +8,17 @@
 
 #include "candela/content/component_validation.h"
 #include "candela/content/scene_file.h"
+#include "scene_component_checks.h"
 
 namespace candela::content {
 namespace {
 
 std::optional<SceneDocument> parse(const std::string& text, Diagnostics& diagnostics) {
-    return parseSceneJson(std::as_bytes(std::span(text)), "fog.scene.json", diagnostics);
+    return testing::parseScene(text, "fog.scene.json", diagnostics);
 }
 
 std::string sceneWithFog(const std::string& fogJson) {
-    return R"({"format": "candela.scene", "version": 1, "entities": [{"name": "air", "fog": )" +
-           fogJson + "}]}";
+    return testing::sceneWithComponent("fog", fogJson);
 }
 
 TEST(FogComponent, EveryFieldRoundTripsThroughASceneFile) {
@@ -52,30 +52,21 @@ TEST(FogComponent, MissingFieldsTakeTheDefaults) {
 }
 
 TEST(FogComponent, BadValuesAreErrorsNamingTheFileAndTheElement) {
-    struct Case {
-        const char* fog;
-        const char* element;
-        const char* words;
-    };
-    const Case cases[] = {
-        {R"({"scattering": -0.1})", "/entities/0/fog/scattering", "negative"},
-        {R"({"absorption": -2})", "/entities/0/fog/absorption", "negative"},
-        {R"({"anisotropy": 1})", "/entities/0/fog/anisotropy", "between -1 and 1"},
-        {R"({"anisotropy": -1.5})", "/entities/0/fog/anisotropy", "between -1 and 1"},
-        {R"({"heightFalloff": -0.5})", "/entities/0/fog/heightFalloff", "negative"},
-        {R"({"scattering": "thick"})", "/entities/0/fog/scattering", "expected a number"},
-    };
-    for (const Case& c : cases) {
-        SCOPED_TRACE(c.fog);
-        Diagnostics diagnostics;
-        auto loaded = parse(sceneWithFog(c.fog), diagnostics);
-        ASSERT_TRUE(loaded);
-        EXPECT_FALSE(loaded->entities.at(0).fog) << "a bad medium is left out";
-        const std::string text = diagnostics.toString();
-        EXPECT_NE(text.find("fog.scene.json"), std::string::npos) << text;
-        EXPECT_NE(text.find(c.element), std::string::npos) << text;
-        EXPECT_NE(text.find(c.words), std::string::npos) << text;
-    }
+    testing::expectEachComponentIsRejected(
+        "fog.scene.json",
+        {
+            {sceneWithFog(R"({"scattering": -0.1})"), "/entities/0/fog/scattering", "negative"},
+            {sceneWithFog(R"({"absorption": -2})"), "/entities/0/fog/absorption", "negative"},
+            {sceneWithFog(R"({"anisotropy": 1})"), "/entities/0/fog/anisotropy",
+             "between -1 and 1"},
+            {sceneWithFog(R"({"anisotropy": -1.5})"), "/entities/0/fog/anisotropy",
+             "between -1 and 1"},
+            {sceneWithFog(R"({"heightFalloff": -0.5})"), "/entities/0/fog/heightFalloff",
+             "negative"},
+            {sceneWithFog(R"({"scattering": "thick"})"), "/entities/0/fog/scattering",
+             "expected a number"},
+        },
+        [](const SceneEntity& entity) { return entity.fog.has_value(); });
 }
 
 TEST(FogComponent, AbsurdCoefficientsAreClampedWithAWarning) {

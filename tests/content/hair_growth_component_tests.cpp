@@ -8,19 +8,18 @@
 #include <string>
 
 #include "candela/content/scene_file.h"
+#include "scene_component_checks.h"
 
 namespace candela::content {
 namespace {
 
 std::optional<SceneDocument> parse(const std::string& text, Diagnostics& diagnostics) {
-    return parseSceneJson(std::as_bytes(std::span(text)), "fur.scene.json", diagnostics);
+    return testing::parseScene(text, "fur.scene.json", diagnostics);
 }
 
 std::string sceneWithHair(const std::string& hairJson, bool mesh = true) {
-    return std::string(
-               R"({"format": "candela.scene", "version": 1, "entities": [{"name": "cat", )") +
-           (mesh ? R"("mesh": {"gltf": "cat.gltf", "mesh": 0}, )" : "") + R"("hair": )" + hairJson +
-           "}]}";
+    return testing::sceneWithComponent("hair", hairJson,
+                                       mesh ? R"("mesh": {"gltf": "cat.gltf", "mesh": 0}, )" : "");
 }
 
 TEST(HairGrowthComponent, EveryFieldRoundTripsThroughASceneFile) {
@@ -51,29 +50,19 @@ TEST(HairGrowthComponent, EveryFieldRoundTripsThroughASceneFile) {
 }
 
 TEST(HairGrowthComponent, BadValuesAreErrorsNamingTheFileAndTheElement) {
-    struct Case {
-        std::string scene;
-        const char* element;
-    };
-    const Case cases[] = {
-        {sceneWithHair(R"({"count": 10})", false), "/entities/0/hair"},
-        {sceneWithHair(R"({"count": 0})"), "/entities/0/hair/count"},
-        {sceneWithHair(R"({"length": 0})"), "/entities/0/hair/length"},
-        {sceneWithHair(R"({"style": {"rootRadius": -1}})"), "/entities/0/hair/style/rootRadius"},
-        {sceneWithHair(R"({"style": {"color": [0, 2, 0]}})"), "/entities/0/hair/style/color"},
-        {sceneWithHair(R"({"style": {"secondaryExponent": "soft"}})"),
-         "/entities/0/hair/style/secondaryExponent"},
-    };
-    for (const Case& c : cases) {
-        SCOPED_TRACE(c.scene);
-        Diagnostics diagnostics;
-        auto loaded = parse(c.scene, diagnostics);
-        ASSERT_TRUE(loaded);
-        EXPECT_FALSE(loaded->entities.at(0).hair) << "a bad block is left out";
-        const std::string text = diagnostics.toString();
-        EXPECT_NE(text.find("fur.scene.json"), std::string::npos) << text;
-        EXPECT_NE(text.find(c.element), std::string::npos) << text;
-    }
+    testing::expectEachComponentIsRejected(
+        "fur.scene.json",
+        {
+            {sceneWithHair(R"({"count": 10})", false), "/entities/0/hair"},
+            {sceneWithHair(R"({"count": 0})"), "/entities/0/hair/count"},
+            {sceneWithHair(R"({"length": 0})"), "/entities/0/hair/length"},
+            {sceneWithHair(R"({"style": {"rootRadius": -1}})"),
+             "/entities/0/hair/style/rootRadius"},
+            {sceneWithHair(R"({"style": {"color": [0, 2, 0]}})"), "/entities/0/hair/style/color"},
+            {sceneWithHair(R"({"style": {"secondaryExponent": "soft"}})"),
+             "/entities/0/hair/style/secondaryExponent"},
+        },
+        [](const SceneEntity& entity) { return entity.hair.has_value(); });
 }
 
 }  // namespace

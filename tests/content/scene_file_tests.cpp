@@ -325,8 +325,8 @@ TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("energy-conserving")) << badDiagnostics.toString();
 }
 
-// Issue 24: the top-level "aa", "msaa" and "bloom" survive save and load; bad values are
-// named.
+// Issue 24: the top-level "aa", "msaa" and "bloom" survive save and load, as do "ssr" (issue
+// 18), "scattering" (16) and "volumetrics" (17); bad values are named.
 TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     SceneDocument scene = exampleScene();
     scene.aa = SceneAntiAliasing::Fxaa;
@@ -335,6 +335,8 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     scene.exposure = SceneExposure::Auto;
     scene.exposureCompensation = -0.5f;
     scene.ssr = SceneSsrMode::Hiz;  // issue 18
+    scene.scattering = SceneScatteringMode::BruteForce;
+    scene.volumetrics = SceneVolumetricsMode::Froxels;
     std::string error;
     const std::string text = sceneToJson(scene, error);
     ASSERT_EQ(error, "");
@@ -347,9 +349,13 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     EXPECT_EQ(loaded->exposure, SceneExposure::Auto);
     EXPECT_EQ(loaded->exposureCompensation, -0.5f);
     EXPECT_EQ(loaded->ssr, SceneSsrMode::Hiz);
+    EXPECT_EQ(loaded->scattering, SceneScatteringMode::BruteForce);
+    EXPECT_EQ(loaded->volumetrics, SceneVolumetricsMode::Froxels);
+    EXPECT_NE(text.find("\"scattering\": \"brute-force\""), std::string::npos) << text;
 
     const std::string bad = R"({"format": "candela.scene", "version": 1, "aa": "msaa8",
-                               "msaa": 3, "bloom": 3, "ssr": "raymarch", "entities": []})";
+                               "msaa": 3, "bloom": 3, "ssr": "raymarch",
+                               "scattering": "on", "volumetrics": 2, "entities": []})";
     Diagnostics badDiagnostics;
     auto fallback = parseSceneJson(std::as_bytes(std::span(bad)), "bad.scene.json", badDiagnostics);
     ASSERT_TRUE(fallback);
@@ -362,6 +368,11 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("/bloom")) << badDiagnostics.toString();
     EXPECT_FALSE(fallback->ssr.has_value());
     EXPECT_TRUE(badDiagnostics.mentions("/ssr")) << badDiagnostics.toString();
+    EXPECT_FALSE(fallback->scattering.has_value());
+    EXPECT_FALSE(fallback->volumetrics.has_value());
+    EXPECT_TRUE(badDiagnostics.mentions("/scattering")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("brute-force")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("/volumetrics")) << badDiagnostics.toString();
 }
 
 // Issue 25: the top-level "ambient_occlusion" (mode, radius, intensity) survives save and

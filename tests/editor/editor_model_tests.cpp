@@ -251,7 +251,8 @@ TEST_F(EditorModel, SaveKeepsTheScenesBrdfSetting) {
     EXPECT_EQ(*doc.brdf, content::SceneBrdf::Ue4);
 }
 
-// Issue 24: so are "aa", "msaa", "bloom", "exposure" and "exposure_compensation".
+// Issue 24: so are "aa", "msaa", "bloom", "exposure" and "exposure_compensation", and the
+// light shafts' and volumetrics' modes (issues 16, 17).
 TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     content::SceneDocument settings;
     settings.aa = content::SceneAntiAliasing::Fxaa;
@@ -259,6 +260,8 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     settings.bloom = 0.0f;
     settings.exposure = content::SceneExposure::Auto;
     settings.exposureCompensation = 0.5f;
+    settings.scattering = content::SceneScatteringMode::Off;
+    settings.volumetrics = content::SceneVolumetricsMode::Reference;
     scene->setSceneFrameSettings(settings);
     ASSERT_TRUE(setLumens("lamp", 900.0f));
     const content::SceneDocument doc = saveAndLoad(dir / "saved" / "settings.scene.json");
@@ -267,6 +270,8 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     EXPECT_EQ(doc.bloom, 0.0f);
     EXPECT_EQ(doc.exposure, content::SceneExposure::Auto);
     EXPECT_EQ(doc.exposureCompensation, 0.5f);
+    EXPECT_EQ(doc.scattering, content::SceneScatteringMode::Off);
+    EXPECT_EQ(doc.volumetrics, content::SceneVolumetricsMode::Reference);
 }
 
 // Issue 25: the scene-wide "ambient_occlusion" the inspector edits is saved, and an edit of

@@ -227,3 +227,19 @@ TEST(ApplicationOptions, VolumetricsAndFogFlags) {
     EXPECT_NE(parseError({"--fog", "0.1,0,0,4"}).find("at most three"), std::string::npos);
     EXPECT_NE(parseError({"--fog"}).find("--fog needs"), std::string::npos);
 }
+
+// --light-assign chooses where lights are assigned to clusters (Cli tests show cpu and gpu
+// give the same image); a bad value names the flag and the choices.
+TEST(ApplicationOptions, LightAssignFlagChoosesTheDevice) {
+    using candela::render::LightAssignmentDevice;
+    for (auto [name, device] : {std::pair{"auto", LightAssignmentDevice::Auto},
+                                std::pair{"cpu", LightAssignmentDevice::Cpu},
+                                std::pair{"gpu", LightAssignmentDevice::Gpu}}) {
+        CommandLine result = parseCommandLine({"--light-assign", name});
+        ASSERT_TRUE(result) << result.error;
+        EXPECT_EQ(result.options->lightAssignment, device) << name;
+    }
+    EXPECT_EQ(parseCommandLine({}).options->lightAssignment, LightAssignmentDevice::Auto);
+    EXPECT_NE(parseError({"--light-assign", "tpu"}).find("--light-assign needs auto, cpu or gpu"),
+              std::string::npos);
+}

@@ -201,11 +201,11 @@ TEST(Cli, DemoHasHundredsOfLightsAndCullsThem) {
 
 // The stats overlay (ImGui) draws in the top-left corner only: with --overlay the frame
 // changes there and nowhere else (the window shows it by default; headless needs --overlay),
-// and it is a pass of the frame graph.
-TEST(Cli, DemoOverlayDrawsOnlyItsCorner) {
+// and it is a pass of the frame graph. The triangle scene: the overlay is the same layer over
+// any scene, and the demo's pipelines took most of this test's time.
+TEST(Cli, OverlayDrawsOnlyItsCorner) {
     auto dir = tempDir();
-    const std::string args =
-        "demo --headless --size 640x360 --frames 2 " + kDemoWithoutCostlyPasses + "--capture ";
+    const std::string args = "run builtin:triangle --headless --size 640x360 --frames 2 --capture ";
     RunResult plain = runCandela(args + (dir / "plain.png").string());
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
     RunResult overlay = runCandela(args + (dir / "overlay.png").string() + " --overlay" +
@@ -263,9 +263,11 @@ TEST(Cli, BadStepAndCaptureEachAreRejected) {
 // Light lists built in compute shaders are the CPU's lists, in the same order: the same bytes.
 TEST(Cli, DeviceLightAssignmentGivesTheSameImage) {
     auto dir = tempDir();
-    for (const char* device : {"cpu", "gpu", "auto"}) {
+    // "auto" chooses one of the two (ApplicationOptions.LightAssignFlagChoosesTheDevice parses
+    // it); the demo's hundreds of lights fill the clusters at any size.
+    for (const char* device : {"cpu", "gpu"}) {
         RunResult r =
-            runCandela("demo --headless --size 160x90 --frames 2 " + kDemoWithoutCostlyPasses +
+            runCandela("demo --headless --size 96x54 --frames 2 " + kDemoWithoutCostlyPasses +
                        "--light-assign " + device + " --capture " +
                        (dir / (std::string("assign_") + device + ".exr")).string());
         ASSERT_EQ(r.exitCode, 0) << device << ": " << r.output;
@@ -273,7 +275,6 @@ TEST(Cli, DeviceLightAssignmentGivesTheSameImage) {
     std::string cpu = readBytes(dir / "assign_cpu.exr");
     EXPECT_FALSE(cpu.empty());
     EXPECT_EQ(cpu, readBytes(dir / "assign_gpu.exr"));
-    EXPECT_EQ(cpu, readBytes(dir / "assign_auto.exr"));
     RunResult bad = runCandela(kTriangle + "--light-assign tpu");
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.output.find("--light-assign needs auto, cpu or gpu, got 'tpu'"),
@@ -922,4 +923,75 @@ TEST(Cli, AntialiasingBloomAndExposureFlagsAndStats) {
     RunResult bad = runCandela(kTriangle + "--aa msaa");
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.output.find("--aa needs off, fxaa or taa"), std::string::npos) << bad.output;
+}
+
+// Issues 16 and 17: a scene file's top-level "scattering" and "volumetrics" choose the light
+// shafts and the medium's lighting, and the command line's flags override them.
+TEST(Cli, SceneFileChoosesScatteringAndVolumetricsAndFlagsOverrideIt) {
+    auto dir = tempDir() / "scattering_setting";
+    std::filesystem::create_directories(dir);
+    nlohmann::json scene = nlohmann::json::parse(
+        readBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/atmosphere_sky.scene.json"));
+    scene["scattering"] = "off";
+    scene["volumetrics"] = "off";
+    scene["entities"].push_back({{"name", "dust"}, {"fog", {{"scattering", 0.05}}}});
+    const auto scenePath = dir / "air.scene.json";
+    std::ofstream(scenePath) << scene.dump(2);
+    auto run = [&](const std::string& name, const std::string& extra) {
+        RunResult r = runCandela("run " + scenePath.string() +
+                                 " --headless --size 32x32 --frames 1 --aa off --ssr off --ao off "
+                                 "--bloom 0 --scattering-slices 16 --scattering-samples 32 "
+                                 "--stats " +
+                                 (dir / (name + ".json")).string() + extra);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return nlohmann::json::parse(readBytes(dir / (name + ".json")));
+    };
+    auto ranPassesStartingWith = [](const nlohmann::json& stats, const std::string& prefix) {
+        int count = 0;
+        for (const auto& [name, ms] : stats["passes"].items())
+            count += name.rfind(prefix, 0) == 0 ? 1 : 0;
+        return count;
+    };
+    const nlohmann::json off = run("off", "");
+    EXPECT_EQ(off["scattering_samples"].get<double>(), 0.0) << off.dump();
+    EXPECT_EQ(ranPassesStartingWith(off, "scattering"), 0) << off["passes"].dump();
+    EXPECT_EQ(ranPassesStartingWith(off, "volumetrics"), 0) << off["passes"].dump();
+    const nlohmann::json on = run("on", " --scattering epipolar --volumetrics froxels");
+    EXPECT_GT(on["scattering_samples"].get<double>(), 0.0) << on.dump();
+    EXPECT_GT(ranPassesStartingWith(on, "scattering"), 0) << on["passes"].dump();
+    EXPECT_TRUE(on["passes"].contains("volumetrics_froxel_light")) << on["passes"].dump();
+    EXPECT_EQ(on["validation_messages"].get<int>(), 0);
+}
+
+// Issue 16: --ibl reference samples the atmosphere's sky by a table read back from its cube,
+// which the first frame renders; that frame lights by the split sum (with a note) and the
+// second by the reference, with no validation message. The reference lands near the split
+// sum (mean within 10 %: the split sum's error on these rough surfaces is a few per cent).
+TEST(Cli, IblReferenceUnderAnAtmosphereStartsOnTheSecondFrame) {
+    auto dir = tempDir() / "ibl_reference_atmosphere";
+    std::filesystem::create_directories(dir);
+    auto render = [&](const std::string& name, const std::string& ibl) {
+        RunResult r = runCandela("run " + std::string(CANDELA_SOURCE_DIR) +
+                                 "/tests/scenes/atmosphere_sky.scene.json --headless --size "
+                                 "32x32 --frames 2 --aa off --ssr off --ao off --bloom 0 "
+                                 "--scattering off --ibl " +
+                                 ibl + " --stats " + (dir / (name + ".json")).string() +
+                                 " --capture " + (dir / (name + ".exr")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        nlohmann::json stats = nlohmann::json::parse(readBytes(dir / (name + ".json")));
+        EXPECT_EQ(stats["validation_messages"].get<int>(), 0) << r.output;
+        candela::content::Diagnostics diagnostics;
+        auto image = candela::content::readExrImage(dir / (name + ".exr"), diagnostics);
+        double sum = 0.0;
+        for (uint32_t y = 0; image && y < image->image.height; ++y)
+            for (uint32_t x = 0; x < image->image.width; ++x)
+                sum += image->image.texel(x, y)[1];
+        return std::make_pair(stats, sum);
+    };
+    const auto [reference, referenceSum] = render("reference", "reference");
+    const auto features = reference["features"].get<std::vector<std::string>>();
+    EXPECT_NE(std::find(features.begin(), features.end(), "ibl_reference"), features.end());
+    const auto [splitSum, splitSumSum] = render("split_sum", "split-sum");
+    ASSERT_GT(splitSumSum, 0.0);
+    EXPECT_NEAR(referenceSum / splitSumSum, 1.0, 0.1);
 }

@@ -7,47 +7,20 @@ through its hair depth map) and an unshadowed sky-blue fill, the runtime's defau
 (which cast none). Standard library only.
 Run: python3 hair_ball_gltf.py [STRANDS OUTPUT] (render/README.md's cost figures use 10,000
 strands written elsewhere)."""
-import base64
-import json
 import math
 import random
-import struct
 import sys
 
-buffer = bytearray()
-views, accessors = [], []
+from gltf_buffer import GltfBuffer
 
-
-def add_floats(values, kind, count):
-    offset = len(buffer)
-    buffer.extend(struct.pack("<%df" % len(values), *values))
-    views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(values) * 4})
-    n = {"VEC3": 3}[kind]
-    lo = [min(values[i::n]) for i in range(n)]
-    hi = [max(values[i::n]) for i in range(n)]
-    accessors.append({"bufferView": len(views) - 1, "componentType": 5126, "count": count,
-                      "type": kind, "min": lo, "max": hi})
-    return len(accessors) - 1
-
-
-def add_indices(values):
-    offset = len(buffer)
-    buffer.extend(struct.pack("<%dH" % len(values), *values))
-    while len(buffer) % 4:
-        buffer.append(0)
-    views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(values) * 2})
-    accessors.append({"bufferView": len(views) - 1, "componentType": 5123,
-                      "count": len(values), "type": "SCALAR"})
-    return len(accessors) - 1
+gltf = GltfBuffer()
 
 
 RADIUS = 0.5
 CENTRE = (0.0, 0.55, 0.0)
 
 # Ground: 20 m square at y = 0, facing up.
-ground_positions = add_floats([-10, 0, -10, 10, 0, -10, 10, 0, 10, -10, 0, 10], "VEC3", 4)
-ground_normals = add_floats([0, 1, 0] * 4, "VEC3", 4)
-ground_indices = add_indices([0, 2, 1, 0, 3, 2])
+ground_positions, ground_normals, ground_indices = gltf.add_ground(10)
 
 # The ball: a UV sphere, 16 x 8.
 positions, normals, indices = [], [], []
@@ -63,9 +36,9 @@ for r in range(RINGS):
     for s in range(SEG):
         a, b = r * (SEG + 1) + s, (r + 1) * (SEG + 1) + s
         indices += [a, a + 1, b, a + 1, b + 1, b]
-ball_positions = add_floats(positions, "VEC3", len(positions) // 3)
-ball_normals = add_floats(normals, "VEC3", len(normals) // 3)
-ball_indices = add_indices(indices)
+ball_positions = gltf.add_floats(positions, "VEC3", len(positions) // 3)
+ball_normals = gltf.add_floats(normals, "VEC3", len(normals) // 3)
+ball_indices = gltf.add_indices(indices)
 
 STRANDS = int(sys.argv[1]) if len(sys.argv) > 1 else 800
 OUTPUT = sys.argv[2] if len(sys.argv) > 2 else __file__.replace("_gltf.py", ".gltf")
@@ -89,8 +62,8 @@ for k in range(STRANDS):
         p = [p[i] + 0.04 * d[i] / length for i in range(3)]
         fur += p
         pairs += [first + j - 1, first + j]
-fur_positions = add_floats(fur, "VEC3", len(fur) // 3)
-fur_indices = add_indices(pairs)
+fur_positions = gltf.add_floats(fur, "VEC3", len(fur) // 3)
+fur_indices = gltf.add_indices(pairs)
 
 def aim(direction):
     """The rotation (x, y, z, w) turning a glTF light's -Z onto `direction`."""
@@ -149,12 +122,5 @@ doc = {
     ],
     "cameras": [{"type": "perspective",
                  "perspective": {"yfov": 0.8, "znear": 0.05, "aspectRatio": 1.0}}],
-    "accessors": accessors,
-    "bufferViews": views,
-    "buffers": [{"byteLength": len(buffer),
-                 "uri": "data:application/octet-stream;base64," +
-                        base64.b64encode(bytes(buffer)).decode()}],
 }
-with open(OUTPUT, "w") as f:
-    json.dump(doc, f, indent=1)
-    f.write("\n")
+gltf.write(doc, OUTPUT)

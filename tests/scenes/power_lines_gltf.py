@@ -5,45 +5,13 @@ extras give wireRadius: five sagging 1.2 cm cables running away from the camera 
 pixels wide near it to a tenth of a pixel far off), a thick 6 cm lit cable across the view
 (cylinder shading) and an unlit emissive wire. Standard library only.
 Run: python3 power_lines_gltf.py"""
-import base64
-import json
-import struct
+from gltf_buffer import GltfBuffer
 
-buffer = bytearray()
-views, accessors = [], []
-
-
-def add_floats(values, kind, count):
-    offset = len(buffer)
-    buffer.extend(struct.pack("<%df" % len(values), *values))
-    views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(values) * 4})
-    n = {"VEC3": 3}[kind]
-    lo = [min(values[i::n]) for i in range(n)]
-    hi = [max(values[i::n]) for i in range(n)]
-    accessors.append({"bufferView": len(views) - 1, "componentType": 5126, "count": count,
-                      "type": kind, "min": lo, "max": hi})
-    return len(accessors) - 1
-
-
-def add_indices(values):
-    offset = len(buffer)
-    buffer.extend(struct.pack("<%dH" % len(values), *values))
-    while len(buffer) % 4:
-        buffer.append(0)
-    views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(values) * 2})
-    accessors.append({"bufferView": len(views) - 1, "componentType": 5123,
-                      "count": len(values), "type": "SCALAR"})
-    return len(accessors) - 1
-
-
-def strip(points):
-    return add_floats([c for p in points for c in p], "VEC3", len(points))
+gltf = GltfBuffer()
 
 
 # Ground: 200 m square at y = 0, facing up.
-ground_positions = add_floats([-100, 0, -100, 100, 0, -100, 100, 0, 100, -100, 0, 100], "VEC3", 4)
-ground_normals = add_floats([0, 1, 0] * 4, "VEC3", 4)
-ground_indices = add_indices([0, 2, 1, 0, 3, 2])
+ground_positions, ground_normals, ground_indices = gltf.add_ground(100)
 
 primitives = []
 # Five cables from x = -4..4, 4 to 6 m up, running from z = 2 to z = -120 with 20 m spans.
@@ -55,12 +23,12 @@ for i in range(5):
         z = 2.0 - 2.0 * k
         u = (k % 10) / 10.0 * 2.0 - 1.0
         points.append((x, top - 0.8 * (1.0 - u * u), z))
-    primitives.append({"attributes": {"POSITION": strip(points)}, "mode": 3, "material": 1})
+    primitives.append({"attributes": {"POSITION": gltf.add_points(points)}, "mode": 3, "material": 1})
 # A thick cable across the view, lit (LINES: two segments).
-thick = strip([(-12, 2.2, -6), (0, 1.6, -6), (0, 1.6, -6), (12, 2.2, -6)])
+thick = gltf.add_points([(-12, 2.2, -6), (0, 1.6, -6), (0, 1.6, -6), (12, 2.2, -6)])
 primitives.append({"attributes": {"POSITION": thick}, "mode": 1, "material": 2})
 # An unlit emissive wire, high up.
-glow = strip([(-30, 9.0, -25), (30, 7.0, -25)])
+glow = gltf.add_points([(-30, 9.0, -25), (30, 7.0, -25)])
 primitives.append({"attributes": {"POSITION": glow}, "mode": 3, "material": 3})
 
 doc = {
@@ -95,12 +63,5 @@ doc = {
     "extensionsUsed": ["KHR_materials_emissive_strength"],
     "cameras": [{"type": "perspective",
                  "perspective": {"yfov": 1.0, "znear": 0.05, "aspectRatio": 1.0}}],
-    "accessors": accessors,
-    "bufferViews": views,
-    "buffers": [{"byteLength": len(buffer),
-                 "uri": "data:application/octet-stream;base64," +
-                        base64.b64encode(bytes(buffer)).decode()}],
 }
-with open(__file__.replace("_gltf.py", ".gltf"), "w") as f:
-    json.dump(doc, f, indent=1)
-    f.write("\n")
+gltf.write(doc, __file__.replace("_gltf.py", ".gltf"))

@@ -61,6 +61,15 @@ inline constexpr EnumNames<SceneSsrMode, 3> kSceneSsrModes{
     {{SceneSsrMode::Off, "off"},
      {SceneSsrMode::Hiz, "hiz"},
      {SceneSsrMode::Reference, "reference"}}};
+inline constexpr EnumNames<SceneScatteringMode, 3> kSceneScatteringModes{
+    {{SceneScatteringMode::Off, "off"},
+     {SceneScatteringMode::Epipolar, "epipolar"},
+     {SceneScatteringMode::BruteForce, "brute-force"}}};
+inline constexpr EnumNames<SceneVolumetricsMode, 4> kSceneVolumetricsModes{
+    {{SceneVolumetricsMode::Off, "off"},
+     {SceneVolumetricsMode::Volumes, "volumes"},
+     {SceneVolumetricsMode::Froxels, "froxels"},
+     {SceneVolumetricsMode::Reference, "reference"}}};
 inline constexpr EnumNames<SceneAoMode, 3> kSceneAoModes{{{SceneAoMode::Off, "off"},
                                                           {SceneAoMode::Gtao, "gtao"},
                                                           {SceneAoMode::Reference, "reference"}}};

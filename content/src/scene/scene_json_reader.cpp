@@ -758,6 +758,22 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             scene.ssr = ssr;
         }
     }
+    if (root.contains("scattering")) {
+        SceneScatteringMode scattering = SceneScatteringMode::Off;
+        if (reader.clean([&] {
+                reader.enumeration(root, "", "scattering", kSceneScatteringModes, scattering);
+            })) {
+            scene.scattering = scattering;
+        }
+    }
+    if (root.contains("volumetrics")) {
+        SceneVolumetricsMode volumetrics = SceneVolumetricsMode::Off;
+        if (reader.clean([&] {
+                reader.enumeration(root, "", "volumetrics", kSceneVolumetricsModes, volumetrics);
+            })) {
+            scene.volumetrics = volumetrics;
+        }
+    }
     const json* ao = nullptr;
     if (reader.object(root, "", "ambient_occlusion", ao)) {
         // Like "brdf": a bad value is reported and its default kept; the scene still loads.

@@ -46,6 +46,8 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     frameSettings.exposure = opened.world->sceneExposure();
     frameSettings.exposureCompensation = opened.world->sceneExposureCompensation();
     frameSettings.ssr = opened.world->sceneSsr();
+    frameSettings.scattering = opened.world->sceneScattering();
+    frameSettings.volumetrics = opened.world->sceneVolumetrics();
     opened.scene->setSceneFrameSettings(frameSettings);
     opened.scene->setSceneAmbientOcclusion(opened.world->sceneAmbientOcclusion());
     opened.scene->setSceneMaterialLayers(opened.world->sceneMaterialLayers());

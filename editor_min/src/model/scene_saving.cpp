@@ -54,6 +54,8 @@ std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path
     document.exposure = settings.exposure;
     document.exposureCompensation = settings.exposureCompensation;
     document.ssr = settings.ssr;
+    document.scattering = settings.scattering;
+    document.volumetrics = settings.volumetrics;
     document.ambientOcclusion = settings.ambientOcclusion;
     document.materialLayers = settings.materialLayers;
     return content::saveSceneFile(target, document, options);

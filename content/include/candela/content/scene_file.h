@@ -127,6 +127,15 @@ enum class SceneAoMode { Off, Gtao, Reference };
 // --ssr overrides it. Mirrors render::SsrMode.
 enum class SceneSsrMode { Off, Hiz, Reference };
 
+// Light shafts in the air of an atmosphere (top-level "scattering": "off", "epipolar" or
+// "brute-force"); the command line's --scattering overrides it. Mirrors render::ScatteringMode.
+enum class SceneScatteringMode { Off, Epipolar, BruteForce };
+
+// Light scattered by a medium (top-level "volumetrics": "off", "volumes", "froxels" or
+// "reference"); the command line's --volumetrics overrides it. Mirrors
+// render::VolumetricsMode.
+enum class SceneVolumetricsMode { Off, Volumes, Froxels, Reference };
+
 struct SceneAmbientOcclusion {
     std::optional<SceneAoMode> mode;  // unset: the engine's default
     float radius = 1.5f;              // metres, > 0
@@ -149,6 +158,8 @@ struct SceneDocument {
     std::optional<float> exposureCompensation;  // "exposure_compensation", EV (auto only)
     std::optional<SceneAmbientOcclusion> ambientOcclusion;  // unset: defaults
     std::optional<SceneSsrMode> ssr;                        // unset: the engine's default (hiz)
+    std::optional<SceneScatteringMode> scattering;    // unset: the engine's default (epipolar)
+    std::optional<SceneVolumetricsMode> volumetrics;  // unset: the engine's default (volumes)
     // Top-level "materialLayers": the shared layer library, by unique name. A material's
     // "layers" (at most kMaxMaterialLayers) name library layers; each copy starts as the
     // library's and may change any of its parameters, and is written back in full.

@@ -184,6 +184,7 @@ void AtmospherePass::declareTables(FrameGraph& g, const Frame& frame) {
     // moved since the last one; advance the one under way by a step (all three at first).
     lastIblStep_ = 0;
     const bool first = !front_;
+    frontRenderedThisFrame_ = first;
     if (step_ == 0) {
         const float cosMoved = glm::dot(glm::vec3(iblSun_), glm::vec3(sun_));
         const bool moved = cosMoved < std::cos(glm::radians(settings_.iblUpdateDegrees)) ||

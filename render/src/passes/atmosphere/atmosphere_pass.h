@@ -51,6 +51,9 @@ public:
     void declareTables(FrameGraph& graph, const Frame& frame);
     // The environment the frame's lighting samples (the last finished sky cube).
     std::shared_ptr<const Environment> environment() const { return front_; }
+    // False while that cube is rendered in this very frame (the first one): nothing on the
+    // CPU can read it yet (the reference IBL's sampling table does).
+    bool environmentReadable() const { return front_ && !frontRenderedThisFrame_; }
     // The sky background over the lit target (pixels at depth 0), after lighting.
     ResourceHandle declareBackground(FrameGraph& graph, ResourceHandle camera, ResourceHandle depth,
                                      ResourceHandle hdr, const GpuBuffer& cameraBuffer);
@@ -101,6 +104,7 @@ private:
     uint32_t back_ = 0;
     uint32_t step_ = 0;
     uint32_t lastIblStep_ = 0;
+    bool frontRenderedThisFrame_ = false;
     glm::vec4 iblSun_{0.0f};
     content::Atmosphere iblFor_;
 };

@@ -59,6 +59,12 @@ public:
     std::optional<content::SceneSsrMode> sceneSsr() const { return sceneSsr_; }
     // Built-in scenes (the demo) ask for reflections as a scene file would.
     void setSceneSsr(std::optional<content::SceneSsrMode> mode) { sceneSsr_ = mode; }
+    // The light shafts and volumetrics the last scene file asks for ("scattering",
+    // "volumetrics"), if it names them.
+    std::optional<content::SceneScatteringMode> sceneScattering() const { return sceneScattering_; }
+    std::optional<content::SceneVolumetricsMode> sceneVolumetrics() const {
+        return sceneVolumetrics_;
+    }
     // The bloom strength the last scene file asks for ("bloom"; 0: off), if it sets one.
     std::optional<float> sceneBloom() const { return sceneBloom_; }
     // The exposure mode and compensation the last scene file asks for, if it sets them.
@@ -112,6 +118,8 @@ private:
     std::optional<content::SceneAntiAliasing> sceneAntiAliasing_;
     std::optional<uint32_t> sceneMsaa_;
     std::optional<content::SceneSsrMode> sceneSsr_;
+    std::optional<content::SceneScatteringMode> sceneScattering_;
+    std::optional<content::SceneVolumetricsMode> sceneVolumetrics_;
     std::optional<float> sceneBloom_;
     std::optional<content::SceneExposure> sceneExposure_;
     std::optional<float> sceneExposureCompensation_;
