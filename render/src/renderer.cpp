@@ -940,7 +940,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     // see its depth.
     if (!inputs.scene.hair.empty()) {
         if (!hairPass_) hairPass_ = std::make_unique<HairPass>(context_);
-        if (hairPass_->prepare(inputs.scene, features, options_.hairShading)) {
+        if (hairPass_->prepare(inputs.scene, features, options_.hairShading,
+                               options_.hairSelfShadow)) {
             features_.push_back("hair");
             hairDrawn_ = true;
             const uint32_t capacity = uint32_t(std::min<uint64_t>(
@@ -958,9 +959,23 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             ResourceHandle nodes = g.createBuffer("hair.nodes", HairPass::nodeBytes(capacity),
                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
             ResourceHandle counters = g.importBuffer("hair.counters", &hairPass_->counters(), true);
-            auto inputsOf = [this, ids, base, heads, nodes, environment,
-                             shadowDescriptors](PassContext& ctx) {
+            // Self-shadowing (seed 004 §5): a hair depth map for every shadow view, only in
+            // frames where some light has a shadow map.
+            const bool selfShadow = features.shadows &&
+                                    options_.hairSelfShadow != HairSelfShadow::Off &&
+                                    options_.hairShading == HairShading::Lit;
+            ResourceHandle hairShadow{};
+            if (selfShadow) {
+                hairShadow =
+                    g.createImage("hair.shadow_depth",
+                                  HairPass::hairShadowDepthDesc(shadowPass_->atlas().desc().width));
+                features_.push_back("hair_self_shadow");
+            }
+            auto inputsOf = [this, ids, base, heads, nodes, environment, shadowDescriptors,
+                             selfShadow, hairShadow](PassContext& ctx) {
                 HairPass::Inputs in = base;
+                in.selfShadow = selfShadow;
+                if (selfShadow) in.hairShadow = ctx.image(hairShadow);
                 in.hdr = ctx.image(ids.hdr);
                 in.depth = ctx.image(ids.depth);
                 in.heads = ctx.buffer(heads);
@@ -995,6 +1010,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 nodes = p.write(nodes, Use::StorageWrite, kFragmentStage);
                 counters = p.write(counters, Use::StorageReadWrite, kFragmentStage);
             }
+            if (selfShadow) {
+                auto p = g.addPass("hair_shadow_depth", PassKind::Device,
+                                   [this, inputsOf](PassContext& ctx) {
+                                       hairPass_->recordShadowDepth(ctx.cmd(), inputsOf(ctx),
+                                                                    shadowPass_->views());
+                                   });
+                p.read(shadowViews, Use::StorageRead, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
+                hairShadow = p.write(hairShadow, Use::DepthWrite);
+            }
             {
                 auto p =
                     g.addPass("hair_resolve", PassKind::Device, [this, inputsOf](PassContext& ctx) {
@@ -1004,6 +1028,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 p.read(heads, Use::StorageRead, kFragmentStage);
                 p.read(nodes, Use::StorageRead, kFragmentStage);
                 readLitInputs(p, kFragmentStage);
+                if (selfShadow) p.read(hairShadow, Use::Sampled, kFragmentStage);
                 h.hdr = p.write(h.hdr, Use::ColorAttachment);
             }
             {

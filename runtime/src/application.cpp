@@ -529,6 +529,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         rendererOptions.ibl = options.ibl;
         rendererOptions.brdf = brdfFor(options, world.get());
         rendererOptions.areaLights = options.areaLights;
+        rendererOptions.hairSelfShadow = options.hairSelfShadow;
         rendererOptions.aa = antiAliasingFor(options, world.get());
         rendererOptions.msaaSamples = options.msaa                  ? *options.msaa
                                       : world && world->sceneMsaa() ? *world->sceneMsaa()

@@ -89,6 +89,11 @@ constexpr std::pair<const char*, render::BrdfModel> kBrdfs[] = {
 constexpr std::pair<const char*, render::AreaLightMode> kAreaLightModes[] = {
     {"representative", render::AreaLightMode::Representative}, {"ltc", render::AreaLightMode::Ltc}};
 
+constexpr std::pair<const char*, render::HairSelfShadow> kHairSelfShadowModes[] = {
+    {"off", render::HairSelfShadow::Off},
+    {"map", render::HairSelfShadow::DepthMap},
+    {"reference", render::HairSelfShadow::Reference}};
+
 constexpr std::pair<const char*, render::AoMode> kAoModes[] = {
     {"off", render::AoMode::Off},
     {"gtao", render::AoMode::Gtao},
@@ -163,6 +168,8 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n"
            "  --ao off|gtao|reference   sky light occlusion (default: the scene file's, else "
            "gtao)\n"
+           "  --hair-self-shadow off|map|reference   hair's shadow on itself: none, the hair\n"
+           "                            depth map's estimate (default) or every fibre counted\n"
            "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
            "                            (default: the scene file's, else hiz)\n"
            "  --volumetrics off|volumes|froxels|reference   light scattered in the medium\n"
@@ -266,6 +273,10 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
         } else if (arg == "--area-lights") {
             if (!value() || !parseChoice(v, kAreaLightModes, options.areaLights)) {
                 return fail("--area-lights needs representative or ltc, got '" + v + "'");
+            }
+        } else if (arg == "--hair-self-shadow") {
+            if (!value() || !parseChoice(v, kHairSelfShadowModes, options.hairSelfShadow)) {
+                return fail("--hair-self-shadow needs off, map or reference, got '" + v + "'");
             }
         } else if (arg == "--aa") {
             render::AntiAliasing aa{};

@@ -6,6 +6,9 @@
 //   2%), from several pixels wide down to a fraction of one.
 // - A full node pool: the dropped fragments are counted, the image stays finite and still
 //   shows hair, and the next frame with room drops nothing.
+// - Self-shadowing (hair depth map): a strand under another (from the sun) loses the light the
+//   fibre model says, exp(ln(1 - 0.35) x depth range / (8 x radius)), and one fibre's 0.35 in
+//   the reference that counts them; a strand alone, or in front, is unchanged.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +20,7 @@
 
 #include "candela/content/hair.h"
 #include "candela/content/procedural_mesh.h"
+#include "passes/hair/hair_bindings.h"
 #include "test_scene.h"
 
 using namespace candela::render;
@@ -72,6 +76,8 @@ protected:
         coverage_ = new FrameSequence(*context_, kSize, kSize, coverage);
     }
     static void TearDownTestSuite() {
+        delete unshadowed_;
+        delete reference_;
         delete coverage_;
         delete lit_;
         delete resources_;
@@ -82,7 +88,12 @@ protected:
     static SceneResources* resources_;
     static FrameSequence* lit_;
     static FrameSequence* coverage_;
+    // Self-shadowing off, and its reference (made by the one test that uses them).
+    static FrameSequence* unshadowed_;
+    static FrameSequence* reference_;
 };
+FrameSequence* Hair::unshadowed_ = nullptr;
+FrameSequence* Hair::reference_ = nullptr;
 GpuContext* Hair::context_ = nullptr;
 SceneResources* Hair::resources_ = nullptr;
 FrameSequence* Hair::lit_ = nullptr;
@@ -100,6 +111,7 @@ TEST_F(Hair, ShufflingTheStrandsChangesNoPixel) {
     lights[0].light.type = candela::content::LightType::Directional;
     lights[0].light.lux = 3.0f;
     lights[0].direction = glm::normalize(glm::vec3(0.5f, -1.0f, -0.4f));
+    lights[0].light.castShadows = true;  // with the hair's self-shadowing
     lights[1] = pointLight(glm::vec3(0.8f, 0.6f, -1.8f), 30.0f, 4.0f);
     auto frame = [&](const candela::content::Hair& hair, RendererStats* stats) {
         const std::vector<HairDraw> draws{{&hair, &style, glm::mat4(1.0f)}};
@@ -200,6 +212,105 @@ TEST_F(Hair, AFullNodePoolIsCountedAndDegradesGracefully) {
     coverage_->render(inputs, *resources_, &stats);
     EXPECT_EQ(stats.hairNodesDropped, 0u);
     EXPECT_GT(stats.hairNodes, 0u);
+}
+
+// The hair's radiance summed over rows [y0, y1) of the middle half of the columns (red).
+double rowsSum(const CapturedFrame& frame, uint32_t y0, uint32_t y1) {
+    double sum = 0.0;
+    for (uint32_t y = y0; y < y1; ++y) {
+        for (uint32_t x = kSize / 4; x < 3 * kSize / 4; ++x)
+            sum += hdrPixel(frame, x, y)[0];
+    }
+    return sum;
+}
+
+TEST_F(Hair, AStrandUnderAnotherIsDarkenedByItsSelfShadow) {
+    RendererOptions off;
+    off.hairSelfShadow = HairSelfShadow::Off;
+    RendererOptions reference;
+    reference.hairSelfShadow = HairSelfShadow::Reference;
+    unshadowed_ = new FrameSequence(*context_, kSize, kSize, off);
+    reference_ = new FrameSequence(*context_, kSize, kSize, reference);
+    candela::content::HairStyle style;
+    const float radius = 0.005f;
+    style.rootRadius = style.tipRadius = radius;
+    style.color = {0.5f, 0.5f, 0.5f};
+    // Two level strands 2 m ahead, one 0.4 m above the other, under a sun straight above.
+    const float gap = 0.4f;
+    candela::content::Hair pair;
+    pair.positions = {{-0.6f, 0.5f * gap, -2.0f},
+                      {0.6f, 0.5f * gap, -2.0f},
+                      {-0.6f, -0.5f * gap, -2.0f},
+                      {0.6f, -0.5f * gap, -2.0f}};
+    pair.segments = {0, 1, 2, 3};
+    pair.rootToTip = {0.0f, 1.0f, 0.0f, 1.0f};
+    // A strand alone, sloped toward the sun and across the view.
+    candela::content::Hair alone;
+    alone.positions = {{-0.5f, -0.2f, -2.0f}, {0.5f, 0.3f, -2.3f}};
+    alone.segments = {0, 1};
+    alone.rootToTip = {0.0f, 1.0f};
+    std::vector<LightInstance> sun(1);
+    sun[0].light.type = candela::content::LightType::Directional;
+    sun[0].light.lux = 3.0f;
+    sun[0].light.castShadows = true;
+    sun[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    auto frame = [&](FrameSequence& frames, const candela::content::Hair& hair, float lux) {
+        const std::vector<HairDraw> draws{{&hair, &style, glm::mat4(1.0f)}};
+        sun[0].light.lux = lux;
+        FrameInputs inputs;
+        inputs.scene.camera = cameraAtOrigin();
+        inputs.scene.hair = draws;
+        inputs.scene.lights = sun;
+        frames.render(inputs, *resources_);  // the shadow maps of this placement
+        const CapturedFrame out = frames.render(inputs, *resources_);
+        EXPECT_EQ(out.nonFiniteHdrValues(), 0u);
+        return out;
+    };
+    // The sun's share alone: the frame without it (the sky's) taken away.
+    const CapturedFrame dark = frame(*lit_, pair, 0.0f);
+    const CapturedFrame withOff = frame(*unshadowed_, pair, 3.0f);
+    const CapturedFrame withMap = frame(*lit_, pair, 3.0f);
+    const CapturedFrame withReference = frame(*reference_, pair, 3.0f);
+    auto sun_ = [&](const CapturedFrame& f, uint32_t y0, uint32_t y1) {
+        return rowsSum(f, y0, y1) - rowsSum(dark, y0, y1);
+    };
+    const uint32_t half = kSize / 2;
+    const double front = sun_(withOff, 0, half), behind = sun_(withOff, half, kSize);
+    ASSERT_GT(front, 0.1);
+    ASSERT_GT(behind, 0.1);
+    const double frontMap = sun_(withMap, 0, half) / front;
+    const double behindMap = sun_(withMap, half, kSize) / behind;
+    const double frontReference = sun_(withReference, 0, half) / front;
+    const double behindReference = sun_(withReference, half, kSize) / behind;
+    // The depth range (between the strands' centre lines) is the gap less the bias: 2 radii
+    // and a texel of the map (at most 1 cm here).
+    auto transmittance = [&](float range) {
+        return std::exp(std::log(1.0 - HAIR_SHADOW_OPACITY) * range /
+                        (HAIR_FIBRE_SPACING * radius));
+    };
+    const double darkest = transmittance(gap - 2.0f * radius);
+    const double brightest = transmittance(gap - 2.0f * radius - 0.01f);
+    std::printf(
+        "sun on the front strand: %.4f (map), %.4f (reference); on the one behind: %.4f "
+        "(map, expected %.4f to %.4f), %.4f (reference, expected %.2f)\n",
+        frontMap, frontReference, behindMap, darkest, brightest, behindReference,
+        1.0 - HAIR_SHADOW_OPACITY);
+    EXPECT_NEAR(frontMap, 1.0, 1e-3);
+    EXPECT_NEAR(frontReference, 1.0, 1e-3);
+    EXPECT_GE(behindMap, darkest);
+    EXPECT_LE(behindMap, brightest);
+    EXPECT_NEAR(behindReference, 1.0 - HAIR_SHADOW_OPACITY, 0.02);
+    // A strand alone is unchanged, pixel by pixel.
+    const CapturedFrame aloneOff = frame(*unshadowed_, alone, 3.0f);
+    const CapturedFrame aloneMap = frame(*lit_, alone, 3.0f);
+    double worst = 0.0, brightestPixel = 0.0;
+    for (size_t i = 0; i < aloneOff.hdrRgb.size(); ++i) {
+        worst = std::max(worst, double(std::abs(aloneOff.hdrRgb[i] - aloneMap.hdrRgb[i])));
+        brightestPixel = std::max(brightestPixel, double(aloneOff.hdrRgb[i]));
+    }
+    std::printf("a strand alone: brightest %.3f, worst change %.2e\n", brightestPixel, worst);
+    EXPECT_GT(brightestPixel, 0.01);
+    EXPECT_LE(worst, 1e-5 * brightestPixel + 1e-7);
 }
 
 // Cost per 10,000 strands (render/README.md "Hair"; slow label, not a bound): 10,000 strands of

@@ -2,7 +2,9 @@
 """Writes hair_ball.gltf for the hair golden (issue 19, seed 004 section 5): a dark sphere
 covered in 800 strands of fur (LINES, root first, 3 segments each, from a fixed random seed)
 whose material's extras give `hair` (root and tip radius, colour, the two highlights' shifts
-and exponents), on a grey ground under the default sun and sky. Standard library only.
+and exponents), on a grey ground under a sun that casts shadows (so the hair shadows itself
+through its hair depth map) and an unshadowed sky-blue fill, the runtime's default sun and fill
+(which cast none). Standard library only.
 Run: python3 hair_ball_gltf.py [STRANDS OUTPUT] (render/README.md's cost figures use 10,000
 strands written elsewhere)."""
 import math
@@ -63,15 +65,39 @@ for k in range(STRANDS):
 fur_positions = gltf.add_floats(fur, "VEC3", len(fur) // 3)
 fur_indices = gltf.add_indices(pairs)
 
+def aim(direction):
+    """The rotation (x, y, z, w) turning a glTF light's -Z onto `direction`."""
+    n = math.sqrt(sum(c * c for c in direction))
+    d = [c / n for c in direction]
+    axis = [d[1], -d[0], 0.0]  # (0, 0, -1) x d
+    s = math.sqrt(sum(c * c for c in axis))
+    angle = math.acos(max(-1.0, min(1.0, -d[2])))
+    if s < 1e-9:
+        return [0.0, 0.0, 0.0, 1.0]
+    h = math.sin(angle / 2) / s
+    return [round(axis[0] * h, 7), round(axis[1] * h, 7), round(axis[2] * h, 7),
+            round(math.cos(angle / 2), 7)]
+
+
 doc = {
     "asset": {"version": "2.0", "generator": "candela tests (hair_ball_gltf.py)"},
     "scene": 0,
-    "scenes": [{"nodes": [0, 1, 2]}],
+    "scenes": [{"nodes": [0, 1, 2, 3, 4]}],
+    "extensionsUsed": ["KHR_lights_punctual"],
+    "extensions": {"KHR_lights_punctual": {"lights": [
+        {"type": "directional", "name": "sun", "intensity": 100000,
+         "color": [1.0, 0.96, 0.9], "extras": {"castShadows": True}},
+        {"type": "directional", "name": "fill", "intensity": 25000,
+         "color": [0.6, 0.75, 1.0], "extras": {"castShadows": False}}]}},
     "nodes": [
         {"mesh": 0, "name": "ground"},
         {"mesh": 1, "name": "hair ball"},
         {"camera": 0, "name": "camera", "translation": [0, 0.9, 2.2],
          "rotation": [-0.0871557, 0, 0, 0.9961947]},
+        {"name": "sun", "rotation": aim([-0.4, -0.8, -0.45]),
+         "extensions": {"KHR_lights_punctual": {"light": 0}}},
+        {"name": "fill", "rotation": aim([0.6, 0.2, -0.5]),
+         "extensions": {"KHR_lights_punctual": {"light": 1}}},
     ],
     "meshes": [
         {"name": "ground", "primitives": [

@@ -31,6 +31,8 @@ foreach(row
     "| Shadows: blocker search + penumbra filter (sphere light)"
     "| Shadows: 2 sun cascades (PCF)"
     "| Shadows: 4 sun cascades (PCF)"
+    "| Hair self-shadowing: hair depth map"
+    "| Hair without self-shadowing, 600 strands"
     "| TAA after 16 static frames (Halton 16)"
     "| Anisotropic IBL (bent reflection vector"
     "| Clear-coat split sum"

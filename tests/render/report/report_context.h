@@ -52,5 +52,6 @@ void addVolumetricsRows(ReportContext& context);
 void addAtmosphereRows(ReportContext& context);
 void addScatteringRows(ReportContext& context);
 void addWireRows(ReportContext& context);
+void addHairRows(ReportContext& context);
 
 }  // namespace candela::report

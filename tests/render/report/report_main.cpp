@@ -143,6 +143,7 @@ int main(int argc, char** argv) {
         section("atmosphere", [&] { addAtmosphereRows(context); });
         section("light shafts", [&] { addScatteringRows(context); });
         section("wires", [&] { addWireRows(context); });
+        section("hair", [&] { addHairRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());

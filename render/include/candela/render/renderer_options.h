@@ -135,6 +135,12 @@ enum class WireMode { Coverage, Naive };
 // width in pixels).
 enum class HairShading { Lit, Coverage };
 
+// Hair self-shadowing (seed 004 §5, render/README.md "Hair"): off; from a hair depth map per
+// shadow view, the fibres in front estimated from the depth range behind the first hair; or
+// the reference that counts the fibres between each shaded fragment and the light exactly
+// (every segment tested: small scenes only, lavapipe's loop limit).
+enum class HairSelfShadow { Off, DepthMap, Reference };
+
 struct VolumetricsSettings {
     // Froxel grid at 1280x720 (scaled with the image, at least 8x8), exponential depth slices
     // from the near plane to `froxelFar` metres.
@@ -250,6 +256,8 @@ struct RendererOptions {
     VolumetricsSettings volumetricsSettings;
     WireMode wires = WireMode::Coverage;
     HairShading hairShading = HairShading::Lit;
+    // Only lights with a shadow map (shadows on, castShadows) get a hair depth map.
+    HairSelfShadow hairSelfShadow = HairSelfShadow::DepthMap;
     // The hair A-buffer's node pool: this many nodes per pixel of the target. Fragments beyond
     // it are dropped (the nearest few of a pixel then may be missing) and counted
     // (RendererStats::hairNodesDropped).

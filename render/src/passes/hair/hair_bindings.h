@@ -25,6 +25,9 @@
 // The area lights' LTC table (lights/ltc_table_texture.h, common/area_lights.glsl).
 #define HAIR_BINDING_LTC_MATRIX 14
 #define HAIR_BINDING_LTC_MAGNITUDE 15
+// The hair depth map (hair_shadow.vert): the nearest strand from each shadow view, laid out as
+// the shadow atlas.
+#define HAIR_BINDING_HAIR_SHADOW 16
 #define AREA_LIGHT_LTC_MATRIX_BINDING HAIR_BINDING_LTC_MATRIX
 #define AREA_LIGHT_LTC_MAGNITUDE_BINDING HAIR_BINDING_LTC_MAGNITUDE
 
@@ -32,6 +35,19 @@
 // alone: the GPAA measurement, RendererOptions::hairShading).
 #define HAIR_MODE_LIT 0
 #define HAIR_MODE_COVERAGE 1
+
+// The push block's `selfShadow` (RendererOptions::hairSelfShadow): none; the hair depth map's
+// estimate of the fibres in front (seed 004 §5); or the reference, every segment between the
+// fragment and the light counted exactly.
+#define HAIR_SELF_SHADOW_OFF 0
+#define HAIR_SELF_SHADOW_DEPTH_MAP 1
+#define HAIR_SELF_SHADOW_REFERENCE 2
+// Self-shadowing's fibre model (TressFX): each fibre in front lets 1 - HAIR_SHADOW_OPACITY of
+// the light through, and fibres lie HAIR_FIBRE_SPACING strand radii apart along a light ray
+// behind the first hair. 128 is fitted to the reference (every fibre counted) on candela-report's
+// fur balls: 8 and 32 darkened them 22% to 42% too much on average (docs/speed-vs-error.md).
+#define HAIR_SHADOW_OPACITY 0.35
+#define HAIR_FIBRE_SPACING 128.0
 
 // The end of a pixel's list (the heads' cleared value).
 #define HAIR_LIST_END 0xffffffffu

@@ -19,6 +19,8 @@
 #include "shaders/hair_fill.vert.spv.h"
 #include "shaders/hair_fullscreen.vert.spv.h"
 #include "shaders/hair_resolve.frag.spv.h"
+#include "shaders/hair_shadow.vert.spv.h"
+#include "shaders/shadow_depth.frag.spv.h"
 
 namespace candela::render {
 
@@ -42,6 +44,10 @@ struct HairPush {
     uint32_t directionalCount;
     float skyIntensity;
     uint32_t nodeCapacity;
+    uint32_t selfShadow;
+    uint32_t shadowView;
+    uint32_t segmentCount;
+    uint32_t pad;
 };
 
 constexpr VkDeviceSize kInitialSegments = 1024;
@@ -73,7 +79,8 @@ uint32_t HairPass::requestedNodes() const {
 }
 
 bool HairPass::prepare(const FrameScene& scene, const LightingFeatures& features,
-                       HairShading shading) {
+                       HairShading shading, HairSelfShadow selfShadow) {
+    selfShadow_ = selfShadow;
     size_t count = 0;
     for (const HairDraw& draw : scene.hair) {
         if (draw.hair && draw.style) count += draw.hair->segments.size() / 2;
@@ -159,6 +166,7 @@ void HairPass::buildPipelines() {
              fragment},
             {HAIR_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
             {HAIR_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
+            {HAIR_BINDING_HAIR_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
         };
         resolve_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
     }
@@ -198,6 +206,10 @@ void HairPass::pushCommon(VkCommandBuffer cmd, const Pipeline& pipeline, const I
     push.directionalCount = in.directionalCount;
     push.skyIntensity = in.skyIntensity;
     push.nodeCapacity = in.nodeCapacity;
+    push.selfShadow = !in.selfShadow                             ? HAIR_SELF_SHADOW_OFF
+                      : selfShadow_ == HairSelfShadow::Reference ? HAIR_SELF_SHADOW_REFERENCE
+                                                                 : HAIR_SELF_SHADOW_DEPTH_MAP;
+    push.segmentCount = segmentCount_;
     pipeline.pushConstants(cmd, &push, sizeof(push));
 }
 
@@ -263,6 +275,11 @@ void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
     VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
+    // Without self-shadowing the atlas stands in (bound, never read).
+    const VkDescriptorImageInfo hairShadowInfo =
+        in.selfShadow ? VkDescriptorImageInfo{in.shadows->atlas.sampler, in.hairShadow.view(),
+                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}
+                      : in.shadows->atlas;
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
         storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
@@ -278,7 +295,8 @@ void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
         storageBufferWrite(HAIR_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
         sampledImageWrite(HAIR_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
         sampledImageWrite(HAIR_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
-        sampledImageWrite(HAIR_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude)};
+        sampledImageWrite(HAIR_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude),
+        sampledImageWrite(HAIR_BINDING_HAIR_SHADOW, &hairShadowInfo)};
     pushCommon(cmd, resolve_, in);
     resolve_.pushDescriptors(cmd, writes);
     vkCmdDraw(cmd, 3, 1, 0, 0);
@@ -303,6 +321,82 @@ void HairPass::recordDepth(VkCommandBuffer cmd, const Inputs& in) const {
     pushCommon(cmd, depth_, in);
     depth_.pushDescriptors(cmd, writes);
     vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+}
+
+ImageDesc HairPass::hairShadowDepthDesc(uint32_t atlasSize) {
+    return {GBufferTargets::kDepthFormat,
+            atlasSize,
+            atlasSize,
+            1,
+            false,
+            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
+}
+
+void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
+                                 std::span<const GpuShadowView> views) {
+    if (!shadowDepth_.handle()) {
+        GraphicsPipelineDesc desc;
+        desc.vertexSpirv = hair_shadow_vert_spv;  // no vertex input: six vertices per segment
+        desc.fragmentSpirv = shadow_depth_frag_spv;
+        desc.depthFormat = GBufferTargets::kDepthFormat;
+        desc.depthWrite = true;
+        desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse depth: keep the nearest
+        desc.cullMode = VK_CULL_MODE_NONE;
+        const DescriptorBinding bindings[] = {
+            {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+            {HAIR_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+             VK_SHADER_STAGE_VERTEX_BIT},
+        };
+        shadowDepth_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
+    }
+    // Cleared and drawn only over the views' tiles (their bounding box: the atlas packs tiles
+    // from its corner), which is all the resolve reads.
+    const uint32_t size = in.hairShadow.desc().width;
+    uint32_t x0 = size, y0 = size, x1 = 0, y1 = 0;
+    for (const GpuShadowView& v : views) {
+        x0 = std::min(x0, uint32_t(v.tile.x));
+        y0 = std::min(y0, uint32_t(v.tile.y));
+        x1 = std::max(x1, std::min(size, uint32_t(v.tile.x + v.tile.z)));
+        y1 = std::max(y1, std::min(size, uint32_t(v.tile.y + v.tile.z)));
+    }
+    if (x1 <= x0 || y1 <= y0) {  // no view: an empty frame of the pass
+        x0 = y0 = 0;
+        x1 = y1 = 1;
+    }
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = in.hairShadow.view();
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {0.0f, 0};  // reverse depth: no hair
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{int32_t(x0), int32_t(y0)}, {x1 - x0, y1 - y0}};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {
+        storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo),
+        storageBufferWrite(HAIR_BINDING_SHADOW_VIEWS, &in.shadows->views)};
+    shadowDepth_.bind(cmd);
+    shadowDepth_.pushDescriptors(cmd, writes);
+    HairPush push{};
+    for (uint32_t v = 0; v < views.size(); ++v) {
+        const VkRect2D rect{{int32_t(views[v].tile.x), int32_t(views[v].tile.y)},
+                            {uint32_t(views[v].tile.z), uint32_t(views[v].tile.z)}};
+        const VkViewport viewport{float(rect.offset.x),
+                                  float(rect.offset.y),
+                                  float(rect.extent.width),
+                                  float(rect.extent.height),
+                                  0.0f,
+                                  1.0f};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &rect);
+        push.shadowView = v;
+        shadowDepth_.pushConstants(cmd, &push, sizeof(push));
+        vkCmdDraw(cmd, 6 * segmentCount_, 1, 0, 0);
+    }
     vkCmdEndRendering(cmd);
 }
 

@@ -7,6 +7,7 @@
 // RendererOptions::hairNodesPerPixel nodes per pixel; fragments beyond it are dropped and
 // counted (--stats hair_nodes_dropped).
 #include <glm/glm.hpp>
+#include <span>
 
 #include "candela/render/frame_scene.h"
 #include "candela/render/gpu_buffer.h"
@@ -14,6 +15,7 @@
 #include "candela/render/renderer_options.h"
 #include "frame_graph/graph_resources.h"
 #include "passes/lighting/lighting_pass.h"
+#include "passes/shadows/shadow_pass.h"
 
 namespace candela::render {
 
@@ -32,7 +34,8 @@ public:
     // Writes the frame's segments in world space (one frame is in flight at a time, so the
     // buffer is free) and selects the shader variants. False when there is no segment: the
     // frame then records nothing of this pass.
-    bool prepare(const FrameScene& scene, const LightingFeatures& features, HairShading shading);
+    bool prepare(const FrameScene& scene, const LightingFeatures& features, HairShading shading,
+                 HairSelfShadow selfShadow);
     uint32_t segmentCount() const { return segmentCount_; }
 
     // The A-buffer's sizes for a target of width x height.
@@ -61,7 +64,16 @@ public:
         const ShadowDescriptors* shadows;
         float pixelRadiusPerDepth;  // 1 / (projection[1][1] x target height)
         float nearPlane;
+        // The hair depth map (hairShadowDepthDesc), or none: self-shadowing off this frame.
+        ImageRef hairShadow;
+        bool selfShadow = false;
     };
+    // The hair depth map laid out as a shadow atlas of `atlasSize` texels square.
+    static ImageDesc hairShadowDepthDesc(uint32_t atlasSize);
+    // hairShadow: DepthWrite, cleared, then every segment drawn into each view's tile (the
+    // views as in.shadows' buffer holds them).
+    void recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
+                           std::span<const GpuShadowView> views);
     // heads <- HAIR_LIST_END, counters <- 0 (transfers).
     void recordClear(VkCommandBuffer cmd, const Inputs& in) const;
     // depth: DepthRead; heads, nodes, counters: read and written in the fragment stage.
@@ -80,11 +92,13 @@ private:
     GpuBuffer counters_;
     uint32_t segmentCount_ = 0;
     HairShading shading_ = HairShading::Lit;
+    HairSelfShadow selfShadow_ = HairSelfShadow::DepthMap;
     LightingFeatures features_;
     bool built_ = false;
     Pipeline fill_;
     Pipeline resolve_;
     Pipeline depth_;
+    Pipeline shadowDepth_;  // built when a frame first draws the hair depth map
 };
 
 }  // namespace candela::render

@@ -15,6 +15,16 @@
 // sin(t', h)^p with its normalisation (p + 2) / (2 pi): the primary coloured by the light only,
 // the secondary by the light and the hair. Lit by the clustered lights (with their shadows)
 // and the sky's irradiance.
+//
+// Self-shadowing (seed 004 §5: "approximated from a shadow map of the hair's depth, where the
+// depth range is the distance of the shaded fragment from the map's depth"; the seed's formula
+// is TressFX's): a fragment a depth range Δd behind the first hair in the light's hair depth
+// map (hair_shadow.vert) has about n = Δd / (HAIR_FIBRE_SPACING x r) fibres in front of it, r
+// its strand's radius, each letting 1 - α through (α = HAIR_SHADOW_OPACITY), so its direct
+// light is scaled by (1 - α)^n = exp(-k · density · Δd) with k = -ln(1 - α) and density = 1 /
+// (HAIR_FIBRE_SPACING x r) fibres per metre. The reference counts the fibres between the
+// fragment and the light exactly instead (every segment the ray to the light passes within
+// its radius). Only lights with a shadow map have a hair depth map.
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
 #include "common/ibl.glsl"
@@ -44,6 +54,8 @@ layout(std430, binding = HAIR_BINDING_IRRADIANCE_SH) readonly buffer IrradianceS
     vec4 irradianceSh[9];
 };
 
+layout(binding = HAIR_BINDING_HAIR_SHADOW) uniform sampler2D hairShadowDepth;
+
 layout(location = 0) out vec4 outRadiance;  // cd/m^2, a = the hair's opacity here
 
 const uint kListOverflow = 0xffffffffu;
@@ -57,6 +69,8 @@ struct HairPoint {
     vec3 N;  // the normal facing the camera (V without its part along T)
     vec3 color;
     vec4 highlights;
+    float radius;  // the strand's radius here (metres)
+    vec3 axis;     // the point of the strand's centre line nearest P
 };
 
 // sin(t, h)^p with its normalisation: Kajiya-Kay's lobe about the tilted tangent t.
@@ -66,11 +80,70 @@ float kajiyaKayLobe(vec3 T, vec3 H, float exponent) {
     return (exponent + 2.0) / (2.0 * PI) * pow(s, exponent);
 }
 
+// Fibres of other strands (segments) that the ray from P toward the light (unit L, up to tMax)
+// passes within their radius, beyond tMin: the self-shadow reference.
+float fibresCrossed(vec3 P, vec3 L, float tMin, float tMax) {
+    float count = 0.0;
+    for (uint i = 0u; i < draw.segmentCount; ++i) {
+        const HairSegment s = segments[i];
+        const vec3 d = s.end.xyz - s.start.xyz;
+        const vec3 w = P - s.start.xyz;
+        const float b = dot(L, d), c = dot(d, d), e = dot(d, w);
+        const float denominator = c - b * b;  // |L| = 1
+        const float u = denominator > 1e-12 ? clamp((e - b * dot(L, w)) / denominator, 0.0, 1.0)
+                                            : 0.0;
+        const vec3 Q = s.start.xyz + u * d;
+        const float t = dot(Q - P, L);
+        if (t <= tMin || t >= tMax) continue;
+        const float radius = mix(s.start.w, s.end.w, u);
+        const vec3 off = Q - (P + t * L);
+        if (dot(off, off) < radius * radius) count += 1.0;
+    }
+    return count;
+}
+
+// The share of the light's direct light left after the hair between P and the light (1 with
+// self-shadowing off or where the light has no shadow map).
+float hairSelfShadow(Light light, uint index, HairPoint h) {
+    if (!kShadowsEnabled || draw.selfShadow == HAIR_SELF_SHADOW_OFF) return 1.0;
+    // From the strand's centre line: the fragment lies on a camera-facing quad up to 0.71 px
+    // beyond the strand's edge, which seen from the light may be behind the strand itself.
+    ShadowView v;
+    if (!shadowViewAt(light, index, h.axis, v)) return 1.0;
+    const vec4 clip = v.worldToClip * vec4(h.axis, 1.0);
+    if (clip.w <= 0.0) return 1.0;
+    const vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    const bool directional = light.type == kLightDirectional;
+    const float receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
+                               ? v.params.w - clip.z * (v.params.w - v.params.z)
+                               : clip.w;
+    const vec3 toLight = directional ? -light.direction : light.position - h.axis;
+    const vec3 L = safeNormalize(toLight);
+    // The strand's own depth spread over a texel of the map (its slope toward the light, as
+    // the opaque maps' slope bias), and its own thickness, are not hair in front of it.
+    const float cosTL = abs(dot(h.T, L));
+    const float slope = min(cosTL / max(sqrt(1.0 - cosTL * cosTL), 1e-3), kShadowMaxSlope);
+    const float bias = shadowTexelWorld(v, max(receiver, 1e-4)) * (1.0 + 2.0 * slope) +
+                       2.0 * h.radius;
+    float fibres;
+    if (draw.selfShadow == HAIR_SELF_SHADOW_REFERENCE) {
+        fibres = fibresCrossed(h.axis, L, bias, directional ? 1e30 : length(toLight));
+    } else {
+        const ivec2 texel = ivec2(floor(v.tile.xy + uv * v.tile.z));
+        const float first = shadowLinearDepth(v, texelFetch(hairShadowDepth, texel, 0).r);
+        const float depthRange = max(receiver - first - bias, 0.0);
+        fibres = depthRange / (HAIR_FIBRE_SPACING * max(h.radius, 1e-6));
+    }
+    return exp(log(1.0 - HAIR_SHADOW_OPACITY) * fibres);
+}
+
 vec3 hairLightRadiance(HairPoint h, uint index) {
     Light light = loadLight(index, camera.frameInfo.w);
     LightIncidence incidence = evaluateLight(light, h.P, h.N, reflect(-h.V, h.N), 0.3);
     if (!any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))) return vec3(0.0);
-    const vec3 E = incidence.incidentIlluminance * shadowVisibility(light, index, h.P, h.N);
+    const vec3 E = incidence.incidentIlluminance * shadowVisibility(light, index, h.P, h.N) *
+                   hairSelfShadow(light, index, h);
     const vec3 L = incidence.diffuseL;
     const float TL = dot(h.T, L);
     const float sinTL = sqrt(max(1.0 - TL * TL, 0.0));
@@ -96,6 +169,9 @@ vec3 shadeHair(float depth, uint segment) {
     if (dot(h.N, h.N) < 0.5) h.N = h.V;  // looking along the strand
     h.color = s.color.rgb;
     h.highlights = s.highlights;
+    h.radius = 0.5 * (s.start.w + s.end.w);
+    const vec3 d = s.end.xyz - s.start.xyz;
+    h.axis = s.start.xyz + d * clamp(dot(h.P - s.start.xyz, d) / max(dot(d, d), 1e-12), 0.0, 1.0);
     vec3 radiance = vec3(0.0);
     if (kIblMode != 0u) {
         vec4 sh[9] = irradianceSh;

@@ -34,6 +34,10 @@ layout(push_constant) uniform HairDraw {
     uint directionalCount;
     float skyIntensity;
     uint nodeCapacity;          // nodes in the pool
+    uint selfShadow;            // HAIR_SELF_SHADOW_*
+    uint shadowView;            // hair_shadow.vert: the shadow view drawn
+    uint segmentCount;          // segments in the frame (the self-shadow reference's loop)
+    uint pad;
 } draw;
 
 #ifndef HAIR_NO_LISTS

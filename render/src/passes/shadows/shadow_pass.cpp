@@ -420,6 +420,14 @@ void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
     atlasHoldsMaps_ = true;
 }
 
+std::vector<GpuShadowView> ShadowPass::views() const {
+    std::vector<GpuShadowView> out;
+    out.reserve(planned_.size());
+    for (const PlannedView& v : planned_)
+        out.push_back(v.gpu);
+    return out;
+}
+
 ShadowDescriptors ShadowPass::descriptors(bool enabled) const {
     if (!enabled) {
         return {{pointSampler_.handle(), placeholderAtlas_.view(), kRead},

@@ -69,6 +69,8 @@ public:
     bool atlasHoldsMaps() const { return atlasHoldsMaps_; }
     ShadowDescriptors descriptors(bool enabled) const;
     const ShadowFrameStats& stats() const { return stats_; }
+    // This frame's views as viewBuffer() holds them (the hair depth map draws into each).
+    std::vector<GpuShadowView> views() const;
 
 private:
     struct PlannedView {

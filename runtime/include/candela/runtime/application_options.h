@@ -54,6 +54,8 @@ struct ApplicationOptions {
     std::optional<render::BrdfModel> brdf;
     // --area-lights: how sphere and tube lights integrate (render::AreaLightMode).
     render::AreaLightMode areaLights = render::RendererOptions{}.areaLights;
+    // --hair-self-shadow: hair's shadow on itself (render::HairSelfShadow).
+    render::HairSelfShadow hairSelfShadow = render::RendererOptions{}.hairSelfShadow;
     // --aa; unset: the world's scene-file "aa", else TAA (render/README.md "Antialiasing").
     std::optional<render::AntiAliasing> aa;
     // --msaa; unset: the world's scene-file "msaa", else 1 (off). The forward pass's samples
