@@ -509,6 +509,16 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                                                           : 0.0f;
         rendererOptions.ao = aoFor(options, world.get());
         rendererOptions.ssr = ssrFor(options, world.get());
+        // --sky-occlusion, else the scene file's, else on in frames with an atmosphere (the
+        // demo; other scenes' images stay as they were): render/README.md "Sky occlusion".
+        if (options.skyOcclusion) {
+            rendererOptions.skyOcclusion = *options.skyOcclusion;
+        } else if (world && world->sceneSkyOcclusion()) {
+            rendererOptions.skyOcclusion =
+                render::SkyOcclusionMode(int(*world->sceneSkyOcclusion()));
+        } else {
+            rendererOptions.skyOcclusionWithAtmosphere = true;
+        }
         // Per-light volumes by default: cheaper than froxels from 16 lights to 4,096 and in the
         // demo hall, and closer to the reference up to 16 lights, on the figures in
         // render/README.md "Volumetric lighting"; it draws only in frames with a medium.

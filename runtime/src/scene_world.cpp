@@ -95,6 +95,7 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     sceneAntiAliasing_ = scene->aa;
     sceneMsaa_ = scene->msaa;
     sceneSsr_ = scene->ssr;
+    sceneSkyOcclusion_ = scene->skyOcclusion;
     sceneBloom_ = scene->bloom;
     sceneExposure_ = scene->exposure;
     sceneExposureCompensation_ = scene->exposureCompensation;

@@ -61,6 +61,10 @@ inline constexpr EnumNames<SceneSsrMode, 3> kSceneSsrModes{
     {{SceneSsrMode::Off, "off"},
      {SceneSsrMode::Hiz, "hiz"},
      {SceneSsrMode::Reference, "reference"}}};
+inline constexpr EnumNames<SceneSkyOcclusionMode, 3> kSceneSkyOcclusionModes{
+    {{SceneSkyOcclusionMode::Off, "off"},
+     {SceneSkyOcclusionMode::On, "on"},
+     {SceneSkyOcclusionMode::Reference, "reference"}}};
 inline constexpr EnumNames<SceneAoMode, 3> kSceneAoModes{{{SceneAoMode::Off, "off"},
                                                           {SceneAoMode::Gtao, "gtao"},
                                                           {SceneAoMode::Reference, "reference"}}};

@@ -758,6 +758,14 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             scene.ssr = ssr;
         }
     }
+    if (root.contains("sky_occlusion")) {
+        SceneSkyOcclusionMode mode = SceneSkyOcclusionMode::Off;
+        if (reader.clean([&] {
+                reader.enumeration(root, "", "sky_occlusion", kSceneSkyOcclusionModes, mode);
+            })) {
+            scene.skyOcclusion = mode;
+        }
+    }
     const json* ao = nullptr;
     if (reader.object(root, "", "ambient_occlusion", ao)) {
         // Like "brdf": a bad value is reported and its default kept; the scene still loads.

@@ -302,6 +302,10 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     if (scene.msaa) document["msaa"] = *scene.msaa;
     if (scene.bloom) document["bloom"] = *scene.bloom;
     if (scene.ssr) document["ssr"] = std::string(nameOf(kSceneSsrModes, *scene.ssr));
+    if (scene.skyOcclusion) {
+        document["sky_occlusion"] =
+            std::string(nameOf(kSceneSkyOcclusionModes, *scene.skyOcclusion));
+    }
     if (scene.exposure)
         document["exposure"] = std::string(nameOf(kSceneExposures, *scene.exposure));
     if (scene.exposureCompensation) document["exposure_compensation"] = *scene.exposureCompensation;

@@ -126,6 +126,9 @@ enum class SceneAoMode { Off, Gtao, Reference };
 // Screen-space reflections (top-level "ssr": "off", "hiz" or "reference"); the command line's
 // --ssr overrides it. Mirrors render::SsrMode.
 enum class SceneSsrMode { Off, Hiz, Reference };
+// Sky occlusion (top-level "sky_occlusion": "off", "on" or "reference"); the command line's
+// --sky-occlusion overrides it. Mirrors render::SkyOcclusionMode.
+enum class SceneSkyOcclusionMode { Off, On, Reference };
 
 struct SceneAmbientOcclusion {
     std::optional<SceneAoMode> mode;  // unset: the engine's default
@@ -149,6 +152,8 @@ struct SceneDocument {
     std::optional<float> exposureCompensation;  // "exposure_compensation", EV (auto only)
     std::optional<SceneAmbientOcclusion> ambientOcclusion;  // unset: defaults
     std::optional<SceneSsrMode> ssr;                        // unset: the engine's default (hiz)
+    // Unset: the engine's default (on with an atmosphere, render/README.md "Sky occlusion").
+    std::optional<SceneSkyOcclusionMode> skyOcclusion;
     // Top-level "materialLayers": the shared layer library, by unique name. A material's
     // "layers" (at most kMaxMaterialLayers) name library layers; each copy starts as the
     // library's and may change any of its parameters, and is written back in full.
