@@ -91,8 +91,9 @@ public:
     }
 
     // The rendered floor (radiance = visibility) against the ray trace over the room's floor,
-    // every `stride`-th pixel, away from the walls.
-    SkyRoomError compareInside(const CapturedFrame& frame, uint32_t stride = 3) const {
+    // every `stride`-th pixel, away from the walls; against another frame instead when given.
+    SkyRoomError compareInside(const CapturedFrame& frame, uint32_t stride = 3,
+                               const CapturedFrame* against = nullptr) const {
         SkyRoomError e;
         for (uint32_t y = 0; y < scene_.height; y += stride) {
             for (uint32_t x = 0; x < scene_.width; x += stride) {
@@ -100,7 +101,8 @@ public:
                 if (!p || std::abs(p->x) > kInner - 0.1f || std::abs(p->z) > kInner - 0.1f) {
                     continue;
                 }
-                const double truth = rayTracedVisibility(*p);
+                const double truth =
+                    against ? double(hdrPixel(*against, x, y)[1]) : rayTracedVisibility(*p);
                 const double rendered = hdrPixel(frame, x, y)[1];
                 ++e.pixels;
                 e.meanAbs += std::abs(rendered - truth);

@@ -17,6 +17,8 @@ namespace {
 
 constexpr VkFormat kAtlasFormat = VK_FORMAT_D32_SFLOAT;
 constexpr VkImageLayout kRead = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+// Half-diagonal (m) under which a caster is left out: half GTAO's default 1.5 m radius.
+constexpr float kSmallCaster = 0.75f;
 
 uint64_t mix(uint64_t h, const void* data, size_t bytes) {
     const auto* p = static_cast<const unsigned char*>(data);
@@ -80,8 +82,9 @@ bool SkyOcclusionPass::prepare(const FrameScene& scene, const SceneResources& re
     rendersThisFrame_ = false;
     casters_.clear();
     if (mode == SkyOcclusionMode::Off) return false;
-    // Casters: the static opaque and masked surfaces (blended ones let the sky through;
-    // skinned or morphed ones move every frame and are left to screen-space AO).
+    // Casters: the static opaque and masked surfaces at least kSmallCaster in size (blended
+    // ones let the sky through; skinned or morphed ones move every frame and, like the small
+    // ones, are left to screen-space AO).
     struct Box {
         glm::vec3 lo, hi;
     };
@@ -98,6 +101,9 @@ bool SkyOcclusionPass::prepare(const FrameScene& scene, const SceneResources& re
         const glm::mat3 m(draw.world);
         const glm::vec3 e =
             glm::abs(m[0]) * extent.x + glm::abs(m[1]) * extent.y + glm::abs(m[2]) * extent.z;
+        // Small casters (half-diagonal under kSmallCaster) are screen-space AO's scale; drawing
+        // them n times would cost more than the sky light they block at the maps' texel size.
+        if (glm::length(e) < kSmallCaster) continue;
         boxes.push_back({c - e, c + e});
         lo = glm::min(lo, c - e);
         hi = glm::max(hi, c + e);
