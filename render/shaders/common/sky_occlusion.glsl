@@ -72,8 +72,12 @@ float skyLobeExponent(float roughness, uint n) {
 }
 
 // Every direction is tested once and weighted twice. The lower hemisphere's mirror image of
-// each direction (the same weights at -y) stands for the ground's share of the lobe, which
-// nothing here occludes: visibility = (below + sum w open) / (below + sum w).
+// each direction (the same weights at -y) stands for the ground's share of the lobe: the sky
+// model's ground, lit by the sky. Under a roof the ground in view is lit by as little sky as
+// the point itself, so that share is scaled by the point's own sky visibility as the ground
+// would see it (the tested directions weighted by their height, y = cos to the zenith):
+// visibility = (below x ground + sum w open) / (below + sum w); in the open ground = 1 and
+// nothing changes.
 SkyVisibility skyVisibility(vec3 P, vec3 N, vec3 R, float roughness) {
     SkyVisibility v = SkyVisibility(1.0, 1.0, N);
     uint n = camera.skyOcclusionLayout.x;
@@ -82,6 +86,7 @@ SkyVisibility skyVisibility(vec3 P, vec3 N, vec3 R, float roughness) {
     float diffuseAll = 0.0, diffuseOpen = 0.0, diffuseBelow = 0.0;
     float specularAll = 0.0, specularOpen = 0.0, specularBelow = 0.0;
     vec3 blocked = vec3(0.0);
+    float groundAll = 0.0, groundOpen = 0.0;
     for (uint i = 0u; i < n; ++i) {
         vec3 d = skyOcclusionDirection(i, n);
         vec3 mirrored = vec3(d.x, -d.y, d.z);
@@ -96,10 +101,13 @@ SkyVisibility skyVisibility(vec3 P, vec3 N, vec3 R, float roughness) {
         specularAll += ws;
         specularOpen += ws * open;
         blocked += wd * (1.0 - open) * d;
+        groundAll += d.y;
+        groundOpen += d.y * open;
     }
+    float ground = groundAll > 0.0 ? groundOpen / groundAll : 1.0;
     float diffuseTotal = diffuseAll + diffuseBelow;
     if (diffuseTotal > 0.0) {
-        v.diffuse = (diffuseBelow + diffuseOpen) / diffuseTotal;
+        v.diffuse = (diffuseBelow * ground + diffuseOpen) / diffuseTotal;
         // The cosine lobe's mean direction is 2/3 N; take out the blocked directions' share.
         if (any(notEqual(blocked, vec3(0.0)))) {
             v.bentNormal = safeNormalize(N * (2.0 / 3.0) - blocked / diffuseTotal);
@@ -107,7 +115,9 @@ SkyVisibility skyVisibility(vec3 P, vec3 N, vec3 R, float roughness) {
         }
     }
     float specularTotal = specularAll + specularBelow;
-    if (specularTotal > 0.0) v.specular = (specularBelow + specularOpen) / specularTotal;
+    if (specularTotal > 0.0) {
+        v.specular = (specularBelow * ground + specularOpen) / specularTotal;
+    }
     return v;
 }
 
