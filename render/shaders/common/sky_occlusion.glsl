@@ -74,10 +74,14 @@ float skyLobeExponent(float roughness, uint n) {
 // Every direction is tested once and weighted twice. The lower hemisphere's mirror image of
 // each direction (the same weights at -y) stands for the ground's share of the lobe: the sky
 // model's ground, lit by the sky. Under a roof the ground in view is lit by as little sky as
-// the point itself, so that share is scaled by the point's own sky visibility as the ground
-// would see it (the tested directions weighted by their height, y = cos to the zenith):
-// visibility = (below x ground + sum w open) / (below + sum w); in the open ground = 1 and
-// nothing changes.
+// the roof lets in, so that share is scaled by `ground`: the sky a floor sees at the point
+// kSkyGroundReach in front of the surface (horizontally along N, at P's height; P itself for
+// a floor), the directions weighted by their height d_i.y. In the open ground = 1 and nothing
+// changes; a wall inside a hall sees a covered floor; a beam's face under an overhang that
+// looks out over a sunlit floor keeps its ground light.
+// visibility = (below x ground + sum w open) / (below + sum w).
+const float kSkyGroundReach = 2.0;
+
 SkyVisibility skyVisibility(vec3 P, vec3 N, vec3 R, float roughness) {
     SkyVisibility v = SkyVisibility(1.0, 1.0, N);
     uint n = camera.skyOcclusionLayout.x;
@@ -87,13 +91,22 @@ SkyVisibility skyVisibility(vec3 P, vec3 N, vec3 R, float roughness) {
     float specularAll = 0.0, specularOpen = 0.0, specularBelow = 0.0;
     vec3 blocked = vec3(0.0);
     float groundAll = 0.0, groundOpen = 0.0;
+    vec3 across = vec3(N.x, 0.0, N.z);
+    bool groundElsewhere = dot(across, across) > 1e-4;
+    vec3 groundPoint = groundElsewhere ? P + normalize(across) * kSkyGroundReach : P;
     for (uint i = 0u; i < n; ++i) {
         vec3 d = skyOcclusionDirection(i, n);
         vec3 mirrored = vec3(d.x, -d.y, d.z);
-        diffuseBelow += max(dot(N, mirrored), 0.0);
-        specularBelow += pow(max(dot(R, mirrored), 0.0), exponent);
+        float wb = max(dot(N, mirrored), 0.0);
+        float wbs = pow(max(dot(R, mirrored), 0.0), exponent);
+        diffuseBelow += wb;
+        specularBelow += wbs;
         float wd = max(dot(N, d), 0.0);
         float ws = pow(max(dot(R, d), 0.0), exponent);
+        if (groundElsewhere && (wb > 0.0 || wbs > 0.0)) {
+            groundAll += d.y;
+            groundOpen += d.y * skyOcclusionTest(i, groundPoint, vec3(0.0, 1.0, 0.0));
+        }
         if (wd == 0.0 && ws == 0.0) continue;
         float open = skyOcclusionTest(i, P, N);
         diffuseAll += wd;
@@ -101,8 +114,10 @@ SkyVisibility skyVisibility(vec3 P, vec3 N, vec3 R, float roughness) {
         specularAll += ws;
         specularOpen += ws * open;
         blocked += wd * (1.0 - open) * d;
-        groundAll += d.y;
-        groundOpen += d.y * open;
+        if (!groundElsewhere) {
+            groundAll += d.y;
+            groundOpen += d.y * open;
+        }
     }
     float ground = groundAll > 0.0 ? groundOpen / groundAll : 1.0;
     float diffuseTotal = diffuseAll + diffuseBelow;
