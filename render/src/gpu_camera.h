@@ -13,6 +13,10 @@ struct GpuCamera {
     glm::mat4 unjitteredViewProjection;
     glm::mat4 previousViewProjection;  // unjittered
     glm::vec4 jitter;                  // xy: this frame's (pixels), zw: the previous frame's
+    // Sky occlusion (passes/sky_occlusion): the maps' sphere (centre, radius) and atlas layout
+    // (directions, tiles per row, tile texels, atlas texels); directions 0: off.
+    glm::vec4 skyOcclusionSphere;
+    glm::uvec4 skyOcclusionLayout;
 };
 
 }  // namespace candela::render

@@ -39,6 +39,7 @@
 #include "passes/scattering/scattering_pass.h"
 #include "passes/shadows/shadow_pass.h"
 #include "passes/skinning/skinning_pass.h"
+#include "passes/sky_occlusion/sky_occlusion_pass.h"
 #include "passes/ssr/ssr_pass.h"
 #include "passes/taa/taa_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
@@ -302,6 +303,7 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
                       MemoryLocation::HostVisible);
     }
     shadowPass_ = std::make_unique<ShadowPass>(context_);
+    skyOcclusionPass_ = std::make_unique<SkyOcclusionPass>(context_);  // pipeline when used
 }
 
 Renderer::~Renderer() {
@@ -494,6 +496,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     // Shadow maps for the lights that cast; none, and the variant leaves shadows out.
     features.shadows = shadowPass_->prepare(inputs.scene, resources, options_, width_, height_);
+    // Sky occlusion's maps: rendered when the static casters change, else kept.
+    const SkyOcclusionMode skyOcclusion = options_.skyOcclusion == SkyOcclusionMode::Off &&
+                                                  options_.skyOcclusionWithAtmosphere &&
+                                                  inputs.scene.atmosphere
+                                              ? SkyOcclusionMode::On
+                                              : options_.skyOcclusion;
+    if (skyOcclusion != SkyOcclusionMode::Off && features.ibl) {
+        features.skyOcclusion = skyOcclusionPass_->prepare(inputs.scene, resources, skyOcclusion);
+    }
     lightingPass_->setFeatures(features);
     // The environment BRDF LUT is the same for every sky: built once, when first needed (the
     // energy-conserving BRDF reads its directional albedo for every light, sky or not).
@@ -523,6 +534,13 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     if (gbufferPass_->materialLayers()) features_.push_back("material_layers");
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
     uploadFrameData(inputs);
+    {  // the camera block carries sky occlusion's sphere and layout
+        GpuCamera* camera = static_cast<GpuCamera*>(cameraBuffer_.mapped());
+        camera->skyOcclusionSphere =
+            features.skyOcclusion ? skyOcclusionPass_->sphere() : glm::vec4(0.0f);
+        camera->skyOcclusionLayout =
+            features.skyOcclusion ? skyOcclusionPass_->layout() : glm::uvec4(0u);
+    }
     const bool blended =
         transparentPass_->prepare(inputs.scene, resources, features, previousWorlds_);
     stats_.lights = lights_->count();
@@ -604,6 +622,28 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
     }
     const ShadowDescriptors shadowDescriptors = shadowPass_->descriptors(features.shadows);
+    ResourceHandle skyOcclusionAtlas;
+    VkDescriptorImageInfo skyOcclusionDescriptor{};
+    stats_.skyOcclusionRebuilt = false;
+    if (features.skyOcclusion) {
+        constexpr ImageState kSkyRead{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                      VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+        skyOcclusionAtlas =
+            g.importImage("sky_occlusion_atlas", &skyOcclusionPass_->atlas(),
+                          skyOcclusionPass_->atlasHoldsMaps() ? kSkyRead : ImageState{}, kSkyRead);
+        if (skyOcclusionPass_->rendersThisFrame()) {
+            stats_.skyOcclusionRebuilt = true;
+            auto p = g.addPass("sky_occlusion", PassKind::Device,
+                               [this, &inputs, &resources](PassContext& ctx) {
+                                   skyOcclusionPass_->record(ctx.cmd(), inputs.scene, resources);
+                               });
+            skyOcclusionAtlas = p.write(skyOcclusionAtlas, Use::DepthWrite);
+        }
+        skyOcclusionDescriptor = skyOcclusionPass_->descriptor(true);
+    } else {
+        skyOcclusionDescriptor = skyOcclusionPass_->descriptor(false);
+    }
     // What every lit pass reads beside its own inputs: the light buffer, the cluster lists and
     // the shadow maps (the lighting pass in its compute stage, hair, wires and blended surfaces
     // in their fragment stage).
@@ -746,33 +786,34 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     environment.areaLightTextures = areaLightTextures_->descriptor();
     const float skyIntensity = inputs.scene.skyIntensity;
     {
-        auto p = g.addPass(
-            "lighting", PassKind::Device,
-            [this, gbufferViews, ids, environment, skyIntensity, occlusion, specularOcclusion,
-             aoIntensity, aoMultiBounce, shadowDescriptors](PassContext& ctx) {
-                const GBufferTargets targets = gbufferViews(ctx);
-                LightingPass::Inputs lighting{&targets,
-                                              ctx.image(ids.hdr),
-                                              &cameraBuffer_,
-                                              &lights_->buffer(),
-                                              &clusters_->ranges(),
-                                              &clusters_->indices(),
-                                              &pairCounts_,
-                                              &clusters_->depthRange(),
-                                              &clusters_->grid(),
-                                              clusters_->directionalCount()};
-                lighting.environment = &environment;
-                lighting.skyIntensity = skyIntensity;
-                lighting.referenceSamples = options_.referenceSamples;
-                if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
-                if (specularOcclusion) {
-                    lighting.specularOcclusion = ctx.image(*specularOcclusion);
-                }
-                lighting.aoIntensity = aoIntensity;
-                lighting.aoMultiBounce = aoMultiBounce;
-                lighting.shadows = &shadowDescriptors;
-                lightingPass_->record(ctx.cmd(), lighting);
-            });
+        auto p = g.addPass("lighting", PassKind::Device,
+                           [this, gbufferViews, ids, environment, skyIntensity, occlusion,
+                            specularOcclusion, aoIntensity, aoMultiBounce, shadowDescriptors,
+                            skyOcclusionDescriptor](PassContext& ctx) {
+                               const GBufferTargets targets = gbufferViews(ctx);
+                               LightingPass::Inputs lighting{&targets,
+                                                             ctx.image(ids.hdr),
+                                                             &cameraBuffer_,
+                                                             &lights_->buffer(),
+                                                             &clusters_->ranges(),
+                                                             &clusters_->indices(),
+                                                             &pairCounts_,
+                                                             &clusters_->depthRange(),
+                                                             &clusters_->grid(),
+                                                             clusters_->directionalCount()};
+                               lighting.environment = &environment;
+                               lighting.skyIntensity = skyIntensity;
+                               lighting.referenceSamples = options_.referenceSamples;
+                               if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
+                               if (specularOcclusion) {
+                                   lighting.specularOcclusion = ctx.image(*specularOcclusion);
+                               }
+                               lighting.aoIntensity = aoIntensity;
+                               lighting.aoMultiBounce = aoMultiBounce;
+                               lighting.shadows = &shadowDescriptors;
+                               lighting.skyOcclusion = skyOcclusionDescriptor;
+                               lightingPass_->record(ctx.cmd(), lighting);
+                           });
         for (ResourceHandle c : h.color)
             p.read(c, Use::Sampled);
         p.read(h.depth, Use::Sampled);
@@ -784,6 +825,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         readLitInputs(p, kComputeStage);
         if (occlusion) p.read(*occlusion, Use::Sampled);
         if (specularOcclusion) p.read(*specularOcclusion, Use::Sampled);
+        if (features.skyOcclusion) p.read(skyOcclusionAtlas, Use::Sampled, kComputeStage);
         if (features.countLightPairs) p.write(pairCounts, Use::StorageWrite);
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
@@ -1752,6 +1794,7 @@ const RendererStats& Renderer::collectStats() {
         if (name.starts_with("atmosphere_")) stats_.skyMs += ms;
         if (name.starts_with("scattering_")) stats_.scatteringMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
+        if (name == "sky_occlusion") stats_.skyOcclusionMs = ms;  // kept until the next build
         if (name.starts_with("ssr_")) stats_.ssrMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
     }

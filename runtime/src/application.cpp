@@ -548,6 +548,16 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                                                           : 0.0f;
         rendererOptions.ao = aoFor(options, world.get());
         rendererOptions.ssr = ssrFor(options, world.get());
+        // --sky-occlusion, else the scene file's, else on in frames with an atmosphere (the
+        // demo; other scenes' images stay as they were): render/README.md "Sky occlusion".
+        if (options.skyOcclusion) {
+            rendererOptions.skyOcclusion = *options.skyOcclusion;
+        } else if (world && world->sceneSkyOcclusion()) {
+            rendererOptions.skyOcclusion =
+                render::SkyOcclusionMode(int(*world->sceneSkyOcclusion()));
+        } else {
+            rendererOptions.skyOcclusionWithAtmosphere = true;
+        }
         rendererOptions.volumetrics = volumetricsFor(options, world.get());
         rendererOptions.scattering = scatteringFor(options, world.get());
         rendererOptions.scatteringSettings = options.scatteringSettings;

@@ -103,6 +103,10 @@ constexpr std::pair<const char*, render::SsrMode> kSsrModes[] = {
     {"off", render::SsrMode::Off},
     {"hiz", render::SsrMode::Hiz},
     {"reference", render::SsrMode::Reference}};
+constexpr std::pair<const char*, render::SkyOcclusionMode> kSkyOcclusionModes[] = {
+    {"off", render::SkyOcclusionMode::Off},
+    {"on", render::SkyOcclusionMode::On},
+    {"reference", render::SkyOcclusionMode::Reference}};
 constexpr std::pair<const char*, render::ScatteringMode> kScatteringModes[] = {
     {"off", render::ScatteringMode::Off},
     {"epipolar", render::ScatteringMode::Epipolar},
@@ -171,6 +175,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --hair-self-shadow off|map|reference   hair's shadow on itself: none, the hair\n"
            "                            depth map's estimate (default) or every fibre counted\n"
            "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
+           "  --sky-occlusion off|on|reference  the scene's geometry blocking the sky's light\n"
            "                            (default: the scene file's, else hiz)\n"
            "  --volumetrics off|volumes|froxels|reference   light scattered in the medium\n"
            "                            (default: volumes when the scene has fog, else off)\n"
@@ -322,6 +327,12 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--ssr needs off, hiz or reference, got '" + v + "'");
             }
             options.ssr = ssr;
+        } else if (arg == "--sky-occlusion") {
+            render::SkyOcclusionMode mode{};
+            if (!value() || !parseChoice(v, kSkyOcclusionModes, mode)) {
+                return fail("--sky-occlusion needs off, on or reference, got '" + v + "'");
+            }
+            options.skyOcclusion = mode;
         } else if (arg == "--volumetrics") {
             render::VolumetricsMode mode{};
             if (!value() || !parseChoice(v, kVolumetricsModes, mode)) {

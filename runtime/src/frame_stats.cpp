@@ -74,6 +74,13 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["ssr_hit_rate"] = last.ssrHitRate;
     json["volumetrics_ms"] = median(collect(stats.frames, [](auto& f) { return f.volumetricsMs; }));
     json["sky_ms"] = median(collect(stats.frames, [](auto& f) { return f.skyMs; }));
+    // Sky occlusion: GPU ms of the last build of its maps, and the frames that built them
+    // (once per change of the static casters).
+    json["sky_occlusion_ms"] = last.skyOcclusionMs;
+    json["sky_occlusion_rebuilds"] =
+        std::count_if(stats.frames.begin(), stats.frames.end(),
+                      [](const render::RendererStats& f) { return f.skyOcclusionRebuilt; });
+    json["sky_occlusion_rebuilt"] = last.skyOcclusionRebuilt;
     // Light shafts: GPU ms of their passes (median), and the last frame's rays marched
     // (epipolar samples and unwarp fix-ups, or pixels) and shadow tests taken by them.
     json["scattering_ms"] = median(collect(stats.frames, [](auto& f) { return f.scatteringMs; }));

@@ -375,6 +375,29 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("/volumetrics")) << badDiagnostics.toString();
 }
 
+// Sky occlusion: the top-level "sky_occlusion" survives save and load; a bad value is named
+// and the scene loads with the engine's default.
+TEST(SceneFile, SkyOcclusionSettingRoundTripsAndBadValuesAreNamed) {
+    SceneDocument scene = exampleScene();
+    scene.skyOcclusion = SceneSkyOcclusionMode::Reference;
+    std::string error;
+    const std::string text = sceneToJson(scene, error);
+    ASSERT_EQ(error, "");
+    Diagnostics diagnostics;
+    auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "sky.scene.json", diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_EQ(loaded->skyOcclusion, SceneSkyOcclusionMode::Reference);
+
+    const std::string bad = R"({"format": "candela.scene", "version": 1,
+                               "sky_occlusion": "always", "entities": []})";
+    Diagnostics badDiagnostics;
+    auto fallback = parseSceneJson(std::as_bytes(std::span(bad)), "bad.scene.json", badDiagnostics);
+    ASSERT_TRUE(fallback);
+    EXPECT_FALSE(fallback->skyOcclusion.has_value());
+    EXPECT_TRUE(badDiagnostics.mentions("bad.scene.json")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("/sky_occlusion")) << badDiagnostics.toString();
+}
+
 // Issue 25: the top-level "ambient_occlusion" (mode, radius, intensity) survives save and
 // load; bad values are errors naming the file and the field, and the scene still loads with
 // the defaults for them.

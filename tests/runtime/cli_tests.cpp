@@ -154,7 +154,7 @@ TEST(Cli, DemoRendersHeadlessWithEveryFeature) {
     auto features = stats["features"].get<std::vector<std::string>>();
     for (const char* expected :
          {"shading_subsurface", "shading_legacy_diffuse_specular", "lights_sphere", "lights_tube",
-          "material_anisotropy", "material_clear_coat", "atmosphere"}) {
+          "material_anisotropy", "material_clear_coat", "atmosphere", "sky_occlusion"}) {
         EXPECT_NE(std::find(features.begin(), features.end(), expected), features.end())
             << expected;
     }

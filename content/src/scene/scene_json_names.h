@@ -70,6 +70,10 @@ inline constexpr EnumNames<SceneVolumetricsMode, 4> kSceneVolumetricsModes{
      {SceneVolumetricsMode::Volumes, "volumes"},
      {SceneVolumetricsMode::Froxels, "froxels"},
      {SceneVolumetricsMode::Reference, "reference"}}};
+inline constexpr EnumNames<SceneSkyOcclusionMode, 3> kSceneSkyOcclusionModes{
+    {{SceneSkyOcclusionMode::Off, "off"},
+     {SceneSkyOcclusionMode::On, "on"},
+     {SceneSkyOcclusionMode::Reference, "reference"}}};
 inline constexpr EnumNames<SceneAoMode, 3> kSceneAoModes{{{SceneAoMode::Off, "off"},
                                                           {SceneAoMode::Gtao, "gtao"},
                                                           {SceneAoMode::Reference, "reference"}}};

@@ -306,6 +306,10 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
         document["scattering"] = std::string(nameOf(kSceneScatteringModes, *scene.scattering));
     if (scene.volumetrics)
         document["volumetrics"] = std::string(nameOf(kSceneVolumetricsModes, *scene.volumetrics));
+    if (scene.skyOcclusion) {
+        document["sky_occlusion"] =
+            std::string(nameOf(kSceneSkyOcclusionModes, *scene.skyOcclusion));
+    }
     if (scene.exposure)
         document["exposure"] = std::string(nameOf(kSceneExposures, *scene.exposure));
     if (scene.exposureCompensation) document["exposure_compensation"] = *scene.exposureCompensation;

@@ -14,6 +14,10 @@ layout(std140, binding = CAMERA_BINDING) uniform CameraBlock {
     mat4 unjitteredViewProjection;
     mat4 previousViewProjection;
     vec4 jitter;  // xy: this frame's jitter in pixels, zw: the previous frame's
+    // Sky occlusion (common/sky_occlusion.glsl): the maps' sphere (centre, radius) and layout
+    // (directions, tiles per row, tile texels, atlas texels); x of the layout 0: off.
+    vec4 skyOcclusionSphere;
+    uvec4 skyOcclusionLayout;
 } camera;
 
 #endif

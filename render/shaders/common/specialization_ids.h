@@ -31,6 +31,8 @@
 #define SPEC_AMBIENT_OCCLUSION 33
 // Shadow sampling (shadows.glsl): on only in frames where a light casts.
 #define SPEC_SHADOWS_ENABLED 34
+// Lighting pass: sky occlusion of the sky's light (common/sky_occlusion.glsl).
+#define SPEC_SKY_OCCLUSION 35
 // assign_lights.comp: the counting or the writing walk.
 #define SPEC_ASSIGN_WRITE_PASS 40
 

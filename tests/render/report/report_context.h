@@ -45,6 +45,7 @@ void addAntialiasingRows(ReportContext& context);
 void addForwardMsaaRows(ReportContext& context);
 void addMaterialRows(ReportContext& context);
 void addAmbientOcclusionRows(ReportContext& context);
+void addSkyOcclusionRows(ReportContext& context);
 void addShadowRows(ReportContext& context);
 void addAnimationRows(ReportContext& context);
 void addSsrRows(ReportContext& context);

@@ -136,6 +136,7 @@ int main(int argc, char** argv) {
         });
         section("material extensions", [&] { addMaterialRows(context); });
         section("ambient occlusion", [&] { addAmbientOcclusionRows(context); });
+        section("sky occlusion", [&] { addSkyOcclusionRows(context); });
         section("shadows", [&] { addShadowRows(context); });
         section("animation", [&] { addAnimationRows(context); });
         section("screen-space reflections", [&] { addSsrRows(context); });

@@ -126,6 +126,9 @@ enum class SceneAoMode { Off, Gtao, Reference };
 // Screen-space reflections (top-level "ssr": "off", "hiz" or "reference"); the command line's
 // --ssr overrides it. Mirrors render::SsrMode.
 enum class SceneSsrMode { Off, Hiz, Reference };
+// Sky occlusion (top-level "sky_occlusion": "off", "on" or "reference"); the command line's
+// --sky-occlusion overrides it. Mirrors render::SkyOcclusionMode.
+enum class SceneSkyOcclusionMode { Off, On, Reference };
 
 // Light shafts in the air of an atmosphere (top-level "scattering": "off", "epipolar" or
 // "brute-force"); the command line's --scattering overrides it. Mirrors render::ScatteringMode.
@@ -160,6 +163,8 @@ struct SceneDocument {
     std::optional<SceneSsrMode> ssr;                        // unset: the engine's default (hiz)
     std::optional<SceneScatteringMode> scattering;    // unset: the engine's default (epipolar)
     std::optional<SceneVolumetricsMode> volumetrics;  // unset: the engine's default (volumes)
+    // Unset: the engine's default (on with an atmosphere, render/README.md "Sky occlusion").
+    std::optional<SceneSkyOcclusionMode> skyOcclusion;
     // Top-level "materialLayers": the shared layer library, by unique name. A material's
     // "layers" (at most kMaxMaterialLayers) name library layers; each copy starts as the
     // library's and may change any of its parameters, and is written back in full.

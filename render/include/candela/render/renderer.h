@@ -52,6 +52,7 @@ class FxaaPass;
 class BloomPass;
 class ExposureHistogramPass;
 class ShadowPass;
+class SkyOcclusionPass;
 class SkinningPass;
 class DebugTextPass;
 class TrianglePass;
@@ -209,6 +210,7 @@ private:
     uint32_t hairNodeCapacity_ = 0;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
+    std::unique_ptr<SkyOcclusionPass> skyOcclusionPass_;
     std::unique_ptr<SkinningPass> skinningPass_;    // made on the first frame with animation
     std::unique_ptr<DebugTextPass> debugTextPass_;  // made on the first frame with text
     std::unique_ptr<EnvironmentBrdfLut> brdfLut_;

@@ -179,6 +179,16 @@ enum class SsrMode {
 };
 const char* ssrModeName(SsrMode mode);  // "off", "hiz", "reference"
 
+// Sky occlusion (`--sky-occlusion`, the scene file's "sky_occlusion"; render/README.md "Sky
+// occlusion"): how much of the sky each surface sees past the scene's static geometry, for
+// the sky's diffuse and specular light. Screen-space AO adds the small-scale corners on top.
+enum class SkyOcclusionMode {
+    Off,        // the sky reaches every surface (images as before sky occlusion)
+    On,         // 32 depth maps over the sky hemisphere, rendered when the casters change
+    Reference,  // 256 directions: for measurement only
+};
+const char* skyOcclusionModeName(SkyOcclusionMode mode);  // "off", "on", "reference"
+
 struct SsrSettings {
     // Surfaces at least this rough get no ray (and the confidence fades to 0 from 3/4 of it);
     // a frame with no material under it declares no SSR pass.
@@ -276,6 +286,12 @@ struct RendererOptions {
     // whose last maps are still in the atlas keeps them for the frame (shadow_maps_kept).
     uint64_t shadowRenderBudget = uint64_t(4) << 20;
     SsrMode ssr = SsrMode::Off;
+    // Off here so tests render without it unless they ask; the application turns it on for
+    // scenes with an atmosphere (ApplicationOptions).
+    SkyOcclusionMode skyOcclusion = SkyOcclusionMode::Off;
+    // With skyOcclusion Off: On in frames whose scene has an atmosphere (the default when
+    // neither the command line nor the scene file chooses).
+    bool skyOcclusionWithAtmosphere = false;
     SsrSettings ssrSettings;
     AtmosphereSettings atmosphere;
     // Off here so tests render without shafts unless they ask; the application's default
@@ -359,6 +375,10 @@ struct RendererStats {
     // rendered this frame and kept from an earlier one, and the share of atlas texels in use.
     // Kept: changed lights that sampled last frame's maps as the render budget was spent.
     double shadowMs = 0.0;
+    // Sky occlusion: GPU ms of the last build of its maps (kept while they are reused), and
+    // whether this frame rebuilt them.
+    double skyOcclusionMs = 0.0;
+    bool skyOcclusionRebuilt = false;
     uint32_t shadowedLights = 0;
     uint32_t shadowMapsRendered = 0;
     uint32_t shadowMapsCached = 0;

@@ -19,6 +19,8 @@
 #define SHADOW_VIEWS_BINDING LIGHTING_BINDING_SHADOW_VIEWS
 #define SHADOW_LIGHTS_BINDING LIGHTING_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
+#define SKY_OCCLUSION_BINDING LIGHTING_BINDING_SKY_OCCLUSION
+#include "common/sky_occlusion.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -35,6 +37,8 @@ layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 // Ambient occlusion of the sky's light: none, GTAO (specular occlusion from the visibility)
 // or the ray-marched reference (specular visibility measured too).
 layout(constant_id = SPEC_AMBIENT_OCCLUSION) const uint kAoMode = 0u;
+// Sky occlusion (common/sky_occlusion.glsl): off folds every call below to visibility 1.
+layout(constant_id = SPEC_SKY_OCCLUSION) const bool kSkyOcclusion = false;
 
 layout(binding = LIGHTING_BINDING_GBUFFER_BASE_COLOR) uniform sampler2D gbufferBaseColor;
 layout(binding = LIGHTING_BINDING_GBUFFER_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
@@ -398,12 +402,27 @@ vec3 referenceAmbient(AmbientTerms t, PixelShading px, ivec2 pixel) {
     return ambient / float(n);
 }
 
+// The share of the sky the pixel sees past the scene's static geometry (1 without sky
+// occlusion).
+SkyVisibility pixelSkyVisibility(PixelShading px) {
+    if (!kSkyOcclusion) return SkyVisibility(1.0, 1.0, px.N);
+    return skyVisibility(px.P, px.N, px.R, px.surface.roughness);
+}
+
 // Ambient light of the environment on the pixel's surface (cd/m^2 before sky intensity).
 // Without ambient occlusion, before the material's occlusion (the caller applies it).
 vec3 ambientRadiance(PixelShading px, ivec2 pixel) {
     vec3 ambient;
+    SkyVisibility sky = pixelSkyVisibility(px);
     if (kIblMode == kIblReference) {
         ambient = referenceAmbient(ambientTermsOf(px.surface), px, pixel);
+        if (kSkyOcclusion) ambient *= sky.diffuse;
+    } else if (kSkyOcclusion) {
+        vec4 sh[9] = irradianceSh;
+        ambient = occludedEnvironmentAmbient(px.surface, px.N, sky.bentNormal, px.V, sh,
+                                             prefilteredCube, push.prefilteredMipCount,
+                                             environmentBrdfLut, kIblMode == kIblMobile,
+                                             vec3(sky.diffuse), sky.specular);
     } else {
         vec4 sh[9] = irradianceSh;
         ambient = environmentAmbient(px.surface, px.N, px.V, sh, prefilteredCube,
@@ -416,6 +435,7 @@ vec3 ambientRadiance(PixelShading px, ivec2 pixel) {
                         : clearCoatAmbient(px.surface, px.V, prefilteredCube,
                                            push.prefilteredMipCount, environmentBrdfLut,
                                            kIblMode == kIblMobile);
+        if (kSkyOcclusion) coat *= sky.specular;
         // The mobile path's coat reflects by seed 001's fit: it takes what the fit gives it.
         float attenuation = px.coatAttenuation;
         if (kIblMode == kIblMobile) {
@@ -439,6 +459,14 @@ vec3 occludedAmbientRadiance(PixelShading px, ivec2 pixel, float occlusion) {
     float specularVisibility =
         environmentSpecularVisibility(kAoMode, push.aoIntensity, ao.w, horizonVisibility,
                                       saturate(dot(px.N, px.V)), px.surface.roughness, occlusion);
+    if (kSkyOcclusion) {
+        // Sky occlusion is the large scale, AO the small: both block, so they multiply, and
+        // the sky's blocked directions turn AO's bent normal further.
+        SkyVisibility sky = pixelSkyVisibility(px);
+        visibility *= sky.diffuse;
+        specularVisibility *= sky.specular;
+        bentNormal = safeNormalize(bentNormal + sky.bentNormal - px.N);
+    }
     visibility = min(visibility, occlusion);
     specularVisibility = min(specularVisibility, occlusion);
     AmbientTerms t = ambientTermsOf(px.surface);

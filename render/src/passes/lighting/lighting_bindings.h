@@ -42,5 +42,7 @@
 // Textured rect lights' image atlas (lights/area_light_textures.h).
 #define LIGHTING_BINDING_AREA_LIGHT_TEXTURES 27
 #define AREA_LIGHT_TEXTURE_BINDING LIGHTING_BINDING_AREA_LIGHT_TEXTURES
+// Sky occlusion's depth-map atlas (passes/sky_occlusion, common/sky_occlusion.glsl).
+#define LIGHTING_BINDING_SKY_OCCLUSION 28
 
 #endif

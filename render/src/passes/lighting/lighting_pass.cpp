@@ -54,6 +54,7 @@ std::vector<std::string> LightingFeatures::names() const {
     out.push_back(clustered ? "light_culling_clustered" : "light_culling_brute_force");
     if (countLightPairs) out.push_back("light_pair_counters");
     if (shadows) out.push_back("shadows");
+    if (skyOcclusion) out.push_back("sky_occlusion");
     if (ibl) out.push_back(std::string("ibl_") + iblModeName(*ibl));
     out.push_back(brdf == BrdfModel::Ue4 ? "brdf_ue4" : "brdf_energy_conserving");
     if (anisotropy) out.push_back("material_anisotropy");
@@ -105,6 +106,7 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
                   features.ao == AoMode::Gtao && features.aoSpecularFromHorizons
                       ? 3u
                       : uint32_t(features.ao));
+    constants.set(SPEC_SKY_OCCLUSION, features.skyOcclusion);
     const DescriptorBinding bindings[] = {
         {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -158,6 +160,8 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
         {LIGHTING_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_COMPUTE_BIT},
         {LIGHTING_BINDING_AREA_LIGHT_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+         VK_SHADER_STAGE_COMPUTE_BIT},
+        {LIGHTING_BINDING_SKY_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_COMPUTE_BIT},
     };
     pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
@@ -234,6 +238,7 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
         sampledImageWrite(LIGHTING_BINDING_LTC_MATRIX, &env.ltcMatrix),
         sampledImageWrite(LIGHTING_BINDING_LTC_MAGNITUDE, &env.ltcMagnitude),
         sampledImageWrite(LIGHTING_BINDING_AREA_LIGHT_TEXTURES, &env.areaLightTextures),
+        sampledImageWrite(LIGHTING_BINDING_SKY_OCCLUSION, &in.skyOcclusion),
     };
     Push push{toGpu(*in.grid),           in.directionalCount, in.skyIntensity,
               env.prefilteredMipCount,   in.referenceSamples, in.aoIntensity,

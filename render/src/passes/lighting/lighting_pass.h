@@ -41,6 +41,7 @@ struct LightingFeatures {
     bool materialExtensions() const { return anisotropy || clearCoat; }
     AoMode ao = AoMode::Off;              // only with ibl
     bool aoSpecularFromHorizons = false;  // GTAO's horizon-slice specular occlusion
+    bool skyOcclusion = false;            // the sky's light occluded (only with ibl)
 
     static constexpr uint32_t bit(content::LightType type) {
         return 1u << content::lightTypeIndex(type);
@@ -90,6 +91,8 @@ public:
         float aoIntensity = 1.0f;
         bool aoMultiBounce = true;
         const ShadowDescriptors* shadows = nullptr;  // the atlas and tables, or placeholders
+        // Sky occlusion's atlas (SkyOcclusionPass::descriptor), a placeholder when off.
+        VkDescriptorImageInfo skyOcclusion{};
     };
     void record(VkCommandBuffer cmd, const Inputs& inputs) const;
     static uint32_t workgroupCount(uint32_t width, uint32_t height);

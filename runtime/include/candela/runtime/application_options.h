@@ -72,6 +72,9 @@ struct ApplicationOptions {
     // --ssr; unset: the world's scene-file "ssr", else hiz (render/README.md "Screen-space
     // reflections" gives the cost; frames without a glossy surface declare no pass).
     std::optional<render::SsrMode> ssr;
+    // --sky-occlusion; unset: the world's scene-file "sky_occlusion", else on for frames whose
+    // scene has an atmosphere (render/README.md "Sky occlusion").
+    std::optional<render::SkyOcclusionMode> skyOcclusion;
     // --volumetrics; unset: volumes when the scene has a medium (render/README.md
     // "Volumetric lighting"), which is the only way a frame draws one.
     std::optional<render::VolumetricsMode> volumetrics;

@@ -57,6 +57,9 @@ public:
     std::optional<uint32_t> sceneMsaa() const { return sceneMsaa_; }
     // The screen-space reflections the last scene file asks for ("ssr"), if it names them.
     std::optional<content::SceneSsrMode> sceneSsr() const { return sceneSsr_; }
+    std::optional<content::SceneSkyOcclusionMode> sceneSkyOcclusion() const {
+        return sceneSkyOcclusion_;
+    }
     // Built-in scenes (the demo) ask for reflections as a scene file would.
     void setSceneSsr(std::optional<content::SceneSsrMode> mode) { sceneSsr_ = mode; }
     // The light shafts and volumetrics the last scene file asks for ("scattering",
@@ -120,6 +123,7 @@ private:
     std::optional<content::SceneSsrMode> sceneSsr_;
     std::optional<content::SceneScatteringMode> sceneScattering_;
     std::optional<content::SceneVolumetricsMode> sceneVolumetrics_;
+    std::optional<content::SceneSkyOcclusionMode> sceneSkyOcclusion_;
     std::optional<float> sceneBloom_;
     std::optional<content::SceneExposure> sceneExposure_;
     std::optional<float> sceneExposureCompensation_;

@@ -1,0 +1,217 @@
+#include "passes/sky_occlusion/sky_occlusion_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "candela/render/gpu_context.h"
+#include "candela/render/scene_resources.h"
+#include "mesh_vertex.h"
+#include "passes/sky_occlusion/sky_occlusion_directions.h"
+#include "shaders/shadow_depth.frag.spv.h"
+#include "shaders/shadow_depth.vert.spv.h"
+
+namespace candela::render {
+
+namespace {
+
+constexpr VkFormat kAtlasFormat = VK_FORMAT_D32_SFLOAT;
+constexpr VkImageLayout kRead = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+// Half-diagonal (m) under which a caster is left out: half GTAO's default 1.5 m radius.
+constexpr float kSmallCaster = 0.75f;
+
+uint64_t mix(uint64_t h, const void* data, size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < bytes; ++i)
+        h = (h ^ p[i]) * 1099511628211ull;  // FNV-1a
+    return h;
+}
+
+}  // namespace
+
+const char* skyOcclusionModeName(SkyOcclusionMode mode) {
+    switch (mode) {
+        case SkyOcclusionMode::Off:
+            return "off";
+        case SkyOcclusionMode::On:
+            return "on";
+        case SkyOcclusionMode::Reference:
+            return "reference";
+    }
+    return "off";
+}
+
+uint32_t skyOcclusionDirectionCount(SkyOcclusionMode mode) {
+    return mode == SkyOcclusionMode::Reference ? 256u : mode == SkyOcclusionMode::On ? 32u : 0u;
+}
+
+uint32_t skyOcclusionTileSize(SkyOcclusionMode) {
+    return 256u;
+}
+
+SkyOcclusionPass::SkyOcclusionPass(GpuContext& context)
+    : context_(context),
+      // Stored depth grows toward the sky: a texel lets the sky through when the receiver's
+      // stored depth is at least its own (the highest surface of its column).
+      compareSampler_(
+          context,
+          SamplerDesc{VK_FILTER_LINEAR, false, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                      VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, true, VK_COMPARE_OP_GREATER_OR_EQUAL}),
+      placeholder_(context, {kAtlasFormat, 1, 1, 1, false,
+                             VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}) {
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+        transitionImage(cmd, placeholder_, VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
+                        VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        const VkClearDepthStencilValue zero{};
+        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+        vkCmdClearDepthStencilImage(cmd, placeholder_.handle(),
+                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &all);
+        transitionImage(
+            cmd, placeholder_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kRead,
+            VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+            VK_ACCESS_2_SHADER_READ_BIT);
+    });
+}
+
+SkyOcclusionPass::~SkyOcclusionPass() = default;
+
+bool SkyOcclusionPass::prepare(const FrameScene& scene, const SceneResources& resources,
+                               SkyOcclusionMode mode) {
+    rendersThisFrame_ = false;
+    casters_.clear();
+    if (mode == SkyOcclusionMode::Off) return false;
+    // Casters: the static opaque and masked surfaces at least kSmallCaster in size (blended
+    // ones let the sky through; skinned or morphed ones move every frame and, like the small
+    // ones, are left to screen-space AO).
+    struct Box {
+        glm::vec3 lo, hi;
+    };
+    std::vector<Box> boxes;
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    uint64_t key = 1469598103934665603ull;
+    for (uint32_t d = 0; d < scene.draws.size(); ++d) {
+        const DrawItem& draw = scene.draws[d];
+        const GpuMesh& mesh = resources.mesh(draw.mesh);
+        if (mesh.indexCount == 0 || draw.deformedVertices != VK_NULL_HANDLE) continue;
+        if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
+        const auto [centre, extent] = resources.meshSpaceBounds(draw);
+        const glm::vec3 c = glm::vec3(draw.world * glm::vec4(centre, 1.0f));
+        const glm::mat3 m(draw.world);
+        const glm::vec3 e =
+            glm::abs(m[0]) * extent.x + glm::abs(m[1]) * extent.y + glm::abs(m[2]) * extent.z;
+        // Small casters (half-diagonal under kSmallCaster) are screen-space AO's scale; drawing
+        // them n times would cost more than the sky light they block at the maps' texel size.
+        if (glm::length(e) < kSmallCaster) continue;
+        boxes.push_back({c - e, c + e});
+        lo = glm::min(lo, c - e);
+        hi = glm::max(hi, c + e);
+        casters_.push_back(d);
+        key = mix(key, &draw.mesh, sizeof(draw.mesh));
+        key = mix(key, &draw.world, sizeof(draw.world));
+    }
+    if (casters_.empty()) return false;
+    // The sphere: around the casters above the lowest level of the scene. A ground plane
+    // (a caster lying at the bottom) blocks no sky for what stands on it, and a wide meadow
+    // would spread the maps' texels thin; it is still drawn where it falls in the maps.
+    glm::vec3 standingLo(1e30f), standingHi(-1e30f);
+    for (const Box& b : boxes) {
+        if (b.hi.y <= lo.y + 0.05f * std::max(hi.y - lo.y, 1e-3f)) continue;
+        standingLo = glm::min(standingLo, b.lo);
+        standingHi = glm::max(standingHi, b.hi);
+    }
+    if (standingLo.x > standingHi.x) {
+        standingLo = lo;
+        standingHi = hi;
+    }
+    const glm::vec3 centre = 0.5f * (standingLo + standingHi);
+    const float radius = std::max(0.5f * glm::length(standingHi - standingLo), 1e-2f);
+    sphere_ = glm::vec4(centre, radius);
+
+    directions_ = skyOcclusionDirectionCount(mode);
+    tileSize_ = skyOcclusionTileSize(mode);
+    tilesPerRow_ = uint32_t(std::ceil(std::sqrt(float(directions_))));
+    const uint32_t size = tilesPerRow_ * tileSize_;
+    if (!atlas_.handle() || atlas_.desc().width != size) {
+        atlas_ = GpuImage(
+            context_, {kAtlasFormat, size, size, 1, false,
+                       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
+        atlasHoldsMaps_ = false;
+    }
+    key = mix(key, &sphere_, sizeof(sphere_));
+    key = mix(key, &directions_, sizeof(directions_));
+    rendersThisFrame_ = !atlasHoldsMaps_ || key != key_;
+    key_ = key;
+    return true;
+}
+
+void SkyOcclusionPass::record(VkCommandBuffer cmd, const FrameScene& scene,
+                              const SceneResources& resources) {
+    const uint32_t size = atlas_.desc().width;
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = atlas_.view();
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {0.0f, 0};  // 0: nothing between the texel and the sky
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {size, size}};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &rendering);
+    if (!pipeline_.handle()) {  // built for the first frame that renders maps
+        GraphicsPipelineDesc desc;
+        desc.vertexSpirv = shadow_depth_vert_spv;  // the shadow maps' depth-only draw
+        desc.fragmentSpirv = shadow_depth_frag_spv;
+        desc.vertexBindings = {{0, sizeof(MeshVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+        desc.vertexAttributes = {
+            {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(MeshVertex, position)}};
+        desc.depthFormat = kAtlasFormat;
+        desc.depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;
+        desc.depthWrite = true;
+        desc.cullMode = VK_CULL_MODE_NONE;  // a roof's single-sided surface blocks from both sides
+        pipeline_ = Pipeline::graphics(context_, desc, {}, sizeof(glm::mat4));
+    }
+    pipeline_.bind(cmd);
+    const glm::vec3 centre(sphere_);
+    for (uint32_t i = 0; i < directions_; ++i) {
+        const glm::mat4 view =
+            skyOcclusionView(skyOcclusionDirection(i, directions_), centre, sphere_.w);
+        const VkRect2D rect{
+            {int32_t((i % tilesPerRow_) * tileSize_), int32_t((i / tilesPerRow_) * tileSize_)},
+            {tileSize_, tileSize_}};
+        const VkViewport viewport{float(rect.offset.x),
+                                  float(rect.offset.y),
+                                  float(tileSize_),
+                                  float(tileSize_),
+                                  0.0f,
+                                  1.0f};
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &rect);
+        for (uint32_t d : casters_) {
+            const DrawItem& draw = scene.draws[d];
+            const GpuMesh& mesh = resources.mesh(draw.mesh);
+            const glm::mat4 worldToClip = view * draw.world;
+            pipeline_.pushConstants(cmd, &worldToClip, sizeof(worldToClip));
+            const VkDeviceSize offset = 0;
+            const VkBuffer vertexBuffer = resources.vertexBufferOf(draw);
+            vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+            vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+        }
+    }
+    vkCmdEndRendering(cmd);
+    atlasHoldsMaps_ = true;
+    ++rebuilds_;
+}
+
+VkDescriptorImageInfo SkyOcclusionPass::descriptor(bool enabled) const {
+    return {compareSampler_.handle(), enabled ? atlas_.view() : placeholder_.view(), kRead};
+}
+
+glm::uvec4 SkyOcclusionPass::layout() const {
+    return {directions_, tilesPerRow_, tileSize_, tilesPerRow_ * tileSize_};
+}
+
+}  // namespace candela::render
