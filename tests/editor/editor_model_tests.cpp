@@ -252,7 +252,7 @@ TEST_F(EditorModel, SaveKeepsTheScenesBrdfSetting) {
 }
 
 // Issue 24: so are "aa", "msaa", "bloom", "exposure" and "exposure_compensation", and the
-// light shafts' and volumetrics' modes (issues 16, 17).
+// light shafts', volumetrics' and sky occlusion's modes (issues 16, 17, 24).
 TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     content::SceneDocument settings;
     settings.aa = content::SceneAntiAliasing::Fxaa;
@@ -262,6 +262,7 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     settings.exposureCompensation = 0.5f;
     settings.scattering = content::SceneScatteringMode::Off;
     settings.volumetrics = content::SceneVolumetricsMode::Reference;
+    settings.skyOcclusion = content::SceneSkyOcclusionMode::Off;
     scene->setSceneFrameSettings(settings);
     ASSERT_TRUE(setLumens("lamp", 900.0f));
     const content::SceneDocument doc = saveAndLoad(dir / "saved" / "settings.scene.json");
@@ -272,6 +273,7 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     EXPECT_EQ(doc.exposureCompensation, 0.5f);
     EXPECT_EQ(doc.scattering, content::SceneScatteringMode::Off);
     EXPECT_EQ(doc.volumetrics, content::SceneVolumetricsMode::Reference);
+    EXPECT_EQ(doc.skyOcclusion, content::SceneSkyOcclusionMode::Off);
 }
 
 // Issue 25: the scene-wide "ambient_occlusion" the inspector edits is saved, and an edit of

@@ -772,6 +772,8 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
                 reader.enumeration(root, "", "volumetrics", kSceneVolumetricsModes, volumetrics);
             })) {
             scene.volumetrics = volumetrics;
+        }
+    }
     if (root.contains("sky_occlusion")) {
         SceneSkyOcclusionMode mode = SceneSkyOcclusionMode::Off;
         if (reader.clean([&] {
