@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
+#include "volumetric_view_ray.glsl"
 // Per-light volumes, step 1 (seed 004 §3), at half resolution: each pixel's view ray (through
 // the full-resolution pixel 2q and ending at its depth) crosses each light's volume (a
 // sphere, a cone or, for the sun, the whole screen: light_volume.glsl) and marches the
@@ -31,8 +32,8 @@ layout(binding = VOLUMETRICS_BINDING_VOLUMES_MARCHED, rgba32f) uniform writeonly
 
 // 4x4 ordered dither (Bayer), in sixteenths: neighbouring pixels start their march at
 // offsets that a 4x4 neighbourhood covers evenly, so the blur turns 16 steps into 256.
-const float kBayer4x4[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0,
-                                      9.0, 15.0, 7.0, 13.0, 5.0);
+const float kBayer4x4[16] =
+    float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
 
 const uint kTileThreads = 64u;
 // The tile's frustum: four planes through the camera (inward normals), and the farthest ray
@@ -46,7 +47,7 @@ shared bool tileHit[kTileThreads];
 // World direction (not unit) of the ray through full-resolution pixel coordinate `at`.
 vec3 rayThrough(vec2 at, vec2 size) {
     vec2 ndc = at / size * 2.0 - 1.0;
-    vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    vec4 nearPoint = vec4(unjitteredNearPoint(ndc), 1.0);
     return nearPoint.xyz / nearPoint.w - camera.cameraPosition.xyz;
 }
 
@@ -99,8 +100,8 @@ vec3 marchSegment(uint i, Light light, vec3 origin, vec3 direction, vec2 segment
         float sigmaT = (push.medium.x + push.medium.y) * density;
         vec3 lit = lightInScatteringUnshadowed(light, i, P, -direction, sigmaT, 0.0);
         if (shadowed) lit *= inCascade ? mediumShadowInView(view, P) : mediumShadow(light, i, P);
-        radiance += lit * (push.medium.x * density *
-                           exp(-viewOpticalDepth(origin, direction, t)) * dt);
+        radiance +=
+            lit * (push.medium.x * density * exp(-viewOpticalDepth(origin, direction, t)) * dt);
     }
     return radiance;
 }
@@ -140,7 +141,7 @@ void main() {
     ivec2 pixel = min(half_ * 2, size - 1);
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
     vec3 origin = camera.cameraPosition.xyz;
-    vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    vec4 nearPoint = vec4(unjitteredNearPoint(ndc), 1.0);
     vec3 perDepth = (nearPoint.xyz / nearPoint.w - origin) / push.range.y;
     float depth = texelFetch(gbufferDepth, pixel, 0).r;
     // Reverse-Z: view depth = near / depth; 0 is the background, marched to the far distance.
@@ -157,7 +158,8 @@ void main() {
         vec3 centre = c00 + c10 + c11 + c01;
         vec3 planes[4] = vec3[4](normalize(cross(c00, c10)), normalize(cross(c10, c11)),
                                  normalize(cross(c11, c01)), normalize(cross(c01, c00)));
-        for (int k = 0; k < 4; ++k) tilePlanes[k] = dot(planes[k], centre) < 0.0 ? -planes[k] : planes[k];
+        for (int k = 0; k < 4; ++k)
+            tilePlanes[k] = dot(planes[k], centre) < 0.0 ? -planes[k] : planes[k];
         tileFarBits = 0u;
     }
     barrier();
@@ -185,8 +187,8 @@ void main() {
                 }
                 vec2 segment = lightVolumeSegment(light, origin, direction, surfaceT);
                 if (segment.x >= segment.y) continue;
-                radiance += marchSegment(i, light, origin, direction, segment, steps, dither,
-                                         false, none, true);
+                radiance += marchSegment(i, light, origin, direction, segment, steps, dither, false,
+                                         none, true);
             }
             barrier();
         }
