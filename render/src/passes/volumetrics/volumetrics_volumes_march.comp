@@ -78,7 +78,7 @@ vec4 lightBoundingSphere(Light light) {
 bool lightReachesTile(uint i) {
     if (lightScales[i] <= 0.0) return false;
     vec4 sphere = lightBoundingSphere(loadLight(i, push.lights.y));
-    if (sphere.w <= 0.0) return true;
+    if (sphere.w <= 0.0 || push.range.w > 0.5) return true;
     vec3 c = sphere.xyz - camera.cameraPosition.xyz;
     for (int k = 0; k < 4; ++k) {
         if (dot(tilePlanes[k], c) < -sphere.w) return false;
