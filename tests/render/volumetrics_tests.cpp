@@ -274,7 +274,8 @@ TEST_F(Volumetrics, ShadowsCarveTheMediumBehindABox) {
 // Lambertian emitter): at each point of the medium in front of it, E is the irradiance of a
 // surface facing its centre (the sum over 32 x 20 patches of L cos_e cos_r / d^2 dA, cos_r
 // clamped at the horizon as the exact form factor clips it), and nothing behind it. Scattered
-// as a point (the old way) it misses the integral by far more and lights the medium behind.
+// as a point (the old way: its luminance as a point intensity at the centre) it misses the
+// integral and lights the medium behind too.
 // 64x64, every second pixel of the right half.
 TEST_F(Volumetrics, ARectLightScattersAsAnAreaLight) {
     TestScene scene = wallScene(black());
