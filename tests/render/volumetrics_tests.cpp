@@ -11,6 +11,8 @@
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "candela/render/gpu_context.h"
 #include "test_scene.h"
@@ -268,6 +270,149 @@ TEST_F(Volumetrics, ShadowsCarveTheMediumBehindABox) {
     }
 }
 
+// A 1 x 0.6 m rect light 3 m ahead, edge-on to the camera and facing +X (issue 15's one-sided
+// Lambertian emitter): at each point of the medium in front of it, E is the irradiance of a
+// surface facing its centre (the sum over 32 x 20 patches of L cos_e cos_r / d^2 dA, cos_r
+// clamped at the horizon as the exact form factor clips it), and nothing behind it. Scattered
+// as a point (the old way: its luminance as a point intensity at the centre) it misses the
+// integral and lights the medium behind too.
+// 64x64, every second pixel of the right half.
+TEST_F(Volumetrics, ARectLightScattersAsAnAreaLight) {
+    TestScene scene = wallScene(black());
+    scene.width = scene.height = 64;
+    LightInstance rect;
+    rect.light.type = content::LightType::Rect;
+    rect.light.lumens = 2000.0f;
+    rect.light.attenuationRadius = 8.0f;
+    rect.light.width = 1.0f;   // along tubeAxis, world Z
+    rect.light.height = 0.6f;  // world Y
+    rect.position = {0.0f, 0.0f, -3.0f};
+    rect.direction = {1.0f, 0.0f, 0.0f};
+    rect.tubeAxis = {0.0f, 0.0f, 1.0f};
+    scene.lights.push_back(rect);
+    content::Fog fog;
+    fog.scattering = 0.05f;
+    fog.absorption = 0.01f;
+    fog.anisotropy = 0.3f;
+    const double sigmaT = double(fog.scattering) + fog.absorption;
+    const double luminance = rect.light.lumens / (std::numbers::pi * 1.0 * 0.6);
+    const glm::dvec3 centre(rect.position), normal(rect.direction);
+    auto irradiance = [&](const glm::dvec3& p) {
+        const glm::dvec3 toCentre = centre - p;
+        const double d2c = glm::dot(toCentre, toCentre);
+        const double ratio2 = d2c / (8.0 * 8.0);
+        const double window = std::pow(std::max(0.0, 1.0 - ratio2 * ratio2), 2.0);
+        if (window <= 0.0 || glm::dot(p - centre, normal) <= 0.0) return 0.0;
+        const glm::dvec3 facing = toCentre / std::sqrt(d2c);
+        const int nz = 32, ny = 20;
+        const double dA = (1.0 / nz) * (0.6 / ny);
+        double e = 0.0;
+        for (int j = 0; j < ny; ++j) {
+            for (int i = 0; i < nz; ++i) {
+                const glm::dvec3 q =
+                    centre + glm::dvec3(0.0, -0.3 + (j + 0.5) * 0.6 / ny, -0.5 + (i + 0.5) / nz);
+                const glm::dvec3 d = p - q;
+                const double d2 = glm::dot(d, d);
+                const double cosEmit = glm::dot(normal, d) / std::sqrt(d2);
+                const double cosReceive = std::max(0.0, -glm::dot(facing, d) / std::sqrt(d2));
+                e += cosEmit * cosReceive / d2 * dA;
+            }
+        }
+        return luminance * window * e;
+    };
+    SceneResources resources(context);
+    FrameInputs inputs = scene.prepare(resources);
+    inputs.scene.fog = fog;
+    for (VolumetricsMode mode : {VolumetricsMode::Reference, VolumetricsMode::Volumes}) {
+        SCOPED_TRACE(volumetricsModeName(mode));
+        RendererOptions options;
+        options.volumetrics = mode;
+        const CapturedFrame frame =
+            renderOffscreen(context, inputs, scene.width, scene.height, 1, &resources, options);
+        ASSERT_EQ(frame.nonFiniteHdrValues(), 0u);
+        double error = 0.0, total = 0.0, behind = 0.0;
+        uint32_t counted = 0;
+        for (uint32_t y = 0; y < scene.height; y += 2) {
+            for (uint32_t x = 0; x < scene.width; x += 2) {
+                const glm::dvec3 ray(pixelRay(scene, x, y));
+                const double seen = hdrPixel(frame, x, y)[1];
+                if (ray.x < 0.0) {
+                    // Behind the emitter (left of its plane x = 0, away from the blur's
+                    // reach across the middle).
+                    if (x + 8 < scene.width / 2) behind = std::max(behind, seen);
+                    continue;
+                }
+                const int steps = 200;
+                const double dt = kWallDistance / -ray.z / steps;
+                double expected = 0.0;
+                for (int i = 0; i < steps; ++i) {
+                    const double t = (i + 0.5) * dt;
+                    const glm::dvec3 p = ray * t;
+                    const double cosTheta = glm::dot(glm::normalize(p - centre), -ray);
+                    expected += fog.scattering * henyeyGreenstein(float(cosTheta), fog.anisotropy) *
+                                irradiance(p) * std::exp(-sigmaT * (glm::length(p - centre) + t)) *
+                                dt;
+                }
+                error += std::abs(seen - expected);
+                total += expected;
+                ++counted;
+            }
+        }
+        std::printf("%s: rect light %.3f%% mean absolute error, behind it at most %g\n",
+                    volumetricsModeName(mode), 100.0 * error / total, behind);
+        EXPECT_LT(error / total, mode == VolumetricsMode::Reference ? 0.02 : 0.10);
+        EXPECT_LT(behind, 1e-3 * total / counted) << "the medium behind the emitter is unlit";
+    }
+}
+
+// The sun's volume is the whole screen, marched cascade by cascade through its shadow maps: a
+// black slab over the left half (x < 0) of the space in front of the camera keeps the sun,
+// straight down, off the medium below it, so the lower-left pixels' fog is dark while their
+// mirror images on the right keep theirs; without shadows the two sides match. The per-light
+// volumes only: the reference looks each sample's cascade up (mediumShadow), as before.
+TEST_F(Volumetrics, TheSunsCascadesCarveItsShaftsInTheMedium) {
+    TestScene scene = wallScene(black());
+    scene.width = scene.height = 64;
+    scene.add(content::makeBox({5.0f, 0.05f, 5.0f}), black(),
+              glm::translate(glm::mat4(1.0f), glm::vec3(-5.0f, 0.8f, -4.0f)));
+    LightInstance sun;
+    sun.light.type = content::LightType::Directional;
+    sun.light.lux = 10000.0f;
+    sun.direction = {0.0f, -1.0f, 0.0f};
+    scene.lights.push_back(sun);
+    SceneResources resources(context);
+    FrameInputs inputs = scene.prepare(resources);
+    content::Fog fog;
+    fog.scattering = 0.05f;
+    inputs.scene.fog = fog;
+    // Mean green of the lower-left block and of its mirror image on the right.
+    auto sides = [&](const CapturedFrame& f) {
+        double left = 0.0, right = 0.0;
+        for (uint32_t y = 40; y < 56; ++y) {
+            for (uint32_t x = 4; x < 24; ++x) {
+                left += hdrPixel(f, x, y)[1];
+                right += hdrPixel(f, scene.width - 1 - x, y)[1];
+            }
+        }
+        return left / right;
+    };
+    {
+        const VolumetricsMode mode = VolumetricsMode::Volumes;  // the cascade-by-cascade march
+        SCOPED_TRACE(volumetricsModeName(mode));
+        RendererOptions options;
+        options.volumetrics = mode;
+        FrameSequence frames(context, scene.width, scene.height, options);
+        scene.lights[0].light.castShadows = false;
+        const double lit = sides(frames.render(inputs, resources));
+        scene.lights[0].light.castShadows = true;
+        const double shadowed = sides(frames.render(inputs, resources));
+        std::printf("%s: sunlit fog left / right %.3f, with the slab's shadow %.3f\n",
+                    volumetricsModeName(mode), lit, shadowed);
+        EXPECT_NEAR(lit, 1.0, 0.03);
+        EXPECT_LT(shadowed, 0.2);
+    }
+}
+
 // Stability: with the camera still (no TAA jitter), each of 8 frames differs from the one
 // before by under 2% at every pixel, leaving out the rays that pass within 0.25 m of the light
 // as the integral test does. The per-light volumes' Bayer offsets are fixed to the screen and
@@ -296,10 +441,16 @@ TEST_F(Volumetrics, AStaticCameraSeesAStableMediumOverEightFrames) {
                 glm::length(toLight - ray * glm::dot(toLight, ray)) >= 0.25f;
         }
     }
-    for (VolumetricsMode mode : {VolumetricsMode::Volumes, VolumetricsMode::Froxels}) {
-        SCOPED_TRACE(volumetricsModeName(mode));
+    const std::pair<VolumetricsMode, AntiAliasing> cases[] = {
+        {VolumetricsMode::Volumes, AntiAliasing::Off},
+        {VolumetricsMode::Froxels, AntiAliasing::Off},
+        {VolumetricsMode::Volumes, AntiAliasing::Taa},
+        {VolumetricsMode::Froxels, AntiAliasing::Taa}};
+    for (const auto& [mode, aa] : cases) {
+        SCOPED_TRACE(std::string(volumetricsModeName(mode)) + ", --aa " + antiAliasingName(aa));
         RendererOptions options;
         options.volumetrics = mode;
+        options.aa = aa;
         FrameSequence frames(context, scene.width, scene.height, options);
         CapturedFrame previous = frames.render(inputs, resources);
         double worst = 0.0;
@@ -312,8 +463,8 @@ TEST_F(Volumetrics, AStaticCameraSeesAStableMediumOverEightFrames) {
             }
             previous = next;
         }
-        std::printf("%s: largest change from one frame to the next %.3f%%\n",
-                    volumetricsModeName(mode), 100.0 * worst);
+        std::printf("%s, --aa %s: largest change from one frame to the next %.3f%%\n",
+                    volumetricsModeName(mode), antiAliasingName(aa), 100.0 * worst);
         EXPECT_LT(worst, 0.02);
     }
 }

@@ -29,33 +29,69 @@ float henyeyGreenstein(float cosTheta, float g) {
     return (1.0 - g2) / (4.0 * PI * denominator * sqrt(denominator));
 }
 
+// Lit fraction at P in one shadow view (a cascade the caller chose): one unfiltered lookup.
+// 1 outside the view's map.
+float mediumShadowInView(ShadowView v, vec3 P) {
+    if (!kShadowsEnabled) return 1.0;
+    vec4 clip = v.worldToClip * vec4(P, 1.0);
+    if (clip.w <= 0.0) return 1.0;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    float receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
+                         ? v.params.w - clip.z * (v.params.w - v.params.z)
+                         : clip.w;
+    float blocker = shadowBlockerDepth(v, ivec2(floor(v.tile.xy + uv * v.tile.z)));
+    float texel = shadowTexelWorld(v, max(receiver, 1e-4));
+    return receiver - kShadowDepthBias * texel <= blocker ? 1.0 : 0.0;
+}
+
 // Lit fraction of a light at P in the medium: one unfiltered lookup in its map (seed 004 §3:
 // the many samples along a ray filter it anyway). 1 without a map or outside it.
 float mediumShadow(Light light, uint index, vec3 P) {
     if (!kShadowsEnabled) return 1.0;
     ShadowView v;
-    float receiver, blocker;
-    if (!shadowMapLookup(light, index, P, v, receiver, blocker)) return 1.0;
-    float texel = shadowTexelWorld(v, max(receiver, 1e-4));
-    return receiver - kShadowDepthBias * texel <= blocker ? 1.0 : 0.0;
+    if (!shadowViewAt(light, index, P, v)) return 1.0;
+    return mediumShadowInView(v, P);
 }
 
-// Radiance scattered toward the camera per metre at P by one light, per unit sigma_s:
-// p(theta) * E * T_light, E the light's irradiance at P (eq. 9 falloff, spot cone; sources
-// as points) and T_light the transmittance from a local light to P (the density at P along
-// the whole leg). toCamera: unit, from P to the camera. P stands for a ball of radius
-// `sampleRadius` (a froxel; 0 for a point): a light inside it gets the ball's mean inverse
-// square, 3 / r^2 at its centre, instead of a spike that one sample would spread over the
-// whole froxel.
-vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT, float sampleRadius) {
+// Irradiance at P from a rect or disk light (issue 15), as the seed's white diffuse surface
+// facing the light sees it: the same exact form factor the surfaces' "ltc" diffuse uses
+// (area_lights.glsl's areaExactDiffuse) on a surface at P whose normal points at the light's
+// centre, times its luminance and falloff window (and the constant-intensity factor of an
+// emitter so marked). Zero behind the one-sided emitter.
+vec3 areaLightIrradiance(Light light, vec3 P) {
+    AreaShape s = areaShapeOf(light);
+    vec3 toCenter = s.center - P;
+    float window = attenuationWindow(dot(toCenter, toCenter), light.invAttenuationRadius);
+    if (window <= 0.0) return vec3(0.0);
+    float e = areaExactDiffuse(s, P, safeNormalize(toCenter));
+    if ((uint(light.spotOffset) & kAreaEmissionConstantIntensity) != 0u) {
+        e *= constantIntensityDiffuseFactor(s, P);
+    }
+    return light.intensity * (window * e);
+}
+
+// Radiance scattered toward the camera per metre at P by one light, per unit sigma_s, before
+// its shadow: p(theta) * E * T_light, E the light's irradiance at P (eq. 9 falloff, spot cone;
+// rect and disk lights as the area lights they are, areaLightIrradiance) and T_light the
+// transmittance from a local light to P (the density at P along the whole leg). toCamera: unit,
+// from P to the camera. P stands for a ball of radius `sampleRadius` (a froxel; 0 for a
+// point): a point light inside it gets the ball's mean inverse square, 3 / r^2 at its centre,
+// instead of a spike that one sample would spread over the whole froxel.
+vec3 lightInScatteringUnshadowed(Light light, uint index, vec3 P, vec3 toCamera, float sigmaT,
+                                 float sampleRadius) {
     float scale = lightScales[index];
     if (scale <= 0.0) return vec3(0.0);
-    Light light = loadLight(index, push.lights.y);
     vec3 irradiance;
     vec3 travel;
     if (light.type == kLightDirectional) {
         travel = light.direction;
         irradiance = light.intensity;
+    } else if (light.type == LIGHT_TYPE_RECT || light.type == LIGHT_TYPE_DISK) {
+        vec3 d = P - light.position;
+        float distance = length(d);
+        travel = distance > 1e-6 ? d / distance : light.direction;
+        irradiance = areaLightIrradiance(light, P) * exp(-sigmaT * distance);
     } else {
         vec3 d = P - light.position;
         float distanceSq = dot(d, d);
@@ -68,7 +104,16 @@ vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT, float sa
         if (light.type == kLightSpot) irradiance *= spotAttenuation(light, -travel);
     }
     float phase = henyeyGreenstein(dot(travel, toCamera), push.medium.z);
-    return irradiance * (scale * phase * mediumShadow(light, index, P));
+    return irradiance * (scale * phase);
+}
+
+// lightInScatteringUnshadowed with the light's shadow at P (mediumShadow).
+vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT, float sampleRadius) {
+    if (lightScales[index] <= 0.0) return vec3(0.0);
+    Light light = loadLight(index, push.lights.y);
+    vec3 lit = lightInScatteringUnshadowed(light, index, P, toCamera, sigmaT, sampleRadius);
+    if (all(equal(lit, vec3(0.0)))) return lit;
+    return lit * mediumShadow(light, index, P);
 }
 
 // The in-scattering at P (a ball of radius sampleRadius) of the batch of lights the push

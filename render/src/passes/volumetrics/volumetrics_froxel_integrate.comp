@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
+#include "volumetric_view_ray.glsl"
 // Froxels, step 2: each column of the grid integrates its froxels front to back, storing at
 // each slice's far boundary the radiance scattered toward the camera from the near plane to
 // there and the transmittance over that distance.
@@ -21,7 +22,7 @@ void main() {
     uvec2 column = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(column, push.grid.xy))) return;
     vec2 ndc = (vec2(column) + 0.5) / vec2(push.grid.xy) * 2.0 - 1.0;
-    vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    vec4 nearPoint = vec4(unjitteredNearPoint(ndc), 1.0);
     // Metres along the ray per metre of view depth.
     float stretch = length(nearPoint.xyz / nearPoint.w - camera.cameraPosition.xyz) / push.range.y;
     vec3 radiance = vec3(0.0);

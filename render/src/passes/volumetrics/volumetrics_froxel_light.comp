@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
+#include "volumetric_view_ray.glsl"
 // Froxels, step 1: each froxel of the view-aligned grid (exponential depth slices) lights the
 // medium at its centre from the lights that reach it, with shadows, and stores (radiance
 // scattered toward the camera per metre, extinction per metre).
@@ -26,7 +27,7 @@ shared bool clusterHit[kClusterThreads];
 
 // World position at view depth d on the ray through the near plane's ndc point.
 vec3 pointAt(vec2 ndc, float d) {
-    vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    vec4 nearPoint = vec4(unjitteredNearPoint(ndc), 1.0);
     vec3 origin = camera.cameraPosition.xyz;
     return origin + (nearPoint.xyz / nearPoint.w - origin) * (d / push.range.y);
 }
@@ -67,15 +68,14 @@ void main() {
     uvec3 g = min(f, push.grid.xyz - 1u);
     vec2 ndc = (vec2(g.xy) + 0.5) / vec2(push.grid.xy) * 2.0 - 1.0;
     vec3 origin = camera.cameraPosition.xyz;
-    vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    vec4 nearPoint = vec4(unjitteredNearPoint(ndc), 1.0);
     vec3 perDepth = (nearPoint.xyz / nearPoint.w - origin) / push.range.y;
     float near = sliceBoundaryDepth(float(g.z));
     float far = sliceBoundaryDepth(float(g.z + 1u));
     float d = 0.5 * (near + far);
     vec3 P = origin + perDepth * d;
     // Half the froxel's larger side: across (to the next column's ray) or along the view.
-    vec4 nextPoint = camera.inverseViewProjection *
-                     vec4(ndc + vec2(2.0 / float(push.grid.x), 0.0), 1.0, 1.0);
+    vec4 nextPoint = vec4(unjitteredNearPoint(ndc + vec2(2.0 / float(push.grid.x), 0.0)), 1.0);
     vec3 nextPerDepth = (nextPoint.xyz / nextPoint.w - origin) / push.range.y;
     float radius = 0.5 * max(d * length(nextPerDepth - perDepth), (far - near) * length(perDepth));
     vec3 toCamera = -normalize(perDepth);

@@ -25,7 +25,7 @@ namespace {
 // Matches the push block of volumetrics_push.glsl.
 struct VolumetricsPush {
     glm::vec4 medium;   // sigma_s, sigma_a, g, height falloff
-    glm::vec4 range;    // base height, near, far, unused
+    glm::vec4 range;    // base height, near, far, 1: volumes list every light in every tile
     glm::uvec4 grid;    // froxels x, y, slices, reference steps
     glm::uvec4 lights;  // count, capacity
 };
@@ -50,7 +50,7 @@ VolumetricsPush pushFor(const VolumetricsPass::Inputs& in, uint32_t steps) {
     const float farPlane = farOf(in);
     return {
         glm::vec4(in.fog.scattering, in.fog.absorption, in.fog.anisotropy, in.fog.heightFalloff),
-        glm::vec4(in.fog.baseHeight, nearPlane, farPlane, 0.0f),
+        glm::vec4(in.fog.baseHeight, nearPlane, farPlane, in.settings.volumeTiles ? 0.0f : 1.0f),
         glm::uvec4(in.grid, std::max(steps, 1u)),
         glm::uvec4(in.lightCount, in.lightCapacity, 0u, 0u)};
 }

@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
+#include "volumetric_view_ray.glsl"
 // Reference volumetric lighting, for measurement (render/README.md "Volumetric lighting"):
 // every pixel marches its view ray from the camera to the surface (or the far distance) in
 // `grid.w` equal steps, each lit by every light with its shadow, and attenuates the lit
@@ -19,7 +20,7 @@ void main() {
     if (pixel.x >= int(size.x) || pixel.y >= int(size.y)) return;
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
     vec3 origin = camera.cameraPosition.xyz;
-    vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    vec4 nearPoint = vec4(unjitteredNearPoint(ndc), 1.0);
     // Per metre of view depth (its view depth is the near plane's).
     vec3 perDepth = (nearPoint.xyz / nearPoint.w - origin) / push.range.y;
     float depth = texelFetch(gbufferDepth, pixel, 0).r;

@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
+#include "volumetric_view_ray.glsl"
 // Per-light volumes, step 3 (seed 004 §3): a bilateral upsample of the blurred half-resolution
 // in-scattering onto the frame, and the view leg's transmittance on the surface behind:
 // hdr = hdr * T + L. Half-resolution pixel q holds full-resolution pixel 2q's ray, so pixel p
@@ -49,7 +50,7 @@ void main() {
     vec3 radiance = weights > 1e-4 ? sum / weights : nearest;
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
     vec3 origin = camera.cameraPosition.xyz;
-    vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+    vec4 nearPoint = vec4(unjitteredNearPoint(ndc), 1.0);
     vec3 perDepth = (nearPoint.xyz / nearPoint.w - origin) / push.range.y;
     float transmittance =
         exp(-viewOpticalDepth(origin, normalize(perDepth), viewDepth * length(perDepth)));
