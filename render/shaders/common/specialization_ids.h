@@ -33,6 +33,9 @@
 #define SPEC_SHADOWS_ENABLED 34
 // Lighting pass: sky occlusion of the sky's light (common/sky_occlusion.glsl).
 #define SPEC_SKY_OCCLUSION 35
+// Volumetrics: the frame has rect or disk lights, lit in the medium by their exact form factor;
+// its code alone, never run, made the per-light march 10x slower on lavapipe.
+#define SPEC_MEDIUM_AREA_LIGHTS 36
 // assign_lights.comp: the counting or the writing walk.
 #define SPEC_ASSIGN_WRITE_PASS 40
 

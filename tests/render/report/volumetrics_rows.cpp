@@ -56,14 +56,13 @@ struct Rendered {
 };
 
 Rendered renderMode(GpuContext& gpu, TestScene& scene, const content::Fog& fog,
-                    VolumetricsMode mode, uint32_t repetitions, bool volumeTiles = true) {
+                    VolumetricsMode mode, uint32_t repetitions) {
     SceneResources resources(gpu);
     FrameInputs inputs = scene.prepare(resources);
     inputs.scene.fog = fog;
     RendererOptions options;
     options.volumetrics = mode;
     options.volumetricsSettings.referenceSteps = 128;
-    options.volumetricsSettings.volumeTiles = volumeTiles;
     std::vector<double> ms;
     Rendered r;
     for (uint32_t i = 0; i < repetitions; ++i) {
@@ -91,7 +90,7 @@ void addVolumetricsRows(ReportContext& context) {
         quick ? std::vector<uint32_t>{1, 16} : std::vector<uint32_t>{1, 16, 256, 4096};
     struct Costs {
         uint32_t count;
-        double volumesMs, froxelsMs, untiledMs;
+        double volumesMs, froxelsMs;
     };
     std::vector<Costs> costs;
     for (uint32_t count : counts) {
@@ -101,9 +100,7 @@ void addVolumetricsRows(ReportContext& context) {
         TestScene scene = fogScene(size, count);
         const Rendered reference =
             renderMode(gpu, scene, fog, VolumetricsMode::Reference, repetitions);
-        // What the tiles save: the same volumes with every light listed in every tile.
-        Costs cost{count, 0.0, 0.0,
-                   renderMode(gpu, scene, fog, VolumetricsMode::Volumes, repetitions, false).ms};
+        Costs cost{count, 0.0, 0.0};
         for (VolumetricsMode mode : {VolumetricsMode::Volumes, VolumetricsMode::Froxels}) {
             const Rendered r = renderMode(gpu, scene, fog, mode, repetitions);
             (mode == VolumetricsMode::Volumes ? cost.volumesMs : cost.froxelsMs) = r.ms;
@@ -125,7 +122,7 @@ void addVolumetricsRows(ReportContext& context) {
                 std::snprintf(metric, sizeof(metric),
                               "mean |L - L_ref| / mean L_ref of the in-scattered radiance "
                               "(uniform fog 0.05 + 0.01 /m, g 0.3, black wall 8 m away, %s, %ux%u, "
-                              "half resolution in 16x16-pixel tiles, %u steps per light)",
+                              "half resolution, %u steps per light)",
                               range, size, size, RendererOptions{}.volumetricsSettings.volumeSteps);
             } else {
                 std::snprintf(metric, sizeof(metric),
@@ -151,9 +148,7 @@ void addVolumetricsRows(ReportContext& context) {
     for (const Costs& c : costs) {
         if (!measured.empty()) measured += "; ";
         measured += std::to_string(c.count) + " lights: volumes " + formatNumber(c.volumesMs) +
-                    " ms (" + formatNumber(c.untiledMs) +
-                    " ms with every light in every tile), froxels " + formatNumber(c.froxelsMs) +
-                    " ms";
+                    " ms, froxels " + formatNumber(c.froxelsMs) + " ms";
         if (c.froxelsMs >= c.volumesMs) {
             crossover = nullptr;
         } else if (!crossover) {

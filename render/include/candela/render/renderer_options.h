@@ -150,9 +150,6 @@ struct VolumetricsSettings {
     // Per-light volumes: steps per light along each half-resolution pixel's segment inside
     // the light's volume (the 4x4 dither and the blur make 16 sets of offsets of them).
     uint32_t volumeSteps = 16;
-    // Per-light volumes: each 16x16-pixel tile marches only the lights whose volume reaches
-    // it; false lists every light in every tile (only to measure what the tiles save).
-    bool volumeTiles = true;
     float referenceFar = 100.0f;  // metres; past it the medium is not drawn (both modes)
 };
 

@@ -16,6 +16,8 @@
 #include "volumetrics_push.glsl"
 #include "volumetric_density.glsl"
 
+layout(constant_id = SPEC_MEDIUM_AREA_LIGHTS) const bool kMediumAreaLights = false;
+
 layout(std430, binding = VOLUMETRICS_BINDING_LIGHT_SCALES) readonly buffer LightScales {
     float lightScales[];
 };
@@ -87,7 +89,8 @@ vec3 lightInScatteringUnshadowed(Light light, uint index, vec3 P, vec3 toCamera,
     if (light.type == kLightDirectional) {
         travel = light.direction;
         irradiance = light.intensity;
-    } else if (light.type == LIGHT_TYPE_RECT || light.type == LIGHT_TYPE_DISK) {
+    } else if (kMediumAreaLights &&
+               (light.type == LIGHT_TYPE_RECT || light.type == LIGHT_TYPE_DISK)) {
         vec3 d = P - light.position;
         float distance = length(d);
         travel = distance > 1e-6 ? d / distance : light.direction;

@@ -25,7 +25,7 @@ namespace {
 // Matches the push block of volumetrics_push.glsl.
 struct VolumetricsPush {
     glm::vec4 medium;   // sigma_s, sigma_a, g, height falloff
-    glm::vec4 range;    // base height, near, far, 1: volumes list every light in every tile
+    glm::vec4 range;    // base height, near, far, unused
     glm::uvec4 grid;    // froxels x, y, slices, reference steps
     glm::uvec4 lights;  // count, capacity
 };
@@ -50,7 +50,7 @@ VolumetricsPush pushFor(const VolumetricsPass::Inputs& in, uint32_t steps) {
     const float farPlane = farOf(in);
     return {
         glm::vec4(in.fog.scattering, in.fog.absorption, in.fog.anisotropy, in.fog.heightFalloff),
-        glm::vec4(in.fog.baseHeight, nearPlane, farPlane, in.settings.volumeTiles ? 0.0f : 1.0f),
+        glm::vec4(in.fog.baseHeight, nearPlane, farPlane, 0.0f),
         glm::uvec4(in.grid, std::max(steps, 1u)),
         glm::uvec4(in.lightCount, in.lightCapacity, 0u, 0u)};
 }
@@ -142,10 +142,15 @@ void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadow
         const float s = lights[i].light.volumetric;
         scales[i] = s >= 0.0f && s <= 1e3f ? s : 0.0f;  // NaN and negatives light no medium
     }
-    if (built_ && shadows == shadows_) return;
+    const bool areaLights = std::any_of(lights.begin(), lights.end(), [](const LightInstance& l) {
+        return l.light.type == content::LightType::Rect || l.light.type == content::LightType::Disk;
+    });
+    if (built_ && shadows == shadows_ && areaLights == areaLights_) return;
     shadows_ = shadows;
+    areaLights_ = areaLights;
     SpecializationConstants constants;
     constants.set(SPEC_SHADOWS_ENABLED, shadows);
+    constants.set(SPEC_MEDIUM_AREA_LIGHTS, areaLights);
     const auto reference = withLightingBindings(std::array{
         DescriptorBinding{VOLUMETRICS_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                           kCompute},

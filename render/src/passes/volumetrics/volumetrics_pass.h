@@ -89,6 +89,7 @@ private:
 
     GpuContext& context_;
     bool shadows_ = false;
+    bool areaLights_ = false;  // the pipelines' SPEC_MEDIUM_AREA_LIGHTS
     bool built_ = false;
     Pipeline reference_;
     Pipeline froxelLight_;

@@ -5,8 +5,7 @@
 // Matches VolumetricsPush in volumetrics_pass.cpp.
 layout(push_constant) uniform Push {
     vec4 medium;  // x: sigma_s, y: sigma_a (1/m), z: g, w: height falloff (1/m)
-    vec4 range;   // x: base height (m), y: near, z: far (view depth, m), w: 1: the per-light
-                  // volumes list every light in every tile (VolumetricsSettings::volumeTiles)
+    vec4 range;   // x: base height (m), y: near, z: far (view depth, m), w: unused
     uvec4 grid;   // froxels x, y, slices; w: reference steps
     uvec4 lights; // x: count, y: buffer capacity; z, w: the reference's batch (first, count)
 } push;
