@@ -56,6 +56,10 @@ float mediumShadow(Light light, uint index, vec3 P) {
     return mediumShadowInView(v, P);
 }
 
+bool isMediumAreaLight(Light light) {
+    return light.type == LIGHT_TYPE_RECT || light.type == LIGHT_TYPE_DISK;
+}
+
 // Irradiance at P from a rect or disk light (issue 15), as the seed's white diffuse surface
 // facing the light sees it: the same exact form factor the surfaces' "ltc" diffuse uses
 // (area_lights.glsl's areaExactDiffuse) on a surface at P whose normal points at the light's
@@ -79,9 +83,11 @@ vec3 areaLightIrradiance(Light light, vec3 P) {
 // transmittance from a local light to P (the density at P along the whole leg). toCamera: unit,
 // from P to the camera. P stands for a ball of radius `sampleRadius` (a froxel; 0 for a
 // point): a point light inside it gets the ball's mean inverse square, 3 / r^2 at its centre,
-// instead of a spike that one sample would spread over the whole froxel.
+// instead of a spike that one sample would spread over the whole froxel. areaLights: whether
+// rect and disk lights may come (a caller that marches them apart passes false, and its copy
+// of this function leaves their code out).
 vec3 lightInScatteringUnshadowed(Light light, uint index, vec3 P, vec3 toCamera, float sigmaT,
-                                 float sampleRadius) {
+                                 float sampleRadius, bool areaLights) {
     float scale = lightScales[index];
     if (scale <= 0.0) return vec3(0.0);
     vec3 irradiance;
@@ -89,8 +95,7 @@ vec3 lightInScatteringUnshadowed(Light light, uint index, vec3 P, vec3 toCamera,
     if (light.type == kLightDirectional) {
         travel = light.direction;
         irradiance = light.intensity;
-    } else if (kMediumAreaLights &&
-               (light.type == LIGHT_TYPE_RECT || light.type == LIGHT_TYPE_DISK)) {
+    } else if (areaLights && kMediumAreaLights && isMediumAreaLight(light)) {
         vec3 d = P - light.position;
         float distance = length(d);
         travel = distance > 1e-6 ? d / distance : light.direction;
@@ -114,7 +119,7 @@ vec3 lightInScatteringUnshadowed(Light light, uint index, vec3 P, vec3 toCamera,
 vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT, float sampleRadius) {
     if (lightScales[index] <= 0.0) return vec3(0.0);
     Light light = loadLight(index, push.lights.y);
-    vec3 lit = lightInScatteringUnshadowed(light, index, P, toCamera, sigmaT, sampleRadius);
+    vec3 lit = lightInScatteringUnshadowed(light, index, P, toCamera, sigmaT, sampleRadius, true);
     if (all(equal(lit, vec3(0.0)))) return lit;
     return lit * mediumShadow(light, index, P);
 }

@@ -37,7 +37,7 @@ const float kBayer4x4[16] =
 // each sample lit by light i (its shadow in `view` when cascade >= 0, else unshadowed; or, for
 // a local light, mediumShadow).
 vec3 marchSegment(uint i, Light light, vec3 origin, vec3 direction, vec2 segment, float steps,
-                  float dither, bool inCascade, ShadowView view, bool shadowed) {
+                  float dither, bool inCascade, ShadowView view, bool shadowed, bool areaLight) {
     vec3 radiance = vec3(0.0);
     float dt = (segment.y - segment.x) / steps;
     for (float s = dither; s < steps; s += 1.0) {
@@ -45,7 +45,7 @@ vec3 marchSegment(uint i, Light light, vec3 origin, vec3 direction, vec2 segment
         vec3 P = origin + direction * t;
         float density = mediumDensity(P);
         float sigmaT = (push.medium.x + push.medium.y) * density;
-        vec3 lit = lightInScatteringUnshadowed(light, i, P, -direction, sigmaT, 0.0);
+        vec3 lit = lightInScatteringUnshadowed(light, i, P, -direction, sigmaT, 0.0, areaLight);
         if (shadowed) lit *= inCascade ? mediumShadowInView(view, P) : mediumShadow(light, i, P);
         radiance +=
             lit * (push.medium.x * density * exp(-viewOpticalDepth(origin, direction, t)) * dt);
@@ -65,7 +65,7 @@ vec3 marchSun(uint i, Light light, vec3 origin, vec3 direction, float farT, floa
     uvec2 entry = kShadowsEnabled ? shadowLights[i] : uvec2(SHADOW_NO_VIEW, 0u);
     if (entry.x == SHADOW_NO_VIEW) {
         return marchSegment(i, light, origin, direction, vec2(0.0, farT), steps, dither, false,
-                            none, false);
+                            none, false, false);
     }
     vec3 radiance = vec3(0.0);
     float covered = 0.0;
@@ -75,13 +75,14 @@ vec3 marchSun(uint i, Light light, vec3 origin, vec3 direction, float farT, floa
         float end = min(exit, farT);
         if (end <= covered) continue;
         radiance += marchSegment(i, light, origin, direction, vec2(covered, end),
-                                 stepsOfPiece(covered, end, farT, steps), dither, true, view, true);
+                                 stepsOfPiece(covered, end, farT, steps), dither, true, view, true,
+                                 false);
         covered = end;
     }
     if (covered < farT) {
         radiance += marchSegment(i, light, origin, direction, vec2(covered, farT),
                                  stepsOfPiece(covered, farT, farT, steps), dither, false, none,
-                                 false);
+                                 false, false);
     }
     return radiance;
 }
@@ -113,10 +114,22 @@ void main() {
                 radiance += marchSun(i, light, origin, direction, surfaceT, steps, dither);
                 continue;
             }
+            // Rect and disk lights are marched apart (below), so this loop's copy of the
+            // in-scattering leaves their form-factor code out.
+            if (kMediumAreaLights && isMediumAreaLight(light)) continue;
             vec2 segment = lightVolumeSegment(light, origin, direction, surfaceT);
             if (segment.x >= segment.y) continue;
             radiance += marchSegment(i, light, origin, direction, segment, steps, dither, false,
-                                     none, true);
+                                     none, true, false);
+        }
+        for (uint i = 0u; kMediumAreaLights && i < push.lights.x; ++i) {
+            if (lightScales[i] <= 0.0) continue;
+            Light light = loadLight(i, push.lights.y);
+            if (!isMediumAreaLight(light)) continue;
+            vec2 segment = lightVolumeSegment(light, origin, direction, surfaceT);
+            if (segment.x >= segment.y) continue;
+            radiance += marchSegment(i, light, origin, direction, segment, steps, dither, false,
+                                     none, true, true);
         }
     }
     imageStore(marched, half_, vec4(radiance, viewDepth));
