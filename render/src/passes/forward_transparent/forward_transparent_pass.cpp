@@ -22,6 +22,7 @@
 #include "shaders/msaa_expand.vert.spv.h"
 #include "shaders/transparent_occupancy.frag.spv.h"
 #include "shaders/transparent_occupancy_merge.comp.spv.h"
+#include "vk/viewport.h"
 
 namespace candela::render {
 
@@ -56,10 +57,7 @@ void drawMesh(VkCommandBuffer cmd, const SceneResources& resources, const DrawIt
 }
 
 void setViewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {width, height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    setViewportAndScissor(cmd, width, height);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "shaders/gbuffer_extended.frag.spv.h"
 #include "shaders/gbuffer_extended_layered.frag.spv.h"
 #include "shaders/gbuffer_layered.frag.spv.h"
+#include "vk/viewport.h"
 
 namespace candela::render {
 
@@ -115,10 +116,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     rendering.pDepthAttachment = &depth;
 
     vkCmdBeginRendering(cmd, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {width, height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    setViewportAndScissor(cmd, width, height);
     const Pipeline& pipeline = variants_[variantIndex(materialLayers_, targets.extended)];
     pipeline.bind(cmd);
 

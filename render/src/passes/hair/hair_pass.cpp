@@ -21,6 +21,7 @@
 #include "shaders/hair_resolve.frag.spv.h"
 #include "shaders/hair_shadow.vert.spv.h"
 #include "shaders/shadow_depth.frag.spv.h"
+#include "vk/viewport.h"
 
 namespace candela::render {
 
@@ -191,10 +192,7 @@ void HairPass::buildPipelines() {
 void HairPass::pushCommon(VkCommandBuffer cmd, const Pipeline& pipeline, const Inputs& in) const {
     const uint32_t width = in.depth.desc().width;
     const uint32_t height = in.depth.desc().height;
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {width, height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    setViewportAndScissor(cmd, width, height);
     pipeline.bind(cmd);
     HairPush push{};
     push.grid = toGpu(*in.grid);
@@ -385,14 +383,7 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
     for (uint32_t v = 0; v < views.size(); ++v) {
         const VkRect2D rect{{int32_t(views[v].tile.x), int32_t(views[v].tile.y)},
                             {uint32_t(views[v].tile.z), uint32_t(views[v].tile.z)}};
-        const VkViewport viewport{float(rect.offset.x),
-                                  float(rect.offset.y),
-                                  float(rect.extent.width),
-                                  float(rect.extent.height),
-                                  0.0f,
-                                  1.0f};
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &rect);
+        setViewportAndScissor(cmd, rect);
         push.shadowView = v;
         shadowDepth_.pushConstants(cmd, &push, sizeof(push));
         vkCmdDraw(cmd, 6 * segmentCount_, 1, 0, 0);

@@ -17,6 +17,8 @@
 #include "passes/shadows/shadows_bindings.h"
 #include "shaders/shadow_depth.frag.spv.h"
 #include "shaders/shadow_depth.vert.spv.h"
+#include "vk/depth_placeholder.h"
+#include "vk/viewport.h"
 
 namespace candela::render {
 
@@ -114,18 +116,7 @@ ShadowPass::ShadowPass(GpuContext& context)
     pipeline_ = Pipeline::graphics(context, desc, {}, sizeof(glm::mat4));
     context.submitAndWait([&](VkCommandBuffer cmd) {
         // Cleared, not left undefined: the variant without shadows still binds it.
-        transitionImage(cmd, placeholderAtlas_, VK_IMAGE_LAYOUT_UNDEFINED,
-                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
-                        VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        const VkClearDepthStencilValue zero{};
-        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-        vkCmdClearDepthStencilImage(cmd, placeholderAtlas_.handle(),
-                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &all);
-        transitionImage(
-            cmd, placeholderAtlas_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kRead,
-            VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-            VK_ACCESS_2_SHADER_READ_BIT);
+        clearDepthPlaceholder(cmd, placeholderAtlas_);
         vkCmdFillBuffer(cmd, placeholderBuffer_.handle(), 0, VK_WHOLE_SIZE, 0);
     });
 }
@@ -394,14 +385,7 @@ void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
                 const VkClearRect clearRect{rect, 0, 1};
                 vkCmdClearAttachments(cmd, 1, &clear, 1, &clearRect);
             }
-            const VkViewport viewport{float(rect.offset.x),
-                                      float(rect.offset.y),
-                                      float(rect.extent.width),
-                                      float(rect.extent.height),
-                                      0.0f,
-                                      1.0f};
-            vkCmdSetViewport(cmd, 0, 1, &viewport);
-            vkCmdSetScissor(cmd, 0, 1, &rect);
+            setViewportAndScissor(cmd, rect);
             for (uint32_t d : pv.casters) {
                 const DrawItem& draw = scene.draws[d];
                 const GpuMesh& mesh = resources.mesh(draw.mesh);

@@ -10,6 +10,8 @@
 #include "passes/sky_occlusion/sky_occlusion_directions.h"
 #include "shaders/shadow_depth.frag.spv.h"
 #include "shaders/shadow_depth.vert.spv.h"
+#include "vk/depth_placeholder.h"
+#include "vk/viewport.h"
 
 namespace candela::render {
 
@@ -59,20 +61,7 @@ SkyOcclusionPass::SkyOcclusionPass(GpuContext& context)
                       VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, true, VK_COMPARE_OP_GREATER_OR_EQUAL}),
       placeholder_(context, {kAtlasFormat, 1, 1, 1, false,
                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT}) {
-    context.submitAndWait([&](VkCommandBuffer cmd) {
-        transitionImage(cmd, placeholder_, VK_IMAGE_LAYOUT_UNDEFINED,
-                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
-                        VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        const VkClearDepthStencilValue zero{};
-        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-        vkCmdClearDepthStencilImage(cmd, placeholder_.handle(),
-                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &all);
-        transitionImage(
-            cmd, placeholder_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kRead,
-            VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-            VK_ACCESS_2_SHADER_READ_BIT);
-    });
+    context.submitAndWait([&](VkCommandBuffer cmd) { clearDepthPlaceholder(cmd, placeholder_); });
 }
 
 SkyOcclusionPass::~SkyOcclusionPass() = default;
@@ -181,14 +170,7 @@ void SkyOcclusionPass::record(VkCommandBuffer cmd, const FrameScene& scene,
         const VkRect2D rect{
             {int32_t((i % tilesPerRow_) * tileSize_), int32_t((i / tilesPerRow_) * tileSize_)},
             {tileSize_, tileSize_}};
-        const VkViewport viewport{float(rect.offset.x),
-                                  float(rect.offset.y),
-                                  float(tileSize_),
-                                  float(tileSize_),
-                                  0.0f,
-                                  1.0f};
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &rect);
+        setViewportAndScissor(cmd, rect);
         for (uint32_t d : casters_) {
             const DrawItem& draw = scene.draws[d];
             const GpuMesh& mesh = resources.mesh(draw.mesh);

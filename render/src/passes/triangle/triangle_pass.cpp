@@ -3,6 +3,7 @@
 #include "candela/render/gpu_image.h"
 #include "shaders/triangle.frag.spv.h"
 #include "shaders/triangle.vert.spv.h"
+#include "vk/viewport.h"
 
 namespace candela::render {
 
@@ -32,10 +33,7 @@ void TrianglePass::record(VkCommandBuffer cmd, const ImageRef& target,
     rendering.pColorAttachments = &color;
 
     vkCmdBeginRendering(cmd, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {width, height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    setViewportAndScissor(cmd, width, height);
     pipeline_.bind(cmd);
     pipeline_.pushConstants(cmd, radiance.data(), sizeof(float) * 4);
     vkCmdDraw(cmd, 3, 1, 0, 0);

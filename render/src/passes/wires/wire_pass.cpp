@@ -16,6 +16,7 @@
 #include "passes/wires/wire_bindings.h"
 #include "shaders/wire.frag.spv.h"
 #include "shaders/wire.vert.spv.h"
+#include "vk/viewport.h"
 
 namespace candela::render {
 
@@ -171,10 +172,7 @@ void WirePass::record(VkCommandBuffer cmd, const Inputs& in) const {
     rendering.pColorAttachments = &color;
     rendering.pDepthAttachment = &depth;
     vkCmdBeginRendering(cmd, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, {width, height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    setViewportAndScissor(cmd, width, height);
     pipeline_.bind(cmd);
 
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
