@@ -143,6 +143,25 @@ render::VolumetricsMode volumetricsFor(const ApplicationOptions& options, const 
     return render::VolumetricsMode::Volumes;
 }
 
+// --sky-occlusion, else the scene file's "sky_occlusion"; unset: the renderer's default, on in
+// frames with an atmosphere (the demo; other scenes' images stay as they were): render/README.md
+// "Sky occlusion".
+std::optional<render::SkyOcclusionMode> skyOcclusionFor(const ApplicationOptions& options,
+                                                        const SceneWorld* world) {
+    if (options.skyOcclusion) return *options.skyOcclusion;
+    if (world && world->sceneSkyOcclusion()) {
+        switch (*world->sceneSkyOcclusion()) {
+            case content::SceneSkyOcclusionMode::Off:
+                return render::SkyOcclusionMode::Off;
+            case content::SceneSkyOcclusionMode::On:
+                return render::SkyOcclusionMode::On;
+            case content::SceneSkyOcclusionMode::Reference:
+                return render::SkyOcclusionMode::Reference;
+        }
+    }
+    return std::nullopt;
+}
+
 // --ao, else the scene file's "ambient_occlusion" mode, else GTAO (render/README.md
 // "Ambient occlusion" gives the measurements behind the default).
 render::AoMode aoFor(const ApplicationOptions& options, const SceneWorld* world) {
@@ -548,13 +567,8 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                                                           : 0.0f;
         rendererOptions.ao = aoFor(options, world.get());
         rendererOptions.ssr = ssrFor(options, world.get());
-        // --sky-occlusion, else the scene file's, else on in frames with an atmosphere (the
-        // demo; other scenes' images stay as they were): render/README.md "Sky occlusion".
-        if (options.skyOcclusion) {
-            rendererOptions.skyOcclusion = *options.skyOcclusion;
-        } else if (world && world->sceneSkyOcclusion()) {
-            rendererOptions.skyOcclusion =
-                render::SkyOcclusionMode(int(*world->sceneSkyOcclusion()));
+        if (auto mode = skyOcclusionFor(options, world.get())) {
+            rendererOptions.skyOcclusion = *mode;
         } else {
             rendererOptions.skyOcclusionWithAtmosphere = true;
         }

@@ -925,8 +925,9 @@ TEST(Cli, AntialiasingBloomAndExposureFlagsAndStats) {
     EXPECT_NE(bad.output.find("--aa needs off, fxaa or taa"), std::string::npos) << bad.output;
 }
 
-// Issues 16 and 17: a scene file's top-level "scattering" and "volumetrics" choose the light
-// shafts and the medium's lighting, and the command line's flags override them.
+// Issues 16, 17 and 24: a scene file's top-level "scattering", "volumetrics" and
+// "sky_occlusion" choose the light shafts, the medium's lighting and the sky's occlusion, and
+// the command line's flags override them.
 TEST(Cli, SceneFileChoosesScatteringAndVolumetricsAndFlagsOverrideIt) {
     auto dir = tempDir() / "scattering_setting";
     std::filesystem::create_directories(dir);
@@ -934,6 +935,7 @@ TEST(Cli, SceneFileChoosesScatteringAndVolumetricsAndFlagsOverrideIt) {
         readBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/atmosphere_sky.scene.json"));
     scene["scattering"] = "off";
     scene["volumetrics"] = "off";
+    scene["sky_occlusion"] = "off";  // on by default with an atmosphere
     scene["entities"].push_back({{"name", "dust"}, {"fog", {{"scattering", 0.05}}}});
     const auto scenePath = dir / "air.scene.json";
     std::ofstream(scenePath) << scene.dump(2);
@@ -956,7 +958,14 @@ TEST(Cli, SceneFileChoosesScatteringAndVolumetricsAndFlagsOverrideIt) {
     EXPECT_EQ(off["scattering_samples"].get<double>(), 0.0) << off.dump();
     EXPECT_EQ(ranPassesStartingWith(off, "scattering"), 0) << off["passes"].dump();
     EXPECT_EQ(ranPassesStartingWith(off, "volumetrics"), 0) << off["passes"].dump();
-    const nlohmann::json on = run("on", " --scattering epipolar --volumetrics froxels");
+    auto hasFeature = [](const nlohmann::json& stats, const char* feature) {
+        const auto features = stats["features"].get<std::vector<std::string>>();
+        return std::find(features.begin(), features.end(), feature) != features.end();
+    };
+    EXPECT_FALSE(hasFeature(off, "sky_occlusion")) << off["features"].dump();
+    const nlohmann::json on =
+        run("on", " --scattering epipolar --volumetrics froxels --sky-occlusion on");
+    EXPECT_TRUE(hasFeature(on, "sky_occlusion")) << on["features"].dump();
     EXPECT_GT(on["scattering_samples"].get<double>(), 0.0) << on.dump();
     EXPECT_GT(ranPassesStartingWith(on, "scattering"), 0) << on["passes"].dump();
     EXPECT_TRUE(on["passes"].contains("volumetrics_froxel_light")) << on["passes"].dump();
