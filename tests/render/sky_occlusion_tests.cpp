@@ -1,6 +1,7 @@
 // Sky occlusion (render/README.md "Sky occlusion"): a closed room lit by the sky only through a
 // skylight, against a CPU ray trace of the floor's sky visibility; open ground unchanged; the
-// maps rendered once and reused while the casters stay.
+// maps rendered once and reused while the casters stay; a blended pane occluded as an opaque
+// one.
 #include <gtest/gtest.h>
 
 #include <cmath>
