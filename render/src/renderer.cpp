@@ -895,12 +895,13 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             const bool volumes = options_.volumetrics == VolumetricsMode::Volumes;
             if (!volumes || blended) {
                 if (!volumes) features_.push_back("volumetrics_froxels");
-                volumetricsPass_->setFroxelParams(volume);
                 const VkDeviceSize bytes = VolumetricsPass::froxelBufferBytes(volume.grid);
                 ResourceHandle medium = g.createBuffer("volumetrics.froxel_medium", bytes,
                                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-                ResourceHandle integrated = g.createBuffer("volumetrics.froxel_integrated", bytes,
-                                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                ResourceHandle integrated =
+                    g.createBuffer("volumetrics.froxel_integrated",
+                                   VolumetricsPass::froxelIntegratedBytes(volume.grid),
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
                 auto light = g.addPass("volumetrics_froxel_light", PassKind::Device,
                                        [this, medium, volume, shadowDescriptors](PassContext& ctx) {
                                            VolumetricsPass::Inputs in = volume;
@@ -1112,7 +1113,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                    in.pixelRadiusPerDepth = pixelRadiusPerDepth;
                                    in.nearPlane = nearPlane;
                                    if (froxels) {
-                                       in.froxelParams = &volumetricsPass_->froxelParams();
+                                       in.froxels = true;
                                        in.froxelIntegrated = ctx.buffer(*froxels);
                                    }
                                    wirePass_->record(ctx.cmd(), in);
@@ -1174,16 +1175,19 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             msaaMotion = e.write(msaaMotion, Use::ColorAttachment);
             msaaDepth = e.write(msaaDepth, Use::DepthWrite);
         }
-        auto p = g.addPass("forward_transparent", PassKind::Device,
-                           [this, shadingInputs, froxels, &resources](PassContext& ctx) {
-                               ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
-                               if (froxels) {
-                                   in.froxelParams = &volumetricsPass_->froxelParams();
-                                   in.froxelIntegrated = ctx.buffer(*froxels);
-                               }
-                               transparentPass_->recordShading(ctx.cmd(), resources, in);
-                           });
+        auto p = g.addPass(
+            "forward_transparent", PassKind::Device,
+            [this, shadingInputs, froxels, skyOcclusionDescriptor, &resources](PassContext& ctx) {
+                ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
+                in.skyOcclusion = skyOcclusionDescriptor;
+                if (froxels) {
+                    in.froxels = true;
+                    in.froxelIntegrated = ctx.buffer(*froxels);
+                }
+                transparentPass_->recordShading(ctx.cmd(), resources, in);
+            });
         if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
+        if (features.skyOcclusion) p.read(skyOcclusionAtlas, Use::Sampled, kFragmentStage);
         if (msaa) {
             // Drawn into, then resolved into hdr and motion (their last use).
             p.read(msaaDepth, Use::DepthRead);

@@ -1,16 +1,14 @@
 // Reading the integrated froxel grid (passes/volumetrics): the in-scattered radiance from the
 // camera to a view depth and the transmittance over it, for the composite over opaque
 // surfaces and for blended surfaces in the forward pass. The includer defines
-// FROXEL_PARAMS_BINDING and FROXEL_INTEGRATED_BINDING.
+// FROXEL_INTEGRATED_BINDING.
 #ifndef CANDELA_FROXEL_LOOKUP_GLSL
 #define CANDELA_FROXEL_LOOKUP_GLSL
 
-// Matches VolumetricsPass::FroxelParams.
-layout(std140, binding = FROXEL_PARAMS_BINDING) uniform FroxelParams {
-    uvec4 grid;   // froxels x, y, slices; w: 1 when the frame has froxels, else 0
-    vec4 range;   // x: near, y: far (view depth, m)
-} froxelParams;
+#include "common/froxel_grid.glsl"
+
 layout(std430, binding = FROXEL_INTEGRATED_BINDING) readonly buffer FroxelIntegrated {
+    FroxelGrid froxelParams;
     vec4 froxelIntegrated[];
 };
 

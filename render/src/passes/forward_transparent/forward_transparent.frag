@@ -21,13 +21,16 @@
 #define SHADOW_VIEWS_BINDING FORWARD_BINDING_SHADOW_VIEWS
 #define SHADOW_LIGHTS_BINDING FORWARD_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
-#define FROXEL_PARAMS_BINDING FORWARD_BINDING_FROXEL_PARAMS
 #define FROXEL_INTEGRATED_BINDING FORWARD_BINDING_FROXEL_INTEGRATED
 #include "common/froxel_lookup.glsl"
+#include "common/sky_occlusion.glsl"
+#include "common/sky_occluded_ambient.glsl"
 
 layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
 // Image-based lighting as the deferred pass does it: 0 none, 1 split sum, 2 mobile.
 layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
+// Sky occlusion as the lighting pass applies it (off: the full sky).
+layout(constant_id = SPEC_SKY_OCCLUSION) const bool kSkyOcclusion = false;
 
 layout(std430, binding = FORWARD_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
     uint clusterRanges[];
@@ -117,10 +120,17 @@ void main() {
 
         if (kIblMode != 0u) {
             vec4 sh[9] = irradianceSh;
-            radiance += environmentAmbient(surface, N, V, sh, prefilteredCube,
-                                           draw.prefilteredMipCount, environmentBrdfLut,
-                                           kIblMode == 2u) *
-                        (s.occlusion * draw.skyIntensity);
+            vec3 ambient;
+            if (kSkyOcclusion) {
+                ambient = skyOccludedEnvironmentAmbient(
+                    surface, skyVisibility(P, N, R, s.roughness), N, V, sh, prefilteredCube,
+                    draw.prefilteredMipCount, environmentBrdfLut, kIblMode == 2u);
+            } else {
+                ambient = environmentAmbient(surface, N, V, sh, prefilteredCube,
+                                             draw.prefilteredMipCount, environmentBrdfLut,
+                                             kIblMode == 2u);
+            }
+            radiance += ambient * (s.occlusion * draw.skyIntensity);
         }
 
         // The transparency occupancy pass made sure the fragment's cluster holds every light

@@ -27,8 +27,12 @@
 #define FORWARD_BINDING_LTC_MAGNITUDE 27
 #define AREA_LIGHT_LTC_MATRIX_BINDING FORWARD_BINDING_LTC_MATRIX
 #define AREA_LIGHT_LTC_MAGNITUDE_BINDING FORWARD_BINDING_LTC_MAGNITUDE
-// The integrated froxel grid and its shape (common/froxel_lookup.glsl; passes/volumetrics).
-#define FORWARD_BINDING_FROXEL_PARAMS 28
+// The sky occlusion atlas (common/sky_occlusion.glsl, passes/sky_occlusion). 28 was the froxel
+// grid's shape, which now heads the integrated buffer: the pass is at lavapipe's 32.
+#define FORWARD_BINDING_SKY_OCCLUSION 28
+#define SKY_OCCLUSION_BINDING FORWARD_BINDING_SKY_OCCLUSION
+// The integrated froxel grid, its shape at its head (common/froxel_lookup.glsl;
+// passes/volumetrics).
 #define FORWARD_BINDING_FROXEL_INTEGRATED 29
 // Textured rect lights' image atlas (lights/area_light_textures.h); 30 is
 // PREVIOUS_WORLDS_BINDING.

@@ -16,6 +16,7 @@
 #include "mesh_vertex_input.h"
 #include "passes/forward_transparent/forward_transparent_bindings.h"
 #include "passes/shadows/shadow_pass.h"
+#include "passes/volumetrics/volumetrics_pass.h"
 #include "shaders/forward_transparent.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
 #include "shaders/msaa_expand.frag.spv.h"
@@ -66,10 +67,9 @@ ForwardTransparentPass::ForwardTransparentPass(GpuContext& context, VkSampleCoun
     : context_(context),
       samples_(samples),
       pointSampler_(context, SamplerDesc{VK_FILTER_NEAREST}),
-      noMedium_(context, 32,
-                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+      noMedium_(context, VolumetricsPass::kFroxelHeaderBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                 MemoryLocation::HostVisible) {
-    std::memset(noMedium_.mapped(), 0, 32);
+    std::memset(noMedium_.mapped(), 0, VolumetricsPass::kFroxelHeaderBytes);
 }
 
 // The occupancy, merge and MSAA-expand pipelines: built on the first frame with blended draws
@@ -160,6 +160,7 @@ void ForwardTransparentPass::buildShadingPipeline() {
     // 0 none, 1 split sum, 2 mobile; the reference mode's per-pixel integration is for the
     // deferred pass's measurements: blended surfaces take the split sum under it.
     constants.set(SPEC_IBL_MODE, !features_.ibl ? 0u : *features_.ibl == IblMode::Mobile ? 2u : 1u);
+    constants.set(SPEC_SKY_OCCLUSION, features_.skyOcclusion);
 
     GraphicsPipelineDesc desc;
     desc.vertexSpirv = gbuffer_vert_spv;  // the G-buffer's vertex stage: same transform
@@ -204,7 +205,7 @@ void ForwardTransparentPass::buildShadingPipeline() {
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_FROXEL_PARAMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+        {FORWARD_BINDING_SKY_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -371,11 +372,8 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
     VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo previousInfo{previousWorlds_->handle(), 0, VK_WHOLE_SIZE};
-    const bool froxels = in.froxelParams != nullptr;
-    VkDescriptorBufferInfo froxelParamsInfo{
-        froxels ? in.froxelParams->handle() : noMedium_.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo froxelInfo{froxels ? in.froxelIntegrated.handle() : noMedium_.handle(),
-                                      0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo froxelInfo{
+        in.froxels ? in.froxelIntegrated.handle() : noMedium_.handle(), 0, VK_WHOLE_SIZE};
     DrawPush push{};
     push.directionalCount = in.directionalCount;
     push.grid = toGpu(*in.grid);
@@ -404,7 +402,7 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
             sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
             sampledImageWrite(FORWARD_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
             sampledImageWrite(FORWARD_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude),
-            uniformBufferWrite(FORWARD_BINDING_FROXEL_PARAMS, &froxelParamsInfo),
+            sampledImageWrite(FORWARD_BINDING_SKY_OCCLUSION, &in.skyOcclusion),
             storageBufferWrite(FORWARD_BINDING_FROXEL_INTEGRATED, &froxelInfo),
             sampledImageWrite(FORWARD_BINDING_AREA_LIGHT_TEXTURES,
                               &in.environment->areaLightTextures)};

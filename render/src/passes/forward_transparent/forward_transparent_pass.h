@@ -89,8 +89,11 @@ public:
         float skyIntensity;
         const ShadowDescriptors* shadows;  // the atlas and tables, or placeholders
         // Froxels (passes/volumetrics), read in the fragment shader; null: no medium.
-        const GpuBuffer* froxelParams = nullptr;
+        bool froxels = false;  // froxelIntegrated holds the frame's grid
         BufferRef froxelIntegrated;
+        // The sky occlusion atlas (features().skyOcclusion) or its placeholder
+        // (SkyOcclusionPass::descriptor).
+        VkDescriptorImageInfo skyOcclusion{};
     };
     void recordShading(VkCommandBuffer cmd, SceneResources& resources,
                        const ShadingInputs& in) const;
@@ -121,7 +124,8 @@ private:
     Pipeline merge_;
     Pipeline expand_;       // MSAA only
     Sampler pointSampler_;  // G-buffer and depth reads
-    // Zeros: froxel parameters saying "no medium", bound when the frame has no froxels.
+    // Zeros: an integrated froxel buffer whose header says "no medium", bound when the frame has no
+    // froxels.
     GpuBuffer noMedium_;
 };
 

@@ -21,6 +21,7 @@
 #include "common/shadows.glsl"
 #define SKY_OCCLUSION_BINDING LIGHTING_BINDING_SKY_OCCLUSION
 #include "common/sky_occlusion.glsl"
+#include "common/sky_occluded_ambient.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -419,10 +420,9 @@ vec3 ambientRadiance(PixelShading px, ivec2 pixel) {
         if (kSkyOcclusion) ambient *= sky.diffuse;
     } else if (kSkyOcclusion) {
         vec4 sh[9] = irradianceSh;
-        ambient = occludedEnvironmentAmbient(px.surface, px.N, sky.bentNormal, px.V, sh,
-                                             prefilteredCube, push.prefilteredMipCount,
-                                             environmentBrdfLut, kIblMode == kIblMobile,
-                                             vec3(sky.diffuse), sky.specular);
+        ambient = skyOccludedEnvironmentAmbient(px.surface, sky, px.N, px.V, sh,
+                                                prefilteredCube, push.prefilteredMipCount,
+                                                environmentBrdfLut, kIblMode == kIblMobile);
     } else {
         vec4 sh[9] = irradianceSh;
         ambient = environmentAmbient(px.surface, px.N, px.V, sh, prefilteredCube,

@@ -13,8 +13,6 @@
 // boundary (in-scattered radiance from the camera, transmittance).
 #define VOLUMETRICS_BINDING_FROXEL_MEDIUM 5
 #define VOLUMETRICS_BINDING_FROXEL_INTEGRATED 6
-// The froxel grid's shape for common/froxel_lookup.glsl (VolumetricsPass::FroxelParams).
-#define VOLUMETRICS_BINDING_FROXEL_PARAMS 11
 // Per-light volumes: the half-resolution march and its bilateral blur, each (in-scattered
 // radiance, view depth) per pixel.
 #define VOLUMETRICS_BINDING_VOLUMES_MARCHED 12

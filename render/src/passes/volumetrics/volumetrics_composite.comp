@@ -5,7 +5,6 @@
 // distance for the background) and attenuates the lit surface behind the medium:
 // hdr = hdr * T + L.
 #include "common/camera.glsl"
-#define FROXEL_PARAMS_BINDING VOLUMETRICS_BINDING_FROXEL_PARAMS
 #define FROXEL_INTEGRATED_BINDING VOLUMETRICS_BINDING_FROXEL_INTEGRATED
 #include "common/froxel_lookup.glsl"
 

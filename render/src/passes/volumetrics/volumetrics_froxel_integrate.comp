@@ -6,6 +6,7 @@
 // each slice's far boundary the radiance scattered toward the camera from the near plane to
 // there and the transmittance over that distance.
 #include "common/camera.glsl"
+#include "common/froxel_grid.glsl"
 #include "volumetric_step.glsl"
 #include "volumetrics_push.glsl"
 
@@ -15,11 +16,15 @@ layout(std430, binding = VOLUMETRICS_BINDING_FROXEL_MEDIUM) readonly buffer Frox
     vec4 froxelMedium[];
 };
 layout(std430, binding = VOLUMETRICS_BINDING_FROXEL_INTEGRATED) writeonly buffer FroxelIntegrated {
+    FroxelGrid froxelParams;  // read by common/froxel_lookup.glsl
     vec4 froxelIntegrated[];
 };
 
 void main() {
     uvec2 column = gl_GlobalInvocationID.xy;
+    if (all(equal(column, uvec2(0u)))) {
+        froxelParams = FroxelGrid(uvec4(push.grid.xyz, 1u), vec4(push.range.yz, 0.0, 0.0));
+    }
     if (any(greaterThanEqual(column, push.grid.xy))) return;
     vec2 ndc = (vec2(column) + 0.5) / vec2(push.grid.xy) * 2.0 - 1.0;
     vec4 nearPoint = vec4(unjitteredNearPoint(ndc), 1.0);

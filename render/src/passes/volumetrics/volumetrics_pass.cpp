@@ -92,7 +92,6 @@ VolumetricsPass::VolumetricsPass(GpuContext& context)
         {VOLUMETRICS_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
         {VOLUMETRICS_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
         {VOLUMETRICS_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-        {VOLUMETRICS_BINDING_FROXEL_PARAMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
     };
     composite_ = Pipeline::compute(context, volumetrics_composite_comp_spv, composite, 0);
     const DescriptorBinding blur[] = {
@@ -110,8 +109,6 @@ VolumetricsPass::VolumetricsPass(GpuContext& context)
     };
     volumesComposite_ = Pipeline::compute(context, volumetrics_volumes_composite_comp_spv,
                                           volumesComposite, sizeof(VolumetricsPush));
-    froxelParams_ = GpuBuffer(context, sizeof(FroxelParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                              MemoryLocation::HostVisible);
 }
 
 glm::uvec3 VolumetricsPass::froxelGrid(uint32_t width, uint32_t height,
@@ -124,6 +121,10 @@ glm::uvec3 VolumetricsPass::froxelGrid(uint32_t width, uint32_t height,
 
 VkDeviceSize VolumetricsPass::froxelBufferBytes(const glm::uvec3& grid) {
     return VkDeviceSize(grid.x) * grid.y * grid.z * sizeof(glm::vec4);
+}
+
+VkDeviceSize VolumetricsPass::froxelIntegratedBytes(const glm::uvec3& grid) {
+    return kFroxelHeaderBytes + froxelBufferBytes(grid);
 }
 
 ImageDesc VolumetricsPass::volumesDesc(uint32_t width, uint32_t height) {
@@ -169,11 +170,6 @@ void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadow
     volumesMarch_ = Pipeline::compute(context_, volumetrics_volumes_march_comp_spv, march,
                                       sizeof(VolumetricsPush), &constants);
     built_ = true;
-}
-
-void VolumetricsPass::setFroxelParams(const Inputs& in) {
-    const FroxelParams params{glm::uvec4(in.grid, 1u), glm::vec4(nearOf(in), farOf(in), 0, 0)};
-    std::memcpy(froxelParams_.mapped(), &params, sizeof(params));
 }
 
 // The descriptors both passes that light the medium read (the reference march and the froxel
@@ -269,13 +265,11 @@ void VolumetricsPass::recordComposite(VkCommandBuffer cmd, const Inputs& in,
                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo hdr{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
     VkDescriptorBufferInfo integratedInfo{integrated.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo paramsInfo{froxelParams_.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
         sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
         storageImageWrite(VOLUMETRICS_BINDING_HDR, &hdr),
         storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_INTEGRATED, &integratedInfo),
-        uniformBufferWrite(VOLUMETRICS_BINDING_FROXEL_PARAMS, &paramsInfo),
     };
     composite_.bind(cmd);
     composite_.pushDescriptors(cmd, writes);

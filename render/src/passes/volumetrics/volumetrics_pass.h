@@ -30,8 +30,13 @@ public:
     // at 1280x720) unless the settings give a grid, and settings.froxelSlices slices.
     static glm::uvec3 froxelGrid(uint32_t width, uint32_t height,
                                  const VolumetricsSettings& settings);
-    // Bytes of each froxel buffer (one vec4 per froxel).
+    // Bytes of the froxel medium buffer (one vec4 per froxel).
     static VkDeviceSize froxelBufferBytes(const glm::uvec3& grid);
+    // The integrated buffer: the grid's shape (common/froxel_grid.glsl: uvec4 x, y, slices,
+    // 1; vec4 near, far), written by the integration, then one vec4 per froxel. All zeros
+    // reads as "no medium".
+    static constexpr VkDeviceSize kFroxelHeaderBytes = 2 * sizeof(glm::vec4);
+    static VkDeviceSize froxelIntegratedBytes(const glm::uvec3& grid);
     // The per-light volumes' half-resolution targets (in-scattered radiance, view depth).
     static ImageDesc volumesDesc(uint32_t width, uint32_t height);
 
@@ -40,14 +45,6 @@ public:
     // reads the shadow maps.
     void prepare(std::span<const LightInstance> lights, bool shadows);
     const GpuBuffer& lightScales() const { return lightScales_; }
-
-    // The grid's shape as common/froxel_lookup.glsl reads it (the composite and blended
-    // surfaces), written by setFroxelParams for the frame.
-    struct FroxelParams {
-        glm::uvec4 grid;  // x, y, slices, 1: the frame has froxels
-        glm::vec4 range;  // near, far
-    };
-    const GpuBuffer& froxelParams() const { return froxelParams_; }
 
     struct Inputs {
         ImageRef depth;  // Sampled
@@ -62,7 +59,6 @@ public:
         VolumetricsSettings settings;
         glm::uvec3 grid{1u};
     };
-    void setFroxelParams(const Inputs& in);
     void recordReference(VkCommandBuffer cmd, const Inputs& in) const;
     // Froxels: light into `medium`, integrate into `integrated` (both StorageWrite, the first
     // then StorageRead), composite `integrated` (StorageRead) over in.hdr.
@@ -100,7 +96,6 @@ private:
     Pipeline volumesComposite_;
     Sampler pointSampler_;
     GpuBuffer lightScales_;
-    GpuBuffer froxelParams_;
 };
 
 }  // namespace candela::render

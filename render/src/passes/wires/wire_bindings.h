@@ -23,8 +23,8 @@
 #define WIRE_BINDING_LTC_MAGNITUDE 14
 #define AREA_LIGHT_LTC_MATRIX_BINDING WIRE_BINDING_LTC_MATRIX
 #define AREA_LIGHT_LTC_MAGNITUDE_BINDING WIRE_BINDING_LTC_MAGNITUDE
-// The integrated froxel grid and its shape (common/froxel_lookup.glsl; passes/volumetrics).
-#define WIRE_BINDING_FROXEL_PARAMS 15
+// The integrated froxel grid, its shape at its head (common/froxel_lookup.glsl;
+// passes/volumetrics).
 #define WIRE_BINDING_FROXEL_INTEGRATED 16
 
 // wire.vert's modes (the push block's `mode`): Persson's clamp with coverage, or the naive

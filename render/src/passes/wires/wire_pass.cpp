@@ -13,6 +13,7 @@
 #include "host_storage_array.h"
 #include "ibl/environment_descriptors.h"
 #include "passes/shadows/shadow_pass.h"
+#include "passes/volumetrics/volumetrics_pass.h"
 #include "passes/wires/wire_bindings.h"
 #include "shaders/wire.frag.spv.h"
 #include "shaders/wire.vert.spv.h"
@@ -50,10 +51,9 @@ WirePass::WirePass(GpuContext& context)
     : context_(context),
       segments_(context, kInitialSegments * sizeof(WireSegment), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                 MemoryLocation::HostVisible),
-      noMedium_(context, 32,
-                VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+      noMedium_(context, VolumetricsPass::kFroxelHeaderBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                 MemoryLocation::HostVisible) {
-    std::memset(noMedium_.mapped(), 0, 32);
+    std::memset(noMedium_.mapped(), 0, VolumetricsPass::kFroxelHeaderBytes);
 }
 
 WirePass::~WirePass() = default;
@@ -143,8 +143,6 @@ void WirePass::buildPipeline() {
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {WIRE_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_FROXEL_PARAMS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
         {WIRE_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
     };
@@ -181,11 +179,8 @@ void WirePass::record(VkCommandBuffer cmd, const Inputs& in) const {
     VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
-    const bool froxels = in.froxelParams != nullptr;
-    VkDescriptorBufferInfo froxelParamsInfo{
-        froxels ? in.froxelParams->handle() : noMedium_.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo froxelInfo{froxels ? in.froxelIntegrated.handle() : noMedium_.handle(),
-                                      0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo froxelInfo{
+        in.froxels ? in.froxelIntegrated.handle() : noMedium_.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
         storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
@@ -202,7 +197,6 @@ void WirePass::record(VkCommandBuffer cmd, const Inputs& in) const {
         sampledImageWrite(WIRE_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
         sampledImageWrite(WIRE_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
         sampledImageWrite(WIRE_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude),
-        uniformBufferWrite(WIRE_BINDING_FROXEL_PARAMS, &froxelParamsInfo),
         storageBufferWrite(WIRE_BINDING_FROXEL_INTEGRATED, &froxelInfo)};
     pipeline_.pushDescriptors(cmd, writes);
     WirePush push{};

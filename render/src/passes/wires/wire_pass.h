@@ -53,7 +53,7 @@ public:
         float pixelRadiusPerDepth;  // 1 / (projection[1][1] x target height)
         float nearPlane;
         // Froxels (passes/volumetrics), read in the fragment shader; null: no medium.
-        const GpuBuffer* froxelParams = nullptr;
+        bool froxels = false;  // froxelIntegrated holds the frame's grid
         BufferRef froxelIntegrated;
     };
     void record(VkCommandBuffer cmd, const Inputs& in) const;
@@ -63,7 +63,8 @@ private:
 
     GpuContext& context_;
     GpuBuffer segments_;
-    // Zeros: froxel parameters saying "no medium", bound when the frame has no froxels.
+    // Zeros: an integrated froxel buffer whose header says "no medium", bound when the frame has no
+    // froxels.
     GpuBuffer noMedium_;
     uint32_t segmentCount_ = 0;
     WireMode mode_ = WireMode::Coverage;
