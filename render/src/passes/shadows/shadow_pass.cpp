@@ -12,6 +12,7 @@
 #include "lights/gpu_light_types.h"
 #include "mesh_vertex.h"
 #include "passes/shadows/cascades.h"
+#include "passes/shadows/caster_depth_draws.h"
 #include "passes/shadows/shadow_atlas.h"
 #include "passes/shadows/shadow_render_budget.h"
 #include "passes/shadows/shadows_bindings.h"
@@ -386,18 +387,7 @@ void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
                 vkCmdClearAttachments(cmd, 1, &clear, 1, &clearRect);
             }
             setViewportAndScissor(cmd, rect);
-            for (uint32_t d : pv.casters) {
-                const DrawItem& draw = scene.draws[d];
-                const GpuMesh& mesh = resources.mesh(draw.mesh);
-                const glm::mat4 worldToClip = pv.gpu.worldToClip * draw.world;
-                pipeline_.pushConstants(cmd, &worldToClip, sizeof(worldToClip));
-                const VkDeviceSize offset = 0;
-                // Skinned or morphed draws cast with this frame's deformed vertices.
-                const VkBuffer vertexBuffer = resources.vertexBufferOf(draw);
-                vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
-                vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-                vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
-            }
+            drawCasterDepths(cmd, pipeline_, scene, resources, pv.casters, pv.gpu.worldToClip);
         }
     }
     vkCmdEndRendering(cmd);

@@ -7,6 +7,7 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/scene_resources.h"
 #include "mesh_vertex.h"
+#include "passes/shadows/caster_depth_draws.h"
 #include "passes/sky_occlusion/sky_occlusion_directions.h"
 #include "shaders/shadow_depth.frag.spv.h"
 #include "shaders/shadow_depth.vert.spv.h"
@@ -171,17 +172,7 @@ void SkyOcclusionPass::record(VkCommandBuffer cmd, const FrameScene& scene,
             {int32_t((i % tilesPerRow_) * tileSize_), int32_t((i / tilesPerRow_) * tileSize_)},
             {tileSize_, tileSize_}};
         setViewportAndScissor(cmd, rect);
-        for (uint32_t d : casters_) {
-            const DrawItem& draw = scene.draws[d];
-            const GpuMesh& mesh = resources.mesh(draw.mesh);
-            const glm::mat4 worldToClip = view * draw.world;
-            pipeline_.pushConstants(cmd, &worldToClip, sizeof(worldToClip));
-            const VkDeviceSize offset = 0;
-            const VkBuffer vertexBuffer = resources.vertexBufferOf(draw);
-            vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
-            vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-            vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
-        }
+        drawCasterDepths(cmd, pipeline_, scene, resources, casters_, view);
     }
     vkCmdEndRendering(cmd);
     atlasHoldsMaps_ = true;
