@@ -144,22 +144,31 @@ float shadowPenumbraRadius(ShadowView v, vec2 tc, float receiver, float lightSiz
     return clamp(0.5 * width / texel, 1.0, kPenumbraMaxFilter);
 }
 
+// The depth view v's map stores for clip position `clip`: linear between its near and far
+// planes for an orthographic view, w for a perspective one.
+float shadowViewDepth(ShadowView v, vec4 clip) {
+    return uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
+               ? v.params.w - clip.z * (v.params.w - v.params.z)
+               : clip.w;
+}
+
+// Where clip position `clip` falls on the map, 0..1 across it; false behind the view or outside.
+bool shadowMapUv(vec4 clip, out vec2 uv) {
+    if (clip.w <= 0.0) return false;
+    uv = clip.xy / clip.w * 0.5 + 0.5;
+    return !(any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))));
+}
+
 // Lit fraction of one view at P (normal N, NoL toward the light); lightSize > 0 gives a
 // penumbra from the blocker search, 0 hard shadows (2 x 2 compare taps: a 3x3-texel tent).
 float sampleShadowView(ShadowView v, vec3 P, vec3 N, float NoL, float lightSize) {
-    vec4 plain = v.worldToClip * vec4(P, 1.0);
-    float depth = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
-                      ? v.params.w - plain.z * (v.params.w - v.params.z)
-                      : plain.w;
+    float depth = shadowViewDepth(v, v.worldToClip * vec4(P, 1.0));
     float texel = shadowTexelWorld(v, max(depth, 1e-4));
     float sinL = sqrt(saturate(1.0 - NoL * NoL));
     vec4 clip = v.worldToClip * vec4(P + N * (kShadowNormalOffset * texel * sinL), 1.0);
-    if (clip.w <= 0.0) return 1.0;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
-    float receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
-                         ? v.params.w - clip.z * (v.params.w - v.params.z)
-                         : clip.w;
+    vec2 uv;
+    if (!shadowMapUv(clip, uv)) return 1.0;
+    float receiver = shadowViewDepth(v, clip);
     float slope = min(sinL / max(NoL, 1e-3), kShadowMaxSlope);
     receiver -= texel * (kShadowDepthBias + kShadowSlopeBias * slope);
     vec2 tc = v.tile.xy + uv * v.tile.z;
@@ -206,12 +215,9 @@ bool shadowMapLookup(Light light, uint lightIndex, vec3 P, out ShadowView v, out
     blocker = 0.0;
     if (!shadowViewAt(light, lightIndex, P, v)) return false;
     vec4 clip = v.worldToClip * vec4(P, 1.0);
-    if (clip.w <= 0.0) return false;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return false;
-    receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
-                   ? v.params.w - clip.z * (v.params.w - v.params.z)
-                   : clip.w;
+    vec2 uv;
+    if (!shadowMapUv(clip, uv)) return false;
+    receiver = shadowViewDepth(v, clip);
     blocker = shadowBlockerDepth(v, ivec2(floor(v.tile.xy + uv * v.tile.z)));
     return true;
 }

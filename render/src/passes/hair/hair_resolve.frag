@@ -111,13 +111,10 @@ float hairSelfShadow(Light light, uint index, HairPoint h) {
     ShadowView v;
     if (!shadowViewAt(light, index, h.axis, v)) return 1.0;
     const vec4 clip = v.worldToClip * vec4(h.axis, 1.0);
-    if (clip.w <= 0.0) return 1.0;
-    const vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    vec2 uv;
+    if (!shadowMapUv(clip, uv)) return 1.0;
     const bool directional = light.type == kLightDirectional;
-    const float receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
-                               ? v.params.w - clip.z * (v.params.w - v.params.z)
-                               : clip.w;
+    const float receiver = shadowViewDepth(v, clip);
     const vec3 toLight = directional ? -light.direction : light.position - h.axis;
     const vec3 L = safeNormalize(toLight);
     // The strand's own depth spread over a texel of the map (its slope toward the light, as

@@ -36,12 +36,9 @@ float henyeyGreenstein(float cosTheta, float g) {
 float mediumShadowInView(ShadowView v, vec3 P) {
     if (!kShadowsEnabled) return 1.0;
     vec4 clip = v.worldToClip * vec4(P, 1.0);
-    if (clip.w <= 0.0) return 1.0;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
-    float receiver = uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC
-                         ? v.params.w - clip.z * (v.params.w - v.params.z)
-                         : clip.w;
+    vec2 uv;
+    if (!shadowMapUv(clip, uv)) return 1.0;
+    float receiver = shadowViewDepth(v, clip);
     float blocker = shadowBlockerDepth(v, ivec2(floor(v.tile.xy + uv * v.tile.z)));
     float texel = shadowTexelWorld(v, max(receiver, 1e-4));
     return receiver - kShadowDepthBias * texel <= blocker ? 1.0 : 0.0;
