@@ -13,21 +13,12 @@
 using namespace candela::render;
 using namespace candela::render::test;
 
-namespace {
-
-GpuContext& context() {
-    static GpuContext shared(requiredValidation());
-    return shared;
-}
-
-}  // namespace
-
 // Floor radiance / albedo under a uniform white sky is the floor's cosine-weighted sky
 // visibility (black box: no bounce; no specular; multi-bounce off, since its fit assumes
 // occluders as bright as the floor). Goal of the issue: mean absolute error <= 0.07 where the
 // true visibility is under 0.9, and open floor darkened by <= 0.05.
 TEST(AmbientOcclusion, GtaoMatchesRayTracedSkyVisibilityAroundABoxOnAFloor) {
-    BoxOnFloor scene(context());
+    BoxOnFloor scene(sharedContext());
     for (AoMode mode : {AoMode::Gtao, AoMode::Reference}) {
         const VisibilityError e = scene.compare(mode, {});
         std::printf(
@@ -45,13 +36,13 @@ TEST(AmbientOcclusion, GtaoMatchesRayTracedSkyVisibilityAroundABoxOnAFloor) {
     const VisibilityError off = scene.compare(AoMode::Off, {});
     std::printf("off       occluded floor: mean |error| %.4f\n", off.occludedMeanAbs);
     EXPECT_GT(off.occludedMeanAbs, 0.15);
-    EXPECT_EQ(context().validationMessages(), 0u);
+    EXPECT_EQ(sharedContext().validationMessages(), 0u);
 }
 
 // No occluders, no change: a white Lambert sphere in a uniform white sky reflects radiance 1
 // with AO on as with it off (multi-bounce on, as by default).
 TEST(AmbientOcclusion, WhiteFurnaceWithoutOccludersIsUnchanged) {
-    std::shared_ptr<const Environment> sky = Environment::uniform(context(), 1.0f);
+    std::shared_ptr<const Environment> sky = Environment::uniform(sharedContext(), 1.0f);
     for (AoMode mode : {AoMode::Off, AoMode::Gtao, AoMode::Reference}) {
         TestScene scene;
         scene.width = 64;
@@ -62,7 +53,7 @@ TEST(AmbientOcclusion, WhiteFurnaceWithoutOccludersIsUnchanged) {
         RendererOptions options;
         options.ao = mode;
         options.aoSettings.referenceRays = 64;
-        const CapturedFrame frame = scene.render(context(), options);
+        const CapturedFrame frame = scene.render(sharedContext(), options);
         float lo = 1e30f, hi = -1e30f;
         // The sphere's disc without its outermost ring (where the pixel straddles the sky).
         for (uint32_t y = 0; y < frame.height; ++y) {
@@ -83,18 +74,18 @@ TEST(AmbientOcclusion, WhiteFurnaceWithoutOccludersIsUnchanged) {
         EXPECT_NEAR(lo, 1.0f, tolerance) << aoModeName(mode);
         EXPECT_LE(hi, 1.0f + 0.002f) << aoModeName(mode);  // never brighter than no AO
     }
-    EXPECT_EQ(context().validationMessages(), 0u);
+    EXPECT_EQ(sharedContext().validationMessages(), 0u);
 }
 
 // The intensity scales the occlusion: 0 renders as AO off.
 TEST(AmbientOcclusion, ZeroIntensityMatchesOff) {
-    BoxOnFloor scene(context());
+    BoxOnFloor scene(sharedContext());
     BoxOnFloor::Settings none;
     none.intensity = 0.0f;
     const VisibilityError zero = scene.compare(AoMode::Gtao, none);
     const VisibilityError off = scene.compare(AoMode::Off, {});
     EXPECT_NEAR(zero.occludedMeanAbs, off.occludedMeanAbs, 1e-4);
-    EXPECT_EQ(context().validationMessages(), 0u);
+    EXPECT_EQ(sharedContext().validationMessages(), 0u);
 }
 
 namespace {
@@ -127,7 +118,7 @@ RendererOptions accumulating() {
 // frame-to-frame change of the floor's visibility falls as frames accumulate, and the
 // accumulated result is no farther from the ray trace than a single frame.
 TEST(AmbientOcclusionTemporal, AStillViewConverges) {
-    BoxOnFloor scene(context(), 96);
+    BoxOnFloor scene(sharedContext(), 96);
     BoxOnFloor::Sequence sequence(scene, accumulating(), {});
     auto floor = [&](uint32_t x, uint32_t y) { return scene.trueVisibility(int(x), int(y)) >= 0; };
     std::vector<CapturedFrame> frames;
@@ -148,14 +139,14 @@ TEST(AmbientOcclusionTemporal, AStillViewConverges) {
     EXPECT_LE(accumulated.occludedMeanAbs, single.occludedMeanAbs + 0.005);
     EXPECT_LE(accumulated.occludedMeanAbs, 0.07);
     EXPECT_LE(accumulated.openMeanDarkening, 0.05);
-    EXPECT_EQ(context().validationMessages(), 0u);
+    EXPECT_EQ(sharedContext().validationMessages(), 0u);
 }
 
 // The box jumps aside after the history has converged: the floor it uncovers rejects the
 // history there (the box's depth and normals) and shows this frame's visibility, not the
 // box's accumulated occlusion.
 TEST(AmbientOcclusionTemporal, UncoveredFloorLeavesNoStaleOcclusion) {
-    BoxOnFloor scene(context(), 96);
+    BoxOnFloor scene(sharedContext(), 96);
     BoxOnFloor::Sequence sequence(scene, accumulating(), {});
     const glm::vec3 start(0.0f), moved(-1.4f, 0.0f, 0.6f);
     CapturedFrame before;
@@ -188,5 +179,5 @@ TEST(AmbientOcclusionTemporal, UncoveredFloorLeavesNoStaleOcclusion) {
     ASSERT_GT(pixels, 60u) << "the move must uncover floor the box covered";
     // The slices rotate, so the two differ by GTAO's noise, not by the box's occlusion.
     EXPECT_LE(stale, 0.03);
-    EXPECT_EQ(context().validationMessages(), 0u);
+    EXPECT_EQ(sharedContext().validationMessages(), 0u);
 }

@@ -15,11 +15,6 @@ using namespace candela::render::test;
 
 namespace {
 
-GpuContext& context() {
-    static GpuContext shared(requiredValidation());
-    return shared;
-}
-
 // The sphere's disc without its outermost ring (where the pixel straddles the background).
 template <class F>
 void forDiscPixels(const CapturedFrame& frame, F&& visit) {
@@ -42,11 +37,11 @@ CapturedFrame renderSphere(float cavity, candela::content::AlphaMode alphaMode, 
     m.alphaMode = alphaMode;
     scene.add(candela::content::makeSphere(1.0f, 96, 48), m);
     scene.lookAt({0.0f, 0.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f});
-    if (sky) scene.environment = Environment::uniform(context(), 1.0f);
+    if (sky) scene.environment = Environment::uniform(sharedContext(), 1.0f);
     if (light) scene.lights.push_back(pointLight({1.0f, 1.0f, 3.0f}, 2000.0f, 20.0f));
     RendererOptions options;
     options.ao = AoMode::Off;
-    return scene.render(context(), options);
+    return scene.render(sharedContext(), options);
 }
 
 }  // namespace
@@ -91,5 +86,5 @@ TEST(Cavity, HalvesTheSkyLightAndLeavesAnalyticLightsUnchanged) {
         EXPECT_GT(maxRadiance, 0.05) << name << ": the light must reach the sphere";
         EXPECT_EQ(maxDifference, 0.0) << name;
     }
-    EXPECT_EQ(context().validationMessages(), 0u);
+    EXPECT_EQ(sharedContext().validationMessages(), 0u);
 }

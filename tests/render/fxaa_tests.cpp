@@ -25,22 +25,19 @@ namespace {
 
 constexpr uint32_t kSize = 40;
 
-GpuContext& context() {
-    static GpuContext shared(test::requiredValidation());
-    return shared;
-}
-
 // RGBA8 texels, row-major, kSize x kSize.
 using Image = std::vector<uint8_t>;
 
 Image runFxaa(const Image& input) {
-    GpuImage source(context(), {VK_FORMAT_R8G8B8A8_UNORM, kSize, kSize, 1, false,
-                                VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
-    GpuImage target(context(), {VK_FORMAT_R8G8B8A8_UNORM, kSize, kSize, 1, false,
-                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
-    writeImage(context(), source, 4, input.data());
-    FxaaPass pass(context());
-    context().submitAndWait([&](VkCommandBuffer cmd) {
+    GpuImage source(test::sharedContext(),
+                    {VK_FORMAT_R8G8B8A8_UNORM, kSize, kSize, 1, false,
+                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+    GpuImage target(test::sharedContext(),
+                    {VK_FORMAT_R8G8B8A8_UNORM, kSize, kSize, 1, false,
+                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT});
+    writeImage(test::sharedContext(), source, 4, input.data());
+    FxaaPass pass(test::sharedContext());
+    test::sharedContext().submitAndWait([&](VkCommandBuffer cmd) {
         transitionImage(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                         VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
                         VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
@@ -51,7 +48,7 @@ Image runFxaa(const Image& input) {
                         VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                         VK_ACCESS_2_TRANSFER_READ_BIT);
     });
-    return readImage(context(), target, 4, VK_IMAGE_LAYOUT_GENERAL);
+    return readImage(test::sharedContext(), target, 4, VK_IMAGE_LAYOUT_GENERAL);
 }
 
 // Image whose pixel (x, y) is `source`'s pixel at map(x, y).

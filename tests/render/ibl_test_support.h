@@ -1,6 +1,6 @@
 #pragma once
-// Test support shared by the IBL tests: one device per process, the shared assets, scratch
-// folders, and the three IBL modes.
+// Test support shared by the IBL tests: the shared assets, scratch folders, and the three IBL
+// modes (one device per process: offscreen_frame.h's sharedContext).
 #include <filesystem>
 #include <string>
 
@@ -10,11 +10,6 @@
 #include "test_scene.h"
 
 namespace candela::render::test {
-
-inline GpuContext& sharedContext() {
-    static GpuContext context(requiredValidation());
-    return context;
-}
 
 inline std::filesystem::path sharedAsset(const std::string& relative) {
     return std::filesystem::path(CANDELA_SHARED_ASSETS) / relative;

@@ -17,6 +17,13 @@ inline GpuContextOptions requiredValidation() {
     return options;
 }
 
+// One device for the whole test binary: making one costs as much as a 128x128 frame on
+// lavapipe.
+inline GpuContext& sharedContext() {
+    static GpuContext context(requiredValidation());
+    return context;
+}
+
 inline CapturedFrame renderOffscreen(GpuContext& context, const FrameInputs& inputs, uint32_t width,
                                      uint32_t height, uint32_t frames = 1,
                                      SceneResources* resources = nullptr,

@@ -28,11 +28,6 @@ using namespace candela::render;
 
 namespace {
 
-GpuContext& context() {
-    static GpuContext shared(test::requiredValidation());
-    return shared;
-}
-
 content::Model loadModel(const std::string& name) {
     content::Diagnostics diagnostics;
     auto loaded = content::loadGltf(
@@ -46,9 +41,9 @@ content::Model loadModel(const std::string& name) {
 // places this barrier in a frame; here the test records it).
 std::vector<MeshVertex> deformOnDevice(SkinningPass& pass, const GpuMesh& mesh,
                                        const SkinningPass::Pose& pose, const GpuBuffer& target) {
-    GpuBuffer readback(context(), target.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+    GpuBuffer readback(test::sharedContext(), target.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                        MemoryLocation::HostVisible);
-    context().submitAndWait([&](VkCommandBuffer cmd) {
+    test::sharedContext().submitAndWait([&](VkCommandBuffer cmd) {
         pass.recordDeform(cmd, mesh, pose, target.handle());
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
@@ -90,7 +85,7 @@ TEST(GpuSkinning, FoxWalkMatchesTheCpuReferenceAtTenTimes) {
     const content::Primitive& primitive = fox.meshes[size_t(meshIndex)].primitives[0];
     ASSERT_FALSE(primitive.joints.empty());
 
-    SceneResources resources(context());
+    SceneResources resources(test::sharedContext());
     const UploadedModel& uploaded = resources.addModel(fox);
     const uint32_t meshId = uploaded.firstPrimitiveOfMesh[size_t(meshIndex)];
     const GpuMesh& mesh = resources.mesh(meshId);
@@ -98,7 +93,7 @@ TEST(GpuSkinning, FoxWalkMatchesTheCpuReferenceAtTenTimes) {
     ASSERT_EQ(mesh.vertexCount, primitive.positions.size());
     resources.deformedVertexBuffers(1, meshId, false);
     const GpuBuffer& target = *resources.deformedBuffer(1);
-    SkinningPass pass(context());
+    SkinningPass pass(test::sharedContext());
 
     const content::AnimationClip& clip = fox.animations[size_t(walk)];
     const auto& skin = registry.get<content::Skin>(player.nodeEntities[size_t(meshNode)]);
@@ -138,7 +133,7 @@ TEST(GpuSkinning, FoxWalkMatchesTheCpuReferenceAtTenTimes) {
     EXPECT_LT(worstPosition, 1e-4f);
     EXPECT_LT(worstNormal, 1e-4f);
     EXPECT_GT(largestMotion, 1.0f);  // the clip really moved the mesh
-    EXPECT_EQ(context().validationMessages(), 0u);
+    EXPECT_EQ(test::sharedContext().validationMessages(), 0u);
 }
 
 // Morph targets and tangents on the device against the CPU: a synthetic triangle with two
@@ -164,12 +159,12 @@ TEST(GpuSkinning, MorphTargetsAndTangentsMatchTheCpuReference) {
     mesh.primitives.push_back(p);
     model.meshes.push_back(mesh);
 
-    SceneResources resources(context());
+    SceneResources resources(test::sharedContext());
     const uint32_t meshId = resources.addModel(model).firstPrimitiveOfMesh[0];
     ASSERT_TRUE(resources.mesh(meshId).deformable());
     ASSERT_EQ(resources.mesh(meshId).morphTargetCount, 2u);
     resources.deformedVertexBuffers(7, meshId, false);
-    SkinningPass pass(context());
+    SkinningPass pass(test::sharedContext());
 
     ecs::Mat4 quarterTurn{};  // about +Z, then moved by (2, 0, 0)
     const float m[16] = {0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1};
@@ -196,5 +191,5 @@ TEST(GpuSkinning, MorphTargetsAndTangentsMatchTheCpuReference) {
     }
     // Vertex 2 rides joint 1 alone: its tangent (1, 0, 0) turns to (0, 1, 0).
     EXPECT_NEAR(gpu[2].tangent[1], 1.0f, 1e-6f);
-    EXPECT_EQ(context().validationMessages(), 0u);
+    EXPECT_EQ(test::sharedContext().validationMessages(), 0u);
 }

@@ -14,20 +14,11 @@
 using namespace candela::render;
 using namespace candela::render::test;
 
-namespace {
-
-GpuContext& context() {
-    static GpuContext shared(requiredValidation());
-    return shared;
-}
-
-}  // namespace
-
 // Without sky occlusion the room's floor is as bright as open ground (visibility 1); with it,
 // the floor sees the sky only through the skylight: within 0.03 of the ray trace on average
 // (on) and 0.02 (reference).
 TEST(SkyOcclusion, ClosedRoomSeesTheSkyOnlyThroughItsSkylight) {
-    SkyRoom room(context(), true);
+    SkyRoom room(sharedContext(), true);
     for (SkyOcclusionMode mode :
          {SkyOcclusionMode::Off, SkyOcclusionMode::On, SkyOcclusionMode::Reference}) {
         RendererStats stats;
@@ -50,7 +41,7 @@ TEST(SkyOcclusion, ClosedRoomSeesTheSkyOnlyThroughItsSkylight) {
 // Ground whose every sky direction is open gets the unoccluded light: no bias darkens it. (The
 // walls are grown by 0.1 m, about 4 texels of the maps, for the compare filter's footprint.)
 TEST(SkyOcclusion, OpenGroundIsUnchanged) {
-    SkyRoom room(context(), false);
+    SkyRoom room(sharedContext(), false);
     const CapturedFrame off = room.render(SkyOcclusionMode::Off);
     const CapturedFrame on = room.render(SkyOcclusionMode::On);
     uint32_t openPixels = 0;
@@ -77,14 +68,14 @@ TEST(SkyOcclusion, OpenGroundIsUnchanged) {
 
 // The maps are rendered in the first frame and reused while the casters stay.
 TEST(SkyOcclusion, MapsAreBuiltOnceForStaticCasters) {
-    SkyRoom room(context(), true, 32);
+    SkyRoom room(sharedContext(), true, 32);
     RendererOptions options;
     options.skyOcclusion = SkyOcclusionMode::On;
-    SceneResources resources(context());
+    SceneResources resources(sharedContext());
     TestScene scene = room.scene();
     resources.setEnvironment(scene.environment);
     FrameInputs inputs = scene.prepare(resources);
-    FrameSequence frames(context(), scene.width, scene.height, options);
+    FrameSequence frames(sharedContext(), scene.width, scene.height, options);
     RendererStats stats;
     frames.render(inputs, resources, &stats);
     EXPECT_TRUE(stats.skyOcclusionRebuilt);
@@ -111,7 +102,7 @@ CapturedFrame renderWithPane(const SkyRoom& room, candela::content::AlphaMode al
               glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, kPaneHeight, z)));
     RendererOptions options;
     options.skyOcclusion = mode;
-    return scene.render(context(), options);
+    return scene.render(sharedContext(), options);
 }
 
 }  // namespace
@@ -120,7 +111,7 @@ CapturedFrame renderWithPane(const SkyRoom& room, candela::content::AlphaMode al
 // surface of the same material at the same place does (the forward pass applies the lighting
 // pass's sky occlusion); in the open it keeps the whole sky.
 TEST(SkyOcclusion, BlendedPaneIsOccludedLikeAnOpaqueOne) {
-    const SkyRoom inside(context(), true);
+    const SkyRoom inside(sharedContext(), true);
     const float half = 1.2f;
     const CapturedFrame blended = renderWithPane(inside, candela::content::AlphaMode::Blend, 0.0f,
                                                  half, SkyOcclusionMode::On);
@@ -150,7 +141,7 @@ TEST(SkyOcclusion, BlendedPaneIsOccludedLikeAnOpaqueOne) {
     EXPECT_LT(meanAbs, 0.005);
 
     // Outside: the pane's pixels that see every direction open are unchanged by the occlusion.
-    const SkyRoom outside(context(), false);
+    const SkyRoom outside(sharedContext(), false);
     const float z = 12.0f, outsideHalf = 6.0f;
     const CapturedFrame on = renderWithPane(outside, candela::content::AlphaMode::Blend, z,
                                             outsideHalf, SkyOcclusionMode::On);

@@ -13,12 +13,6 @@
 namespace candela::render::test {
 namespace {
 
-// One device for the whole binary: making one costs as much as a 128x128 frame on lavapipe.
-GpuContext& sharedContext() {
-    static GpuContext context(requiredValidation());
-    return context;
-}
-
 RendererOptions ssrOptions(SsrMode mode) {
     RendererOptions options;
     options.ssr = mode;
