@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "candela/content/builtin_meshes.h"
 #include "candela/content/component_validation.h"
@@ -706,13 +707,15 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         return std::nullopt;
     }
     SceneDocument scene;
-    if (root.contains("brdf")) {
-        // A misspelt value is reported and the default kept: the scene still loads.
-        SceneBrdf brdf = SceneBrdf::EnergyConserving;
-        if (reader.clean([&] { reader.enumeration(root, "", "brdf", kSceneBrdfs, brdf); })) {
-            scene.brdf = brdf;
-        }
-    }
+    // A top-level choice among named values, when present: a bad name is reported and the
+    // field left unset (the engine's default).
+    auto optionalEnumeration = [&](const char* key, const auto& names, auto& field) {
+        if (!root.contains(key)) return;
+        typename std::remove_reference_t<decltype(field)>::value_type value{};
+        if (reader.clean([&] { reader.enumeration(root, "", key, names, value); })) field = value;
+    };
+    // A misspelt value is reported and the default kept: the scene still loads.
+    optionalEnumeration("brdf", kSceneBrdfs, scene.brdf);
     if (root.contains("bloom")) {
         float bloom = 0.0f;
         if (reader.clean([&] { reader.number(root, "", "bloom", bloom); })) {
@@ -723,25 +726,14 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             }
         }
     }
-    if (root.contains("exposure")) {
-        SceneExposure exposure = SceneExposure::Manual;
-        if (reader.clean(
-                [&] { reader.enumeration(root, "", "exposure", kSceneExposures, exposure); })) {
-            scene.exposure = exposure;
-        }
-    }
+    optionalEnumeration("exposure", kSceneExposures, scene.exposure);
     if (root.contains("exposure_compensation")) {
         float compensation = 0.0f;
         if (reader.clean([&] { reader.number(root, "", "exposure_compensation", compensation); })) {
             scene.exposureCompensation = compensation;
         }
     }
-    if (root.contains("aa")) {
-        SceneAntiAliasing aa = SceneAntiAliasing::Taa;
-        if (reader.clean([&] { reader.enumeration(root, "", "aa", kSceneAntiAliasing, aa); })) {
-            scene.aa = aa;
-        }
-    }
+    optionalEnumeration("aa", kSceneAntiAliasing, scene.aa);
     if (root.contains("msaa")) {
         uint32_t msaa = 1;
         if (reader.clean([&] { reader.integer(root, "", "msaa", msaa, 1, 8); })) {
@@ -752,36 +744,10 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             }
         }
     }
-    if (root.contains("ssr")) {
-        SceneSsrMode ssr = SceneSsrMode::Off;
-        if (reader.clean([&] { reader.enumeration(root, "", "ssr", kSceneSsrModes, ssr); })) {
-            scene.ssr = ssr;
-        }
-    }
-    if (root.contains("scattering")) {
-        SceneScatteringMode scattering = SceneScatteringMode::Off;
-        if (reader.clean([&] {
-                reader.enumeration(root, "", "scattering", kSceneScatteringModes, scattering);
-            })) {
-            scene.scattering = scattering;
-        }
-    }
-    if (root.contains("volumetrics")) {
-        SceneVolumetricsMode volumetrics = SceneVolumetricsMode::Off;
-        if (reader.clean([&] {
-                reader.enumeration(root, "", "volumetrics", kSceneVolumetricsModes, volumetrics);
-            })) {
-            scene.volumetrics = volumetrics;
-        }
-    }
-    if (root.contains("sky_occlusion")) {
-        SceneSkyOcclusionMode mode = SceneSkyOcclusionMode::Off;
-        if (reader.clean([&] {
-                reader.enumeration(root, "", "sky_occlusion", kSceneSkyOcclusionModes, mode);
-            })) {
-            scene.skyOcclusion = mode;
-        }
-    }
+    optionalEnumeration("ssr", kSceneSsrModes, scene.ssr);
+    optionalEnumeration("scattering", kSceneScatteringModes, scene.scattering);
+    optionalEnumeration("volumetrics", kSceneVolumetricsModes, scene.volumetrics);
+    optionalEnumeration("sky_occlusion", kSceneSkyOcclusionModes, scene.skyOcclusion);
     const json* ao = nullptr;
     if (reader.object(root, "", "ambient_occlusion", ao)) {
         // Like "brdf": a bad value is reported and its default kept; the scene still loads.
