@@ -244,16 +244,17 @@ LightIncidence withLtcIntegrals(LightIncidence o, Light light, vec3 P, vec3 N, v
     vec2 uv = ltcTableUv(sqrt(alpha), saturate(dot(N, V)));
     mat3 frame = ltcShadingFrame(N, V);
     mat3 minv = ltcInverseMatrix(texture(ltcMatrixTable, uv));
+    o.specularLtc = texture(ltcMagnitudeTable, uv).xy;
     float integral;  // the unit-magnitude lobe's integral per candela
     if (tube) {
-        vec2 integrals = ltcTubeIntegrals(minv, frame * L0, frame * (L0 + Ld), light.sourceRadius);
-        integral = integrals.x;
+        vec3 p0 = frame * L0, p1 = frame * (L0 + Ld);
+        vec2 integrals = ltcTubeIntegrals(minv, p0, p1, light.sourceRadius);
+        integral = integrals.x * ltcTubeLobeCorrection(minv, o.specularLtc.x, alpha, frame * V, p0, p1);
         o.diffuseIlluminance = intensity * (PI * integrals.y);
     } else {
         float radius = light.sourceRadius;
         integral = ltcSphereIntegral(minv, frame * toCenter, radius) / (PI * radius * radius);
     }
-    o.specularLtc = texture(ltcMagnitudeTable, uv).xy;
     o.specularL = R;
     o.specularIlluminance = intensity * integral;
     return o;

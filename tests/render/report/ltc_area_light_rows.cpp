@@ -79,6 +79,7 @@ ShapeSweep sweep(ReportContext& context, bool sphere, const std::vector<double>&
                 s.c = {float(roughness), float(kLightAlong[0]), float(kLightAlong[1]),
                        float(kLightAlong[2])};
                 s.d = ltc.inverse;
+                s.e = {float(ltc.magnitude), 0.0f, 0.0f, 0.0f};
                 samples.push_back(s);
                 magnitudes.push_back(ltc.magnitude);
                 references.push_back(sphere
@@ -163,6 +164,7 @@ CapsuleSweep capsuleSweep(ReportContext& context, double radius, const std::vect
                     s.c = {float(roughness), float(kLightAlong[0]), float(kLightAlong[1]),
                            float(kLightAlong[2])};
                     s.d = ltc.inverse;
+                    s.e = {float(ltc.magnitude), 0.0f, 0.0f, 0.0f};
                     samples.push_back(s);
                 }
                 magnitudes.push_back(ltc.magnitude);

@@ -25,7 +25,7 @@ enum class ValueFunction : uint32_t {
 };
 
 struct ValueSample {
-    std::array<float, 4> a{}, b{}, c{}, d{};
+    std::array<float, 4> a{}, b{}, c{}, d{}, e{};
 };
 
 inline std::vector<std::array<float, 2>> evaluateOnDevice(stability::ComputeHarness& harness,

@@ -43,10 +43,12 @@ float representativePointSpecular(Light light, vec3 V, float roughness) {
 
 // --area-lights ltc: the unit-magnitude LTC's integral over the sphere or tube, times the
 // light's luminance (sphere, I / (pi r^2)) or intensity (tube); the caller multiplies by the
-// table's magnitude. minvEntries: the table's M^-1 (00, 02, 20, 22) for this roughness and view.
-// A tube by its capsule (ltcTubeIntegral, the renderer's), or with `segmentOnly` by the bare
-// segment's isotropic line integral (the renderer's before the capsule).
-float ltcSpecular(Light light, vec3 V, vec4 minvEntries, bool segmentOnly) {
+// table's magnitude. minvEntries: the table's M^-1 (00, 02, 20, 22) for this roughness and view,
+// magnitude its lobe magnitude. A tube by its capsule (ltcTubeIntegral times
+// ltcTubeLobeCorrection, the renderer's), or with `segmentOnly` by the bare segment's isotropic
+// line integral (the renderer's before the capsule).
+float ltcSpecular(Light light, vec3 V, vec4 minvEntries, bool segmentOnly, float magnitude,
+                  float roughness) {
     mat3 frame = ltcShadingFrame(kSurfaceNormal, V);
     mat3 minv = ltcInverseMatrix(minvEntries);
     vec3 center = frame * light.position;
@@ -55,8 +57,9 @@ float ltcSpecular(Light light, vec3 V, vec4 minvEntries, bool segmentOnly) {
         if (segmentOnly) {
             return light.intensity.x * ltcLineIntegral(minv, center - halfSegment, center + halfSegment);
         }
-        return light.intensity.x *
-               ltcTubeIntegral(minv, center - halfSegment, center + halfSegment, light.sourceRadius);
+        vec3 p0 = center - halfSegment, p1 = center + halfSegment;
+        return light.intensity.x * ltcTubeIntegral(minv, p0, p1, light.sourceRadius) *
+               ltcTubeLobeCorrection(minv, magnitude, alphaFromRoughness(roughness), frame * V, p0, p1);
     }
     float luminance = light.intensity.x / (PI * light.sourceRadius * light.sourceRadius);
     return luminance * ltcSphereIntegral(minv, center, light.sourceRadius);

@@ -107,14 +107,17 @@ float pointLightShading(vec3 V, float roughness) {
 }
 
 // A tube by LTC, diffuse + specular (F0 = 1, magnitude 1): the capsule's two integrals.
-float tubeLtcShading(Light light, vec3 V, vec4 minvEntries) {
+float tubeLtcShading(Light light, vec3 V, vec4 minvEntries, float magnitude, float roughness) {
     vec3 N = vec3(0.0, 0.0, 1.0);
     mat3 frame = ltcShadingFrame(N, V);
+    mat3 minv = ltcInverseMatrix(minvEntries);
     vec3 center = frame * light.position;
     vec3 halfSegment = frame * light.tubeAxis * (0.5 * light.sourceLength);
-    vec2 integrals = ltcTubeIntegrals(ltcInverseMatrix(minvEntries), center - halfSegment,
-                                      center + halfSegment, light.sourceRadius);
-    return light.intensity.x * (integrals.x + PI * integrals.y);
+    vec3 p0 = center - halfSegment, p1 = center + halfSegment;
+    vec2 integrals = ltcTubeIntegrals(minv, p0, p1, light.sourceRadius);
+    float correction =
+        ltcTubeLobeCorrection(minv, magnitude, alphaFromRoughness(roughness), frame * V, p0, p1);
+    return light.intensity.x * (integrals.x * correction + PI * integrals.y);
 }
 
 AreaShape costShape(bool disk, float size) {
@@ -196,6 +199,9 @@ float areaShadingConstantIntensity(bool disk, bool ltc, vec3 V, float roughness,
 // An M^-1 of the table's shape that changes with the inputs (the table fetch itself, two
 // texture reads in a renderer, is not timed), and the same point light shaded the same way.
 #define LTC_MINV vec4(0.5 + 0.5 * y, 0.1 * x, -0.1 * x, 0.3 + 0.7 * y)
+// Its magnitude and roughness (a tube's lobe correction runs from roughness 0.2 up).
+#define LTC_MAGNITUDE (0.3 + 0.6 * y)
+#define LTC_ROUGHNESS (0.1 + 0.9 * y)
 #define POINT_LIGHT areaLight(0.0, 0.0)
 
 void main() {
@@ -238,14 +244,14 @@ void main() {
         case kPointLight:
             TIMED_LOOP(representativePointSpecular(POINT_LIGHT, AREA_VIEW, 0.1 + 0.9 * y, true));
             break;
-        case kSphereLtc: TIMED_LOOP(ltcSpecular(SPHERE_LIGHT, AREA_VIEW, LTC_MINV, false)); break;
-        case kTubeLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV, false)); break;
+        case kSphereLtc: TIMED_LOOP(ltcSpecular(SPHERE_LIGHT, AREA_VIEW, LTC_MINV, false, LTC_MAGNITUDE, LTC_ROUGHNESS)); break;
+        case kTubeLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV, false, LTC_MAGNITUDE, LTC_ROUGHNESS)); break;
         case kTubeCapsuleLtc:
-            TIMED_LOOP(ltcSpecular(THICK_TUBE_LIGHT, AREA_VIEW, LTC_MINV, false));
+            TIMED_LOOP(ltcSpecular(THICK_TUBE_LIGHT, AREA_VIEW, LTC_MINV, false, LTC_MAGNITUDE, LTC_ROUGHNESS));
             break;
-        case kTubeSegmentLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV, true)); break;
+        case kTubeSegmentLtc: TIMED_LOOP(ltcSpecular(TUBE_LIGHT, AREA_VIEW, LTC_MINV, true, LTC_MAGNITUDE, LTC_ROUGHNESS)); break;
         case kPointLightShading: TIMED_LOOP(pointLightShading(AREA_VIEW, 0.1 + 0.9 * y)); break;
-        case kTubeCapsuleLtcShading: TIMED_LOOP(tubeLtcShading(THICK_TUBE_LIGHT, AREA_VIEW, LTC_MINV)); break;
+        case kTubeCapsuleLtcShading: TIMED_LOOP(tubeLtcShading(THICK_TUBE_LIGHT, AREA_VIEW, LTC_MINV, LTC_MAGNITUDE, LTC_ROUGHNESS)); break;
         case kTubeRepresentativeShading:
             TIMED_LOOP(localLightShading(THICK_TUBE_LIGHT, AREA_VIEW, 0.1 + 0.9 * y));
             break;

@@ -21,8 +21,9 @@ const uint kGgx = 5u;               // a.x a2, a.y NoH -> (D)
 // tube axis -> (representative-point specular)
 const uint kAreaLight = 6u;
 const uint kVisibilityFast = 7u;    // a.x alpha, a.y NoV, a.z NoL -> (Hammon's fast form, exact)
-// As kAreaLight, d the table's M^-1 (00, 02, 20, 22) -> (LTC specular over the light with unit
-// magnitude, representative-point specular with the height-correlated Smith visibility)
+// As kAreaLight, d the table's M^-1 (00, 02, 20, 22), e.x its magnitude -> (LTC specular over the
+// light with unit magnitude, representative-point specular with the height-correlated Smith
+// visibility)
 const uint kAreaLightLtc = 8u;
 // A tube light at a.xyz, radius a.w, length b.w, axis c.yzw, over N = +Z -> (the LTC mode's
 // diffuse: the capsule's irradiance, the representative mode's: lineIrradiance), lux per cd
@@ -33,6 +34,7 @@ struct Sample {
     vec4 b;
     vec4 c;
     vec4 d;
+    vec4 e;
 };
 
 layout(std430, binding = 0) readonly buffer Samples {
@@ -77,7 +79,7 @@ vec2 evaluate(Sample s) {
             light.spotScale = 0.0;
             light.spotOffset = 0.0;
             if (function == kAreaLightLtc) {
-                return vec2(ltcSpecular(light, s.b.xyz, s.d, s.a.w < 0.0),
+                return vec2(ltcSpecular(light, s.b.xyz, s.d, s.a.w < 0.0, s.e.x, s.c.x),
                             representativePointSpecular(light, s.b.xyz, s.c.x, true));
             }
             return vec2(representativePointSpecular(light, s.b.xyz, s.c.x), 0.0);

@@ -31,7 +31,8 @@ const uint kLtcQuad = 10u;
 // ltcDiskIntegral with center a.xyz, axisU b.xyz, axisV c.xyz and M^-1 as for kLtcQuad.
 const uint kLtcDisk = 11u;
 // ltcTubeIntegrals of the capsule around a.xyz..b.xyz of radius c.x, M^-1 as for kLtcQuad:
-// (the lobe's integral, the form factor), per candela.
+// (the lobe's integral, the form factor, the lobe's integral times ltcTubeLobeCorrection for the
+// table's magnitude c.y, alpha c.z and view d.xyz: the renderer's), per candela.
 const uint kLtcTube = 12u;
 // Irradiance per unit luminance of a rect or disk light (area_lights.glsl) at P with normal N:
 // a.xyz centre, a.w 1 for a disk; b.xyz emitting normal, b.w half width (disk: radius);
@@ -99,7 +100,9 @@ vec4 evaluate(LightSample s) {
         }
         case kLtcTube: {
             mat3 minv = mat3(vec3(s.a.w, 0.0, s.c.w), vec3(0.0, 1.0, 0.0), vec3(s.b.w, 0.0, s.d.w));
-            return vec4(ltcTubeIntegrals(minv, s.a.xyz, s.b.xyz, s.c.x), 0.0, 0.0);
+            vec2 integrals = ltcTubeIntegrals(minv, s.a.xyz, s.b.xyz, s.c.x);
+            float correction = ltcTubeLobeCorrection(minv, s.c.y, s.c.z, s.d.xyz, s.a.xyz, s.b.xyz);
+            return vec4(integrals, integrals.x * correction, 0.0);
         }
         case kAreaLightDiffuse: {
             AreaShape shape;
