@@ -158,7 +158,9 @@ float ltcTubeIntegral(mat3 minv, vec3 p0, vec3 p1, float radius) {
 // between the points and are fitted closely (report: 0.1..0.5 % there), so the factor fades in
 // from roughness 0.2 to 0.4. V in the shading frame; alpha = roughness^2 (brdf.glsl); the
 // factor multiplies ltcTubeIntegral's result. Measured: report "area lights by LTC", capsule
-// rows (worst cell 2.6 % to ...); LtcTube.ThickTubeMatchesTheLambertianCapsule.
+// rows: worst cell 2.5 / 2.6 / 2.6 % -> 0.99 / 0.91 / 1.07 % at radius 0.02 / 0.1 / 0.3 m (mean
+// 0.7 / 0.8 / 0.7 % -> 0.2 / 0.3 / 0.3 %), 145x -> 151x a point light's specular;
+// LtcTube.ThickTubeMatchesTheLambertianCapsule (worst 1.66 % -> 1.34 %).
 float ltcTubeLobeCorrection(mat3 minv, float magnitude, float alpha, vec3 V, vec3 p0, vec3 p1) {
     float weight = saturate((sqrt(alpha) - 0.2) / 0.2);
     if (!(weight > 0.0) || !(magnitude > 0.0)) return 1.0;

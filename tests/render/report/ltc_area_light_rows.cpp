@@ -409,7 +409,7 @@ void addLtcAreaLightRows(ReportContext& context) {
              capsuleReference, metric(capsule.segment, tubeGridText), capsule.segment.worst, "rel",
              capsule.segment.where, relativeCost(ns[6]), measuredNs(ns[6])},
             {name + ", --area-lights ltc (ltcTubeIntegral: the cone's outline, tangent edges + cap "
-                    "arcs)",
+                    "arcs; x ltcTubeLobeCorrection)",
              capsuleReference, metric(capsule.capsule, tubeGridText), capsule.capsule.worst, "rel",
              capsule.capsule.where, relativeCost(ns[5]), measuredNs(ns[5])},
         };
