@@ -277,10 +277,12 @@ ecs::Mat4 affineInverse(const ecs::Mat4& m) {
 
 namespace {
 
-// The WorldTransform pool, fetched once per frame (null: no entity has one).
+// The WorldTransform pool, fetched once per frame (null: no entity has one), and the
+// LocalTransform pool (null: none), for the worlds a skeleton pass left unwritten.
 struct JointWorlds {
     const ecs::Registry& registry;
     const ecs::ComponentPool* pool;
+    const ecs::ComponentPool* locals;
 
     std::uint32_t indexOf(ecs::Entity e) const {
         return pool && e != ecs::kNullEntity && registry.valid(e) ? pool->indexOf(e)
@@ -295,6 +297,29 @@ struct JointWorlds {
                    : &pool->typedData<ecs::WorldTransform>()[index];
     }
 };
+
+// The world matrix propagation gives `e` (its parent's world, when the parent has both
+// transforms, times its local, with propagation's own product), composed from the locals
+// up the hierarchy: what a joint whose WorldTransform the skeleton pass left unwritten has.
+// An entity without a LocalTransform keeps its stored world (propagation leaves it alone).
+ecs::Mat4 worldFromLocals(const JointWorlds& worlds, ecs::Entity e, int depth = 0) {
+    const std::uint32_t local = worlds.locals && e != ecs::kNullEntity && worlds.registry.valid(e)
+                                    ? worlds.locals->indexOf(e)
+                                    : ecs::ComponentPool::kAbsent;
+    const std::uint32_t world = worlds.indexOf(e);
+    if (local == ecs::ComponentPool::kAbsent || world == ecs::ComponentPool::kAbsent || depth > 256)
+        return world == ecs::ComponentPool::kAbsent ? ecs::Mat4::identity()
+                                                    : worlds.world(world)->matrix;
+    const ecs::Entity parent = ecs::parentOf(worlds.registry, e);
+    const bool placed = parent != ecs::kNullEntity && worlds.registry.valid(parent) &&
+                        worlds.locals->indexOf(parent) != ecs::ComponentPool::kAbsent &&
+                        worlds.indexOf(parent) != ecs::ComponentPool::kAbsent;
+    const ecs::Mat4 parentWorld = placed ? worldFromLocals(worlds, parent, depth + 1) : ecs::Mat4{};
+    const ecs::LocalTransform& t = worlds.locals->typedData<ecs::LocalTransform>()[local];
+    ecs::Mat4 out;
+    ecs::composeWorld(placed ? &parentWorld : nullptr, t.position, t.rotation, t.scale, out);
+    return out;
+}
 
 // The mesh's and joints' dense WorldTransform indices, looked up again only when the pool's
 // structure changed (sized once: no allocation after).
@@ -320,7 +345,9 @@ void updateSkin(const JointWorlds& worlds, ecs::Entity entity, Skin& skin) {
         newest = std::max(newest, worlds.tick(index));
     const bool builtByPose = skin.builtByPose;
     skin.builtByPose = false;
-    if (skin.builtFrom != ecs::kNeverTick && newest == skin.builtFrom &&
+    // (A skeleton pass that left joint worlds unwritten built from newer worlds than their
+    // ticks say: nothing newer than builtFrom means current.)
+    if (skin.builtFrom != ecs::kNeverTick && newest <= skin.builtFrom &&
         skin.jointMatrices.size() == data.joints.size()) {
         // Built this frame by the skeleton pass from these very worlds: current.
         if (builtByPose) return;
@@ -336,6 +363,21 @@ void updateSkin(const JointWorlds& worlds, ecs::Entity entity, Skin& skin) {
     skin.builtFrom = newest;
     skin.previousIsCurrent = false;
     const ecs::WorldTransform* meshWorld = worlds.world(skin.meshWorldIndex);
+    if (skin.worldsSkippedByPose) {
+        // Some joints' stored worlds are stale: each from the locals (rare: propagation
+        // moved something after the pass, e.g. an attachment's joint or the character).
+        const ecs::Mat4 toMesh =
+            meshWorld ? affineInverse(worldFromLocals(worlds, entity)) : ecs::Mat4::identity();
+        ecs::Mat4 jointWorld;
+        buildJointMatrices(skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
+            if (j >= skin.jointWorldIndex.size() ||
+                worlds.world(skin.jointWorldIndex[j]) == nullptr)
+                return nullptr;
+            jointWorld = worldFromLocals(worlds, skin.joints[j]);
+            return &jointWorld;
+        });
+        return;
+    }
     const ecs::Mat4 toMesh = meshWorld ? affineInverse(meshWorld->matrix) : ecs::Mat4::identity();
     buildJointMatrices(skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
         const ecs::WorldTransform* world =
@@ -380,9 +422,13 @@ void updateListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLi
     lists.skins.clear();
     registry.view<Skin>().each([&](ecs::Entity e, Skin&) { lists.skins.push_back(e); });
     const ecs::Storage<Skin> skins = registry.storage<Skin>();
-    const JointWorlds worlds{registry, registry.view<ecs::WorldTransform>().empty()
-                                           ? nullptr
-                                           : &registry.storage<ecs::WorldTransform>().pool()};
+    const JointWorlds worlds{registry,
+                             registry.view<ecs::WorldTransform>().empty()
+                                 ? nullptr
+                                 : &registry.storage<ecs::WorldTransform>().pool(),
+                             registry.view<ecs::LocalTransform>().empty()
+                                 ? nullptr
+                                 : &registry.storage<ecs::LocalTransform>().pool()};
     jobs.parallelFor(lists.skins.size(), kSkinsPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             updateSkin(worlds, lists.skins[i], skins.get(lists.skins[i]));
