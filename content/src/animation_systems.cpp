@@ -85,9 +85,11 @@ void resetToRest(const AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransf
            sampleLinearInCursorInterval(sampler, rotation, t, out, cursor);
 }
 
+// `poseAt(node)`: where node's LocalTransform goes.
+template <class PoseAt>
 void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loop,
-                AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransform>& pose,
-                std::vector<float>& weights, std::vector<std::uint32_t>& cursors) {
+                AnimationPlayer::Scratch& s, PoseAt&& poseAt, std::vector<float>& weights,
+                std::vector<std::uint32_t>& cursors) {
     if (clipIndex < 0 || static_cast<std::size_t>(clipIndex) >= model.animations.size()) return;
     const AnimationClip& clip = model.animations[static_cast<std::size_t>(clipIndex)];
     const float t = clipTime(time, clip.duration, loop);
@@ -116,7 +118,7 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
         std::uint32_t& cursor = cursors[c];
         const auto node = static_cast<std::size_t>(channel.node);
         const AnimationSampler& sampler = clip.samplers[static_cast<std::size_t>(channel.sampler)];
-        ecs::LocalTransform& local = pose[node];
+        ecs::LocalTransform& local = poseAt(node);
         // A node's first channel this frame starts it from the rest pose (the model's, shared
         // by every instance and so in cache even with thousands of players; the player's own
         // converted copy is not), for the properties no channel animates.
@@ -214,11 +216,32 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
     // only a crossfade, where a node one clip leaves alone blends from its rest pose, needs
     // the whole rest pose; otherwise sampleClip starts each animated node from rest itself.
     if (player.nextClip >= 0) resetToRest(s, s.pose, s.weights);
-    sampleClip(model, player.clip, player.time, player.loop, s, s.pose, s.weights, s.cursors);
+    auto inScratch = [](std::vector<ecs::LocalTransform>& pose) {
+        return [&pose](std::size_t node) -> ecs::LocalTransform& { return pose[node]; };
+    };
+    // Without a crossfade (nothing to blend), where the skeleton pass writes worlds itself,
+    // the pose goes straight into the node entities' LocalTransform: no scratch pose to
+    // write, read back and copy.
+    const bool poseInLocals = player.nextClip < 0 && prepareSkeletonPose(registry, pools, player);
+    if (poseInLocals) {
+        ecs::LocalTransform* locals = pools.locals->typedData<ecs::LocalTransform>();
+        const std::uint32_t* localIndex = s.localIndex.data();
+        ecs::LocalTransform* pose = s.pose.data();
+        sampleClip(
+            model, player.clip, player.time, player.loop, s,
+            [&](std::size_t node) -> ecs::LocalTransform& {
+                const std::uint32_t index = localIndex[node];
+                return index != ecs::ComponentPool::kAbsent ? locals[index] : pose[node];
+            },
+            s.weights, s.cursors);
+    } else {
+        sampleClip(model, player.clip, player.time, player.loop, s, inScratch(s.pose), s.weights,
+                   s.cursors);
+    }
     const float fade = player.fadeWeight();
     if (player.nextClip >= 0) {
         resetToRest(s, s.blendPose, s.blendWeights);
-        sampleClip(model, player.nextClip, player.nextTime, player.loop, s, s.blendPose,
+        sampleClip(model, player.nextClip, player.nextTime, player.loop, s, inScratch(s.blendPose),
                    s.blendWeights, s.blendCursors);
         for (std::size_t n = 0; n < s.pose.size(); ++n) {
             if (s.touched[n] == 0) continue;
@@ -232,7 +255,7 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
             s.weights[i] += (s.blendWeights[i] - s.weights[i]) * fade;
     }
 
-    writeSkeletonPose(registry, pools, player);
+    writeSkeletonPose(registry, pools, player, poseInLocals);
     for (std::size_t n = 0; n < s.pose.size() && n < player.nodeEntities.size(); ++n) {
         const ecs::Entity e = player.nodeEntities[n];
         if (!(s.touched[n] & kWeightsTouched) || e == ecs::kNullEntity) continue;

@@ -235,7 +235,13 @@ void prefetchSkeletonPose(const TransformPools& pools, const AnimationPlayer& pl
     if (!s.bound || !s.direct || pools.locals == nullptr || pools.worlds == nullptr) return;
     prefetchVector(s.cursors, true);
     prefetchVector(s.touched, true);
-    prefetchVector(s.pose, true);
+    // A bound direct player samples into its entities' locals (through localIndex), not
+    // into its scratch pose (a crossfade still does).
+    if (s.direct) {
+        prefetchVector(s.localIndex, false);
+    } else {
+        prefetchVector(s.pose, true);
+    }
     prefetchVector(s.passNodes, false);
     prefetchVector(s.passMoved, true);
     if (pools.skins != nullptr && s.skinPool == pools.skins &&
@@ -287,11 +293,16 @@ void prefetchSkinOutputs(const TransformPools& pools, const AnimationPlayer& pla
     }
 }
 
-void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
-                       AnimationPlayer& player) {
-    AnimationPlayer::Scratch& s = player.scratch;
+bool prepareSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
+                         AnimationPlayer& player) {
     if (!bindingIsCurrent(registry, pools, player)) bind(registry, pools, player);
-    if (!s.direct || pools.locals == nullptr || pools.worlds == nullptr) {
+    return player.scratch.direct && pools.locals != nullptr && pools.worlds != nullptr;
+}
+
+void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
+                       AnimationPlayer& player, bool poseInLocals) {
+    AnimationPlayer::Scratch& s = player.scratch;
+    if (!prepareSkeletonPose(registry, pools, player)) {
         writeLocalsOnly(registry, pools, player);
         return;
     }
@@ -307,14 +318,13 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
         s.passNodes.size() <= kThreadPassNodes ? threadWorlds : s.passWorlds.data();
     for (std::size_t i = 0; i < s.passNodes.size(); ++i) {
         const AnimationPlayer::Scratch::PassNode& p = s.passNodes[i];
-        ecs::LocalTransform& pose = s.pose[p.node];
         const bool animated = (s.touched[p.node] & kTransformTouched) != 0;
         if (animated) {
-            locals[p.local] = pose;
+            if (!poseInLocals) locals[p.local] = s.pose[p.node];
             if (p.stampLocal) pools.locals->stamp(p.local, now);
-        } else {
-            pose = locals[p.local];  // not animated: the entity's own (a game may move it)
         }
+        // Not animated: the entity's own (a game may move it).
+        const ecs::LocalTransform& pose = locals[p.local];
         // A node neither animated nor under one that moved keeps its world (and its change
         // tick: readers that track moved entities see only what moved). A node whose world
         // the pass does not write is computed every frame: its entity's may be stale.
