@@ -493,17 +493,15 @@ void addAnimationSystems(ecs::Scheduler& scheduler, std::function<float()> delta
         .writesResource<AnimationWorkLists>();
 }
 
-void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) {
-    const SkinData& data = model.skins[static_cast<std::size_t>(skin.skin)];
+std::vector<std::array<float, 6>> jointBoundsOf(const Mesh& mesh, std::size_t jointCount) {
     constexpr float kInf = std::numeric_limits<float>::infinity();
-    skin.jointBounds.assign(data.joints.size(), {kInf, kInf, kInf, -kInf, -kInf, -kInf});
-    const Mesh& mesh = model.meshes[static_cast<std::size_t>(meshIndex)];
+    std::vector<std::array<float, 6>> bounds(jointCount, {kInf, kInf, kInf, -kInf, -kInf, -kInf});
     for (const Primitive& p : mesh.primitives) {
         for (std::size_t v = 0; v < p.joints.size(); ++v) {
             for (int c = 0; c < 4; ++c) {
                 if (!(p.weights[v][c] > 0)) continue;
                 const std::uint16_t j = p.joints[v][c];
-                if (j >= skin.jointBounds.size()) continue;
+                if (j >= bounds.size()) continue;
                 // Morph targets can push vertices out: grow by every target's delta.
                 Float3 lo = p.positions[v], hi = p.positions[v];
                 for (const MorphTarget& t : p.morphTargets) {
@@ -513,7 +511,7 @@ void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) 
                         hi[a] += std::max(0.0f, t.positionDeltas[v][a]);
                     }
                 }
-                std::array<float, 6>& box = skin.jointBounds[j];
+                std::array<float, 6>& box = bounds[j];
                 for (int a = 0; a < 3; ++a) {
                     box[a] = std::min(box[a], lo[a]);
                     box[a + 3] = std::max(box[a + 3], hi[a]);
@@ -523,13 +521,27 @@ void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) 
     }
     // Stored as centre and half size, what each frame's bounds need (computed here once, the
     // same floats the frame would compute); a joint that moves no vertex gets half size -inf.
-    for (std::array<float, 6>& box : skin.jointBounds) {
+    for (std::array<float, 6>& box : bounds) {
         const std::array<float, 6> minMax = box;
         for (int a = 0; a < 3; ++a) {
             box[a] = 0.5f * (minMax[a] + minMax[a + 3]);
             box[a + 3] = 0.5f * (minMax[a + 3] - minMax[a]);
         }
     }
+    return bounds;
+}
+
+void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) {
+    const SkinData& data = model.skins[static_cast<std::size_t>(skin.skin)];
+    const Mesh& mesh = model.meshes[static_cast<std::size_t>(meshIndex)];
+    if (mesh.jointBounds.size() >= data.joints.size()) {
+        // Not owned: the model outlives its entities (as for the clips).
+        skin.jointBounds = std::shared_ptr<const std::vector<std::array<float, 6>>>(
+            std::shared_ptr<const void>(), &mesh.jointBounds);
+        return;
+    }
+    skin.jointBounds = std::make_shared<const std::vector<std::array<float, 6>>>(
+        jointBoundsOf(mesh, data.joints.size()));
 }
 
 }  // namespace candela::content

@@ -289,7 +289,7 @@ void prefetchSkinOutputs(const TransformPools& pools, const AnimationPlayer& pla
         const Skin& skin = skins[index];
         // buildJointMatrices swaps the two sets and then writes the older one.
         prefetchVector(skin.previousJointMatrices, true);
-        prefetchVector(skin.jointBounds, false);
+        if (skin.jointBounds) prefetchVector(*skin.jointBounds, false);
     }
 }
 

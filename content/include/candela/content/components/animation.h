@@ -8,6 +8,7 @@
 // The systems that update them are in animation_systems.h.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -152,7 +153,8 @@ struct Skin {
     // Per joint, the bind-space box of the vertices it influences, as its centre xyz and half
     // size xyz (half size -inf when it influences none): the deformed mesh lies inside the
     // union of these boxes moved by the joint matrices.
-    std::vector<std::array<float, 6>> jointBounds;
+    // Shared by every instance of the mesh (Mesh::jointBounds; not owned) or this skin's own.
+    std::shared_ptr<const std::vector<std::array<float, 6>>> jointBounds;
     // The deformed mesh's bounds in mesh space (what culling and clusters use).
     ecs::Vec3 boundsMin{}, boundsMax{};
     bool boundsValid = false;
