@@ -85,9 +85,11 @@ void resetToRest(const AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransf
            sampleLinearInCursorInterval(sampler, rotation, t, out, cursor);
 }
 
+// `poseAt(node)`: where node's LocalTransform goes.
+template <class PoseAt>
 void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loop,
-                AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransform>& pose,
-                std::vector<float>& weights, std::vector<std::uint32_t>& cursors) {
+                AnimationPlayer::Scratch& s, PoseAt&& poseAt, std::vector<float>& weights,
+                std::vector<std::uint32_t>& cursors) {
     if (clipIndex < 0 || static_cast<std::size_t>(clipIndex) >= model.animations.size()) return;
     const AnimationClip& clip = model.animations[static_cast<std::size_t>(clipIndex)];
     const float t = clipTime(time, clip.duration, loop);
@@ -116,7 +118,7 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
         std::uint32_t& cursor = cursors[c];
         const auto node = static_cast<std::size_t>(channel.node);
         const AnimationSampler& sampler = clip.samplers[static_cast<std::size_t>(channel.sampler)];
-        ecs::LocalTransform& local = pose[node];
+        ecs::LocalTransform& local = poseAt(node);
         // A node's first channel this frame starts it from the rest pose (the model's, shared
         // by every instance and so in cache even with thousands of players; the player's own
         // converted copy is not), for the properties no channel animates.
@@ -214,11 +216,32 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
     // only a crossfade, where a node one clip leaves alone blends from its rest pose, needs
     // the whole rest pose; otherwise sampleClip starts each animated node from rest itself.
     if (player.nextClip >= 0) resetToRest(s, s.pose, s.weights);
-    sampleClip(model, player.clip, player.time, player.loop, s, s.pose, s.weights, s.cursors);
+    auto inScratch = [](std::vector<ecs::LocalTransform>& pose) {
+        return [&pose](std::size_t node) -> ecs::LocalTransform& { return pose[node]; };
+    };
+    // Without a crossfade (nothing to blend), where the skeleton pass writes worlds itself,
+    // the pose goes straight into the node entities' LocalTransform: no scratch pose to
+    // write, read back and copy.
+    const bool poseInLocals = player.nextClip < 0 && prepareSkeletonPose(registry, pools, player);
+    if (poseInLocals) {
+        ecs::LocalTransform* locals = pools.locals->typedData<ecs::LocalTransform>();
+        const std::uint32_t* localIndex = s.localIndex.data();
+        ecs::LocalTransform* pose = s.pose.data();
+        sampleClip(
+            model, player.clip, player.time, player.loop, s,
+            [&](std::size_t node) -> ecs::LocalTransform& {
+                const std::uint32_t index = localIndex[node];
+                return index != ecs::ComponentPool::kAbsent ? locals[index] : pose[node];
+            },
+            s.weights, s.cursors);
+    } else {
+        sampleClip(model, player.clip, player.time, player.loop, s, inScratch(s.pose), s.weights,
+                   s.cursors);
+    }
     const float fade = player.fadeWeight();
     if (player.nextClip >= 0) {
         resetToRest(s, s.blendPose, s.blendWeights);
-        sampleClip(model, player.nextClip, player.nextTime, player.loop, s, s.blendPose,
+        sampleClip(model, player.nextClip, player.nextTime, player.loop, s, inScratch(s.blendPose),
                    s.blendWeights, s.blendCursors);
         for (std::size_t n = 0; n < s.pose.size(); ++n) {
             if (s.touched[n] == 0) continue;
@@ -232,7 +255,7 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
             s.weights[i] += (s.blendWeights[i] - s.weights[i]) * fade;
     }
 
-    writeSkeletonPose(registry, pools, player);
+    writeSkeletonPose(registry, pools, player, poseInLocals);
     for (std::size_t n = 0; n < s.pose.size() && n < player.nodeEntities.size(); ++n) {
         const ecs::Entity e = player.nodeEntities[n];
         if (!(s.touched[n] & kWeightsTouched) || e == ecs::kNullEntity) continue;
@@ -277,10 +300,12 @@ ecs::Mat4 affineInverse(const ecs::Mat4& m) {
 
 namespace {
 
-// The WorldTransform pool, fetched once per frame (null: no entity has one).
+// The WorldTransform pool, fetched once per frame (null: no entity has one), and the
+// LocalTransform pool (null: none), for the worlds a skeleton pass left unwritten.
 struct JointWorlds {
     const ecs::Registry& registry;
     const ecs::ComponentPool* pool;
+    const ecs::ComponentPool* locals;
 
     std::uint32_t indexOf(ecs::Entity e) const {
         return pool && e != ecs::kNullEntity && registry.valid(e) ? pool->indexOf(e)
@@ -295,6 +320,29 @@ struct JointWorlds {
                    : &pool->typedData<ecs::WorldTransform>()[index];
     }
 };
+
+// The world matrix propagation gives `e` (its parent's world, when the parent has both
+// transforms, times its local, with propagation's own product), composed from the locals
+// up the hierarchy: what a joint whose WorldTransform the skeleton pass left unwritten has.
+// An entity without a LocalTransform keeps its stored world (propagation leaves it alone).
+ecs::Mat4 worldFromLocals(const JointWorlds& worlds, ecs::Entity e, int depth = 0) {
+    const std::uint32_t local = worlds.locals && e != ecs::kNullEntity && worlds.registry.valid(e)
+                                    ? worlds.locals->indexOf(e)
+                                    : ecs::ComponentPool::kAbsent;
+    const std::uint32_t world = worlds.indexOf(e);
+    if (local == ecs::ComponentPool::kAbsent || world == ecs::ComponentPool::kAbsent || depth > 256)
+        return world == ecs::ComponentPool::kAbsent ? ecs::Mat4::identity()
+                                                    : worlds.world(world)->matrix;
+    const ecs::Entity parent = ecs::parentOf(worlds.registry, e);
+    const bool placed = parent != ecs::kNullEntity && worlds.registry.valid(parent) &&
+                        worlds.locals->indexOf(parent) != ecs::ComponentPool::kAbsent &&
+                        worlds.indexOf(parent) != ecs::ComponentPool::kAbsent;
+    const ecs::Mat4 parentWorld = placed ? worldFromLocals(worlds, parent, depth + 1) : ecs::Mat4{};
+    const ecs::LocalTransform& t = worlds.locals->typedData<ecs::LocalTransform>()[local];
+    ecs::Mat4 out;
+    ecs::composeWorld(placed ? &parentWorld : nullptr, t.position, t.rotation, t.scale, out);
+    return out;
+}
 
 // The mesh's and joints' dense WorldTransform indices, looked up again only when the pool's
 // structure changed (sized once: no allocation after).
@@ -320,7 +368,9 @@ void updateSkin(const JointWorlds& worlds, ecs::Entity entity, Skin& skin) {
         newest = std::max(newest, worlds.tick(index));
     const bool builtByPose = skin.builtByPose;
     skin.builtByPose = false;
-    if (skin.builtFrom != ecs::kNeverTick && newest == skin.builtFrom &&
+    // (A skeleton pass that left joint worlds unwritten built from newer worlds than their
+    // ticks say: nothing newer than builtFrom means current.)
+    if (skin.builtFrom != ecs::kNeverTick && newest <= skin.builtFrom &&
         skin.jointMatrices.size() == data.joints.size()) {
         // Built this frame by the skeleton pass from these very worlds: current.
         if (builtByPose) return;
@@ -336,6 +386,21 @@ void updateSkin(const JointWorlds& worlds, ecs::Entity entity, Skin& skin) {
     skin.builtFrom = newest;
     skin.previousIsCurrent = false;
     const ecs::WorldTransform* meshWorld = worlds.world(skin.meshWorldIndex);
+    if (skin.worldsSkippedByPose) {
+        // Some joints' stored worlds are stale: each from the locals (rare: propagation
+        // moved something after the pass, e.g. an attachment's joint or the character).
+        const ecs::Mat4 toMesh =
+            meshWorld ? affineInverse(worldFromLocals(worlds, entity)) : ecs::Mat4::identity();
+        ecs::Mat4 jointWorld;
+        buildJointMatrices(skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
+            if (j >= skin.jointWorldIndex.size() ||
+                worlds.world(skin.jointWorldIndex[j]) == nullptr)
+                return nullptr;
+            jointWorld = worldFromLocals(worlds, skin.joints[j]);
+            return &jointWorld;
+        });
+        return;
+    }
     const ecs::Mat4 toMesh = meshWorld ? affineInverse(meshWorld->matrix) : ecs::Mat4::identity();
     buildJointMatrices(skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
         const ecs::WorldTransform* world =
@@ -380,9 +445,13 @@ void updateListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLi
     lists.skins.clear();
     registry.view<Skin>().each([&](ecs::Entity e, Skin&) { lists.skins.push_back(e); });
     const ecs::Storage<Skin> skins = registry.storage<Skin>();
-    const JointWorlds worlds{registry, registry.view<ecs::WorldTransform>().empty()
-                                           ? nullptr
-                                           : &registry.storage<ecs::WorldTransform>().pool()};
+    const JointWorlds worlds{registry,
+                             registry.view<ecs::WorldTransform>().empty()
+                                 ? nullptr
+                                 : &registry.storage<ecs::WorldTransform>().pool(),
+                             registry.view<ecs::LocalTransform>().empty()
+                                 ? nullptr
+                                 : &registry.storage<ecs::LocalTransform>().pool()};
     jobs.parallelFor(lists.skins.size(), kSkinsPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             updateSkin(worlds, lists.skins[i], skins.get(lists.skins[i]));
@@ -424,17 +493,15 @@ void addAnimationSystems(ecs::Scheduler& scheduler, std::function<float()> delta
         .writesResource<AnimationWorkLists>();
 }
 
-void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) {
-    const SkinData& data = model.skins[static_cast<std::size_t>(skin.skin)];
+std::vector<std::array<float, 6>> jointBoundsOf(const Mesh& mesh, std::size_t jointCount) {
     constexpr float kInf = std::numeric_limits<float>::infinity();
-    skin.jointBounds.assign(data.joints.size(), {kInf, kInf, kInf, -kInf, -kInf, -kInf});
-    const Mesh& mesh = model.meshes[static_cast<std::size_t>(meshIndex)];
+    std::vector<std::array<float, 6>> bounds(jointCount, {kInf, kInf, kInf, -kInf, -kInf, -kInf});
     for (const Primitive& p : mesh.primitives) {
         for (std::size_t v = 0; v < p.joints.size(); ++v) {
             for (int c = 0; c < 4; ++c) {
                 if (!(p.weights[v][c] > 0)) continue;
                 const std::uint16_t j = p.joints[v][c];
-                if (j >= skin.jointBounds.size()) continue;
+                if (j >= bounds.size()) continue;
                 // Morph targets can push vertices out: grow by every target's delta.
                 Float3 lo = p.positions[v], hi = p.positions[v];
                 for (const MorphTarget& t : p.morphTargets) {
@@ -444,7 +511,7 @@ void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) 
                         hi[a] += std::max(0.0f, t.positionDeltas[v][a]);
                     }
                 }
-                std::array<float, 6>& box = skin.jointBounds[j];
+                std::array<float, 6>& box = bounds[j];
                 for (int a = 0; a < 3; ++a) {
                     box[a] = std::min(box[a], lo[a]);
                     box[a + 3] = std::max(box[a + 3], hi[a]);
@@ -454,13 +521,27 @@ void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) 
     }
     // Stored as centre and half size, what each frame's bounds need (computed here once, the
     // same floats the frame would compute); a joint that moves no vertex gets half size -inf.
-    for (std::array<float, 6>& box : skin.jointBounds) {
+    for (std::array<float, 6>& box : bounds) {
         const std::array<float, 6> minMax = box;
         for (int a = 0; a < 3; ++a) {
             box[a] = 0.5f * (minMax[a] + minMax[a + 3]);
             box[a + 3] = 0.5f * (minMax[a + 3] - minMax[a]);
         }
     }
+    return bounds;
+}
+
+void computeJointBounds(const Model& model, std::int32_t meshIndex, Skin& skin) {
+    const SkinData& data = model.skins[static_cast<std::size_t>(skin.skin)];
+    const Mesh& mesh = model.meshes[static_cast<std::size_t>(meshIndex)];
+    if (mesh.jointBounds.size() >= data.joints.size()) {
+        // Not owned: the model outlives its entities (as for the clips).
+        skin.jointBounds = std::shared_ptr<const std::vector<std::array<float, 6>>>(
+            std::shared_ptr<const void>(), &mesh.jointBounds);
+        return;
+    }
+    skin.jointBounds = std::make_shared<const std::vector<std::array<float, 6>>>(
+        jointBoundsOf(mesh, data.joints.size()));
 }
 
 }  // namespace candela::content

@@ -44,6 +44,8 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
     // A mesh at its world's origin (a character at the root, as the file places it) makes
     // toMesh the identity, whose product changes no value (only a zero's sign): skipped.
     const bool meshAtOrigin = isIdentity(toMesh);
+    const std::array<float, 6>* jointBoxes = skin.jointBounds ? skin.jointBounds->data() : nullptr;
+    const std::size_t jointBoxCount = skin.jointBounds ? skin.jointBounds->size() : 0;
     for (std::size_t j = 0; j < data.joints.size(); ++j) {
         const ecs::Mat4* jointWorld = world(j);
         if (jointWorld) {
@@ -64,8 +66,8 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
         } else {
             skin.jointMatrices[j] = ecs::Mat4{};
         }
-        if (j >= skin.jointBounds.size()) continue;
-        const std::array<float, 6>& box = skin.jointBounds[j];
+        if (j >= jointBoxCount) continue;
+        const std::array<float, 6>& box = jointBoxes[j];
         if (!(box[3] >= 0)) continue;  // the joint moves no vertex
         // The moved box's bounds from its centre and half size (Arvo): the centre moved by
         // the matrix, the half size by its absolute values; the same box as moving all 8

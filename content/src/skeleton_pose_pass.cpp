@@ -11,6 +11,9 @@ namespace candela::content {
 namespace {
 
 constexpr std::uint32_t kAbsent = ecs::ComponentPool::kAbsent;
+// Skeletons up to this many pass nodes keep the frame's world matrices in a per-thread
+// buffer (4 KB).
+constexpr std::size_t kThreadPassNodes = 64;
 
 std::uint32_t indexIn(const ecs::ComponentPool* pool, const ecs::Registry& registry,
                       ecs::Entity e) {
@@ -18,11 +21,13 @@ std::uint32_t indexIn(const ecs::ComponentPool* pool, const ecs::Registry& regis
 }
 
 bool bindingIsCurrent(const ecs::Registry& registry, const TransformPools& pools,
-                      const AnimationPlayer::Scratch& s) {
+                      const AnimationPlayer& player) {
+    const AnimationPlayer::Scratch& s = player.scratch;
     return s.bound && s.localPool == pools.locals && s.worldPool == pools.worlds &&
            (!pools.locals || pools.locals->structureVersion() == s.localVersion) &&
            (!pools.worlds || pools.worlds->structureVersion() == s.worldVersion) &&
-           ecs::hierarchyVersion(registry) == s.hierarchyVersion;
+           ecs::hierarchyVersion(registry) == s.hierarchyVersion &&
+           s.writeJointWorlds == player.writeJointWorlds;
 }
 
 // Is `e`'s Skin the one instantiateModel gave mesh node `node`, with the node entities as
@@ -113,15 +118,27 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
     }
     s.passNodes.clear();
     s.passNodes.reserve(count);
+    s.passOfNode.assign(count, kAbsent);
+    s.skipsWorlds = false;
     for (const std::uint32_t n : s.order) {
         if (s.localIndex[n] == kAbsent) continue;  // no entity: nothing reads it
         std::uint32_t parentPass = kAbsent;
         for (std::size_t i = 0; i < s.passNodes.size(); ++i)
             if (s.parentWorld[n] != kAbsent && s.passNodes[i].world == s.parentWorld[n])
                 parentPass = static_cast<std::uint32_t>(i);
-        s.passNodes.push_back(
-            {n, s.localIndex[n], s.worldIndex[n], s.parentWorld[n], s.stampLocal[n], parentPass});
+        const bool writeWorld = s.stampLocal[n] != 0 || player.writeJointWorlds;
+        s.skipsWorlds = s.skipsWorlds || !writeWorld;
+        s.passOfNode[n] = static_cast<std::uint32_t>(s.passNodes.size());
+        s.passNodes.push_back({n, s.localIndex[n], s.worldIndex[n], s.parentWorld[n],
+                               s.stampLocal[n], static_cast<std::uint16_t>(writeWorld ? 1 : 0),
+                               parentPass});
     }
+    s.passWorlds.resize(s.passNodes.size() > kThreadPassNodes ? s.passNodes.size() : 0);
+    s.writeJointWorlds = player.writeJointWorlds;
+    s.worldsToPrefetchCount = 0;
+    for (const AnimationPlayer::Scratch::PassNode& p : s.passNodes)
+        if (p.writeWorld && s.worldsToPrefetchCount < s.worldsToPrefetch.size())
+            s.worldsToPrefetch[s.worldsToPrefetchCount++] = p.world;
     s.passMoved.assign(s.passNodes.size(), 0);
     s.localFirst = s.worldFirst = kAbsent;
     s.localEnd = s.worldEnd = 0;
@@ -170,19 +187,22 @@ void refreshSkinIndices(const ecs::Registry& registry, const TransformPools& poo
     s.skinVersion = version;
 }
 
-void buildSkin(AnimationPlayer& player, const TransformPools& pools,
-               const ecs::WorldTransform* worlds, std::size_t k, ecs::Tick now) {
+// `passWorlds`: this frame's world matrix per pass node.
+void buildSkin(AnimationPlayer& player, const TransformPools& pools, const ecs::Mat4* passWorlds,
+               std::size_t k, ecs::Tick now) {
     const Model& model = *player.model;
     const AnimationPlayer::Scratch& s = player.scratch;
     if (pools.skins == nullptr || s.skinIndex[k] == kAbsent) return;
     const std::uint32_t meshNode = s.skinNodes[k];
+    if (s.passOfNode[meshNode] == kAbsent) return;  // a mesh without transforms: not built
     Skin* skin = pools.skins->typedData<Skin>() + s.skinIndex[k];
     const SkinData& data = model.skins[static_cast<std::size_t>(skin->skin)];
-    const ecs::Mat4 toMesh = affineInverse(worlds[s.worldIndex[meshNode]].matrix);
+    const ecs::Mat4 toMesh = affineInverse(passWorlds[s.passOfNode[meshNode]]);
     buildJointMatrices(*skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
         const auto node = static_cast<std::size_t>(data.joints[j]);
-        return s.worldIndex[node] == kAbsent ? nullptr : &worlds[s.worldIndex[node]].matrix;
+        return s.passOfNode[node] == kAbsent ? nullptr : &passWorlds[s.passOfNode[node]];
     });
+    skin->worldsSkippedByPose = s.skipsWorlds;
     skin->builtFrom = now;
     skin->previousIsCurrent = false;
     skin->builtByPose = true;
@@ -215,7 +235,13 @@ void prefetchSkeletonPose(const TransformPools& pools, const AnimationPlayer& pl
     if (!s.bound || !s.direct || pools.locals == nullptr || pools.worlds == nullptr) return;
     prefetchVector(s.cursors, true);
     prefetchVector(s.touched, true);
-    prefetchVector(s.pose, true);
+    // A bound direct player samples into its entities' locals (through localIndex), not
+    // into its scratch pose (a crossfade still does).
+    if (s.direct) {
+        prefetchVector(s.localIndex, false);
+    } else {
+        prefetchVector(s.pose, true);
+    }
     prefetchVector(s.passNodes, false);
     prefetchVector(s.passMoved, true);
     if (pools.skins != nullptr && s.skinPool == pools.skins &&
@@ -230,7 +256,17 @@ void prefetchSkeletonPose(const TransformPools& pools, const AnimationPlayer& pl
         prefetchBytes(pools.locals->typedData<ecs::LocalTransform>() + s.localFirst,
                       (s.localEnd - s.localFirst) * sizeof(ecs::LocalTransform), true);
     }
-    if (s.worldFirst < s.worldEnd && s.worldEnd - s.worldFirst <= kMaxSpan) {
+    // Worlds: the whole range where the pass writes them all, else the few it writes (a
+    // skeleton whose joints only skins read writes its root's and its meshes').
+    if (s.skipsWorlds) {
+        for (std::uint32_t k = 0; k < s.worldsToPrefetchCount; ++k) {
+            prefetchBytes(pools.worlds->typedData<ecs::WorldTransform>() + s.worldsToPrefetch[k],
+                          sizeof(ecs::WorldTransform), true);
+            prefetchBytes(pools.worlds->changeTicks() + s.worldsToPrefetch[k], sizeof(ecs::Tick),
+                          true);
+        }
+    }
+    if (!s.skipsWorlds && s.worldFirst < s.worldEnd && s.worldEnd - s.worldFirst <= kMaxSpan) {
         prefetchBytes(pools.worlds->typedData<ecs::WorldTransform>() + s.worldFirst,
                       (s.worldEnd - s.worldFirst) * sizeof(ecs::WorldTransform), true);
         prefetchBytes(pools.worlds->changeTicks() + s.worldFirst,
@@ -253,15 +289,20 @@ void prefetchSkinOutputs(const TransformPools& pools, const AnimationPlayer& pla
         const Skin& skin = skins[index];
         // buildJointMatrices swaps the two sets and then writes the older one.
         prefetchVector(skin.previousJointMatrices, true);
-        prefetchVector(skin.jointBounds, false);
+        if (skin.jointBounds) prefetchVector(*skin.jointBounds, false);
     }
 }
 
+bool prepareSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
+                         AnimationPlayer& player) {
+    if (!bindingIsCurrent(registry, pools, player)) bind(registry, pools, player);
+    return player.scratch.direct && pools.locals != nullptr && pools.worlds != nullptr;
+}
+
 void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
-                       AnimationPlayer& player) {
+                       AnimationPlayer& player, bool poseInLocals) {
     AnimationPlayer::Scratch& s = player.scratch;
-    if (!bindingIsCurrent(registry, pools, s)) bind(registry, pools, player);
-    if (!s.direct || pools.locals == nullptr || pools.worlds == nullptr) {
+    if (!prepareSkeletonPose(registry, pools, player)) {
         writeLocalsOnly(registry, pools, player);
         return;
     }
@@ -269,31 +310,45 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
     auto* worlds = pools.worlds->typedData<ecs::WorldTransform>();
     ecs::Tick* worldTicks = pools.worlds->changeTicks();
     const ecs::Tick now = registry.currentTick();
+    // Each pass node's world this frame, in L1 for the children and the skins: the thread's
+    // buffer for a skeleton of usual size (statically initialised, reused by every player
+    // the thread runs), else the player's own (sized by bind).
+    alignas(64) thread_local ecs::Mat4 threadWorlds[kThreadPassNodes];
+    ecs::Mat4* passWorlds =
+        s.passNodes.size() <= kThreadPassNodes ? threadWorlds : s.passWorlds.data();
     for (std::size_t i = 0; i < s.passNodes.size(); ++i) {
         const AnimationPlayer::Scratch::PassNode& p = s.passNodes[i];
-        ecs::LocalTransform& pose = s.pose[p.node];
         const bool animated = (s.touched[p.node] & kTransformTouched) != 0;
         if (animated) {
-            locals[p.local] = pose;
+            if (!poseInLocals) locals[p.local] = s.pose[p.node];
             if (p.stampLocal) pools.locals->stamp(p.local, now);
-        } else {
-            pose = locals[p.local];  // not animated: the entity's own (a game may move it)
         }
+        // Not animated: the entity's own (a game may move it).
+        const ecs::LocalTransform& pose = locals[p.local];
         // A node neither animated nor under one that moved keeps its world (and its change
-        // tick: readers that track moved entities see only what moved).
-        const bool moved = animated || (p.parentPass != kAbsent && s.passMoved[p.parentPass]);
+        // tick: readers that track moved entities see only what moved). A node whose world
+        // the pass does not write is computed every frame: its entity's may be stale.
+        const bool moved =
+            animated || !p.writeWorld || (p.parentPass != kAbsent && s.passMoved[p.parentPass]);
         s.passMoved[i] = moved ? 1 : 0;
-        if (!moved) continue;
+        if (!moved) {
+            passWorlds[i] = worlds[p.world].matrix;
+            continue;
+        }
         // Local-to-world with propagation's own product, so the worlds it would compute
-        // are bit for bit these. Parents come first: theirs are already written.
-        ecs::composeWorld(p.parentWorld == kAbsent ? nullptr : &worlds[p.parentWorld].matrix,
-                          pose.position, pose.rotation, pose.scale, worlds[p.world].matrix);
+        // are bit for bit these. Parents come first: theirs are already computed.
+        const ecs::Mat4* parent = p.parentPass != kAbsent    ? &passWorlds[p.parentPass]
+                                  : p.parentWorld != kAbsent ? &worlds[p.parentWorld].matrix
+                                                             : nullptr;
+        ecs::composeWorld(parent, pose.position, pose.rotation, pose.scale, passWorlds[i]);
+        if (!p.writeWorld) continue;
+        worlds[p.world].matrix = passWorlds[i];
         worldTicks[p.world] = now;
     }
     pools.worlds->noteChange(now);
     refreshSkinIndices(registry, pools, s, player);
     for (std::size_t k = 0; k < s.skinNodes.size(); ++k)
-        buildSkin(player, pools, worlds, k, now);
+        buildSkin(player, pools, passWorlds, k, now);
 }
 
 }  // namespace candela::content

@@ -30,11 +30,18 @@ struct TransformPools {
     ecs::ComponentPool* skins = nullptr;
 };
 
-// Writes player.scratch.pose (the nodes marked kTransformTouched; the others keep their
-// entity's own LocalTransform) as described above. Safe to run for different players in
-// parallel; allocates nothing once bound.
+// Binds the pass to the registry if anything changed since (no allocation once bound) and
+// says whether it will write worlds itself: then the sampler may write the pose straight into
+// the node entities' LocalTransform (Scratch::localIndex; kAbsent: player.scratch.pose).
+bool prepareSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
+                         AnimationPlayer& player);
+
+// Writes the pose (the nodes marked kTransformTouched; the others keep their entity's own
+// LocalTransform) as described above: from player.scratch.pose, or, with poseInLocals, already
+// in the node entities' LocalTransform where they have one. Safe to run for different players
+// in parallel; allocates nothing once bound.
 void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
-                       AnimationPlayer& player);
+                       AnimationPlayer& player, bool poseInLocals);
 
 // Asks the memory system for what writeSkeletonPose(player) will touch (its scratch and its
 // entities' transforms; a bound player only): a player's data lies in a dozen separate blocks

@@ -3,8 +3,10 @@
 #include <cstdio>
 #include <cstring>
 #include <type_traits>
+#include <unordered_set>
 #include <vector>
 
+#include "candela/content/components/animation.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/name.h"
 #include "candela/ecs/transform.h"
@@ -27,6 +29,18 @@ std::size_t UnmarkedChangeCheck<T>::run(ecs::Registry& registry) {
     checkedUpTo_ = registry.advanceTick();
     ++pass_;
     std::vector<ecs::Entity> unmarked;
+    // Joints whose LocalTransform the animation's skeleton pass writes without a stamp and
+    // whose WorldTransform it leaves to its own buffer (AnimationPlayer::writeJointWorlds
+    // false): the skins are built from them, propagation recomputes them from these locals
+    // when an ancestor moves. Consistent, though neither is stamped.
+    std::unordered_set<std::uint64_t> poseOwnedJoints;
+    if constexpr (std::is_same_v<T, ecs::LocalTransform>) {
+        registry.view<const content::Skin>().each([&](ecs::Entity, const content::Skin& skin) {
+            if (!skin.worldsSkippedByPose) return;
+            for (const ecs::Entity joint : skin.joints)
+                poseOwnedJoints.insert(joint.bits());
+        });
+    }
     registry.view<const T>().each([&](ecs::Entity e, const T& value) {
         auto [it, added] = seen_.try_emplace(e.bits());
         Seen& seen = it->second;
@@ -44,6 +58,7 @@ std::size_t UnmarkedChangeCheck<T>::run(ecs::Registry& registry) {
             if (propagatedAt_ != ecs::kNeverTick &&
                 registry.changedSince<ecs::WorldTransform>(e, propagatedAt_))
                 return;
+            if (poseOwnedJoints.contains(e.bits())) return;
         }
         unmarked.push_back(e);
         if (!seen.reported) {

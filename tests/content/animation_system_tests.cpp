@@ -174,6 +174,7 @@ TEST(AnimationSystems, SkeletonPassWorldsEqualPropagationAndAttachmentsFollow) {
     World world(fox);
     AnimationPlayer& player = world.player();
     player.play(player.findClip("Run"));
+    player.writeJointWorlds = true;  // every joint's world stored, to compare with propagation's
     const ecs::Entity head =
         player.nodeEntities[static_cast<std::size_t>(fox.skins[0].joints[6])];  // b_Head_05
     const ecs::Entity hat = world.registry.create();
@@ -200,6 +201,67 @@ TEST(AnimationSystems, SkeletonPassWorldsEqualPropagationAndAttachmentsFollow) {
         EXPECT_NEAR(got.x, expectedHat(0, 3), 1e-4);
         EXPECT_NEAR(got.y, expectedHat(1, 3), 1e-4);
         EXPECT_NEAR(got.z, expectedHat(2, 3), 1e-4);
+    }
+}
+
+// The default: joints only skins read keep their stored WorldTransform (the pass builds the
+// skins from its own buffer). The skins must still equal those built from propagated worlds,
+// including the frames where propagation recomputes part of the skeleton after the pass (an
+// attachment's joint is stamped: updateSkins then composes the unwritten worlds from the
+// locals), and an attachment still follows its joint.
+TEST(AnimationSystems, JointWorldsOnlySkinsReadAreLeftUnwrittenAndSkinsStayExact) {
+    const Model fox = loadModel("Fox");
+    World world(fox);
+    AnimationPlayer& player = world.player();
+    player.play(player.findClip("Run"));
+    ASSERT_FALSE(player.writeJointWorlds);
+    const SkinData& skinData = fox.skins[0];
+    const ecs::Entity tail = player.nodeEntities[static_cast<std::size_t>(skinData.joints[20])];
+    const ecs::Entity head = player.nodeEntities[static_cast<std::size_t>(skinData.joints[6])];
+    ecs::Entity skinned = ecs::kNullEntity;
+    world.registry.view<const Skin>().each([&](ecs::Entity e, const Skin&) { skinned = e; });
+    ASSERT_NE(skinned, ecs::kNullEntity);
+    world.frame(0.07f);
+    for (int f = 0; f < 6; ++f) {
+        const ecs::Mat4 tailWorldBefore = world.registry.get<ecs::WorldTransform>(tail).matrix;
+        if (f == 3) {  // an attachment from here on: its joint is written and stamped
+            const ecs::Entity hat = world.registry.create();
+            world.registry.emplace<ecs::LocalTransform>(hat,
+                                                        ecs::LocalTransform{{0, 10, 0}, {}, {}});
+            world.registry.emplace<ecs::WorldTransform>(hat);
+            ASSERT_EQ(ecs::setParent(world.registry, hat, head), ecs::ReparentResult::Ok);
+        }
+        world.frame(0.07f);
+        if (f < 3) {  // nothing reads the tail but the skin: its stored world stays as it was
+            EXPECT_EQ(world.registry.get<ecs::WorldTransform>(tail).matrix, tailWorldBefore);
+        }
+        const std::vector<ecs::Mat4> built = world.registry.get<Skin>(skinned).jointMatrices;
+        ASSERT_EQ(built.size(), skinData.joints.size());
+        // Every local marked changed: propagation recomputes every world, and the skin is
+        // rebuilt from them.
+        world.registry.view<const ecs::LocalTransform>().each(
+            [&](ecs::Entity e, const ecs::LocalTransform&) {
+                world.registry.markChanged<ecs::LocalTransform>(e);
+            });
+        ecs::propagateTransforms(world.registry);
+        Skin& skin = world.registry.get<Skin>(skinned);
+        skin.worldsSkippedByPose = false;  // the stored worlds are all current now
+        updateSkins(world.registry, world.jobs);
+        for (std::size_t j = 0; j < built.size(); ++j)
+            EXPECT_EQ(skin.jointMatrices[j], built[j]) << "frame " << f << " joint " << j;
+        if (f >= 3) {
+            world.registry.view<const ecs::HierarchyNode>().each(
+                [&](ecs::Entity e, const ecs::HierarchyNode& node) {
+                    if (node.parent != head) return;
+                    const ecs::Mat4 expected =
+                        world.registry.get<ecs::WorldTransform>(head).matrix *
+                        world.registry.get<ecs::LocalTransform>(e).matrix();
+                    const ecs::Vec3 got = world.registry.get<ecs::WorldTransform>(e).position();
+                    EXPECT_NEAR(got.x, expected(0, 3), 1e-4);
+                    EXPECT_NEAR(got.y, expected(1, 3), 1e-4);
+                    EXPECT_NEAR(got.z, expected(2, 3), 1e-4);
+                });
+        }
     }
 }
 

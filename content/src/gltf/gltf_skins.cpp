@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "candela/content/animation_systems.h"
 #include "gltf_accessors.h"
 #include "gltf_context.h"
 
@@ -105,6 +106,17 @@ void convertSkins(Context& context) {
         }
         if (fits) node.skin = skin;
     }
+    // Each skinned mesh's joint boxes, once for every instance (the skins read them each
+    // frame: one copy for a crowd stays in cache).
+    std::vector<std::size_t> jointCount(model.meshes.size(), 0);
+    for (const Node& node : model.nodes)
+        if (node.mesh != kNoIndex && node.skin != kNoIndex)
+            jointCount[static_cast<std::size_t>(node.mesh)] =
+                std::max(jointCount[static_cast<std::size_t>(node.mesh)],
+                         model.skins[static_cast<std::size_t>(node.skin)].joints.size());
+    for (std::size_t m = 0; m < model.meshes.size(); ++m)
+        if (jointCount[m] > 0)
+            model.meshes[m].jointBounds = jointBoundsOf(model.meshes[m], jointCount[m]);
 }
 
 }  // namespace candela::content::gltf

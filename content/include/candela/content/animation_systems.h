@@ -9,6 +9,7 @@
 #include <functional>
 
 #include "candela/content/components/animation.h"
+#include "candela/content/model.h"
 #include "candela/ecs/job_system.h"
 #include "candela/ecs/registry.h"
 #include "candela/ecs/scheduler.h"
@@ -27,7 +28,12 @@ void updateSkins(ecs::Registry& registry, ecs::JobSystem& jobs);
 // PostUpdate (declare it after the transform system, which writes what it reads).
 void addAnimationSystems(ecs::Scheduler& scheduler, std::function<float()> deltaSeconds);
 
-// Fills Skin::jointBounds from the mesh's vertices (instantiateModel calls it).
+// Per joint index below jointCount, the bind-space box of the vertices it moves (see
+// Mesh::jointBounds).
+std::vector<std::array<float, 6>> jointBoundsOf(const Mesh& mesh, std::size_t jointCount);
+
+// Points Skin::jointBounds at the mesh's (instantiateModel calls it); a mesh the loader did not
+// fill (a model built by hand) gets the skin its own copy.
 void computeJointBounds(const Model& model, std::int32_t mesh, Skin& skin);
 
 }  // namespace candela::content

@@ -62,6 +62,11 @@ struct Mesh {
     // Morph target weights when no node or animation sets them; one per target (all
     // primitives of a mesh have the same target count, or none of them keeps targets).
     std::vector<float> defaultWeights;
+    // For a mesh a skin deforms: per joint index its JOINTS_n attributes use (as many as the
+    // largest skin that deforms it has joints), the bind-space box of the vertices that joint
+    // moves, grown by every morph target's deltas, as centre xyz and half size xyz (half size
+    // -inf: it moves none). Filled by the loader (jointBoundsOf), shared by every instance.
+    std::vector<std::array<float, 6>> jointBounds;
 };
 
 struct Texture {

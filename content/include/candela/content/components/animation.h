@@ -8,6 +8,7 @@
 // The systems that update them are in animation_systems.h.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,17 @@ struct AnimationPlayer {
     float fadeElapsed = 0;
 
     std::vector<ecs::Entity> nodeEntities;  // model node index -> entity (kNullEntity: not shown)
+
+    // Whether the skeleton pass writes the WorldTransform of joints that only skins read
+    // (no mesh, light or camera on them, nothing attached under them). false (the default):
+    // it computes their model-space matrices in a buffer of its own, builds the skins from
+    // them and writes only their LocalTransform, as an animation runtime keeps its pose
+    // out of the scene graph: each Fox stops writing 1.7 KB of world matrices and change
+    // ticks per frame. Their WorldTransform is then brought up to date only when something
+    // makes propagation recompute them, so code that reads a bare joint's world matrix
+    // (without attaching an entity to it, which is detected) sets this to true. Anything
+    // attached under a joint, and every mesh, light and camera, is written either way.
+    bool writeJointWorlds = false;
 
     // Starts `clipIndex` from time 0, cancelling any crossfade.
     void play(std::int32_t clipIndex, bool looping = true);
@@ -82,10 +94,24 @@ struct AnimationPlayer {
             std::uint32_t local;
             std::uint32_t world;
             std::uint32_t parentWorld;
-            std::uint32_t stampLocal;
+            std::uint16_t stampLocal;
+            // 0: a joint only skins read whose WorldTransform the pass leaves as it was (the
+            // skins get its model-space matrix from the pass's own buffer); see
+            // AnimationPlayer::writeJointWorlds.
+            std::uint16_t writeWorld;
             std::uint32_t parentPass;  // the parent's position in passNodes, or kAbsent
         };
         std::vector<PassNode> passNodes;
+        std::vector<std::uint32_t> passOfNode;  // model node -> position in passNodes, or kAbsent
+        // This frame's world matrices per pass node, for skeletons larger than the pass's
+        // stack buffer (sized by bind).
+        std::vector<ecs::Mat4> passWorlds;
+        bool writeJointWorlds = false;  // the flag bind saw
+        bool skipsWorlds = false;       // some pass node has writeWorld 0
+        // Where skipsWorlds: the first few WorldTransform indices the pass reads or writes
+        // (the model's roots, its meshes), kept in the record for the prefetch.
+        std::array<std::uint32_t, 4> worldsToPrefetch{};
+        std::uint32_t worldsToPrefetchCount = 0;
         std::vector<std::uint8_t> passMoved;   // per pass node: its world was written this frame
         std::vector<std::uint32_t> skinNodes;  // mesh nodes whose Skin this player builds
         // Per skin node, its entity's dense index in the Skin pool, looked up again only when
@@ -127,7 +153,8 @@ struct Skin {
     // Per joint, the bind-space box of the vertices it influences, as its centre xyz and half
     // size xyz (half size -inf when it influences none): the deformed mesh lies inside the
     // union of these boxes moved by the joint matrices.
-    std::vector<std::array<float, 6>> jointBounds;
+    // Shared by every instance of the mesh (Mesh::jointBounds; not owned) or this skin's own.
+    std::shared_ptr<const std::vector<std::array<float, 6>>> jointBounds;
     // The deformed mesh's bounds in mesh space (what culling and clusters use).
     ecs::Vec3 boundsMin{}, boundsMax{};
     bool boundsValid = false;
@@ -138,6 +165,11 @@ struct Skin {
     // Built this frame by its player's skeleton pass from the worlds it wrote (stamped
     // builtFrom): updateSkins keeps the matrices unless propagation changed a joint since.
     bool builtByPose = false;
+    // The skeleton pass that last built the matrices leaves some joints' WorldTransform
+    // unwritten (AnimationPlayer::writeJointWorlds; their LocalTransform is current):
+    // updateSkins then composes joint worlds from the locals up the hierarchy, as
+    // propagation would, instead of reading them.
+    bool worldsSkippedByPose = false;
     // Dense indices of the mesh's and joints' WorldTransform, valid while the pool's structure
     // is unchanged (updateSkins' change-tick scan reads them instead of looking entities up).
     std::uint32_t meshWorldIndex = 0xFFFFFFFFu;
