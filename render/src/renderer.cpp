@@ -866,6 +866,12 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         volume.grid = VolumetricsPass::froxelGrid(width_, height_, volume.settings);
         const ResourceHandle scales =
             g.importBuffer("volumetrics.light_scales", &volumetricsPass_->lightScales());
+        // Which lights each march tile or froxel cluster meets (the reference meets them all).
+        const bool marchVolumes = options_.volumetrics == VolumetricsMode::Volumes;
+        const bool lightFroxels =
+            options_.volumetrics == VolumetricsMode::Froxels || (marchVolumes && blended);
+        volumetricsPass_->binLights(inputs.scene.lights, inputs.scene.camera, width_, height_,
+                                    volume, marchVolumes, lightFroxels);
         auto readLights = [&](FrameGraph::PassBuilder& p) {
             p.read(h.camera, Use::Uniform);
             p.read(h.lights, Use::StorageRead);
@@ -910,6 +916,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                                                                ctx.buffer(medium));
                                        });
                 readLights(light);
+                light.read(
+                    g.importBuffer("volumetrics.froxel_bins", &volumetricsPass_->froxelBins()),
+                    Use::StorageRead);
                 medium = light.write(medium, Use::StorageWrite);
                 auto integrate = g.addPass("volumetrics_froxel_integrate", PassKind::Device,
                                            [this, medium, integrated, volume](PassContext& ctx) {
@@ -935,6 +944,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                         volumetricsPass_->recordVolumesMarch(ctx.cmd(), in, ctx.image(marched));
                     });
                 readLights(march);
+                march.read(
+                    g.importBuffer("volumetrics.volume_bins", &volumetricsPass_->volumeBins()),
+                    Use::StorageRead);
                 march.read(h.depth, Use::Sampled);
                 marched = march.write(marched, Use::StorageWrite);
                 auto blur =

@@ -12,6 +12,7 @@
 
 #include "candela/content/animation_systems.h"
 #include "candela/content/atomic_file_write.h"
+#include "candela/content/components/light.h"
 #include "candela/ecs/transform_system.h"
 #include "candela/render/frame_capture.h"
 #include "candela/render/frame_inputs.h"
@@ -123,9 +124,24 @@ render::ScatteringMode scatteringFor(const ApplicationOptions& options, const Sc
     return render::ScatteringMode::Epipolar;
 }
 
-// --volumetrics, else the scene file's "volumetrics", else per-light volumes: cheaper than
-// froxels from 16 lights to 4,096 and in the demo hall, and closer to the reference up to 16
-// lights (render/README.md "Volumetric lighting"); they draw only in frames with a medium.
+// The count of lights lighting the medium from which froxels are the default: the smallest
+// count measured at which they cost less than the per-light volumes (docs/speed-vs-error.md,
+// the volumetrics cross-over at 320x180: 1 light 19.1 ms against 23.4, 16 lights 66.3 against
+// 34.7, 4,096 lights 540 against 357).
+constexpr std::size_t kFroxelsFromLights = 16;
+
+// The scene's lights that light a medium (volumetric scale above zero).
+std::size_t lightsInMedium(const SceneWorld& world) {
+    std::size_t count = 0;
+    world.registry.view<const content::Light>().each(
+        [&](ecs::Entity, const content::Light& light) { count += light.volumetric > 0.0f; });
+    return count;
+}
+
+// --volumetrics, else the scene file's "volumetrics", else by the scene's lights at start:
+// per-light volumes below kFroxelsFromLights (cheaper there, and closer to the reference at
+// every count), froxels from it (render/README.md "Volumetric lighting"). Either draws only
+// in frames with a medium; `off` is only ever chosen explicitly.
 render::VolumetricsMode volumetricsFor(const ApplicationOptions& options, const SceneWorld* world) {
     if (options.volumetrics) return *options.volumetrics;
     if (world && world->sceneVolumetrics()) {
@@ -139,6 +155,9 @@ render::VolumetricsMode volumetricsFor(const ApplicationOptions& options, const 
             case content::SceneVolumetricsMode::Reference:
                 return render::VolumetricsMode::Reference;
         }
+    }
+    if (world && lightsInMedium(*world) >= kFroxelsFromLights) {
+        return render::VolumetricsMode::Froxels;
     }
     return render::VolumetricsMode::Volumes;
 }

@@ -972,6 +972,49 @@ TEST(Cli, SceneFileChoosesScatteringAndVolumetricsAndFlagsOverrideIt) {
     EXPECT_EQ(on["validation_messages"].get<int>(), 0);
 }
 
+// Issue 17: with a medium and no choice made, the scene's lights choose the volumetrics: the
+// per-light volumes below 16 lights that light the medium, froxels from 16 (where froxels cost
+// less, docs/speed-vs-error.md); lights whose "volumetric" is 0 do not count.
+TEST(Cli, VolumetricsDefaultFollowsTheLightsInTheMedium) {
+    auto dir = tempDir() / "volumetrics_default";
+    std::filesystem::create_directories(dir);
+    nlohmann::json scene = nlohmann::json::parse(
+        readBytes(std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/spot_light.scene.json"));
+    scene["entities"].push_back({{"name", "dust"}, {"fog", {{"scattering", 0.05}}}});
+    // The scene's spot plus `extra` small point lights, `volumetric` each.
+    auto ran = [&](const std::string& name, int extra, double volumetric) {
+        nlohmann::json lit = scene;
+        for (int i = 0; i < extra; ++i) {
+            lit["entities"].push_back(
+                {{"name", "bulb" + std::to_string(i)},
+                 {"light",
+                  {{"type", "point"},
+                   {"lumens", 100.0},
+                   {"attenuationRadius", 1.0},
+                   {"volumetric", volumetric}}},
+                 {"transform", {{"translation", {0.2 * i - 1.5, 1.0, 0.0}}}}});
+        }
+        const auto scenePath = dir / (name + ".scene.json");
+        std::ofstream(scenePath) << lit.dump();
+        RunResult r = runCandela("run " + scenePath.string() +
+                                 " --headless --size 32x32 --frames 1 --aa off --ssr off --ao off "
+                                 "--bloom 0 --stats " +
+                                 (dir / (name + ".json")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        const nlohmann::json stats = nlohmann::json::parse(readBytes(dir / (name + ".json")));
+        EXPECT_EQ(stats["validation_messages"].get<int>(), 0);
+        return stats["passes"];
+    };
+    const nlohmann::json few = ran("few", 14, 1.0);  // 15 lights
+    EXPECT_TRUE(few.contains("volumetrics_volumes_march")) << few.dump();
+    EXPECT_FALSE(few.contains("volumetrics_froxel_light")) << few.dump();
+    const nlohmann::json many = ran("many", 15, 1.0);  // 16 lights
+    EXPECT_TRUE(many.contains("volumetrics_froxel_light")) << many.dump();
+    EXPECT_FALSE(many.contains("volumetrics_volumes_march")) << many.dump();
+    const nlohmann::json dark = ran("dark", 15, 0.0);  // 16 lights, 15 of them not in the medium
+    EXPECT_TRUE(dark.contains("volumetrics_volumes_march")) << dark.dump();
+}
+
 // Issue 16: --ibl reference samples the atmosphere's sky by a table read back from its cube,
 // which the first frame renders; that frame lights by the split sum (with a note) and the
 // second by the reference, with no validation message. The reference lands near the split

@@ -8,12 +8,17 @@
 // volumetrics passes (`volumetrics_ms`, median of the repetitions), each mode against the
 // reference. A note gives the light count from which froxels cost less than the volumes.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "../test_scene.h"
 #include "median.h"
+#include "passes/volumetrics/light_bins.h"
 #include "passes/volumetrics/volumetrics_pass.h"
 #include "report_context.h"
 
@@ -29,9 +34,10 @@ float lightRange(uint32_t lights) {
     return 3.0f * std::cbrt(16.0f / float(std::max(lights, 16u)));
 }
 
-TestScene fogScene(uint32_t size, uint32_t lights) {
+TestScene fogScene(uint32_t width, uint32_t height, uint32_t lights) {
     TestScene scene;
-    scene.width = scene.height = size;
+    scene.width = width;
+    scene.height = height;
     content::Material black = lambertWhite();
     black.baseColorFactor = {0.0f, 0.0f, 0.0f, 1.0f};
     scene.add(content::makePlane(12.0f, 1), black,
@@ -53,6 +59,8 @@ TestScene fogScene(uint32_t size, uint32_t lights) {
 struct Rendered {
     CapturedFrame frame;
     double ms = 0.0;
+    // Each volumetrics pass's GPU time (median of the repetitions), in the order they ran.
+    std::vector<std::pair<std::string, double>> passes;
 };
 
 Rendered renderMode(GpuContext& gpu, TestScene& scene, const content::Fog& fog,
@@ -64,6 +72,7 @@ Rendered renderMode(GpuContext& gpu, TestScene& scene, const content::Fog& fog,
     options.volumetrics = mode;
     options.volumetricsSettings.referenceSteps = 128;
     std::vector<double> ms;
+    std::vector<std::pair<std::string, std::vector<double>>> passMs;
     Rendered r;
     for (uint32_t i = 0; i < repetitions; ++i) {
         RendererStats stats;
@@ -71,9 +80,60 @@ Rendered renderMode(GpuContext& gpu, TestScene& scene, const content::Fog& fog,
         r.frame =
             renderOffscreen(gpu, inputs, scene.width, scene.height, 1, &resources, options, &stats);
         ms.push_back(stats.volumetricsMs);
+        for (const auto& [name, passTime] : stats.passMs) {
+            if (!name.starts_with("volumetrics_")) continue;
+            auto found = std::find_if(passMs.begin(), passMs.end(),
+                                      [&](const auto& p) { return p.first == name; });
+            if (found == passMs.end()) found = passMs.insert(passMs.end(), {name, {}});
+            found->second.push_back(passTime);
+        }
     }
     r.ms = median(ms);
+    for (auto& [name, times] : passMs)
+        r.passes.emplace_back(name, median(times));
     return r;
+}
+
+struct Costs {
+    uint32_t count;
+    double volumesMs = 0.0, froxelsMs = 0.0;
+    std::string volumesPasses, froxelsPasses;  // "volumes_march 1.2 + volumes_blur ..." (ms)
+};
+
+// Records a render's cost under its mode in `cost`.
+void addCost(Costs& cost, VolumetricsMode mode, const Rendered& r) {
+    (mode == VolumetricsMode::Volumes ? cost.volumesMs : cost.froxelsMs) = r.ms;
+    std::string& passes =
+        mode == VolumetricsMode::Volumes ? cost.volumesPasses : cost.froxelsPasses;
+    for (const auto& [pass, passTime] : r.passes) {
+        if (!passes.empty()) passes += " + ";
+        passes += pass.substr(std::string("volumetrics_").size()) + " " + formatNumber(passTime);
+    }
+}
+
+// The cross-over: the smallest light count from which froxels cost less at that count and at
+// every larger one measured (one count alone can flip on a loaded machine), with the costs
+// and each pass's share.
+std::string crossoverNote(const std::string& what, const std::vector<Costs>& costs) {
+    std::string measured;
+    const Costs* crossover = nullptr;
+    for (const Costs& c : costs) {
+        if (!measured.empty()) measured += "; ";
+        measured += std::to_string(c.count) + " lights: volumes " + formatNumber(c.volumesMs) +
+                    " ms (" + c.volumesPasses + "), froxels " + formatNumber(c.froxelsMs) +
+                    " ms (" + c.froxelsPasses + ")";
+        if (c.froxelsMs >= c.volumesMs) {
+            crossover = nullptr;
+        } else if (!crossover) {
+            crossover = &c;
+        }
+    }
+    return "Volumetrics cross-over (per-light volumes of seed 004 §3 against froxels, GPU time of "
+           "the volumetrics passes on this device, " +
+           what + "): " +
+           (crossover ? "froxels cost less from " + std::to_string(crossover->count) + " lights on"
+                      : std::string("froxels do not stay cheaper from any count measured")) +
+           " (" + measured + ").";
 }
 
 }  // namespace
@@ -88,22 +148,18 @@ void addVolumetricsRows(ReportContext& context) {
     fog.anisotropy = 0.3f;
     const std::vector<uint32_t> counts =
         quick ? std::vector<uint32_t>{1, 16} : std::vector<uint32_t>{1, 16, 256, 4096};
-    struct Costs {
-        uint32_t count;
-        double volumesMs, froxelsMs;
-    };
     std::vector<Costs> costs;
     for (uint32_t count : counts) {
         // The reference marches every light at every step of every pixel: 4,096 lights at
         // 64x64 would take minutes a frame on lavapipe.
         const uint32_t size = quick ? 48 : count >= 4096 ? 32 : 64;
-        TestScene scene = fogScene(size, count);
+        TestScene scene = fogScene(size, size, count);
         const Rendered reference =
             renderMode(gpu, scene, fog, VolumetricsMode::Reference, repetitions);
         Costs cost{count, 0.0, 0.0};
         for (VolumetricsMode mode : {VolumetricsMode::Volumes, VolumetricsMode::Froxels}) {
             const Rendered r = renderMode(gpu, scene, fog, mode, repetitions);
-            (mode == VolumetricsMode::Volumes ? cost.volumesMs : cost.froxelsMs) = r.ms;
+            addCost(cost, mode, r);
             double error = 0.0, total = 0.0, worst = 0.0;
             for (size_t i = 1; i < reference.frame.hdrRgb.size(); i += 3) {
                 const double d = std::abs(double(r.frame.hdrRgb[i]) - reference.frame.hdrRgb[i]);
@@ -139,28 +195,47 @@ void addVolumetricsRows(ReportContext& context) {
         }
         costs.push_back(cost);
     }
-    // The cross-over: the smallest light count from which froxels cost less at that count and
-    // at every larger one measured (one count alone can flip on a loaded machine). The
-    // 4,096-light case renders at 32x32, so its costs compare with each other, not with the
-    // 64x64 rows.
-    std::string measured;
-    const Costs* crossover = nullptr;
-    for (const Costs& c : costs) {
-        if (!measured.empty()) measured += "; ";
-        measured += std::to_string(c.count) + " lights: volumes " + formatNumber(c.volumesMs) +
-                    " ms, froxels " + formatNumber(c.froxelsMs) + " ms";
-        if (c.froxelsMs >= c.volumesMs) {
-            crossover = nullptr;
-        } else if (!crossover) {
-            crossover = &c;
+    // The 4,096-light rows render at 32x32, so their costs compare with each other, not with
+    // the 64x64 rows.
+    context.report.notes.push_back(crossoverNote("the rows' images", costs));
+    // Cost alone at 320x180 (no reference), where the froxel grid (40x23x64) and the march
+    // tiles (20x12) are fine enough for their lists to cull as at full size.
+    if (!quick) {
+        std::vector<Costs> wide;
+        for (uint32_t count : counts) {
+            TestScene scene = fogScene(320, 180, count);
+            Costs cost{count};
+            for (VolumetricsMode mode : {VolumetricsMode::Volumes, VolumetricsMode::Froxels})
+                addCost(cost, mode, renderMode(gpu, scene, fog, mode, repetitions));
+            wide.push_back(cost);
         }
+        context.report.notes.push_back(crossoverNote("320x180, the rows' scenes", wide));
+    }
+    // The CPU side of the light lists (light_bins.h): 4,096 lights at 1280x720 (tiles of the
+    // march, clusters of the 160x90x64 grid), median of 5.
+    TestScene many = fogScene(1280, 720, 4096);
+    const std::vector<float> scales(many.lights.size(), 1.0f);
+    std::vector<double> volumeBinMs, froxelBinMs;
+    size_t volumeEntries = 0, froxelEntries = 0;
+    for (int i = 0; i < 5; ++i) {
+        using Clock = std::chrono::steady_clock;
+        const auto start = Clock::now();
+        volumeEntries =
+            binLights(many.lights, scales, many.camera, volumeTileLayout(1280, 720)).size();
+        const auto middle = Clock::now();
+        froxelEntries = binLights(many.lights, scales, many.camera,
+                                  froxelClusterLayout(VolumetricsPass::froxelGrid(1280, 720, {}),
+                                                      0.05f, 100.0f))
+                            .size();
+        const auto end = Clock::now();
+        volumeBinMs.push_back(std::chrono::duration<double, std::milli>(middle - start).count());
+        froxelBinMs.push_back(std::chrono::duration<double, std::milli>(end - middle).count());
     }
     context.report.notes.push_back(
-        "Volumetrics cross-over (per-light volumes of seed 004 §3 against froxels, GPU time of "
-        "the volumetrics passes on this device): " +
-        (crossover ? "froxels cost less from " + std::to_string(crossover->count) + " lights on"
-                   : std::string("froxels do not stay cheaper from any count measured")) +
-        " (" + measured + ").");
+        "Volumetrics light lists (CPU, per frame, 4,096 lights at 1280x720): march tiles " +
+        formatNumber(median(volumeBinMs)) + " ms (" + std::to_string(volumeEntries) +
+        " words), froxel clusters " + formatNumber(median(froxelBinMs)) + " ms (" +
+        std::to_string(froxelEntries) + " words).");
 }
 
 }  // namespace candela::report

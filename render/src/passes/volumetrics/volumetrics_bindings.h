@@ -17,6 +17,9 @@
 // radiance, view depth) per pixel.
 #define VOLUMETRICS_BINDING_VOLUMES_MARCHED 12
 #define VOLUMETRICS_BINDING_VOLUMES_BLURRED 13
+// Per workgroup of the volumes' march or the froxel lighting: the lights that reach its tile or
+// cluster (light_bins.h).
+#define VOLUMETRICS_BINDING_LIGHT_BINS 14
 // Shadows (common/shadows.glsl, passes/shadows/shadow_pass.h).
 #define VOLUMETRICS_BINDING_SHADOW_ATLAS 7
 #define VOLUMETRICS_BINDING_SHADOW_VIEWS 8

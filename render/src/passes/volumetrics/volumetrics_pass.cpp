@@ -8,6 +8,7 @@
 #include "candela/render/gpu_context.h"
 #include "common/specialization_ids.h"
 #include "passes/shadows/shadow_pass.h"
+#include "passes/volumetrics/light_bins.h"
 #include "passes/volumetrics/volumetrics_bindings.h"
 #include "shaders/volumetrics_composite.comp.spv.h"
 #include "shaders/volumetrics_froxel_integrate.comp.spv.h"
@@ -76,6 +77,18 @@ std::array<DescriptorBinding, 7 + N> withLightingBindings(
     return bindings;
 }
 
+// Grows a host-visible storage buffer to at least `bytes`.
+void ensureHostBuffer(GpuContext& context, GpuBuffer& buffer, VkDeviceSize bytes) {
+    if (buffer.size() >= bytes) return;
+    buffer =
+        GpuBuffer(context, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryLocation::HostVisible);
+}
+
+void upload(GpuContext& context, GpuBuffer& buffer, const std::vector<uint32_t>& words) {
+    ensureHostBuffer(context, buffer, words.size() * sizeof(uint32_t));
+    std::memcpy(buffer.mapped(), words.data(), words.size() * sizeof(uint32_t));
+}
+
 }  // namespace
 
 VolumetricsPass::VolumetricsPass(GpuContext& context)
@@ -134,10 +147,7 @@ ImageDesc VolumetricsPass::volumesDesc(uint32_t width, uint32_t height) {
 
 void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadows) {
     const VkDeviceSize bytes = std::max<VkDeviceSize>(lights.size(), 1) * sizeof(float);
-    if (lightScales_.size() < bytes) {
-        lightScales_ = GpuBuffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                 MemoryLocation::HostVisible);
-    }
+    ensureHostBuffer(context_, lightScales_, bytes);
     auto* scales = static_cast<float*>(lightScales_.mapped());
     for (size_t i = 0; i < lights.size(); ++i) {
         const float s = lights[i].light.volumetric;
@@ -158,18 +168,39 @@ void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadow
         DescriptorBinding{VOLUMETRICS_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute}});
     reference_ = Pipeline::compute(context_, volumetrics_reference_comp_spv, reference,
                                    sizeof(VolumetricsPush), &constants);
-    const auto light = withLightingBindings(std::array{DescriptorBinding{
-        VOLUMETRICS_BINDING_FROXEL_MEDIUM, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute}});
+    const auto light = withLightingBindings(
+        std::array{DescriptorBinding{VOLUMETRICS_BINDING_FROXEL_MEDIUM,
+                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+                   DescriptorBinding{VOLUMETRICS_BINDING_LIGHT_BINS,
+                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute}});
     froxelLight_ = Pipeline::compute(context_, volumetrics_froxel_light_comp_spv, light,
                                      sizeof(VolumetricsPush), &constants);
     const auto march = withLightingBindings(
         std::array{DescriptorBinding{VOLUMETRICS_BINDING_DEPTH,
                                      VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
                    DescriptorBinding{VOLUMETRICS_BINDING_VOLUMES_MARCHED,
-                                     VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute}});
+                                     VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+                   DescriptorBinding{VOLUMETRICS_BINDING_LIGHT_BINS,
+                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute}});
     volumesMarch_ = Pipeline::compute(context_, volumetrics_volumes_march_comp_spv, march,
                                       sizeof(VolumetricsPush), &constants);
     built_ = true;
+}
+
+void VolumetricsPass::binLights(std::span<const LightInstance> lights, const CameraView& camera,
+                                uint32_t width, uint32_t height, const Inputs& in, bool volumes,
+                                bool froxels) {
+    const auto* scales = static_cast<const float*>(lightScales_.mapped());
+    const std::span<const float> scaleSpan(scales, lights.size());
+    if (volumes) {
+        upload(context_, volumeBins_,
+               render::binLights(lights, scaleSpan, camera, volumeTileLayout(width, height)));
+    }
+    if (froxels) {
+        upload(context_, froxelBins_,
+               render::binLights(lights, scaleSpan, camera,
+                                 froxelClusterLayout(in.grid, nearOf(in), farOf(in))));
+    }
 }
 
 // The descriptors both passes that light the medium read (the reference march and the froxel
@@ -230,9 +261,12 @@ void VolumetricsPass::recordReference(VkCommandBuffer cmd, const Inputs& in) con
 void VolumetricsPass::recordFroxelLight(VkCommandBuffer cmd, const Inputs& in,
                                         const BufferRef& medium) const {
     VkDescriptorBufferInfo mediumInfo{medium.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo binsInfo{froxelBins_.handle(), 0, VK_WHOLE_SIZE};
     LightingInfos infos;
     const auto writes = lightingWrites(
-        in, infos, std::array{storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo)});
+        in, infos,
+        std::array{storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo),
+                   storageBufferWrite(VOLUMETRICS_BINDING_LIGHT_BINS, &binsInfo)});
     const VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
     froxelLight_.bind(cmd);
     froxelLight_.pushDescriptors(cmd, writes);
@@ -281,11 +315,13 @@ void VolumetricsPass::recordVolumesMarch(VkCommandBuffer cmd, const Inputs& in,
     VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo target{VK_NULL_HANDLE, marched.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorBufferInfo binsInfo{volumeBins_.handle(), 0, VK_WHOLE_SIZE};
     LightingInfos infos;
     const auto writes =
         lightingWrites(in, infos,
                        std::array{sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &depth),
-                                  storageImageWrite(VOLUMETRICS_BINDING_VOLUMES_MARCHED, &target)});
+                                  storageImageWrite(VOLUMETRICS_BINDING_VOLUMES_MARCHED, &target),
+                                  storageBufferWrite(VOLUMETRICS_BINDING_LIGHT_BINS, &binsInfo)});
     const VolumetricsPush push = pushFor(in, in.settings.volumeSteps);
     volumesMarch_.bind(cmd);
     volumesMarch_.pushDescriptors(cmd, writes);

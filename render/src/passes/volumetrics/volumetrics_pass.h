@@ -59,6 +59,14 @@ public:
         VolumetricsSettings settings;
         glm::uvec3 grid{1u};
     };
+    // Lists, per workgroup of the per-light volumes' march (`volumes`) or of the froxel lighting
+    // (`froxels`), the lights whose volume reaches it (light_bins.h), after prepare(); rewritten
+    // every frame like the scales. A frame with blended surfaces and per-light volumes has both.
+    void binLights(std::span<const LightInstance> lights, const CameraView& camera, uint32_t width,
+                   uint32_t height, const Inputs& in, bool volumes, bool froxels);
+    const GpuBuffer& volumeBins() const { return volumeBins_; }
+    const GpuBuffer& froxelBins() const { return froxelBins_; }
+
     void recordReference(VkCommandBuffer cmd, const Inputs& in) const;
     // Froxels: light into `medium`, integrate into `integrated` (both StorageWrite, the first
     // then StorageRead), composite `integrated` (StorageRead) over in.hdr.
@@ -96,6 +104,8 @@ private:
     Pipeline volumesComposite_;
     Sampler pointSampler_;
     GpuBuffer lightScales_;
+    GpuBuffer volumeBins_;
+    GpuBuffer froxelBins_;
 };
 
 }  // namespace candela::render

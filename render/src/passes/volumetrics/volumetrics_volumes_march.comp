@@ -11,15 +11,18 @@
 // the view leg's transmittance to it. Stores (in-scattered radiance, view depth) for the
 // bilateral blur and upsample.
 //
-// Each pixel tests each light's volume against its own ray (a sphere or cone intersection) and
-// marches only the segment inside. A list per 16x16-pixel tile (lights tested against the
-// tile's frustum in shared memory, then only those marched) cost 10x more on lavapipe than
-// this at one light and 12x in the demo: its barriers outweigh the ray tests they save.
+// A light costs only the pixels its volume covers: each 8x8 tile (a workgroup) marches the
+// lights listed for it on the CPU (light_bins.h: the volume's box projected to the screen, the
+// proxy mesh's coverage at tile granularity), each pixel testing each of them against its own
+// ray (a sphere or cone intersection) and marching only the segment inside. (Lists built here,
+// a tile's frustum against every light in shared memory, cost 10x more on lavapipe than testing
+// every light at every pixel: their barriers outweighed the tests they saved.)
 //
 // The sun's volume is the whole screen, marched cascade by cascade (seed 004 §3): the ray is
 // cut where it leaves each cascade's sphere, and each piece is marched against that cascade's
 // map alone, the rest beyond the last cascade unshadowed. The pieces share the ray's `grid.w`
 // steps by length (at least one each): `grid.w` steps per piece cost 11x the demo's march.
+#include "light_bins.glsl"
 #include "light_volume.glsl"
 #include "volumetric_medium.glsl"
 
@@ -107,8 +110,9 @@ void main() {
     vec3 radiance = vec3(0.0);
     ShadowView none;
     if (push.medium.x > 0.0) {
-        for (uint i = 0u; i < push.lights.x; ++i) {
-            if (lightScales[i] <= 0.0) continue;
+        uvec2 listed = workgroupLightRange();
+        for (uint k = listed.x; k < listed.y; ++k) {
+            uint i = lightBins[k];
             Light light = loadLight(i, push.lights.y);
             if (light.type == kLightDirectional) {
                 radiance += marchSun(i, light, origin, direction, surfaceT, steps, dither);
@@ -122,8 +126,8 @@ void main() {
             radiance += marchSegment(i, light, origin, direction, segment, steps, dither, false,
                                      none, true, false);
         }
-        for (uint i = 0u; kMediumAreaLights && i < push.lights.x; ++i) {
-            if (lightScales[i] <= 0.0) continue;
+        for (uint k = listed.x; kMediumAreaLights && k < listed.y; ++k) {
+            uint i = lightBins[k];
             Light light = loadLight(i, push.lights.y);
             if (!isMediumAreaLight(light)) continue;
             vec2 segment = lightVolumeSegment(light, origin, direction, surfaceT);

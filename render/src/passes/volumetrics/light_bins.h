@@ -1,0 +1,65 @@
+#pragma once
+// Which lights reach which part of the screen, for the volumetric lighting shaders (issue 17,
+// render/README.md "Volumetric lighting"): seed 004 §3 has each light render its volume (a
+// sphere for a point light, a cone for a spot, the whole screen for the sun) so that a light
+// costs only the pixels it covers. Here each light's volume is bounded on the CPU (a box around
+// its range sphere, or around its cone cut at its range; everywhere for the sun and for a volume
+// that reaches behind the near plane, such as one holding the camera), the box projected to the
+// screen, and the light listed in every workgroup's bin that the projection covers: an 8x8 tile
+// of the per-light volumes' half-resolution march, or a 4x4x4 cluster of froxels (its slices
+// from the box's view depths too). A shader invocation then loops over its workgroup's list
+// only: the proxy mesh's per-pixel coverage at tile granularity, with neither rasterisation nor
+// the shared memory and barriers that made GPU-built lists cost more than they saved on lavapipe.
+//
+// Buffer layout (light_bins.glsl): for B bins, B + 1 offsets into the list that follows them
+// (bin b's lights are list[offset[b], offset[b + 1])), each list in ascending light index so the
+// shaders sum in the order of the light buffer.
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <span>
+#include <vector>
+
+#include "candela/render/frame_scene.h"
+
+namespace candela::render {
+
+// Workgroups of the binned dispatch: bins across, down and deep (1 deep for a screen-tile
+// dispatch), each covering `pixels` of the binned resolution across and down and, for froxels,
+// `slices` depth slices.
+struct LightBinLayout {
+    glm::uvec3 bins{1u};
+    // Binned elements (half-resolution pixels or froxels) across, down, deep, and per bin.
+    glm::uvec3 elements{1u};
+    glm::uvec3 perBin{8u, 8u, 1u};
+    // How an element's centre maps to NDC: ndc = (element * stride + offset) / extent * 2 - 1
+    // (half-resolution pixel q samples full pixel 2q: stride 2, offset 0.5, extent the width).
+    glm::vec2 stride{1.0f}, offset{0.5f}, extent{1.0f};
+    // Froxels: view depths of the exponential slicing (volumetrics_push.glsl sliceBoundaryDepth).
+    float nearDepth = 0.05f, farDepth = 100.0f;
+    bool sliced = false;
+};
+
+// The per-light volumes' march: 8x8 half-resolution pixels per bin, at full size width x height.
+LightBinLayout volumeTileLayout(uint32_t width, uint32_t height);
+// The froxel lighting: 4x4x4 froxels per bin of the grid, slices from nearDepth to farDepth.
+LightBinLayout froxelClusterLayout(const glm::uvec3& grid, float nearDepth, float farDepth);
+
+// A light's volume as a world-space box, or everywhere (the sun, a range of zero or less).
+struct LightVolumeBox {
+    bool everywhere = false;
+    glm::vec3 min{0.0f}, max{0.0f};
+};
+LightVolumeBox lightVolumeBox(const LightInstance& light);
+
+// The bins `box` covers, as a range [first, last] per axis; false when it covers none (behind
+// the camera, beside the view, beyond the last slice).
+bool binsCovered(const LightVolumeBox& box, const CameraView& camera, const LightBinLayout& layout,
+                 glm::uvec3& first, glm::uvec3& last);
+
+// Lists per bin (the layout at the top) of the lights whose `scales` entry is positive.
+std::vector<uint32_t> binLights(std::span<const LightInstance> lights,
+                                std::span<const float> scales, const CameraView& camera,
+                                const LightBinLayout& layout);
+
+}  // namespace candela::render

@@ -1,0 +1,173 @@
+// The volumetrics' per-workgroup light lists (passes/volumetrics/light_bins.h), on the CPU: every
+// half-resolution pixel whose view ray meets a light's volume, and every froxel whose sample
+// lies in it, finds the light in its workgroup's list, while lights elsewhere are left out.
+// Pure logic, no device used.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <random>
+
+#include "passes/volumetrics/light_bins.h"
+
+namespace candela::render {
+namespace {
+
+constexpr uint32_t kWidth = 96, kHeight = 64;
+
+CameraView testCamera() {
+    CameraView camera;
+    camera.position = glm::vec3(0.5f, 1.0f, 2.0f);
+    camera.view =
+        glm::lookAt(camera.position, glm::vec3(0.0f, 0.0f, -6.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    camera.nearPlane = 0.05f;
+    camera.projection =
+        reverseZPerspective(glm::radians(60.0f), float(kWidth) / float(kHeight), camera.nearPlane);
+    return camera;
+}
+
+// Point and spot lights around and behind the camera, some holding it, the same every run.
+std::vector<LightInstance> scatteredLights() {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::vector<LightInstance> lights;
+    for (int i = 0; i < 160; ++i) {
+        LightInstance l;
+        l.light.type = i % 3 == 0 ? content::LightType::Spot : content::LightType::Point;
+        l.light.attenuationRadius = 0.3f + 1.5f * (unit(random) + 1.0f);
+        l.light.outerConeAngle = 0.2f + 0.5f * (unit(random) + 1.0f);
+        l.position =
+            glm::vec3(6.0f * unit(random), 4.0f * unit(random), -5.0f + 7.0f * unit(random));
+        l.direction = glm::normalize(glm::vec3(unit(random), unit(random), unit(random)) +
+                                     glm::vec3(0.0f, 0.0f, 0.01f));
+        lights.push_back(l);
+    }
+    return lights;
+}
+
+// Whether P lies in the light's volume (its range sphere, cut by the cone for a spot).
+bool insideVolume(const LightInstance& l, const glm::vec3& P) {
+    const glm::vec3 d = P - l.position;
+    const float distance = glm::length(d);
+    if (distance > l.light.attenuationRadius) return false;
+    if (l.light.type != content::LightType::Spot || distance < 1e-6f) return true;
+    return glm::dot(d / distance, l.direction) >= std::cos(l.light.outerConeAngle);
+}
+
+// Light `light` is in bin `bin`'s list.
+bool listed(const std::vector<uint32_t>& bins, uint32_t binCount, uint32_t bin, uint32_t light) {
+    const auto first = bins.begin() + binCount + 1 + bins[bin];
+    const auto last = bins.begin() + binCount + 1 + bins[bin + 1];
+    return std::binary_search(first, last, light);
+}
+
+glm::vec3 nearPoint(const CameraView& camera, glm::vec2 ndc) {
+    const glm::vec4 p = glm::inverse(camera.projection * camera.view) * glm::vec4(ndc, 1.0f, 1.0f);
+    return glm::vec3(p) / p.w;
+}
+
+TEST(VolumetricLightBins, EveryRayThatMeetsAVolumeFindsItsLightInItsTile) {
+    const CameraView camera = testCamera();
+    const std::vector<LightInstance> lights = scatteredLights();
+    const std::vector<float> scales(lights.size(), 1.0f);
+    const LightBinLayout layout = volumeTileLayout(kWidth, kHeight);
+    const std::vector<uint32_t> bins = binLights(lights, scales, camera, layout);
+    const uint32_t binCount = layout.bins.x * layout.bins.y;
+    for (uint32_t b = 0; b < binCount; ++b) {
+        EXPECT_TRUE(std::is_sorted(bins.begin() + binCount + 1 + bins[b],
+                                   bins.begin() + binCount + 1 + bins[b + 1]));
+    }
+    uint32_t met = 0;
+    for (uint32_t qy = 0; qy < layout.elements.y; ++qy) {
+        for (uint32_t qx = 0; qx < layout.elements.x; ++qx) {
+            // Half-resolution pixel q marches full pixel 2q's ray, 20 m deep here.
+            const glm::vec2 ndc((float(2 * qx) + 0.5f) / kWidth * 2.0f - 1.0f,
+                                (float(2 * qy) + 0.5f) / kHeight * 2.0f - 1.0f);
+            const glm::vec3 direction = glm::normalize(nearPoint(camera, ndc) - camera.position);
+            const uint32_t bin = (qy / 8) * layout.bins.x + qx / 8;
+            for (uint32_t i = 0; i < lights.size(); ++i) {
+                // Rays that miss the range sphere are skipped; the others are walked.
+                const glm::vec3 toLight = lights[i].position - camera.position;
+                const float along = glm::dot(toLight, direction);
+                const float radius = lights[i].light.attenuationRadius;
+                if (glm::dot(toLight, toLight) - along * along > radius * radius) continue;
+                bool meets = false;
+                for (float t = 0.0f; t < 20.0f && !meets; t += 0.02f)
+                    meets = insideVolume(lights[i], camera.position + direction * t);
+                if (!meets) continue;
+                ++met;
+                EXPECT_TRUE(listed(bins, binCount, bin, i))
+                    << "light " << i << " missing from tile " << bin << " (pixel " << qx << ", "
+                    << qy << ")";
+            }
+        }
+    }
+    EXPECT_GT(met, 1000u);
+    // The lists leave lights out: fewer entries than every light in every tile.
+    EXPECT_LT(bins.size() - binCount - 1, lights.size() * binCount / 2);
+}
+
+TEST(VolumetricLightBins, EveryFroxelInAVolumeFindsItsLightInItsCluster) {
+    const CameraView camera = testCamera();
+    const std::vector<LightInstance> lights = scatteredLights();
+    std::vector<float> scales(lights.size(), 1.0f);
+    scales[5] = 0.0f;  // lights no medium: listed nowhere
+    const glm::uvec3 grid(12, 8, 64);
+    const float nearDepth = camera.nearPlane, farDepth = 100.0f;
+    const LightBinLayout layout = froxelClusterLayout(grid, nearDepth, farDepth);
+    const std::vector<uint32_t> bins = binLights(lights, scales, camera, layout);
+    const uint32_t binCount = layout.bins.x * layout.bins.y * layout.bins.z;
+    auto boundary = [&](float b) {
+        return b <= 0.0f ? 0.0f : nearDepth * std::pow(farDepth / nearDepth, b / float(grid.z));
+    };
+    uint32_t inside = 0;
+    for (uint32_t z = 0; z < grid.z; ++z) {
+        const float depth = 0.5f * (boundary(float(z)) + boundary(float(z + 1)));
+        for (uint32_t y = 0; y < grid.y; ++y) {
+            for (uint32_t x = 0; x < grid.x; ++x) {
+                // The froxel's sample: on its centre's ray at its slice's middle view depth.
+                const glm::vec2 ndc((float(x) + 0.5f) / float(grid.x) * 2.0f - 1.0f,
+                                    (float(y) + 0.5f) / float(grid.y) * 2.0f - 1.0f);
+                const glm::vec3 perDepth =
+                    (nearPoint(camera, ndc) - camera.position) / camera.nearPlane;
+                const glm::vec3 P = camera.position + perDepth * depth;
+                const uint32_t bin = ((z / 4) * layout.bins.y + y / 4) * layout.bins.x + x / 4;
+                for (uint32_t i = 0; i < lights.size(); ++i) {
+                    if (!insideVolume(lights[i], P)) continue;
+                    if (i == 5) {
+                        EXPECT_FALSE(listed(bins, binCount, bin, i));
+                        continue;
+                    }
+                    ++inside;
+                    EXPECT_TRUE(listed(bins, binCount, bin, i))
+                        << "light " << i << " missing from cluster " << bin;
+                }
+            }
+        }
+    }
+    EXPECT_GT(inside, 100u);
+    EXPECT_LT(bins.size() - binCount - 1, lights.size() * binCount / 4);
+}
+
+TEST(VolumetricLightBins, TheSunAndAVolumeHoldingTheCameraAreEverywhereAndOneBehindNowhere) {
+    const CameraView camera = testCamera();
+    std::vector<LightInstance> lights(3);
+    lights[0].light.type = content::LightType::Directional;
+    lights[1].position = camera.position + glm::vec3(0.2f, 0.0f, 0.0f);
+    lights[1].light.attenuationRadius = 1.0f;
+    lights[2].position = camera.position + glm::vec3(0.0f, 0.0f, 5.0f);  // behind it
+    lights[2].light.attenuationRadius = 2.0f;
+    const std::vector<float> scales(lights.size(), 1.0f);
+    const LightBinLayout layout = volumeTileLayout(kWidth, kHeight);
+    const std::vector<uint32_t> bins = binLights(lights, scales, camera, layout);
+    const uint32_t binCount = layout.bins.x * layout.bins.y;
+    for (uint32_t b = 0; b < binCount; ++b) {
+        EXPECT_TRUE(listed(bins, binCount, b, 0));
+        EXPECT_TRUE(listed(bins, binCount, b, 1));
+        EXPECT_FALSE(listed(bins, binCount, b, 2));
+    }
+}
+
+}  // namespace
+}  // namespace candela::render
