@@ -178,6 +178,22 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     return f;
 }
 
+// Whether the frame draws wires (WirePass::prepare draws when some wire has a segment).
+bool hasWireSegments(const FrameScene& scene) {
+    return std::any_of(scene.wires.begin(), scene.wires.end(), [](const WireDraw& draw) {
+        return draw.wire && draw.wire->segments.size() >= 2;
+    });
+}
+
+// Whether the frame draws light shafts: an atmosphere, shafts asked for and a sun (the first
+// directional light, ScatteringPass::frameOf).
+bool scatteringDrawn(const FrameScene& scene, ScatteringMode mode) {
+    return scene.atmosphere && mode != ScatteringMode::Off &&
+           std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightInstance& l) {
+               return l.light.type == content::LightType::Directional;
+           });
+}
+
 // Whether an opaque draw may have a surface smoother than SSR's roughness cut-off: its
 // roughness factor is under it, or a texture (which only scales the factor down) may bring it
 // there. Frames without one trace no ray and declare no SSR pass.
@@ -848,7 +864,26 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                    features.ibl == IblMode::Mobile, inputs.scene.skyIntensity,
                                    SsrOcclusion{occlusion, specularOcclusion, aoMode, aoIntensity});
     }
-    std::optional<ResourceHandle> froxels;  // the integrated grid, for blended surfaces too
+    // The integrated froxel buffer (common/froxel_grid.glsl): the fog's grid (froxel
+    // volumetrics; blended surfaces under per-light volumes) and the air's aerial-perspective
+    // grid (blended surfaces and wires under an atmosphere's shafts), in frames that have them;
+    // one buffer, so its readers need one binding. (Wires under per-light volumes read no fog
+    // grid: lighting the demo's, made only for its power lines, cost 14x the volumes' march.)
+    const bool fogFroxels =
+        inputs.scene.fog && (options_.volumetrics == VolumetricsMode::Froxels ||
+                             (options_.volumetrics == VolumetricsMode::Volumes && blended));
+    const glm::uvec3 fogGrid =
+        fogFroxels ? VolumetricsPass::froxelGrid(width_, height_, options_.volumetricsSettings)
+                   : glm::uvec3(0u);
+    const bool airFroxels = (blended || hasWireSegments(inputs.scene)) &&
+                            scatteringDrawn(inputs.scene, options_.scattering);
+    std::optional<ResourceHandle> froxels;
+    if (fogFroxels || airFroxels) {
+        const VkDeviceSize bytes =
+            VolumetricsPass::froxelIntegratedBytes(fogGrid) +
+            (airFroxels ? ScatteringPass::aerialBytes(options_.scatteringSettings) : 0);
+        froxels = g.createBuffer("froxels.integrated", bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    }
     // Volumetric lighting over the lit opaque surfaces and the background (frames whose scene
     // has a medium): seed 004 §3's per-light volumes (marched at half resolution, blurred,
     // upsampled), froxels (lit, integrated, composited by depth) or the reference march.
@@ -864,6 +899,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         volume.nearPlane = inputs.scene.camera.nearPlane;
         volume.settings = options_.volumetricsSettings;
         volume.grid = VolumetricsPass::froxelGrid(width_, height_, volume.settings);
+        if (fogFroxels) volume.grid = fogGrid;
         const ResourceHandle scales =
             g.importBuffer("volumetrics.light_scales", &volumetricsPass_->lightScales());
         // Which lights each march tile or froxel cluster meets (the reference meets them all).
@@ -896,18 +932,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             p.read(h.depth, Use::Sampled);
             h.hdr = p.write(h.hdr, Use::StorageReadWrite);
         } else {
-            // Per-light volumes light only opaque surfaces; blended ones read the froxel grid,
-            // made for them in frames that have them.
+            // Per-light volumes light only opaque surfaces; blended ones and wires read the
+            // froxel grid, made for them in frames that have them.
             const bool volumes = options_.volumetrics == VolumetricsMode::Volumes;
-            if (!volumes || blended) {
+            if (fogFroxels) {
                 if (!volumes) features_.push_back("volumetrics_froxels");
                 const VkDeviceSize bytes = VolumetricsPass::froxelBufferBytes(volume.grid);
                 ResourceHandle medium = g.createBuffer("volumetrics.froxel_medium", bytes,
                                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-                ResourceHandle integrated =
-                    g.createBuffer("volumetrics.froxel_integrated",
-                                   VolumetricsPass::froxelIntegratedBytes(volume.grid),
-                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                const ResourceHandle integrated = *froxels;
                 auto light = g.addPass("volumetrics_froxel_light", PassKind::Device,
                                        [this, medium, volume, shadowDescriptors](PassContext& ctx) {
                                            VolumetricsPass::Inputs in = volume;
@@ -990,7 +1023,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     // frame and its medium, under the blended surfaces (frames whose scene has an atmosphere).
     declareScattering(
         inputs, h,
-        ShadowReads{features.shadows, shadowAtlas, shadowViews, shadowLights, shadowDescriptors});
+        ShadowReads{features.shadows, shadowAtlas, shadowViews, shadowLights, shadowDescriptors},
+        airFroxels ? &*froxels : nullptr, fogGrid);
     // Hair (seed 004 §5) over the lit frame, under the wires and blended surfaces, which then
     // see its depth.
     if (!inputs.scene.hair.empty()) {
@@ -1501,16 +1535,16 @@ uint32_t Renderer::declareBloom(uint32_t hdrId, uint32_t hdrVersion) {
 }
 
 void Renderer::declareScattering(const FrameInputs& inputs, SceneHandles& h,
-                                 const ShadowReads& shadowReads) {
+                                 const ShadowReads& shadowReads, ResourceHandle* aerialFroxels,
+                                 const glm::uvec3& fogGrid) {
     const bool shadows = shadowReads.shadows;
     scatteringMarched_ = false;
-    if (!inputs.scene.atmosphere || options_.scattering == ScatteringMode::Off) return;
+    if (!scatteringDrawn(inputs.scene, options_.scattering)) return;
     ScatteringPass::Inputs in;
     in.frame = ScatteringPass::frameOf(inputs.scene, options_.scatteringSettings, width_, height_);
-    if (in.frame.sunIndex < 0) return;
     FrameGraph& g = *graph_;
     if (!scatteringPass_) scatteringPass_ = std::make_unique<ScatteringPass>(context_);
-    scatteringPass_->prepare(options_.scattering, shadows);
+    scatteringPass_->prepare(options_.scattering, shadows, aerialFroxels != nullptr);
     scatteringMarched_ = true;
     in.camera = &cameraBuffer_;
     in.lights = &lights_->buffer();
@@ -1522,14 +1556,6 @@ void Renderer::declareScattering(const FrameInputs& inputs, SceneHandles& h,
     const bool epipolar = options_.scattering == ScatteringMode::Epipolar;
     features_.push_back(epipolar ? "scattering_epipolar" : "scattering_brute_force");
     const SceneHandles ids = h;
-    ResourceHandle counters =
-        g.importBuffer("scattering.counters", &scatteringPass_->counters(), true);
-    {
-        auto p = g.addPass("scattering_clear", PassKind::Device, [this](PassContext& ctx) {
-            scatteringPass_->recordClearCounters(ctx.cmd());
-        });
-        counters = p.write(counters, Use::TransferDst);
-    }
     auto readCommon = [&](FrameGraph::PassBuilder& p) {
         p.read(h.camera, Use::Uniform);
         p.read(h.lights, Use::StorageRead);
@@ -1540,6 +1566,33 @@ void Renderer::declareScattering(const FrameInputs& inputs, SceneHandles& h,
         }
     };
     const ShadowDescriptors shadowDescriptors = shadowReads.descriptors;  // the passes run later
+    if (aerialFroxels) {
+        // The same air for blended surfaces and wires, drawn after the shafts: a coarse grid
+        // of view rays into the integrated froxel buffer, after the fog's grid there.
+        features_.push_back("aerial_perspective");
+        const bool fogGridThere = fogGrid.x * fogGrid.y * fogGrid.z > 0;
+        const auto firstBoundary =
+            uint32_t(VolumetricsPass::froxelBufferBytes(fogGrid) / sizeof(glm::vec4));
+        const ResourceHandle target = *aerialFroxels;
+        auto p = g.addPass(
+            "aerial_perspective", PassKind::Device,
+            [this, in, shadowDescriptors, target, firstBoundary, fogGridThere](PassContext& ctx) {
+                ScatteringPass::Inputs frame = in;
+                frame.shadows = &shadowDescriptors;
+                scatteringPass_->recordAerialPerspective(ctx.cmd(), frame, ctx.buffer(target),
+                                                         firstBoundary, fogGridThere);
+            });
+        readCommon(p);
+        *aerialFroxels = p.write(target, fogGridThere ? Use::StorageReadWrite : Use::StorageWrite);
+    }
+    ResourceHandle counters =
+        g.importBuffer("scattering.counters", &scatteringPass_->counters(), true);
+    {
+        auto p = g.addPass("scattering_clear", PassKind::Device, [this](PassContext& ctx) {
+            scatteringPass_->recordClearCounters(ctx.cmd());
+        });
+        counters = p.write(counters, Use::TransferDst);
+    }
     if (!epipolar) {
         auto p = g.addPass("scattering_brute_force", PassKind::Device,
                            [this, ids, in, shadowDescriptors](PassContext& ctx) {
@@ -1788,6 +1841,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.scatteringMs = 0.0;
     stats_.scatteringSamples = 0;
     stats_.scatteringSteps = 0;
+    stats_.aerialPerspectiveMs = 0.0;
     stats_.shadowMs = 0.0;
     stats_.ssrMs = 0.0;
     stats_.ssrStepsMean = 0.0;
@@ -1809,6 +1863,7 @@ const RendererStats& Renderer::collectStats() {
         if (name.starts_with("volumetrics_")) stats_.volumetricsMs += ms;
         if (name.starts_with("atmosphere_")) stats_.skyMs += ms;
         if (name.starts_with("scattering_")) stats_.scatteringMs += ms;
+        if (name == "aerial_perspective") stats_.aerialPerspectiveMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
         if (name == "sky_occlusion") stats_.skyOcclusionMs = ms;  // kept until the next build
         if (name.starts_with("ssr_")) stats_.ssrMs += ms;

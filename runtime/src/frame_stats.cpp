@@ -86,6 +86,9 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["scattering_ms"] = median(collect(stats.frames, [](auto& f) { return f.scatteringMs; }));
     json["scattering_samples"] = last.scatteringSamples;
     json["scattering_steps"] = last.scatteringSteps;
+    // The air's aerial-perspective grid for blended surfaces and wires: GPU ms (median).
+    json["aerial_perspective_ms"] =
+        median(collect(stats.frames, [](auto& f) { return f.aerialPerspectiveMs; }));
     json["light_evaluations"] = last.lightEvaluations;
     json["lit_pairs"] = last.litPairs;
     json["light_list_overflows"] = last.lightListOverflows;

@@ -32,6 +32,7 @@ class EnvironmentPlaceholders;
 class EnvironmentSamplingTable;
 class FrameGraph;
 class FrameGraphExecutor;
+struct ResourceHandle;
 class FrameSubmitter;
 class LtcTableTexture;
 class AreaLightTextures;
@@ -143,7 +144,11 @@ private:
     // Light shafts (frames whose scene has an atmosphere, options_.scattering not off): the
     // epipolar passes or the brute-force march over h.hdr, which it advances.
     struct ShadowReads;  // the frame's shadow atlas, views and per-light table (renderer.cpp)
-    void declareScattering(const FrameInputs& inputs, SceneHandles& h, const ShadowReads& shadows);
+    // `aerialFroxels`: the integrated froxel buffer when blended surfaces or wires need the
+    // air's grid there (else null), updated to the version the aerial perspective wrote;
+    // `fogGrid`: the fog's grid in front of it (0 when the frame has none there).
+    void declareScattering(const FrameInputs& inputs, SceneHandles& h, const ShadowReads& shadows,
+                           ResourceHandle* aerialFroxels, const glm::uvec3& fogGrid);
     // captureMotionVectors: copies the frame's final motion vectors into motionReadback_.
     void declareMotionCapture();
 

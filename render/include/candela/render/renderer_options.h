@@ -123,6 +123,13 @@ struct ScatteringSettings {
     float maxDistance = 200.0f;  // metres marched for the sky (no surface)
     // Measurement: the frame is replaced by the in-scattered radiance alone (no surfaces).
     bool inscatteringOnly = false;
+    // The air in front of blended surfaces and wires (render/README.md "Aerial perspective"):
+    // a grid of view rays (columns x rows across the image, Hillaire 2020's 32x32) marched
+    // once a frame through `aerialSlices` quadratic depth slices out to `aerialFar` metres,
+    // `aerialStepsPerSlice` shadow lookups in each; past it the air is lit.
+    uint32_t aerialColumns = 32, aerialRows = 32, aerialSlices = 32;
+    uint32_t aerialStepsPerSlice = 8;
+    float aerialFar = 200.0f;
 };
 
 // Wires (seed 004 §6, render/README.md "Wires"): Persson's clamp to a pixel's radius with the
@@ -334,6 +341,9 @@ struct RendererStats {
     double scatteringMs = 0.0;
     uint64_t scatteringSamples = 0;
     uint64_t scatteringSteps = 0;
+    // The air's grid for blended surfaces and wires (--stats aerial_perspective_ms): GPU time
+    // of its pass (0 in frames without an atmosphere, shafts or anything blended).
+    double aerialPerspectiveMs = 0.0;
     uint64_t lightEvaluations = 0;  // light-pixel pairs the shader evaluated (countLightPairs)
     uint64_t litPairs = 0;          // ... of which the light reaches the pixel
     // Frames whose list buffer had to grow (the CPU path's first frame always does: it sizes

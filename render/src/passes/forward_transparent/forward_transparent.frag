@@ -147,6 +147,11 @@ void main() {
     vec4 medium = froxelsAt(gl_FragCoord.xy, vec2(camera.frameInfo.xy),
                             froxelParams.range.x / max(gl_FragCoord.z, 1e-30));
     radiance = radiance * medium.a + medium.rgb;
+    // Then the atmosphere's air in front (aerial perspective), as the light shafts attenuate
+    // the opaque frame and add to it after the fog's composite.
+    vec3 airTransmittance;
+    vec3 air = aerialPerspectiveAtFragment(gl_FragCoord, airTransmittance);
+    radiance = radiance * airTransmittance + air;
     outRadiance = vec4(radiance, saturate(s.baseColor.a));
     outMotion = vec4(screenMotion(inCurrentClip, inPreviousClip), 0.0, outRadiance.a);
 }

@@ -18,6 +18,9 @@
 #define SCATTERING_BINDING_INSCATTER 11
 // Rays marched and shadow tests taken (--stats scattering_samples).
 #define SCATTERING_BINDING_COUNTERS 12
+// The integrated froxel buffer (common/froxel_grid.glsl), whose air part the aerial
+// perspective fills.
+#define SCATTERING_BINDING_AERIAL_PERSPECTIVE 13
 // Shadows (common/shadows.glsl, passes/shadows/shadow_pass.h).
 #define SCATTERING_BINDING_SHADOW_ATLAS 7
 #define SCATTERING_BINDING_SHADOW_VIEWS 8

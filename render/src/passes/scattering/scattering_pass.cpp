@@ -9,6 +9,7 @@
 #include "common/specialization_ids.h"
 #include "passes/scattering/scattering_bindings.h"
 #include "passes/shadows/shadow_pass.h"
+#include "shaders/scattering_aerial_perspective.comp.spv.h"
 #include "shaders/scattering_brute_force.comp.spv.h"
 #include "shaders/scattering_coordinates.comp.spv.h"
 #include "shaders/scattering_samples.comp.spv.h"
@@ -29,8 +30,10 @@ struct ScatteringPush {
     glm::uvec4 epipolar;   // slices, samples per slice, initial step, tree leaves
     glm::uvec4 lights;     // sun index, light capacity, tree levels, shadow maps
     glm::uvec4 batch;      // brute force: steps, first, count; epipolar: phase in y; w: 1,
-                           // the in-scattering alone
+                           // the in-scattering alone; aerial perspective: first boundary, fog
+    glm::uvec4 aerial;     // aerial perspective: columns, rows, slices, steps per slice
 };
+static_assert(sizeof(ScatteringPush) <= 128, "Vulkan guarantees 128 bytes of push constants");
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 constexpr uint32_t kCascadeRows = 4;  // SHADOW_MAX_CASCADES
@@ -92,12 +95,13 @@ ScatteringPush pushFor(const ScatteringPass::Inputs& in) {
     return {glm::vec4(f.rayleigh, f.mieAnisotropy),
             glm::vec4(f.mie, std::max(in.nearPlane, 1e-4f)),
             glm::vec4(f.extinction, s.maxDistance),
-            glm::vec4(f.sunPixel, s.refinementThreshold, 0.0f),
+            glm::vec4(f.sunPixel, s.refinementThreshold, std::max(s.aerialFar, 1e-3f)),
             glm::uvec4(std::max(s.slices, 1u), std::max(s.samplesPerSlice, 2u),
                        std::max(s.initialStep, 1u), leaves),
             glm::uvec4(uint32_t(std::max(f.sunIndex, 0)), in.lightCapacity, levels,
                        in.shadowMaps ? 1u : 0u),
-            glm::uvec4(std::max(s.bruteForceSteps, 1u), 0u, 0u, s.inscatteringOnly ? 1u : 0u)};
+            glm::uvec4(std::max(s.bruteForceSteps, 1u), 0u, 0u, s.inscatteringOnly ? 1u : 0u),
+            glm::uvec4(ScatteringPass::aerialGrid(s), std::max(s.aerialStepsPerSlice, 1u))};
 }
 
 }  // namespace
@@ -130,6 +134,16 @@ ImageDesc ScatteringPass::treeDesc(const ScatteringSettings& settings, uint32_t 
 VkDeviceSize ScatteringPass::slicesBytes(const ScatteringSettings& settings) {
     // SliceInfo: end points, flags and a line per cascade (vec4 each).
     return VkDeviceSize(std::max(settings.slices, 1u)) * (2 + kCascadeRows) * sizeof(glm::vec4);
+}
+
+glm::uvec3 ScatteringPass::aerialGrid(const ScatteringSettings& settings) {
+    return glm::max(glm::uvec3(settings.aerialColumns, settings.aerialRows, settings.aerialSlices),
+                    glm::uvec3(1u));
+}
+
+VkDeviceSize ScatteringPass::aerialBytes(const ScatteringSettings& settings) {
+    const glm::uvec3 grid = aerialGrid(settings);
+    return VkDeviceSize(grid.x) * grid.y * grid.z * sizeof(glm::vec4);
 }
 
 uint32_t ScatteringPass::treeLeaves(uint32_t cascadeSize) {
@@ -175,9 +189,9 @@ ScatteringPass::Frame ScatteringPass::frameOf(const FrameScene& scene,
     return f;
 }
 
-void ScatteringPass::prepare(ScatteringMode mode, bool shadows) {
+void ScatteringPass::prepare(ScatteringMode mode, bool shadows, bool aerialPerspective) {
     if (shadows != shadows_) {
-        epipolarBuilt_ = bruteForceBuilt_ = false;
+        epipolarBuilt_ = bruteForceBuilt_ = aerialBuilt_ = false;
         shadows_ = shadows;
     }
     SpecializationConstants constants;
@@ -214,6 +228,13 @@ void ScatteringPass::prepare(ScatteringMode mode, bool shadows) {
         bruteForce_ = Pipeline::compute(context_, scattering_brute_force_comp_spv,
                                         withCommon(std::array{depth, hdr}), bytes, &constants);
         bruteForceBuilt_ = true;
+    }
+    if (aerialPerspective && !aerialBuilt_) {
+        const DescriptorBinding target{SCATTERING_BINDING_AERIAL_PERSPECTIVE,
+                                       VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute};
+        aerial_ = Pipeline::compute(context_, scattering_aerial_perspective_comp_spv,
+                                    withCommon(std::array{target}), bytes, &constants);
+        aerialBuilt_ = true;
     }
 }
 
@@ -331,6 +352,22 @@ void ScatteringPass::recordBruteForce(VkCommandBuffer cmd, const Inputs& in) con
         bruteForce_.pushConstants(cmd, &push, sizeof(push));
         vkCmdDispatch(cmd, groups(in.hdr.desc().width, 8), groups(in.hdr.desc().height, 8), 1);
     }
+}
+
+void ScatteringPass::recordAerialPerspective(VkCommandBuffer cmd, const Inputs& in,
+                                             const BufferRef& froxels, uint32_t firstBoundary,
+                                             bool fogGrid) const {
+    VkDescriptorBufferInfo target{froxels.handle(), 0, VK_WHOLE_SIZE};
+    CommonInfos infos;
+    const auto writes = commonWrites(
+        in, counters_, infos,
+        std::array{storageBufferWrite(SCATTERING_BINDING_AERIAL_PERSPECTIVE, &target)});
+    ScatteringPush push = pushFor(in);
+    push.batch = glm::uvec4(firstBoundary, fogGrid ? 1u : 0u, 0u, 0u);
+    aerial_.bind(cmd);
+    aerial_.pushDescriptors(cmd, writes);
+    aerial_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(push.aerial.x, 8), groups(push.aerial.y, 8), 1);
 }
 
 void ScatteringPass::recordClearCounters(VkCommandBuffer cmd) const {

@@ -10,6 +10,8 @@
 //     depth-aware filter, combined with the attenuated frame);
 //   brute-force: scattering_brute_force, every pixel marched in equal steps through every
 //     cascade (the reference), in batches of steps under lavapipe's loop limit.
+// In frames with blended surfaces or wires, aerial_perspective marches the same air through a
+// coarse grid of view rays for them (render/README.md "Aerial perspective").
 #include <glm/glm.hpp>
 
 #include "candela/content/components/atmosphere.h"
@@ -37,6 +39,10 @@ public:
     // Leaves per tree: one per texel along the longest line through a cascade (its diagonal),
     // rounded up to a power of two.
     static uint32_t treeLeaves(uint32_t cascadeSize);
+    // The aerial-perspective grid (columns, rows, slices) and the bytes of its boundaries in
+    // the integrated froxel buffer (one vec4 each).
+    static glm::uvec3 aerialGrid(const ScatteringSettings& settings);
+    static VkDeviceSize aerialBytes(const ScatteringSettings& settings);
 
     // The frame's sun (index in the light buffer, -1: none, so no shafts) and the air.
     struct Frame {
@@ -50,8 +56,9 @@ public:
     static Frame frameOf(const FrameScene& scene, const ScatteringSettings& settings,
                          uint32_t width, uint32_t height);
 
-    // Builds the mode's pipelines when first used (or when `shadows` changes).
-    void prepare(ScatteringMode mode, bool shadows);
+    // Builds the mode's pipelines when first used (or when `shadows` changes), and the aerial
+    // perspective's when a frame first needs it.
+    void prepare(ScatteringMode mode, bool shadows, bool aerialPerspective);
 
     struct Inputs {
         ImageRef depth;  // Sampled
@@ -78,6 +85,11 @@ public:
     void recordUnwarp(VkCommandBuffer cmd, const Inputs& in, const BufferRef& slices,
                       const ImageRef& tree, const ImageRef& inscatter) const;
     void recordBruteForce(VkCommandBuffer cmd, const Inputs& in) const;
+    // The air's grid for blended surfaces and wires into the integrated froxel buffer
+    // `froxels` (common/froxel_grid.glsl), its boundaries from vec4 `firstBoundary`; `fogGrid`
+    // false: the frame has no fog grid there, so its head is zeroed.
+    void recordAerialPerspective(VkCommandBuffer cmd, const Inputs& in, const BufferRef& froxels,
+                                 uint32_t firstBoundary, bool fogGrid) const;
 
     // Host-visible counters the shaders add to: rays marched, shadow tests taken.
     GpuBuffer& counters() { return counters_; }
@@ -90,8 +102,8 @@ public:
 private:
     GpuContext& context_;
     bool shadows_ = false;
-    bool epipolarBuilt_ = false, bruteForceBuilt_ = false;
-    Pipeline coordinates_, tree_, samples_, unwarp_, bruteForce_;
+    bool epipolarBuilt_ = false, bruteForceBuilt_ = false, aerialBuilt_ = false;
+    Pipeline coordinates_, tree_, samples_, unwarp_, bruteForce_, aerial_;
     Sampler pointSampler_;
     GpuBuffer counters_;
 };

@@ -17,6 +17,8 @@ layout(std430, binding = VOLUMETRICS_BINDING_FROXEL_MEDIUM) readonly buffer Frox
 };
 layout(std430, binding = VOLUMETRICS_BINDING_FROXEL_INTEGRATED) writeonly buffer FroxelIntegrated {
     FroxelGrid froxelParams;  // read by common/froxel_lookup.glsl
+    AerialGrid aerialParams;  // "no air" here; the air's pass, when the frame has one, runs
+                              // after this one and writes its own
     vec4 froxelIntegrated[];
 };
 
@@ -24,6 +26,7 @@ void main() {
     uvec2 column = gl_GlobalInvocationID.xy;
     if (all(equal(column, uvec2(0u)))) {
         froxelParams = FroxelGrid(uvec4(push.grid.xyz, 1u), vec4(push.range.yz, 0.0, 0.0));
+        aerialParams.grid = uvec4(0u);
     }
     if (any(greaterThanEqual(column, push.grid.xy))) return;
     vec2 ndc = (vec2(column) + 0.5) / vec2(push.grid.xy) * 2.0 - 1.0;

@@ -32,10 +32,11 @@ public:
                                  const VolumetricsSettings& settings);
     // Bytes of the froxel medium buffer (one vec4 per froxel).
     static VkDeviceSize froxelBufferBytes(const glm::uvec3& grid);
-    // The integrated buffer: the grid's shape (common/froxel_grid.glsl: uvec4 x, y, slices,
-    // 1; vec4 near, far), written by the integration, then one vec4 per froxel. All zeros
-    // reads as "no medium".
-    static constexpr VkDeviceSize kFroxelHeaderBytes = 2 * sizeof(glm::vec4);
+    // The integrated buffer: its head (common/froxel_grid.glsl: the fog grid's shape, uvec4
+    // x, y, slices, 1 and vec4 near, far, written by the integration; then the air's
+    // aerial-perspective grid, 6 vec4, written by ScatteringPass::recordAerialPerspective),
+    // then one vec4 per froxel, then the air's boundaries. All zeros reads as "no medium".
+    static constexpr VkDeviceSize kFroxelHeaderBytes = (2 + 6) * sizeof(glm::vec4);
     static VkDeviceSize froxelIntegratedBytes(const glm::uvec3& grid);
     // The per-light volumes' half-resolution targets (in-scattered radiance, view depth).
     static ImageDesc volumesDesc(uint32_t width, uint32_t height);
