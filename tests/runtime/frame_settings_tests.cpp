@@ -14,10 +14,13 @@ using namespace candela::runtime;
 
 namespace {
 
-// A world loaded from a scene file holding `settings` (top-level members) and no entities.
+// A world loaded from a scene file holding `settings` (top-level members) and no entities;
+// the file is named after the test, as ctest may run the tests at once.
 std::unique_ptr<SceneWorld> worldWith(const std::string& settings) {
     const std::filesystem::path file =
-        std::filesystem::temp_directory_path() / "candela_frame_settings_test.scene.json";
+        std::filesystem::temp_directory_path() /
+        (std::string("candela_frame_settings_") +
+         ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".scene.json");
     std::ofstream(file) << R"({"format": "candela.scene", "version": 1, )" << settings
                         << R"(, "entities": []})";
     auto world = std::make_unique<SceneWorld>();
@@ -27,6 +30,13 @@ std::unique_ptr<SceneWorld> worldWith(const std::string& settings) {
     std::filesystem::remove(file);
     return world;
 }
+
+// Every scene-file setting, none at its default.
+constexpr const char* kEverySetting =
+    R"("brdf": "ue4", "aa": "fxaa", "msaa": 4, "bloom": 0.25, "exposure": "auto",
+       "exposure_compensation": -1.5, "ambient_occlusion": {"mode": "reference"},
+       "ssr": "reference", "sky_occlusion": "reference", "volumetrics": "froxels",
+       "scattering": "brute-force")";
 
 }  // namespace
 
@@ -46,11 +56,7 @@ TEST(FrameSettings, WithoutFlagsOrSceneTheDefaultsHold) {
 }
 
 TEST(FrameSettings, SceneFileFieldsReachTheRenderer) {
-    auto world = worldWith(
-        R"("brdf": "ue4", "aa": "fxaa", "msaa": 4, "bloom": 0.25, "exposure": "auto",
-           "exposure_compensation": -1.5, "ambient_occlusion": {"mode": "reference"},
-           "ssr": "reference", "sky_occlusion": "reference", "volumetrics": "froxels",
-           "scattering": "brute-force")");
+    auto world = worldWith(kEverySetting);
     const render::RendererOptions r = rendererOptionsFor(ApplicationOptions{}, world.get());
     EXPECT_EQ(r.brdf, render::BrdfModel::Ue4);
     EXPECT_EQ(r.aa, render::AntiAliasing::Fxaa);
@@ -67,11 +73,7 @@ TEST(FrameSettings, SceneFileFieldsReachTheRenderer) {
 }
 
 TEST(FrameSettings, FlagsOverrideTheSceneFile) {
-    auto world = worldWith(
-        R"("brdf": "ue4", "aa": "fxaa", "msaa": 4, "bloom": 0.25, "exposure": "auto",
-           "exposure_compensation": -1.5, "ambient_occlusion": {"mode": "reference"},
-           "ssr": "reference", "sky_occlusion": "reference", "volumetrics": "froxels",
-           "scattering": "brute-force")");
+    auto world = worldWith(kEverySetting);
     ApplicationOptions options;
     options.brdf = render::BrdfModel::EnergyConserving;
     options.aa = render::AntiAliasing::Off;
