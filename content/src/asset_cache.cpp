@@ -4,6 +4,27 @@
 
 namespace candela::content {
 
+namespace {
+
+// The file loaded once per key: a cached result (a failed load caches null, so it is not
+// retried) counts as a hit; otherwise `load` (an optional value) runs and counts in `loads`.
+template <typename Value, typename Load>
+std::shared_ptr<const Value> cachedLoad(
+    std::map<std::filesystem::path, std::shared_ptr<const Value>>& cache,
+    const std::filesystem::path& key, std::uint64_t& hits, std::uint64_t& loads, Load load) {
+    if (auto it = cache.find(key); it != cache.end()) {
+        ++hits;
+        return it->second;
+    }
+    ++loads;
+    std::shared_ptr<const Value> loaded;
+    if (auto value = load()) loaded = std::make_shared<const Value>(std::move(*value));
+    cache.emplace(key, loaded);
+    return loaded;
+}
+
+}  // namespace
+
 std::filesystem::path AssetCache::canonicalKey(const std::filesystem::path& path) {
     std::error_code ec;
     std::filesystem::path key = std::filesystem::weakly_canonical(path, ec);
@@ -12,17 +33,8 @@ std::filesystem::path AssetCache::canonicalKey(const std::filesystem::path& path
 
 std::shared_ptr<const Model> AssetCache::modelLocked(const std::filesystem::path& key,
                                                      Diagnostics& diagnostics) {
-    if (auto it = models_.find(key); it != models_.end()) {
-        ++stats_.hits;
-        return it->second;
-    }
-    ++stats_.modelLoads;
-    std::shared_ptr<const Model> loaded;
-    if (auto model = loadGltf(key, diagnostics, options_)) {
-        loaded = std::make_shared<const Model>(std::move(*model));
-    }
-    models_.emplace(key, loaded);
-    return loaded;
+    return cachedLoad(models_, key, stats_.hits, stats_.modelLoads,
+                      [&] { return loadGltf(key, diagnostics, options_); });
 }
 
 std::shared_ptr<const Model> AssetCache::model(const std::filesystem::path& path,
@@ -84,17 +96,8 @@ std::shared_ptr<const EnvironmentMap> AssetCache::environment(const std::filesys
                                                               Diagnostics& diagnostics) {
     const std::filesystem::path key = canonicalKey(path);
     std::lock_guard lock(mutex_);
-    if (auto it = environments_.find(key); it != environments_.end()) {
-        ++stats_.hits;
-        return it->second;
-    }
-    ++stats_.environmentLoads;
-    std::shared_ptr<const EnvironmentMap> loaded;
-    if (auto env = loadEnvironmentExr(key, diagnostics)) {
-        loaded = std::make_shared<const EnvironmentMap>(std::move(*env));
-    }
-    environments_.emplace(key, loaded);
-    return loaded;
+    return cachedLoad(environments_, key, stats_.hits, stats_.environmentLoads,
+                      [&] { return loadEnvironmentExr(key, diagnostics); });
 }
 
 AssetCache::Stats AssetCache::stats() const {

@@ -8,18 +8,11 @@
 #include "candela/content/components/animation.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "local_transform.h"
 
 namespace candela::content {
 
 namespace {
-
-ecs::LocalTransform toLocalTransform(const Transform& t) {
-    ecs::LocalTransform local;
-    local.position = {t.translation[0], t.translation[1], t.translation[2]};
-    local.rotation = {t.rotation[0], t.rotation[1], t.rotation[2], t.rotation[3]};
-    local.scale = {t.scale[0], t.scale[1], t.scale[2]};
-    return local;
-}
 
 // Skins and morph weights on the mesh entities, and one AnimationPlayer (first clip, looping)
 // on the first root when the model has clips.

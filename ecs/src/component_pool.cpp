@@ -16,6 +16,25 @@ void freeArray(void* p, std::size_t alignment) noexcept {
     ::operator delete(p, std::align_val_t(std::max(alignment, kMinAlignment)));
 }
 
+// A pool's three parallel arrays: components, change ticks, owning entities.
+struct Arrays {
+    std::byte* data;
+    Tick* ticks;
+    Entity* entities;
+};
+
+Arrays allocateArrays(std::uint32_t capacity, std::size_t elementSize, std::size_t alignment) {
+    return {static_cast<std::byte*>(allocateArray(elementSize * capacity, alignment)),
+            static_cast<Tick*>(allocateArray(sizeof(Tick) * capacity, alignof(Tick))),
+            static_cast<Entity*>(allocateArray(sizeof(Entity) * capacity, alignof(Entity)))};
+}
+
+void freeArrays(const Arrays& arrays, std::size_t alignment) noexcept {
+    freeArray(arrays.data, alignment);
+    freeArray(arrays.ticks, alignof(Tick));
+    freeArray(arrays.entities, alignof(Entity));
+}
+
 }  // namespace
 
 ComponentPool::ComponentPool(ComponentId id, const ComponentOps& ops)
@@ -26,9 +45,7 @@ ComponentPool::~ComponentPool() {
         for (std::uint32_t i = 0; i < size_; ++i)
             ops_->destroy(at(i));
     }
-    freeArray(data_, ops_->alignment);
-    freeArray(ticks_, alignof(Tick));
-    freeArray(entities_, alignof(Entity));
+    freeArrays({data_, ticks_, entities_}, ops_->alignment);
 }
 
 void ComponentPool::addPage(std::uint32_t page) {
@@ -41,10 +58,7 @@ void ComponentPool::addPage(std::uint32_t page) {
 
 void ComponentPool::reserve(std::uint32_t capacity) {
     if (capacity <= capacity_) return;
-    auto* data = static_cast<std::byte*>(allocateArray(elementSize_ * capacity, ops_->alignment));
-    auto* ticks = static_cast<Tick*>(allocateArray(sizeof(Tick) * capacity, alignof(Tick)));
-    auto* entities =
-        static_cast<Entity*>(allocateArray(sizeof(Entity) * capacity, alignof(Entity)));
+    const auto [data, ticks, entities] = allocateArrays(capacity, elementSize_, ops_->alignment);
     if (size_ > 0) {
         if (trivial_) {
             std::memcpy(data, data_, elementSize_ * size_);
@@ -55,9 +69,7 @@ void ComponentPool::reserve(std::uint32_t capacity) {
         std::memcpy(ticks, ticks_, sizeof(Tick) * size_);
         std::memcpy(static_cast<void*>(entities), entities_, sizeof(Entity) * size_);
     }
-    freeArray(data_, ops_->alignment);
-    freeArray(ticks_, alignof(Tick));
-    freeArray(entities_, alignof(Entity));
+    freeArrays({data_, ticks_, entities_}, ops_->alignment);
     data_ = data;
     ticks_ = ticks;
     entities_ = entities;
@@ -95,10 +107,7 @@ void ComponentPool::swapPositions(std::uint32_t a, std::uint32_t b) noexcept {
 }
 
 void ComponentPool::permute(const std::vector<std::uint32_t>& order) {
-    auto* data = static_cast<std::byte*>(allocateArray(elementSize_ * capacity_, ops_->alignment));
-    auto* ticks = static_cast<Tick*>(allocateArray(sizeof(Tick) * capacity_, alignof(Tick)));
-    auto* entities =
-        static_cast<Entity*>(allocateArray(sizeof(Entity) * capacity_, alignof(Entity)));
+    const auto [data, ticks, entities] = allocateArrays(capacity_, elementSize_, ops_->alignment);
     for (std::uint32_t i = 0; i < size_; ++i) {
         const std::uint32_t from = order[i];
         if (trivial_) {
@@ -110,9 +119,7 @@ void ComponentPool::permute(const std::vector<std::uint32_t>& order) {
         entities[i] = entities_[from];
         pages_[entities[i].index() >> kPageBits][entities[i].index() & kPageMask] = i;
     }
-    freeArray(data_, ops_->alignment);
-    freeArray(ticks_, alignof(Tick));
-    freeArray(entities_, alignof(Entity));
+    freeArrays({data_, ticks_, entities_}, ops_->alignment);
     data_ = data;
     ticks_ = ticks;
     entities_ = entities;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iterator>
 
 #include "candela/render/gpu_context.h"
 #include "gpu_material.h"
@@ -14,6 +15,37 @@
 namespace candela::render {
 
 namespace {
+
+// Where each material texture slot's texture comes from, in slot order (the order textures
+// upload in), and whether it holds normals: a missing normal map binds the flat normal, any
+// other missing texture white.
+struct TextureSlotSource {
+    TextureSlot slot;
+    content::TextureRef content::Material::*texture;
+    bool normals;
+};
+constexpr TextureSlotSource kTextureSlotSources[] = {
+    {kBaseColorSlot, &content::Material::baseColorTexture, false},
+    {kMetallicRoughnessSlot, &content::Material::metallicRoughnessTexture, false},
+    {kNormalSlot, &content::Material::normalTexture, true},
+    {kOcclusionSlot, &content::Material::occlusionTexture, false},
+    {kEmissiveSlot, &content::Material::emissiveTexture, false},
+    {kSpecularSlot, &content::Material::specularTexture, false},
+    {kSpecularColorSlot, &content::Material::specularColorTexture, false},
+    {kAnisotropySlot, &content::Material::anisotropyTexture, false},
+    {kClearcoatSlot, &content::Material::clearcoatTexture, false},
+    {kClearcoatRoughnessSlot, &content::Material::clearcoatRoughnessTexture, false},
+    {kClearcoatNormalSlot, &content::Material::clearcoatNormalTexture, true},
+};
+static_assert(
+    [] {
+        if (std::size(kTextureSlotSources) != kTextureSlotCount) return false;
+        for (uint32_t i = 0; i < kTextureSlotCount; ++i) {
+            if (kTextureSlotSources[i].slot != i) return false;
+        }
+        return true;
+    }(),
+    "every texture slot has one source, in slot order");
 
 GpuBuffer uploadBuffer(GpuContext& context, const void* data, VkDeviceSize bytes,
                        VkBufferUsageFlags usage) {
@@ -234,9 +266,8 @@ uint32_t SceneResources::uploadTexture(const content::Rgba8Image& image, content
 
 uint32_t SceneResources::addMaterial(const content::Material& material) {
     MaterialBinding binding{};
-    std::fill(std::begin(binding.textures), std::end(binding.textures), whiteTexture_);
-    binding.textures[kNormalSlot] = flatNormalTexture_;
-    binding.textures[kClearcoatNormalSlot] = flatNormalTexture_;
+    for (const TextureSlotSource& source : kTextureSlotSources)
+        binding.textures[source.slot] = source.normals ? flatNormalTexture_ : whiteTexture_;
     std::fill(std::begin(binding.layerTextures), std::end(binding.layerTextures), whiteTexture_);
     for (uint32_t layer = 0; layer < 3; ++layer)
         binding.layerTextures[kLayerFirstSlot + layer * kTexturesPerLayer + 2] = flatNormalTexture_;
@@ -271,26 +302,11 @@ uint32_t SceneResources::addModelMaterial(const content::Model& model, UploadedM
     // A layered material's base layer binds as its base textures.
     const content::Material m = content::withBaseLayer(material);
     MaterialBinding binding{};
-    binding.textures[kBaseColorSlot] =
-        textureFor(model, uploaded, m.baseColorTexture, whiteTexture_);
-    binding.textures[kMetallicRoughnessSlot] =
-        textureFor(model, uploaded, m.metallicRoughnessTexture, whiteTexture_);
-    binding.textures[kNormalSlot] =
-        textureFor(model, uploaded, m.normalTexture, flatNormalTexture_);
-    binding.textures[kOcclusionSlot] =
-        textureFor(model, uploaded, m.occlusionTexture, whiteTexture_);
-    binding.textures[kEmissiveSlot] = textureFor(model, uploaded, m.emissiveTexture, whiteTexture_);
-    binding.textures[kSpecularSlot] = textureFor(model, uploaded, m.specularTexture, whiteTexture_);
-    binding.textures[kSpecularColorSlot] =
-        textureFor(model, uploaded, m.specularColorTexture, whiteTexture_);
-    binding.textures[kAnisotropySlot] =
-        textureFor(model, uploaded, m.anisotropyTexture, whiteTexture_);
-    binding.textures[kClearcoatSlot] =
-        textureFor(model, uploaded, m.clearcoatTexture, whiteTexture_);
-    binding.textures[kClearcoatRoughnessSlot] =
-        textureFor(model, uploaded, m.clearcoatRoughnessTexture, whiteTexture_);
-    binding.textures[kClearcoatNormalSlot] =
-        textureFor(model, uploaded, m.clearcoatNormalTexture, flatNormalTexture_);
+    for (const TextureSlotSource& source : kTextureSlotSources) {
+        binding.textures[source.slot] =
+            textureFor(model, uploaded, m.*source.texture,
+                       source.normals ? flatNormalTexture_ : whiteTexture_);
+    }
     const content::MaterialLayering& layering = material.layering;
     binding.layerTextures[kLayerMaskSlot] =
         layering.maskSource == content::LayerMaskSource::Texture

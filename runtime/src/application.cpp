@@ -12,7 +12,6 @@
 
 #include "candela/content/animation_systems.h"
 #include "candela/content/atomic_file_write.h"
-#include "candela/content/components/light.h"
 #include "candela/ecs/transform_system.h"
 #include "candela/render/frame_capture.h"
 #include "candela/render/frame_inputs.h"
@@ -28,6 +27,7 @@
 #include "candela/runtime/light_table.h"
 #include "candela/runtime/sky_loader.h"
 #include "candela/runtime/window.h"
+#include "frame_settings.h"
 #include "window_surface.h"
 
 namespace candela::runtime {
@@ -59,143 +59,6 @@ bool displayAvailable() {
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     return (display && *display) || (wayland && *wayland);
-}
-
-// --brdf, else the scene file's "brdf", else the energy-conserving default.
-render::BrdfModel brdfFor(const ApplicationOptions& options, const SceneWorld* world) {
-    if (options.brdf) return *options.brdf;
-    if (world && world->sceneBrdf()) {
-        return *world->sceneBrdf() == content::SceneBrdf::Ue4 ? render::BrdfModel::Ue4
-                                                              : render::BrdfModel::EnergyConserving;
-    }
-    return render::BrdfModel::EnergyConserving;
-}
-
-// --aa, else the scene file's "aa", else TAA: it cut edge error the most for its cost
-// (render/README.md "Antialiasing").
-render::AntiAliasing antiAliasingFor(const ApplicationOptions& options, const SceneWorld* world) {
-    if (options.aa) return *options.aa;
-    if (world && world->sceneAntiAliasing()) {
-        switch (*world->sceneAntiAliasing()) {
-            case content::SceneAntiAliasing::Off:
-                return render::AntiAliasing::Off;
-            case content::SceneAntiAliasing::Fxaa:
-                return render::AntiAliasing::Fxaa;
-            case content::SceneAntiAliasing::Taa:
-                return render::AntiAliasing::Taa;
-        }
-    }
-    return render::AntiAliasing::Taa;
-}
-
-// --ssr, else the scene file's "ssr", else hiz: the renderer declares no SSR pass in a frame
-// without a surface under the roughness cut-off, so only frames with a glossy surface pay
-// (render/README.md "Screen-space reflections").
-render::SsrMode ssrFor(const ApplicationOptions& options, const SceneWorld* world) {
-    if (options.ssr) return *options.ssr;
-    if (world && world->sceneSsr()) {
-        switch (*world->sceneSsr()) {
-            case content::SceneSsrMode::Off:
-                return render::SsrMode::Off;
-            case content::SceneSsrMode::Hiz:
-                return render::SsrMode::Hiz;
-            case content::SceneSsrMode::Reference:
-                return render::SsrMode::Reference;
-        }
-    }
-    return render::SsrMode::Hiz;
-}
-
-// --scattering, else the scene file's "scattering", else epipolar: it stays within 0.22 % of
-// brute force at a 35th of the rays (render/README.md "Light shafts"); the passes draw only in
-// frames whose scene has an atmosphere.
-render::ScatteringMode scatteringFor(const ApplicationOptions& options, const SceneWorld* world) {
-    if (options.scattering) return *options.scattering;
-    if (world && world->sceneScattering()) {
-        switch (*world->sceneScattering()) {
-            case content::SceneScatteringMode::Off:
-                return render::ScatteringMode::Off;
-            case content::SceneScatteringMode::Epipolar:
-                return render::ScatteringMode::Epipolar;
-            case content::SceneScatteringMode::BruteForce:
-                return render::ScatteringMode::BruteForce;
-        }
-    }
-    return render::ScatteringMode::Epipolar;
-}
-
-// The count of lights lighting the medium from which froxels are the default: the smallest
-// count measured at which they cost less than the per-light volumes (docs/speed-vs-error.md,
-// the volumetrics cross-over at 320x180: 1 light 19.1 ms against 23.4, 16 lights 66.3 against
-// 34.7, 4,096 lights 540 against 357).
-constexpr std::size_t kFroxelsFromLights = 16;
-
-// The scene's lights that light a medium (volumetric scale above zero).
-std::size_t lightsInMedium(const SceneWorld& world) {
-    std::size_t count = 0;
-    world.registry.view<const content::Light>().each(
-        [&](ecs::Entity, const content::Light& light) { count += light.volumetric > 0.0f; });
-    return count;
-}
-
-// --volumetrics, else the scene file's "volumetrics", else by the scene's lights at start:
-// per-light volumes below kFroxelsFromLights (cheaper there, and closer to the reference at
-// every count), froxels from it (render/README.md "Volumetric lighting"). Either draws only
-// in frames with a medium; `off` is only ever chosen explicitly.
-render::VolumetricsMode volumetricsFor(const ApplicationOptions& options, const SceneWorld* world) {
-    if (options.volumetrics) return *options.volumetrics;
-    if (world && world->sceneVolumetrics()) {
-        switch (*world->sceneVolumetrics()) {
-            case content::SceneVolumetricsMode::Off:
-                return render::VolumetricsMode::Off;
-            case content::SceneVolumetricsMode::Volumes:
-                return render::VolumetricsMode::Volumes;
-            case content::SceneVolumetricsMode::Froxels:
-                return render::VolumetricsMode::Froxels;
-            case content::SceneVolumetricsMode::Reference:
-                return render::VolumetricsMode::Reference;
-        }
-    }
-    if (world && lightsInMedium(*world) >= kFroxelsFromLights) {
-        return render::VolumetricsMode::Froxels;
-    }
-    return render::VolumetricsMode::Volumes;
-}
-
-// --sky-occlusion, else the scene file's "sky_occlusion"; unset: the renderer's default, on in
-// frames with an atmosphere (the demo; other scenes' images stay as they were): render/README.md
-// "Sky occlusion".
-std::optional<render::SkyOcclusionMode> skyOcclusionFor(const ApplicationOptions& options,
-                                                        const SceneWorld* world) {
-    if (options.skyOcclusion) return *options.skyOcclusion;
-    if (world && world->sceneSkyOcclusion()) {
-        switch (*world->sceneSkyOcclusion()) {
-            case content::SceneSkyOcclusionMode::Off:
-                return render::SkyOcclusionMode::Off;
-            case content::SceneSkyOcclusionMode::On:
-                return render::SkyOcclusionMode::On;
-            case content::SceneSkyOcclusionMode::Reference:
-                return render::SkyOcclusionMode::Reference;
-        }
-    }
-    return std::nullopt;
-}
-
-// --ao, else the scene file's "ambient_occlusion" mode, else GTAO (render/README.md
-// "Ambient occlusion" gives the measurements behind the default).
-render::AoMode aoFor(const ApplicationOptions& options, const SceneWorld* world) {
-    if (options.ao) return *options.ao;
-    if (world && world->sceneAmbientOcclusion() && world->sceneAmbientOcclusion()->mode) {
-        switch (*world->sceneAmbientOcclusion()->mode) {
-            case content::SceneAoMode::Off:
-                return render::AoMode::Off;
-            case content::SceneAoMode::Gtao:
-                return render::AoMode::Gtao;
-            case content::SceneAoMode::Reference:
-                return render::AoMode::Reference;
-        }
-    }
-    return render::AoMode::Gtao;
 }
 
 }  // namespace
@@ -560,40 +423,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             if (options.captureCursor) s.window->setCursorCaptured(true);
         }
         s.context = std::make_unique<render::GpuContext>(gpuOptions);
-        render::RendererOptions rendererOptions;
-        rendererOptions.lightCulling = options.lightCulling;
-        rendererOptions.lightAssignment = options.lightAssignment;
-        rendererOptions.countLightPairs = options.countLightPairs;
-        rendererOptions.ibl = options.ibl;
-        rendererOptions.brdf = brdfFor(options, world.get());
-        rendererOptions.areaLights = options.areaLights;
-        rendererOptions.hairSelfShadow = options.hairSelfShadow;
-        rendererOptions.aa = antiAliasingFor(options, world.get());
-        rendererOptions.msaaSamples = options.msaa                  ? *options.msaa
-                                      : world && world->sceneMsaa() ? *world->sceneMsaa()
-                                                                    : 1u;
-        rendererOptions.bloomStrength = options.bloom ? *options.bloom
-                                        : world && world->sceneBloom()
-                                            ? *world->sceneBloom()
-                                            : ApplicationOptions::kDefaultBloom;
-        const bool sceneAuto = world && world->sceneExposure() == content::SceneExposure::Auto;
-        rendererOptions.exposure = options.exposure ? *options.exposure
-                                   : sceneAuto      ? render::ExposureMode::Auto
-                                                    : render::ExposureMode::Manual;
-        rendererOptions.autoExposure.compensation =
-            options.exposureCompensation                  ? *options.exposureCompensation
-            : world && world->sceneExposureCompensation() ? *world->sceneExposureCompensation()
-                                                          : 0.0f;
-        rendererOptions.ao = aoFor(options, world.get());
-        rendererOptions.ssr = ssrFor(options, world.get());
-        if (auto mode = skyOcclusionFor(options, world.get())) {
-            rendererOptions.skyOcclusion = *mode;
-        } else {
-            rendererOptions.skyOcclusionWithAtmosphere = true;
-        }
-        rendererOptions.volumetrics = volumetricsFor(options, world.get());
-        rendererOptions.scattering = scatteringFor(options, world.get());
-        rendererOptions.scatteringSettings = options.scatteringSettings;
+        const render::RendererOptions rendererOptions = rendererOptionsFor(options, world.get());
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);

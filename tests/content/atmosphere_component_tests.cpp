@@ -43,14 +43,8 @@ TEST(AtmosphereComponent, EveryFieldRoundTripsThroughASceneFile) {
     a.timeOfDay = 17.25f;
     SceneDocument scene;
     scene.entities.emplace_back().atmosphere = a;
-    std::string error;
-    const std::string text = sceneToJson(scene, error);
-    ASSERT_EQ(error, "");
-    Diagnostics diagnostics;
-    auto loaded = parse(text, diagnostics);
-    ASSERT_TRUE(loaded) << diagnostics.toString();
-    EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
-    ASSERT_TRUE(loaded->entities.at(0).atmosphere);
+    auto loaded = testing::savedAndLoaded(scene, "sky.scene.json");
+    ASSERT_TRUE(loaded && loaded->entities.at(0).atmosphere);
     EXPECT_EQ(*loaded->entities[0].atmosphere, a);
 }
 

@@ -30,14 +30,8 @@ TEST(FogComponent, EveryFieldRoundTripsThroughASceneFile) {
     fog.baseHeight = -1.5f;
     SceneDocument scene;
     scene.entities.emplace_back().fog = fog;
-    std::string error;
-    const std::string text = sceneToJson(scene, error);
-    ASSERT_EQ(error, "");
-    Diagnostics diagnostics;
-    auto loaded = parse(text, diagnostics);
-    ASSERT_TRUE(loaded) << diagnostics.toString();
-    EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
-    ASSERT_TRUE(loaded->entities.at(0).fog);
+    auto loaded = testing::savedAndLoaded(scene, "fog.scene.json");
+    ASSERT_TRUE(loaded && loaded->entities.at(0).fog);
     EXPECT_EQ(*loaded->entities[0].fog, fog);
 }
 

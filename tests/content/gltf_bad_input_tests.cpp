@@ -77,6 +77,31 @@ TEST(GltfBadInput, OutOfRangeIndexSkipsOnlyThatPrimitive) {
         << diagnostics.toString();
 }
 
+// Lines read their indices as triangles do: an index past the positions skips the wire alone,
+// and the message names what was skipped.
+TEST(GltfBadInput, OutOfRangeLineIndexSkipsOnlyThatWire) {
+    json doc = quadDocument();
+    doc["materials"] = json::array({{{"name", "cable"}, {"extras", {{"wireRadius", 0.02}}}}});
+    testing::BinaryBuffer buffer;
+    buffer.append(std::vector<std::uint16_t>{0, 1, 2, 9});
+    doc["buffers"].push_back({{"byteLength", buffer.bytes.size()}, {"uri", buffer.dataUri()}});
+    doc["bufferViews"].push_back({{"buffer", 1}, {"byteLength", 8}});
+    doc["accessors"].push_back(
+        {{"bufferView", 3}, {"componentType", 5123}, {"count", 4}, {"type", "SCALAR"}});
+    const json lines = {{"attributes", {{"POSITION", 0}}}, {"mode", 1}, {"material", 0}};
+    doc["meshes"][0]["primitives"].push_back(lines);
+    doc["meshes"][0]["primitives"].push_back(lines);
+    doc["meshes"][0]["primitives"][2]["indices"] = 3;
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics);
+    ASSERT_TRUE(m);
+    EXPECT_EQ(m->meshes[0].wires.size(), 1u) << diagnostics.toString();
+    EXPECT_TRUE(
+        diagnostics.mentions("broken.gltf: meshes[0].primitives[2]: error: index 9 at "
+                             "position 3 is not below the vertex count 4; wire skipped"))
+        << diagnostics.toString();
+}
+
 TEST(GltfBadInput, AccessorsOverrunningTheirBufferAreRejected) {
     struct Case {
         const char* what;

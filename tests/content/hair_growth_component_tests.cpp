@@ -13,10 +13,6 @@
 namespace candela::content {
 namespace {
 
-std::optional<SceneDocument> parse(const std::string& text, Diagnostics& diagnostics) {
-    return testing::parseScene(text, "fur.scene.json", diagnostics);
-}
-
 std::string sceneWithHair(const std::string& hairJson, bool mesh = true) {
     return testing::sceneWithComponent("hair", hairJson,
                                        mesh ? R"("mesh": {"gltf": "cat.gltf", "mesh": 0}, )" : "");
@@ -38,14 +34,8 @@ TEST(HairGrowthComponent, EveryFieldRoundTripsThroughASceneFile) {
     SceneEntity& entity = scene.entities.emplace_back();
     entity.mesh = MeshReference{"cat.gltf", 0, ""};
     entity.hair = hair;
-    std::string error;
-    const std::string text = sceneToJson(scene, error);
-    ASSERT_EQ(error, "");
-    Diagnostics diagnostics;
-    auto loaded = parse(text, diagnostics);
-    ASSERT_TRUE(loaded) << diagnostics.toString();
-    EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
-    ASSERT_TRUE(loaded->entities.at(0).hair);
+    auto loaded = testing::savedAndLoaded(scene, "fur.scene.json");
+    ASSERT_TRUE(loaded && loaded->entities.at(0).hair);
     EXPECT_EQ(*loaded->entities[0].hair, hair);
 }
 

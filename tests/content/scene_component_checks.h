@@ -1,7 +1,7 @@
 #pragma once
 // What the scene-file tests of single components share: a scene of one entity holding the
-// component as JSON, and the check that a bad one is left out of the loaded scene with an
-// error naming the file, the element and what is wrong.
+// component as JSON, a scene saved and loaded again, and the check that a bad one is left out
+// of the loaded scene with an error naming the file, the element and what is wrong.
 #include <gtest/gtest.h>
 
 #include <initializer_list>
@@ -15,6 +15,20 @@ namespace candela::content::testing {
 inline std::optional<SceneDocument> parseScene(const std::string& text, const char* fileName,
                                                Diagnostics& diagnostics) {
     return parseSceneJson(std::as_bytes(std::span(text)), fileName, diagnostics);
+}
+
+// `scene` written as JSON and read back as `fileName`, failing the test on any error or
+// message on the way.
+inline std::optional<SceneDocument> savedAndLoaded(const SceneDocument& scene,
+                                                   const char* fileName) {
+    std::string error;
+    const std::string text = sceneToJson(scene, error);
+    EXPECT_EQ(error, "");
+    Diagnostics diagnostics;
+    auto loaded = parseScene(text, fileName, diagnostics);
+    EXPECT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
+    return loaded;
 }
 
 // {"entities": [{"name": "air", <otherFields>"<key>": <json>}]}; otherFields ends in ", ".

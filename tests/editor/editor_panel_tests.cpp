@@ -74,6 +74,12 @@ protected:
     ImVec2 row(const std::string& name) {
         return rows.at(scene->idOf(scene->findByName(name))).center();
     }
+    // Clicks the entity's row; after the frame that follows, the inspector shows it.
+    void select(const std::string& name) {
+        frame(row(name), true);
+        frame(row(name), false);
+        frame(ImVec2(-1, -1), false);
+    }
 
     ecs::Registry registry;
     content::AssetCache cache;
@@ -104,9 +110,7 @@ TEST_F(EditorPanels, ClickSelectsAndDragOntoAnotherRowReparents) {
 }
 
 TEST_F(EditorPanels, DraggingTheLumensFieldIsOneLiveUndoStep) {
-    frame(row("lamp"), true);
-    frame(row("lamp"), false);
-    frame(ImVec2(-1, -1), false);  // the inspector now shows the lamp
+    select("lamp");  // the inspector now shows the lamp
     ASSERT_TRUE(inspectorLayout.count("Set Lumens"));
     const ImVec2 field = inspectorLayout.at("Set Lumens").center();
     const ecs::Entity lamp = scene->findByName("lamp");
@@ -126,9 +130,7 @@ TEST_F(EditorPanels, DraggingTheLumensFieldIsOneLiveUndoStep) {
 // editor saved lumens -1, which the loader then dropped with the light. The inspector applies
 // the loader's rules: -1 is refused (no edit, a notice), 3e38 is clamped to the limit.
 TEST_F(EditorPanels, TypedValuesTheLoaderWouldRejectAreRefusedAndAbsurdOnesClamped) {
-    frame(row("lamp"), true);
-    frame(row("lamp"), false);
-    frame(ImVec2(-1, -1), false);  // the inspector now shows the lamp
+    select("lamp");  // the inspector now shows the lamp
     ASSERT_TRUE(inspectorLayout.count("Set Lumens"));
     const ImVec2 field = inspectorLayout.at("Set Lumens").center();
     const ecs::Entity lamp = scene->findByName("lamp");
@@ -165,9 +167,7 @@ TEST_F(EditorPanels, RectLightTextureFieldSetsTheImageAndRefusesUnreadableFiles)
     ASSERT_EQ(content::writePng(png, 2, 2, 3, pixels), "");
     const ecs::Entity lamp = scene->findByName("lamp");
     registry.get<content::Light>(lamp).type = content::LightType::Rect;
-    frame(row("lamp"), true);
-    frame(row("lamp"), false);
-    frame(ImVec2(-1, -1), false);  // the inspector now shows the rect
+    select("lamp");  // the inspector now shows the rect
     ASSERT_TRUE(inspectorLayout.count("Set Light Texture"));
     const ImVec2 field = inspectorLayout.at("Set Light Texture").center();
     ImGuiIO& io = ImGui::GetIO();
@@ -211,9 +211,7 @@ TEST_F(EditorPanels, AnimationSectionPausesAndScrubsThePlayer) {
     content::AnimationPlayer& player = registry.emplace<content::AnimationPlayer>(floor);
     player.model = &model;
     player.play(0);
-    frame(row("floor"), true);
-    frame(row("floor"), false);
-    frame(ImVec2(-1, -1), false);  // the inspector now shows the floor
+    select("floor");  // the inspector now shows the floor
     ASSERT_TRUE(inspectorLayout.count("Animation play"));
     ASSERT_TRUE(inspectorLayout.count("Animation time"));
     ASSERT_TRUE(inspectorLayout.count("Animation clip"));

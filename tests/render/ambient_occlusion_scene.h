@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "box_ray.h"
 #include "candela/render/environment.h"
 #include "test_scene.h"
 
@@ -174,22 +175,9 @@ private:
         return true;
     }
 
-    // Slab test: whether the segment from `origin` along `dir` (t in (0, tMax)) meets the box.
+    // Whether the segment from `origin` along `dir` (t in (0, tMax)) meets the box.
     static bool hitsBox(const glm::vec3& origin, const glm::vec3& dir, float tMax) {
-        float t0 = 1e-5f, t1 = tMax;
-        for (int a = 0; a < 3; ++a) {
-            if (std::abs(dir[a]) < 1e-12f) {
-                if (origin[a] < kBoxMin[a] || origin[a] > kBoxMax[a]) return false;
-                continue;
-            }
-            float ta = (kBoxMin[a] - origin[a]) / dir[a];
-            float tb = (kBoxMax[a] - origin[a]) / dir[a];
-            if (ta > tb) std::swap(ta, tb);
-            t0 = std::max(t0, ta);
-            t1 = std::min(t1, tb);
-            if (t0 > t1) return false;
-        }
-        return true;
+        return rayHitsBox(origin, dir, Box{kBoxMin, kBoxMax}, 1e-5f, tMax);
     }
 
     bool boxHidesPixel(const glm::vec3& floorPoint) const {

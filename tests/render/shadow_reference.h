@@ -7,28 +7,13 @@
 #include <glm/glm.hpp>
 #include <span>
 
-namespace candela::render::test {
+#include "box_ray.h"
 
-struct Box {
-    glm::vec3 lo, hi;
-};
+namespace candela::render::test {
 
 // Whether the segment a + t (b - a), t in (1e-4, 1), passes through the box.
 inline bool segmentHitsBox(const glm::vec3& a, const glm::vec3& b, const Box& box) {
-    float t0 = 1e-4f, t1 = 1.0f;
-    const glm::vec3 d = b - a;
-    for (int i = 0; i < 3; ++i) {
-        if (std::abs(d[i]) < 1e-12f) {
-            if (a[i] < box.lo[i] || a[i] > box.hi[i]) return false;
-            continue;
-        }
-        float u = (box.lo[i] - a[i]) / d[i], v = (box.hi[i] - a[i]) / d[i];
-        if (u > v) std::swap(u, v);
-        t0 = std::max(t0, u);
-        t1 = std::min(t1, v);
-        if (t0 > t1) return false;
-    }
-    return true;
+    return rayHitsBox(a, b - a, box, 1e-4f, 1.0f);
 }
 
 inline bool segmentHitsAny(const glm::vec3& a, const glm::vec3& b, std::span<const Box> boxes) {

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "box_ray.h"
 #include "candela/render/environment.h"
 #include "test_scene.h"
 
@@ -23,9 +24,7 @@ struct SkyRoomError {
 
 class SkyRoom {
 public:
-    struct Box {
-        glm::vec3 lo, hi;
-    };
+    using Box = test::Box;
     static constexpr float kInner = 2.0f;     // the room's floor spans [-2, 2]^2
     static constexpr float kWall = 0.2f;      // wall and roof thickness
     static constexpr float kHeight = 2.5f;    // the roof's underside
@@ -81,10 +80,7 @@ public:
                 const double r = std::sqrt(u), phi = 2.0 * std::numbers::pi * v;
                 const glm::vec3 d(float(r * std::cos(phi)), float(std::sqrt(1.0 - u)),
                                   float(r * std::sin(phi)));
-                bool blocked = false;
-                for (const Box& b : boxes_)
-                    blocked = blocked || hits(b, p + glm::vec3(0, 1e-4f, 0), d);
-                open += blocked ? 0 : 1;
+                open += blocked(p, d) ? 0 : 1;
             }
         }
         return double(open) / double(n * n);
@@ -122,7 +118,7 @@ public:
     bool blocked(const glm::vec3& p, const glm::vec3& d, float margin = 0.0f) const {
         for (const Box& b : boxes_) {
             const Box grown{b.lo - glm::vec3(margin), b.hi + glm::vec3(margin)};
-            if (hits(grown, p + glm::vec3(0, 1e-4f, 0), d)) return true;
+            if (rayHitsBox(p + glm::vec3(0, 1e-4f, 0), d, grown, 0.0f, 1e30f)) return true;
         }
         return false;
     }
@@ -130,22 +126,6 @@ public:
     const TestScene& scene() const { return scene_; }
 
 private:
-    static bool hits(const Box& b, const glm::vec3& o, const glm::vec3& d) {
-        float t0 = 0.0f, t1 = 1e30f;
-        for (int a = 0; a < 3; ++a) {
-            if (std::abs(d[a]) < 1e-12f) {
-                if (o[a] < b.lo[a] || o[a] > b.hi[a]) return false;
-                continue;
-            }
-            float ta = (b.lo[a] - o[a]) / d[a], tb = (b.hi[a] - o[a]) / d[a];
-            if (ta > tb) std::swap(ta, tb);
-            t0 = std::max(t0, ta);
-            t1 = std::min(t1, tb);
-            if (t0 > t1) return false;
-        }
-        return true;
-    }
-
     GpuContext& context_;
     TestScene scene_;
     std::vector<Box> boxes_;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "box_ray.h"
 #include "test_scene.h"
 
 namespace candela::render::test {
@@ -69,22 +70,9 @@ public:
         return t;
     }
 
-    // Slab test: the nearest t > 0 at which the ray meets the box.
+    // The nearest t > 0 at which the ray meets the box.
     static std::optional<float> hitBox(const glm::vec3& origin, const glm::vec3& dir) {
-        float t0 = 1e-5f, t1 = 1e30f;
-        for (int a = 0; a < 3; ++a) {
-            if (std::abs(dir[a]) < 1e-12f) {
-                if (origin[a] < kBoxMin[a] || origin[a] > kBoxMax[a]) return std::nullopt;
-                continue;
-            }
-            float ta = (kBoxMin[a] - origin[a]) / dir[a];
-            float tb = (kBoxMax[a] - origin[a]) / dir[a];
-            if (ta > tb) std::swap(ta, tb);
-            t0 = std::max(t0, ta);
-            t1 = std::min(t1, tb);
-            if (t0 > t1) return std::nullopt;
-        }
-        return t0;
+        return rayBoxEntry(origin, dir, Box{kBoxMin, kBoxMax}, 1e-5f, 1e30f);
     }
 
 private:

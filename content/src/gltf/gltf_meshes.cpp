@@ -112,6 +112,46 @@ std::uint32_t tangentUvSet(const Context& context, std::int32_t material) {
     return normal.present() ? normal.texCoord : 0;
 }
 
+// A primitive's vertex indices: its index accessor's, each checked below `vertexCount`, or
+// 0 to vertexCount - 1 without one. Unset after an error naming `what` ("primitive", "wire",
+// "hair") as skipped.
+std::optional<std::vector<std::uint32_t>> readVertexIndices(Context& context,
+                                                            const tinygltf::Primitive& source,
+                                                            const std::string& element,
+                                                            const std::string& what,
+                                                            std::uint64_t vertexCount) {
+    std::vector<std::uint32_t> indices;
+    if (source.indices >= 0 || source.indices < -1) {
+        const GltfLoadOptions& options = context.options;
+        std::uint64_t indexCount = 0;
+        std::string error = accessorCount(context.document, source.indices, indexCount);
+        if (error.empty() && indexCount > options.maxIndicesPerPrimitive) {
+            error = std::to_string(indexCount) + " indices exceed the limit";
+        }
+        if (error.empty()) {
+            error = readIndices(context.document, source.indices, indices,
+                                AccessorLimits{options.maxElementsWithoutBufferView});
+        }
+        if (!error.empty()) {
+            context.error(element, "indices: " + error + "; " + what + " skipped");
+            return std::nullopt;
+        }
+        for (std::size_t i = 0; i < indices.size(); ++i) {
+            if (indices[i] >= vertexCount) {
+                context.error(element, "index " + std::to_string(indices[i]) + " at position " +
+                                           std::to_string(i) + " is not below the vertex count " +
+                                           std::to_string(vertexCount) + "; " + what + " skipped");
+                return std::nullopt;
+            }
+        }
+    } else {
+        indices.resize(vertexCount);
+        for (std::uint32_t i = 0; i < vertexCount; ++i)
+            indices[i] = i;
+    }
+    return indices;
+}
+
 std::optional<Primitive> convertPrimitive(Context& context, const tinygltf::Primitive& source,
                                           const std::string& element) {
     const GltfLoadOptions& options = context.options;
@@ -152,32 +192,10 @@ std::optional<Primitive> convertPrimitive(Context& context, const tinygltf::Prim
     Primitive primitive;
     primitive.positions = packed<3>(flat);
 
-    std::vector<std::uint32_t> indices;
-    if (source.indices >= 0 || source.indices < -1) {
-        std::uint64_t indexCount = 0;
-        std::string error = accessorCount(context.document, source.indices, indexCount);
-        if (error.empty() && indexCount > options.maxIndicesPerPrimitive) {
-            error = std::to_string(indexCount) + " indices exceed the limit";
-        }
-        if (error.empty()) error = readIndices(context.document, source.indices, indices, limits);
-        if (!error.empty()) {
-            context.error(element, "indices: " + error + "; primitive skipped");
-            return std::nullopt;
-        }
-        for (std::size_t i = 0; i < indices.size(); ++i) {
-            if (indices[i] >= vertexCount) {
-                context.error(element, "index " + std::to_string(indices[i]) + " at position " +
-                                           std::to_string(i) + " is not below the vertex count " +
-                                           std::to_string(vertexCount) + "; primitive skipped");
-                return std::nullopt;
-            }
-        }
-    } else {
-        indices.resize(vertexCount);
-        for (std::uint32_t i = 0; i < vertexCount; ++i)
-            indices[i] = i;
-    }
-    primitive.indices = toTriangleList(indices, source.mode);
+    std::optional<std::vector<std::uint32_t>> indices =
+        readVertexIndices(context, source, element, "primitive", vertexCount);
+    if (!indices) return std::nullopt;
+    primitive.indices = toTriangleList(*indices, source.mode);
     if (primitive.indices.size() % 3 != 0) {
         context.warning(element, std::to_string(primitive.indices.size() % 3) +
                                      " trailing indices do not form a triangle; dropped");
@@ -270,33 +288,10 @@ std::optional<LinePrimitive> readLines(Context& context, const tinygltf::Primiti
     }
     LinePrimitive lines;
     lines.positions = packed<3>(flat);
-    std::vector<std::uint32_t> indices;
-    if (source.indices >= 0 || source.indices < -1) {
-        std::uint64_t indexCount = 0;
-        std::string error = accessorCount(context.document, source.indices, indexCount);
-        if (error.empty() && indexCount > options.maxIndicesPerPrimitive) {
-            error = std::to_string(indexCount) + " indices exceed the limit";
-        }
-        if (error.empty()) error = readIndices(context.document, source.indices, indices, limits);
-        if (!error.empty()) {
-            context.error(element, "indices: " + error + "; " + what + " skipped");
-            return std::nullopt;
-        }
-        for (std::size_t i = 0; i < indices.size(); ++i) {
-            if (indices[i] >= lines.positions.size()) {
-                context.error(element, "index " + std::to_string(indices[i]) + " at position " +
-                                           std::to_string(i) + " is not below the vertex count " +
-                                           std::to_string(lines.positions.size()) + "; " + what +
-                                           " skipped");
-                return std::nullopt;
-            }
-        }
-    } else {
-        indices.resize(lines.positions.size());
-        for (std::uint32_t i = 0; i < indices.size(); ++i)
-            indices[i] = i;
-    }
-    lines.segments = toSegments(indices, source.mode);
+    std::optional<std::vector<std::uint32_t>> indices =
+        readVertexIndices(context, source, element, what, lines.positions.size());
+    if (!indices) return std::nullopt;
+    lines.segments = toSegments(*indices, source.mode);
     lines.segments.resize(lines.segments.size() / 2 * 2);
     if (lines.segments.empty()) {
         context.warning(element, "has no line segment; " + what + " skipped");

@@ -10,6 +10,7 @@
 #include "candela/content/components/name.h"
 #include "candela/content/light_texture.h"
 #include "candela/content/model_instantiation.h"
+#include "local_transform.h"
 #include "scene_animation.h"
 
 #include <algorithm>
@@ -17,14 +18,6 @@
 
 namespace candela::content {
 namespace {
-
-ecs::LocalTransform toEcs(const Transform& t) {
-    ecs::LocalTransform local;
-    local.position = {t.translation[0], t.translation[1], t.translation[2]};
-    local.rotation = {t.rotation[0], t.rotation[1], t.rotation[2], t.rotation[3]};
-    local.scale = {t.scale[0], t.scale[1], t.scale[2]};
-    return local;
-}
 
 Transform fromEcs(const ecs::LocalTransform& local) {
     Transform t;
@@ -38,7 +31,7 @@ ecs::Entity createWithTransform(ecs::Registry& registry, const std::string& name
                                 const Transform& transform) {
     const ecs::Entity e = registry.create();
     registry.emplace<Name>(e, Name{name});
-    registry.emplace<ecs::LocalTransform>(e, toEcs(transform));
+    registry.emplace<ecs::LocalTransform>(e, toLocalTransform(transform));
     registry.emplace<ecs::WorldTransform>(e);
     return e;
 }

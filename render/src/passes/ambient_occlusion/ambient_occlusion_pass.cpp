@@ -35,6 +35,31 @@ uint32_t groups(uint32_t pixels) {
     return (pixels + 7) / 8;
 }
 
+// GTAO and the reference read depth and normals and write the occlusion and the specular
+// lobe's visibility through the same bindings; only the pipeline and the push differ.
+void recordOcclusion(VkCommandBuffer cmd, const Pipeline& pipeline, VkSampler pointSampler,
+                     const AmbientOcclusionPass::Inputs& in, const Push& push,
+                     const ImageRef& occlusion, const ImageRef& specular) {
+    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorImageInfo depth{pointSampler, in.depth.view(),
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo normal{pointSampler, in.normalRoughMetal.view(),
+                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo output{VK_NULL_HANDLE, occlusion.view(), VK_IMAGE_LAYOUT_GENERAL};
+    VkDescriptorImageInfo second{VK_NULL_HANDLE, specular.view(), VK_IMAGE_LAYOUT_GENERAL};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        sampledImageWrite(AO_BINDING_DEPTH, &depth),
+        sampledImageWrite(AO_BINDING_NORMAL, &normal),
+        storageImageWrite(AO_BINDING_OUTPUT, &output),
+        storageImageWrite(AO_BINDING_SECOND_OUTPUT, &second),
+    };
+    pipeline.bind(cmd);
+    pipeline.pushDescriptors(cmd, writes);
+    pipeline.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDispatch(cmd, groups(occlusion.desc().width), groups(occlusion.desc().height), 1);
+}
+
 }  // namespace
 
 AmbientOcclusionPass::AmbientOcclusionPass(GpuContext& context)
@@ -114,27 +139,10 @@ glm::vec2 AmbientOcclusionPass::frameRotation(uint32_t frame) {
 
 void AmbientOcclusionPass::recordGtao(VkCommandBuffer cmd, const Inputs& in, const ImageRef& noisy,
                                       const ImageRef& specular) const {
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
-                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorImageInfo normal{pointSampler_.handle(), in.normalRoughMetal.view(),
-                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorImageInfo output{VK_NULL_HANDLE, noisy.view(), VK_IMAGE_LAYOUT_GENERAL};
-    VkDescriptorImageInfo second{VK_NULL_HANDLE, specular.view(), VK_IMAGE_LAYOUT_GENERAL};
-    const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
-        sampledImageWrite(AO_BINDING_DEPTH, &depth),
-        sampledImageWrite(AO_BINDING_NORMAL, &normal),
-        storageImageWrite(AO_BINDING_OUTPUT, &output),
-        storageImageWrite(AO_BINDING_SECOND_OUTPUT, &second),
-    };
     const uint32_t specularSlice = in.settings.specular == AoSpecular::HorizonSlice ? 1u : 0u;
     const Push push{in.settings.radius, in.settings.slices, in.settings.steps, 0.0f,
                     in.frameRotation,   specularSlice};
-    gtao_.bind(cmd);
-    gtao_.pushDescriptors(cmd, writes);
-    gtao_.pushConstants(cmd, &push, sizeof(push));
-    vkCmdDispatch(cmd, groups(noisy.desc().width), groups(noisy.desc().height), 1);
+    recordOcclusion(cmd, gtao_, pointSampler_.handle(), in, push, noisy, specular);
 }
 
 void AmbientOcclusionPass::recordDenoise(VkCommandBuffer cmd, const Inputs& in,
@@ -195,30 +203,13 @@ void AmbientOcclusionPass::recordTemporal(VkCommandBuffer cmd, const Inputs& in,
 void AmbientOcclusionPass::recordReference(VkCommandBuffer cmd, const Inputs& in,
                                            const ImageRef& occlusion,
                                            const ImageRef& specular) const {
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
-                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorImageInfo normal{pointSampler_.handle(), in.normalRoughMetal.view(),
-                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkDescriptorImageInfo output{VK_NULL_HANDLE, occlusion.view(), VK_IMAGE_LAYOUT_GENERAL};
-    VkDescriptorImageInfo second{VK_NULL_HANDLE, specular.view(), VK_IMAGE_LAYOUT_GENERAL};
-    const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
-        sampledImageWrite(AO_BINDING_DEPTH, &depth),
-        sampledImageWrite(AO_BINDING_NORMAL, &normal),
-        storageImageWrite(AO_BINDING_OUTPUT, &output),
-        storageImageWrite(AO_BINDING_SECOND_OUTPUT, &second),
-    };
     const Push push{in.settings.radius,
                     in.settings.referenceRays,
                     in.settings.referenceSteps,
                     in.settings.referenceThickness,
                     glm::vec2(0.0f),
                     0u};
-    reference_.bind(cmd);
-    reference_.pushDescriptors(cmd, writes);
-    reference_.pushConstants(cmd, &push, sizeof(push));
-    vkCmdDispatch(cmd, groups(occlusion.desc().width), groups(occlusion.desc().height), 1);
+    recordOcclusion(cmd, reference_, pointSampler_.handle(), in, push, occlusion, specular);
 }
 
 }  // namespace candela::render

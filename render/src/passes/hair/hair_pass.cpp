@@ -228,15 +228,21 @@ VkRenderingAttachmentInfo depthAttachment(const ImageRef& depth, bool write) {
     return info;
 }
 
+// Rendering against the scene's depth alone, over the whole target: read (the fill tests its
+// fragments against it) or written (the depth pass).
+void beginDepthRendering(VkCommandBuffer cmd, const ImageRef& depth, bool write) {
+    const VkRenderingAttachmentInfo attachment = depthAttachment(depth, write);
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {depth.desc().width, depth.desc().height}};
+    rendering.layerCount = 1;
+    rendering.pDepthAttachment = &attachment;
+    vkCmdBeginRendering(cmd, &rendering);
+}
+
 }  // namespace
 
 void HairPass::recordFill(VkCommandBuffer cmd, const Inputs& in) const {
-    const VkRenderingAttachmentInfo depth = depthAttachment(in.depth, false);
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {in.depth.desc().width, in.depth.desc().height}};
-    rendering.layerCount = 1;
-    rendering.pDepthAttachment = &depth;
-    vkCmdBeginRendering(cmd, &rendering);
+    beginDepthRendering(cmd, in.depth, false);
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
@@ -302,12 +308,7 @@ void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
 }
 
 void HairPass::recordDepth(VkCommandBuffer cmd, const Inputs& in) const {
-    const VkRenderingAttachmentInfo depth = depthAttachment(in.depth, true);
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {in.depth.desc().width, in.depth.desc().height}};
-    rendering.layerCount = 1;
-    rendering.pDepthAttachment = &depth;
-    vkCmdBeginRendering(cmd, &rendering);
+    beginDepthRendering(cmd, in.depth, true);
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};

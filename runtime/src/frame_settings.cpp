@@ -1,0 +1,168 @@
+#include "frame_settings.h"
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <utility>
+
+#include "candela/content/components/light.h"
+
+namespace candela::runtime {
+
+namespace {
+
+// A scene file's name for a choice and the renderer's, one row per scene-file value.
+template <typename Scene, typename Render, std::size_t N>
+using EnumMapping = std::array<std::pair<Scene, Render>, N>;
+
+// Every row's scene value is the enumerator at its index, so a table lists each value once.
+template <typename Scene, typename Render, std::size_t N>
+constexpr bool inDeclarationOrder(const EnumMapping<Scene, Render, N>& table) {
+    for (std::size_t i = 0; i < N; ++i) {
+        if (table[i].first != static_cast<Scene>(i)) return false;
+    }
+    return true;
+}
+
+// The flag if given, else the scene's value mapped to the renderer's, else unset (a value
+// missing from the table counts as unset, as a switch without its case did).
+template <typename Scene, typename Render, std::size_t N>
+std::optional<Render> chosen(const std::optional<Render>& flag, const std::optional<Scene>& scene,
+                             const EnumMapping<Scene, Render, N>& table) {
+    if (flag) return flag;
+    if (!scene) return std::nullopt;
+    for (const auto& [sceneValue, renderValue] : table) {
+        if (sceneValue == *scene) return renderValue;
+    }
+    return std::nullopt;
+}
+
+// A scene world's optional setting, unset when there is no world.
+template <typename Value>
+std::optional<Value> sceneSetting(const SceneWorld* world,
+                                  std::optional<Value> (SceneWorld::*setting)() const) {
+    return world ? (world->*setting)() : std::nullopt;
+}
+
+constexpr EnumMapping<content::SceneBrdf, render::BrdfModel, 2> kBrdf{{
+    {content::SceneBrdf::Ue4, render::BrdfModel::Ue4},
+    {content::SceneBrdf::EnergyConserving, render::BrdfModel::EnergyConserving},
+}};
+constexpr EnumMapping<content::SceneAntiAliasing, render::AntiAliasing, 3> kAntiAliasing{{
+    {content::SceneAntiAliasing::Off, render::AntiAliasing::Off},
+    {content::SceneAntiAliasing::Fxaa, render::AntiAliasing::Fxaa},
+    {content::SceneAntiAliasing::Taa, render::AntiAliasing::Taa},
+}};
+constexpr EnumMapping<content::SceneExposure, render::ExposureMode, 2> kExposure{{
+    {content::SceneExposure::Manual, render::ExposureMode::Manual},
+    {content::SceneExposure::Auto, render::ExposureMode::Auto},
+}};
+constexpr EnumMapping<content::SceneAoMode, render::AoMode, 3> kAo{{
+    {content::SceneAoMode::Off, render::AoMode::Off},
+    {content::SceneAoMode::Gtao, render::AoMode::Gtao},
+    {content::SceneAoMode::Reference, render::AoMode::Reference},
+}};
+constexpr EnumMapping<content::SceneSsrMode, render::SsrMode, 3> kSsr{{
+    {content::SceneSsrMode::Off, render::SsrMode::Off},
+    {content::SceneSsrMode::Hiz, render::SsrMode::Hiz},
+    {content::SceneSsrMode::Reference, render::SsrMode::Reference},
+}};
+constexpr EnumMapping<content::SceneSkyOcclusionMode, render::SkyOcclusionMode, 3> kSkyOcclusion{{
+    {content::SceneSkyOcclusionMode::Off, render::SkyOcclusionMode::Off},
+    {content::SceneSkyOcclusionMode::On, render::SkyOcclusionMode::On},
+    {content::SceneSkyOcclusionMode::Reference, render::SkyOcclusionMode::Reference},
+}};
+constexpr EnumMapping<content::SceneVolumetricsMode, render::VolumetricsMode, 4> kVolumetrics{{
+    {content::SceneVolumetricsMode::Off, render::VolumetricsMode::Off},
+    {content::SceneVolumetricsMode::Volumes, render::VolumetricsMode::Volumes},
+    {content::SceneVolumetricsMode::Froxels, render::VolumetricsMode::Froxels},
+    {content::SceneVolumetricsMode::Reference, render::VolumetricsMode::Reference},
+}};
+constexpr EnumMapping<content::SceneScatteringMode, render::ScatteringMode, 3> kScattering{{
+    {content::SceneScatteringMode::Off, render::ScatteringMode::Off},
+    {content::SceneScatteringMode::Epipolar, render::ScatteringMode::Epipolar},
+    {content::SceneScatteringMode::BruteForce, render::ScatteringMode::BruteForce},
+}};
+static_assert(inDeclarationOrder(kBrdf) && inDeclarationOrder(kAntiAliasing) &&
+              inDeclarationOrder(kExposure) && inDeclarationOrder(kAo) &&
+              inDeclarationOrder(kSsr) && inDeclarationOrder(kSkyOcclusion) &&
+              inDeclarationOrder(kVolumetrics) && inDeclarationOrder(kScattering));
+
+// The count of lights lighting the medium from which froxels are the default: the smallest
+// count measured at which they cost less than the per-light volumes (docs/speed-vs-error.md,
+// the volumetrics cross-over at 320x180: 1 light 19.1 ms against 23.4, 16 lights 66.3 against
+// 34.7, 4,096 lights 540 against 357).
+constexpr std::size_t kFroxelsFromLights = 16;
+
+// The scene's lights that light a medium (volumetric scale above zero).
+std::size_t lightsInMedium(const SceneWorld& world) {
+    std::size_t count = 0;
+    world.registry.view<const content::Light>().each(
+        [&](ecs::Entity, const content::Light& light) { count += light.volumetric > 0.0f; });
+    return count;
+}
+
+}  // namespace
+
+render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
+                                           const SceneWorld* world) {
+    render::RendererOptions r;
+    r.lightCulling = options.lightCulling;
+    r.lightAssignment = options.lightAssignment;
+    r.countLightPairs = options.countLightPairs;
+    r.ibl = options.ibl;
+    r.areaLights = options.areaLights;
+    r.hairSelfShadow = options.hairSelfShadow;
+    r.scatteringSettings = options.scatteringSettings;
+
+    // Default energy-conserving.
+    r.brdf = chosen(options.brdf, sceneSetting(world, &SceneWorld::sceneBrdf), kBrdf)
+                 .value_or(render::BrdfModel::EnergyConserving);
+    // Default TAA: it cut edge error the most for its cost (render/README.md "Antialiasing").
+    r.aa = chosen(options.aa, sceneSetting(world, &SceneWorld::sceneAntiAliasing), kAntiAliasing)
+               .value_or(render::AntiAliasing::Taa);
+    r.msaaSamples = options.msaa.value_or(sceneSetting(world, &SceneWorld::sceneMsaa).value_or(1u));
+    r.bloomStrength = options.bloom.value_or(
+        sceneSetting(world, &SceneWorld::sceneBloom).value_or(ApplicationOptions::kDefaultBloom));
+    r.exposure =
+        chosen(options.exposure, sceneSetting(world, &SceneWorld::sceneExposure), kExposure)
+            .value_or(render::ExposureMode::Manual);
+    r.autoExposure.compensation = options.exposureCompensation.value_or(
+        sceneSetting(world, &SceneWorld::sceneExposureCompensation).value_or(0.0f));
+    // The scene file's "ambient_occlusion" mode; default GTAO (render/README.md "Ambient
+    // occlusion" gives the measurements behind the default).
+    const auto sceneAo = world ? world->sceneAmbientOcclusion() : std::nullopt;
+    r.ao = chosen(options.ao, sceneAo ? sceneAo->mode : std::nullopt, kAo)
+               .value_or(render::AoMode::Gtao);
+    // Default hiz: the renderer declares no SSR pass in a frame without a surface under the
+    // roughness cut-off, so only frames with a glossy surface pay (render/README.md
+    // "Screen-space reflections").
+    r.ssr = chosen(options.ssr, sceneSetting(world, &SceneWorld::sceneSsr), kSsr)
+                .value_or(render::SsrMode::Hiz);
+    // Unset: the renderer's default, on in frames with an atmosphere (the demo; other scenes'
+    // images stay as they were): render/README.md "Sky occlusion".
+    if (auto mode = chosen(options.skyOcclusion,
+                           sceneSetting(world, &SceneWorld::sceneSkyOcclusion), kSkyOcclusion)) {
+        r.skyOcclusion = *mode;
+    } else {
+        r.skyOcclusionWithAtmosphere = true;
+    }
+    // Default by the scene's lights at start: per-light volumes below kFroxelsFromLights
+    // (cheaper there, and closer to the reference at every count), froxels from it
+    // (render/README.md "Volumetric lighting"). Either draws only in frames with a medium;
+    // `off` is only ever chosen explicitly.
+    r.volumetrics = chosen(options.volumetrics, sceneSetting(world, &SceneWorld::sceneVolumetrics),
+                           kVolumetrics)
+                        .value_or(world && lightsInMedium(*world) >= kFroxelsFromLights
+                                      ? render::VolumetricsMode::Froxels
+                                      : render::VolumetricsMode::Volumes);
+    // Default epipolar: it stays within 0.22 % of brute force at a 35th of the rays
+    // (render/README.md "Light shafts"); the passes draw only in frames whose scene has an
+    // atmosphere.
+    r.scattering =
+        chosen(options.scattering, sceneSetting(world, &SceneWorld::sceneScattering), kScattering)
+            .value_or(render::ScatteringMode::Epipolar);
+    return r;
+}
+
+}  // namespace candela::runtime

@@ -1,0 +1,107 @@
+// The renderer's named choices for a run: the flag wins, else the scene file's field (every
+// scene-file name reaches the renderer's matching mode), else the engine's default.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "candela/content/diagnostics.h"
+#include "frame_settings.h"
+
+using namespace candela;
+using namespace candela::runtime;
+
+namespace {
+
+// A world loaded from a scene file holding `settings` (top-level members) and no entities;
+// the file is named after the test, as ctest may run the tests at once.
+std::unique_ptr<SceneWorld> worldWith(const std::string& settings) {
+    const std::filesystem::path file =
+        std::filesystem::temp_directory_path() /
+        (std::string("candela_frame_settings_") +
+         ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".scene.json");
+    std::ofstream(file) << R"({"format": "candela.scene", "version": 1, )" << settings
+                        << R"(, "entities": []})";
+    auto world = std::make_unique<SceneWorld>();
+    content::Diagnostics diagnostics;
+    EXPECT_TRUE(world->loadSceneFile(file, diagnostics));
+    EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
+    std::filesystem::remove(file);
+    return world;
+}
+
+// Every scene-file setting, none at its default.
+constexpr const char* kEverySetting =
+    R"("brdf": "ue4", "aa": "fxaa", "msaa": 4, "bloom": 0.25, "exposure": "auto",
+       "exposure_compensation": -1.5, "ambient_occlusion": {"mode": "reference"},
+       "ssr": "reference", "sky_occlusion": "reference", "volumetrics": "froxels",
+       "scattering": "brute-force")";
+
+}  // namespace
+
+TEST(FrameSettings, WithoutFlagsOrSceneTheDefaultsHold) {
+    const render::RendererOptions r = rendererOptionsFor(ApplicationOptions{}, nullptr);
+    EXPECT_EQ(r.brdf, render::BrdfModel::EnergyConserving);
+    EXPECT_EQ(r.aa, render::AntiAliasing::Taa);
+    EXPECT_EQ(r.msaaSamples, 1u);
+    EXPECT_EQ(r.bloomStrength, ApplicationOptions::kDefaultBloom);
+    EXPECT_EQ(r.exposure, render::ExposureMode::Manual);
+    EXPECT_EQ(r.autoExposure.compensation, 0.0f);
+    EXPECT_EQ(r.ao, render::AoMode::Gtao);
+    EXPECT_EQ(r.ssr, render::SsrMode::Hiz);
+    EXPECT_TRUE(r.skyOcclusionWithAtmosphere);
+    EXPECT_EQ(r.volumetrics, render::VolumetricsMode::Volumes);
+    EXPECT_EQ(r.scattering, render::ScatteringMode::Epipolar);
+}
+
+TEST(FrameSettings, SceneFileFieldsReachTheRenderer) {
+    auto world = worldWith(kEverySetting);
+    const render::RendererOptions r = rendererOptionsFor(ApplicationOptions{}, world.get());
+    EXPECT_EQ(r.brdf, render::BrdfModel::Ue4);
+    EXPECT_EQ(r.aa, render::AntiAliasing::Fxaa);
+    EXPECT_EQ(r.msaaSamples, 4u);
+    EXPECT_EQ(r.bloomStrength, 0.25f);
+    EXPECT_EQ(r.exposure, render::ExposureMode::Auto);
+    EXPECT_EQ(r.autoExposure.compensation, -1.5f);
+    EXPECT_EQ(r.ao, render::AoMode::Reference);
+    EXPECT_EQ(r.ssr, render::SsrMode::Reference);
+    EXPECT_FALSE(r.skyOcclusionWithAtmosphere);
+    EXPECT_EQ(r.skyOcclusion, render::SkyOcclusionMode::Reference);
+    EXPECT_EQ(r.volumetrics, render::VolumetricsMode::Froxels);
+    EXPECT_EQ(r.scattering, render::ScatteringMode::BruteForce);
+}
+
+TEST(FrameSettings, FlagsOverrideTheSceneFile) {
+    auto world = worldWith(kEverySetting);
+    ApplicationOptions options;
+    options.brdf = render::BrdfModel::EnergyConserving;
+    options.aa = render::AntiAliasing::Off;
+    options.msaa = 2u;
+    options.bloom = 0.0f;
+    options.exposure = render::ExposureMode::Manual;
+    options.exposureCompensation = 2.0f;
+    options.ao = render::AoMode::Off;
+    options.ssr = render::SsrMode::Off;
+    options.skyOcclusion = render::SkyOcclusionMode::Off;
+    options.volumetrics = render::VolumetricsMode::Off;
+    options.scattering = render::ScatteringMode::Off;
+    const render::RendererOptions r = rendererOptionsFor(options, world.get());
+    EXPECT_EQ(r.brdf, render::BrdfModel::EnergyConserving);
+    EXPECT_EQ(r.aa, render::AntiAliasing::Off);
+    EXPECT_EQ(r.msaaSamples, 2u);
+    EXPECT_EQ(r.bloomStrength, 0.0f);
+    EXPECT_EQ(r.exposure, render::ExposureMode::Manual);
+    EXPECT_EQ(r.autoExposure.compensation, 2.0f);
+    EXPECT_EQ(r.ao, render::AoMode::Off);
+    EXPECT_EQ(r.ssr, render::SsrMode::Off);
+    EXPECT_FALSE(r.skyOcclusionWithAtmosphere);
+    EXPECT_EQ(r.skyOcclusion, render::SkyOcclusionMode::Off);
+    EXPECT_EQ(r.volumetrics, render::VolumetricsMode::Off);
+    EXPECT_EQ(r.scattering, render::ScatteringMode::Off);
+}
+
+TEST(FrameSettings, AnAmbientOcclusionBlockWithoutAModeKeepsTheDefault) {
+    auto world = worldWith(R"("ambient_occlusion": {"radius": 2.0})");
+    EXPECT_EQ(rendererOptionsFor(ApplicationOptions{}, world.get()).ao, render::AoMode::Gtao);
+}
