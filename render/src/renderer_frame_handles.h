@@ -1,0 +1,41 @@
+#pragma once
+// The renderer's per-frame handles that its frame declarations (renderer.cpp and the
+// renderer_*.cpp files beside it) hand to each other: resource ids in this frame's graph,
+// valid only while that frame is declared.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "candela/render/renderer.h"
+#include "clustered/cluster_light_lists.h"
+#include "frame_graph/frame_graph.h"
+#include "passes/shadows/shadow_pass.h"
+
+namespace candela::render {
+
+// The handles of one frame's scene passes. Passes capture resource ids by value; the
+// versions they read are declared through the builder.
+struct Renderer::SceneHandles {
+    std::array<ResourceHandle, 4> color;
+    ResourceHandle depth, motion, hdr, camera, lights;
+    ClusterLightLists::Lists clusters;
+    bool extended = false;  // the anisotropy and clear-coat targets (gbuffer_targets.h)
+    ResourceHandle anisotropy, clearCoat;
+};
+
+struct Renderer::ShadowReads {
+    bool shadows = false;  // the frame has shadow maps
+    ResourceHandle atlas, views, lights;
+    ShadowDescriptors descriptors;
+};
+
+// The ambient occlusion the lighting pass applied to the sky's specular, which the SSR trace
+// takes out as occluded (unset handles: none).
+struct Renderer::SsrOcclusion {
+    std::optional<ResourceHandle> occlusion, specular;
+    uint32_t mode = 0;  // lighting.comp's kAoMode
+    float intensity = 1.0f;
+};
+
+}  // namespace candela::render
