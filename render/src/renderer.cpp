@@ -46,6 +46,7 @@
 #include "passes/volumetrics/volumetrics_pass.h"
 #include "passes/wires/wire_pass.h"
 #include "renderer_frame_handles.h"
+#include "renderer_scene_queries.h"
 #include "vk/image_transfer.h"
 #include "vk/vk_check.h"
 
@@ -56,94 +57,6 @@ float exposureFromEv100(float ev100) {
 }
 
 namespace {
-
-// The shader variant a scene needs: only the shading models its drawn materials use and the
-// light shapes its lights have.
-LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resources,
-                            const RendererOptions& options) {
-    LightingFeatures f;
-    f.clustered = options.lightCulling == LightCulling::Clustered;
-    f.countLightPairs = options.countLightPairs;
-    f.brdf = options.brdf;
-    f.areaLights = options.areaLights;
-    if (resources.environment()) f.ibl = options.ibl;
-    // Occlusion of the sky's light: nothing to occlude without a sky.
-    if (f.ibl) f.ao = options.ao;
-    f.aoSpecularFromHorizons = options.aoSettings.specular == AoSpecular::HorizonSlice;
-    for (const DrawItem& draw : scene.draws) {
-        const content::Material& material = resources.material(draw.material);
-        if (material.alphaMode != content::AlphaMode::Blend) {
-            f.anisotropy |= material.anisotropic();
-            f.clearCoat |= material.clearCoated();
-        }
-        switch (material.shadingModel) {
-            case content::ShadingModel::Subsurface:
-                f.subsurface = true;
-                break;
-            case content::ShadingModel::Legacy:
-                f.legacyDiffuseSpecular = true;
-                break;
-            default:
-                break;
-        }
-    }
-    for (const LightInstance& l : scene.lights) {
-        if (inEveryCluster(l.light)) continue;
-        f.sphereLights |= l.light.sourceRadius > 0.0f;
-        f.tubeLights |= l.light.sourceLength > 0.0f;
-        f.lightTypes |= LightingFeatures::bit(l.light.type);
-    }
-    return f;
-}
-
-// Whether the frame draws wires (WirePass::prepare draws when some wire has a segment).
-bool hasWireSegments(const FrameScene& scene) {
-    return std::any_of(scene.wires.begin(), scene.wires.end(), [](const WireDraw& draw) {
-        return draw.wire && draw.wire->segments.size() >= 2;
-    });
-}
-
-// Whether the frame draws light shafts: an atmosphere, shafts asked for and a sun (the first
-// directional light, ScatteringPass::frameOf).
-bool scatteringDrawn(const FrameScene& scene, ScatteringMode mode) {
-    return scene.atmosphere && mode != ScatteringMode::Off &&
-           std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightInstance& l) {
-               return l.light.type == content::LightType::Directional;
-           });
-}
-
-// Whether an opaque draw may have a surface smoother than SSR's roughness cut-off: its
-// roughness factor is under it, or a texture (which only scales the factor down) may bring it
-// there. Frames without one trace no ray and declare no SSR pass.
-bool hasGlossySurface(const FrameScene& scene, const SceneResources& resources, float cutoff) {
-    for (const DrawItem& draw : scene.draws) {
-        const content::Material& m = resources.material(draw.material);
-        if (m.alphaMode == content::AlphaMode::Blend ||
-            m.shadingModel == content::ShadingModel::Unlit) {
-            continue;
-        }
-        if (m.roughnessFactor < cutoff || m.metallicRoughnessTexture.present()) return true;
-        for (const content::MaterialLayer& layer : m.layering.layers) {
-            if (layer.roughnessFactor < cutoff || layer.metallicRoughnessTexture.present()) {
-                return true;
-            }
-        }
-    }
-    return false;
-}
-
-// Whether an opaque draw's material blends layers over its base (its base layer alone needs
-// no blending: content::withBaseLayer folds it into the base fields).
-bool usesMaterialLayers(const FrameScene& scene, const SceneResources& resources) {
-    for (const DrawItem& draw : scene.draws) {
-        const content::Material& material = resources.material(draw.material);
-        if (material.alphaMode != content::AlphaMode::Blend &&
-            material.layering.layers.size() > 1) {
-            return true;
-        }
-    }
-    return false;
-}
 
 // hdr and ldr: discarded at the start of a frame (the previous frame's copies out of them
 // are fenced), left ready to be copied from (capture, swapchain blit) at its end.
