@@ -1,0 +1,101 @@
+// The renderer's frame-persistent targets (Renderer::createTargets and resize): the HDR and
+// LDR images, the cleared TAA, GTAO and SSR histories and the light pair counts, and the
+// temporal state that restarts with them.
+
+#include <cstdint>
+#include <vector>
+
+#include "candela/render/renderer.h"
+#include "clustered/cluster_light_lists.h"
+#include "passes/ambient_occlusion/ambient_occlusion_pass.h"
+#include "passes/lighting/lighting_pass.h"
+#include "passes/ssr/ssr_pass.h"
+#include "vk/image_transfer.h"
+
+namespace candela::render {
+
+void Renderer::resize(uint32_t width, uint32_t height) {
+    width_ = width;
+    height_ = height;
+    createTargets();
+}
+
+void Renderer::createTargets() {
+    // RGBA32F, not 16F: captures are compared at 1e-4..1e-5 relative, below half precision.
+    // Transfer destination: TAA copies its resolve back into it.
+    // Sampled: forward MSAA copies it into its multisampled target.
+    hdr_ = GpuImage(
+        context_,
+        {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
+         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+             (options_.msaaSamples > 1 ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT) : 0u)});
+    if (options_.aa == AntiAliasing::Taa) {
+        // RGBA32F like the target it is copied into; alpha counts the samples it holds. Both
+        // start cleared and shader-readable, so every frame imports them in the same states
+        // and the compiled graph is reused from the second frame on (the first frame ignores
+        // the history through a push constant, not a different graph).
+        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
+        for (GpuImage& h : history_) {
+            h = GpuImage(context_,
+                         {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
+                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+            writeImage(context_, h, 16, zeros.data());
+        }
+    }
+    historyValid_ = false;
+    hasPreviousFrame_ = false;
+    frameIndex_ = 0;
+    if (aoAccumulates()) {
+        // Cleared and shader-readable from the start, like TAA's, so every frame imports them
+        // in the same states (the first frame ignores the history through a push constant).
+        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
+        for (GpuImage& h : aoHistory_) {
+            h = GpuImage(context_, AmbientOcclusionPass::historyDesc(width_, height_));
+            writeImage(context_, h, 16, zeros.data());
+        }
+    }
+    aoHistoryValid_ = false;
+    aoFrame_ = 0;
+    if (options_.ssr != SsrMode::Off && options_.ssrSettings.temporal) {
+        // Cleared and shader-readable from the start, as AO's (the first frame ignores them).
+        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
+        for (GpuImage& h : ssrHistory_) {
+            h = GpuImage(context_, SsrPass::historyDesc(width_, height_));
+            writeImage(context_, h, 16, zeros.data());
+        }
+    }
+    ssrHistoryValid_ = false;
+    // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
+    ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
+                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
+    ensureHostBuffer(context_, pairCounts_,
+                     VkDeviceSize(LightingPass::workgroupCount(width_, height_)) * 8);
+}
+
+bool Renderer::aoAccumulates() const {
+    if (options_.ao != AoMode::Gtao) return false;
+    switch (options_.aoSettings.temporal) {
+        case AoTemporal::WithTaa:
+            return options_.aa == AntiAliasing::Taa;
+        case AoTemporal::Always:
+            return true;
+        case AoTemporal::Never:
+            break;
+    }
+    return false;
+}
+
+void Renderer::restartTemporalHistory() {
+    historyValid_ = false;
+    ssrHistoryValid_ = false;
+    aoHistoryValid_ = false;
+    aoFrame_ = 0;
+    hasPreviousFrame_ = false;
+    frameIndex_ = 0;
+    adaptedEv100_.reset();
+}
+
+}  // namespace candela::render
