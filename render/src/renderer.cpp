@@ -120,49 +120,6 @@ LightAssignmentDevice Renderer::resolveLightAssignment(const RendererOptions& op
                : LightAssignmentDevice::Gpu;
 }
 
-void Renderer::uploadFrameData(const FrameInputs& inputs) {
-    const FrameScene& scene = inputs.scene;
-    // Textured rects' images first: a changed atlas moves slots, so every light is repacked.
-    const bool texturesMoved = areaLightTextures_->update(context_, scene.lights);
-    lights_->update(context_, scene.lights, scene.changedLights,
-                    scene.lightsRestructured || texturesMoved, areaLightTextures_.get());
-    const CameraView& view = scene.camera;
-    clusters_->setView(view, width_, height_);
-
-    // TAA: the projection moves by a sub-pixel offset from a fixed Halton sequence, so a static
-    // image gathers kJitterPhases different samples per pixel (deterministic for goldens).
-    glm::vec2 jitter(0.0f);
-    if (options_.aa == AntiAliasing::Taa) {
-        jitter = {TaaPass::jitterX(frameIndex_), TaaPass::jitterY(frameIndex_)};
-    }
-    glm::mat4 jitterNdc(1.0f);
-    jitterNdc[3][0] = 2.0f * jitter.x / float(width_);
-    jitterNdc[3][1] = 2.0f * jitter.y / float(height_);
-    const glm::mat4 unjittered = view.projection * view.view;
-    GpuCamera camera{};
-    camera.viewProjection = jitterNdc * unjittered;
-    camera.inverseViewProjection = glm::inverse(camera.viewProjection);
-    camera.cameraPosition = glm::vec4(view.position, 1.0f);
-    camera.frameInfo = glm::uvec4(width_, height_, lights_->count(), lights_->capacity());
-    camera.unjitteredViewProjection = unjittered;
-    camera.previousViewProjection = hasPreviousFrame_ ? previousViewProjection_ : unjittered;
-    camera.jitter = glm::vec4(jitter, previousJitter_);
-    std::memcpy(cameraBuffer_.mapped(), &camera, sizeof(camera));
-    previousViewProjection_ = unjittered;
-    previousJitter_ = jitter;
-    hasPreviousFrame_ = true;
-    ++frameIndex_;
-
-    // Each draw's world matrix last frame: given by the caller (moving objects), else its
-    // current one (no motion of its own).
-    ensureHostBuffer(context_, previousWorlds_,
-                     std::max<size_t>(scene.draws.size(), 1) * sizeof(glm::mat4));
-    auto* previous = static_cast<glm::mat4*>(previousWorlds_.mapped());
-    const bool given = scene.previousWorlds.size() == scene.draws.size();
-    for (size_t i = 0; i < scene.draws.size(); ++i)
-        previous[i] = given ? scene.previousWorlds[i] : scene.draws[i].world;
-}
-
 uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resources,
                                 uint32_t hdrId) {
     FrameGraph& g = *graph_;
