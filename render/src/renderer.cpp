@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 
 #include "candela/render/environment.h"
 #include "candela/render/frame_submitter.h"
@@ -21,7 +20,6 @@
 #include "ibl/environment_sampling_table.h"
 #include "lights/area_light_textures.h"
 #include "lights/gpu_light_buffer.h"
-#include "lights/gpu_light_types.h"
 #include "lights/ltc_table_texture.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
 #include "passes/atmosphere/atmosphere_pass.h"
@@ -48,7 +46,6 @@
 #include "renderer_ao_temporal.h"
 #include "renderer_frame_handles.h"
 #include "renderer_scene_queries.h"
-#include "vk/image_transfer.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
