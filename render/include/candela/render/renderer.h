@@ -137,13 +137,13 @@ private:
     void declareHistogram(uint32_t hdrId, uint32_t hdrVersion);
     // Screen-space reflections after lighting: the Hi-Z pyramid, the trace and the composite
     // into the HDR target; returns its version after the composite.
-    // The ambient occlusion the lighting pass applied to the sky's specular (renderer.cpp).
+    // The AO the lighting pass applied to the sky's specular (renderer_frame_handles.h).
     struct SsrOcclusion;
     uint32_t declareSsr(const SceneHandles& h, const EnvironmentDescriptors& environment, bool sky,
                         bool mobileIbl, float skyIntensity, const SsrOcclusion& ao);
     // Light shafts (frames whose scene has an atmosphere, options_.scattering not off): the
     // epipolar passes or the brute-force march over h.hdr, which it advances.
-    struct ShadowReads;  // the frame's shadow atlas, views and per-light table (renderer.cpp)
+    struct ShadowReads;  // shadow atlas, views, per-light table (renderer_frame_handles.h)
     // `aerialFroxels`: the integrated froxel buffer when blended surfaces or wires need the
     // air's grid there (else null), updated to the version the aerial perspective wrote;
     // `fogGrid`: the fog's grid in front of it (0 when the frame has none there).
