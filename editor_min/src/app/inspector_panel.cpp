@@ -231,8 +231,8 @@ void drawFog(EditorScene& scene, ecs::Entity e) {
     commit(scene, e,
            ImGui::DragFloat("Base height", &f.baseHeight, 0.05f, -1.0e4f, 1.0e4f, "%.2f m"), f,
            "Set Fog Base Height");
-    // Bounds: the box the medium fills (none: the whole scene). A new box starts as 10 m
-    // 10 m wide and 5 m high so that it is valid (min below max on every axis).
+    // Bounds: the world-space box the medium fills (none: the whole scene). A new box is
+    // 10 m wide and deep and 5 m high, so that it is valid (min below max on every axis).
     bool bounded = f.bounds.has_value();
     if (ImGui::Checkbox("Bounded to a box", &bounded)) {
         if (bounded) {
