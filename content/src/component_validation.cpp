@@ -184,6 +184,19 @@ ValueProblems validateFog(Fog& fog) {
     if (!finite(fog.baseHeight)) {
         reject(problems, "baseHeight", "must be finite, got " + text(fog.baseHeight));
     }
+    if (fog.bounds) {
+        static constexpr const char* kAxes[] = {"x", "y", "z"};
+        for (int axis = 0; axis < 3; ++axis) {
+            const float lo = fog.bounds->min[axis];
+            const float hi = fog.bounds->max[axis];
+            if (!finite(lo) || !finite(hi) || !(lo < hi)) {
+                reject(problems, "bounds",
+                       std::string("min must be below max on every axis (metres), got ") +
+                           kAxes[axis] + " " + text(lo) + " to " + text(hi));
+                break;
+            }
+        }
+    }
     return problems;
 }
 

@@ -164,7 +164,9 @@ constexpr float kFirstPillarZ = -8.0f;
 constexpr float kPillarSpacing = 2.8f;
 // Volumetric scales (content::Light::volumetric) of the lights the dust should show.
 constexpr float kDustGlow = 6.0f;
-constexpr float kDustSunShafts = 0.05f;
+// The sun scatters in the dust as every other light does (scale 1): the dust fills only the
+// hall (its Fog's bounds), so the sun's in-scattering cannot haze the meadow outside.
+constexpr float kDustSunShafts = 1.0f;
 constexpr float kDustAreaLights = 0.15f;
 // The hall's walls end at y = kWallTop; the roof lies on them, open in slits over the nave
 // (skylights) between the ribs, and the side walls have windows between the pillars: the
@@ -603,15 +605,16 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
         registry.emplace<DriftingLight>(e, drift);
     }
 
-    // Dust in the hall (issue 17): a thin, slightly forward-scattering medium. It settles:
-    // its density halves every 2 m up (a Fog fills the whole scene, and without the falloff
-    // the 100 m of it drawn behind the meadow would take seven eighths of the daylit sky's
-    // light away).
+    // Dust in the hall (issue 17): a thin, slightly forward-scattering medium that settles
+    // (its density halves every 2 m up). It fills the hall's inside only (the box between its
+    // walls, floor and roof): the meadow and the sky seen through the door and the windows
+    // keep clear air.
     content::Fog dust;
     dust.scattering = 0.015f;
     dust.absorption = 0.005f;
     dust.anisotropy = 0.3f;
     dust.heightFalloff = std::numbers::ln2_v<float> / 2.0f;
+    dust.bounds = content::FogBounds{{-6.5f, 0.0f, -9.5f}, {6.5f, kWallTop, kHallFrontZ}};
     registry.emplace<content::Fog>(place(registry, "dust", {}), dust);
 
     // The sky: Earth's atmosphere (Hillaire 2020; render/README.md "Atmosphere"), which lights
@@ -627,8 +630,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     content::Light sun;
     sun.type = content::LightType::Directional;
     sun.castShadows = true;
-    // Through the dust, a hundred-thousand-lux sun would fog the hall over; a small
-    // volumetric scale leaves shafts through the skylights and the windows.
+    // Its shafts through the skylights and the windows light the hall's dust.
     sun.volumetric = kDustSunShafts;
     registry.emplace<content::Light>(place(registry, "sun", {}), sun);
 

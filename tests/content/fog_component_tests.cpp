@@ -1,6 +1,7 @@
 // The Fog component (issue 17) in scene files: every field survives a save and a load, and a
 // value outside the medium's domain (negative coefficients, |g| >= 1, a negative height
-// falloff) drops the component with an error naming the file and the element.
+// falloff, a box whose min is not below its max) drops the component with an error naming the file
+// and the element.
 #include <gtest/gtest.h>
 
 #include <span>
@@ -28,6 +29,7 @@ TEST(FogComponent, EveryFieldRoundTripsThroughASceneFile) {
     fog.anisotropy = -0.6f;
     fog.heightFalloff = 0.3f;
     fog.baseHeight = -1.5f;
+    fog.bounds = FogBounds{{-6.5f, 0.0f, -9.5f}, {6.5f, 5.25f, 8.0f}};
     SceneDocument scene;
     scene.entities.emplace_back().fog = fog;
     auto loaded = testing::savedAndLoaded(scene, "fog.scene.json");
@@ -59,6 +61,14 @@ TEST(FogComponent, BadValuesAreErrorsNamingTheFileAndTheElement) {
              "negative"},
             {sceneWithFog(R"({"scattering": "thick"})"), "/entities/0/fog/scattering",
              "expected a number"},
+            {sceneWithFog(R"({"bounds": {"min": [0, 0, 0], "max": [1, -1, 1]}})"),
+             "/entities/0/fog/bounds", "min must be below max"},
+            {sceneWithFog(R"({"bounds": {"min": [0, 0], "max": [1, 1, 1]}})"),
+             "/entities/0/fog/bounds/min", "array of 3 numbers"},
+            {sceneWithFog(R"({"bounds": {"min": [0, 0, 0]}})"), "/entities/0/fog/bounds/max",
+             "array of 3 numbers"},
+            {sceneWithFog(R"({"bounds": [0, 0, 0]})"), "/entities/0/fog/bounds",
+             "expected an object"},
         },
         [](const SceneEntity& entity) { return entity.fog.has_value(); });
 }

@@ -4,6 +4,7 @@
 // - a point light in uniform fog in front of a black wall: the radiance each pixel sees is the
 //   integral along its ray of sigma_s p(theta) E T_light T_view, E with eq. 9's falloff;
 // - `off` renders exactly the frame without a medium;
+// - a medium bounded to a box changes nothing outside it;
 // - a static camera's frames stay put (the per-light volumes' dither and blur do not crawl).
 #include <gtest/gtest.h>
 
@@ -466,6 +467,47 @@ TEST_F(Volumetrics, AStaticCameraSeesAStableMediumOverEightFrames) {
         std::printf("%s, --aa %s: largest change from one frame to the next %.3f%%\n",
                     volumetricsModeName(mode), antiAliasingName(aa), 100.0 * worst);
         EXPECT_LT(worst, 0.02);
+    }
+}
+
+// A Fog bounded to a box (content::FogBounds) is air outside it: in every mode, a pixel whose
+// view ray misses the box sees exactly what it sees without a medium, though the light stands
+// in the box and an unbounded medium would glow around it there; rays through the box are
+// attenuated and lit. The box: x in [-10, -1] between 0.5 and 5.5 m in front of the camera.
+TEST_F(Volumetrics, AMediumBoundedToABoxScattersAndAttenuatesNothingOutsideIt) {
+    TestScene scene = wallScene(emissive(50.0f));
+    scene.width = scene.height = 48;
+    scene.lights.push_back(pointLight(glm::vec3(-2.0f, 0.0f, -3.0f), 2000.0f, 8.0f));
+    content::Fog fog;
+    fog.scattering = 0.1f;
+    fog.absorption = 0.05f;
+    fog.bounds = content::FogBounds{{-10.0f, -10.0f, -5.5f}, {-1.0f, 10.0f, -0.5f}};
+    const CapturedFrame clear =
+        renderWithFog(context, scene, std::nullopt, VolumetricsMode::Reference);
+    for (VolumetricsMode mode :
+         {VolumetricsMode::Reference, VolumetricsMode::Volumes, VolumetricsMode::Froxels}) {
+        SCOPED_TRACE(volumetricsModeName(mode));
+        const CapturedFrame foggy = renderWithFog(context, scene, fog, mode);
+        double outside = 0.0;  // the largest relative change where rays miss the box
+        double inside = 1.0;   // the smallest where rays cross 3 m of it or more
+        for (uint32_t y = 0; y < scene.height; ++y) {
+            for (uint32_t x = 0; x < scene.width; ++x) {
+                const glm::vec3 ray = pixelRay(scene, x, y);
+                const float slope = ray.x / -ray.z;  // x per metre toward the wall
+                const double before = hdrPixel(clear, x, y)[1];
+                const double change = std::abs(hdrPixel(foggy, x, y)[1] - before) / before;
+                // Rays right of the centre never reach x = -1; the froxels' 8x8-pixel columns
+                // and the volumes' blur reach about 10 pixels, hence the margin.
+                if (slope > 0.15f) outside = std::max(outside, change);
+                if (slope < -1.0f / 2.5f) inside = std::min(inside, change);
+            }
+        }
+        std::printf(
+            "%s: bounded fog changes pixels outside its box by at most %.5f%%, those "
+            "through it by at least %.1f%%\n",
+            volumetricsModeName(mode), 100.0 * outside, 100.0 * inside);
+        EXPECT_LT(outside, 1e-4);
+        EXPECT_GT(inside, 0.05);
     }
 }
 

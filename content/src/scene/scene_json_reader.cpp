@@ -587,6 +587,18 @@ public:
                     number(*f, q, "anisotropy", value.anisotropy);
                     number(*f, q, "heightFalloff", value.heightFalloff);
                     number(*f, q, "baseHeight", value.baseHeight);
+                    if (const json* b = nullptr; object(*f, q, "bounds", b)) {
+                        FogBounds bounds;
+                        numbers(*b, q + "/bounds", "min", bounds.min);
+                        numbers(*b, q + "/bounds", "max", bounds.max);
+                        for (const char* key : {"min", "max"}) {
+                            if (!b->contains(key)) {
+                                error(q + "/bounds/" + key,
+                                      "expected an array of 3 numbers (metres, world space)");
+                            }
+                        }
+                        value.bounds = bounds;
+                    }
                     report(q, validateFog(value));
                 })) {
                 e.fog = value;

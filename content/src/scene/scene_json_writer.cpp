@@ -222,6 +222,10 @@ struct Writer {
                           {"anisotropy", number(e.fog->anisotropy, q + "anisotropy")},
                           {"heightFalloff", number(e.fog->heightFalloff, q + "heightFalloff")},
                           {"baseHeight", number(e.fog->baseHeight, q + "baseHeight")}};
+            if (e.fog->bounds) {
+                out["fog"]["bounds"] = {{"min", numbers(e.fog->bounds->min, q + "bounds/min")},
+                                        {"max", numbers(e.fog->bounds->max, q + "bounds/max")}};
+            }
         }
         if (e.hair) {
             const std::string q = p + "/hair/";

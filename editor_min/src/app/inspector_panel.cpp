@@ -231,6 +231,27 @@ void drawFog(EditorScene& scene, ecs::Entity e) {
     commit(scene, e,
            ImGui::DragFloat("Base height", &f.baseHeight, 0.05f, -1.0e4f, 1.0e4f, "%.2f m"), f,
            "Set Fog Base Height");
+    // Bounds: the world-space box the medium fills (none: the whole scene). A new box is
+    // 10 m wide and deep and 5 m high, so that it is valid (min below max on every axis).
+    bool bounded = f.bounds.has_value();
+    if (ImGui::Checkbox("Bounded to a box", &bounded)) {
+        if (bounded) {
+            f.bounds = content::FogBounds{{-5.0f, 0.0f, -5.0f}, {5.0f, 5.0f, 5.0f}};
+        } else {
+            f.bounds.reset();
+        }
+        commit(scene, e, true, f, "Set Fog Bounds");
+    }
+    if (f.bounds) {
+        commit(
+            scene, e,
+            ImGui::DragFloat3("Bounds min", f.bounds->min.data(), 0.05f, -1.0e4f, 1.0e4f, "%.2f m"),
+            f, "Set Fog Bounds");
+        commit(
+            scene, e,
+            ImGui::DragFloat3("Bounds max", f.bounds->max.data(), 0.05f, -1.0e4f, 1.0e4f, "%.2f m"),
+            f, "Set Fog Bounds");
+    }
 }
 
 // The physically based sky (issue 16): the sun's time of day and place, the ground albedo and

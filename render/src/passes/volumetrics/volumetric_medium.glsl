@@ -128,7 +128,7 @@ vec4 mediumAt(vec3 P, vec3 toCamera, float sampleRadius) {
     float density = mediumDensity(P);
     float sigmaT = (push.medium.x + push.medium.y) * density;
     vec3 sum = vec3(0.0);
-    if (push.medium.x > 0.0) {
+    if (push.medium.x > 0.0 && density > 0.0) {
         uint end = min(push.lights.z + push.lights.w, push.lights.x);
         for (uint i = push.lights.z; i < end; ++i)
             sum += lightInScattering(i, P, toCamera, sigmaT, sampleRadius);

@@ -38,10 +38,23 @@ void main() {
     float radius = 0.5 * max(d * length(nextPerDepth - perDepth), (far - near) * length(perDepth));
     vec3 toCamera = -normalize(perDepth);
 
+    // A bounded medium: the froxel's share of its column ray that lies in the box, lit at that
+    // share's middle, so a box face cuts the medium within a froxel rather than at its centre.
     float density = mediumDensity(P);
+    if (mediumBounded()) {
+        float scale = length(perDepth);
+        vec2 span = mediumSpan(origin, perDepth / scale, far * scale);
+        float t0 = max(span.x, near * scale);
+        float t1 = min(span.y, far * scale);
+        density = 0.0;
+        if (t0 < t1) {
+            P = origin + perDepth / scale * (0.5 * (t0 + t1));
+            density = mediumDensity(P) * (t1 - t0) / ((far - near) * scale);
+        }
+    }
     float sigmaT = (push.medium.x + push.medium.y) * density;
     vec3 sum = vec3(0.0);
-    if (push.medium.x > 0.0) {
+    if (push.medium.x > 0.0 && density > 0.0) {
         uvec2 listed = workgroupLightRange();
         for (uint k = listed.x; k < listed.y; ++k)
             sum += lightInScattering(lightBins[k], P, toCamera, sigmaT, radius);

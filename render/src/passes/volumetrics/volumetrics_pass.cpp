@@ -4,6 +4,7 @@
 #include <array>
 #include <cstring>
 #include <glm/vec4.hpp>
+#include <optional>
 
 #include "candela/render/gpu_context.h"
 #include "common/specialization_ids.h"
@@ -25,10 +26,12 @@ namespace {
 
 // Matches the push block of volumetrics_push.glsl.
 struct VolumetricsPush {
-    glm::vec4 medium;   // sigma_s, sigma_a, g, height falloff
-    glm::vec4 range;    // base height, near, far, unused
-    glm::uvec4 grid;    // froxels x, y, slices, reference steps
-    glm::uvec4 lights;  // count, capacity
+    glm::vec4 medium;     // sigma_s, sigma_a, g, height falloff
+    glm::vec4 range;      // base height, near, far, unused
+    glm::uvec4 grid;      // froxels x, y, slices, reference steps
+    glm::uvec4 lights;    // count, capacity
+    glm::vec4 boundsMin;  // the medium's box (world, m); w: 1 when bounded
+    glm::vec4 boundsMax;
 };
 
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -49,11 +52,14 @@ float farOf(const VolumetricsPass::Inputs& in) {
 VolumetricsPush pushFor(const VolumetricsPass::Inputs& in, uint32_t steps) {
     const float nearPlane = nearOf(in);
     const float farPlane = farOf(in);
+    const std::optional<content::FogBounds>& bounds = in.fog.bounds;
     return {
         glm::vec4(in.fog.scattering, in.fog.absorption, in.fog.anisotropy, in.fog.heightFalloff),
         glm::vec4(in.fog.baseHeight, nearPlane, farPlane, 0.0f),
         glm::uvec4(in.grid, std::max(steps, 1u)),
-        glm::uvec4(in.lightCount, in.lightCapacity, 0u, 0u)};
+        glm::uvec4(in.lightCount, in.lightCapacity, 0u, 0u),
+        bounds ? glm::vec4(bounds->min[0], bounds->min[1], bounds->min[2], 1.0f) : glm::vec4(0.0f),
+        bounds ? glm::vec4(bounds->max[0], bounds->max[1], bounds->max[2], 0.0f) : glm::vec4(0.0f)};
 }
 
 // The bindings of the shaders that light the medium (reference, froxel lighting).

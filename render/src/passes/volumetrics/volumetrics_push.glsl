@@ -8,6 +8,8 @@ layout(push_constant) uniform Push {
     vec4 range;   // x: base height (m), y: near, z: far (view depth, m), w: unused
     uvec4 grid;   // froxels x, y, slices; w: reference steps
     uvec4 lights; // x: count, y: buffer capacity; z, w: the reference's batch (first, count)
+    vec4 boundsMin; // xyz: the medium's box (world, m); w: 1 when bounded, 0 when it fills all
+    vec4 boundsMax; // xyz: the box's far corner; w: unused
 } push;
 
 // View depth (m) of slice boundary b (common/froxel_lookup.glsl's slicing).

@@ -56,35 +56,37 @@ vec3 marchSegment(uint i, Light light, vec3 origin, vec3 direction, vec2 segment
     return radiance;
 }
 
-// The steps of the ray's piece [t0, t1] of [0, farT]: its share of the ray's `steps`.
-float stepsOfPiece(float t0, float t1, float farT, float steps) {
-    return max(1.0, ceil(steps * (t1 - t0) / max(farT, 1e-6)));
+// The steps of the ray's piece [t0, t1] of a march `total` metres long: its share of `steps`.
+float stepsOfPiece(float t0, float t1, float total, float steps) {
+    return max(1.0, ceil(steps * (t1 - t0) / max(total, 1e-6)));
 }
 
-// The sun's in-scattering along [0, farT], cascade by cascade (see the top).
-vec3 marchSun(uint i, Light light, vec3 origin, vec3 direction, float farT, float steps,
-              float dither) {
+// The sun's in-scattering along [startT, farT] (the ray's part in the medium), cascade by
+// cascade (see the top).
+vec3 marchSun(uint i, Light light, vec3 origin, vec3 direction, float startT, float farT,
+              float steps, float dither) {
+    float total = farT - startT;
     ShadowView none;
     uvec2 entry = kShadowsEnabled ? shadowLights[i] : uvec2(SHADOW_NO_VIEW, 0u);
     if (entry.x == SHADOW_NO_VIEW) {
-        return marchSegment(i, light, origin, direction, vec2(0.0, farT), steps, dither, false,
-                            none, false, false);
+        return marchSegment(i, light, origin, direction, vec2(startT, farT), steps, dither,
+                            false, none, false, false);
     }
     vec3 radiance = vec3(0.0);
-    float covered = 0.0;
+    float covered = startT;
     for (uint c = 0u; c < entry.y && covered < farT; ++c) {
         ShadowView view = shadowViews[entry.x + c];
         float exit = raySphereSegment(origin, direction, view.sphere.xyz, view.sphere.w).y;
         float end = min(exit, farT);
         if (end <= covered) continue;
         radiance += marchSegment(i, light, origin, direction, vec2(covered, end),
-                                 stepsOfPiece(covered, end, farT, steps), dither, true, view, true,
+                                 stepsOfPiece(covered, end, total, steps), dither, true, view, true,
                                  false);
         covered = end;
     }
     if (covered < farT) {
         radiance += marchSegment(i, light, origin, direction, vec2(covered, farT),
-                                 stepsOfPiece(covered, farT, farT, steps), dither, false, none,
+                                 stepsOfPiece(covered, farT, total, steps), dither, false, none,
                                  false, false);
     }
     return radiance;
@@ -109,19 +111,22 @@ void main() {
     float steps = float(max(push.grid.w, 1u));
     vec3 radiance = vec3(0.0);
     ShadowView none;
-    if (push.medium.x > 0.0) {
+    // A bounded medium is marched only where the ray crosses its box, so every step lands in it.
+    vec2 span = mediumSpan(origin, direction, surfaceT);
+    if (push.medium.x > 0.0 && span.x < span.y) {
         uvec2 listed = workgroupLightRange();
         for (uint k = listed.x; k < listed.y; ++k) {
             uint i = lightBins[k];
             Light light = loadLight(i, push.lights.y);
             if (light.type == kLightDirectional) {
-                radiance += marchSun(i, light, origin, direction, surfaceT, steps, dither);
+                radiance += marchSun(i, light, origin, direction, span.x, span.y, steps, dither);
                 continue;
             }
             // Rect and disk lights are marched apart (below), so this loop's copy of the
             // in-scattering leaves their form-factor code out.
             if (kMediumAreaLights && isMediumAreaLight(light)) continue;
             vec2 segment = lightVolumeSegment(light, origin, direction, surfaceT);
+            segment = vec2(max(segment.x, span.x), min(segment.y, span.y));
             if (segment.x >= segment.y) continue;
             radiance += marchSegment(i, light, origin, direction, segment, steps, dither, false,
                                      none, true, false);
@@ -131,6 +136,7 @@ void main() {
             Light light = loadLight(i, push.lights.y);
             if (!isMediumAreaLight(light)) continue;
             vec2 segment = lightVolumeSegment(light, origin, direction, surfaceT);
+            segment = vec2(max(segment.x, span.x), min(segment.y, span.y));
             if (segment.x >= segment.y) continue;
             radiance += marchSegment(i, light, origin, direction, segment, steps, dither, false,
                                      none, true, true);
