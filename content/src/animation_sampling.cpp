@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #include <xmmintrin.h>
@@ -197,8 +199,83 @@ void prepareSlerpAngles(AnimationSampler& sampler, double nlerpTolerance) {
     }
 }
 
+namespace {
+
+// Fills clip.sharedRotations where every channel is a translation, rotation or scale of its
+// own node and property (glTF allows one channel per target), translations and scales have 3
+// components, and every rotation interval holds a corrected nlerp; leaves it empty otherwise
+// (the per-channel path then samples the clip).
+void buildSharedKeyRotations(AnimationClip& clip) {
+    SharedKeyRotations plan;
+    std::vector<std::pair<std::int32_t, AnimatedProperty>> targets;
+    for (std::size_t c = 0; c < clip.channels.size(); ++c) {
+        const AnimationChannel& channel = clip.channels[c];
+        if (channel.sampler < 0 ||
+            static_cast<std::size_t>(channel.sampler) >= clip.samplers.size())
+            return;
+        const AnimationSampler& sampler = clip.samplers[static_cast<std::size_t>(channel.sampler)];
+        const std::pair target{channel.node, channel.property};
+        if (channel.node < 0 || std::find(targets.begin(), targets.end(), target) != targets.end())
+            return;
+        targets.push_back(target);
+        switch (channel.property) {
+            case AnimatedProperty::Rotation: {
+                const std::size_t intervals = sampler.times.size() - 1;
+                if (sampler.components != 4 ||
+                    sampler.slerpAngles.size() != kSlerpAngleFloats * intervals)
+                    return;
+                for (std::size_t k = 0; k < intervals; ++k)
+                    if (sampler.slerpAngles[kSlerpAngleFloats * k + 3] == 0) return;  // slerp
+                plan.rotationChannels.push_back(static_cast<std::uint32_t>(c));
+                break;
+            }
+            case AnimatedProperty::Translation:
+            case AnimatedProperty::Scale:
+                if (sampler.components != 3) return;
+                plan.otherChannels.push_back(static_cast<std::uint32_t>(c));
+                break;
+            case AnimatedProperty::Weights:
+                return;
+        }
+        const auto node = static_cast<std::uint32_t>(channel.node);
+        if (std::find(plan.nodes.begin(), plan.nodes.end(), node) == plan.nodes.end())
+            plan.nodes.push_back(node);
+    }
+    if (plan.nodes.empty()) return;
+    constexpr std::size_t lanes = SharedKeyRotations::kLanes;
+    const std::size_t keys = clip.samplers.front().times.size();
+    const std::size_t groups = plan.groups();
+    plan.keys.assign(keys * groups * 4 * lanes, 0.0f);
+    plan.corrections.assign((keys - 1) * groups * 3 * lanes, 0.0f);
+    for (std::size_t g = 0; g < groups; ++g) {
+        for (std::size_t lane = 0; lane < lanes; ++lane) {
+            const std::size_t r = g * lanes + lane;
+            for (std::size_t k = 0; k < keys; ++k) {
+                float* key = plan.keys.data() + (k * groups + g) * 4 * lanes;
+                if (r >= plan.rotationChannels.size()) {
+                    key[3 * lanes + lane] = 1;  // the identity, never stored
+                    continue;
+                }
+                const AnimationChannel& channel = clip.channels[plan.rotationChannels[r]];
+                const AnimationSampler& sampler =
+                    clip.samplers[static_cast<std::size_t>(channel.sampler)];
+                for (std::size_t c = 0; c < 4; ++c)
+                    key[c * lanes + lane] = sampler.values[k * 4 + c];
+                if (k + 1 == keys) continue;
+                float* correction = plan.corrections.data() + (k * groups + g) * 3 * lanes;
+                for (std::size_t c = 0; c < 3; ++c)
+                    correction[c * lanes + lane] = sampler.slerpAngles[kSlerpAngleFloats * k + c];
+            }
+        }
+    }
+    clip.sharedRotations = std::move(plan);
+}
+
+}  // namespace
+
 void markSharedKeyTimes(AnimationClip& clip) {
     clip.linearSharedTimes = false;
+    clip.sharedRotations = {};
     if (clip.samplers.empty()) return;
     const std::vector<float>& times = clip.samplers.front().times;
     if (times.size() < 2) return;
@@ -209,6 +286,7 @@ void markSharedKeyTimes(AnimationClip& clip) {
             return;
     }
     clip.linearSharedTimes = true;
+    buildSharedKeyRotations(clip);
 }
 
 float clipTime(float time, float duration, bool loop) {

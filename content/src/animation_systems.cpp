@@ -110,6 +110,30 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
             cursors[0] = static_cast<std::uint32_t>(k);
         }
     }
+    if (shared && !clip.sharedRotations.empty()) {
+        // Keys laid out four tracks side by side: each animated node starts from rest (as
+        // below, at its first channel), then four rotations sample and normalise at a time,
+        // then the translations and scales; the same floats as the per-channel loop.
+        const SharedKeyRotations& plan = clip.sharedRotations;
+        for (const std::uint32_t node : plan.nodes) {
+            if (s.touched[node] & kTransformTouched) continue;
+            poseAt(node) = restPose(model.nodes[node]);
+            s.touched[node] |= kTransformTouched;
+        }
+        sampleSharedRotations(plan, sharedKey, sharedT, [&](std::uint32_t c) {
+            return &poseAt(static_cast<std::size_t>(clip.channels[c].node)).rotation.x;
+        });
+        for (const std::uint32_t c : plan.otherChannels) {
+            const AnimationChannel& channel = clip.channels[c];
+            const AnimationSampler& sampler =
+                clip.samplers[static_cast<std::size_t>(channel.sampler)];
+            ecs::LocalTransform& local = poseAt(static_cast<std::size_t>(channel.node));
+            sampleLinearAt(sampler, false, sharedKey, sharedT,
+                           channel.property == AnimatedProperty::Translation ? &local.position.x
+                                                                             : &local.scale.x);
+        }
+        return;
+    }
     // Rotations are normalised four at a time (SSE2), the same values as one by one.
     std::array<float*, 4> unnormalised{};
     std::size_t pending = 0;

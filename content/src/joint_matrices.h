@@ -21,12 +21,19 @@ inline bool isIdentity(const ecs::Mat4& m) {
     return true;
 }
 
+// Last row 0 0 0 1 (glTF's inverse bind matrices are; a file may still hold another).
+inline bool isAffine(const Matrix4& m) {
+    return m[3] == 0 && m[7] == 0 && m[11] == 0 && m[15] == 1;
+}
+
 // Per joint j: toMesh * world(j) * inverse bind (a zero matrix where world(j) is null: the
 // joint is not shown), the previous frame's matrices kept by a swap (no copy, no allocation
 // once sized), and the deformed mesh's bounds from each joint's bind-space box.
+// `inverseBindsAffine`: the caller knows every inverse bind matrix is affine (false: each is
+// tested).
 template <class JointWorld>
 void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMesh,
-                        JointWorld&& world) {
+                        JointWorld&& world, bool inverseBindsAffine = false) {
     if (skin.jointMatrices.size() != data.joints.size())
         skin.jointMatrices.assign(data.joints.size(), ecs::Mat4::identity());
     // Every joint below is rewritten, so the swap leaves nothing stale.
@@ -57,8 +64,7 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
             // An affine inverse bind matrix (glTF's are; a file may still hold another) skips
             // the products with its last row, which add exact zeros (same values).
             const Matrix4& inverseBind = data.inverseBindMatrices[j];
-            if (inverseBind[3] == 0 && inverseBind[7] == 0 && inverseBind[11] == 0 &&
-                inverseBind[15] == 1) {
+            if (inverseBindsAffine || isAffine(inverseBind)) {
                 ecs::multiplyByAffine(*meshFromJoint, inverseBind.data(), skin.jointMatrices[j]);
             } else {
                 ecs::multiplyMatrices(*meshFromJoint, inverseBind.data(), skin.jointMatrices[j]);

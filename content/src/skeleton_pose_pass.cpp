@@ -133,6 +133,19 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
                                s.stampLocal[n], static_cast<std::uint16_t>(writeWorld ? 1 : 0),
                                parentPass});
     }
+    s.skinJointPass.clear();
+    s.skinJointBegin.assign(1, 0);
+    s.skinAffine.clear();
+    for (const std::uint32_t meshNode : s.skinNodes) {
+        const SkinData& skin = model.skins[static_cast<std::size_t>(model.nodes[meshNode].skin)];
+        bool affine = true;
+        for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+            s.skinJointPass.push_back(s.passOfNode[static_cast<std::size_t>(skin.joints[j])]);
+            affine = affine && isAffine(skin.inverseBindMatrices[j]);
+        }
+        s.skinJointBegin.push_back(static_cast<std::uint32_t>(s.skinJointPass.size()));
+        s.skinAffine.push_back(affine ? 1 : 0);
+    }
     s.passWorlds.resize(s.passNodes.size() > kThreadPassNodes ? s.passNodes.size() : 0);
     s.writeJointWorlds = player.writeJointWorlds;
     s.worldsToPrefetchCount = 0;
@@ -198,10 +211,22 @@ void buildSkin(AnimationPlayer& player, const TransformPools& pools, const ecs::
     Skin* skin = pools.skins->typedData<Skin>() + s.skinIndex[k];
     const SkinData& data = model.skins[static_cast<std::size_t>(skin->skin)];
     const ecs::Mat4 toMesh = affineInverse(passWorlds[s.passOfNode[meshNode]]);
-    buildJointMatrices(*skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
-        const auto node = static_cast<std::size_t>(data.joints[j]);
-        return s.passOfNode[node] == kAbsent ? nullptr : &passWorlds[s.passOfNode[node]];
-    });
+    const std::uint32_t* jointPass = s.skinJointPass.data() + s.skinJointBegin[k];
+    if (skin->skin != model.nodes[meshNode].skin ||
+        data.joints.size() != s.skinJointBegin[k + 1] - s.skinJointBegin[k]) {
+        // The Skin changed since bind (game code): its joints looked up one by one.
+        buildJointMatrices(*skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
+            const auto node = static_cast<std::size_t>(data.joints[j]);
+            return s.passOfNode[node] == kAbsent ? nullptr : &passWorlds[s.passOfNode[node]];
+        });
+    } else {
+        buildJointMatrices(
+            *skin, data, toMesh,
+            [&](std::size_t j) -> const ecs::Mat4* {
+                return jointPass[j] == kAbsent ? nullptr : &passWorlds[jointPass[j]];
+            },
+            s.skinAffine[k] != 0);
+    }
     skin->worldsSkippedByPose = s.skipsWorlds;
     skin->builtFrom = now;
     skin->previousIsCurrent = false;

@@ -127,6 +127,12 @@ TEST(AnimationSystems, ForwardPlaybackPoseEqualsTheGeneralSamplerExactly) {
     // Fox's samplers share one key-time accessor: this compares the once-per-clip interval
     // path (sampleClip's shared key) with the general sampler.
     ASSERT_TRUE(clip.linearSharedTimes);
+    // ...and every Run rotation interval holds a corrected nlerp, so the clip's rotations
+    // sample four tracks at a time from its structure-of-arrays keys.
+    ASSERT_FALSE(clip.sharedRotations.empty());
+    ASSERT_EQ(
+        clip.sharedRotations.rotationChannels.size() + clip.sharedRotations.otherChannels.size(),
+        clip.channels.size());
     for (int frame = 0; frame < 60; ++frame) {
         world.frame(1.0f / 60.0f);
         for (const AnimationChannel& channel : clip.channels) {

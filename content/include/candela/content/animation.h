@@ -52,6 +52,25 @@ struct AnimationChannel {
     std::int32_t sampler = -1;  // into AnimationClip::samplers
 };
 
+// The keys of a linearSharedTimes clip whose rotations all sample with the corrected nlerp,
+// laid out so four rotation tracks sample together (structure of arrays, as ozz-animation's
+// SamplingJob keeps its keys): one SSE expression interpolates four tracks and one sqrtps
+// normalises them, with per lane the very arithmetic of sampleLinearAt and
+// normalizeQuaternions (the same floats). Filled by markSharedKeyTimes; empty otherwise.
+struct SharedKeyRotations {
+    static constexpr std::size_t kLanes = 4;
+    std::vector<std::uint32_t> rotationChannels;  // channel indices, in channel order
+    std::vector<std::uint32_t> otherChannels;     // the translation and scale channels
+    std::vector<std::uint32_t> nodes;             // each node a channel animates, once
+    // Per key, per group of four rotation channels: x[4], y[4], z[4], w[4] (padding lanes
+    // hold the identity).
+    std::vector<float> keys;
+    // Per key interval, per group: k1[4], k2[4], sign[4] (the corrected nlerp's constants).
+    std::vector<float> corrections;
+    std::size_t groups() const { return (rotationChannels.size() + kLanes - 1) / kLanes; }
+    bool empty() const { return nodes.empty(); }
+};
+
 struct AnimationClip {
     std::string name;
     std::vector<AnimationSampler> samplers;
@@ -61,6 +80,7 @@ struct AnimationClip {
     // clip's samplers one input accessor): sampling finds the key interval and its parameter
     // once per clip, not once per channel (the same values). Set by markSharedKeyTimes.
     bool linearSharedTimes = false;
+    SharedKeyRotations sharedRotations;
 };
 
 }  // namespace candela::content

@@ -2,6 +2,8 @@
 // Evaluating glTF animation samplers at a time: STEP, LINEAR (slerp for rotations) and
 // CUBICSPLINE (Hermite, tangents scaled by the key interval, glTF 2.0 appendix C). Times
 // outside the keys clamp to the first/last value. Allocation-free.
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #if defined(__SSE2__)
@@ -90,6 +92,70 @@ inline bool sampleLinearInCursorInterval(const AnimationSampler& sampler, bool r
     if (!sampleLinearAt(sampler, rotation, k, t, out)) return false;
     cursor = static_cast<std::uint32_t>(k);
     return true;
+}
+
+// Every rotation of clip.sharedRotations (a linearSharedTimes clip) at key interval k and
+// parameter t, four tracks at a time: the same unit quaternions sampleLinearAt followed by
+// normalizeQuaternions gives (per lane the same products, sums, square root and divisions),
+// each written through rotationAt(channel index), a float* to 4 floats (x, y, z, w).
+template <class RotationAt>
+void sampleSharedRotations(const SharedKeyRotations& plan, std::size_t k, float t,
+                           RotationAt&& rotationAt) {
+    constexpr std::size_t lanes = SharedKeyRotations::kLanes;
+    const std::size_t groups = plan.groups();
+    const std::size_t count = plan.rotationChannels.size();
+    const float w = t * (1 - t);
+    const float skew = 2 * t - 1;
+    for (std::size_t g = 0; g < groups; ++g) {
+        const float* a = plan.keys.data() + (k * groups + g) * 4 * lanes;
+        const float* b = a + groups * 4 * lanes;
+        const float* correction = plan.corrections.data() + (k * groups + g) * 3 * lanes;
+        const std::size_t first = g * lanes;
+        const std::size_t used = count - first < lanes ? count - first : lanes;
+#if defined(__SSE2__)
+        // sampleLinearAt's u = t + w (2t - 1)(k1 + k2 w), wa = 1 - u, wb = sign u, per lane.
+        const __m128 k1 = _mm_loadu_ps(correction), k2 = _mm_loadu_ps(correction + lanes);
+        const __m128 sign = _mm_loadu_ps(correction + 2 * lanes);
+        const __m128 vw = _mm_set1_ps(w);
+        const __m128 u = _mm_add_ps(_mm_set1_ps(t), _mm_mul_ps(_mm_mul_ps(vw, _mm_set1_ps(skew)),
+                                                               _mm_add_ps(k1, _mm_mul_ps(k2, vw))));
+        const __m128 wa = _mm_sub_ps(_mm_set1_ps(1.0f), u), wb = _mm_mul_ps(sign, u);
+        auto blend = [&](std::size_t c) {
+            return _mm_add_ps(_mm_mul_ps(wa, _mm_loadu_ps(a + c * lanes)),
+                              _mm_mul_ps(wb, _mm_loadu_ps(b + c * lanes)));
+        };
+        __m128 x = blend(0), y = blend(1), z = blend(2), qw = blend(3);
+        // normalizeQuaternions' arithmetic, already in structure of arrays.
+        const __m128 sum =
+            _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z)),
+                       _mm_mul_ps(qw, qw));
+        const __m128 length = _mm_sqrt_ps(sum);
+        const __m128 usable = _mm_cmpgt_ps(length, _mm_set1_ps(1e-20f));
+        auto pick = [&](__m128 normalised, __m128 fallback) {
+            return _mm_or_ps(_mm_and_ps(usable, normalised), _mm_andnot_ps(usable, fallback));
+        };
+        x = pick(_mm_div_ps(x, length), _mm_setzero_ps());
+        y = pick(_mm_div_ps(y, length), _mm_setzero_ps());
+        z = pick(_mm_div_ps(z, length), _mm_setzero_ps());
+        qw = pick(_mm_div_ps(qw, length), _mm_set1_ps(1.0f));
+        _MM_TRANSPOSE4_PS(x, y, z, qw);
+        const __m128 quaternions[lanes] = {x, y, z, qw};
+        for (std::size_t lane = 0; lane < used; ++lane)
+            _mm_storeu_ps(rotationAt(plan.rotationChannels[first + lane]), quaternions[lane]);
+#else
+        for (std::size_t lane = 0; lane < used; ++lane) {
+            const float u = t + w * skew * (correction[lane] + correction[lanes + lane] * w);
+            const float wa = 1 - u, wb = correction[2 * lanes + lane] * u;
+            float q[4];
+            for (std::size_t c = 0; c < 4; ++c)
+                q[c] = wa * a[c * lanes + lane] + wb * b[c * lanes + lane];
+            float* out = rotationAt(plan.rotationChannels[first + lane]);
+            std::copy_n(q, 4, out);
+            float* const one[1] = {out};
+            normalizeQuaternions(one);
+        }
+#endif
+    }
 }
 
 // Index k of the key interval [times[k], times[k+1]] holding `time` (0 before the first key,

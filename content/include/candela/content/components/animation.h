@@ -117,6 +117,13 @@ struct AnimationPlayer {
         // Per skin node, its entity's dense index in the Skin pool, looked up again only when
         // that pool changes structure (the pass reads the Skin without a sparse lookup).
         std::vector<std::uint32_t> skinIndex;
+        // Per skin node k, its skin's joints' positions in passNodes (kAbsent: not in the
+        // pass) at [skinJointBegin[k], skinJointBegin[k + 1]) of skinJointPass, and whether
+        // every inverse bind matrix of its skin is affine (skinAffine[k]): filled by bind, so
+        // the pass neither looks a joint up nor tests its matrix each frame.
+        std::vector<std::uint32_t> skinJointPass;
+        std::vector<std::uint32_t> skinJointBegin;
+        std::vector<std::uint8_t> skinAffine;
         const void* skinPool = nullptr;
         std::uint32_t skinVersion = 0;
         // The dense index ranges [first, end) the pass writes in the LocalTransform and
