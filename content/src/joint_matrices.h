@@ -26,7 +26,7 @@ inline bool isAffine(const Matrix4& m) {
     return m[3] == 0 && m[7] == 0 && m[11] == 0 && m[15] == 1;
 }
 
-// Per joint j: toMesh * world(j) * inverse bind (a zero matrix where world(j) is null: the
+// Per joint j: toMesh * world(j) * inverse bind (the identity where world(j) is null: the
 // joint is not shown), the previous frame's matrices kept by a swap (no copy, no allocation
 // once sized), and the deformed mesh's bounds from each joint's bind-space box.
 // `inverseBindsAffine`: the caller knows every inverse bind matrix is affine (false: each is
@@ -53,8 +53,22 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
     const bool meshAtOrigin = isIdentity(toMesh);
     const std::array<float, 6>* jointBoxes = skin.jointBounds ? skin.jointBounds->data() : nullptr;
     const std::size_t jointBoxCount = skin.jointBounds ? skin.jointBounds->size() : 0;
-    for (std::size_t j = 0; j < data.joints.size(); ++j) {
+    // Held in locals: the SIMD stores below may alias anything, so members read through
+    // `skin` and `data` would be reloaded every joint.
+    const std::size_t jointCount = data.joints.size();
+    ecs::Mat4* const out = skin.jointMatrices.data();
+    const Matrix4* const inverseBinds = data.inverseBindMatrices.data();
+#if defined(__SSE2__)
+    auto columnsOf = [](const ecs::Mat4& matrix) {
+        return ecs::MatrixColumns{_mm_loadu_ps(matrix.m), _mm_loadu_ps(matrix.m + 4),
+                                  _mm_loadu_ps(matrix.m + 8), _mm_loadu_ps(matrix.m + 12)};
+    };
+#endif
+    for (std::size_t j = 0; j < jointCount; ++j) {
         const ecs::Mat4* jointWorld = world(j);
+#if defined(__SSE2__)
+        ecs::MatrixColumns m;
+#endif
         if (jointWorld) {
             const ecs::Mat4* meshFromJoint = jointWorld;
             if (!meshAtOrigin) {
@@ -63,14 +77,29 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
             }
             // An affine inverse bind matrix (glTF's are; a file may still hold another) skips
             // the products with its last row, which add exact zeros (same values).
-            const Matrix4& inverseBind = data.inverseBindMatrices[j];
+            const Matrix4& inverseBind = inverseBinds[j];
             if (inverseBindsAffine || isAffine(inverseBind)) {
-                ecs::multiplyByAffine(*meshFromJoint, inverseBind.data(), skin.jointMatrices[j]);
+#if defined(__SSE2__)
+                // The product stays in registers for the bounds below (no store-to-load trip).
+                m = ecs::multiplyByAffineColumns(*meshFromJoint, inverseBind.data());
+                _mm_storeu_ps(out[j].m + 0, m.c0);
+                _mm_storeu_ps(out[j].m + 4, m.c1);
+                _mm_storeu_ps(out[j].m + 8, m.c2);
+                _mm_storeu_ps(out[j].m + 12, m.c3);
+#else
+                ecs::multiplyByAffine(*meshFromJoint, inverseBind.data(), out[j]);
+#endif
             } else {
-                ecs::multiplyMatrices(*meshFromJoint, inverseBind.data(), skin.jointMatrices[j]);
+                ecs::multiplyMatrices(*meshFromJoint, inverseBind.data(), out[j]);
+#if defined(__SSE2__)
+                m = columnsOf(out[j]);
+#endif
             }
         } else {
-            skin.jointMatrices[j] = ecs::Mat4{};
+            out[j] = ecs::Mat4{};
+#if defined(__SSE2__)
+            m = columnsOf(out[j]);
+#endif
         }
         if (j >= jointBoxCount) continue;
         const std::array<float, 6>& box = jointBoxes[j];
@@ -78,13 +107,11 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
         // The moved box's bounds from its centre and half size (Arvo): the centre moved by
         // the matrix, the half size by its absolute values; the same box as moving all 8
         // corners, at a quarter of the work.
-        const ecs::Mat4& m = skin.jointMatrices[j];
         const float* centreIn = box.data();
         const float* half = box.data() + 3;
 #if defined(__SSE2__)
         // Whole columns, in transformPoint's and the scalar form's order (same results).
-        const __m128 c0 = _mm_loadu_ps(m.m), c1 = _mm_loadu_ps(m.m + 4);
-        const __m128 c2 = _mm_loadu_ps(m.m + 8), c3 = _mm_loadu_ps(m.m + 12);
+        const __m128 c0 = m.c0, c1 = m.c1, c2 = m.c2, c3 = m.c3;
         const __m128 centre =
             _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_set1_ps(centreIn[0])),
                                              _mm_mul_ps(c1, _mm_set1_ps(centreIn[1]))),
@@ -98,6 +125,7 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
         low = _mm_min_ps(low, _mm_sub_ps(centre, reach));
         high = _mm_max_ps(high, _mm_add_ps(centre, reach));
 #else
+        const ecs::Mat4& m = out[j];
         const ecs::Vec3 centre = m.transformPoint({centreIn[0], centreIn[1], centreIn[2]});
         float reach[3];
         for (int row = 0; row < 3; ++row) {

@@ -10,10 +10,14 @@
 
 namespace candela::ecs {
 
-// out = parent * local, where local (16 floats, column-major) is affine (last row 0 0 0 1). The hot
-// step of propagation: with SSE2 it is 12 broadcasts, 12 multiplies and 9 adds on whole columns.
-inline void multiplyByAffine(const Mat4& parent, const float* local, Mat4& out) noexcept {
 #if defined(__SSE2__)
+// parent * local (local affine, 16 floats, column-major) as four column registers: what
+// multiplyByAffine stores, for callers that go on computing with the columns (the skin bounds)
+// instead of reloading them.
+struct MatrixColumns {
+    __m128 c0, c1, c2, c3;
+};
+inline MatrixColumns multiplyByAffineColumns(const Mat4& parent, const float* local) noexcept {
     const __m128 p0 = _mm_loadu_ps(parent.m + 0);
     const __m128 p1 = _mm_loadu_ps(parent.m + 4);
     const __m128 p2 = _mm_loadu_ps(parent.m + 8);
@@ -25,10 +29,20 @@ inline void multiplyByAffine(const Mat4& parent, const float* local, Mat4& out) 
                                      _mm_mul_ps(p1, _mm_shuffle_ps(l, l, _MM_SHUFFLE(1, 1, 1, 1)))),
                           _mm_mul_ps(p2, _mm_shuffle_ps(l, l, _MM_SHUFFLE(2, 2, 2, 2))));
     };
-    _mm_storeu_ps(out.m + 0, transform(local + 0));
-    _mm_storeu_ps(out.m + 4, transform(local + 4));
-    _mm_storeu_ps(out.m + 8, transform(local + 8));
-    _mm_storeu_ps(out.m + 12, _mm_add_ps(transform(local + 12), p3));  // w = 1
+    return {transform(local + 0), transform(local + 4), transform(local + 8),
+            _mm_add_ps(transform(local + 12), p3)};  // w = 1
+}
+#endif
+
+// out = parent * local, where local (16 floats, column-major) is affine (last row 0 0 0 1). The hot
+// step of propagation: with SSE2 it is 12 broadcasts, 12 multiplies and 9 adds on whole columns.
+inline void multiplyByAffine(const Mat4& parent, const float* local, Mat4& out) noexcept {
+#if defined(__SSE2__)
+    const MatrixColumns product = multiplyByAffineColumns(parent, local);
+    _mm_storeu_ps(out.m + 0, product.c0);
+    _mm_storeu_ps(out.m + 4, product.c1);
+    _mm_storeu_ps(out.m + 8, product.c2);
+    _mm_storeu_ps(out.m + 12, product.c3);
 #else
     for (int c = 0; c < 4; ++c) {
         const float l0 = local[4 * c], l1 = local[4 * c + 1], l2 = local[4 * c + 2];
