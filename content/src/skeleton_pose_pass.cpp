@@ -341,11 +341,18 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
     alignas(64) thread_local ecs::Mat4 threadWorlds[kThreadPassNodes];
     ecs::Mat4* passWorlds =
         s.passNodes.size() <= kThreadPassNodes ? threadWorlds : s.passWorlds.data();
-    for (std::size_t i = 0; i < s.passNodes.size(); ++i) {
-        const AnimationPlayer::Scratch::PassNode& p = s.passNodes[i];
-        const bool animated = (s.touched[p.node] & kTransformTouched) != 0;
+    // Held in locals: the SIMD stores below may alias anything, so the vectors' sizes and
+    // pointers read through `s` would be reloaded every node.
+    const AnimationPlayer::Scratch::PassNode* const passNodes = s.passNodes.data();
+    const std::size_t passCount = s.passNodes.size();
+    const std::uint8_t* const touched = s.touched.data();
+    std::uint8_t* const passMoved = s.passMoved.data();
+    const ecs::LocalTransform* const scratchPose = s.pose.data();
+    for (std::size_t i = 0; i < passCount; ++i) {
+        const AnimationPlayer::Scratch::PassNode& p = passNodes[i];
+        const bool animated = (touched[p.node] & kTransformTouched) != 0;
         if (animated) {
-            if (!poseInLocals) locals[p.local] = s.pose[p.node];
+            if (!poseInLocals) locals[p.local] = scratchPose[p.node];
             if (p.stampLocal) pools.locals->stamp(p.local, now);
         }
         // Not animated: the entity's own (a game may move it).
@@ -354,8 +361,8 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
         // tick: readers that track moved entities see only what moved). A node whose world
         // the pass does not write is computed every frame: its entity's may be stale.
         const bool moved =
-            animated || !p.writeWorld || (p.parentPass != kAbsent && s.passMoved[p.parentPass]);
-        s.passMoved[i] = moved ? 1 : 0;
+            animated || !p.writeWorld || (p.parentPass != kAbsent && passMoved[p.parentPass]);
+        passMoved[i] = moved ? 1 : 0;
         if (!moved) {
             passWorlds[i] = worlds[p.world].matrix;
             continue;
