@@ -282,6 +282,7 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
     }
 
     writeSkeletonPose(registry, pools, player, poseInLocals);
+    if (s.weights.empty()) return;  // no morph targets in the model: no weights to write
     for (std::size_t n = 0; n < s.pose.size() && n < player.nodeEntities.size(); ++n) {
         const ecs::Entity e = player.nodeEntities[n];
         if (!(s.touched[n] & kWeightsTouched) || e == ecs::kNullEntity) continue;
