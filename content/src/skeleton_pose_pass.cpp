@@ -327,7 +327,8 @@ bool prepareSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
 void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
                        AnimationPlayer& player, bool poseInLocals) {
     AnimationPlayer::Scratch& s = player.scratch;
-    if (!prepareSkeletonPose(registry, pools, player)) {
+    // poseInLocals: the caller's prepareSkeletonPose returned true this frame (bound, direct).
+    if (!poseInLocals && !prepareSkeletonPose(registry, pools, player)) {
         writeLocalsOnly(registry, pools, player);
         return;
     }

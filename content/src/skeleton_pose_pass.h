@@ -38,8 +38,9 @@ bool prepareSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
 
 // Writes the pose (the nodes marked kTransformTouched; the others keep their entity's own
 // LocalTransform) as described above: from player.scratch.pose, or, with poseInLocals, already
-// in the node entities' LocalTransform where they have one. Safe to run for different players
-// in parallel; allocates nothing once bound.
+// in the node entities' LocalTransform where they have one (only after prepareSkeletonPose
+// returned true this frame, whose binding check is then not repeated). Safe to run for
+// different players in parallel; allocates nothing once bound.
 void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
                        AnimationPlayer& player, bool poseInLocals);
 
