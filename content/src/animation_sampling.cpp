@@ -292,6 +292,9 @@ void markSharedKeyTimes(AnimationClip& clip) {
 float clipTime(float time, float duration, bool loop) {
     if (!(duration > 0)) return 0;
     if (loop) {
+        // Already in [0, duration) (a looping player keeps its time wrapped): fmod would
+        // return it unchanged (fmod is exact), without its cost.
+        if (time >= 0 && time < duration) return time;
         const float wrapped = std::fmod(time, duration);
         return wrapped < 0 ? wrapped + duration : wrapped;
     }

@@ -470,6 +470,7 @@ void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkL
     if (!registry.view<ecs::WorldTransform>().empty())
         pools.worlds = &registry.storage<ecs::WorldTransform>().pool();
     if (!registry.view<Skin>().empty()) pools.skins = &registry.storage<Skin>().pool();
+    pools.hierarchyVersion = ecs::hierarchyVersion(registry);
     const bool prefetch = lists.players.size() >= kPrefetchFromPlayers;
     jobs.parallelFor(lists.players.size(), kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {

@@ -20,13 +20,12 @@ std::uint32_t indexIn(const ecs::ComponentPool* pool, const ecs::Registry& regis
     return pool && e != ecs::kNullEntity && registry.valid(e) ? pool->indexOf(e) : kAbsent;
 }
 
-bool bindingIsCurrent(const ecs::Registry& registry, const TransformPools& pools,
-                      const AnimationPlayer& player) {
+bool bindingIsCurrent(const TransformPools& pools, const AnimationPlayer& player) {
     const AnimationPlayer::Scratch& s = player.scratch;
     return s.bound && s.localPool == pools.locals && s.worldPool == pools.worlds &&
            (!pools.locals || pools.locals->structureVersion() == s.localVersion) &&
            (!pools.worlds || pools.worlds->structureVersion() == s.worldVersion) &&
-           ecs::hierarchyVersion(registry) == s.hierarchyVersion &&
+           pools.hierarchyVersion == s.hierarchyVersion &&
            s.writeJointWorlds == player.writeJointWorlds;
 }
 
@@ -165,7 +164,7 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
     s.worldPool = pools.worlds;
     s.localVersion = pools.locals ? pools.locals->structureVersion() : 0;
     s.worldVersion = pools.worlds ? pools.worlds->structureVersion() : 0;
-    s.hierarchyVersion = ecs::hierarchyVersion(registry);
+    s.hierarchyVersion = pools.hierarchyVersion;
     s.bound = true;
 }
 
@@ -320,7 +319,7 @@ void prefetchSkinOutputs(const TransformPools& pools, const AnimationPlayer& pla
 
 bool prepareSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
                          AnimationPlayer& player) {
-    if (!bindingIsCurrent(registry, pools, player)) bind(registry, pools, player);
+    if (!bindingIsCurrent(pools, player)) bind(registry, pools, player);
     return player.scratch.direct && pools.locals != nullptr && pools.worlds != nullptr;
 }
 

@@ -23,11 +23,14 @@ constexpr std::uint8_t kTransformTouched = 1;
 constexpr std::uint8_t kWeightsTouched = 2;
 
 // The LocalTransform and WorldTransform pools, fetched once per frame (null: none exists).
-// The Skin pool rides along: the pass builds its player's skins.
+// The Skin pool rides along: the pass builds its player's skins. So does the hierarchy's
+// version (ecs::hierarchyVersion, a resource lookup: once per frame, not once per player;
+// nothing in the player loop reparents).
 struct TransformPools {
     ecs::ComponentPool* locals = nullptr;
     ecs::ComponentPool* worlds = nullptr;
     ecs::ComponentPool* skins = nullptr;
+    std::uint64_t hierarchyVersion = 0;
 };
 
 // Binds the pass to the registry if anything changed since (no allocation once bound) and
