@@ -16,12 +16,19 @@ const float kAreaLightTextureMaxLod = 8.0;   // AreaLightTextures::kMipLevels - 
 // 1.2 m above it at 1.8 times more of the nearer half's colour (the integral: 2.08; 1 texel: 1.0,
 // the whole image averaged; 8: 16); the report's textured-rect rows measure it over a grid.
 const float kAreaLightTextureTexelsPerFootprint = 3.0;
-// The LTC specular lobe's read, in its cosine space, over half as many texels (one mip level
-// coarser): measured on the report's textured-rect grid (light 1 m away, roughness
-// 0.1..1 x size 0.1..1.2 m), the specular's worst cell falls from 24 % (3 texels) to 9.2 % (1.5;
-// 1.0: 9.4 %, 6: 24.7 %), while the diffuse read keeps 3 (1.5 averages the floor test's image
-// away: nearer / further half 1.00 where the integral gives 2.08).
-const float kAreaLightTextureTexelsPerSpecularFootprint = 1.5;
+// The LTC specular lobe's image: two reads at the lobe's mean point, half the weight each, over
+// footprints of 0.43 and 2.22 times the plane's distance (in its cosine space), where the read
+// above spans 2 of them over 3 texels. The lobe's weight on the light's plane is the clamped
+// cosine's density there, h^2 / (pi (h^2 + r^2)^2) for a plane at distance h: peaked within h and
+// heavy-tailed beyond it, so one box of any width either blurs the peak or misses the tail; a
+// sharp and a wide read together stand for both. Fitted (a CPU model of this read on the report's
+// grid, the atlas's aligned mip levels in closed form) on two images at once, steps at 1/2 and at
+// 0.35 of the side: the worst specular cell 7.2 % / 7.4 %, where one read over 1.5 texels of the
+// footprint (the read before) gave 11.9 % / 19.7 % and its best width 12.4 % / 16.5 %
+// (render/README.md, "Textured rect lights").
+const float kAreaLightTextureSpecularNarrowFootprint = 0.43;  // x the plane's distance
+const float kAreaLightTextureSpecularWideFootprint = 2.22;    // x the plane's distance
+const float kAreaLightTextureSpecularNarrowWeight = 0.5;
 
 // The mip for a lobe whose footprint on the light is `footprint` long, the light `size` across,
 // read over `texelsPerFootprint` texels of it.
