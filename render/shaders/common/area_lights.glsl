@@ -103,10 +103,11 @@ vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction, bool 
     if (!specular) {
         return areaLightTexture(slot, uv, areaLightTextureLod(2.0 * distance, size));
     }
-    vec3 narrow = areaLightTexture(
-        slot, uv, areaLightTextureLod(kAreaLightTextureSpecularNarrowFootprint * distance, size, 1.0));
-    vec3 wide = areaLightTexture(
-        slot, uv, areaLightTextureLod(kAreaLightTextureSpecularWideFootprint * distance, size, 1.0));
+    float narrowLod =
+        areaLightTextureLod(kAreaLightTextureSpecularNarrowFootprint * distance, size, 1.0);
+    float wideLod = areaLightTextureLod(kAreaLightTextureSpecularWideFootprint * distance, size, 1.0);
+    vec3 narrow = areaLightTexture(slot, uv, narrowLod);
+    vec3 wide = areaLightTexture(slot, uv, wideLod);
     return mix(wide, narrow, kAreaLightTextureSpecularNarrowWeight);
 #else
     return vec3(1.0);
