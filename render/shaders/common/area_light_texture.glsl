@@ -16,19 +16,20 @@ const float kAreaLightTextureMaxLod = 8.0;   // AreaLightTextures::kMipLevels - 
 // 1.2 m above it at 1.8 times more of the nearer half's colour (the integral: 2.08; 1 texel: 1.0,
 // the whole image averaged; 8: 16); the report's textured-rect rows measure it over a grid.
 const float kAreaLightTextureTexelsPerFootprint = 3.0;
-// The LTC specular lobe's image: two reads at the lobe's mean point, half the weight each, over
-// footprints of 0.43 and 2.22 times the plane's distance (in its cosine space), where the read
+// The LTC specular lobe's image: two reads at the lobe's mean point over footprints of 0.46 and
+// 1.90 times the plane's distance (in its cosine space), weighted 0.45 and 0.55, where the read
 // above spans 2 of them over 3 texels. The lobe's weight on the light's plane is the clamped
 // cosine's density there, h^2 / (pi (h^2 + r^2)^2) for a plane at distance h: peaked within h and
 // heavy-tailed beyond it, so one box of any width either blurs the peak or misses the tail; a
-// sharp and a wide read together stand for both. Fitted (a CPU model of this read on the report's
-// grid, the atlas's aligned mip levels in closed form) on two images at once, steps at 1/2 and at
-// 0.35 of the side: the worst specular cell 7.2 % / 7.4 %, where one read over 1.5 texels of the
-// footprint (the read before) gave 11.9 % / 19.7 % and its best width 12.4 % / 16.5 %
+// sharp and a wide read together stand for both. Fitted by a CPU model of this read on the
+// report's grid (the atlas's aligned mip levels in closed form) over five images, steps of
+// contrast 3 at 0.2, 0.35, 0.45, 1/2 and 0.62 of the side, so no image's edges are tuned to:
+// worst specular cell 7.6 to 9.9 % (9.5 % and 12.0 % on steps at 0.28 and 0.71, not fitted),
+// where one read over 1.5 texels of the footprint (the read before) gave 11.0 to 23.8 %
 // (render/README.md, "Textured rect lights").
-const float kAreaLightTextureSpecularNarrowFootprint = 0.43;  // x the plane's distance
-const float kAreaLightTextureSpecularWideFootprint = 2.22;    // x the plane's distance
-const float kAreaLightTextureSpecularNarrowWeight = 0.5;
+const float kAreaLightTextureSpecularNarrowFootprint = 0.46;  // x the plane's distance
+const float kAreaLightTextureSpecularWideFootprint = 1.90;    // x the plane's distance
+const float kAreaLightTextureSpecularNarrowWeight = 0.45;
 
 // The mip for a lobe whose footprint on the light is `footprint` long, the light `size` across,
 // read over `texelsPerFootprint` texels of it.
