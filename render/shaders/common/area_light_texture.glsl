@@ -16,12 +16,20 @@ const float kAreaLightTextureMaxLod = 8.0;   // AreaLightTextures::kMipLevels - 
 // 1.2 m above it at 1.8 times more of the nearer half's colour (the integral: 2.08; 1 texel: 1.0,
 // the whole image averaged; 8: 16); the report's textured-rect rows measure it over a grid.
 const float kAreaLightTextureTexelsPerFootprint = 3.0;
-// The LTC specular lobe's read, in its cosine space, over half as many texels (one mip level
-// coarser): measured on the report's textured-rect grid (light 1 m away, roughness
-// 0.1..1 x size 0.1..1.2 m), the specular's worst cell falls from 24 % (3 texels) to 9.2 % (1.5;
-// 1.0: 9.4 %, 6: 24.7 %), while the diffuse read keeps 3 (1.5 averages the floor test's image
-// away: nearer / further half 1.00 where the integral gives 2.08).
-const float kAreaLightTextureTexelsPerSpecularFootprint = 1.5;
+// The LTC specular lobe's image: two reads at the lobe's mean point over footprints of 0.46 and
+// 1.90 times the plane's distance (in its cosine space), weighted 0.45 and 0.55, where the read
+// above spans 2 of them over 3 texels. The lobe's weight on the light's plane is the clamped
+// cosine's density there, h^2 / (pi (h^2 + r^2)^2) for a plane at distance h: peaked within h and
+// heavy-tailed beyond it, so one box of any width either blurs the peak or misses the tail; a
+// sharp and a wide read together stand for both. Fitted by a CPU model of this read on the
+// report's grid (the atlas's aligned mip levels in closed form) over five images, steps of
+// contrast 3 at 0.2, 0.35, 0.45, 1/2 and 0.62 of the side, so no image's edges are tuned to:
+// worst specular cell 7.6 to 9.9 % (9.5 % and 12.0 % on steps at 0.28 and 0.71, not fitted),
+// where one read over 1.5 texels of the footprint (the read before) gave 11.0 to 23.8 %
+// (render/README.md, "Textured rect lights").
+const float kAreaLightTextureSpecularNarrowFootprint = 0.46;  // x the plane's distance
+const float kAreaLightTextureSpecularWideFootprint = 1.90;    // x the plane's distance
+const float kAreaLightTextureSpecularNarrowWeight = 0.45;
 
 // The mip for a lobe whose footprint on the light is `footprint` long, the light `size` across,
 // read over `texelsPerFootprint` texels of it.

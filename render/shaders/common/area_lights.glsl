@@ -76,12 +76,12 @@ uint areaTextureSlot(Light light) {
 
 // The image a lobe sees on a textured rect, by LTC (Heitz et al. 2016, section 5.3): in the
 // lobe's cosine space (the rect moved by M^-1, where the lobe is a plain cosine) the point
-// where the rect's mean direction `direction` (ltcPolygonVectorSum) meets it; the mip from the
-// cosine's footprint there, twice the plane's distance (half the cosine's power falls within 45
-// degrees), against the moved rect's size. M^-1 is linear, so the moved rect's affine
-// coordinates are the image's uv.
-vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction,
-                    float texelsPerFootprint) {
+// where the rect's mean direction `direction` (ltcPolygonVectorSum) meets it; M^-1 is linear, so
+// the moved rect's affine coordinates are the image's uv. The mip from the cosine's footprint
+// there against the moved rect's size: for diffuse twice the plane's distance (half the cosine's
+// power falls within 45 degrees) over kAreaLightTextureTexelsPerFootprint; for specular the two
+// reads of area_light_texture.glsl (a sharp one for the cosine's peak, a wide one for its tail).
+vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction, bool specular) {
 #ifdef AREA_LIGHT_TEXTURED
     vec3 p0 = minv * polygon[0];
     vec3 e1 = minv * polygon[1] - p0;  // along the rect's +X
@@ -97,17 +97,26 @@ vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction,
     float e11 = dot(e1, e1), e12 = dot(e1, e2), e22 = dot(e2, e2);
     float det = max(e11 * e22 - e12 * e12, 1e-30);
     vec2 uv = vec2(e22 * dot(d, e1) - e12 * dot(d, e2), e11 * dot(d, e2) - e12 * dot(d, e1)) / det;
-    float lod =
-        areaLightTextureLod(2.0 * abs(offset) / max(area, 1e-30), sqrt(area), texelsPerFootprint);
-    return areaLightTexture(slot, clamp(uv, vec2(0.0), vec2(1.0)), lod);
+    uv = clamp(uv, vec2(0.0), vec2(1.0));
+    float distance = abs(offset) / max(area, 1e-30);
+    float size = sqrt(area);
+    if (!specular) {
+        return areaLightTexture(slot, uv, areaLightTextureLod(2.0 * distance, size));
+    }
+    float narrowLod =
+        areaLightTextureLod(kAreaLightTextureSpecularNarrowFootprint * distance, size, 1.0);
+    float wideLod = areaLightTextureLod(kAreaLightTextureSpecularWideFootprint * distance, size, 1.0);
+    vec3 narrow = areaLightTexture(slot, uv, narrowLod);
+    vec3 wide = areaLightTexture(slot, uv, wideLod);
+    return mix(wide, narrow, kAreaLightTextureSpecularNarrowWeight);
 #else
     return vec3(1.0);
 #endif
 }
 
 // areaShapeIntegral, and in `texel` what a textured rect (slot > 0) shows the lobe (1 for an
-// untextured shape): one edge sum gives both. `specular`: the read over
-// kAreaLightTextureTexelsPerSpecularFootprint (area_light_texture.glsl).
+// untextured shape): one edge sum gives both. `specular`: the specular lobe's two reads
+// (area_light_texture.glsl).
 float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv, uint slot, bool specular,
                         out vec3 texel) {
     texel = vec3(1.0);
@@ -115,9 +124,7 @@ float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv, uint slot,
     vec3 polygon[4];
     rectPolygon(s, P, toLocal, polygon);
     vec3 sum = ltcPolygonVectorSum(minv, polygon, 4);
-    texel = areaLtcTexture(slot, polygon, minv, sum,
-                           specular ? kAreaLightTextureTexelsPerSpecularFootprint
-                                    : kAreaLightTextureTexelsPerFootprint);
+    texel = areaLtcTexture(slot, polygon, minv, sum, specular);
     return max(sum.z * (0.5 / PI), 0.0);
 }
 

@@ -64,18 +64,22 @@ std::vector<std::array<double, 2>> viewsFor(double size) {
     return views;
 }
 
-// The textured rect's image (shaders/report_light_texture.glsl): quadrants of luminance
-// (u < 1/2 ? 1.5 : 0.5) x (v < 1/2 ? 1.5 : 0.5) in the rect's (u, v), average 1.
-double reportTexture(double u, double v) {
-    return (u < 0.5 ? 1.5 : 0.5) * (v < 0.5 ? 1.5 : 0.5);
+// The textured rect's images (shaders/report_light_texture.glsl), in the rect's (u, v): image 1
+// quadrants of luminance (u < 1/2 ? 1.5 : 0.5) x (v < 1/2 ? 1.5 : 0.5); image 2 the same steps
+// (contrast 3, average 1) at 0.35, off the halves where every mip level has a texel edge.
+double reportTexture(int image, double u, double v) {
+    const double cut = image == 2 ? 0.35 : 0.5;
+    const double lo = 1.0 / (1.0 + 2.0 * cut);
+    return (u < cut ? 3.0 * lo : lo) * (v < cut ? 3.0 * lo : lo);
 }
 
 // Diffuse irradiance and specular D Vis(height-correlated Smith) NoL, F0 = 1, per unit
 // luminance, integrated over the light by the midpoint rule (n x n points: the rect's grid, the
-// disk's radius x angle); a textured rect's luminance times its image at each point (n even:
-// no point on the image's edges). A constant-intensity light (seed 004 section 1's variant): per
-// unit intensity per square metre, the luminance towards the point 1 / cos theta_o.
-std::array<double, 2> reference(bool disk, bool textured, bool constantIntensity, double size,
+// disk's radius x angle); a textured rect's luminance times its image `image` at each point (n
+// a multiple of 20: no point on either image's edges). A constant-intensity light (seed 004 section
+// 1's variant): per unit intensity per square metre, the luminance towards the point 1 / cos
+// theta_o.
+std::array<double, 2> reference(bool disk, int image, bool constantIntensity, double size,
                                 const Vec3& V, double alpha, int n) {
     double diffuse = 0.0, specular = 0.0;
     const double half = 0.5 * size;
@@ -90,7 +94,7 @@ std::array<double, 2> reference(bool disk, bool textured, bool constantIntensity
                 u = ((i + 0.5) / n - 0.5) * size, v = ((j + 0.5) / n - 0.5) * size;
                 area = (size / n) * (size / n);
             }
-            if (textured) area *= reportTexture((i + 0.5) / n, (j + 0.5) / n);
+            if (image > 0) area *= reportTexture(image, (i + 0.5) / n, (j + 0.5) / n);
             const Vec3 p = kCentre + u * kAcross + v * kAxisY;
             const double distanceSq = ref::dot(p, p);
             const Vec3 L = unit(p);
@@ -154,12 +158,12 @@ struct Errors {
 
 void addAreaLightShapeRows(ReportContext& context) {
     const bool quick = context.budget.quick;
-    const int grid = quick ? 64 : 320;
+    const int grid = quick ? 60 : 320;
     struct Variant {
         const char* name;
         bool disk;
         Mode mode;
-        bool textured = false;
+        int image = 0;  // a textured rect's image (reportTexture); 0 untextured
         // A constant-intensity light (its own reference); `factors`: shaded with the seed's
         // pre-integrated factors (else as a Lambertian light of luminance I_A, to show what the
         // factors buy).
@@ -176,28 +180,34 @@ void addAreaLightShapeRows(ReportContext& context) {
          kRepresentativeUnclamped},
         {"Disk light: LTC (Heitz-Hill disk integral, fitted specular)", true, kLtc},
         {"Textured rect light: representative point, image at the sample", false, kRepresentative,
-         true},
+         1},
         {"Textured rect light: LTC, image where the lobe's mean direction meets it", false, kLtc,
-         true},
+         1},
         {"Constant-intensity rect light: representative point x pre-integrated factors (seed 004 "
          "section 1)",
-         false, kRepresentative, false, true, true},
-        {"Constant-intensity rect light: LTC x pre-integrated factors", false, kLtc, false, true,
-         true},
+         false, kRepresentative, 0, true, true},
+        {"Constant-intensity rect light: LTC x pre-integrated factors", false, kLtc, 0, true, true},
         {"Constant-intensity rect light: representative point without the factors (luminance "
          "I_A)",
-         false, kRepresentative, false, true, false},
+         false, kRepresentative, 0, true, false},
         {"Constant-intensity disk light: representative point x pre-integrated factors (seed 004 "
          "section 1)",
-         true, kRepresentative, false, true, true},
-        {"Constant-intensity disk light: LTC x pre-integrated factors", true, kLtc, false, true,
-         true},
+         true, kRepresentative, 0, true, true},
+        {"Constant-intensity disk light: LTC x pre-integrated factors", true, kLtc, 0, true, true},
+        // The textured rows again on an image whose edges fall off the halves, where the mip
+        // chain's texels have edges at every level: nothing tuned to the first image's cut.
+        {"Textured rect light (steps at 0.35): representative point, image at the sample", false,
+         kRepresentative, 2},
+        {"Textured rect light (steps at 0.35): LTC, image where the lobe's mean direction meets "
+         "it",
+         false, kLtc, 2},
     };
     // Which reference set a variant reads: rect, disk, textured rect, constant-intensity rect
     // and disk (in the order of their first, representative, variants).
     const auto referenceSet = [](const Variant& v) {
         if (v.constantIntensity) return v.disk ? 4 : 3;
-        return v.textured ? 2 : v.disk ? 1 : 0;
+        if (v.image == 2) return 5;
+        return v.image == 1 ? 2 : v.disk ? 1 : 0;
     };
     // The references, once per shape: [disk][roughness][size][view] -> (diffuse, specular).
     std::vector<AreaShapeSample> samples;
@@ -215,11 +225,11 @@ void addAreaLightShapeRows(ReportContext& context) {
                     s.b = {float(V[0]), float(V[1]), float(V[2]), float(roughness)};
                     s.c = {float(kAcross[0]), float(kAcross[1]), float(kAcross[2]),
                            float(0.5 * size)};
-                    s.d = {float(0.5 * size), float(variant.mode), variant.textured ? 1.0f : 0.0f,
+                    s.d = {float(0.5 * size), float(variant.mode), float(variant.image),
                            variant.factors ? 1.0f : 0.0f};
                     samples.push_back(s);
                     if (firstOfSet) {
-                        references.push_back(reference(variant.disk, variant.textured,
+                        references.push_back(reference(variant.disk, variant.image,
                                                        variant.constantIntensity, size, V,
                                                        ref::alphaFromRoughness(roughness), grid));
                     }
@@ -244,8 +254,8 @@ void addAreaLightShapeRows(ReportContext& context) {
         {CostFunction::DiskRepresentativeConstantIntensity, iterations},
         {CostFunction::DiskLtcConstantIntensity, iterations},
     });
-    const Cost* costOf[] = {&ns[1], &ns[1], &ns[2], &ns[3], &ns[3], &ns[4], &ns[5],
-                            &ns[6], &ns[7], &ns[8], &ns[1], &ns[9], &ns[10]};
+    const Cost* costOf[] = {&ns[1], &ns[1], &ns[2], &ns[3], &ns[3],  &ns[4], &ns[5], &ns[6],
+                            &ns[7], &ns[8], &ns[1], &ns[9], &ns[10], &ns[5], &ns[6]};
     static_assert(std::size(costOf) == std::size(variants));
 
     ReportTable table;
@@ -261,9 +271,11 @@ void addAreaLightShapeRows(ReportContext& context) {
         std::to_string(grid) +
         "^2 points). LTC reads the checked-in table (fp32, bilinear). "
         "Textured rect: an image of four quadrants of luminance 2.25, 0.75, 0.75, 0.25 (average "
-        "1) on the rect, integrated times the BRDF over the light; the approximations read it "
-        "once per lobe, pre-filtered over the lobe's footprint (the renderer's 256-texel mip "
-        "chain, box-filtered here in closed form). Constant-intensity lights (seed 004 section 1's "
+        "1) on the rect, and the same steps (contrast 3) at 0.35 of each side instead of 1/2, "
+        "integrated times the BRDF over the light; the approximations read it pre-filtered over "
+        "the lobe's footprint as the renderer's 256-texel mip chain holds it (aligned 2 x 2 box "
+        "levels, bilinear, trilinear between levels; in closed form here). Constant-intensity "
+        "lights (seed 004 section 1's "
         "variant, `emission` \"constantIntensity\"): every element radiates intensity I_A in "
         "every direction in front, so the luminance towards the point is I_A / cos theta_o; the "
         "reference integrates that, the approximations multiply the constant-luminance results "

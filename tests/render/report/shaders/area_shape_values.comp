@@ -13,7 +13,7 @@ layout(local_size_x = 64) in;
 // Must match AreaShapeSample in area_light_shapes_rows.cpp.
 // a.xyz light centre, a.w 1 for a disk; b.xyz V, b.w roughness; c.xyz the light's X axis,
 // c.w half width (disk: radius); d.x half height, d.y mode (0 representative, 1 its unclamped
-// diffuse, 2 ltc), d.z 1 for a textured rect (report_light_texture.glsl's image), d.w 1 for a
+// diffuse, 2 ltc), d.z a textured rect's image (report_light_texture.glsl's slot), d.w 1 for a
 // constant-intensity light (values per unit I_A: the seed's pre-integrated factors applied).
 // The surface is at the origin with N = +Z; the light faces it.
 struct AreaShapeSample {
@@ -79,7 +79,7 @@ void main() {
     float alpha = alphaFromRoughness(roughness);
     uint mode = uint(s.d.y);
     vec3 P = vec3(0.0);
-    uint slot = s.d.z > 0.5 ? 1u : 0u;
+    uint slot = uint(s.d.z + 0.5);  // report_light_texture.glsl's image, 0 untextured
     if (mode == 2u) {
         vec3 diffuseTexel, specularTexel;
         float diffuse = PI * areaShapeIntegral(shape, P, transpose(tangentFrame(N)), mat3(1.0),
