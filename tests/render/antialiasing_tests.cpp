@@ -19,7 +19,7 @@ protected:
 // reference (displayed values; reference resolved in linear light: antialiasing_scenes.h).
 struct EdgeErrors {
     size_t edgePixels = 0;
-    double off = 0.0, fxaa = 0.0, taa = 0.0;
+    double off = 0.0, fxaa = 0.0, taa = 0.0, gbaa = 0.0;
 };
 EdgeErrors measureEdgeErrors(GpuContext& context, TestScene (*make)(uint32_t, uint32_t)) {
     constexpr uint32_t kWidth = 128, kHeight = 96;
@@ -35,8 +35,12 @@ EdgeErrors measureEdgeErrors(GpuContext& context, TestScene (*make)(uint32_t, ui
         edgeRmse(displayed(renderStatic(context, scene, AntiAliasing::Fxaa, 1)), reference, mask);
     e.taa =
         edgeRmse(displayed(renderStatic(context, scene, AntiAliasing::Taa, 16)), reference, mask);
-    std::printf("edge RMSE over %zu pixels: off %.4f, fxaa %.4f (%.2fx), taa %.4f (%.2fx)\n",
-                e.edgePixels, e.off, e.fxaa, e.fxaa / e.off, e.taa, e.taa / e.off);
+    e.gbaa =
+        edgeRmse(displayed(renderStatic(context, scene, AntiAliasing::Gbaa, 1)), reference, mask);
+    std::printf(
+        "edge RMSE over %zu pixels: off %.4f, fxaa %.4f (%.2fx), taa %.4f (%.2fx), gbaa %.4f "
+        "(%.2fx)\n",
+        e.edgePixels, e.off, e.fxaa, e.fxaa / e.off, e.taa, e.taa / e.off, e.gbaa, e.gbaa / e.off);
     return e;
 }
 

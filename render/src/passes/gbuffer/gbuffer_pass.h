@@ -17,14 +17,16 @@ class GBufferPass {
 public:
     explicit GBufferPass(GpuContext& context);
     // Whether this frame's opaque draws include a layered material (the variants that blend
-    // material layers) and write the extended targets (anisotropy, clear coat): picks the
+    // material layers), write the extended targets (anisotropy, clear coat) and GBAA's edge
+    // target (`edges`: the variants with gbuffer_edges.geom, --aa gbaa only): picks the
     // pipeline, built on first use, so a run compiles only the variants its frames draw with.
-    void prepare(bool materialLayers, bool extended);
+    void prepare(bool materialLayers, bool extended, bool edges = false);
     bool materialLayers() const { return materialLayers_; }
     // Colour, motion, HDR and depth in attachment-optimal layouts (frame graph:
     // ColorAttachment, DepthWrite); all are cleared. `previousWorlds`: one mat4 per scene draw
     // (the draw's world matrix in the previous frame), for the motion vectors.
-    // targets.extended picks gbuffer_extended.frag (anisotropy and clear-coat targets too).
+    // targets.extended picks gbuffer_extended.frag (anisotropy and clear-coat targets too),
+    // targets.hasEdges the edge variant (targets.edges after them; prepare()'s `edges`).
     void record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
                 const std::array<float, 4>& clearRadiance, const FrameScene& scene,
                 SceneResources& resources, const GpuBuffer& cameraBuffer,
@@ -33,11 +35,11 @@ public:
 private:
     GpuContext& context_;
     // Indexed by variantIndex(): plain, extended (also writes targets.anisotropy and
-    // targets.clearCoat), layered (gbuffer_layered.frag), extended and layered. Empty until
-    // prepare() first asks for the variant.
-    std::array<Pipeline, 4> variants_;
-    static size_t variantIndex(bool materialLayers, bool extended) {
-        return (materialLayers ? 2 : 0) + (extended ? 1 : 0);
+    // targets.clearCoat), layered (gbuffer_layered.frag), extended and layered; then the same
+    // four with GBAA's edges. Empty until prepare() first asks for the variant.
+    std::array<Pipeline, 8> variants_;
+    static size_t variantIndex(bool materialLayers, bool extended, bool edges) {
+        return (edges ? 4 : 0) + (materialLayers ? 2 : 0) + (extended ? 1 : 0);
     }
     bool materialLayers_ = false;
 };
