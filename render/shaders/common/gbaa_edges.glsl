@@ -26,26 +26,30 @@ vec3 gbaaEdgeLine(vec4 clipA, vec4 clipB, vec2 targetSize) {
     return len > 0.0 ? line / len : vec3(0.0, 0.0, 1.0);
 }
 
-// Signed offsets in pixels from `pixel` to the nearest of the triangle's lines: x along the
-// row to the nearest line that is closer to vertical (|a| >= |b|), y along the column to the
-// nearest one closer to horizontal; GBAA_NO_EDGE where none lies within one pixel. A pixel
-// stores offsets up to a pixel (not half) so that the neighbour its triangle's edge reaches
-// into can find it there (gbaa.comp).
-vec2 gbaaEdgeOffsets(vec2 pixel, vec3 lines[3]) {
-    vec2 offsets = vec2(GBAA_NO_EDGE);
+// Distances in pixels from `pixel` to the triangle's nearest edge on each side, each edge
+// measured along the axis that crosses it more squarely: (left, right) along the row to the
+// nearest lines closer to vertical (|a| >= |b|), (up, down) along the column to those closer
+// to horizontal; GBAA_NO_EDGE where none lies within 1.5 pixels. Both sides, not just the
+// nearest edge: a face one pixel wide (a pillar's side seen at a grazing angle) has its two
+// edges in one pixel. Beyond half a pixel, so that the neighbour an edge reaches into can find
+// it there (gbaa.comp).
+vec4 gbaaEdgeDistances(vec2 pixel, vec3 lines[3]) {
+    vec4 distances = vec4(GBAA_NO_EDGE);
     for (int i = 0; i < 3; ++i) {
         vec3 line = lines[i];
         float value = dot(line, vec3(pixel, 1.0));
         if (abs(line.x) >= abs(line.y)) {
             if (line.x == 0.0) continue;  // no line
             float offset = -value / line.x;
-            if (abs(offset) < abs(offsets.x)) offsets.x = offset;
+            if (offset < 0.0) distances.x = min(distances.x, -offset);
+            else distances.y = min(distances.y, offset);
         } else {
             float offset = -value / line.y;
-            if (abs(offset) < abs(offsets.y)) offsets.y = offset;
+            if (offset < 0.0) distances.z = min(distances.z, -offset);
+            else distances.w = min(distances.w, offset);
         }
     }
-    return mix(offsets, vec2(GBAA_NO_EDGE), greaterThanEqual(abs(offsets), vec2(1.0)));
+    return mix(distances, vec4(GBAA_NO_EDGE), greaterThanEqual(distances, vec4(1.5)));
 }
 
 #endif

@@ -4,9 +4,8 @@
 #ifndef CANDELA_GBAA_EDGES_H
 #define CANDELA_GBAA_EDGES_H
 
-// What a channel holds where no edge of the pixel's triangle lies within a pixel of its centre
-// along that axis (also the target's clear value, where nothing is drawn). Any magnitude of 1
-// or more reads as "none".
+// What a channel holds where no edge of the pixel's triangle lies within 1.5 pixels of its
+// centre on that side (also the target's clear value, where nothing is drawn).
 #define GBAA_NO_EDGE 2.0
 
 #endif

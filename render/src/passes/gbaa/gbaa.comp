@@ -2,14 +2,14 @@
 #extension GL_GOOGLE_include_directive : require
 #include "gbaa_bindings.h"
 // GBAA's resolve (geometry buffer antialiasing, after Persson 2011; render/README.md "GBAA"):
-// each pixel is blended with its neighbour across the triangle edge that the G-buffer pass
-// found within it (gbuffer.edges, common/gbaa_edges.glsl), by the fraction of the pixel that
-// lies beyond the edge, 0.5 - |offset|. A silhouette's edge is only in the G-buffer on the
-// side its triangle covers: a pixel whose own triangle has no edge within half a pixel looks
-// at its four neighbours for one whose edge reaches into it (an offset between 0.5 and 1
-// towards it). With an edge along x and one along y (a corner) the pixel takes the bilinear
-// mix of its 2x2 neighbourhood those two fractions give, which is the coverage of a corner
-// whose sides follow the pixel's axes.
+// each pixel is blended with its neighbours across the edges of its triangle that the
+// G-buffer pass found within it (gbuffer.edges, common/gbaa_edges.glsl), each by the fraction
+// of the pixel that lies beyond that edge, 0.5 - distance. A silhouette's edge is only in the
+// G-buffer on the side its triangle covers: where a pixel's own triangle has no edge within
+// half a pixel on one side, the neighbour on that side may have one that reaches into it (a
+// distance between 0.5 and 1.5 towards it), covering distance - 0.5 of it. The fractions
+// along x and along y combine as a product (a 3x3 tensor of weights), which is the coverage of
+// a corner whose sides follow the pixel's axes.
 // The blend is in HDR radiance, before exposure and tonemapping: a pixel then holds the
 // coverage-weighted radiance of the surfaces in it, what a supersampled frame resolved in
 // linear light (and TAA) gives it.
@@ -22,46 +22,50 @@ layout(binding = GBAA_BINDING_RESOLVED, rgba32f) uniform writeonly image2D resol
 
 ivec2 size;
 
-vec2 edgesAt(ivec2 pixel) {
-    return texelFetch(edges, clamp(pixel, ivec2(0), size - 1), 0).xy;
+// (left, right, up, down) distances; none outside the target.
+vec4 edgesAt(ivec2 pixel) {
+    if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, size)))
+        return vec4(GBAA_NO_EDGE);
+    return texelFetch(edges, pixel, 0);
 }
 
-vec4 radianceAt(ivec2 pixel) {
-    return imageLoad(hdr, clamp(pixel, ivec2(0), size - 1));
+vec3 radianceAt(ivec2 pixel) {
+    return imageLoad(hdr, clamp(pixel, ivec2(0), size - 1)).rgb;
 }
 
-// The offset of the edge that crosses this pixel along one axis, from the pixel's own
-// triangle (`own`) or else from the neighbours before (`before`, at -1) and after (`after`,
-// at +1) along that axis; GBAA_NO_EDGE when none does.
-float edgeOffset(float own, float before, float after) {
-    if (abs(own) < 0.5) return own;
-    float offset = GBAA_NO_EDGE;
-    // The neighbour before stores +0.5..1 for an edge inside this pixel: -0.5..0 from here.
-    if (before >= 0.5 && before < 1.0) offset = before - 1.0;
-    if (after <= -0.5 && after > -1.0 && after + 1.0 < abs(offset)) offset = after + 1.0;
-    return offset;
+// The fraction of this pixel on one side that belongs to the neighbour there: beyond this
+// pixel's own edge on that side (`own`, its distance), or else covered by the neighbour's
+// triangle reaching in (`neighbours`, the neighbour's distance to its edge on this side).
+float beyond(float own, float neighbours) {
+    if (own < 0.5) return 0.5 - own;
+    return neighbours > 0.5 && neighbours < 1.5 ? neighbours - 0.5 : 0.0;
 }
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     size = imageSize(hdr);
     if (any(greaterThanEqual(pixel, size))) return;
-    vec2 own = edgesAt(pixel);
-    float offsetX = edgeOffset(own.x, edgesAt(pixel + ivec2(-1, 0)).x,
-                               edgesAt(pixel + ivec2(1, 0)).x);
-    float offsetY = edgeOffset(own.y, edgesAt(pixel + ivec2(0, -1)).y,
-                               edgesAt(pixel + ivec2(0, 1)).y);
-    // The fraction beyond each edge, and which way the neighbour across it lies.
-    float beyondX = abs(offsetX) < 0.5 ? 0.5 - abs(offsetX) : 0.0;
-    float beyondY = abs(offsetY) < 0.5 ? 0.5 - abs(offsetY) : 0.0;
-    ivec2 step = ivec2(offsetX < 0.0 ? -1 : 1, offsetY < 0.0 ? -1 : 1);
-    vec4 centre = radianceAt(pixel);
+    vec4 own = edgesAt(pixel);
+    // Weights of the columns -1, 0, +1 and of the rows -1, 0, +1.
+    vec3 wx = vec3(beyond(own.x, edgesAt(pixel + ivec2(-1, 0)).y), 0.0,
+                   beyond(own.y, edgesAt(pixel + ivec2(1, 0)).x));
+    vec3 wy = vec3(beyond(own.z, edgesAt(pixel + ivec2(0, -1)).w), 0.0,
+                   beyond(own.w, edgesAt(pixel + ivec2(0, 1)).z));
+    // Neighbours reaching in from both sides past each other: share the pixel between them.
+    wx /= max(wx.x + wx.z, 1.0);
+    wy /= max(wy.x + wy.z, 1.0);
+    wx.y = 1.0 - wx.x - wx.z;
+    wy.y = 1.0 - wy.x - wy.z;
+    vec4 centre = imageLoad(hdr, pixel);
     vec3 result = centre.rgb;
-    if (beyondX > 0.0 || beyondY > 0.0) {
-        vec3 acrossX = radianceAt(pixel + ivec2(step.x, 0)).rgb;
-        vec3 acrossY = radianceAt(pixel + ivec2(0, step.y)).rgb;
-        vec3 diagonal = radianceAt(pixel + step).rgb;
-        result = mix(mix(centre.rgb, acrossX, beyondX), mix(acrossY, diagonal, beyondX), beyondY);
+    if (wx.y < 1.0 || wy.y < 1.0) {
+        result = vec3(0.0);
+        for (int dy = -1; dy <= 1; ++dy) {
+            for (int dx = -1; dx <= 1; ++dx) {
+                float w = wx[dx + 1] * wy[dy + 1];
+                if (w > 0.0) result += w * radianceAt(pixel + ivec2(dx, dy));
+            }
+        }
     }
     imageStore(resolved, pixel, vec4(result, centre.a));
 }

@@ -59,9 +59,9 @@ float anisotropyAngle(vec2 encodedNormal, vec3 T) {
 #ifdef GBUFFER_EDGES
 // gbuffer.edges (common/gbaa_edges.glsl), after the targets above.
 #ifdef GBUFFER_MATERIAL_EXTENSIONS
-layout(location = 8) out vec2 outEdges;
+layout(location = 8) out vec4 outEdges;
 #else
-layout(location = 6) out vec2 outEdges;
+layout(location = 6) out vec4 outEdges;
 #endif
 #endif
 
@@ -93,6 +93,6 @@ void main() {
     outClearCoat = vec4(e.clearCoat, e.clearCoatRoughness, octEncode(e.clearCoatN));
 #endif
 #ifdef GBUFFER_EDGES
-    outEdges = gbaaEdgeOffsets(gl_FragCoord.xy, inEdgeLines);
+    outEdges = gbaaEdgeDistances(gl_FragCoord.xy, inEdgeLines);
 #endif
 }

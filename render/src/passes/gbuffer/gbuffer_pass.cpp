@@ -133,7 +133,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     // No edge where nothing is drawn (the background has no triangle).
     if (targets.hasEdges) {
         colors[materialCount].clearValue.color = {
-            {float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), 0.0f, 0.0f}};
+            {float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE)}};
     }
     // Shading model 0 (Unlit) where nothing is drawn; the HDR target starts as the background.
     colors[4].clearValue.color = {{clearRadiance[0], clearRadiance[1], clearRadiance[2], 1.0f}};
