@@ -219,6 +219,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             GBufferTargets::extensionDesc(GBufferTargets::kClearCoatFormat, width_, height_));
     }
     h.hasEdges = gbaaPass_ != nullptr;
+    h.separateEdges = GBufferPass::separateEdges(h.extended, h.hasEdges);
     if (h.hasEdges) {
         h.edges = g.createImage(
             GBufferTargets::kEdgesName,
@@ -326,7 +327,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             targets.anisotropy = ctx.image(ids.anisotropy);
             targets.clearCoat = ctx.image(ids.clearCoat);
         }
-        targets.hasEdges = ids.hasEdges;
+        targets.hasEdges = ids.hasEdges && !ids.separateEdges;
         if (ids.hasEdges) targets.edges = ctx.image(ids.edges);
         return targets;
     };
@@ -352,7 +353,18 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             h.anisotropy = p.write(h.anisotropy, Use::ColorAttachment);
             h.clearCoat = p.write(h.clearCoat, Use::ColorAttachment);
         }
-        if (h.hasEdges) h.edges = p.write(h.edges, Use::ColorAttachment);
+        if (h.hasEdges && !h.separateEdges) h.edges = p.write(h.edges, Use::ColorAttachment);
+    }
+    if (h.separateEdges) {
+        auto p = g.addPass(
+            "gbuffer_edges", PassKind::Device, [this, ids, &inputs, &resources](PassContext& ctx) {
+                gbufferPass_->recordEdges(ctx.cmd(), ctx.image(ids.edges), ctx.image(ids.depth),
+                                          inputs.scene, resources, cameraBuffer_, previousWorlds_);
+            });
+        p.read(h.camera, Use::Uniform, kRasterStages | VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT);
+        readDeformed(p);
+        p.read(h.depth, Use::DepthRead);
+        h.edges = p.write(h.edges, Use::ColorAttachment);
     }
     if (features.clustered) {
         h.clusters =

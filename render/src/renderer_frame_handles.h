@@ -22,7 +22,8 @@ struct Renderer::SceneHandles {
     ClusterLightLists::Lists clusters;
     bool extended = false;  // the anisotropy and clear-coat targets (gbuffer_targets.h)
     ResourceHandle anisotropy, clearCoat;
-    bool hasEdges = false;  // GBAA's edge target (--aa gbaa; gbuffer_targets.h)
+    bool hasEdges = false;       // GBAA's edge target (--aa gbaa; gbuffer_targets.h)
+    bool separateEdges = false;  // written by its own pass (GBufferPass::separateEdges)
     ResourceHandle edges;
 };
 

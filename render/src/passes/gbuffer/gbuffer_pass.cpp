@@ -15,6 +15,7 @@
 #include "shaders/gbuffer.vert.spv.h"
 #include "shaders/gbuffer_edges.frag.spv.h"
 #include "shaders/gbuffer_edges.geom.spv.h"
+#include "shaders/gbuffer_edges_only.frag.spv.h"
 #include "shaders/gbuffer_extended.frag.spv.h"
 #include "shaders/gbuffer_extended_edges.frag.spv.h"
 #include "shaders/gbuffer_extended_layered.frag.spv.h"
@@ -90,13 +91,34 @@ GBufferPass::GBufferPass(GpuContext& context) : context_(context) {}
 
 void GBufferPass::prepare(bool materialLayers, bool extended, bool edges) {
     materialLayers_ = materialLayers;
-    const size_t index = variantIndex(materialLayers, extended, edges);
-    Pipeline& pipeline = variants_[index];
-    if (pipeline.handle() != VK_NULL_HANDLE) return;
     if (edges && !context_.geometryShaders()) {
         throw std::runtime_error("--aa gbaa needs geometry shaders, which " +
                                  context_.deviceName() + " does not have");
     }
+    if (separateEdges(extended, edges)) {
+        edges = false;  // the main pass without them, recordEdges after it
+        if (edgesOnly_.handle() == VK_NULL_HANDLE) {
+            GraphicsPipelineDesc desc;
+            desc.vertexSpirv = gbuffer_vert_spv;
+            desc.geometrySpirv = gbuffer_edges_geom_spv;
+            desc.fragmentSpirv = gbuffer_edges_only_frag_spv;
+            setMeshVertexInput(desc);
+            desc.colorFormats = {GBufferTargets::kEdgesFormat};
+            desc.depthFormat = GBufferTargets::kDepthFormat;
+            desc.depthCompare = VK_COMPARE_OP_EQUAL;  // the surface the G-buffer holds
+            desc.depthWrite = false;
+            desc.dynamicCullMode = true;
+            const DescriptorBinding bindings[] = {
+                {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                 VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT},
+                {PREVIOUS_WORLDS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                 VK_SHADER_STAGE_VERTEX_BIT}};
+            edgesOnly_ = Pipeline::graphics(context_, desc, bindings, sizeof(DrawPush));
+        }
+    }
+    const size_t index = variantIndex(materialLayers, extended, edges);
+    Pipeline& pipeline = variants_[index];
+    if (pipeline.handle() != VK_NULL_HANDLE) return;
     const std::span<const uint32_t> fragments[8] = {gbuffer_frag_spv,
                                                     gbuffer_extended_frag_spv,
                                                     gbuffer_layered_frag_spv,
@@ -195,6 +217,57 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
                          resources.previousVertexBufferOf(draw));
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
         // firstInstance: the draw's index, which gbuffer.vert reads its previous world by.
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
+    }
+    vkCmdEndRendering(cmd);
+}
+
+void GBufferPass::recordEdges(VkCommandBuffer cmd, const ImageRef& edges, const ImageRef& depth,
+                              const FrameScene& scene, SceneResources& resources,
+                              const GpuBuffer& cameraBuffer,
+                              const GpuBuffer& previousWorlds) const {
+    const uint32_t width = edges.desc().width;
+    const uint32_t height = edges.desc().height;
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = edges.view();
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    color.clearValue.color = {
+        {float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE)}};
+    VkRenderingAttachmentInfo depthInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depthInfo.imageView = depth.view();
+    depthInfo.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+    depthInfo.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    depthInfo.storeOp = VK_ATTACHMENT_STORE_OP_NONE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    rendering.pDepthAttachment = &depthInfo;
+
+    vkCmdBeginRendering(cmd, &rendering);
+    setViewportAndScissor(cmd, width, height);
+    edgesOnly_.bind(cmd);
+    VkDescriptorBufferInfo cameraInfo{cameraBuffer.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo previousInfo{previousWorlds.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(PREVIOUS_WORLDS_BINDING, &previousInfo)};
+    edgesOnly_.pushDescriptors(cmd, writes);
+    for (uint32_t drawIndex = 0; drawIndex < uint32_t(scene.draws.size()); ++drawIndex) {
+        const DrawItem& draw = scene.draws[drawIndex];
+        const GpuMesh& mesh = resources.mesh(draw.mesh);
+        if (mesh.indexCount == 0) continue;
+        const content::Material& material = resources.material(draw.material);
+        if (material.alphaMode == content::AlphaMode::Blend) continue;  // as record()
+        vkCmdSetCullMode(cmd, material.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+        DrawPush push{draw.world, draw.material};
+        edgesOnly_.pushConstants(cmd, &push, sizeof(push));
+        bindMeshVertices(cmd, resources.vertexBufferOf(draw),
+                         resources.previousVertexBufferOf(draw));
+        vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
     }
     vkCmdEndRendering(cmd);

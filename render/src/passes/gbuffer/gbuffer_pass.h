@@ -20,7 +20,11 @@ public:
     // material layers), write the extended targets (anisotropy, clear coat) and GBAA's edge
     // target (`edges`: the variants with gbuffer_edges.geom, --aa gbaa only): picks the
     // pipeline, built on first use, so a run compiles only the variants its frames draw with.
+    // With both the extended targets and the edges, the edge target is written by a pass of
+    // its own (recordEdges): nine colour attachments are more than devices guarantee.
     void prepare(bool materialLayers, bool extended, bool edges = false);
+    // Whether prepare() chose the separate edge pass (recordEdges) for this frame.
+    static bool separateEdges(bool extended, bool edges) { return edges && extended; }
     bool materialLayers() const { return materialLayers_; }
     // Colour, motion, HDR and depth in attachment-optimal layouts (frame graph:
     // ColorAttachment, DepthWrite); all are cleared. `previousWorlds`: one mat4 per scene draw
@@ -31,6 +35,12 @@ public:
                 const std::array<float, 4>& clearRadiance, const FrameScene& scene,
                 SceneResources& resources, const GpuBuffer& cameraBuffer,
                 const GpuBuffer& previousWorlds) const;
+    // GBAA's edge target alone (gbuffer_edges_only.frag): the opaque draws again after
+    // record(), depth test equal against its depth (DepthRead), into `edges`
+    // (ColorAttachment, cleared).
+    void recordEdges(VkCommandBuffer cmd, const ImageRef& edges, const ImageRef& depth,
+                     const FrameScene& scene, SceneResources& resources,
+                     const GpuBuffer& cameraBuffer, const GpuBuffer& previousWorlds) const;
 
 private:
     GpuContext& context_;
@@ -38,6 +48,7 @@ private:
     // targets.clearCoat), layered (gbuffer_layered.frag), extended and layered; then the same
     // four with GBAA's edges. Empty until prepare() first asks for the variant.
     std::array<Pipeline, 8> variants_;
+    Pipeline edgesOnly_;  // recordEdges; empty until a frame needs it
     static size_t variantIndex(bool materialLayers, bool extended, bool edges) {
         return (edges ? 4 : 0) + (materialLayers ? 2 : 0) + (extended ? 1 : 0);
     }
