@@ -71,6 +71,39 @@ TEST_F(Antialiasing, EdgeErrorAgainstSupersamplingOnTheColonnade) {
     EXPECT_LE(e.gbaa, e.off / 2.0);
 }
 
+// The box on a floor with a clear-coated box: its frames have the anisotropy and clear-coat
+// targets, so GBAA's edge target comes from a pass of its own (gbuffer_edges).
+TestScene clearCoatBoxOnFloor(uint32_t width, uint32_t height) {
+    TestScene scene = boxOnFloor(width, height);
+    scene.model.materials[1].clearcoatFactor = 0.5f;  // the box (added second)
+    scene.model.materials[1].clearcoatRoughnessFactor = 0.3f;
+    return scene;
+}
+
+// GBAA in a frame with the extended G-buffer targets: the edges come from the separate pass
+// (eight colour attachments are the most a device guarantees) and still meet the goal.
+TEST_F(Antialiasing, GbaaWithTheExtendedTargetsWritesItsEdgesInAPassOfItsOwn) {
+    constexpr uint32_t kWidth = 64, kHeight = 48;
+    const std::vector<float> reference =
+        supersampledReference(context, &clearCoatBoxOnFloor, kWidth, kHeight);
+    const std::vector<uint8_t> mask = edgeMask(reference, kWidth, kHeight);
+    TestScene scene = clearCoatBoxOnFloor(kWidth, kHeight);
+    RendererStats stats;
+    const double off =
+        edgeRmse(displayed(renderStatic(context, scene, AntiAliasing::Off, 1)), reference, mask);
+    const double gbaa = edgeRmse(
+        displayed(renderStatic(context, scene, AntiAliasing::Gbaa, 1, &stats)), reference, mask);
+    std::printf("clear-coated box, 64x48: edge RMSE off %.4f, gbaa %.4f (%.2fx)\n", off, gbaa,
+                gbaa / off);
+    bool separatePass = false;
+    for (const auto& [name, ms] : stats.passMs)
+        separatePass |= name == "gbuffer_edges";
+    EXPECT_TRUE(separatePass);
+    EXPECT_GT(off, 0.02);
+    EXPECT_LE(gbaa, off / 2.0);
+    EXPECT_EQ(context.validationMessages(), 0u);
+}
+
 // Forward MSAA: a blended box's silhouette (forward geometry, the frame's only edge) with 4
 // samples per pixel is closer to the 4x4 supersampled reference than with 1, and away from the
 // edges the expansion into the multisampled targets and the resolve give back the deferred
