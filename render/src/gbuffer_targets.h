@@ -15,6 +15,11 @@
 //                                axis of tangentFrame(decoded N) / pi (0.0027 degree steps;
 //                                T and -T give the same lobe), g: strength
 //   clearCoat       RGBA16_UNORM factor, roughness, octahedral coat normal xy (as the normal)
+// Only in --aa gbaa frames (the *_edges.frag variants write it, after the targets above):
+//   edges           RGBA16_SFLOAT distances in pixels from the pixel centre to the nearest edge
+//                                of its triangle to the left, right (along x), above, below
+//                                (along y), GBAA_NO_EDGE where none is within 1.5 pixels
+//                                (common/gbaa_edges.glsl)
 // Emissive goes straight into the HDR target, which the lighting pass then adds to.
 #include <array>
 #include <cstdint>
@@ -35,6 +40,8 @@ struct GBufferTargets {
     static constexpr const char* kMotionName = "gbuffer.motion";
     static constexpr VkFormat kAnisotropyFormat = VK_FORMAT_R16G16_UNORM;
     static constexpr VkFormat kClearCoatFormat = VK_FORMAT_R16G16B16A16_UNORM;
+    static constexpr VkFormat kEdgesFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    static constexpr const char* kEdgesName = "gbuffer.edges";
 
     static ImageDesc colorDesc(size_t index, uint32_t width, uint32_t height) {
         return {kColorFormats[index],
@@ -68,6 +75,8 @@ struct GBufferTargets {
     bool extended = false;  // anisotropy and clearCoat exist
     ImageRef anisotropy;
     ImageRef clearCoat;
+    bool hasEdges = false;  // edges exists
+    ImageRef edges;
 };
 
 }  // namespace candela::render

@@ -211,6 +211,12 @@ void GpuContext::createDevice(bool swapchain) {
     features.pNext = &features12;
     // The transparency occupancy pass records cluster boxes from fragment shaders.
     features.features.fragmentStoresAndAtomics = VK_TRUE;
+    // GBAA's edge variant of the G-buffer pipelines (--aa gbaa) needs a geometry shader; only
+    // frames that ask for it build one, enabling the feature costs the others nothing.
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(physicalDevice_, &supported);
+    geometryShaders_ = supported.geometryShader == VK_TRUE;
+    features.features.geometryShader = supported.geometryShader;
 
     std::vector<const char*> extensions{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
     if (swapchain) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);

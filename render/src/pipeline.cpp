@@ -137,7 +137,11 @@ Pipeline Pipeline::graphics(GpuContext& context, const GraphicsPipelineDesc& des
     VkDevice device = context.device();
     VkShaderModule vertex = createShaderModule(device, desc.vertexSpirv);
     VkShaderModule fragment = createShaderModule(device, desc.fragmentSpirv);
-    VkPipelineShaderStageCreateInfo stages[2] = {
+    const bool hasGeometry = !desc.geometrySpirv.empty();
+    VkShaderModule geometry =
+        hasGeometry ? createShaderModule(device, desc.geometrySpirv) : VK_NULL_HANDLE;
+    VkPipelineShaderStageCreateInfo stages[3] = {
+        {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
         {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
         {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -147,6 +151,9 @@ Pipeline Pipeline::graphics(GpuContext& context, const GraphicsPipelineDesc& des
     stages[1].module = fragment;
     stages[1].pName = "main";
     stages[1].pSpecializationInfo = desc.specialization ? desc.specialization->info() : nullptr;
+    stages[2].stage = VK_SHADER_STAGE_GEOMETRY_BIT;
+    stages[2].module = geometry;
+    stages[2].pName = "main";
 
     VkPipelineVertexInputStateCreateInfo vertexInput{
         VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
@@ -215,7 +222,7 @@ Pipeline Pipeline::graphics(GpuContext& context, const GraphicsPipelineDesc& des
 
     VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
     info.pNext = &rendering;
-    info.stageCount = 2;
+    info.stageCount = hasGeometry ? 3 : 2;
     info.pStages = stages;
     info.pVertexInputState = &vertexInput;
     info.pInputAssemblyState = &inputAssembly;
@@ -231,9 +238,12 @@ Pipeline Pipeline::graphics(GpuContext& context, const GraphicsPipelineDesc& des
         vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline_);
     const uint64_t createNs = nanosecondsSince(start);
     context.notePipelineCreated(createNs);
-    logPipelineCreation("graphics", desc.vertexSpirv.size() + desc.fragmentSpirv.size(), createNs);
+    logPipelineCreation(
+        "graphics", desc.vertexSpirv.size() + desc.fragmentSpirv.size() + desc.geometrySpirv.size(),
+        createNs);
     vkDestroyShaderModule(device, vertex, nullptr);
     vkDestroyShaderModule(device, fragment, nullptr);
+    if (hasGeometry) vkDestroyShaderModule(device, geometry, nullptr);
     if (result != VK_SUCCESS) throwVkError("vkCreateGraphicsPipelines", result);
     return p;
 }

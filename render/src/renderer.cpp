@@ -30,6 +30,7 @@
 #include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/forward_transparent/msaa_samples.h"
 #include "passes/fxaa/fxaa_pass.h"
+#include "passes/gbaa/gbaa_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/hair/hair_pass.h"
 #include "passes/lighting/lighting_pass.h"
@@ -90,6 +91,7 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
     if (options_.aa == AntiAliasing::Taa) taaPass_ = std::make_unique<TaaPass>(context_);
     if (options_.aa == AntiAliasing::Fxaa) fxaaPass_ = std::make_unique<FxaaPass>(context_);
+    if (options_.aa == AntiAliasing::Gbaa) gbaaPass_ = std::make_unique<GbaaPass>(context_);
     if (options_.bloomStrength > 0.0f) bloomPass_ = std::make_unique<BloomPass>(context_);
     if (options_.exposure == ExposureMode::Auto) {
         histogramPass_ = std::make_unique<ExposureHistogramPass>(context_);
@@ -175,7 +177,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     features_ = features.names();
     // Layers blend in the G-buffer pass only; the lighting variant does not change with them.
     gbufferPass_->prepare(usesMaterialLayers(inputs.scene, resources),
-                          features.materialExtensions());
+                          features.materialExtensions(), gbaaPass_ != nullptr);
     if (gbufferPass_->materialLayers()) features_.push_back("material_layers");
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
     uploadFrameData(inputs);
@@ -215,6 +217,13 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.clearCoat = g.createImage(
             "gbuffer.clear_coat",
             GBufferTargets::extensionDesc(GBufferTargets::kClearCoatFormat, width_, height_));
+    }
+    h.hasEdges = gbaaPass_ != nullptr;
+    h.separateEdges = GBufferPass::separateEdges(h.extended, h.hasEdges);
+    if (h.hasEdges) {
+        h.edges = g.createImage(
+            GBufferTargets::kEdgesName,
+            GBufferTargets::extensionDesc(GBufferTargets::kEdgesFormat, width_, height_));
     }
     h.camera = g.importBuffer("camera", &cameraBuffer_);
     h.lights = g.importBuffer("lights", &lights_->buffer());
@@ -318,6 +327,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             targets.anisotropy = ctx.image(ids.anisotropy);
             targets.clearCoat = ctx.image(ids.clearCoat);
         }
+        targets.hasEdges = ids.hasEdges && !ids.separateEdges;
+        if (ids.hasEdges) targets.edges = ctx.image(ids.edges);
         return targets;
     };
     {
@@ -328,7 +339,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                                inputs.clearRadiance, inputs.scene, resources,
                                                cameraBuffer_, previousWorlds_);
                       });
-        p.read(h.camera, Use::Uniform, kRasterStages);
+        // GBAA's geometry stage reads the target size from the camera block too.
+        p.read(h.camera, Use::Uniform,
+               kRasterStages | (h.hasEdges ? VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT
+                                           : VkPipelineStageFlags2(0)));
         readDeformed(p);
         for (ResourceHandle& c : h.color)
             c = p.write(c, Use::ColorAttachment);
@@ -339,6 +353,18 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             h.anisotropy = p.write(h.anisotropy, Use::ColorAttachment);
             h.clearCoat = p.write(h.clearCoat, Use::ColorAttachment);
         }
+        if (h.hasEdges && !h.separateEdges) h.edges = p.write(h.edges, Use::ColorAttachment);
+    }
+    if (h.separateEdges) {
+        auto p = g.addPass(
+            "gbuffer_edges", PassKind::Device, [this, ids, &inputs, &resources](PassContext& ctx) {
+                gbufferPass_->recordEdges(ctx.cmd(), ctx.image(ids.edges), ctx.image(ids.depth),
+                                          inputs.scene, resources, cameraBuffer_, previousWorlds_);
+            });
+        p.read(h.camera, Use::Uniform, kRasterStages | VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT);
+        readDeformed(p);
+        p.read(h.depth, Use::DepthRead);
+        h.edges = p.write(h.edges, Use::ColorAttachment);
     }
     if (features.clustered) {
         h.clusters =
@@ -880,6 +906,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     motionId_ = h.motion.id;
     motionVersion_ = h.motion.version;
+    edgesId_ = h.hasEdges ? h.edges.id : UINT32_MAX;
+    edgesVersion_ = h.edges.version;
     return h.hdr.version;
 }
 
@@ -946,6 +974,7 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     } else {
         historyValid_ = false;  // a frame without history breaks the sequence
     }
+    if (gbaaPass_ && sceneFrame) hdr.version = declareGbaa(hdr.id, hdr.version);
     if (histogramPass_ && sceneFrame) declareHistogram(hdr.id, hdr.version);
     if (bloomPass_ && features_[0] != "test_triangle") {
         hdr.version = declareBloom(hdr.id, hdr.version);

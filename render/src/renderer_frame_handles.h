@@ -22,6 +22,9 @@ struct Renderer::SceneHandles {
     ClusterLightLists::Lists clusters;
     bool extended = false;  // the anisotropy and clear-coat targets (gbuffer_targets.h)
     ResourceHandle anisotropy, clearCoat;
+    bool hasEdges = false;       // GBAA's edge target (--aa gbaa; gbuffer_targets.h)
+    bool separateEdges = false;  // written by its own pass (GBufferPass::separateEdges)
+    ResourceHandle edges;
 };
 
 struct Renderer::ShadowReads {

@@ -25,6 +25,8 @@ const char* antiAliasingName(AntiAliasing aa) {
             return "fxaa";
         case AntiAliasing::Taa:
             return "taa";
+        case AntiAliasing::Gbaa:
+            return "gbaa";
     }
     return "unknown";
 }

@@ -78,7 +78,8 @@ constexpr std::pair<const char*, render::IblMode> kIbls[] = {
 constexpr std::pair<const char*, render::AntiAliasing> kAntiAliasing[] = {
     {"off", render::AntiAliasing::Off},
     {"fxaa", render::AntiAliasing::Fxaa},
-    {"taa", render::AntiAliasing::Taa}};
+    {"taa", render::AntiAliasing::Taa},
+    {"gbaa", render::AntiAliasing::Gbaa}};
 
 constexpr std::pair<const char*, render::ExposureMode> kExposures[] = {
     {"manual", render::ExposureMode::Manual}, {"auto", render::ExposureMode::Auto}};
@@ -162,7 +163,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n"
            "  --area-lights representative|ltc   sphere and tube lights' integration "
            "(default: ltc)\n"
-           "  --aa off|fxaa|taa         antialiasing (default: the scene file's, else taa)\n"
+           "  --aa off|fxaa|taa|gbaa    antialiasing (default: the scene file's, else taa)\n"
            "  --msaa 1|2|4|8            samples per pixel of the forward (blended) pass, with\n"
            "                            --aa (default: the scene file's, else 1 = off)\n"
            "  --bloom FRACTION          radiance scattered into glare, 0 (off) to 1\n"
@@ -286,7 +287,7 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
         } else if (arg == "--aa") {
             render::AntiAliasing aa{};
             if (!value() || !parseChoice(v, kAntiAliasing, aa)) {
-                return fail("--aa needs off, fxaa or taa, got '" + v + "'");
+                return fail("--aa needs off, fxaa, taa or gbaa, got '" + v + "'");
             }
             options.aa = aa;
         } else if (arg == "--msaa") {

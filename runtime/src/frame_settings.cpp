@@ -48,10 +48,11 @@ constexpr EnumMapping<content::SceneBrdf, render::BrdfModel, 2> kBrdf{{
     {content::SceneBrdf::Ue4, render::BrdfModel::Ue4},
     {content::SceneBrdf::EnergyConserving, render::BrdfModel::EnergyConserving},
 }};
-constexpr EnumMapping<content::SceneAntiAliasing, render::AntiAliasing, 3> kAntiAliasing{{
+constexpr EnumMapping<content::SceneAntiAliasing, render::AntiAliasing, 4> kAntiAliasing{{
     {content::SceneAntiAliasing::Off, render::AntiAliasing::Off},
     {content::SceneAntiAliasing::Fxaa, render::AntiAliasing::Fxaa},
     {content::SceneAntiAliasing::Taa, render::AntiAliasing::Taa},
+    {content::SceneAntiAliasing::Gbaa, render::AntiAliasing::Gbaa},
 }};
 constexpr EnumMapping<content::SceneExposure, render::ExposureMode, 2> kExposure{{
     {content::SceneExposure::Manual, render::ExposureMode::Manual},

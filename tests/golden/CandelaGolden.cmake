@@ -2,7 +2,7 @@
 # with stored images by candela-golden (README.md "Golden tests" has the metric).
 #
 #   candela_add_golden_test(NAME lobby SCENE scenes/lobby.scene.json SIZE 256x256 FRAMES 3
-#                           [EXPECTED_DIR goldens] [ENGINE my-game] [AA off|fxaa|taa]
+#                           [EXPECTED_DIR goldens] [ENGINE my-game] [AA off|fxaa|taa|gbaa]
 #                           [BLOOM fraction] [ARGS "--step 0.25"])
 #
 # registers the ctest `golden.lobby` (label `golden`, validation required). It renders frame 3
@@ -80,8 +80,8 @@ function(candela_add_golden_test)
   if(NOT ARG_FRAMES MATCHES "^[1-9][0-9]*$")
     message(FATAL_ERROR "${where}: FRAMES must be a positive frame count, got '${ARG_FRAMES}'")
   endif()
-  if(ARG_AA AND NOT ARG_AA MATCHES "^(off|fxaa|taa)$")
-    message(FATAL_ERROR "${where}: AA must be off, fxaa or taa, got '${ARG_AA}'")
+  if(ARG_AA AND NOT ARG_AA MATCHES "^(off|fxaa|taa|gbaa)$")
+    message(FATAL_ERROR "${where}: AA must be off, fxaa, taa or gbaa, got '${ARG_AA}'")
   endif()
   if(NOT ARG_EXPECTED_DIR)
     set(ARG_EXPECTED_DIR expected)

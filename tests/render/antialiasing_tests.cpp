@@ -1,5 +1,5 @@
-// Antialiasing (issue 24): TAA and FXAA against a 4x4 supersampled reference on hard edges,
-// TAA's temporal stability under a slow pan, its ghosting behind a moving bright object, and
+// Antialiasing (issue 24): TAA, FXAA and GBAA against a 4x4 supersampled reference on hard
+// edges, TAA's temporal stability under a slow pan, its ghosting behind a moving bright object, and
 // the motion vectors of skinned geometry.
 #include <gtest/gtest.h>
 
@@ -15,11 +15,11 @@ protected:
     GpuContext context{requiredValidation()};
 };
 
-// Edge RMSE of no AA, FXAA and TAA after 16 static frames against the 4x4 supersampled
+// Edge RMSE of no AA, FXAA, TAA after 16 static frames and GBAA against the 4x4 supersampled
 // reference (displayed values; reference resolved in linear light: antialiasing_scenes.h).
 struct EdgeErrors {
     size_t edgePixels = 0;
-    double off = 0.0, fxaa = 0.0, taa = 0.0;
+    double off = 0.0, fxaa = 0.0, taa = 0.0, gbaa = 0.0;
 };
 EdgeErrors measureEdgeErrors(GpuContext& context, TestScene (*make)(uint32_t, uint32_t)) {
     constexpr uint32_t kWidth = 128, kHeight = 96;
@@ -35,32 +35,73 @@ EdgeErrors measureEdgeErrors(GpuContext& context, TestScene (*make)(uint32_t, ui
         edgeRmse(displayed(renderStatic(context, scene, AntiAliasing::Fxaa, 1)), reference, mask);
     e.taa =
         edgeRmse(displayed(renderStatic(context, scene, AntiAliasing::Taa, 16)), reference, mask);
-    std::printf("edge RMSE over %zu pixels: off %.4f, fxaa %.4f (%.2fx), taa %.4f (%.2fx)\n",
-                e.edgePixels, e.off, e.fxaa, e.fxaa / e.off, e.taa, e.taa / e.off);
+    e.gbaa =
+        edgeRmse(displayed(renderStatic(context, scene, AntiAliasing::Gbaa, 1)), reference, mask);
+    std::printf(
+        "edge RMSE over %zu pixels: off %.4f, fxaa %.4f (%.2fx), taa %.4f (%.2fx), gbaa %.4f "
+        "(%.2fx)\n",
+        e.edgePixels, e.off, e.fxaa, e.fxaa / e.off, e.taa, e.taa / e.off, e.gbaa, e.gbaa / e.off);
     return e;
 }
 
 // The issue's goals: TAA after 16 static frames at most a third of the unantialiased edge
-// RMSE, the post-process AA at most half.
+// RMSE, the post-process AAs (FXAA, GBAA) at most half. GBAA measured 0.23x.
 TEST_F(Antialiasing, EdgeErrorAgainstSupersamplingOnABoxOnAFloor) {
     const EdgeErrors e = measureEdgeErrors(context, &boxOnFloor);
     ASSERT_GT(e.edgePixels, 200u);  // the scene has edges to measure
     EXPECT_GT(e.off, 0.02);         // the unantialiased frame really has staircases
     EXPECT_LE(e.fxaa, e.off / 2.0);
     EXPECT_LE(e.taa, e.off / 3.0);
+    EXPECT_LE(e.gbaa, e.off / 2.0);
+    EXPECT_EQ(context.validationMessages(), 0u);  // GBAA's geometry stage and resolve included
 }
 
 // The demo's colonnade (labelled slow: a 512x384 reference). TAA meets the issue's goal
-// (0.25x measured); FXAA cuts the error but misses the goal of half (0.60x measured), so it is
-// held to the measured cut with some margin. What it misses is not a bug in one direction
-// (render_fxaa_tests checks mirrored input gives mirrored output): render/README.md
-// "Antialiasing" shows two spans of the 1x frame that look alike and differ in the reference.
+// (0.25x measured), and GBAA the post-process AA's (0.36x measured); FXAA cuts the error but
+// misses the goal of half (0.60x measured), so it is held to the measured cut with some margin.
+// What it misses is not a bug in one direction (render_fxaa_tests checks mirrored input gives
+// mirrored output): render/README.md "Antialiasing" shows two spans of the 1x frame that look alike
+// and differ in the reference.
 TEST_F(Antialiasing, EdgeErrorAgainstSupersamplingOnTheColonnade) {
     const EdgeErrors e = measureEdgeErrors(context, &colonnade);
     ASSERT_GT(e.edgePixels, 1000u);
     EXPECT_GT(e.off, 0.02);
     EXPECT_LT(e.fxaa, e.off * 0.75);
     EXPECT_LE(e.taa, e.off / 3.0);
+    EXPECT_LE(e.gbaa, e.off / 2.0);
+}
+
+// The box on a floor with a clear-coated box: its frames have the anisotropy and clear-coat
+// targets, so GBAA's edge target comes from a pass of its own (gbuffer_edges).
+TestScene clearCoatBoxOnFloor(uint32_t width, uint32_t height) {
+    TestScene scene = boxOnFloor(width, height);
+    scene.model.materials[1].clearcoatFactor = 0.5f;  // the box (added second)
+    scene.model.materials[1].clearcoatRoughnessFactor = 0.3f;
+    return scene;
+}
+
+// GBAA in a frame with the extended G-buffer targets: the edges come from the separate pass
+// (eight colour attachments are the most a device guarantees) and still meet the goal.
+TEST_F(Antialiasing, GbaaWithTheExtendedTargetsWritesItsEdgesInAPassOfItsOwn) {
+    constexpr uint32_t kWidth = 64, kHeight = 48;
+    const std::vector<float> reference =
+        supersampledReference(context, &clearCoatBoxOnFloor, kWidth, kHeight);
+    const std::vector<uint8_t> mask = edgeMask(reference, kWidth, kHeight);
+    TestScene scene = clearCoatBoxOnFloor(kWidth, kHeight);
+    RendererStats stats;
+    const double off =
+        edgeRmse(displayed(renderStatic(context, scene, AntiAliasing::Off, 1)), reference, mask);
+    const double gbaa = edgeRmse(
+        displayed(renderStatic(context, scene, AntiAliasing::Gbaa, 1, &stats)), reference, mask);
+    std::printf("clear-coated box, 64x48: edge RMSE off %.4f, gbaa %.4f (%.2fx)\n", off, gbaa,
+                gbaa / off);
+    bool separatePass = false;
+    for (const auto& [name, ms] : stats.passMs)
+        separatePass |= name == "gbuffer_edges";
+    EXPECT_TRUE(separatePass);
+    EXPECT_GT(off, 0.02);
+    EXPECT_LE(gbaa, off / 2.0);
+    EXPECT_EQ(context.validationMessages(), 0u);
 }
 
 // Forward MSAA: a blended box's silhouette (forward geometry, the frame's only edge) with 4

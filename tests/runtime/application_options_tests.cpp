@@ -107,7 +107,10 @@ TEST(ApplicationOptions, AntiAliasingAndBloomFlags) {
     EXPECT_FALSE(none.options->aa.has_value());    // the scene file's, else TAA
     EXPECT_FALSE(none.options->msaa.has_value());  // the scene file's, else 1 (off)
     EXPECT_FALSE(none.options->bloom.has_value());
-    EXPECT_NE(parseError({"--aa", "smaa"}).find("--aa needs off, fxaa or taa, got 'smaa'"),
+    CommandLine gbaa = parseCommandLine({"--aa", "gbaa"});
+    ASSERT_TRUE(gbaa) << gbaa.error;
+    EXPECT_EQ(gbaa.options->aa, candela::render::AntiAliasing::Gbaa);
+    EXPECT_NE(parseError({"--aa", "smaa"}).find("--aa needs off, fxaa, taa or gbaa, got 'smaa'"),
               std::string::npos);
     EXPECT_NE(
         parseError({"--msaa", "3"}).find("--msaa needs 1, 2, 4 or 8 samples per pixel, got '3'"),

@@ -922,7 +922,8 @@ TEST(Cli, AntialiasingBloomAndExposureFlagsAndStats) {
 
     RunResult bad = runCandela(kTriangle + "--aa msaa");
     EXPECT_EQ(bad.exitCode, 2);
-    EXPECT_NE(bad.output.find("--aa needs off, fxaa or taa"), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find("--aa needs off, fxaa, taa or gbaa"), std::string::npos)
+        << bad.output;
 }
 
 // Issues 16, 17 and 24: a scene file's top-level "scattering", "volumetrics" and

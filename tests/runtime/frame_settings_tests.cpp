@@ -105,3 +105,9 @@ TEST(FrameSettings, AnAmbientOcclusionBlockWithoutAModeKeepsTheDefault) {
     auto world = worldWith(R"("ambient_occlusion": {"radius": 2.0})");
     EXPECT_EQ(rendererOptionsFor(ApplicationOptions{}, world.get()).ao, render::AoMode::Gtao);
 }
+
+// GBAA (issue 24, added later): the scene file's "aa": "gbaa" reaches the renderer.
+TEST(FrameSettings, TheSceneFileCanAskForGbaa) {
+    auto world = worldWith(R"("aa": "gbaa")");
+    EXPECT_EQ(rendererOptionsFor(ApplicationOptions{}, world.get()).aa, render::AntiAliasing::Gbaa);
+}

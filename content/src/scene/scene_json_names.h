@@ -52,10 +52,11 @@ inline constexpr EnumNames<SceneBrdf, 2> kSceneBrdfs{
     {{SceneBrdf::Ue4, "ue4"}, {SceneBrdf::EnergyConserving, "energy-conserving"}}};
 inline constexpr EnumNames<SceneExposure, 2> kSceneExposures{
     {{SceneExposure::Manual, "manual"}, {SceneExposure::Auto, "auto"}}};
-inline constexpr EnumNames<SceneAntiAliasing, 3> kSceneAntiAliasing{
+inline constexpr EnumNames<SceneAntiAliasing, 4> kSceneAntiAliasing{
     {{SceneAntiAliasing::Off, "off"},
      {SceneAntiAliasing::Fxaa, "fxaa"},
-     {SceneAntiAliasing::Taa, "taa"}}};
+     {SceneAntiAliasing::Taa, "taa"},
+     {SceneAntiAliasing::Gbaa, "gbaa"}}};
 
 inline constexpr EnumNames<SceneSsrMode, 3> kSceneSsrModes{
     {{SceneSsrMode::Off, "off"},

@@ -111,9 +111,9 @@ struct SceneEntity {
 // command line's --brdf overrides it. Mirrors render::BrdfModel (content does not see render).
 enum class SceneBrdf { Ue4, EnergyConserving };
 
-// The antialiasing a scene asks for (top-level "aa": "off", "fxaa" or "taa"); the command
-// line's --aa overrides it. Mirrors render::AntiAliasing.
-enum class SceneAntiAliasing { Off, Fxaa, Taa };
+// The antialiasing a scene asks for (top-level "aa": "off", "fxaa", "taa" or "gbaa"); the
+// command line's --aa overrides it. Mirrors render::AntiAliasing.
+enum class SceneAntiAliasing { Off, Fxaa, Taa, Gbaa };
 
 // Where the exposure comes from (top-level "exposure": "manual", the camera's EV100, or "auto",
 // metered and adapted); --exposure overrides it. Mirrors render::ExposureMode.

@@ -40,6 +40,10 @@ public:
     const std::string& deviceName() const { return deviceName_; }
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
     const VkPhysicalDeviceProperties& properties() const { return properties_; }
+    // Whether the device has geometry shaders (enabled when it does): GBAA's G-buffer variant
+    // needs one to see each triangle's edges (lavapipe has them; it has no fragment-shader
+    // barycentrics, VK_KHR/NV_fragment_shader_barycentric).
+    bool geometryShaders() const { return geometryShaders_; }
 
     // Warnings and errors reported by the validation layer since start-up.
     uint32_t validationMessages() const { return validationMessages_.load(); }
@@ -87,6 +91,7 @@ private:
     std::unique_ptr<MemoryAllocator> memoryAllocator_;  // freed before the device
     std::string deviceName_;
     bool echoValidationMessages_ = true;
+    bool geometryShaders_ = false;
     std::atomic<uint32_t> validationMessages_{0};
     std::atomic<uint32_t> pipelinesCreated_{0};
     std::atomic<uint64_t> pipelineCreateNs_{0};

@@ -31,6 +31,8 @@ private:
 struct GraphicsPipelineDesc {
     std::span<const uint32_t> vertexSpirv;
     std::span<const uint32_t> fragmentSpirv;
+    // Optional (empty: none): needs GpuContext::geometryShaders().
+    std::span<const uint32_t> geometrySpirv;
     std::vector<VkVertexInputBindingDescription> vertexBindings;
     std::vector<VkVertexInputAttributeDescription> vertexAttributes;
     std::vector<VkFormat> colorFormats;

@@ -50,6 +50,7 @@ class SceneResources;
 class TonemapPass;
 class TaaPass;
 class FxaaPass;
+class GbaaPass;
 class BloomPass;
 class ExposureHistogramPass;
 class ShadowPass;
@@ -130,6 +131,9 @@ private:
     void uploadFrameData(const FrameInputs& inputs);
     // TAA after the scene's passes: resolve into the history, copy back into the HDR target.
     uint32_t declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposure);
+    // GBAA after the scene's passes (renderer_gbaa.cpp): resolve across the G-buffer's edges
+    // into a transient, copy back into the HDR target.
+    uint32_t declareGbaa(uint32_t hdrId, uint32_t hdrVersion);
     // Bloom on the HDR target: the pyramid's passes and the composite (in place).
     uint32_t declareBloom(uint32_t hdrId, uint32_t hdrVersion);
     // Auto exposure: meters last frame's histogram, adapts, and returns this frame's EV100.
@@ -187,6 +191,9 @@ private:
     GpuBuffer motionReadback_;  // captureMotionVectors: RG16F texels, host-visible
     std::unique_ptr<TaaPass> taaPass_;
     std::unique_ptr<FxaaPass> fxaaPass_;
+    std::unique_ptr<GbaaPass> gbaaPass_;
+    uint32_t edgesId_ = UINT32_MAX;  // this frame's gbuffer.edges (--aa gbaa) in the graph
+    uint32_t edgesVersion_ = 0;
     std::unique_ptr<BloomPass> bloomPass_;
     std::unique_ptr<ExposureHistogramPass> histogramPass_;
     GpuBuffer histogram_;  // host-visible: read back at the start of the next frame

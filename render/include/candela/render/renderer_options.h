@@ -43,8 +43,12 @@ enum class AntiAliasing {
     Off,   // one sample per pixel
     Fxaa,  // post-process, after tonemapping: no history, no jitter
     Taa,   // temporal: jittered projection, history reprojected with the motion vectors
+    // Geometry buffer AA (Persson 2011): the G-buffer pass also writes each pixel's offset to
+    // the nearest triangle edge, a post-process blends across it by the covered fraction; no
+    // history, no jitter.
+    Gbaa,
 };
-const char* antiAliasingName(AntiAliasing aa);  // "off", "fxaa", "taa"
+const char* antiAliasingName(AntiAliasing aa);  // "off", "fxaa", "taa", "gbaa"
 
 // How sphere and tube lights (and the area shapes of issue 15) are integrated (`--area-lights`;
 // render/README.md "Area lights by linearly transformed cosines").

@@ -1,7 +1,9 @@
-// The G-buffer fragment shader's body, compiled four times: gbuffer.frag (the four targets
+// The G-buffer fragment shader's body, compiled eight times: gbuffer.frag (the four targets
 // every frame has), gbuffer_extended.frag (GBUFFER_MATERIAL_EXTENSIONS: also the anisotropy and
 // clear-coat targets, for frames whose materials use them), and each of them with
-// GBUFFER_MATERIAL_LAYERS (material layers blended, for frames with a layered material).
+// GBUFFER_MATERIAL_LAYERS (material layers blended, for frames with a layered material); and
+// those four with GBUFFER_EDGES (*_edges.frag: GBAA's edge target after the others, fed by
+// gbuffer_edges.geom, for --aa gbaa frames).
 #include "gbuffer_bindings.h"
 // Writes the G-buffer (layout in gbuffer_targets.h) and the emissive radiance into the HDR
 // target. Blended materials are drawn by the forward transparency pass instead.
@@ -13,6 +15,9 @@
 #include "common/material_layers.glsl"
 #endif
 #include "common/motion_vectors.glsl"
+#ifdef GBUFFER_EDGES
+#include "common/gbaa_edges.glsl"
+#endif
 
 layout(push_constant) uniform Draw {
     mat4 world;
@@ -26,6 +31,9 @@ layout(location = 3) in vec2 inUv1;
 layout(location = 4) in vec4 inColor;
 layout(location = 5) in vec4 inCurrentClip;
 layout(location = 6) in vec4 inPreviousClip;
+#ifdef GBUFFER_EDGES
+layout(location = 7) flat in vec3 inEdgeLines[3];  // gbuffer_edges.geom
+#endif
 
 layout(location = 0) out vec4 outBaseColor;  // rgb, a = occlusion
 layout(location = 1) out vec4 outNormalRoughMetal;  // oct normal xy, roughness, metallic
@@ -47,6 +55,14 @@ float anisotropyAngle(vec2 encodedNormal, vec3 T) {
     if (angle < 0.0) angle += PI;
     return min(angle / PI, 1.0);
 }
+#endif
+#ifdef GBUFFER_EDGES
+// gbuffer.edges (common/gbaa_edges.glsl), after the targets above.
+#ifdef GBUFFER_MATERIAL_EXTENSIONS
+layout(location = 8) out vec4 outEdges;
+#else
+layout(location = 6) out vec4 outEdges;
+#endif
 #endif
 
 void main() {
@@ -75,5 +91,8 @@ void main() {
                                             : 0.0,
                          e.anisotropy);
     outClearCoat = vec4(e.clearCoat, e.clearCoatRoughness, octEncode(e.clearCoatN));
+#endif
+#ifdef GBUFFER_EDGES
+    outEdges = gbaaEdgeDistances(gl_FragCoord.xy, inEdgeLines);
 #endif
 }

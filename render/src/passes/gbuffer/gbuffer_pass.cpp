@@ -1,17 +1,27 @@
 #include "passes/gbuffer/gbuffer_pass.h"
 
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 
 #include "candela/render/gpu_buffer.h"
+#include "candela/render/gpu_context.h"
 #include "candela/render/scene_resources.h"
+#include "common/gbaa_edges.h"
 #include "gbuffer_targets.h"
 #include "mesh_vertex_input.h"
 #include "passes/gbuffer/gbuffer_bindings.h"
 #include "shaders/gbuffer.frag.spv.h"
 #include "shaders/gbuffer.vert.spv.h"
+#include "shaders/gbuffer_edges.frag.spv.h"
+#include "shaders/gbuffer_edges.geom.spv.h"
+#include "shaders/gbuffer_edges_only.frag.spv.h"
 #include "shaders/gbuffer_extended.frag.spv.h"
+#include "shaders/gbuffer_extended_edges.frag.spv.h"
 #include "shaders/gbuffer_extended_layered.frag.spv.h"
+#include "shaders/gbuffer_extended_layered_edges.frag.spv.h"
 #include "shaders/gbuffer_layered.frag.spv.h"
+#include "shaders/gbuffer_layered_edges.frag.spv.h"
 #include "vk/viewport.h"
 
 namespace candela::render {
@@ -26,8 +36,10 @@ struct DrawPush {
 static_assert(GBUFFER_BINDING_FIRST_TEXTURE + uint32_t(kTextureSlotCount) ==
               GBUFFER_BINDING_FIRST_LAYER_TEXTURE);
 
-// The pipeline description every variant shares; `extended` adds the two extension targets.
-GraphicsPipelineDesc gbufferDesc(std::span<const uint32_t> fragmentSpirv, bool extended) {
+// The pipeline description every variant shares; `extended` adds the two extension targets,
+// `edges` GBAA's geometry stage and edge target after them.
+GraphicsPipelineDesc gbufferDesc(std::span<const uint32_t> fragmentSpirv, bool extended,
+                                 bool edges) {
     GraphicsPipelineDesc desc;
     desc.vertexSpirv = gbuffer_vert_spv;
     setMeshVertexInput(desc);
@@ -42,12 +54,20 @@ GraphicsPipelineDesc gbufferDesc(std::span<const uint32_t> fragmentSpirv, bool e
         desc.colorFormats.push_back(GBufferTargets::kAnisotropyFormat);
         desc.colorFormats.push_back(GBufferTargets::kClearCoatFormat);
     }
+    if (edges) {
+        desc.geometrySpirv = gbuffer_edges_geom_spv;
+        desc.colorFormats.push_back(GBufferTargets::kEdgesFormat);
+    }
     return desc;
 }
 
-std::vector<DescriptorBinding> gbufferBindings(bool materialLayers) {
+std::vector<DescriptorBinding> gbufferBindings(bool materialLayers, bool edges) {
+    // The geometry stage reads the target size from the camera block.
+    const VkShaderStageFlags cameraStages =
+        VK_SHADER_STAGE_VERTEX_BIT |
+        (edges ? VkShaderStageFlags(VK_SHADER_STAGE_GEOMETRY_BIT) : 0u);
     std::vector<DescriptorBinding> bindings = {
-        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cameraStages},
         {PREVIOUS_WORLDS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
         {GBUFFER_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -69,16 +89,46 @@ std::vector<DescriptorBinding> gbufferBindings(bool materialLayers) {
 
 GBufferPass::GBufferPass(GpuContext& context) : context_(context) {}
 
-void GBufferPass::prepare(bool materialLayers, bool extended) {
+void GBufferPass::prepare(bool materialLayers, bool extended, bool edges) {
     materialLayers_ = materialLayers;
-    Pipeline& pipeline = variants_[variantIndex(materialLayers, extended)];
+    if (edges && !context_.geometryShaders()) {
+        throw std::runtime_error("--aa gbaa needs geometry shaders, which " +
+                                 context_.deviceName() + " does not have");
+    }
+    if (separateEdges(extended, edges)) {
+        edges = false;  // the main pass without them, recordEdges after it
+        if (edgesOnly_.handle() == VK_NULL_HANDLE) {
+            GraphicsPipelineDesc desc;
+            desc.vertexSpirv = gbuffer_vert_spv;
+            desc.geometrySpirv = gbuffer_edges_geom_spv;
+            desc.fragmentSpirv = gbuffer_edges_only_frag_spv;
+            setMeshVertexInput(desc);
+            desc.colorFormats = {GBufferTargets::kEdgesFormat};
+            desc.depthFormat = GBufferTargets::kDepthFormat;
+            desc.depthCompare = VK_COMPARE_OP_EQUAL;  // the surface the G-buffer holds
+            desc.depthWrite = false;
+            desc.dynamicCullMode = true;
+            const DescriptorBinding bindings[] = {
+                {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                 VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT},
+                {PREVIOUS_WORLDS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                 VK_SHADER_STAGE_VERTEX_BIT}};
+            edgesOnly_ = Pipeline::graphics(context_, desc, bindings, sizeof(DrawPush));
+        }
+    }
+    const size_t index = variantIndex(materialLayers, extended, edges);
+    Pipeline& pipeline = variants_[index];
     if (pipeline.handle() != VK_NULL_HANDLE) return;
-    const std::span<const uint32_t> fragments[4] = {gbuffer_frag_spv, gbuffer_extended_frag_spv,
+    const std::span<const uint32_t> fragments[8] = {gbuffer_frag_spv,
+                                                    gbuffer_extended_frag_spv,
                                                     gbuffer_layered_frag_spv,
-                                                    gbuffer_extended_layered_frag_spv};
-    pipeline = Pipeline::graphics(
-        context_, gbufferDesc(fragments[variantIndex(materialLayers, extended)], extended),
-        gbufferBindings(materialLayers), sizeof(DrawPush));
+                                                    gbuffer_extended_layered_frag_spv,
+                                                    gbuffer_edges_frag_spv,
+                                                    gbuffer_extended_edges_frag_spv,
+                                                    gbuffer_layered_edges_frag_spv,
+                                                    gbuffer_extended_layered_edges_frag_spv};
+    pipeline = Pipeline::graphics(context_, gbufferDesc(fragments[index], extended, edges),
+                                  gbufferBindings(materialLayers, edges), sizeof(DrawPush));
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
@@ -87,18 +137,25 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
                          const GpuBuffer& previousWorlds) const {
     const uint32_t width = hdr.desc().width;
     const uint32_t height = hdr.desc().height;
-    std::array<VkRenderingAttachmentInfo, 8> colors{};
-    const uint32_t colorCount = targets.extended ? 8u : 6u;
+    std::array<VkRenderingAttachmentInfo, 9> colors{};
+    const uint32_t materialCount = targets.extended ? 8u : 6u;
+    const uint32_t colorCount = materialCount + (targets.hasEdges ? 1u : 0u);
     for (size_t i = 0; i < colorCount; ++i) {
         colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-        colors[i].imageView = i < 4    ? targets.color[i].view()
-                              : i == 4 ? hdr.view()
-                              : i == 5 ? targets.motion.view()
-                              : i == 6 ? targets.anisotropy.view()
-                                       : targets.clearCoat.view();
+        colors[i].imageView = i == materialCount ? targets.edges.view()
+                              : i < 4            ? targets.color[i].view()
+                              : i == 4           ? hdr.view()
+                              : i == 5           ? targets.motion.view()
+                              : i == 6           ? targets.anisotropy.view()
+                                                 : targets.clearCoat.view();
         colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
         colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    }
+    // No edge where nothing is drawn (the background has no triangle).
+    if (targets.hasEdges) {
+        colors[materialCount].clearValue.color = {
+            {float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE)}};
     }
     // Shading model 0 (Unlit) where nothing is drawn; the HDR target starts as the background.
     colors[4].clearValue.color = {{clearRadiance[0], clearRadiance[1], clearRadiance[2], 1.0f}};
@@ -117,7 +174,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
 
     vkCmdBeginRendering(cmd, &rendering);
     setViewportAndScissor(cmd, width, height);
-    const Pipeline& pipeline = variants_[variantIndex(materialLayers_, targets.extended)];
+    const Pipeline& pipeline =
+        variants_[variantIndex(materialLayers_, targets.extended, targets.hasEdges)];
     pipeline.bind(cmd);
 
     const GpuBuffer& materials = resources.materialBuffer();
@@ -159,6 +217,57 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
                          resources.previousVertexBufferOf(draw));
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
         // firstInstance: the draw's index, which gbuffer.vert reads its previous world by.
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
+    }
+    vkCmdEndRendering(cmd);
+}
+
+void GBufferPass::recordEdges(VkCommandBuffer cmd, const ImageRef& edges, const ImageRef& depth,
+                              const FrameScene& scene, SceneResources& resources,
+                              const GpuBuffer& cameraBuffer,
+                              const GpuBuffer& previousWorlds) const {
+    const uint32_t width = edges.desc().width;
+    const uint32_t height = edges.desc().height;
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = edges.view();
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    color.clearValue.color = {
+        {float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE)}};
+    VkRenderingAttachmentInfo depthInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depthInfo.imageView = depth.view();
+    depthInfo.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
+    depthInfo.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    depthInfo.storeOp = VK_ATTACHMENT_STORE_OP_NONE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    rendering.pDepthAttachment = &depthInfo;
+
+    vkCmdBeginRendering(cmd, &rendering);
+    setViewportAndScissor(cmd, width, height);
+    edgesOnly_.bind(cmd);
+    VkDescriptorBufferInfo cameraInfo{cameraBuffer.handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo previousInfo{previousWorlds.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(PREVIOUS_WORLDS_BINDING, &previousInfo)};
+    edgesOnly_.pushDescriptors(cmd, writes);
+    for (uint32_t drawIndex = 0; drawIndex < uint32_t(scene.draws.size()); ++drawIndex) {
+        const DrawItem& draw = scene.draws[drawIndex];
+        const GpuMesh& mesh = resources.mesh(draw.mesh);
+        if (mesh.indexCount == 0) continue;
+        const content::Material& material = resources.material(draw.material);
+        if (material.alphaMode == content::AlphaMode::Blend) continue;  // as record()
+        vkCmdSetCullMode(cmd, material.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
+        DrawPush push{draw.world, draw.material};
+        edgesOnly_.pushConstants(cmd, &push, sizeof(push));
+        bindMeshVertices(cmd, resources.vertexBufferOf(draw),
+                         resources.previousVertexBufferOf(draw));
+        vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
     }
     vkCmdEndRendering(cmd);

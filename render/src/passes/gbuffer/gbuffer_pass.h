@@ -17,27 +17,40 @@ class GBufferPass {
 public:
     explicit GBufferPass(GpuContext& context);
     // Whether this frame's opaque draws include a layered material (the variants that blend
-    // material layers) and write the extended targets (anisotropy, clear coat): picks the
+    // material layers), write the extended targets (anisotropy, clear coat) and GBAA's edge
+    // target (`edges`: the variants with gbuffer_edges.geom, --aa gbaa only): picks the
     // pipeline, built on first use, so a run compiles only the variants its frames draw with.
-    void prepare(bool materialLayers, bool extended);
+    // With both the extended targets and the edges, the edge target is written by a pass of
+    // its own (recordEdges): nine colour attachments are more than devices guarantee.
+    void prepare(bool materialLayers, bool extended, bool edges = false);
+    // Whether prepare() chose the separate edge pass (recordEdges) for this frame.
+    static bool separateEdges(bool extended, bool edges) { return edges && extended; }
     bool materialLayers() const { return materialLayers_; }
     // Colour, motion, HDR and depth in attachment-optimal layouts (frame graph:
     // ColorAttachment, DepthWrite); all are cleared. `previousWorlds`: one mat4 per scene draw
     // (the draw's world matrix in the previous frame), for the motion vectors.
-    // targets.extended picks gbuffer_extended.frag (anisotropy and clear-coat targets too).
+    // targets.extended picks gbuffer_extended.frag (anisotropy and clear-coat targets too),
+    // targets.hasEdges the edge variant (targets.edges after them; prepare()'s `edges`).
     void record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
                 const std::array<float, 4>& clearRadiance, const FrameScene& scene,
                 SceneResources& resources, const GpuBuffer& cameraBuffer,
                 const GpuBuffer& previousWorlds) const;
+    // GBAA's edge target alone (gbuffer_edges_only.frag): the opaque draws again after
+    // record(), depth test equal against its depth (DepthRead), into `edges`
+    // (ColorAttachment, cleared).
+    void recordEdges(VkCommandBuffer cmd, const ImageRef& edges, const ImageRef& depth,
+                     const FrameScene& scene, SceneResources& resources,
+                     const GpuBuffer& cameraBuffer, const GpuBuffer& previousWorlds) const;
 
 private:
     GpuContext& context_;
     // Indexed by variantIndex(): plain, extended (also writes targets.anisotropy and
-    // targets.clearCoat), layered (gbuffer_layered.frag), extended and layered. Empty until
-    // prepare() first asks for the variant.
-    std::array<Pipeline, 4> variants_;
-    static size_t variantIndex(bool materialLayers, bool extended) {
-        return (materialLayers ? 2 : 0) + (extended ? 1 : 0);
+    // targets.clearCoat), layered (gbuffer_layered.frag), extended and layered; then the same
+    // four with GBAA's edges. Empty until prepare() first asks for the variant.
+    std::array<Pipeline, 8> variants_;
+    Pipeline edgesOnly_;  // recordEdges; empty until a frame needs it
+    static size_t variantIndex(bool materialLayers, bool extended, bool edges) {
+        return (edges ? 4 : 0) + (materialLayers ? 2 : 0) + (extended ? 1 : 0);
     }
     bool materialLayers_ = false;
 };

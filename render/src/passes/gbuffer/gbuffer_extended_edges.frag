@@ -1,0 +1,6 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// gbuffer_extended.frag plus GBAA's edge target (--aa gbaa; gbuffer_edges.geom).
+#define GBUFFER_MATERIAL_EXTENSIONS
+#define GBUFFER_EDGES
+#include "gbuffer_fragment.glsl"
