@@ -495,17 +495,19 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     // The integrated froxel buffer (common/froxel_grid.glsl): the fog's grid (froxel
     // volumetrics; blended surfaces under per-light volumes) and the air's aerial-perspective
-    // grid (blended surfaces and wires under an atmosphere's shafts), in frames that have them;
-    // one buffer, so its readers need one binding. (Wires under per-light volumes read no fog
-    // grid: lighting the demo's, made only for its power lines, cost 14x the volumes' march.)
+    // grid (blended surfaces, wires and hair under an atmosphere's shafts), in frames that have
+    // them; one buffer, so its readers need one binding. (Wires and hair under per-light volumes
+    // read no fog grid: lighting the demo's, made only for its power lines, cost 14x the
+    // volumes' march.)
     const bool fogFroxels =
         inputs.scene.fog && (options_.volumetrics == VolumetricsMode::Froxels ||
                              (options_.volumetrics == VolumetricsMode::Volumes && blended));
     const glm::uvec3 fogGrid =
         fogFroxels ? VolumetricsPass::froxelGrid(width_, height_, options_.volumetricsSettings)
                    : glm::uvec3(0u);
-    const bool airFroxels = (blended || hasWireSegments(inputs.scene)) &&
-                            scatteringDrawn(inputs.scene, options_.scattering);
+    const bool airFroxels =
+        (blended || hasWireSegments(inputs.scene) || !inputs.scene.hair.empty()) &&
+        scatteringDrawn(inputs.scene, options_.scattering);
     std::optional<ResourceHandle> froxels;
     if (fogFroxels || airFroxels) {
         const VkDeviceSize bytes =
@@ -690,8 +692,12 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 features_.push_back("hair_self_shadow");
             }
             auto inputsOf = [this, ids, base, heads, nodes, environment, shadowDescriptors,
-                             selfShadow, hairShadow](PassContext& ctx) {
+                             selfShadow, hairShadow, froxels](PassContext& ctx) {
                 HairPass::Inputs in = base;
+                if (froxels) {
+                    in.froxels = true;
+                    in.froxelIntegrated = ctx.buffer(*froxels);
+                }
                 in.selfShadow = selfShadow;
                 if (selfShadow) in.hairShadow = ctx.image(hairShadow);
                 in.hdr = ctx.image(ids.hdr);
@@ -747,6 +753,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 p.read(nodes, Use::StorageRead, kFragmentStage);
                 readLitInputs(p, kFragmentStage);
                 if (selfShadow) p.read(hairShadow, Use::Sampled, kFragmentStage);
+                if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
                 h.hdr = p.write(h.hdr, Use::ColorAttachment);
             }
             {
