@@ -537,8 +537,13 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         const bool marchVolumes = options_.volumetrics == VolumetricsMode::Volumes;
         const bool lightFroxels =
             options_.volumetrics == VolumetricsMode::Froxels || (marchVolumes && blended);
+        // Froxels march the sun per pixel over their composite, as the per-light volumes march
+        // it (a froxel, 8x8 pixels and up to metres deep, is too coarse for shafts through
+        // windows): the grid then holds the local lights only.
+        const bool sunMarched =
+            options_.volumetrics == VolumetricsMode::Froxels && volumetricsPass_->sunInMedium();
         volumetricsPass_->binLights(inputs.scene.lights, inputs.scene.camera, width_, height_,
-                                    volume, marchVolumes, lightFroxels);
+                                    volume, marchVolumes, lightFroxels, sunMarched);
         auto readLights = [&](FrameGraph::PassBuilder& p) {
             p.read(h.camera, Use::Uniform);
             p.read(h.lights, Use::StorageRead);
@@ -594,8 +599,23 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 integrate.read(medium, Use::StorageRead);
                 froxels = integrate.write(integrated, Use::StorageWrite);
             }
-            if (volumes) {
-                features_.push_back("volumetrics_volumes");
+            // The froxels' composite first: the sun marched over them only adds its light.
+            if (!volumes) {
+                auto composite = g.addPass(
+                    "volumetrics_composite", PassKind::Device,
+                    [this, ids, integrated = *froxels, volume](PassContext& ctx) {
+                        VolumetricsPass::Inputs in = volume;
+                        in.depth = ctx.image(ids.depth);
+                        in.hdr = ctx.image(ids.hdr);
+                        volumetricsPass_->recordComposite(ctx.cmd(), in, ctx.buffer(integrated));
+                    });
+                composite.read(h.camera, Use::Uniform);
+                composite.read(h.depth, Use::Sampled);
+                composite.read(*froxels, Use::StorageRead);
+                h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
+            }
+            if (volumes || sunMarched) {
+                features_.push_back(volumes ? "volumetrics_volumes" : "volumetrics_sun_march");
                 const ImageDesc half = VolumetricsPass::volumesDesc(width_, height_);
                 ResourceHandle marched = g.createImage("volumetrics.volumes_marched", half);
                 ResourceHandle blurred = g.createImage("volumetrics.volumes_blurred", half);
@@ -623,29 +643,16 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 blur.read(marched, Use::StorageRead);
                 blurred = blur.write(blurred, Use::StorageWrite);
                 auto composite = g.addPass("volumetrics_volumes_composite", PassKind::Device,
-                                           [this, ids, blurred, volume](PassContext& ctx) {
+                                           [this, ids, blurred, volume, volumes](PassContext& ctx) {
                                                VolumetricsPass::Inputs in = volume;
                                                in.depth = ctx.image(ids.depth);
                                                in.hdr = ctx.image(ids.hdr);
                                                volumetricsPass_->recordVolumesComposite(
-                                                   ctx.cmd(), in, ctx.image(blurred));
+                                                   ctx.cmd(), in, ctx.image(blurred), !volumes);
                                            });
                 composite.read(h.camera, Use::Uniform);
                 composite.read(h.depth, Use::Sampled);
                 composite.read(blurred, Use::StorageRead);
-                h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
-            } else {
-                auto composite = g.addPass(
-                    "volumetrics_composite", PassKind::Device,
-                    [this, ids, integrated = *froxels, volume](PassContext& ctx) {
-                        VolumetricsPass::Inputs in = volume;
-                        in.depth = ctx.image(ids.depth);
-                        in.hdr = ctx.image(ids.hdr);
-                        volumetricsPass_->recordComposite(ctx.cmd(), in, ctx.buffer(integrated));
-                    });
-                composite.read(h.camera, Use::Uniform);
-                composite.read(h.depth, Use::Sampled);
-                composite.read(*froxels, Use::StorageRead);
                 h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
             }
         }
