@@ -521,17 +521,19 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     // The integrated froxel buffer (common/froxel_grid.glsl): the fog's grid (froxel
     // volumetrics; blended surfaces under per-light volumes) and the air's aerial-perspective
-    // grid (blended surfaces and wires under an atmosphere's shafts), in frames that have them;
-    // one buffer, so its readers need one binding. (Wires under per-light volumes read no fog
-    // grid: lighting the demo's, made only for its power lines, cost 14x the volumes' march.)
+    // grid (blended surfaces, wires and hair under an atmosphere's shafts), in frames that have
+    // them; one buffer, so its readers need one binding. (Wires and hair under per-light volumes
+    // read no fog grid: lighting the demo's, made only for its power lines, cost 14x the
+    // volumes' march.)
     const bool fogFroxels =
         inputs.scene.fog && (options_.volumetrics == VolumetricsMode::Froxels ||
                              (options_.volumetrics == VolumetricsMode::Volumes && blended));
     const glm::uvec3 fogGrid =
         fogFroxels ? VolumetricsPass::froxelGrid(width_, height_, options_.volumetricsSettings)
                    : glm::uvec3(0u);
-    const bool airFroxels = (blended || hasWireSegments(inputs.scene)) &&
-                            scatteringDrawn(inputs.scene, options_.scattering);
+    const bool airFroxels =
+        (blended || hasWireSegments(inputs.scene) || !inputs.scene.hair.empty()) &&
+        scatteringDrawn(inputs.scene, options_.scattering);
     std::optional<ResourceHandle> froxels;
     if (fogFroxels || airFroxels) {
         const VkDeviceSize bytes =
@@ -561,8 +563,13 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         const bool marchVolumes = options_.volumetrics == VolumetricsMode::Volumes;
         const bool lightFroxels =
             options_.volumetrics == VolumetricsMode::Froxels || (marchVolumes && blended);
+        // Froxels march the sun per pixel over their composite, as the per-light volumes march
+        // it (a froxel, 8x8 pixels and up to metres deep, is too coarse for shafts through
+        // windows): the grid then holds the local lights only.
+        const bool sunMarched =
+            options_.volumetrics == VolumetricsMode::Froxels && volumetricsPass_->sunInMedium();
         volumetricsPass_->binLights(inputs.scene.lights, inputs.scene.camera, width_, height_,
-                                    volume, marchVolumes, lightFroxels);
+                                    volume, marchVolumes, lightFroxels, sunMarched);
         auto readLights = [&](FrameGraph::PassBuilder& p) {
             p.read(h.camera, Use::Uniform);
             p.read(h.lights, Use::StorageRead);
@@ -618,8 +625,23 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 integrate.read(medium, Use::StorageRead);
                 froxels = integrate.write(integrated, Use::StorageWrite);
             }
-            if (volumes) {
-                features_.push_back("volumetrics_volumes");
+            // The froxels' composite first: the sun marched over them only adds its light.
+            if (!volumes) {
+                auto composite = g.addPass(
+                    "volumetrics_composite", PassKind::Device,
+                    [this, ids, integrated = *froxels, volume](PassContext& ctx) {
+                        VolumetricsPass::Inputs in = volume;
+                        in.depth = ctx.image(ids.depth);
+                        in.hdr = ctx.image(ids.hdr);
+                        volumetricsPass_->recordComposite(ctx.cmd(), in, ctx.buffer(integrated));
+                    });
+                composite.read(h.camera, Use::Uniform);
+                composite.read(h.depth, Use::Sampled);
+                composite.read(*froxels, Use::StorageRead);
+                h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
+            }
+            if (volumes || sunMarched) {
+                features_.push_back(volumes ? "volumetrics_volumes" : "volumetrics_sun_march");
                 const ImageDesc half = VolumetricsPass::volumesDesc(width_, height_);
                 ResourceHandle marched = g.createImage("volumetrics.volumes_marched", half);
                 ResourceHandle blurred = g.createImage("volumetrics.volumes_blurred", half);
@@ -647,29 +669,16 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 blur.read(marched, Use::StorageRead);
                 blurred = blur.write(blurred, Use::StorageWrite);
                 auto composite = g.addPass("volumetrics_volumes_composite", PassKind::Device,
-                                           [this, ids, blurred, volume](PassContext& ctx) {
+                                           [this, ids, blurred, volume, volumes](PassContext& ctx) {
                                                VolumetricsPass::Inputs in = volume;
                                                in.depth = ctx.image(ids.depth);
                                                in.hdr = ctx.image(ids.hdr);
                                                volumetricsPass_->recordVolumesComposite(
-                                                   ctx.cmd(), in, ctx.image(blurred));
+                                                   ctx.cmd(), in, ctx.image(blurred), !volumes);
                                            });
                 composite.read(h.camera, Use::Uniform);
                 composite.read(h.depth, Use::Sampled);
                 composite.read(blurred, Use::StorageRead);
-                h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
-            } else {
-                auto composite = g.addPass(
-                    "volumetrics_composite", PassKind::Device,
-                    [this, ids, integrated = *froxels, volume](PassContext& ctx) {
-                        VolumetricsPass::Inputs in = volume;
-                        in.depth = ctx.image(ids.depth);
-                        in.hdr = ctx.image(ids.hdr);
-                        volumetricsPass_->recordComposite(ctx.cmd(), in, ctx.buffer(integrated));
-                    });
-                composite.read(h.camera, Use::Uniform);
-                composite.read(h.depth, Use::Sampled);
-                composite.read(*froxels, Use::StorageRead);
                 h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
             }
         }
@@ -716,8 +725,12 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 features_.push_back("hair_self_shadow");
             }
             auto inputsOf = [this, ids, base, heads, nodes, environment, shadowDescriptors,
-                             selfShadow, hairShadow](PassContext& ctx) {
+                             selfShadow, hairShadow, froxels](PassContext& ctx) {
                 HairPass::Inputs in = base;
+                if (froxels) {
+                    in.froxels = true;
+                    in.froxelIntegrated = ctx.buffer(*froxels);
+                }
                 in.selfShadow = selfShadow;
                 if (selfShadow) in.hairShadow = ctx.image(hairShadow);
                 in.hdr = ctx.image(ids.hdr);
@@ -773,6 +786,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 p.read(nodes, Use::StorageRead, kFragmentStage);
                 readLitInputs(p, kFragmentStage);
                 if (selfShadow) p.read(hairShadow, Use::Sampled, kFragmentStage);
+                if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
                 h.hdr = p.write(h.hdr, Use::ColorAttachment);
             }
             {

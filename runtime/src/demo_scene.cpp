@@ -619,9 +619,9 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
 
     // The sky: Earth's atmosphere (Hillaire 2020; render/README.md "Atmosphere"), which lights
     // the scene and draws the background; its sun walks the day (demoTimeOfDay). Latitude 45
-    // north at the June solstice: from 9:00 to 17:00 the sun climbs from 48 degrees in the
-    // east over 68 at noon and sinks to 27 in the west, shining through the skylights and
-    // the east, then the west windows.
+    // north at the June solstice: from 11:00 to 19:00 the sun climbs from 65 degrees in the
+    // south-east over 68 at noon and sinks to 37 at 16:00 and 6.5 at 19:00 in the west,
+    // shining through the skylights, then in shafts through the west windows.
     content::Atmosphere atmosphere;
     atmosphere.timeOfDay = demoTimeOfDay(0.0);
     registry.emplace<content::Atmosphere>(place(registry, "sky", {}), atmosphere);

@@ -23,9 +23,14 @@ inline constexpr std::array<float, 4> kDemoBackgroundRadiance = {0.02f, 0.03f, 0
 
 // The day cycle over the hall (issue 16): the atmosphere's time of day (hours, solar time)
 // starts at kDemoDayStartHours and advances kDemoDayHoursPerSecond per second of scene time,
-// starting again with the camera path's loop (9:00 to 17:00 over the 32 s tour).
-// --time-of-day HH:MM holds the sun still at that time instead.
-inline constexpr float kDemoDayStartHours = 9.0f;
+// starting again with the camera path's loop (11:00 to 19:00 over the 32 s tour).
+// --time-of-day HH:MM holds the sun still at that time instead. The day starts at 11:00 so
+// that the tour's high view back over the hall (20 s) sees the sun at 16:00, low enough to
+// shine through the west windows in shafts across the dusty hall (issue 17's demo; at 14:00
+// the sun comes steeply through every skylight and the dust reads as one glow:
+// render/README.md "Volumetric lighting"), and the look up at the power lines ends in the
+// evening light.
+inline constexpr float kDemoDayStartHours = 11.0f;
 inline constexpr float kDemoDayHoursPerSecond = 0.25f;
 
 // Animated coloured point lights (besides the bulb, the tubes and the panel back-lights).

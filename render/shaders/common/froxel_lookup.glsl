@@ -150,4 +150,19 @@ vec3 aerialPerspectiveAtFragment(vec4 fragCoord, out vec3 transmittance) {
     return aerialPerspectiveAt(fragCoord.xy, size, viewDepth, toSurface, transmittance);
 }
 
+// A surface's radiance seen from the camera through what lies in front of it: the fog's froxels
+// (attenuated by them, their in-scattering added), then the atmosphere's air (aerial
+// perspective), in the order the opaque frame gets them (the fog's composite, then the light
+// shafts). For a fragment at window position fragCoord.xy and reverse-Z depth fragCoord.z; what
+// blended surfaces, wires and hair share, so that at full coverage each shows what an opaque
+// surface at its depth would.
+vec3 throughMediumAndAir(vec3 radiance, vec4 fragCoord) {
+    vec4 medium = froxelsAt(fragCoord.xy, vec2(camera.frameInfo.xy),
+                            froxelParams.range.x / max(fragCoord.z, 1e-30));
+    radiance = radiance * medium.a + medium.rgb;
+    vec3 airTransmittance;
+    vec3 air = aerialPerspectiveAtFragment(fragCoord, airTransmittance);
+    return radiance * airTransmittance + air;
+}
+
 #endif

@@ -142,16 +142,9 @@ void main() {
             if (light != kNoLight) radiance += lightRadiance(surface, P, N, V, R, alpha, light);
         }
     }
-    // The medium in front of the surface (froxels): attenuated by it, its in-scattering added,
-    // so a pane of full coverage shows what an opaque wall there would.
-    vec4 medium = froxelsAt(gl_FragCoord.xy, vec2(camera.frameInfo.xy),
-                            froxelParams.range.x / max(gl_FragCoord.z, 1e-30));
-    radiance = radiance * medium.a + medium.rgb;
-    // Then the atmosphere's air in front (aerial perspective), as the light shafts attenuate
-    // the opaque frame and add to it after the fog's composite.
-    vec3 airTransmittance;
-    vec3 air = aerialPerspectiveAtFragment(gl_FragCoord, airTransmittance);
-    radiance = radiance * airTransmittance + air;
+    // The fog's froxels, then the air, in front: a fully covered pixel shows what an opaque
+    // surface here would.
+    radiance = throughMediumAndAir(radiance, gl_FragCoord);
     outRadiance = vec4(radiance, saturate(s.baseColor.a));
     outMotion = vec4(screenMotion(inCurrentClip, inPreviousClip), 0.0, outRadiance.a);
 }

@@ -28,6 +28,8 @@
 // The hair depth map (hair_shadow.vert): the nearest strand from each shadow view, laid out as
 // the shadow atlas.
 #define HAIR_BINDING_HAIR_SHADOW 16
+// The integrated froxel buffer (common/froxel_lookup.glsl): the fog and air in front of the hair.
+#define HAIR_BINDING_FROXEL_INTEGRATED 17
 #define AREA_LIGHT_LTC_MATRIX_BINDING HAIR_BINDING_LTC_MATRIX
 #define AREA_LIGHT_LTC_MAGNITUDE_BINDING HAIR_BINDING_LTC_MAGNITUDE
 

@@ -14,6 +14,7 @@
 #include "ibl/environment_descriptors.h"
 #include "passes/hair/hair_bindings.h"
 #include "passes/shadows/shadow_pass.h"
+#include "passes/volumetrics/volumetrics_pass.h"
 #include "shaders/hair_depth.frag.spv.h"
 #include "shaders/hair_fill.frag.spv.h"
 #include "shaders/hair_fill.vert.spv.h"
@@ -61,8 +62,11 @@ HairPass::HairPass(GpuContext& context)
       segments_(context, kInitialSegments * sizeof(HairSegment), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                 MemoryLocation::HostVisible),
       counters_(context, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                MemoryLocation::HostVisible),
+      noMedium_(context, VolumetricsPass::kFroxelHeaderBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                 MemoryLocation::HostVisible) {
     std::memset(counters_.mapped(), 0, 16);
+    std::memset(noMedium_.mapped(), 0, VolumetricsPass::kFroxelHeaderBytes);
 }
 
 HairPass::~HairPass() = default;
@@ -168,6 +172,7 @@ void HairPass::buildPipelines() {
             {HAIR_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
             {HAIR_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
             {HAIR_BINDING_HAIR_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
+            {HAIR_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
         };
         resolve_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
     }
@@ -284,6 +289,8 @@ void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
         in.selfShadow ? VkDescriptorImageInfo{in.shadows->atlas.sampler, in.hairShadow.view(),
                                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}
                       : in.shadows->atlas;
+    VkDescriptorBufferInfo froxelInfo{
+        in.froxels ? in.froxelIntegrated.handle() : noMedium_.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
         storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
@@ -300,7 +307,8 @@ void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
         sampledImageWrite(HAIR_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
         sampledImageWrite(HAIR_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
         sampledImageWrite(HAIR_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude),
-        sampledImageWrite(HAIR_BINDING_HAIR_SHADOW, &hairShadowInfo)};
+        sampledImageWrite(HAIR_BINDING_HAIR_SHADOW, &hairShadowInfo),
+        storageBufferWrite(HAIR_BINDING_FROXEL_INTEGRATED, &froxelInfo)};
     pushCommon(cmd, resolve_, in);
     resolve_.pushDescriptors(cmd, writes);
     vkCmdDraw(cmd, 3, 1, 0, 0);

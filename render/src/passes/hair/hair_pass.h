@@ -67,6 +67,10 @@ public:
         // The hair depth map (hairShadowDepthDesc), or none: self-shadowing off this frame.
         ImageRef hairShadow;
         bool selfShadow = false;
+        // The integrated froxel buffer (fog and air in front of the hair), read by the resolve;
+        // false: none this frame.
+        bool froxels = false;
+        BufferRef froxelIntegrated;
     };
     // The hair depth map laid out as a shadow atlas of `atlasSize` texels square.
     static ImageDesc hairShadowDepthDesc(uint32_t atlasSize);
@@ -90,6 +94,9 @@ private:
     GpuContext& context_;
     GpuBuffer segments_;
     GpuBuffer counters_;
+    // Zeros: an integrated froxel buffer whose header says "no medium", bound when the frame
+    // has no froxels.
+    GpuBuffer noMedium_;
     uint32_t segmentCount_ = 0;
     HairShading shading_ = HairShading::Lit;
     HairSelfShadow selfShadow_ = HairSelfShadow::DepthMap;

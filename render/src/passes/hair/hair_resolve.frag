@@ -25,6 +25,11 @@
 // (HAIR_FIBRE_SPACING x r) fibres per metre. The reference counts the fibres between the
 // fragment and the light exactly instead (every segment the ray to the light passes within
 // its radius). Only lights with a shadow map have a hair depth map.
+//
+// The fog's froxels and the atmosphere's air in front of the hair dim it and add their
+// in-scattering (common/froxel_lookup.glsl, as blended surfaces and wires get them), taken at
+// the nearest fragment's depth: a pixel's strands lie millimetres to centimetres apart, far less
+// than a froxel, so one lookup serves them all.
 #include "common/camera.glsl"
 #include "common/clusters.glsl"
 #include "common/ibl.glsl"
@@ -35,6 +40,8 @@
 #define SHADOW_VIEWS_BINDING HAIR_BINDING_SHADOW_VIEWS
 #define SHADOW_LIGHTS_BINDING HAIR_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
+#define FROXEL_INTEGRATED_BINDING HAIR_BINDING_FROXEL_INTEGRATED
+#include "common/froxel_lookup.glsl"
 #include "hair_segment.glsl"
 
 layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
@@ -290,5 +297,9 @@ void main() {
     }
     const float alpha = 1.0 - transmittance;
     if (!(alpha > 0.0)) discard;
-    outRadiance = vec4(radiance / alpha, alpha);
+    const vec3 hair = radiance / alpha;
+    outRadiance = vec4(draw.mode == HAIR_MODE_COVERAGE
+                           ? hair
+                           : throughMediumAndAir(hair, vec4(gl_FragCoord.xy, depth[0], 1.0)),
+                       alpha);
 }

@@ -27,7 +27,7 @@ namespace {
 // Matches the push block of volumetrics_push.glsl.
 struct VolumetricsPush {
     glm::vec4 medium;     // sigma_s, sigma_a, g, height falloff
-    glm::vec4 range;      // base height, near, far, unused
+    glm::vec4 range;      // base height, near, far, composite: 1 adds only (no transmittance)
     glm::uvec4 grid;      // froxels x, y, slices, reference steps
     glm::uvec4 lights;    // count, capacity
     glm::vec4 boundsMin;  // the medium's box (world, m); w: 1 when bounded
@@ -159,6 +159,11 @@ void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadow
         const float s = lights[i].light.volumetric;
         scales[i] = s >= 0.0f && s <= 1e3f ? s : 0.0f;  // NaN and negatives light no medium
     }
+    sunInMedium_ = false;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].light.type == content::LightType::Directional && scales[i] > 0.0f)
+            sunInMedium_ = true;
+    }
     const bool areaLights = std::any_of(lights.begin(), lights.end(), [](const LightInstance& l) {
         return l.light.type == content::LightType::Rect || l.light.type == content::LightType::Disk;
     });
@@ -195,17 +200,30 @@ void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadow
 
 void VolumetricsPass::binLights(std::span<const LightInstance> lights, const CameraView& camera,
                                 uint32_t width, uint32_t height, const Inputs& in, bool volumes,
-                                bool froxels) {
+                                bool froxels, bool sunMarched) {
     const auto* scales = static_cast<const float*>(lightScales_.mapped());
     const std::span<const float> scaleSpan(scales, lights.size());
-    if (volumes) {
+    // With the sun marched over the froxels, each list keeps only its own lights (a zero scale
+    // leaves a light out of the lists): the march the directional ones, the froxels the rest.
+    std::vector<float> sunScales, localScales;
+    if (sunMarched) {
+        sunScales.assign(scaleSpan.begin(), scaleSpan.end());
+        localScales = sunScales;
+        for (size_t i = 0; i < lights.size(); ++i) {
+            const bool sun = lights[i].light.type == content::LightType::Directional;
+            (sun ? localScales : sunScales)[i] = 0.0f;
+        }
+    }
+    if (volumes || sunMarched) {
         upload(context_, volumeBins_,
-               render::binLights(lights, scaleSpan, camera, volumeTileLayout(width, height)));
+               render::binLights(lights, sunMarched ? std::span<const float>(sunScales) : scaleSpan,
+                                 camera, volumeTileLayout(width, height)));
     }
     if (froxels) {
-        upload(context_, froxelBins_,
-               render::binLights(lights, scaleSpan, camera,
-                                 froxelClusterLayout(in.grid, nearOf(in), farOf(in))));
+        upload(
+            context_, froxelBins_,
+            render::binLights(lights, sunMarched ? std::span<const float>(localScales) : scaleSpan,
+                              camera, froxelClusterLayout(in.grid, nearOf(in), farOf(in))));
     }
 }
 
@@ -353,7 +371,7 @@ void VolumetricsPass::recordVolumesBlur(VkCommandBuffer cmd, const Inputs& in,
 }
 
 void VolumetricsPass::recordVolumesComposite(VkCommandBuffer cmd, const Inputs& in,
-                                             const ImageRef& blurred) const {
+                                             const ImageRef& blurred, bool addOnly) const {
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorImageInfo depth{pointSampler_.handle(), in.depth.view(),
                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
@@ -365,7 +383,8 @@ void VolumetricsPass::recordVolumesComposite(VkCommandBuffer cmd, const Inputs& 
         storageImageWrite(VOLUMETRICS_BINDING_HDR, &hdr),
         storageImageWrite(VOLUMETRICS_BINDING_VOLUMES_BLURRED, &source),
     };
-    const VolumetricsPush push = pushFor(in, in.settings.volumeSteps);
+    VolumetricsPush push = pushFor(in, in.settings.volumeSteps);
+    push.range.w = addOnly ? 1.0f : 0.0f;
     volumesComposite_.bind(cmd);
     volumesComposite_.pushDescriptors(cmd, writes);
     volumesComposite_.pushConstants(cmd, &push, sizeof(push));

@@ -46,6 +46,9 @@ public:
     // reads the shadow maps.
     void prepare(std::span<const LightInstance> lights, bool shadows);
     const GpuBuffer& lightScales() const { return lightScales_; }
+    // Whether some directional light (the sun) scatters in the medium (volumetric above zero),
+    // after prepare().
+    bool sunInMedium() const { return sunInMedium_; }
 
     struct Inputs {
         ImageRef depth;  // Sampled
@@ -63,8 +66,12 @@ public:
     // Lists, per workgroup of the per-light volumes' march (`volumes`) or of the froxel lighting
     // (`froxels`), the lights whose volume reaches it (light_bins.h), after prepare(); rewritten
     // every frame like the scales. A frame with blended surfaces and per-light volumes has both.
+    // `sunMarched`: froxels with the sun marched per pixel at half resolution (the volumes'
+    // march, blur and composite): the march lists only the directional lights and the froxels
+    // all others, so each light is counted once.
     void binLights(std::span<const LightInstance> lights, const CameraView& camera, uint32_t width,
-                   uint32_t height, const Inputs& in, bool volumes, bool froxels);
+                   uint32_t height, const Inputs& in, bool volumes, bool froxels,
+                   bool sunMarched = false);
     const GpuBuffer& volumeBins() const { return volumeBins_; }
     const GpuBuffer& froxelBins() const { return froxelBins_; }
 
@@ -76,12 +83,14 @@ public:
                                const BufferRef& integrated) const;
     void recordComposite(VkCommandBuffer cmd, const Inputs& in, const BufferRef& integrated) const;
     // Per-light volumes: march into `marched`, blur it into `blurred` (each StorageWrite, then
-    // StorageRead), upsample and composite `blurred` over in.hdr.
+    // StorageRead), upsample and composite `blurred` over in.hdr. `addOnly`: only add the
+    // in-scattering, the surface's transmittance having been applied already (the sun marched
+    // over the froxels' composite, which attenuates by the whole medium).
     void recordVolumesMarch(VkCommandBuffer cmd, const Inputs& in, const ImageRef& marched) const;
     void recordVolumesBlur(VkCommandBuffer cmd, const Inputs& in, const ImageRef& marched,
                            const ImageRef& blurred) const;
-    void recordVolumesComposite(VkCommandBuffer cmd, const Inputs& in,
-                                const ImageRef& blurred) const;
+    void recordVolumesComposite(VkCommandBuffer cmd, const Inputs& in, const ImageRef& blurred,
+                                bool addOnly = false) const;
 
 private:
     struct LightingInfos {
@@ -95,6 +104,7 @@ private:
     GpuContext& context_;
     bool shadows_ = false;
     bool areaLights_ = false;  // the pipelines' SPEC_MEDIUM_AREA_LIGHTS
+    bool sunInMedium_ = false;
     bool built_ = false;
     Pipeline reference_;
     Pipeline froxelLight_;

@@ -5,7 +5,8 @@
 // Matches VolumetricsPush in volumetrics_pass.cpp.
 layout(push_constant) uniform Push {
     vec4 medium;  // x: sigma_s, y: sigma_a (1/m), z: g, w: height falloff (1/m)
-    vec4 range;   // x: base height (m), y: near, z: far (view depth, m), w: unused
+    vec4 range;   // x: base height (m), y: near, z: far (view depth, m); w: the volumes'
+                  // composite adds only (1: the froxels' composite attenuated the surface)
     uvec4 grid;   // froxels x, y, slices; w: reference steps
     uvec4 lights; // x: count, y: buffer capacity; z, w: the reference's batch (first, count)
     vec4 boundsMin; // xyz: the medium's box (world, m); w: 1 when bounded, 0 when it fills all

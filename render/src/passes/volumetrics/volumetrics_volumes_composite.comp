@@ -6,6 +6,8 @@
 // in-scattering onto the frame, and the view leg's transmittance on the surface behind:
 // hdr = hdr * T + L. Half-resolution pixel q holds full-resolution pixel 2q's ray, so pixel p
 // sits at p / 2 among them; the four around it weigh bilinearly and by depth likeness.
+// Froxels with the sun marched per pixel (range.w = 1): the march holds the sun alone, added
+// over the froxels' composite, which already attenuated the surface by the whole medium.
 #include "volumetrics_push.glsl"
 #include "common/camera.glsl"
 #include "volumetric_density.glsl"
@@ -53,7 +55,9 @@ void main() {
     vec4 nearPoint = vec4(unjitteredNearPoint(ndc), 1.0);
     vec3 perDepth = (nearPoint.xyz / nearPoint.w - origin) / push.range.y;
     float transmittance =
-        exp(-viewOpticalDepth(origin, normalize(perDepth), viewDepth * length(perDepth)));
+        push.range.w > 0.5
+            ? 1.0
+            : exp(-viewOpticalDepth(origin, normalize(perDepth), viewDepth * length(perDepth)));
     vec4 surface = imageLoad(hdrRadiance, pixel);
     imageStore(hdrRadiance, pixel, vec4(surface.rgb * transmittance + radiance, surface.a));
 }

@@ -148,16 +148,8 @@ void main() {
             }
         }
     }
-    // The medium in front of the wire (froxels), as for the forward pass's blended surfaces:
-    // attenuated by it, its in-scattering added, so a fully covered pixel shows what an opaque
-    // surface there would.
-    vec4 medium = froxelsAt(gl_FragCoord.xy, vec2(camera.frameInfo.xy),
-                            froxelParams.range.x / max(gl_FragCoord.z, 1e-30));
-    radiance = radiance * medium.a + medium.rgb;
-    // Then the atmosphere's air in front (aerial perspective), as the light shafts attenuate
-    // the opaque frame and add to it after the fog's composite.
-    vec3 airTransmittance;
-    vec3 air = aerialPerspectiveAtFragment(gl_FragCoord, airTransmittance);
-    radiance = radiance * airTransmittance + air;
+    // The fog's froxels, then the air, in front: a fully covered pixel shows what an opaque
+    // surface here would.
+    radiance = throughMediumAndAir(radiance, gl_FragCoord);
     outRadiance = vec4(radiance, alpha);
 }
