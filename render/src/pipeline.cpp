@@ -202,6 +202,14 @@ Pipeline Pipeline::graphics(GpuContext& context, const GraphicsPipelineDesc& des
             blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
             blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
             blend.alphaBlendOp = VK_BLEND_OP_ADD;
+        } else if (desc.additiveBlend) {
+            blend.blendEnable = VK_TRUE;
+            blend.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+            blend.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
+            blend.colorBlendOp = VK_BLEND_OP_ADD;
+            blend.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+            blend.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+            blend.alphaBlendOp = VK_BLEND_OP_ADD;
         }
     }
     VkPipelineColorBlendStateCreateInfo colorBlend{
@@ -209,11 +217,13 @@ Pipeline Pipeline::graphics(GpuContext& context, const GraphicsPipelineDesc& des
     colorBlend.attachmentCount = static_cast<uint32_t>(blends.size());
     colorBlend.pAttachments = blends.data();
 
-    VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
-                                      VK_DYNAMIC_STATE_CULL_MODE};
+    std::vector<VkDynamicState> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
+                                                 VK_DYNAMIC_STATE_SCISSOR};
+    if (desc.dynamicCullMode) dynamicStates.push_back(VK_DYNAMIC_STATE_CULL_MODE);
+    if (desc.dynamicDepthTest) dynamicStates.push_back(VK_DYNAMIC_STATE_DEPTH_TEST_ENABLE);
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = desc.dynamicCullMode ? 3 : 2;
-    dynamic.pDynamicStates = dynamicStates;
+    dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
+    dynamic.pDynamicStates = dynamicStates.data();
 
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
     rendering.colorAttachmentCount = static_cast<uint32_t>(desc.colorFormats.size());

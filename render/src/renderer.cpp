@@ -546,7 +546,21 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     // upsampled), froxels (lit, integrated, composited by depth) or the reference march.
     if (inputs.scene.fog && options_.volumetrics != VolumetricsMode::Off) {
         if (!volumetricsPass_) volumetricsPass_ = std::make_unique<VolumetricsPass>(context_);
-        volumetricsPass_->prepare(inputs.scene.lights, features.shadows);
+        const bool marchVolumes = options_.volumetrics == VolumetricsMode::Volumes;
+        const bool volumeProxies = marchVolumes && options_.volumetricsSettings.volumeProxies;
+        const bool lightFroxels =
+            options_.volumetrics == VolumetricsMode::Froxels || (marchVolumes && blended);
+        // Froxels march the sun per pixel over their composite, as the per-light volumes march
+        // it (a froxel, 8x8 pixels and up to metres deep, is too coarse for shafts through
+        // windows): the grid then holds the local lights only.
+        const bool sunMarched = options_.volumetrics == VolumetricsMode::Froxels &&
+                                VolumetricsPass::sunInMedium(inputs.scene.lights);
+        VolumetricsPass::Uses uses;
+        uses.reference = options_.volumetrics == VolumetricsMode::Reference;
+        uses.froxels = lightFroxels;
+        uses.volumesMarch = (marchVolumes && !volumeProxies) || sunMarched;
+        uses.volumesProxies = volumeProxies;
+        volumetricsPass_->prepare(inputs.scene.lights, features.shadows, uses);
         VolumetricsPass::Inputs volume;
         volume.camera = &cameraBuffer_;
         volume.lights = &lights_->buffer();
@@ -559,25 +573,24 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         if (fogFroxels) volume.grid = fogGrid;
         const ResourceHandle scales =
             g.importBuffer("volumetrics.light_scales", &volumetricsPass_->lightScales());
-        // Which lights each march tile or froxel cluster meets (the reference meets them all).
-        const bool marchVolumes = options_.volumetrics == VolumetricsMode::Volumes;
-        const bool lightFroxels =
-            options_.volumetrics == VolumetricsMode::Froxels || (marchVolumes && blended);
-        // Froxels march the sun per pixel over their composite, as the per-light volumes march
-        // it (a froxel, 8x8 pixels and up to metres deep, is too coarse for shafts through
-        // windows): the grid then holds the local lights only.
-        const bool sunMarched =
-            options_.volumetrics == VolumetricsMode::Froxels && volumetricsPass_->sunInMedium();
+        // Which lights each march tile or froxel cluster meets (the reference meets them all),
+        // or the rasterised proxies' instances.
         volumetricsPass_->binLights(inputs.scene.lights, inputs.scene.camera, width_, height_,
-                                    volume, marchVolumes, lightFroxels, sunMarched);
-        auto readLights = [&](FrameGraph::PassBuilder& p) {
-            p.read(h.camera, Use::Uniform);
-            p.read(h.lights, Use::StorageRead);
-            p.read(scales, Use::StorageRead);
+                                    volume, marchVolumes && !volumeProxies, lightFroxels,
+                                    sunMarched);
+        if (volumeProxies) {
+            volumetricsPass_->buildProxies(inputs.scene.lights, inputs.scene.camera, width_,
+                                           height_);
+        }
+        auto readLights = [&](FrameGraph::PassBuilder& p,
+                              VkPipelineStageFlags2 stages = kComputeStage) {
+            p.read(h.camera, Use::Uniform, stages);
+            p.read(h.lights, Use::StorageRead, stages);
+            p.read(scales, Use::StorageRead, stages);
             if (features.shadows) {
-                p.read(shadowAtlas, Use::Sampled);
-                p.read(shadowViews, Use::StorageRead);
-                p.read(shadowLights, Use::StorageRead);
+                p.read(shadowAtlas, Use::Sampled, stages);
+                p.read(shadowViews, Use::StorageRead, stages);
+                p.read(shadowLights, Use::StorageRead, stages);
             }
         };
         if (options_.volumetrics == VolumetricsMode::Reference) {
@@ -642,23 +655,49 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             }
             if (volumes || sunMarched) {
                 features_.push_back(volumes ? "volumetrics_volumes" : "volumetrics_sun_march");
-                const ImageDesc half = VolumetricsPass::volumesDesc(width_, height_);
-                ResourceHandle marched = g.createImage("volumetrics.volumes_marched", half);
-                ResourceHandle blurred = g.createImage("volumetrics.volumes_blurred", half);
-                auto march = g.addPass(
-                    "volumetrics_volumes_march", PassKind::Device,
-                    [this, ids, marched, volume, shadowDescriptors](PassContext& ctx) {
-                        VolumetricsPass::Inputs in = volume;
-                        in.depth = ctx.image(ids.depth);
-                        in.shadows = &shadowDescriptors;
-                        volumetricsPass_->recordVolumesMarch(ctx.cmd(), in, ctx.image(marched));
-                    });
-                readLights(march);
-                march.read(
-                    g.importBuffer("volumetrics.volume_bins", &volumetricsPass_->volumeBins()),
-                    Use::StorageRead);
-                march.read(h.depth, Use::Sampled);
-                marched = march.write(marched, Use::StorageWrite);
+                ResourceHandle marched =
+                    g.createImage("volumetrics.volumes_marched",
+                                  VolumetricsPass::volumesDesc(width_, height_, volumeProxies));
+                ResourceHandle blurred = g.createImage(
+                    "volumetrics.volumes_blurred", VolumetricsPass::volumesDesc(width_, height_));
+                if (volumeProxies) {
+                    // Each light's proxy mesh rasterised at half resolution (seed 004 §3).
+                    ResourceHandle proxyDepth =
+                        g.createImage("volumetrics.volumes_depth",
+                                      VolumetricsPass::volumesDepthDesc(width_, height_));
+                    auto proxies =
+                        g.addPass("volumetrics_volumes_proxies", PassKind::Device,
+                                  [this, ids, marched, proxyDepth, volume,
+                                   shadowDescriptors](PassContext& ctx) {
+                                      VolumetricsPass::Inputs in = volume;
+                                      in.depth = ctx.image(ids.depth);
+                                      in.shadows = &shadowDescriptors;
+                                      volumetricsPass_->recordVolumesProxies(
+                                          ctx.cmd(), in, ctx.image(marched), ctx.image(proxyDepth));
+                                  });
+                    readLights(proxies, kRasterStages);
+                    proxies.read(g.importBuffer("volumetrics.proxy_instances",
+                                                &volumetricsPass_->proxyInstances()),
+                                 Use::StorageRead, kRasterStages);
+                    proxies.read(h.depth, Use::Sampled, kFragmentStage);
+                    marched = proxies.write(marched, Use::ColorAttachment);
+                    proxies.write(proxyDepth, Use::DepthWrite);
+                } else {
+                    auto march = g.addPass(
+                        "volumetrics_volumes_march", PassKind::Device,
+                        [this, ids, marched, volume, shadowDescriptors](PassContext& ctx) {
+                            VolumetricsPass::Inputs in = volume;
+                            in.depth = ctx.image(ids.depth);
+                            in.shadows = &shadowDescriptors;
+                            volumetricsPass_->recordVolumesMarch(ctx.cmd(), in, ctx.image(marched));
+                        });
+                    readLights(march);
+                    march.read(
+                        g.importBuffer("volumetrics.volume_bins", &volumetricsPass_->volumeBins()),
+                        Use::StorageRead);
+                    march.read(h.depth, Use::Sampled);
+                    marched = march.write(marched, Use::StorageWrite);
+                }
                 auto blur =
                     g.addPass("volumetrics_volumes_blur", PassKind::Device,
                               [this, marched, blurred, volume](PassContext& ctx) {

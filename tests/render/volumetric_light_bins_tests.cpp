@@ -10,6 +10,7 @@
 #include <random>
 
 #include "passes/volumetrics/light_bins.h"
+#include "passes/volumetrics/light_proxies.h"
 
 namespace candela::render {
 namespace {
@@ -167,6 +168,74 @@ TEST(VolumetricLightBins, TheSunAndAVolumeHoldingTheCameraAreEverywhereAndOneBeh
         EXPECT_TRUE(listed(bins, binCount, b, 1));
         EXPECT_FALSE(listed(bins, binCount, b, 2));
     }
+}
+
+// The rasterised proxies' draws (light_proxies.h): a light whose volume is off screen gets no
+// instance (no fragment); one wholly behind the wall is drawn with the depth test on (its
+// front faces fail it: no fragment shades); one holding the camera draws its back faces
+// untested; the sun goes to the full-screen pass and a light of no volumetric scale nowhere.
+TEST(VolumetricLightProxies, DrawOnlyTheVolumesTheViewCanSee) {
+    const CameraView camera = testCamera();
+    auto point = [](const glm::vec3& position, float range) {
+        LightInstance l;
+        l.light.type = content::LightType::Point;
+        l.light.attenuationRadius = range;
+        l.position = position;
+        return l;
+    };
+    std::vector<LightInstance> lights = {
+        point(glm::vec3(0.0f, 0.5f, -4.0f), 1.0f),   // 0: in view, the camera outside
+        point(glm::vec3(0.5f, 1.0f, 12.0f), 3.0f),   // 1: behind the camera (off screen)
+        point(glm::vec3(40.0f, 1.0f, -6.0f), 2.0f),  // 2: far beside the view
+        point(glm::vec3(0.6f, 1.1f, 1.5f), 1.0f),    // 3: holds the camera
+        point(glm::vec3(0.0f, 0.5f, -4.0f), 1.0f),   // 4: volumetric 0
+    };
+    LightInstance spot = point(glm::vec3(0.5f, 1.0f, 4.0f), 10.0f);  // 5: its cone holds it
+    spot.light.type = content::LightType::Spot;
+    spot.light.outerConeAngle = 0.4f;
+    spot.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+    lights.push_back(spot);
+    LightInstance wide = spot;  // 6: a cone of 80 degrees draws the sphere
+    wide.light.outerConeAngle = glm::radians(80.0f);
+    wide.position = glm::vec3(-1.0f, 0.0f, -5.0f);
+    wide.light.attenuationRadius = 1.0f;
+    lights.push_back(wide);
+    LightInstance sun;
+    sun.light.type = content::LightType::Directional;
+    lights.push_back(sun);  // 7
+    std::vector<float> scales(lights.size(), 1.0f);
+    scales[4] = 0.0f;
+    const LightProxies proxies = buildLightProxies(lights, scales, camera, kWidth, kHeight);
+    ASSERT_EQ(proxies.fullScreen, 1u);
+    EXPECT_EQ(proxies.instances[0], 7u);
+    // Which draw each light is in (none: -1).
+    auto drawOf = [&](uint32_t light) -> int {
+        for (size_t d = 0; d < proxies.draws.size(); ++d) {
+            const LightProxyDraw& draw = proxies.draws[d];
+            for (uint32_t k = draw.firstInstance; k < draw.firstInstance + draw.instanceCount; ++k)
+                if (proxies.instances[k] == light) return int(d);
+        }
+        return -1;
+    };
+    EXPECT_EQ(drawOf(1), -1) << "behind the camera";
+    EXPECT_EQ(drawOf(2), -1) << "beside the view";
+    EXPECT_EQ(drawOf(4), -1) << "no volumetric scale";
+    ASSERT_GE(drawOf(0), 0);
+    EXPECT_FALSE(proxies.draws[drawOf(0)].holdsCamera);
+    EXPECT_EQ(proxies.draws[drawOf(0)].kind, LightProxyKind::Sphere);
+    ASSERT_GE(drawOf(3), 0);
+    EXPECT_TRUE(proxies.draws[drawOf(3)].holdsCamera);
+    ASSERT_GE(drawOf(5), 0);
+    EXPECT_TRUE(proxies.draws[drawOf(5)].holdsCamera);
+    EXPECT_EQ(proxies.draws[drawOf(5)].kind, LightProxyKind::Cone);
+    ASSERT_GE(drawOf(6), 0);
+    EXPECT_EQ(proxies.draws[drawOf(6)].kind, LightProxyKind::Sphere);
+    // One draw per group: every instance once.
+    size_t instanced = proxies.fullScreen;
+    for (const LightProxyDraw& draw : proxies.draws)
+        instanced += draw.instanceCount;
+    EXPECT_EQ(instanced, proxies.instances.size());
+    EXPECT_EQ(proxies.instances.size(), 5u);
 }
 
 }  // namespace

@@ -7,9 +7,13 @@
 // - a medium bounded to a box changes nothing outside it;
 // - a static camera's frames stay put (the per-light volumes' dither and blur do not crawl);
 // - hair, like blended surfaces, is seen through the medium in front of it.
+// - the per-light volumes' rasterised proxies add what the tile lists add, and light the medium
+//   around a camera inside a light's sphere.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
@@ -595,6 +599,106 @@ TEST_F(Volumetrics, AMediumBoundedToABoxScattersAndAttenuatesNothingOutsideIt) {
         EXPECT_LT(outside, 1e-4);
         EXPECT_GT(inside, 0.05);
     }
+}
+
+// The per-light volumes' two ways to the same sums (render/README.md "Volumetric lighting"):
+// each light's proxy mesh rasterised (VolumetricsSettings::volumeProxies) and the compute march
+// over CPU light lists per tile march the same samples of the same segments, so the proxies must
+// cover every pixel whose ray meets a volume: point and spot lights with the camera outside and
+// inside them, a rect light, and lights off screen and wholly behind the wall (nothing to add).
+TEST_F(Volumetrics, ProxyMeshesAddWhatTheTileListsAdd) {
+    TestScene scene = wallScene(black());
+    scene.width = scene.height = 64;
+    scene.lights.push_back(pointLight(glm::vec3(1.5f, 0.5f, -4.0f), 2000.0f, 1.5f));
+    scene.lights.push_back(pointLight(glm::vec3(0.3f, -0.2f, -0.5f), 300.0f, 3.0f));  // holds it
+    LightInstance spot = pointLight(glm::vec3(-1.5f, 1.5f, -3.0f), 2000.0f, 4.0f);
+    spot.light.type = content::LightType::Spot;
+    spot.light.outerConeAngle = 0.5f;
+    spot.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.2f));
+    scene.lights.push_back(spot);
+    LightInstance around = spot;  // its cone holds the camera
+    around.position = glm::vec3(0.0f, 0.0f, 2.0f);
+    around.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+    around.light.outerConeAngle = 0.3f;
+    around.light.attenuationRadius = 7.0f;
+    around.light.lumens = 500.0f;
+    scene.lights.push_back(around);
+    LightInstance rect;
+    rect.light.type = content::LightType::Rect;
+    rect.light.lumens = 2000.0f;
+    rect.light.attenuationRadius = 3.0f;
+    rect.light.width = 1.0f;
+    rect.light.height = 0.6f;
+    rect.position = {0.5f, -1.0f, -3.0f};
+    rect.direction = {0.0f, 1.0f, 0.0f};
+    rect.tubeAxis = {1.0f, 0.0f, 0.0f};
+    scene.lights.push_back(rect);
+    scene.lights.push_back(pointLight(glm::vec3(0.0f, 0.0f, -9.0f), 2000.0f, 2.5f));  // behind
+    scene.lights.push_back(pointLight(glm::vec3(0.0f, 0.0f, 5.0f), 2000.0f, 2.0f));   // off
+    content::Fog fog;
+    fog.scattering = 0.05f;
+    fog.absorption = 0.01f;
+    fog.anisotropy = 0.3f;
+    SceneResources resources(context);
+    FrameInputs inputs = scene.prepare(resources);
+    inputs.scene.fog = fog;
+    auto render = [&](bool proxies, size_t lights) {
+        RendererOptions options;
+        options.volumetrics = VolumetricsMode::Volumes;
+        options.volumetricsSettings.volumeProxies = proxies;
+        FrameInputs subset = inputs;
+        subset.scene.lights = inputs.scene.lights.subspan(0, lights);
+        CapturedFrame frame =
+            renderOffscreen(context, subset, scene.width, scene.height, 1, &resources, options);
+        EXPECT_EQ(frame.nonFiniteHdrValues(), 0u);
+        return frame;
+    };
+    const CapturedFrame proxies = render(true, scene.lights.size());
+    const CapturedFrame tiles = render(false, scene.lights.size());
+    double largest = 0.0, worst = 0.0;
+    for (size_t i = 0; i < tiles.hdrRgb.size(); ++i) {
+        largest = std::max(largest, double(tiles.hdrRgb[i]));
+        worst = std::max(worst, std::abs(double(proxies.hdrRgb[i]) - tiles.hdrRgb[i]));
+    }
+    std::printf("proxies against tile lists: largest difference %.2e of the brightest %.3g\n",
+                worst / largest, largest);
+    EXPECT_GT(largest, 0.0);
+    // The same samples summed in another order: float rounding only.
+    EXPECT_LT(worst, 1e-4 * largest);
+    // The lights behind the wall and behind the camera add nothing, to the bit.
+    const CapturedFrame without = render(true, scene.lights.size() - 2);
+    ASSERT_EQ(without.hdrRgb.size(), proxies.hdrRgb.size());
+    EXPECT_EQ(std::memcmp(without.hdrRgb.data(), proxies.hdrRgb.data(), proxies.hdrRgb.size() * 4),
+              0);
+}
+
+// The camera inside a point light's range sphere: its proxy's back faces (untested against the
+// depth, the front ones behind the near plane) still cover the screen, and the medium around the
+// camera matches the single-scattering integral.
+TEST_F(Volumetrics, TheCameraInsideALightsSphereStillGetsItsScattering) {
+    TestScene scene = wallScene(black());
+    scene.width = scene.height = 64;
+    const LightInstance light = pointLight(glm::vec3(0.2f, 0.1f, -1.0f), 500.0f, 3.0f);
+    scene.lights.push_back(light);
+    content::Fog fog;
+    fog.scattering = 0.05f;
+    fog.absorption = 0.01f;
+    SceneResources resources(context);
+    FrameInputs inputs = scene.prepare(resources);
+    inputs.scene.fog = fog;
+    RendererOptions options;
+    options.volumetrics = VolumetricsMode::Volumes;
+    options.volumetricsSettings.volumeProxies = true;
+    const CapturedFrame frame =
+        renderOffscreen(context, inputs, scene.width, scene.height, 1, &resources, options);
+    ASSERT_EQ(frame.nonFiniteHdrValues(), 0u);
+    const double error = relativeMeanError(frame, scene, light, fog, 0.25f);
+    std::printf("camera inside the light's sphere: %.3f%% mean absolute error\n", 100.0 * error);
+    EXPECT_LT(error, 0.10);
+    // Every corner's ray crosses the sphere (the camera is 1 m from its centre): lit.
+    for (uint32_t y : {0u, scene.height - 1})
+        for (uint32_t x : {0u, scene.width - 1})
+            EXPECT_GT(hdrPixel(frame, x, y)[1], 0.0f) << x << ", " << y;
 }
 
 }  // namespace

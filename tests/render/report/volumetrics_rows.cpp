@@ -2,7 +2,8 @@
 // per-pixel reference march at 1, 16, 256 and 4,096 point lights scattered through uniform fog
 // in front of a black wall, so every pixel holds only the in-scattered radiance. The lights'
 // range shrinks as they crowd (3 m up to 16 lights, then 3 m x cbrt(16 / n): 1.19 m at 256,
-// 0.47 m at 4,096), as a scene's many small lights do, so the per-light volumes' tiles skip
+// 0.47 m at 4,096), as a scene's many small lights do, so the per-light volumes' tiles (or
+// proxy meshes: VolumetricsSettings::volumeProxies, their own rows) skip
 // the lights whose volume they miss. Error: mean
 // |mode - reference| over the image, relative to the reference's mean. Cost: GPU time of the
 // volumetrics passes (`volumetrics_ms`, median of the repetitions), each mode against the
@@ -63,14 +64,17 @@ struct Rendered {
     std::vector<std::pair<std::string, double>> passes;
 };
 
+// `proxies`: the per-light volumes by their rasterised proxy meshes instead of the compute march
+// over CPU light lists per tile (VolumetricsSettings::volumeProxies).
 Rendered renderMode(GpuContext& gpu, TestScene& scene, const content::Fog& fog,
-                    VolumetricsMode mode, uint32_t repetitions) {
+                    VolumetricsMode mode, uint32_t repetitions, bool proxies = false) {
     SceneResources resources(gpu);
     FrameInputs inputs = scene.prepare(resources);
     inputs.scene.fog = fog;
     RendererOptions options;
     options.volumetrics = mode;
     options.volumetricsSettings.referenceSteps = 128;
+    options.volumetricsSettings.volumeProxies = proxies;
     std::vector<double> ms;
     std::vector<std::pair<std::string, std::vector<double>>> passMs;
     Rendered r;
@@ -96,15 +100,19 @@ Rendered renderMode(GpuContext& gpu, TestScene& scene, const content::Fog& fog,
 
 struct Costs {
     uint32_t count;
-    double volumesMs = 0.0, froxelsMs = 0.0;
-    std::string volumesPasses, froxelsPasses;  // "volumes_march 1.2 + volumes_blur ..." (ms)
+    double volumesMs = 0.0, froxelsMs = 0.0, proxiesMs = 0.0;
+    // "volumes_march 1.2 + volumes_blur ..." (ms); proxies: the volumes by proxy meshes
+    std::string volumesPasses, froxelsPasses, proxiesPasses;
 };
 
-// Records a render's cost under its mode in `cost`.
-void addCost(Costs& cost, VolumetricsMode mode, const Rendered& r) {
-    (mode == VolumetricsMode::Volumes ? cost.volumesMs : cost.froxelsMs) = r.ms;
-    std::string& passes =
-        mode == VolumetricsMode::Volumes ? cost.volumesPasses : cost.froxelsPasses;
+// Records a render's cost under its mode in `cost` (`proxies`: the volumes by proxy meshes).
+void addCost(Costs& cost, VolumetricsMode mode, const Rendered& r, bool proxies = false) {
+    (proxies                            ? cost.proxiesMs
+     : mode == VolumetricsMode::Volumes ? cost.volumesMs
+                                        : cost.froxelsMs) = r.ms;
+    std::string& passes = proxies                            ? cost.proxiesPasses
+                          : mode == VolumetricsMode::Volumes ? cost.volumesPasses
+                                                             : cost.froxelsPasses;
     for (const auto& [pass, passTime] : r.passes) {
         if (!passes.empty()) passes += " + ";
         passes += pass.substr(std::string("volumetrics_").size()) + " " + formatNumber(passTime);
@@ -120,8 +128,9 @@ std::string crossoverNote(const std::string& what, const std::vector<Costs>& cos
     for (const Costs& c : costs) {
         if (!measured.empty()) measured += "; ";
         measured += std::to_string(c.count) + " lights: volumes " + formatNumber(c.volumesMs) +
-                    " ms (" + c.volumesPasses + "), froxels " + formatNumber(c.froxelsMs) +
-                    " ms (" + c.froxelsPasses + ")";
+                    " ms (" + c.volumesPasses + "), volumes by proxy meshes " +
+                    formatNumber(c.proxiesMs) + " ms (" + c.proxiesPasses + "), froxels " +
+                    formatNumber(c.froxelsMs) + " ms (" + c.froxelsPasses + ")";
         if (c.froxelsMs >= c.volumesMs) {
             crossover = nullptr;
         } else if (!crossover) {
@@ -157,9 +166,13 @@ void addVolumetricsRows(ReportContext& context) {
         const Rendered reference =
             renderMode(gpu, scene, fog, VolumetricsMode::Reference, repetitions);
         Costs cost{count, 0.0, 0.0};
-        for (VolumetricsMode mode : {VolumetricsMode::Volumes, VolumetricsMode::Froxels}) {
-            const Rendered r = renderMode(gpu, scene, fog, mode, repetitions);
-            addCost(cost, mode, r);
+        // The volumes twice: the tile-listed compute march (the default) and rasterised proxies.
+        const std::pair<VolumetricsMode, bool> variants[] = {{VolumetricsMode::Volumes, false},
+                                                             {VolumetricsMode::Volumes, true},
+                                                             {VolumetricsMode::Froxels, false}};
+        for (const auto& [mode, proxies] : variants) {
+            const Rendered r = renderMode(gpu, scene, fog, mode, repetitions, proxies);
+            addCost(cost, mode, r, proxies);
             double error = 0.0, total = 0.0, worst = 0.0;
             for (size_t i = 1; i < reference.frame.hdrRgb.size(); i += 3) {
                 const double d = std::abs(double(r.frame.hdrRgb[i]) - reference.frame.hdrRgb[i]);
@@ -172,14 +185,17 @@ void addVolumetricsRows(ReportContext& context) {
             char name[96], metric[320], worstText[96], range[48];
             std::snprintf(range, sizeof(range), "lights' range %s m",
                           formatNumber(lightRange(count)).c_str());
-            std::snprintf(name, sizeof(name), "Volumetrics: %s, %u point light%s",
-                          volumetricsModeName(mode), count, count == 1 ? "" : "s");
+            std::snprintf(name, sizeof(name), "Volumetrics: %s%s, %u point light%s",
+                          volumetricsModeName(mode), proxies ? " (proxy meshes)" : "", count,
+                          count == 1 ? "" : "s");
             if (mode == VolumetricsMode::Volumes) {
                 std::snprintf(metric, sizeof(metric),
                               "mean |L - L_ref| / mean L_ref of the in-scattered radiance "
                               "(uniform fog 0.05 + 0.01 /m, g 0.3, black wall 8 m away, %s, %ux%u, "
-                              "half resolution, %u steps per light)",
-                              range, size, size, RendererOptions{}.volumetricsSettings.volumeSteps);
+                              "half resolution, %u steps per light, %s)",
+                              range, size, size, RendererOptions{}.volumetricsSettings.volumeSteps,
+                              proxies ? "each light's proxy mesh rasterised"
+                                      : "compute march over CPU light lists per 8x8 tile");
             } else {
                 std::snprintf(metric, sizeof(metric),
                               "mean |L - L_ref| / mean L_ref of the in-scattered radiance "
@@ -207,6 +223,8 @@ void addVolumetricsRows(ReportContext& context) {
             Costs cost{count};
             for (VolumetricsMode mode : {VolumetricsMode::Volumes, VolumetricsMode::Froxels})
                 addCost(cost, mode, renderMode(gpu, scene, fog, mode, repetitions));
+            addCost(cost, VolumetricsMode::Volumes,
+                    renderMode(gpu, scene, fog, VolumetricsMode::Volumes, repetitions, true), true);
             wide.push_back(cost);
         }
         context.report.notes.push_back(crossoverNote("320x180, the rows' scenes", wide));

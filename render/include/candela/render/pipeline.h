@@ -40,9 +40,13 @@ struct GraphicsPipelineDesc {
     VkCompareOp depthCompare = VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
     bool depthWrite = true;
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
-    bool dynamicCullMode = false;  // set per draw with vkCmdSetCullMode instead
+    bool dynamicCullMode = false;   // set per draw with vkCmdSetCullMode instead
+    bool dynamicDepthTest = false;  // set per draw with vkCmdSetDepthTestEnable instead
     // colour = src * srcAlpha + dst * (1 - srcAlpha): UI overlays, glTF BLEND (straight alpha)
     bool alphaBlend = false;
+    // colour = src + dst, alpha = dst (sums into a target whose alpha holds data of its own:
+    // the per-light volumes' view depth)
+    bool additiveBlend = false;
     // Samples per pixel of every attachment (the forward pass's MSAA targets).
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     SpecializationConstants* specialization = nullptr;  // applied to the fragment stage

@@ -161,6 +161,13 @@ struct VolumetricsSettings {
     // Per-light volumes: steps per light along each half-resolution pixel's segment inside
     // the light's volume (the 4x4 dither and the blur make 16 sets of offsets of them).
     uint32_t volumeSteps = 16;
+    // How `volumes` finds the lights a pixel's ray meets: true, each light's proxy mesh (a
+    // sphere, a cone) rasterised into the half-resolution target with additive blending, the
+    // fragment marching its light (seed 004 §3); false, a compute march over CPU light lists
+    // per 8x8 tile (light_bins.h). The same sums (to 1e-7); the lists cost 1.5-3.5x less on
+    // lavapipe at 1 to 4,096 lights (render/README.md "Volumetric lighting"), so they are the
+    // default.
+    bool volumeProxies = false;
     float referenceFar = 100.0f;  // metres; past it the medium is not drawn (both modes)
 };
 

@@ -20,6 +20,8 @@
 // Per workgroup of the volumes' march or the froxel lighting: the lights that reach its tile or
 // cluster (light_bins.h).
 #define VOLUMETRICS_BINDING_LIGHT_BINS 14
+// The rasterised per-light volumes: the light index of each proxy instance (light_proxies.h).
+#define VOLUMETRICS_BINDING_PROXY_INSTANCES 15
 // Shadows (common/shadows.glsl, passes/shadows/shadow_pass.h).
 #define VOLUMETRICS_BINDING_SHADOW_ATLAS 7
 #define VOLUMETRICS_BINDING_SHADOW_VIEWS 8

@@ -8,6 +8,7 @@
 
 #include "candela/render/gpu_context.h"
 #include "common/specialization_ids.h"
+#include "gbuffer_targets.h"
 #include "passes/shadows/shadow_pass.h"
 #include "passes/volumetrics/light_bins.h"
 #include "passes/volumetrics/volumetrics_bindings.h"
@@ -18,7 +19,12 @@
 #include "shaders/volumetrics_volumes_blur.comp.spv.h"
 #include "shaders/volumetrics_volumes_composite.comp.spv.h"
 #include "shaders/volumetrics_volumes_march.comp.spv.h"
+#include "shaders/volumetrics_volumes_proxy.frag.spv.h"
+#include "shaders/volumetrics_volumes_proxy.vert.spv.h"
+#include "shaders/volumetrics_volumes_sun.frag.spv.h"
+#include "shaders/volumetrics_volumes_sun.vert.spv.h"
 #include "vk/memory_barrier.h"
+#include "vk/viewport.h"
 
 namespace candela::render {
 
@@ -72,6 +78,41 @@ constexpr DescriptorBinding kLightingBindings[] = {
     {VOLUMETRICS_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
     {VOLUMETRICS_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
 };
+
+// The rasterised per-light volumes' bindings: the lighting passes' (their proxies read the
+// lights in the vertex stage too), the scene's depth and the instance list.
+constexpr VkShaderStageFlags kRaster = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr DescriptorBinding kProxyBindings[] = {
+    {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kRaster},
+    {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRaster},
+    {VOLUMETRICS_BINDING_LIGHT_SCALES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRaster},
+    {VOLUMETRICS_BINDING_SHADOW_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kRaster},
+    {VOLUMETRICS_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRaster},
+    {VOLUMETRICS_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRaster},
+    {VOLUMETRICS_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kRaster},
+    {VOLUMETRICS_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kRaster},
+    {VOLUMETRICS_BINDING_PROXY_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRaster},
+};
+
+// A rasterised per-light volumes pipeline: the full-screen pass (`sun`: stores the sun's
+// march, the view depth and the depth target) or a proxy pipeline (adds, its depth test and
+// culled faces set per draw).
+Pipeline volumesRasterPipeline(GpuContext& context, bool sun, SpecializationConstants& constants) {
+    GraphicsPipelineDesc desc;
+    desc.vertexSpirv = sun ? std::span<const uint32_t>(volumetrics_volumes_sun_vert_spv)
+                           : std::span<const uint32_t>(volumetrics_volumes_proxy_vert_spv);
+    desc.fragmentSpirv = sun ? std::span<const uint32_t>(volumetrics_volumes_sun_frag_spv)
+                             : std::span<const uint32_t>(volumetrics_volumes_proxy_frag_spv);
+    desc.colorFormats = {VolumetricsPass::volumesDesc(1, 1).format};
+    desc.depthFormat = GBufferTargets::kDepthFormat;
+    desc.depthCompare = sun ? VK_COMPARE_OP_ALWAYS : VK_COMPARE_OP_GREATER_OR_EQUAL;  // reverse-Z
+    desc.depthWrite = sun;
+    desc.dynamicCullMode = !sun;
+    desc.dynamicDepthTest = !sun;
+    desc.additiveBlend = !sun;
+    desc.specialization = &constants;
+    return Pipeline::graphics(context, desc, kProxyBindings, sizeof(VolumetricsPush));
+}
 
 // The lighting passes' bindings (kLightingBindings) followed by a pass's own.
 template <size_t N>
@@ -146,12 +187,35 @@ VkDeviceSize VolumetricsPass::froxelIntegratedBytes(const glm::uvec3& grid) {
     return kFroxelHeaderBytes + froxelBufferBytes(grid);
 }
 
-ImageDesc VolumetricsPass::volumesDesc(uint32_t width, uint32_t height) {
-    return {VK_FORMAT_R32G32B32A32_SFLOAT, (width + 1) / 2, (height + 1) / 2, 1, false,
-            VK_IMAGE_USAGE_STORAGE_BIT};
+ImageDesc VolumetricsPass::volumesDesc(uint32_t width, uint32_t height, bool proxies) {
+    return {VK_FORMAT_R32G32B32A32_SFLOAT,
+            (width + 1) / 2,
+            (height + 1) / 2,
+            1,
+            false,
+            VK_IMAGE_USAGE_STORAGE_BIT |
+                (proxies ? VkImageUsageFlags(VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT)
+                         : VkImageUsageFlags(0))};
 }
 
-void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadows) {
+ImageDesc VolumetricsPass::volumesDepthDesc(uint32_t width, uint32_t height) {
+    return {GBufferTargets::kDepthFormat,
+            (width + 1) / 2,
+            (height + 1) / 2,
+            1,
+            false,
+            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT};
+}
+
+bool VolumetricsPass::sunInMedium(std::span<const LightInstance> lights) {
+    return std::any_of(lights.begin(), lights.end(), [](const LightInstance& l) {
+        const float s = l.light.volumetric;
+        return l.light.type == content::LightType::Directional && s > 0.0f && s <= 1e3f;
+    });
+}
+
+void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadows,
+                              const Uses& uses) {
     const VkDeviceSize bytes = std::max<VkDeviceSize>(lights.size(), 1) * sizeof(float);
     ensureHostBuffer(context_, lightScales_, bytes);
     auto* scales = static_cast<float*>(lightScales_.mapped());
@@ -159,43 +223,79 @@ void VolumetricsPass::prepare(std::span<const LightInstance> lights, bool shadow
         const float s = lights[i].light.volumetric;
         scales[i] = s >= 0.0f && s <= 1e3f ? s : 0.0f;  // NaN and negatives light no medium
     }
-    sunInMedium_ = false;
-    for (size_t i = 0; i < lights.size(); ++i) {
-        if (lights[i].light.type == content::LightType::Directional && scales[i] > 0.0f)
-            sunInMedium_ = true;
-    }
     const bool areaLights = std::any_of(lights.begin(), lights.end(), [](const LightInstance& l) {
         return l.light.type == content::LightType::Rect || l.light.type == content::LightType::Disk;
     });
-    if (built_ && shadows == shadows_ && areaLights == areaLights_) return;
+    if (shadows != shadows_ || areaLights != areaLights_) {
+        built_ = {};  // every variant changes
+        proxyAreaBuilt_ = false;
+    }
     shadows_ = shadows;
     areaLights_ = areaLights;
     SpecializationConstants constants;
     constants.set(SPEC_SHADOWS_ENABLED, shadows);
     constants.set(SPEC_MEDIUM_AREA_LIGHTS, areaLights);
-    const auto reference = withLightingBindings(std::array{
-        DescriptorBinding{VOLUMETRICS_BINDING_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                          kCompute},
-        DescriptorBinding{VOLUMETRICS_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute}});
-    reference_ = Pipeline::compute(context_, volumetrics_reference_comp_spv, reference,
-                                   sizeof(VolumetricsPush), &constants);
-    const auto light = withLightingBindings(
-        std::array{DescriptorBinding{VOLUMETRICS_BINDING_FROXEL_MEDIUM,
-                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-                   DescriptorBinding{VOLUMETRICS_BINDING_LIGHT_BINS,
-                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute}});
-    froxelLight_ = Pipeline::compute(context_, volumetrics_froxel_light_comp_spv, light,
-                                     sizeof(VolumetricsPush), &constants);
-    const auto march = withLightingBindings(
-        std::array{DescriptorBinding{VOLUMETRICS_BINDING_DEPTH,
-                                     VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
-                   DescriptorBinding{VOLUMETRICS_BINDING_VOLUMES_MARCHED,
-                                     VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
-                   DescriptorBinding{VOLUMETRICS_BINDING_LIGHT_BINS,
-                                     VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute}});
-    volumesMarch_ = Pipeline::compute(context_, volumetrics_volumes_march_comp_spv, march,
-                                      sizeof(VolumetricsPush), &constants);
-    built_ = true;
+    if (uses.reference && !built_.reference) {
+        const auto reference = withLightingBindings(
+            std::array{DescriptorBinding{VOLUMETRICS_BINDING_DEPTH,
+                                         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+                       DescriptorBinding{VOLUMETRICS_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                                         kCompute}});
+        reference_ = Pipeline::compute(context_, volumetrics_reference_comp_spv, reference,
+                                       sizeof(VolumetricsPush), &constants);
+        built_.reference = true;
+    }
+    if (uses.froxels && !built_.froxels) {
+        const auto light = withLightingBindings(
+            std::array{DescriptorBinding{VOLUMETRICS_BINDING_FROXEL_MEDIUM,
+                                         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+                       DescriptorBinding{VOLUMETRICS_BINDING_LIGHT_BINS,
+                                         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute}});
+        froxelLight_ = Pipeline::compute(context_, volumetrics_froxel_light_comp_spv, light,
+                                         sizeof(VolumetricsPush), &constants);
+        built_.froxels = true;
+    }
+    if (uses.volumesMarch && !built_.volumesMarch) {
+        const auto march = withLightingBindings(
+            std::array{DescriptorBinding{VOLUMETRICS_BINDING_DEPTH,
+                                         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kCompute},
+                       DescriptorBinding{VOLUMETRICS_BINDING_VOLUMES_MARCHED,
+                                         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+                       DescriptorBinding{VOLUMETRICS_BINDING_LIGHT_BINS,
+                                         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute}});
+        volumesMarch_ = Pipeline::compute(context_, volumetrics_volumes_march_comp_spv, march,
+                                          sizeof(VolumetricsPush), &constants);
+        built_.volumesMarch = true;
+    }
+    if (uses.volumesProxies && !built_.volumesProxies) {
+        // The full-screen pass marches only the sun, and the point and spot proxies leave the
+        // area lights' code out (SPEC_MEDIUM_AREA_LIGHTS): buildProxies adds their variant.
+        SpecializationConstants pointLights;
+        pointLights.set(SPEC_SHADOWS_ENABLED, shadows);
+        pointLights.set(SPEC_MEDIUM_AREA_LIGHTS, false);
+        volumesSun_ = volumesRasterPipeline(context_, true, pointLights);
+        volumesProxy_ = volumesRasterPipeline(context_, false, pointLights);
+        built_.volumesProxies = true;
+    }
+}
+
+void VolumetricsPass::buildProxies(std::span<const LightInstance> lights, const CameraView& camera,
+                                   uint32_t width, uint32_t height) {
+    const auto* scales = static_cast<const float*>(lightScales_.mapped());
+    proxies_ = buildLightProxies(lights, std::span<const float>(scales, lights.size()), camera,
+                                 width, height);
+    std::vector<uint32_t> words = proxies_.instances;
+    if (words.empty()) words.push_back(0u);  // a buffer to bind
+    upload(context_, proxyInstances_, words);
+    const bool area = std::any_of(proxies_.draws.begin(), proxies_.draws.end(),
+                                  [](const LightProxyDraw& d) { return d.areaLights; });
+    if (area && !proxyAreaBuilt_) {
+        SpecializationConstants areaLights;
+        areaLights.set(SPEC_SHADOWS_ENABLED, shadows_);
+        areaLights.set(SPEC_MEDIUM_AREA_LIGHTS, true);
+        volumesProxyArea_ = volumesRasterPipeline(context_, false, areaLights);
+        proxyAreaBuilt_ = true;
+    }
 }
 
 void VolumetricsPass::binLights(std::span<const LightInstance> lights, const CameraView& camera,
@@ -351,6 +451,65 @@ void VolumetricsPass::recordVolumesMarch(VkCommandBuffer cmd, const Inputs& in,
     volumesMarch_.pushDescriptors(cmd, writes);
     volumesMarch_.pushConstants(cmd, &push, sizeof(push));
     vkCmdDispatch(cmd, groups(marched.desc().width, 8), groups(marched.desc().height, 8), 1);
+}
+
+void VolumetricsPass::recordVolumesProxies(VkCommandBuffer cmd, const Inputs& in,
+                                           const ImageRef& marched, const ImageRef& depth) const {
+    const uint32_t width = marched.desc().width;
+    const uint32_t height = marched.desc().height;
+    // The full-screen pass writes every pixel of both targets before any proxy adds.
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = marched.view();
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingAttachmentInfo depthTarget{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depthTarget.imageView = depth.view();
+    depthTarget.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depthTarget.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    depthTarget.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    rendering.pDepthAttachment = &depthTarget;
+    vkCmdBeginRendering(cmd, &rendering);
+    setViewportAndScissor(cmd, width, height);
+
+    VkDescriptorImageInfo sceneDepth{pointSampler_.handle(), in.depth.view(),
+                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorBufferInfo instances{proxyInstances_.handle(), 0, VK_WHOLE_SIZE};
+    LightingInfos infos;
+    const auto writes = lightingWrites(
+        in, infos,
+        std::array{sampledImageWrite(VOLUMETRICS_BINDING_DEPTH, &sceneDepth),
+                   storageBufferWrite(VOLUMETRICS_BINDING_PROXY_INSTANCES, &instances)});
+    VolumetricsPush push = pushFor(in, in.settings.volumeSteps);
+    push.lights.z = proxies_.fullScreen;
+    volumesSun_.bind(cmd);
+    volumesSun_.pushDescriptors(cmd, writes);
+    volumesSun_.pushConstants(cmd, &push, sizeof(push));
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    const Pipeline* bound = nullptr;
+    for (const LightProxyDraw& draw : proxies_.draws) {
+        const Pipeline& pipeline = draw.areaLights ? volumesProxyArea_ : volumesProxy_;
+        if (&pipeline != bound) {
+            pipeline.bind(cmd);
+            pipeline.pushDescriptors(cmd, writes);
+            bound = &pipeline;
+        }
+        // Outside the proxy: its front faces, behind the scene's depth culled by the test; holding
+        // the camera (or cut by the near plane): its back faces, every one of them.
+        vkCmdSetCullMode(cmd, draw.holdsCamera ? VK_CULL_MODE_FRONT_BIT : VK_CULL_MODE_BACK_BIT);
+        vkCmdSetDepthTestEnable(cmd, draw.holdsCamera ? VK_FALSE : VK_TRUE);
+        push.lights.z = uint32_t(draw.kind);
+        pipeline.pushConstants(cmd, &push, sizeof(push));
+        vkCmdDraw(cmd,
+                  draw.kind == LightProxyKind::Cone ? kConeProxyVertices : kSphereProxyVertices,
+                  draw.instanceCount, 0, draw.firstInstance);
+    }
+    vkCmdEndRendering(cmd);
 }
 
 void VolumetricsPass::recordVolumesBlur(VkCommandBuffer cmd, const Inputs& in,

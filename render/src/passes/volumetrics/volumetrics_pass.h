@@ -15,6 +15,7 @@
 #include "candela/render/pipeline.h"
 #include "candela/render/renderer_options.h"
 #include "frame_graph/graph_resources.h"
+#include "passes/volumetrics/light_proxies.h"
 #include "vk/sampler.h"
 
 namespace candela::render {
@@ -38,17 +39,24 @@ public:
     // then one vec4 per froxel, then the air's boundaries. All zeros reads as "no medium".
     static constexpr VkDeviceSize kFroxelHeaderBytes = (2 + 6) * sizeof(glm::vec4);
     static VkDeviceSize froxelIntegratedBytes(const glm::uvec3& grid);
-    // The per-light volumes' half-resolution targets (in-scattered radiance, view depth).
-    static ImageDesc volumesDesc(uint32_t width, uint32_t height);
+    // The per-light volumes' half-resolution targets (in-scattered radiance, view depth); a
+    // colour target too under the rasterised proxies.
+    static ImageDesc volumesDesc(uint32_t width, uint32_t height, bool proxies = false);
+    // The rasterised proxies' half-resolution depth (the scene's at full-resolution pixel 2q).
+    static ImageDesc volumesDepthDesc(uint32_t width, uint32_t height);
+
+    // The pipelines a frame uses (each built when a frame first needs it).
+    struct Uses {
+        bool reference = false, froxels = false, volumesMarch = false, volumesProxies = false;
+    };
 
     // Each light's volumetric scale, indexed as the light buffer; rewritten every frame (the
     // renderer waits for the previous frame before recording). `shadows`: the variant that
     // reads the shadow maps.
-    void prepare(std::span<const LightInstance> lights, bool shadows);
+    void prepare(std::span<const LightInstance> lights, bool shadows, const Uses& uses);
     const GpuBuffer& lightScales() const { return lightScales_; }
-    // Whether some directional light (the sun) scatters in the medium (volumetric above zero),
-    // after prepare().
-    bool sunInMedium() const { return sunInMedium_; }
+    // Whether some directional light (the sun) scatters in the medium (volumetric above zero).
+    static bool sunInMedium(std::span<const LightInstance> lights);
 
     struct Inputs {
         ImageRef depth;  // Sampled
@@ -74,6 +82,13 @@ public:
                    bool sunMarched = false);
     const GpuBuffer& volumeBins() const { return volumeBins_; }
     const GpuBuffer& froxelBins() const { return froxelBins_; }
+    // The rasterised per-light volumes' instance list and draws (light_proxies.h), after
+    // prepare(); rewritten every frame like the scales. Builds the area-light variant if a draw
+    // needs it.
+    void buildProxies(std::span<const LightInstance> lights, const CameraView& camera,
+                      uint32_t width, uint32_t height);
+    const GpuBuffer& proxyInstances() const { return proxyInstances_; }
+    const LightProxies& proxies() const { return proxies_; }
 
     void recordReference(VkCommandBuffer cmd, const Inputs& in) const;
     // Froxels: light into `medium`, integrate into `integrated` (both StorageWrite, the first
@@ -87,6 +102,11 @@ public:
     // in-scattering, the surface's transmittance having been applied already (the sun marched
     // over the froxels' composite, which attenuates by the whole medium).
     void recordVolumesMarch(VkCommandBuffer cmd, const Inputs& in, const ImageRef& marched) const;
+    // Rasterised per-light volumes (seed 004 §3) into `marched` (ColorAttachment) with `depth`
+    // (DepthWrite, half resolution): the full-screen pass (the sun, the view depths, the depth
+    // target), then each proxy draw, added.
+    void recordVolumesProxies(VkCommandBuffer cmd, const Inputs& in, const ImageRef& marched,
+                              const ImageRef& depth) const;
     void recordVolumesBlur(VkCommandBuffer cmd, const Inputs& in, const ImageRef& marched,
                            const ImageRef& blurred) const;
     void recordVolumesComposite(VkCommandBuffer cmd, const Inputs& in, const ImageRef& blurred,
@@ -104,8 +124,8 @@ private:
     GpuContext& context_;
     bool shadows_ = false;
     bool areaLights_ = false;  // the pipelines' SPEC_MEDIUM_AREA_LIGHTS
-    bool sunInMedium_ = false;
-    bool built_ = false;
+    Uses built_;
+    bool proxyAreaBuilt_ = false;
     Pipeline reference_;
     Pipeline froxelLight_;
     Pipeline froxelIntegrate_;
@@ -113,6 +133,11 @@ private:
     Pipeline volumesMarch_;
     Pipeline volumesBlur_;
     Pipeline volumesComposite_;
+    Pipeline volumesSun_;
+    Pipeline volumesProxy_;      // point and spot lights
+    Pipeline volumesProxyArea_;  // rect and disk lights (SPEC_MEDIUM_AREA_LIGHTS)
+    LightProxies proxies_;
+    GpuBuffer proxyInstances_;
     Sampler pointSampler_;
     GpuBuffer lightScales_;
     GpuBuffer volumeBins_;
