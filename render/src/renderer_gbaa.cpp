@@ -8,6 +8,7 @@
 #include "candela/render/renderer.h"
 #include "frame_graph/frame_graph.h"
 #include "frame_graph/frame_graph_executor.h"
+#include "frame_graph/image_copy_pass.h"
 #include "passes/gbaa/gbaa_pass.h"
 
 namespace candela::render {
@@ -30,11 +31,7 @@ uint32_t Renderer::declareGbaa(uint32_t hdrId, uint32_t hdrVersion) {
         p.read(edges, Use::Sampled);
         resolved = p.write(resolved, Use::StorageWrite);
     }
-    auto p = g.addPass("gbaa_copy", PassKind::Device, [resolved, hdr](PassContext& ctx) {
-        GbaaPass::recordCopy(ctx.cmd(), ctx.image(resolved), ctx.image(hdr));
-    });
-    p.read(resolved, Use::TransferSrc);
-    hdr = p.write(hdr, Use::TransferDst);
+    hdr = declareImageCopy(g, "gbaa_copy", resolved, hdr);
     return hdr.version;
 }
 

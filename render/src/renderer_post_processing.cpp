@@ -13,6 +13,7 @@
 #include "candela/render/renderer.h"
 #include "frame_graph/frame_graph.h"
 #include "frame_graph/frame_graph_executor.h"
+#include "frame_graph/image_copy_pass.h"
 #include "passes/bloom/bloom_pass.h"
 #include "passes/exposure/exposure_bindings.h"
 #include "passes/exposure/exposure_pass.h"
@@ -52,13 +53,7 @@ uint32_t Renderer::declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposur
         p.read(history, Use::Sampled);
         resolved = p.write(resolved, Use::StorageWrite);
     }
-    {
-        auto p = g.addPass("taa_copy", PassKind::Device, [hdr, resolved](PassContext& ctx) {
-            TaaPass::recordCopy(ctx.cmd(), ctx.image(resolved), ctx.image(hdr));
-        });
-        p.read(resolved, Use::TransferSrc);
-        hdr = p.write(hdr, Use::TransferDst);
-    }
+    hdr = declareImageCopy(g, "taa_copy", resolved, hdr);
     historyWrite_ ^= 1u;
     historyValid_ = true;
     return hdr.version;

@@ -30,13 +30,4 @@ void GbaaPass::recordResolve(VkCommandBuffer cmd, const ImageRef& hdr, const Ima
     vkCmdDispatch(cmd, (hdr.desc().width + 7) / 8, (hdr.desc().height + 7) / 8, 1);
 }
 
-void GbaaPass::recordCopy(VkCommandBuffer cmd, const ImageRef& resolved, const ImageRef& hdr) {
-    VkImageCopy region{};
-    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.extent = {hdr.desc().width, hdr.desc().height, 1};
-    vkCmdCopyImage(cmd, resolved.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, hdr.handle(),
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-}
-
 }  // namespace candela::render

@@ -18,8 +18,6 @@ public:
     // HDR target's size).
     void recordResolve(VkCommandBuffer cmd, const ImageRef& hdr, const ImageRef& edges,
                        const ImageRef& resolved) const;
-    // resolved: TransferSrc; hdr: TransferDst (same format and size).
-    static void recordCopy(VkCommandBuffer cmd, const ImageRef& resolved, const ImageRef& hdr);
 
 private:
     Pipeline pipeline_;

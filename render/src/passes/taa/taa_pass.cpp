@@ -71,13 +71,4 @@ void TaaPass::recordResolve(VkCommandBuffer cmd, const ImageRef& current, const 
     vkCmdDispatch(cmd, (current.desc().width + 7) / 8, (current.desc().height + 7) / 8, 1);
 }
 
-void TaaPass::recordCopy(VkCommandBuffer cmd, const ImageRef& resolved, const ImageRef& hdr) {
-    VkImageCopy region{};
-    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.extent = {hdr.desc().width, hdr.desc().height, 1};
-    vkCmdCopyImage(cmd, resolved.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, hdr.handle(),
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-}
-
 }  // namespace candela::render

@@ -24,8 +24,6 @@ public:
     void recordResolve(VkCommandBuffer cmd, const ImageRef& current, const ImageRef& motion,
                        const ImageRef& history, const ImageRef& resolved,
                        const Settings& settings) const;
-    // resolved: TransferSrc; hdr: TransferDst (same format and size).
-    static void recordCopy(VkCommandBuffer cmd, const ImageRef& resolved, const ImageRef& hdr);
 
     // The i-th offset of the fixed 16-long Halton (2, 3) sequence, in pixels in [-0.5, 0.5).
     static float jitterX(uint32_t frame);
