@@ -22,6 +22,7 @@
 #include "shaders/gbuffer_extended_layered_edges.frag.spv.h"
 #include "shaders/gbuffer_layered.frag.spv.h"
 #include "shaders/gbuffer_layered_edges.frag.spv.h"
+#include "vk/rendering_attachments.h"
 #include "vk/viewport.h"
 
 namespace candela::render {
@@ -141,16 +142,14 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     const uint32_t materialCount = targets.extended ? 8u : 6u;
     const uint32_t colorCount = materialCount + (targets.hasEdges ? 1u : 0u);
     for (size_t i = 0; i < colorCount; ++i) {
-        colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-        colors[i].imageView = i == materialCount ? targets.edges.view()
-                              : i < 4            ? targets.color[i].view()
-                              : i == 4           ? hdr.view()
-                              : i == 5           ? targets.motion.view()
-                              : i == 6           ? targets.anisotropy.view()
-                                                 : targets.clearCoat.view();
-        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        const VkImageView view = i == materialCount ? targets.edges.view()
+                                 : i < 4            ? targets.color[i].view()
+                                 : i == 4           ? hdr.view()
+                                 : i == 5           ? targets.motion.view()
+                                 : i == 6           ? targets.anisotropy.view()
+                                                    : targets.clearCoat.view();
+        colors[i] = renderingAttachment(view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                        VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE);
     }
     // No edge where nothing is drawn (the background has no triangle).
     if (targets.hasEdges) {
@@ -159,18 +158,11 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     }
     // Shading model 0 (Unlit) where nothing is drawn; the HDR target starts as the background.
     colors[4].clearValue.color = {{clearRadiance[0], clearRadiance[1], clearRadiance[2], 1.0f}};
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = targets.depth.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth.clearValue.depthStencil = {0.0f, 0};  // reverse-Z: 0 is infinitely far
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = colorCount;
-    rendering.pColorAttachments = colors.data();
-    rendering.pDepthAttachment = &depth;
+    const VkRenderingAttachmentInfo depth = renderingAttachment(
+        targets.depth.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR,
+        VK_ATTACHMENT_STORE_OP_STORE, reverseDepthClear());
+    const VkRenderingInfo rendering =
+        renderingInfo(width, height, std::span(colors.data(), colorCount), &depth);
 
     vkCmdBeginRendering(cmd, &rendering);
     setViewportAndScissor(cmd, width, height);
@@ -228,24 +220,17 @@ void GBufferPass::recordEdges(VkCommandBuffer cmd, const ImageRef& edges, const 
                               const GpuBuffer& previousWorlds) const {
     const uint32_t width = edges.desc().width;
     const uint32_t height = edges.desc().height;
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = edges.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    color.clearValue.color = {
+    VkClearValue noEdge{};
+    noEdge.color = {
         {float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE), float(GBAA_NO_EDGE)}};
-    VkRenderingAttachmentInfo depthInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depthInfo.imageView = depth.view();
-    depthInfo.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-    depthInfo.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    depthInfo.storeOp = VK_ATTACHMENT_STORE_OP_NONE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
-    rendering.pDepthAttachment = &depthInfo;
+    const VkRenderingAttachmentInfo color =
+        renderingAttachment(edges.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                            VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE, noEdge);
+    const VkRenderingAttachmentInfo depthInfo =
+        renderingAttachment(depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+                            VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_NONE);
+    const VkRenderingInfo rendering =
+        renderingInfo(width, height, std::span(&color, 1), &depthInfo);
 
     vkCmdBeginRendering(cmd, &rendering);
     setViewportAndScissor(cmd, width, height);

@@ -19,6 +19,7 @@
 #include "shaders/shadow_depth.frag.spv.h"
 #include "shaders/shadow_depth.vert.spv.h"
 #include "vk/depth_placeholder.h"
+#include "vk/rendering_attachments.h"
 #include "vk/viewport.h"
 
 namespace candela::render {
@@ -362,16 +363,11 @@ void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
                         const SceneResources& resources) {
     const uint32_t size = atlas_.desc().width;
     const bool clearAll = !atlasHoldsMaps_;
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = atlas_.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = clearAll ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth.clearValue.depthStencil = {0.0f, 0};  // reverse depth: 0 is nothing in the way
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {size, size}};
-    rendering.layerCount = 1;
-    rendering.pDepthAttachment = &depth;
+    const VkRenderingAttachmentInfo depth =
+        renderingAttachment(atlas_.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                            clearAll ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
+                            VK_ATTACHMENT_STORE_OP_STORE, reverseDepthClear());
+    const VkRenderingInfo rendering = renderingInfo(size, size, {}, &depth);
     vkCmdBeginRendering(cmd, &rendering);
     pipeline_.bind(cmd);
     for (const LightPlan& lp : lightPlans_) {

@@ -12,6 +12,7 @@
 #include "shaders/shadow_depth.frag.spv.h"
 #include "shaders/shadow_depth.vert.spv.h"
 #include "vk/depth_placeholder.h"
+#include "vk/rendering_attachments.h"
 #include "vk/viewport.h"
 
 namespace candela::render {
@@ -139,16 +140,11 @@ bool SkyOcclusionPass::prepare(const FrameScene& scene, const SceneResources& re
 void SkyOcclusionPass::record(VkCommandBuffer cmd, const FrameScene& scene,
                               const SceneResources& resources) {
     const uint32_t size = atlas_.desc().width;
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = atlas_.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth.clearValue.depthStencil = {0.0f, 0};  // 0: nothing between the texel and the sky
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {size, size}};
-    rendering.layerCount = 1;
-    rendering.pDepthAttachment = &depth;
+    // Cleared to 0: nothing between the texel and the sky.
+    const VkRenderingAttachmentInfo depth = renderingAttachment(
+        atlas_.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR,
+        VK_ATTACHMENT_STORE_OP_STORE, reverseDepthClear());
+    const VkRenderingInfo rendering = renderingInfo(size, size, {}, &depth);
     vkCmdBeginRendering(cmd, &rendering);
     if (!pipeline_.handle()) {  // built for the first frame that renders maps
         GraphicsPipelineDesc desc;

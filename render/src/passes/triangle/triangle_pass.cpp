@@ -3,6 +3,7 @@
 #include "candela/render/gpu_image.h"
 #include "shaders/triangle.frag.spv.h"
 #include "shaders/triangle.vert.spv.h"
+#include "vk/rendering_attachments.h"
 #include "vk/viewport.h"
 
 namespace candela::render {
@@ -20,17 +21,12 @@ void TrianglePass::record(VkCommandBuffer cmd, const ImageRef& target,
                           const std::array<float, 4>& radiance) const {
     const uint32_t width = target.desc().width;
     const uint32_t height = target.desc().height;
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = target.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    color.clearValue.color = {{clear[0], clear[1], clear[2], clear[3]}};
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
+    VkClearValue clearValue{};
+    clearValue.color = {{clear[0], clear[1], clear[2], clear[3]}};
+    const VkRenderingAttachmentInfo color =
+        renderingAttachment(target.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                            VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE, clearValue);
+    const VkRenderingInfo rendering = renderingInfo(width, height, std::span(&color, 1));
 
     vkCmdBeginRendering(cmd, &rendering);
     setViewportAndScissor(cmd, width, height);
