@@ -74,6 +74,8 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
         for (std::int32_t child : model.nodes[s.order[i]].children)
             s.order.push_back(static_cast<std::uint32_t>(child));
     if (s.order.size() != count) s.direct = false;  // not a forest (the loader rejects that)
+    // PassNode keeps the model node in 16 bits.
+    if (count > AnimationPlayer::Scratch::kMaxPassModelNodes) s.direct = false;
 
     // Joints whose only reader is a skin.
     std::vector<std::uint8_t>& isJoint = s.stampLocal;  // reused below: 0 = joint, for now
@@ -119,6 +121,7 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
     s.passNodes.reserve(count);
     s.passOfNode.assign(count, kAbsent);
     s.skipsWorlds = false;
+    using Scratch = AnimationPlayer::Scratch;
     for (const std::uint32_t n : s.order) {
         if (s.localIndex[n] == kAbsent) continue;  // no entity: nothing reads it
         std::uint32_t parentPass = kAbsent;
@@ -128,9 +131,13 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
         const bool writeWorld = s.stampLocal[n] != 0 || player.writeJointWorlds;
         s.skipsWorlds = s.skipsWorlds || !writeWorld;
         s.passOfNode[n] = static_cast<std::uint32_t>(s.passNodes.size());
-        s.passNodes.push_back({n, s.localIndex[n], s.worldIndex[n], s.parentWorld[n],
-                               s.stampLocal[n], static_cast<std::uint16_t>(writeWorld ? 1 : 0),
-                               parentPass});
+        const auto flags =
+            static_cast<std::uint8_t>((s.stampLocal[n] != 0 ? Scratch::kPassStampLocal : 0) |
+                                      (writeWorld ? Scratch::kPassWriteWorld : 0) |
+                                      (parentPass != kAbsent ? Scratch::kPassParentInPass : 0));
+        s.passNodes.push_back({s.localIndex[n], s.worldIndex[n],
+                               parentPass != kAbsent ? parentPass : s.parentWorld[n],
+                               static_cast<std::uint16_t>(n), flags});
     }
     s.skinJointPass.clear();
     s.skinJointBegin.assign(1, 0);
@@ -149,9 +156,10 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
     s.writeJointWorlds = player.writeJointWorlds;
     s.worldsToPrefetchCount = 0;
     for (const AnimationPlayer::Scratch::PassNode& p : s.passNodes)
-        if (p.writeWorld && s.worldsToPrefetchCount < s.worldsToPrefetch.size())
+        if ((p.flags & Scratch::kPassWriteWorld) &&
+            s.worldsToPrefetchCount < s.worldsToPrefetch.size())
             s.worldsToPrefetch[s.worldsToPrefetchCount++] = p.world;
-    s.passMoved.assign(s.passNodes.size(), 0);
+    s.passMoved.assign(s.passNodes.size() > kThreadPassNodes ? s.passNodes.size() : 0, 0);
     s.localFirst = s.worldFirst = kAbsent;
     s.localEnd = s.worldEnd = 0;
     for (const AnimationPlayer::Scratch::PassNode& p : s.passNodes) {
@@ -267,7 +275,6 @@ void prefetchSkeletonPose(const TransformPools& pools, const AnimationPlayer& pl
         prefetchVector(s.pose, true);
     }
     prefetchVector(s.passNodes, false);
-    prefetchVector(s.passMoved, true);
     if (pools.skins != nullptr && s.skinPool == pools.skins &&
         s.skinVersion == pools.skins->structureVersion()) {
         for (const std::uint32_t index : s.skinIndex)
@@ -338,30 +345,34 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
     // Each pass node's world this frame, in L1 for the children and the skins: the thread's
     // buffer for a skeleton of usual size (statically initialised, reused by every player
     // the thread runs), else the player's own (sized by bind).
+    // The same for whether each node's world moved (read by its children only).
     alignas(64) thread_local ecs::Mat4 threadWorlds[kThreadPassNodes];
-    ecs::Mat4* passWorlds =
-        s.passNodes.size() <= kThreadPassNodes ? threadWorlds : s.passWorlds.data();
+    thread_local std::uint8_t threadMoved[kThreadPassNodes];
+    const bool threadBuffers = s.passNodes.size() <= kThreadPassNodes;
+    ecs::Mat4* passWorlds = threadBuffers ? threadWorlds : s.passWorlds.data();
+    std::uint8_t* const passMoved = threadBuffers ? threadMoved : s.passMoved.data();
     // Held in locals: the SIMD stores below may alias anything, so the vectors' sizes and
     // pointers read through `s` would be reloaded every node.
     const AnimationPlayer::Scratch::PassNode* const passNodes = s.passNodes.data();
     const std::size_t passCount = s.passNodes.size();
     const std::uint8_t* const touched = s.touched.data();
-    std::uint8_t* const passMoved = s.passMoved.data();
     const ecs::LocalTransform* const scratchPose = s.pose.data();
     for (std::size_t i = 0; i < passCount; ++i) {
         const AnimationPlayer::Scratch::PassNode& p = passNodes[i];
         const bool animated = (touched[p.node] & kTransformTouched) != 0;
         if (animated) {
             if (!poseInLocals) locals[p.local] = scratchPose[p.node];
-            if (p.stampLocal) pools.locals->stamp(p.local, now);
+            if (p.flags & AnimationPlayer::Scratch::kPassStampLocal)
+                pools.locals->stamp(p.local, now);
         }
         // Not animated: the entity's own (a game may move it).
         const ecs::LocalTransform& pose = locals[p.local];
         // A node neither animated nor under one that moved keeps its world (and its change
         // tick: readers that track moved entities see only what moved). A node whose world
         // the pass does not write is computed every frame: its entity's may be stale.
-        const bool moved =
-            animated || !p.writeWorld || (p.parentPass != kAbsent && passMoved[p.parentPass]);
+        const bool writeWorld = (p.flags & AnimationPlayer::Scratch::kPassWriteWorld) != 0;
+        const bool parentInPass = (p.flags & AnimationPlayer::Scratch::kPassParentInPass) != 0;
+        const bool moved = animated || !writeWorld || (parentInPass && passMoved[p.parent]);
         passMoved[i] = moved ? 1 : 0;
         if (!moved) {
             passWorlds[i] = worlds[p.world].matrix;
@@ -369,11 +380,11 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
         }
         // Local-to-world with propagation's own product, so the worlds it would compute
         // are bit for bit these. Parents come first: theirs are already computed.
-        const ecs::Mat4* parent = p.parentPass != kAbsent    ? &passWorlds[p.parentPass]
-                                  : p.parentWorld != kAbsent ? &worlds[p.parentWorld].matrix
-                                                             : nullptr;
+        const ecs::Mat4* parent = parentInPass          ? &passWorlds[p.parent]
+                                  : p.parent != kAbsent ? &worlds[p.parent].matrix
+                                                        : nullptr;
         ecs::composeWorld(parent, pose.position, pose.rotation, pose.scale, passWorlds[i]);
-        if (!p.writeWorld) continue;
+        if (!writeWorld) continue;
         worlds[p.world].matrix = passWorlds[i];
         worldTicks[p.world] = now;
     }
