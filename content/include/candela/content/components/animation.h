@@ -135,9 +135,9 @@ struct AnimationPlayer {
         std::vector<std::uint8_t> skinAffine;
         const void* skinPool = nullptr;
         std::uint32_t skinVersion = 0;
-        // The dense index ranges [first, end) the pass writes in the LocalTransform and
-        // WorldTransform pools (bind's), so the player before this one can prefetch them.
-        std::uint32_t localFirst = 0, localEnd = 0, worldFirst = 0, worldEnd = 0;
+        // The dense index range [first, end) the pass writes in the WorldTransform pool
+        // (bind's), so the player before this one can prefetch it.
+        std::uint32_t worldFirst = 0, worldEnd = 0;
         const void* localPool = nullptr;
         const void* worldPool = nullptr;
         std::uint32_t localVersion = 0;
