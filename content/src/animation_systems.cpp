@@ -202,10 +202,9 @@ ecs::Quat nlerp(ecs::Quat a, ecs::Quat b, float t) {
                            a.z + (sign * b.z - a.z) * t, a.w + (sign * b.w - a.w) * t});
 }
 
-// `pools`: the transform pools, fetched once per frame. `prefetch`: request the skins'
-// outputs ahead (a crowd whose state outgrows the caches; see kPrefetchFromPlayers).
+// `pools`: the transform pools, fetched once per frame.
 void advancePlayer(ecs::Registry& registry, const TransformPools& pools, AnimationPlayer& player,
-                   float deltaSeconds, bool prefetch) {
+                   float deltaSeconds) {
     if (player.model == nullptr) return;
     const Model& model = *player.model;
     prepareScratch(player);
@@ -232,8 +231,6 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
         s.appliedTime == player.time) {
         return;  // paused (or speed 0) and not scrubbed: the entities already hold this pose
     }
-    // Needed after sampling: the sampling hides the wait.
-    if (prefetch) prefetchSkinOutputs(pools, player);
     s.applied = player.nextClip < 0;  // a crossfade always rewrites (its weight moves)
     s.appliedClip = player.clip;
     s.appliedTime = player.time;
@@ -475,7 +472,7 @@ void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkL
     jobs.parallelFor(lists.players.size(), kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             if (!prefetch) {
-                advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds, false);
+                advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds);
                 continue;
             }
             // The next players' data is requested while this one works: the record two ahead
@@ -484,7 +481,7 @@ void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkL
             if (i + 2 < lists.players.size())
                 prefetchPlayerRecord(players.get(lists.players[i + 2]));
             if (i + 1 < end) prefetchSkeletonPose(pools, players.get(lists.players[i + 1]));
-            advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds, true);
+            advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds);
         }
     });
 }

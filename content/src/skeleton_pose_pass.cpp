@@ -306,21 +306,6 @@ void prefetchPlayerRecord(const AnimationPlayer& player) {
     prefetchBytes(&player, sizeof(AnimationPlayer), false);
 }
 
-void prefetchSkinOutputs(const TransformPools& pools, const AnimationPlayer& player) {
-    const AnimationPlayer::Scratch& s = player.scratch;
-    if (!s.bound || pools.skins == nullptr || s.skinPool != pools.skins ||
-        s.skinVersion != pools.skins->structureVersion())
-        return;
-    const Skin* skins = pools.skins->typedData<Skin>();
-    for (const std::uint32_t index : s.skinIndex) {
-        if (index == kAbsent) continue;
-        const Skin& skin = skins[index];
-        // buildJointMatrices swaps the two sets and then writes the older one.
-        prefetchVector(skin.previousJointMatrices, true);
-        if (skin.jointBounds) prefetchVector(*skin.jointBounds, false);
-    }
-}
-
 bool prepareSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
                          AnimationPlayer& player) {
     if (!bindingIsCurrent(pools, player)) bind(registry, pools, player);
