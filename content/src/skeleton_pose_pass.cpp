@@ -60,9 +60,8 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
     s.stampLocal.assign(count, 1);
     s.order.clear();
     s.order.reserve(count);
-    s.skinNodes.clear();
-    s.skinNodes.reserve(count);
-    s.skinIndex.reserve(count);
+    s.skins.clear();
+    s.skins.reserve(count);
     s.skinPool = nullptr;  // refreshSkinIndices looks the skins up again
     s.direct = true;
 
@@ -115,7 +114,7 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
         s.stampLocal[n] = onlySkinsRead ? 0 : 1;
         if (node.mesh != kNoIndex && node.skin != kNoIndex &&
             skinMatchesModel(registry, player, n, e))
-            s.skinNodes.push_back(static_cast<std::uint32_t>(n));
+            s.skins.push_back({static_cast<std::uint32_t>(n), kAbsent, kAbsent, 0, 0, 0});
     }
     s.passNodes.clear();
     s.passNodes.reserve(count);
@@ -140,17 +139,18 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
                                static_cast<std::uint16_t>(n), flags});
     }
     s.skinJointPass.clear();
-    s.skinJointBegin.assign(1, 0);
-    s.skinAffine.clear();
-    for (const std::uint32_t meshNode : s.skinNodes) {
-        const SkinData& skin = model.skins[static_cast<std::size_t>(model.nodes[meshNode].skin)];
+    for (AnimationPlayer::Scratch::SkinBinding& binding : s.skins) {
+        const SkinData& skin =
+            model.skins[static_cast<std::size_t>(model.nodes[binding.meshNode].skin)];
+        binding.meshPass = s.passOfNode[binding.meshNode];
+        binding.jointBegin = static_cast<std::uint32_t>(s.skinJointPass.size());
         bool affine = true;
         for (std::size_t j = 0; j < skin.joints.size(); ++j) {
             s.skinJointPass.push_back(s.passOfNode[static_cast<std::size_t>(skin.joints[j])]);
             affine = affine && isAffine(skin.inverseBindMatrices[j]);
         }
-        s.skinJointBegin.push_back(static_cast<std::uint32_t>(s.skinJointPass.size()));
-        s.skinAffine.push_back(affine ? 1 : 0);
+        binding.jointEnd = static_cast<std::uint32_t>(s.skinJointPass.size());
+        binding.affine = affine ? 1 : 0;
     }
     s.passWorlds.resize(s.passNodes.size() > kThreadPassNodes ? s.passNodes.size() : 0);
     s.writeJointWorlds = player.writeJointWorlds;
@@ -191,16 +191,13 @@ void writeLocalsOnly(ecs::Registry& registry, const TransformPools& pools,
 }
 
 // The dense Skin-pool indices of the player's skin nodes, refreshed when the pool changed
-// structure (skinIndex was sized by bind: no allocation).
+// structure (bind resets skinPool, so a new binding is looked up too).
 void refreshSkinIndices(const ecs::Registry& registry, const TransformPools& pools,
                         AnimationPlayer::Scratch& s, const AnimationPlayer& player) {
     const std::uint32_t version = pools.skins ? pools.skins->structureVersion() : 0;
-    if (s.skinPool == pools.skins && s.skinVersion == version &&
-        s.skinIndex.size() == s.skinNodes.size())
-        return;
-    s.skinIndex.resize(s.skinNodes.size());
-    for (std::size_t k = 0; k < s.skinNodes.size(); ++k)
-        s.skinIndex[k] = indexIn(pools.skins, registry, player.nodeEntities[s.skinNodes[k]]);
+    if (s.skinPool == pools.skins && s.skinVersion == version) return;
+    for (AnimationPlayer::Scratch::SkinBinding& binding : s.skins)
+        binding.skinIndex = indexIn(pools.skins, registry, player.nodeEntities[binding.meshNode]);
     s.skinPool = pools.skins;
     s.skinVersion = version;
 }
@@ -210,15 +207,15 @@ void buildSkin(AnimationPlayer& player, const TransformPools& pools, const ecs::
                std::size_t k, ecs::Tick now) {
     const Model& model = *player.model;
     const AnimationPlayer::Scratch& s = player.scratch;
-    if (pools.skins == nullptr || s.skinIndex[k] == kAbsent) return;
-    const std::uint32_t meshNode = s.skinNodes[k];
-    if (s.passOfNode[meshNode] == kAbsent) return;  // a mesh without transforms: not built
-    Skin* skin = pools.skins->typedData<Skin>() + s.skinIndex[k];
+    const AnimationPlayer::Scratch::SkinBinding& binding = s.skins[k];
+    if (pools.skins == nullptr || binding.skinIndex == kAbsent) return;
+    if (binding.meshPass == kAbsent) return;  // a mesh without transforms: not built
+    Skin* skin = pools.skins->typedData<Skin>() + binding.skinIndex;
     const SkinData& data = model.skins[static_cast<std::size_t>(skin->skin)];
-    const ecs::Mat4 toMesh = affineInverse(passWorlds[s.passOfNode[meshNode]]);
-    const std::uint32_t* jointPass = s.skinJointPass.data() + s.skinJointBegin[k];
-    if (skin->skin != model.nodes[meshNode].skin ||
-        data.joints.size() != s.skinJointBegin[k + 1] - s.skinJointBegin[k]) {
+    const ecs::Mat4 toMesh = affineInverse(passWorlds[binding.meshPass]);
+    const std::uint32_t* jointPass = s.skinJointPass.data() + binding.jointBegin;
+    if (skin->skin != model.nodes[binding.meshNode].skin ||
+        data.joints.size() != binding.jointEnd - binding.jointBegin) {
         // The Skin changed since bind (game code): its joints looked up one by one.
         buildJointMatrices(*skin, data, toMesh, [&](std::size_t j) -> const ecs::Mat4* {
             const auto node = static_cast<std::size_t>(data.joints[j]);
@@ -230,7 +227,7 @@ void buildSkin(AnimationPlayer& player, const TransformPools& pools, const ecs::
             [&](std::size_t j) -> const ecs::Mat4* {
                 return jointPass[j] == kAbsent ? nullptr : &passWorlds[jointPass[j]];
             },
-            s.skinAffine[k] != 0);
+            binding.affine != 0);
     }
     skin->worldsSkippedByPose = s.skipsWorlds;
     skin->builtFrom = now;
@@ -275,9 +272,10 @@ void prefetchSkeletonPose(const TransformPools& pools, const AnimationPlayer& pl
     prefetchVector(s.passNodes, false);
     if (pools.skins != nullptr && s.skinPool == pools.skins &&
         s.skinVersion == pools.skins->structureVersion()) {
-        for (const std::uint32_t index : s.skinIndex)
-            if (index != kAbsent)
-                prefetchBytes(pools.skins->typedData<Skin>() + index, sizeof(Skin), true);
+        for (const AnimationPlayer::Scratch::SkinBinding& binding : s.skins)
+            if (binding.skinIndex != kAbsent)
+                prefetchBytes(pools.skins->typedData<Skin>() + binding.skinIndex, sizeof(Skin),
+                              true);
     }
     // Not the entities' locals: propagation lays skeletons out depth-first, one after another,
     // so players' locals form one sequential stream the hardware prefetcher follows, and
@@ -372,7 +370,7 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
     }
     pools.worlds->noteChange(now);
     refreshSkinIndices(registry, pools, s, player);
-    for (std::size_t k = 0; k < s.skinNodes.size(); ++k)
+    for (std::size_t k = 0; k < s.skins.size(); ++k)
         buildSkin(player, pools, passWorlds, k, now);
 }
 

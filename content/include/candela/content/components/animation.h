@@ -122,17 +122,22 @@ struct AnimationPlayer {
         // Per pass node: its world was written this frame (only for skeletons larger than
         // the pass's per-thread buffer, like passWorlds).
         std::vector<std::uint8_t> passMoved;
-        std::vector<std::uint32_t> skinNodes;  // mesh nodes whose Skin this player builds
-        // Per skin node, its entity's dense index in the Skin pool, looked up again only when
-        // that pool changes structure (the pass reads the Skin without a sparse lookup).
-        std::vector<std::uint32_t> skinIndex;
-        // Per skin node k, its skin's joints' positions in passNodes (kAbsent: not in the
-        // pass) at [skinJointBegin[k], skinJointBegin[k + 1]) of skinJointPass, and whether
-        // every inverse bind matrix of its skin is affine (skinAffine[k]): filled by bind, so
-        // the pass neither looks a joint up nor tests its matrix each frame.
+        // Per mesh node whose Skin this player builds, in one record (one block the pass
+        // reads, rather than five): filled by bind, so the pass neither looks a joint up nor
+        // tests its matrix each frame.
+        struct SkinBinding {
+            std::uint32_t meshNode;
+            std::uint32_t meshPass;  // the mesh node's position in passNodes, or kAbsent
+            // Its entity's dense index in the Skin pool, looked up again only when that pool
+            // changes structure (the pass reads the Skin without a sparse lookup).
+            std::uint32_t skinIndex;
+            // Its skin's joints' positions in passNodes (kAbsent: not in the pass) at
+            // [jointBegin, jointEnd) of skinJointPass.
+            std::uint32_t jointBegin, jointEnd;
+            std::uint32_t affine;  // 1: every inverse bind matrix of its skin is affine
+        };
+        std::vector<SkinBinding> skins;
         std::vector<std::uint32_t> skinJointPass;
-        std::vector<std::uint32_t> skinJointBegin;
-        std::vector<std::uint8_t> skinAffine;
         const void* skinPool = nullptr;
         std::uint32_t skinVersion = 0;
         // The dense index range [first, end) the pass writes in the WorldTransform pool
