@@ -175,14 +175,14 @@ void bind(const ecs::Registry& registry, const TransformPools& pools, AnimationP
 }
 
 // The classic path: stamped locals for the animated nodes, nothing else.
-void writeLocalsOnly(ecs::Registry& registry, const TransformPools& pools,
-                     AnimationPlayer& player) {
+void writeLocalsOnly(ecs::Registry& registry, const TransformPools& pools, AnimationPlayer& player,
+                     const std::uint8_t* touched) {
     const AnimationPlayer::Scratch& s = player.scratch;
     if (pools.locals == nullptr) return;
     auto* locals = pools.locals->typedData<ecs::LocalTransform>();
     const ecs::Tick now = registry.currentTick();
     for (std::size_t n = 0; n < s.pose.size() && n < player.nodeEntities.size(); ++n) {
-        if (!(s.touched[n] & kTransformTouched)) continue;
+        if (!(touched[n] & kTransformTouched)) continue;
         const std::uint32_t index = indexIn(pools.locals, registry, player.nodeEntities[n]);
         if (index == kAbsent) continue;
         locals[index] = s.pose[n];
@@ -261,7 +261,6 @@ void prefetchSkeletonPose(const TransformPools& pools, const AnimationPlayer& pl
     const AnimationPlayer::Scratch& s = player.scratch;
     if (!s.bound || !s.direct || pools.locals == nullptr || pools.worlds == nullptr) return;
     prefetchVector(s.cursors, true);
-    prefetchVector(s.touched, true);
     // A bound direct player samples into its entities' locals (through localIndex), not
     // into its scratch pose (a crossfade still does).
     if (s.direct) {
@@ -311,11 +310,11 @@ bool prepareSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
 }
 
 void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
-                       AnimationPlayer& player, bool poseInLocals) {
+                       AnimationPlayer& player, const std::uint8_t* touched, bool poseInLocals) {
     AnimationPlayer::Scratch& s = player.scratch;
     // poseInLocals: the caller's prepareSkeletonPose returned true this frame (bound, direct).
     if (!poseInLocals && !prepareSkeletonPose(registry, pools, player)) {
-        writeLocalsOnly(registry, pools, player);
+        writeLocalsOnly(registry, pools, player, touched);
         return;
     }
     auto* locals = pools.locals->typedData<ecs::LocalTransform>();
@@ -335,7 +334,6 @@ void writeSkeletonPose(ecs::Registry& registry, const TransformPools& pools,
     // pointers read through `s` would be reloaded every node.
     const AnimationPlayer::Scratch::PassNode* const passNodes = s.passNodes.data();
     const std::size_t passCount = s.passNodes.size();
-    const std::uint8_t* const touched = s.touched.data();
     const ecs::LocalTransform* const scratchPose = s.pose.data();
     for (std::size_t i = 0; i < passCount; ++i) {
         const AnimationPlayer::Scratch::PassNode& p = passNodes[i];

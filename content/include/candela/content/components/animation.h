@@ -71,7 +71,7 @@ struct AnimationPlayer {
         std::vector<ecs::LocalTransform> restPose;
         std::vector<float> restWeights;
         std::vector<std::uint32_t> weightOffset;  // node -> first slot in weights
-        std::vector<std::uint8_t> touched;        // node animated by A (1), B (2)
+        std::vector<std::uint8_t> touched;  // node animated by A (1), B (2); large models only
         // Per channel of clip A / B, the key interval sampled last (sampleAnimation's cursor):
         // sized for the model's largest clip, so switching clips allocates nothing.
         std::vector<std::uint32_t> cursors;
