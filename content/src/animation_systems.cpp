@@ -48,7 +48,7 @@ void prepareScratch(AnimationPlayer& player) {
     s.blendCursors.assign(channels, 0);
     s.pose.resize(model.nodes.size());
     s.blendPose.resize(model.nodes.size());
-    s.touched.assign(model.nodes.size(), 0);
+    s.touched.assign(model.nodes.size() > kThreadTouchedNodes ? model.nodes.size() : 0, 0);
     s.weightOffset.resize(model.nodes.size() + 1);
     std::uint32_t offset = 0;
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
@@ -88,8 +88,8 @@ void resetToRest(const AnimationPlayer::Scratch& s, std::vector<ecs::LocalTransf
 // `poseAt(node)`: where node's LocalTransform goes.
 template <class PoseAt>
 void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loop,
-                AnimationPlayer::Scratch& s, PoseAt&& poseAt, std::vector<float>& weights,
-                std::vector<std::uint32_t>& cursors) {
+                AnimationPlayer::Scratch& s, std::uint8_t* touched, PoseAt&& poseAt,
+                std::vector<float>& weights, std::vector<std::uint32_t>& cursors) {
     if (clipIndex < 0 || static_cast<std::size_t>(clipIndex) >= model.animations.size()) return;
     const AnimationClip& clip = model.animations[static_cast<std::size_t>(clipIndex)];
     const float t = clipTime(time, clip.duration, loop);
@@ -116,9 +116,9 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
         // then the translations and scales; the same floats as the per-channel loop.
         const SharedKeyRotations& plan = clip.sharedRotations;
         for (const std::uint32_t node : plan.nodes) {
-            if (s.touched[node] & kTransformTouched) continue;
+            if (touched[node] & kTransformTouched) continue;
             poseAt(node) = restPose(model.nodes[node]);
-            s.touched[node] |= kTransformTouched;
+            touched[node] |= kTransformTouched;
         }
         sampleSharedRotations(plan, sharedKey, sharedT, [&](std::uint32_t c) {
             return &poseAt(static_cast<std::size_t>(clip.channels[c].node)).rotation.x;
@@ -146,7 +146,7 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
         // A node's first channel this frame starts it from the rest pose (the model's, shared
         // by every instance and so in cache even with thousands of players; the player's own
         // converted copy is not), for the properties no channel animates.
-        if (channel.property != AnimatedProperty::Weights && !(s.touched[node] & kTransformTouched))
+        if (channel.property != AnimatedProperty::Weights && !(touched[node] & kTransformTouched))
             local = restPose(model.nodes[node]);
         switch (channel.property) {
             case AnimatedProperty::Translation:
@@ -154,14 +154,14 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
                                   cursor))
                     sampleAnimation(sampler, channel.property, t, std::span(&local.position.x, 3),
                                     cursor);
-                s.touched[node] |= kTransformTouched;
+                touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Rotation:
                 if (!sampleInline(shared, sharedKey, sharedT, t, sampler, true, &local.rotation.x,
                                   cursor))
                     sampleAnimationUnnormalised(sampler, channel.property, t,
                                                 std::span(&local.rotation.x, 4), cursor);
-                s.touched[node] |= kTransformTouched;
+                touched[node] |= kTransformTouched;
                 // Queued after each write, so whatever a channel wrote last is normalised.
                 unnormalised[pending++] = &local.rotation.x;
                 if (pending == unnormalised.size()) {
@@ -174,7 +174,7 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
                                   cursor))
                     sampleAnimation(sampler, channel.property, t, std::span(&local.scale.x, 3),
                                     cursor);
-                s.touched[node] |= kTransformTouched;
+                touched[node] |= kTransformTouched;
                 break;
             case AnimatedProperty::Weights: {
                 const std::uint32_t begin = s.weightOffset[node];
@@ -182,7 +182,7 @@ void sampleClip(const Model& model, std::int32_t clipIndex, float time, bool loo
                 if (count != sampler.components) break;  // the loader checked; defensive
                 sampleAnimation(sampler, channel.property, t,
                                 std::span(weights).subspan(begin, count), cursor);
-                s.touched[node] |= kWeightsTouched;
+                touched[node] |= kWeightsTouched;
                 break;
             }
         }
@@ -202,10 +202,9 @@ ecs::Quat nlerp(ecs::Quat a, ecs::Quat b, float t) {
                            a.z + (sign * b.z - a.z) * t, a.w + (sign * b.w - a.w) * t});
 }
 
-// `pools`: the transform pools, fetched once per frame. `prefetch`: request the skins'
-// outputs ahead (a crowd whose state outgrows the caches; see kPrefetchFromPlayers).
+// `pools`: the transform pools, fetched once per frame.
 void advancePlayer(ecs::Registry& registry, const TransformPools& pools, AnimationPlayer& player,
-                   float deltaSeconds, bool prefetch) {
+                   float deltaSeconds) {
     if (player.model == nullptr) return;
     const Model& model = *player.model;
     prepareScratch(player);
@@ -232,12 +231,15 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
         s.appliedTime == player.time) {
         return;  // paused (or speed 0) and not scrubbed: the entities already hold this pose
     }
-    // Needed after sampling: the sampling hides the wait.
-    if (prefetch) prefetchSkinOutputs(pools, player);
     s.applied = player.nextClip < 0;  // a crossfade always rewrites (its weight moves)
     s.appliedClip = player.clip;
     s.appliedTime = player.time;
-    std::fill(s.touched.begin(), s.touched.end(), std::uint8_t{0});
+    // Which nodes this frame's clips animate: per frame only, so a model of usual size keeps
+    // the flags in the thread's buffer (one block fewer per player to fetch).
+    thread_local std::uint8_t threadTouched[kThreadTouchedNodes];
+    std::uint8_t* const touched =
+        model.nodes.size() <= kThreadTouchedNodes ? threadTouched : s.touched.data();
+    std::fill(touched, touched + model.nodes.size(), std::uint8_t{0});
     // Nodes no channel touches keep their entity's transform (the skeleton pass reads it), so
     // only a crossfade, where a node one clip leaves alone blends from its rest pose, needs
     // the whole rest pose; otherwise sampleClip starts each animated node from rest itself.
@@ -254,23 +256,23 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
         const std::uint32_t* localIndex = s.localIndex.data();
         ecs::LocalTransform* pose = s.pose.data();
         sampleClip(
-            model, player.clip, player.time, player.loop, s,
+            model, player.clip, player.time, player.loop, s, touched,
             [&](std::size_t node) -> ecs::LocalTransform& {
                 const std::uint32_t index = localIndex[node];
                 return index != ecs::ComponentPool::kAbsent ? locals[index] : pose[node];
             },
             s.weights, s.cursors);
     } else {
-        sampleClip(model, player.clip, player.time, player.loop, s, inScratch(s.pose), s.weights,
-                   s.cursors);
+        sampleClip(model, player.clip, player.time, player.loop, s, touched, inScratch(s.pose),
+                   s.weights, s.cursors);
     }
     const float fade = player.fadeWeight();
     if (player.nextClip >= 0) {
         resetToRest(s, s.blendPose, s.blendWeights);
-        sampleClip(model, player.nextClip, player.nextTime, player.loop, s, inScratch(s.blendPose),
-                   s.blendWeights, s.blendCursors);
+        sampleClip(model, player.nextClip, player.nextTime, player.loop, s, touched,
+                   inScratch(s.blendPose), s.blendWeights, s.blendCursors);
         for (std::size_t n = 0; n < s.pose.size(); ++n) {
-            if (s.touched[n] == 0) continue;
+            if (touched[n] == 0) continue;
             ecs::LocalTransform& a = s.pose[n];
             const ecs::LocalTransform& b = s.blendPose[n];
             a.position = lerp(a.position, b.position, fade);
@@ -281,11 +283,11 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
             s.weights[i] += (s.blendWeights[i] - s.weights[i]) * fade;
     }
 
-    writeSkeletonPose(registry, pools, player, poseInLocals);
+    writeSkeletonPose(registry, pools, player, touched, poseInLocals);
     if (s.weights.empty()) return;  // no morph targets in the model: no weights to write
     for (std::size_t n = 0; n < s.pose.size() && n < player.nodeEntities.size(); ++n) {
         const ecs::Entity e = player.nodeEntities[n];
-        if (!(s.touched[n] & kWeightsTouched) || e == ecs::kNullEntity) continue;
+        if (!(touched[n] & kWeightsTouched) || e == ecs::kNullEntity) continue;
         if (auto* morph = registry.tryGet<MorphWeights>(e)) {
             const std::uint32_t begin = s.weightOffset[n];
             const std::size_t count = s.weightOffset[n + 1] - begin;
@@ -475,7 +477,7 @@ void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkL
     jobs.parallelFor(lists.players.size(), kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             if (!prefetch) {
-                advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds, false);
+                advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds);
                 continue;
             }
             // The next players' data is requested while this one works: the record two ahead
@@ -484,7 +486,7 @@ void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkL
             if (i + 2 < lists.players.size())
                 prefetchPlayerRecord(players.get(lists.players[i + 2]));
             if (i + 1 < end) prefetchSkeletonPose(pools, players.get(lists.players[i + 1]));
-            advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds, true);
+            advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds);
         }
     });
 }

@@ -71,7 +71,7 @@ struct AnimationPlayer {
         std::vector<ecs::LocalTransform> restPose;
         std::vector<float> restWeights;
         std::vector<std::uint32_t> weightOffset;  // node -> first slot in weights
-        std::vector<std::uint8_t> touched;        // node animated by A (1), B (2)
+        std::vector<std::uint8_t> touched;  // node animated by A (1), B (2); large models only
         // Per channel of clip A / B, the key interval sampled last (sampleAnimation's cursor):
         // sized for the model's largest clip, so switching clips allocates nothing.
         std::vector<std::uint32_t> cursors;
@@ -89,18 +89,25 @@ struct AnimationPlayer {
         std::vector<std::uint32_t> parentWorld;
         std::vector<std::uint8_t> stampLocal;
         // The same, packed in `order` for the frame loop (one contiguous walk).
+        // 16 bytes, so a Fox's table spans 7 cache lines rather than 10 (at 10,000 players
+        // each line a player touches is a miss).
         struct PassNode {
-            std::uint32_t node;
             std::uint32_t local;
             std::uint32_t world;
-            std::uint32_t parentWorld;
-            std::uint16_t stampLocal;
-            // 0: a joint only skins read whose WorldTransform the pass leaves as it was (the
-            // skins get its model-space matrix from the pass's own buffer); see
-            // AnimationPlayer::writeJointWorlds.
-            std::uint16_t writeWorld;
-            std::uint32_t parentPass;  // the parent's position in passNodes, or kAbsent
+            // With kPassParentInPass: the parent's position in passNodes; otherwise its
+            // entity parent's WorldTransform index (kAbsent: a root for propagation).
+            std::uint32_t parent;
+            std::uint16_t node;  // model node (a model of more nodes takes the classic path)
+            std::uint8_t flags;  // kPassStampLocal | kPassWriteWorld | kPassParentInPass
+            std::uint8_t unused = 0;
         };
+        // PassNode::flags. kPassWriteWorld unset: a joint only skins read whose
+        // WorldTransform the pass leaves as it was (the skins get its model-space matrix from
+        // the pass's own buffer); see AnimationPlayer::writeJointWorlds.
+        static constexpr std::uint8_t kPassStampLocal = 1;
+        static constexpr std::uint8_t kPassWriteWorld = 2;
+        static constexpr std::uint8_t kPassParentInPass = 4;
+        static constexpr std::size_t kMaxPassModelNodes = 65535;
         std::vector<PassNode> passNodes;
         std::vector<std::uint32_t> passOfNode;  // model node -> position in passNodes, or kAbsent
         // This frame's world matrices per pass node, for skeletons larger than the pass's
@@ -112,23 +119,30 @@ struct AnimationPlayer {
         // (the model's roots, its meshes), kept in the record for the prefetch.
         std::array<std::uint32_t, 4> worldsToPrefetch{};
         std::uint32_t worldsToPrefetchCount = 0;
-        std::vector<std::uint8_t> passMoved;   // per pass node: its world was written this frame
-        std::vector<std::uint32_t> skinNodes;  // mesh nodes whose Skin this player builds
-        // Per skin node, its entity's dense index in the Skin pool, looked up again only when
-        // that pool changes structure (the pass reads the Skin without a sparse lookup).
-        std::vector<std::uint32_t> skinIndex;
-        // Per skin node k, its skin's joints' positions in passNodes (kAbsent: not in the
-        // pass) at [skinJointBegin[k], skinJointBegin[k + 1]) of skinJointPass, and whether
-        // every inverse bind matrix of its skin is affine (skinAffine[k]): filled by bind, so
-        // the pass neither looks a joint up nor tests its matrix each frame.
+        // Per pass node: its world was written this frame (only for skeletons larger than
+        // the pass's per-thread buffer, like passWorlds).
+        std::vector<std::uint8_t> passMoved;
+        // Per mesh node whose Skin this player builds, in one record (one block the pass
+        // reads, rather than five): filled by bind, so the pass neither looks a joint up nor
+        // tests its matrix each frame.
+        struct SkinBinding {
+            std::uint32_t meshNode;
+            std::uint32_t meshPass;  // the mesh node's position in passNodes, or kAbsent
+            // Its entity's dense index in the Skin pool, looked up again only when that pool
+            // changes structure (the pass reads the Skin without a sparse lookup).
+            std::uint32_t skinIndex;
+            // Its skin's joints' positions in passNodes (kAbsent: not in the pass) at
+            // [jointBegin, jointEnd) of skinJointPass.
+            std::uint32_t jointBegin, jointEnd;
+            std::uint32_t affine;  // 1: every inverse bind matrix of its skin is affine
+        };
+        std::vector<SkinBinding> skins;
         std::vector<std::uint32_t> skinJointPass;
-        std::vector<std::uint32_t> skinJointBegin;
-        std::vector<std::uint8_t> skinAffine;
         const void* skinPool = nullptr;
         std::uint32_t skinVersion = 0;
-        // The dense index ranges [first, end) the pass writes in the LocalTransform and
-        // WorldTransform pools (bind's), so the player before this one can prefetch them.
-        std::uint32_t localFirst = 0, localEnd = 0, worldFirst = 0, worldEnd = 0;
+        // The dense index range [first, end) the pass writes in the WorldTransform pool
+        // (bind's), so the player before this one can prefetch it.
+        std::uint32_t worldFirst = 0, worldEnd = 0;
         const void* localPool = nullptr;
         const void* worldPool = nullptr;
         std::uint32_t localVersion = 0;
