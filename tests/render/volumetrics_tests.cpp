@@ -693,7 +693,9 @@ TEST_F(Volumetrics, AMediumBoundedToABoxScattersAndAttenuatesNothingOutsideIt) {
 // each light's proxy mesh rasterised (VolumetricsSettings::volumeProxies) and the compute march
 // over CPU light lists per tile march the same samples of the same segments, so the proxies must
 // cover every pixel whose ray meets a volume: point and spot lights with the camera outside and
-// inside them, a rect light, and lights off screen and wholly behind the wall (nothing to add).
+// inside them, a rect light around the camera and a disk light far off (their hemispheres, the
+// half-space in front of the emitter), and lights off screen and wholly behind the wall
+// (nothing to add).
 TEST_F(Volumetrics, ProxyMeshesAddWhatTheTileListsAdd) {
     TestScene scene = wallScene(black());
     scene.width = scene.height = 64;
@@ -721,6 +723,13 @@ TEST_F(Volumetrics, ProxyMeshesAddWhatTheTileListsAdd) {
     rect.direction = {0.0f, 1.0f, 0.0f};
     rect.tubeAxis = {1.0f, 0.0f, 0.0f};
     scene.lights.push_back(rect);
+    LightInstance disk = rect;  // facing the camera from afar: its hemisphere's front faces
+    disk.light.type = content::LightType::Disk;
+    disk.light.attenuationRadius = 1.5f;
+    disk.position = {-1.0f, 0.8f, -4.5f};
+    disk.direction = glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f));
+    disk.tubeAxis = glm::normalize(glm::vec3(1.0f, 0.0f, -0.3f));
+    scene.lights.push_back(disk);
     scene.lights.push_back(pointLight(glm::vec3(0.0f, 0.0f, -9.0f), 2000.0f, 2.5f));  // behind
     scene.lights.push_back(pointLight(glm::vec3(0.0f, 0.0f, 5.0f), 2000.0f, 2.0f));   // off
     content::Fog fog;

@@ -509,9 +509,11 @@ void VolumetricsPass::recordVolumesProxies(VkCommandBuffer cmd, const Inputs& in
         vkCmdSetDepthTestEnable(cmd, draw.holdsCamera ? VK_FALSE : VK_TRUE);
         push.lights.z = uint32_t(draw.kind);
         pipeline.pushConstants(cmd, &push, sizeof(push));
-        vkCmdDraw(cmd,
-                  draw.kind == LightProxyKind::Cone ? kConeProxyVertices : kSphereProxyVertices,
-                  draw.instanceCount, 0, draw.firstInstance);
+        const uint32_t vertices = draw.kind == LightProxyKind::Cone ? kConeProxyVertices
+                                  : draw.kind == LightProxyKind::Hemisphere
+                                      ? kHemisphereProxyVertices
+                                      : kSphereProxyVertices;
+        vkCmdDraw(cmd, vertices, draw.instanceCount, 0, draw.firstInstance);
     }
     vkCmdEndRendering(cmd);
 }
