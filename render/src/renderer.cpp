@@ -531,13 +531,25 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     const glm::uvec3 fogGrid =
         fogFroxels ? VolumetricsPass::froxelGrid(width_, height_, options_.volumetricsSettings)
                    : glm::uvec3(0u);
+    const bool seenThroughTheGrid =
+        blended || hasWireSegments(inputs.scene) || !inputs.scene.hair.empty();
+    // Froxels march the sun per pixel over their composite, as the per-light volumes march it
+    // (a froxel, 8x8 pixels and up to metres deep, is too coarse for shafts through windows):
+    // the grid then holds the local lights only, and the sun in a channel of its own for
+    // blended surfaces, wires and hair, which the march does not reach (frames with them).
+    const bool sunMarched = inputs.scene.fog && options_.volumetrics == VolumetricsMode::Froxels &&
+                            VolumetricsPass::sunInMedium(inputs.scene.lights);
+    const bool froxelSunChannel = sunMarched && seenThroughTheGrid;
+    const uint32_t fogBoundaries =
+        uint32_t((VolumetricsPass::froxelIntegratedBytes(fogGrid, froxelSunChannel) -
+                  VolumetricsPass::kFroxelHeaderBytes) /
+                 sizeof(glm::vec4));
     const bool airFroxels =
-        (blended || hasWireSegments(inputs.scene) || !inputs.scene.hair.empty()) &&
-        scatteringDrawn(inputs.scene, options_.scattering);
+        seenThroughTheGrid && scatteringDrawn(inputs.scene, options_.scattering);
     std::optional<ResourceHandle> froxels;
     if (fogFroxels || airFroxels) {
         const VkDeviceSize bytes =
-            VolumetricsPass::froxelIntegratedBytes(fogGrid) +
+            VolumetricsPass::froxelIntegratedBytes(fogGrid, froxelSunChannel) +
             (airFroxels ? ScatteringPass::aerialBytes(options_.scatteringSettings) : 0);
         froxels = g.createBuffer("froxels.integrated", bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     }
@@ -550,11 +562,6 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         const bool volumeProxies = marchVolumes && options_.volumetricsSettings.volumeProxies;
         const bool lightFroxels =
             options_.volumetrics == VolumetricsMode::Froxels || (marchVolumes && blended);
-        // Froxels march the sun per pixel over their composite, as the per-light volumes march
-        // it (a froxel, 8x8 pixels and up to metres deep, is too coarse for shafts through
-        // windows): the grid then holds the local lights only.
-        const bool sunMarched = options_.volumetrics == VolumetricsMode::Froxels &&
-                                VolumetricsPass::sunInMedium(inputs.scene.lights);
         VolumetricsPass::Uses uses;
         uses.reference = options_.volumetrics == VolumetricsMode::Reference;
         uses.froxels = lightFroxels;
@@ -571,6 +578,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         volume.settings = options_.volumetricsSettings;
         volume.grid = VolumetricsPass::froxelGrid(width_, height_, volume.settings);
         if (fogFroxels) volume.grid = fogGrid;
+        volume.froxelSunChannel = froxelSunChannel;
         const ResourceHandle scales =
             g.importBuffer("volumetrics.light_scales", &volumetricsPass_->lightScales());
         // Which lights each march tile or froxel cluster meets (the reference meets them all),
@@ -612,7 +620,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             const bool volumes = options_.volumetrics == VolumetricsMode::Volumes;
             if (fogFroxels) {
                 if (!volumes) features_.push_back("volumetrics_froxels");
-                const VkDeviceSize bytes = VolumetricsPass::froxelBufferBytes(volume.grid);
+                if (froxelSunChannel) features_.push_back("volumetrics_froxel_sun");
+                const VkDeviceSize bytes =
+                    VolumetricsPass::froxelBufferBytes(volume.grid) * (froxelSunChannel ? 2 : 1);
                 ResourceHandle medium = g.createBuffer("volumetrics.froxel_medium", bytes,
                                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
                 const ResourceHandle integrated = *froxels;
@@ -727,7 +737,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     declareScattering(
         inputs, h,
         ShadowReads{features.shadows, shadowAtlas, shadowViews, shadowLights, shadowDescriptors},
-        airFroxels ? &*froxels : nullptr, fogGrid);
+        airFroxels ? &*froxels : nullptr, fogBoundaries);
     // Hair (seed 004 §5) over the lit frame, under the wires and blended surfaces, which then
     // see its depth.
     if (!inputs.scene.hair.empty()) {

@@ -20,7 +20,7 @@ namespace candela::render {
 
 void Renderer::declareScattering(const FrameInputs& inputs, SceneHandles& h,
                                  const ShadowReads& shadowReads, ResourceHandle* aerialFroxels,
-                                 const glm::uvec3& fogGrid) {
+                                 uint32_t fogBoundaries) {
     const bool shadows = shadowReads.shadows;
     scatteringMarched_ = false;
     if (!scatteringDrawn(inputs.scene, options_.scattering)) return;
@@ -54,9 +54,8 @@ void Renderer::declareScattering(const FrameInputs& inputs, SceneHandles& h,
         // The same air for blended surfaces and wires, drawn after the shafts: a coarse grid
         // of view rays into the integrated froxel buffer, after the fog's grid there.
         features_.push_back("aerial_perspective");
-        const bool fogGridThere = fogGrid.x * fogGrid.y * fogGrid.z > 0;
-        const auto firstBoundary =
-            uint32_t(VolumetricsPass::froxelBufferBytes(fogGrid) / sizeof(glm::vec4));
+        const bool fogGridThere = fogBoundaries > 0;
+        const uint32_t firstBoundary = fogBoundaries;
         const ResourceHandle target = *aerialFroxels;
         auto p = g.addPass(
             "aerial_perspective", PassKind::Device,

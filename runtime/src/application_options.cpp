@@ -176,10 +176,12 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --hair-self-shadow off|map|reference   hair's shadow on itself: none, the hair\n"
            "                            depth map's estimate (default) or every fibre counted\n"
            "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
-           "  --sky-occlusion off|on|reference  the scene's geometry blocking the sky's light\n"
            "                            (default: the scene file's, else hiz)\n"
+           "  --sky-occlusion off|on|reference  the scene's geometry blocking the sky's light\n"
            "  --volumetrics off|volumes|froxels|reference   light scattered in the medium\n"
            "                            (default: volumes when the scene has fog, else off)\n"
+           "  --volume-proxies off|on   volumes: each light's proxy mesh rasterised, or tile\n"
+           "                            lists (default: the scene file's, else off)\n"
            "  --fog SIGMA_S[,SIGMA_A[,G]]   a uniform medium (1/m, Henyey-Greenstein g),\n"
            "                            replacing the scene's fog\n"
            "  --atmosphere              a physically based sky (Earth's) instead of the EXR sky\n"
@@ -341,6 +343,11 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                             "'");
             }
             options.volumetrics = mode;
+        } else if (arg == "--volume-proxies") {
+            if (!value() || (v != "off" && v != "on")) {
+                return fail("--volume-proxies needs off or on, got '" + v + "'");
+            }
+            options.volumeProxies = v == "on";
         } else if (arg == "--fog") {
             if (!value()) return fail("--fog needs SIGMA_S[,SIGMA_A[,G]] (per metre)");
             content::Fog fog;

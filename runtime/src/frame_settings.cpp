@@ -157,6 +157,10 @@ render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
                         .value_or(world && lightsInMedium(*world) >= kFroxelsFromLights
                                       ? render::VolumetricsMode::Froxels
                                       : render::VolumetricsMode::Volumes);
+    // Default off, the tile lists: cheaper on lavapipe (render/README.md "Volumetric
+    // lighting").
+    r.volumetricsSettings.volumeProxies = options.volumeProxies.value_or(
+        sceneSetting(world, &SceneWorld::sceneVolumeProxies).value_or(false));
     // Default epipolar: it stays within 0.22 % of brute force at a 35th of the rays
     // (render/README.md "Light shafts"); the passes draw only in frames whose scene has an
     // atmosphere.

@@ -97,6 +97,7 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     sceneSsr_ = scene->ssr;
     sceneScattering_ = scene->scattering;
     sceneVolumetrics_ = scene->volumetrics;
+    sceneVolumeProxies_ = scene->volumeProxies;
     sceneSkyOcclusion_ = scene->skyOcclusion;
     sceneBloom_ = scene->bloom;
     sceneExposure_ = scene->exposure;

@@ -337,6 +337,7 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     scene.ssr = SceneSsrMode::Hiz;  // issue 18
     scene.scattering = SceneScatteringMode::BruteForce;
     scene.volumetrics = SceneVolumetricsMode::Froxels;
+    scene.volumeProxies = true;
     std::string error;
     const std::string text = sceneToJson(scene, error);
     ASSERT_EQ(error, "");
@@ -351,11 +352,25 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     EXPECT_EQ(loaded->ssr, SceneSsrMode::Hiz);
     EXPECT_EQ(loaded->scattering, SceneScatteringMode::BruteForce);
     EXPECT_EQ(loaded->volumetrics, SceneVolumetricsMode::Froxels);
+    EXPECT_EQ(loaded->volumeProxies, true);
     EXPECT_NE(text.find("\"scattering\": \"brute-force\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"volume_proxies\": \"on\""), std::string::npos) << text;
+    // Either spelling reads: JSON's booleans and the command line's words.
+    for (const auto& [value, proxies] :
+         {std::pair{"false", false}, std::pair{"\"on\"", true}, std::pair{"\"off\"", false}}) {
+        const std::string spelt = std::string(R"({"format": "candela.scene", "version": 1, )") +
+                                  R"("volume_proxies": )" + value + R"(, "entities": []})";
+        Diagnostics spelling;
+        auto read = parseSceneJson(std::as_bytes(std::span(spelt)), "p.scene.json", spelling);
+        ASSERT_TRUE(read) << spelling.toString();
+        EXPECT_TRUE(spelling.messages.empty()) << spelling.toString();
+        EXPECT_EQ(read->volumeProxies, proxies) << value;
+    }
 
     const std::string bad = R"({"format": "candela.scene", "version": 1, "aa": "msaa8",
                                "msaa": 3, "bloom": 3, "ssr": "raymarch",
-                               "scattering": "on", "volumetrics": 2, "entities": []})";
+                               "scattering": "on", "volumetrics": 2,
+                               "volume_proxies": "yes", "entities": []})";
     Diagnostics badDiagnostics;
     auto fallback = parseSceneJson(std::as_bytes(std::span(bad)), "bad.scene.json", badDiagnostics);
     ASSERT_TRUE(fallback);
@@ -373,6 +388,8 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("/scattering")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("brute-force")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/volumetrics")) << badDiagnostics.toString();
+    EXPECT_FALSE(fallback->volumeProxies.has_value());
+    EXPECT_TRUE(badDiagnostics.mentions("/volume_proxies")) << badDiagnostics.toString();
 }
 
 // Sky occlusion: the top-level "sky_occlusion" survives save and load; a bad value is named

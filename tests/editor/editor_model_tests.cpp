@@ -263,6 +263,7 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     settings.scattering = content::SceneScatteringMode::Off;
     settings.volumetrics = content::SceneVolumetricsMode::Reference;
     settings.skyOcclusion = content::SceneSkyOcclusionMode::Off;
+    settings.volumeProxies = true;
     scene->setSceneFrameSettings(settings);
     ASSERT_TRUE(setLumens("lamp", 900.0f));
     const content::SceneDocument doc = saveAndLoad(dir / "saved" / "settings.scene.json");
@@ -274,6 +275,7 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     EXPECT_EQ(doc.scattering, content::SceneScatteringMode::Off);
     EXPECT_EQ(doc.volumetrics, content::SceneVolumetricsMode::Reference);
     EXPECT_EQ(doc.skyOcclusion, content::SceneSkyOcclusionMode::Off);
+    EXPECT_EQ(doc.volumeProxies, true);
 }
 
 // Issue 25: the scene-wide "ambient_occlusion" the inspector edits is saved, and an edit of

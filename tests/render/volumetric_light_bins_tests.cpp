@@ -202,7 +202,18 @@ TEST(VolumetricLightProxies, DrawOnlyTheVolumesTheViewCanSee) {
     lights.push_back(wide);
     LightInstance sun;
     sun.light.type = content::LightType::Directional;
-    lights.push_back(sun);  // 7
+    lights.push_back(sun);                                           // 7
+    LightInstance rect = point(glm::vec3(0.0f, 1.0f, -3.0f), 2.0f);  // 8: a hemisphere
+    rect.light.type = content::LightType::Rect;
+    rect.direction = glm::vec3(0.0f, 0.0f, 1.0f);  // facing the camera, 4.5 m away
+    lights.push_back(rect);
+    LightInstance away = rect;  // 9: its sphere holds the camera, which is behind it
+    away.position = glm::vec3(0.6f, 1.1f, 0.5f);
+    away.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+    lights.push_back(away);
+    LightInstance facing = away;  // 10: the same facing the camera holds it
+    facing.direction = glm::vec3(0.0f, 0.0f, 1.0f);
+    lights.push_back(facing);
     std::vector<float> scales(lights.size(), 1.0f);
     scales[4] = 0.0f;
     const LightProxies proxies = buildLightProxies(lights, scales, camera, kWidth, kHeight);
@@ -230,12 +241,21 @@ TEST(VolumetricLightProxies, DrawOnlyTheVolumesTheViewCanSee) {
     EXPECT_EQ(proxies.draws[drawOf(5)].kind, LightProxyKind::Cone);
     ASSERT_GE(drawOf(6), 0);
     EXPECT_EQ(proxies.draws[drawOf(6)].kind, LightProxyKind::Sphere);
+    // Rect and disk lights light the half-space in front of them only.
+    for (uint32_t one : {8u, 9u, 10u}) {
+        ASSERT_GE(drawOf(one), 0) << one;
+        EXPECT_EQ(proxies.draws[drawOf(one)].kind, LightProxyKind::Hemisphere) << one;
+        EXPECT_TRUE(proxies.draws[drawOf(one)].areaLights) << one;
+    }
+    EXPECT_FALSE(proxies.draws[drawOf(8)].holdsCamera);
+    EXPECT_FALSE(proxies.draws[drawOf(9)].holdsCamera) << "the camera is behind the emitter";
+    EXPECT_TRUE(proxies.draws[drawOf(10)].holdsCamera);
     // One draw per group: every instance once.
     size_t instanced = proxies.fullScreen;
     for (const LightProxyDraw& draw : proxies.draws)
         instanced += draw.instanceCount;
     EXPECT_EQ(instanced, proxies.instances.size());
-    EXPECT_EQ(proxies.instances.size(), 5u);
+    EXPECT_EQ(proxies.instances.size(), 8u);
 }
 
 }  // namespace

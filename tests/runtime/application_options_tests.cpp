@@ -221,6 +221,12 @@ TEST(ApplicationOptions, VolumetricsAndFogFlags) {
     EXPECT_EQ(one.options->fog->anisotropy, 0.0f);
     EXPECT_FALSE(parseCommandLine({}).options->fog);
     EXPECT_FALSE(parseCommandLine({}).options->volumetrics);
+    EXPECT_FALSE(parseCommandLine({}).options->volumeProxies);
+    EXPECT_EQ(parseCommandLine({"--volume-proxies", "on"}).options->volumeProxies, true);
+    EXPECT_EQ(parseCommandLine({"--volume-proxies", "off"}).options->volumeProxies, false);
+    EXPECT_NE(parseError({"--volume-proxies", "yes"}).find("--volume-proxies needs off or on"),
+              std::string::npos);
+    EXPECT_NE(parseError({"--volume-proxies"}).find("--volume-proxies needs"), std::string::npos);
 
     EXPECT_NE(parseError({"--volumetrics", "fast"}).find("got 'fast'"), std::string::npos);
     EXPECT_NE(parseError({"--fog", "-0.1"}).find("scattering must not be negative"),

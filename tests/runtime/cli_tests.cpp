@@ -937,6 +937,7 @@ TEST(Cli, SceneFileChoosesScatteringAndVolumetricsAndFlagsOverrideIt) {
     scene["scattering"] = "off";
     scene["volumetrics"] = "off";
     scene["sky_occlusion"] = "off";  // on by default with an atmosphere
+    scene["volume_proxies"] = "on";  // seen only where --volumetrics volumes overrides "off"
     scene["entities"].push_back({{"name", "dust"}, {"fog", {{"scattering", 0.05}}}});
     const auto scenePath = dir / "air.scene.json";
     std::ofstream(scenePath) << scene.dump(2);
@@ -971,6 +972,18 @@ TEST(Cli, SceneFileChoosesScatteringAndVolumetricsAndFlagsOverrideIt) {
     EXPECT_GT(ranPassesStartingWith(on, "scattering"), 0) << on["passes"].dump();
     EXPECT_TRUE(on["passes"].contains("volumetrics_froxel_light")) << on["passes"].dump();
     EXPECT_EQ(on["validation_messages"].get<int>(), 0);
+    // The per-light volumes find their lights as the file says (proxy meshes), unless the flag
+    // says otherwise (tile lists).
+    const nlohmann::json proxies = run("proxies", " --scattering off --volumetrics volumes");
+    EXPECT_TRUE(proxies["passes"].contains("volumetrics_volumes_proxies"))
+        << proxies["passes"].dump();
+    EXPECT_FALSE(proxies["passes"].contains("volumetrics_volumes_march"));
+    const nlohmann::json lists =
+        run("lists", " --scattering off --volumetrics volumes --volume-proxies off");
+    EXPECT_TRUE(lists["passes"].contains("volumetrics_volumes_march")) << lists["passes"].dump();
+    EXPECT_FALSE(lists["passes"].contains("volumetrics_volumes_proxies"));
+    EXPECT_EQ(proxies["validation_messages"].get<int>() + lists["validation_messages"].get<int>(),
+              0);
 }
 
 // Issue 17: with a medium and no choice made, the scene's lights choose the volumetrics: the

@@ -36,7 +36,7 @@ constexpr const char* kEverySetting =
     R"("brdf": "ue4", "aa": "fxaa", "msaa": 4, "bloom": 0.25, "exposure": "auto",
        "exposure_compensation": -1.5, "ambient_occlusion": {"mode": "reference"},
        "ssr": "reference", "sky_occlusion": "reference", "volumetrics": "froxels",
-       "scattering": "brute-force")";
+       "volume_proxies": true, "scattering": "brute-force")";
 
 }  // namespace
 
@@ -52,6 +52,7 @@ TEST(FrameSettings, WithoutFlagsOrSceneTheDefaultsHold) {
     EXPECT_EQ(r.ssr, render::SsrMode::Hiz);
     EXPECT_TRUE(r.skyOcclusionWithAtmosphere);
     EXPECT_EQ(r.volumetrics, render::VolumetricsMode::Volumes);
+    EXPECT_FALSE(r.volumetricsSettings.volumeProxies);
     EXPECT_EQ(r.scattering, render::ScatteringMode::Epipolar);
 }
 
@@ -69,6 +70,7 @@ TEST(FrameSettings, SceneFileFieldsReachTheRenderer) {
     EXPECT_FALSE(r.skyOcclusionWithAtmosphere);
     EXPECT_EQ(r.skyOcclusion, render::SkyOcclusionMode::Reference);
     EXPECT_EQ(r.volumetrics, render::VolumetricsMode::Froxels);
+    EXPECT_TRUE(r.volumetricsSettings.volumeProxies);
     EXPECT_EQ(r.scattering, render::ScatteringMode::BruteForce);
 }
 
@@ -85,6 +87,7 @@ TEST(FrameSettings, FlagsOverrideTheSceneFile) {
     options.ssr = render::SsrMode::Off;
     options.skyOcclusion = render::SkyOcclusionMode::Off;
     options.volumetrics = render::VolumetricsMode::Off;
+    options.volumeProxies = false;
     options.scattering = render::ScatteringMode::Off;
     const render::RendererOptions r = rendererOptionsFor(options, world.get());
     EXPECT_EQ(r.brdf, render::BrdfModel::EnergyConserving);
@@ -98,6 +101,7 @@ TEST(FrameSettings, FlagsOverrideTheSceneFile) {
     EXPECT_FALSE(r.skyOcclusionWithAtmosphere);
     EXPECT_EQ(r.skyOcclusion, render::SkyOcclusionMode::Off);
     EXPECT_EQ(r.volumetrics, render::VolumetricsMode::Off);
+    EXPECT_FALSE(r.volumetricsSettings.volumeProxies);
     EXPECT_EQ(r.scattering, render::ScatteringMode::Off);
 }
 

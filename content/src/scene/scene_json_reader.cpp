@@ -759,6 +759,17 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
     optionalEnumeration("ssr", kSceneSsrModes, scene.ssr);
     optionalEnumeration("scattering", kSceneScatteringModes, scene.scattering);
     optionalEnumeration("volumetrics", kSceneVolumetricsModes, scene.volumetrics);
+    if (auto proxies = root.find("volume_proxies"); proxies != root.end()) {
+        // As the command line spells it ("off", "on") or as JSON does (false, true).
+        if (proxies->is_boolean()) {
+            scene.volumeProxies = proxies->get<bool>();
+        } else if (proxies->is_string() && (*proxies == "on" || *proxies == "off")) {
+            scene.volumeProxies = *proxies == "on";
+        } else {
+            reader.error("/volume_proxies",
+                         "expected true, false, \"on\" or \"off\", got " + proxies->dump());
+        }
+    }
     optionalEnumeration("sky_occlusion", kSceneSkyOcclusionModes, scene.skyOcclusion);
     const json* ao = nullptr;
     if (reader.object(root, "", "ambient_occlusion", ao)) {

@@ -310,6 +310,7 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
         document["scattering"] = std::string(nameOf(kSceneScatteringModes, *scene.scattering));
     if (scene.volumetrics)
         document["volumetrics"] = std::string(nameOf(kSceneVolumetricsModes, *scene.volumetrics));
+    if (scene.volumeProxies) document["volume_proxies"] = *scene.volumeProxies ? "on" : "off";
     if (scene.skyOcclusion) {
         document["sky_occlusion"] =
             std::string(nameOf(kSceneSkyOcclusionModes, *scene.skyOcclusion));

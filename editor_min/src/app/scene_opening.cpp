@@ -48,6 +48,7 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     frameSettings.ssr = opened.world->sceneSsr();
     frameSettings.scattering = opened.world->sceneScattering();
     frameSettings.volumetrics = opened.world->sceneVolumetrics();
+    frameSettings.volumeProxies = opened.world->sceneVolumeProxies();
     frameSettings.skyOcclusion = opened.world->sceneSkyOcclusion();
     opened.scene->setSceneFrameSettings(frameSettings);
     opened.scene->setSceneAmbientOcclusion(opened.world->sceneAmbientOcclusion());

@@ -30,8 +30,8 @@ public:
     // The opened file's scene-wide "brdf" (unset: none), written back by save().
     void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneSettings_.brdf = brdf; }
     // The opened file's scene-wide "aa", "msaa", "bloom", "exposure", "exposure_compensation"
-    // "ssr", "scattering", "volumetrics" and "sky_occlusion" (the other fields of `settings`
-    // are ignored), written back by save().
+    // "ssr", "scattering", "volumetrics", "volume_proxies" and "sky_occlusion" (the other
+    // fields of `settings` are ignored), written back by save().
     void setSceneFrameSettings(const content::SceneDocument& settings) {
         sceneSettings_.aa = settings.aa;
         sceneSettings_.msaa = settings.msaa;
@@ -41,6 +41,7 @@ public:
         sceneSettings_.ssr = settings.ssr;
         sceneSettings_.scattering = settings.scattering;
         sceneSettings_.volumetrics = settings.volumetrics;
+        sceneSettings_.volumeProxies = settings.volumeProxies;
         sceneSettings_.skyOcclusion = settings.skyOcclusion;
     }
     // The scene-wide "ambient_occlusion" (unset: none), edited in the inspector when nothing is

@@ -56,6 +56,7 @@ std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path
     document.ssr = settings.ssr;
     document.scattering = settings.scattering;
     document.volumetrics = settings.volumetrics;
+    document.volumeProxies = settings.volumeProxies;
     document.skyOcclusion = settings.skyOcclusion;
     document.ambientOcclusion = settings.ambientOcclusion;
     document.materialLayers = settings.materialLayers;

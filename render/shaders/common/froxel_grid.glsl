@@ -1,14 +1,16 @@
 // The head of the integrated froxel buffer: the fog's grid shape (passes/volumetrics) and the
 // air's aerial-perspective grid (passes/scattering), each written by the pass that fills its
 // part of the buffer, so a reader needs one binding for both media (the forward pass is at
-// lavapipe's 32 descriptors). The fog's boundaries follow the head; the air's follow the fog's,
-// at aerialParams.range.y. A buffer of zeros says "no medium". Matches
-// VolumetricsPass::kFroxelHeaderBytes.
+// lavapipe's 32 descriptors). The fog's boundaries follow the head; in frames whose sun is
+// marched per pixel over the froxels and that have blended surfaces, wires or hair, the sun's
+// own boundaries follow them (grid.w 2: its in-scattering, which the fog's leave out, for those
+// readers only); the air's follow, at aerialParams.range.y. A buffer of zeros says "no medium".
+// Matches VolumetricsPass::kFroxelHeaderBytes.
 #ifndef CANDELA_FROXEL_GRID_GLSL
 #define CANDELA_FROXEL_GRID_GLSL
 
 struct FroxelGrid {
-    uvec4 grid;  // froxels x, y, slices; w: 1 when the frame has froxels, else 0
+    uvec4 grid;  // froxels x, y, slices; w: 0 no froxels, 1 the fog's, 2 then the sun's too
     vec4 range;  // x: near, y: far (view depth, m)
 };
 

@@ -34,30 +34,39 @@ uint froxelIndexOf(uvec3 f, uvec3 grid) {
     return (f.z * grid.y + f.y) * grid.x + f.x;
 }
 
-// (radiance, transmittance) from the camera to slice boundary b of column c.
-vec4 froxelBoundary(uvec2 c, int b) {
+// (radiance, transmittance) from the camera to slice boundary b of column c. `withSun`: with
+// the sun's in-scattering where the frame marches it per pixel over the froxels and keeps its
+// own boundaries for the readers the march does not reach (grid.w 2, common/froxel_grid.glsl).
+vec4 froxelBoundary(uvec2 c, int b, bool withSun) {
     if (b <= 0) return vec4(0.0, 0.0, 0.0, 1.0);
-    return froxelIntegrated[froxelIndexOf(uvec3(c, uint(b - 1)), froxelParams.grid.xyz)];
+    uvec3 grid = froxelParams.grid.xyz;
+    uint index = froxelIndexOf(uvec3(c, uint(b - 1)), grid);
+    vec4 v = froxelIntegrated[index];
+    if (withSun && froxelParams.grid.w == 2u)
+        v.rgb += froxelIntegrated[grid.x * grid.y * grid.z + index].rgb;
+    return v;
 }
 
 // The same with the transmittance as optical depth (-ln T), which is what varies smoothly
 // (linearly in distance for a uniform medium) between columns and boundaries.
-vec4 froxelDepthBoundary(uvec2 c, int b) {
-    vec4 v = froxelBoundary(c, b);
+vec4 froxelDepthBoundary(uvec2 c, int b, bool withSun) {
+    vec4 v = froxelBoundary(c, b, withSun);
     return vec4(v.rgb, -log(max(v.a, 1e-30)));
 }
 
-vec4 froxelColumn(uvec2 c, float s) {
+vec4 froxelColumn(uvec2 c, float s, bool withSun) {
     int b = int(floor(s));
-    return mix(froxelDepthBoundary(c, b),
-               froxelDepthBoundary(c, min(b + 1, int(froxelParams.grid.z))), s - float(b));
+    return mix(froxelDepthBoundary(c, b, withSun),
+               froxelDepthBoundary(c, min(b + 1, int(froxelParams.grid.z)), withSun),
+               s - float(b));
 }
 
 // The medium between the camera and view depth `viewDepth` at window position `fragCoord`
 // (pixels) of an image `size`: bilinear across columns, linear between slice boundaries
-// (the transmittance as optical depth).
+// (the transmittance as optical depth). `withSun`: froxelBoundary's (the opaque frame's
+// composite leaves the sun to its per-pixel march; blended surfaces, wires and hair take it).
 // (0, 1), no medium, when the frame has no froxels.
-vec4 froxelsAt(vec2 fragCoord, vec2 size, float viewDepth) {
+vec4 froxelsAt(vec2 fragCoord, vec2 size, float viewDepth, bool withSun) {
     if (froxelParams.grid.w == 0u) return vec4(0.0, 0.0, 0.0, 1.0);
     uvec3 grid = froxelParams.grid.xyz;
     float d = min(viewDepth, froxelParams.range.y);
@@ -68,8 +77,11 @@ vec4 froxelsAt(vec2 fragCoord, vec2 size, float viewDepth) {
     uvec2 c0 = uvec2(clamp(floor(p), vec2(0.0), max(vec2(grid.xy) - 2.0, vec2(0.0))));
     uvec2 c1 = min(c0 + 1u, grid.xy - 1u);
     vec2 w = p - vec2(c0);
-    vec4 v = mix(mix(froxelColumn(c0, s), froxelColumn(uvec2(c1.x, c0.y), s), w.x),
-                 mix(froxelColumn(uvec2(c0.x, c1.y), s), froxelColumn(c1, s), w.x), w.y);
+    vec4 v = mix(mix(froxelColumn(c0, s, withSun), froxelColumn(uvec2(c1.x, c0.y), s, withSun),
+                     w.x),
+                 mix(froxelColumn(uvec2(c0.x, c1.y), s, withSun), froxelColumn(c1, s, withSun),
+                     w.x),
+                 w.y);
     return vec4(max(v.rgb, vec3(0.0)), exp(-max(v.a, 0.0)));
 }
 
@@ -152,13 +164,14 @@ vec3 aerialPerspectiveAtFragment(vec4 fragCoord, out vec3 transmittance) {
 
 // A surface's radiance seen from the camera through what lies in front of it: the fog's froxels
 // (attenuated by them, their in-scattering added), then the atmosphere's air (aerial
-// perspective), in the order the opaque frame gets them (the fog's composite, then the light
-// shafts). For a fragment at window position fragCoord.xy and reverse-Z depth fragCoord.z; what
-// blended surfaces, wires and hair share, so that at full coverage each shows what an opaque
-// surface at its depth would.
+// perspective), in the order the opaque frame gets them (the fog's composite and the sun's
+// march over it, then the light shafts). For a fragment at window position fragCoord.xy and
+// reverse-Z depth fragCoord.z; what blended surfaces, wires and hair share, so that at full
+// coverage each shows what an opaque surface at its depth would. The sun's in-scattering comes
+// from the grid's sun boundaries where the opaque frame marches it per pixel.
 vec3 throughMediumAndAir(vec3 radiance, vec4 fragCoord) {
     vec4 medium = froxelsAt(fragCoord.xy, vec2(camera.frameInfo.xy),
-                            froxelParams.range.x / max(fragCoord.z, 1e-30));
+                            froxelParams.range.x / max(fragCoord.z, 1e-30), true);
     radiance = radiance * medium.a + medium.rgb;
     vec3 airTransmittance;
     vec3 air = aerialPerspectiveAtFragment(fragCoord, airTransmittance);

@@ -163,6 +163,10 @@ struct SceneDocument {
     std::optional<SceneSsrMode> ssr;                        // unset: the engine's default (hiz)
     std::optional<SceneScatteringMode> scattering;    // unset: the engine's default (epipolar)
     std::optional<SceneVolumetricsMode> volumetrics;  // unset: the engine's default (volumes)
+    // Top-level "volume_proxies": true or "on", false or "off": how the per-light volumes find
+    // the lights a pixel meets (rasterised proxy meshes, or tile lists). The command line's
+    // --volume-proxies overrides it. Unset: the engine's default (off, the tile lists).
+    std::optional<bool> volumeProxies;
     // Unset: the engine's default (on with an atmosphere, render/README.md "Sky occlusion").
     std::optional<SceneSkyOcclusionMode> skyOcclusion;
     // Top-level "materialLayers": the shared layer library, by unique name. A material's

@@ -150,9 +150,10 @@ private:
     struct ShadowReads;  // shadow atlas, views, per-light table (renderer_frame_handles.h)
     // `aerialFroxels`: the integrated froxel buffer when blended surfaces or wires need the
     // air's grid there (else null), updated to the version the aerial perspective wrote;
-    // `fogGrid`: the fog's grid in front of it (0 when the frame has none there).
+    // `fogBoundaries`: the vec4s of the fog's grid in front of it, after the head (0 when the
+    // frame has none there).
     void declareScattering(const FrameInputs& inputs, SceneHandles& h, const ShadowReads& shadows,
-                           ResourceHandle* aerialFroxels, const glm::uvec3& fogGrid);
+                           ResourceHandle* aerialFroxels, uint32_t fogBoundaries);
     // captureMotionVectors: copies the frame's final motion vectors into motionReadback_.
     void declareMotionCapture();
 

@@ -1,6 +1,7 @@
 #pragma once
 // The rasterised per-light volumes' draws (seed 004 §3: each light renders its volume, a sphere
-// for a point light, a cone for a spot, the whole screen for the sun; render/README.md
+// for a point light, a cone for a spot, the whole screen for the sun, and here a hemisphere for
+// a rect or disk light, which lights only the half-space in front of it; render/README.md
 // "Volumetric lighting"). Each frame the CPU sorts the lights that scatter into groups, each
 // drawn with one instanced draw of its proxy mesh (light_proxy_mesh.glsl), the light index per
 // instance, so a light costs the GPU only the pixels its proxy covers and the CPU no draw call.
@@ -19,9 +20,12 @@
 namespace candela::render {
 
 // Matches light_proxy_mesh.glsl.
-enum class LightProxyKind : uint32_t { Sphere = 0, Cone = 1 };
+// Hemisphere: rect and disk lights, which emit into the half-space in front of them only.
+enum class LightProxyKind : uint32_t { Sphere = 0, Cone = 1, Hemisphere = 2 };
 constexpr uint32_t kSphereProxyVertices = 8 * 6 * 6;  // 8 x 6 quads, two triangles each
 constexpr uint32_t kConeProxyVertices = 12 * 2 * 3;   // 12 sides and 12 cap triangles
+// The sphere's upper 8 x 3 quads and an 8-triangle cap.
+constexpr uint32_t kHemisphereProxyVertices = 8 * 3 * 6 + 8 * 3;
 // How far the proxy meshes reach past the volume they enclose (light_proxy_mesh.glsl): the
 // sphere's faces sit at cos(pi / 8) cos(pi / 6) of the radius from its centre at the least.
 float sphereProxyScale();
@@ -38,6 +42,9 @@ struct LightProxies {
     uint32_t fullScreen = 0;            // directional lights at the list's head
     std::vector<LightProxyDraw> draws;  // non-empty groups only
 };
+
+// The distance from the camera to its near plane's corners.
+float nearPlaneReach(const CameraView& camera);
 
 // Whether the camera may be inside a proxy of bounding sphere (centre, radius) or the near plane
 // may cut it: the camera's distance to it is within its radius plus the near plane's corner

@@ -20,7 +20,8 @@ void main() {
     float depth = texelFetch(gbufferDepth, pixel, 0).r;
     // Reverse-Z: view depth = near / depth; 0 is the background.
     float viewDepth = depth > 0.0 ? froxelParams.range.x / depth : froxelParams.range.y;
-    vec4 v = froxelsAt(vec2(pixel) + 0.5, vec2(size), viewDepth);
+    // Without the sun's boundaries: where the frame has them, the sun's march adds its own.
+    vec4 v = froxelsAt(vec2(pixel) + 0.5, vec2(size), viewDepth, false);
     vec4 surface = imageLoad(hdrRadiance, pixel);
     imageStore(hdrRadiance, pixel, vec4(surface.rgb * v.a + v.rgb, surface.a));
 }

@@ -4,7 +4,9 @@
 #include "volumetric_view_ray.glsl"
 // Froxels, step 2: each column of the grid integrates its froxels front to back, storing at
 // each slice's far boundary the radiance scattered toward the camera from the near plane to
-// there and the transmittance over that distance.
+// there and the transmittance over that distance; with the sun's channel (push lights.z 1,
+// volumetrics_froxel_light.comp), the sun's radiance too, through the same extinction, in the
+// boundaries after the fog's (common/froxel_grid.glsl).
 #include "common/camera.glsl"
 #include "common/froxel_grid.glsl"
 #include "volumetric_step.glsl"
@@ -24,8 +26,10 @@ layout(std430, binding = VOLUMETRICS_BINDING_FROXEL_INTEGRATED) writeonly buffer
 
 void main() {
     uvec2 column = gl_GlobalInvocationID.xy;
+    bool sunChannel = push.lights.z == 1u;
     if (all(equal(column, uvec2(0u)))) {
-        froxelParams = FroxelGrid(uvec4(push.grid.xyz, 1u), vec4(push.range.yz, 0.0, 0.0));
+        froxelParams =
+            FroxelGrid(uvec4(push.grid.xyz, sunChannel ? 2u : 1u), vec4(push.range.yz, 0.0, 0.0));
         aerialParams.grid = uvec4(0u);
     }
     if (any(greaterThanEqual(column, push.grid.xy))) return;
@@ -35,10 +39,18 @@ void main() {
     float stretch = length(nearPoint.xyz / nearPoint.w - camera.cameraPosition.xyz) / push.range.y;
     vec3 radiance = vec3(0.0);
     float transmittance = 1.0;
+    vec3 sunRadiance = vec3(0.0);
+    uint froxels = push.grid.x * push.grid.y * push.grid.z;
     for (uint z = 0u; z < push.grid.z; ++z) {
         uint index = froxelIndex(uvec3(column, z));
         float dt = (sliceBoundaryDepth(float(z + 1u)) - sliceBoundaryDepth(float(z))) * stretch;
-        integrateStep(froxelMedium[index], dt, radiance, transmittance);
+        vec4 m = froxelMedium[index];
+        if (sunChannel) {
+            float before = transmittance;  // the same step for the sun's radiance
+            integrateStep(vec4(froxelMedium[froxels + index].rgb, m.w), dt, sunRadiance, before);
+            froxelIntegrated[froxels + index] = vec4(sunRadiance, 0.0);
+        }
+        integrateStep(m, dt, radiance, transmittance);
         froxelIntegrated[index] = vec4(radiance, transmittance);
     }
 }

@@ -183,8 +183,8 @@ VkDeviceSize VolumetricsPass::froxelBufferBytes(const glm::uvec3& grid) {
     return VkDeviceSize(grid.x) * grid.y * grid.z * sizeof(glm::vec4);
 }
 
-VkDeviceSize VolumetricsPass::froxelIntegratedBytes(const glm::uvec3& grid) {
-    return kFroxelHeaderBytes + froxelBufferBytes(grid);
+VkDeviceSize VolumetricsPass::froxelIntegratedBytes(const glm::uvec3& grid, bool sunChannel) {
+    return kFroxelHeaderBytes + froxelBufferBytes(grid) * (sunChannel ? 2 : 1);
 }
 
 ImageDesc VolumetricsPass::volumesDesc(uint32_t width, uint32_t height, bool proxies) {
@@ -304,8 +304,10 @@ void VolumetricsPass::binLights(std::span<const LightInstance> lights, const Cam
     const auto* scales = static_cast<const float*>(lightScales_.mapped());
     const std::span<const float> scaleSpan(scales, lights.size());
     // With the sun marched over the froxels, each list keeps only its own lights (a zero scale
-    // leaves a light out of the lists): the march the directional ones, the froxels the rest.
+    // leaves a light out of the lists): the march the directional ones, the froxels the rest,
+    // or all of them with the sun's channel (the froxel lighting keeps the sun apart there).
     std::vector<float> sunScales, localScales;
+    const bool froxelsListTheSun = !sunMarched || in.froxelSunChannel;
     if (sunMarched) {
         sunScales.assign(scaleSpan.begin(), scaleSpan.end());
         localScales = sunScales;
@@ -320,10 +322,10 @@ void VolumetricsPass::binLights(std::span<const LightInstance> lights, const Cam
                                  camera, volumeTileLayout(width, height)));
     }
     if (froxels) {
-        upload(
-            context_, froxelBins_,
-            render::binLights(lights, sunMarched ? std::span<const float>(localScales) : scaleSpan,
-                              camera, froxelClusterLayout(in.grid, nearOf(in), farOf(in))));
+        upload(context_, froxelBins_,
+               render::binLights(
+                   lights, froxelsListTheSun ? scaleSpan : std::span<const float>(localScales),
+                   camera, froxelClusterLayout(in.grid, nearOf(in), farOf(in))));
     }
 }
 
@@ -391,7 +393,8 @@ void VolumetricsPass::recordFroxelLight(VkCommandBuffer cmd, const Inputs& in,
         in, infos,
         std::array{storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo),
                    storageBufferWrite(VOLUMETRICS_BINDING_LIGHT_BINS, &binsInfo)});
-    const VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
+    VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
+    push.lights.z = in.froxelSunChannel ? 1u : 0u;
     froxelLight_.bind(cmd);
     froxelLight_.pushDescriptors(cmd, writes);
     froxelLight_.pushConstants(cmd, &push, sizeof(push));
@@ -409,7 +412,8 @@ void VolumetricsPass::recordFroxelIntegrate(VkCommandBuffer cmd, const Inputs& i
         storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_MEDIUM, &mediumInfo),
         storageBufferWrite(VOLUMETRICS_BINDING_FROXEL_INTEGRATED, &integratedInfo),
     };
-    const VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
+    VolumetricsPush push = pushFor(in, in.settings.referenceSteps);
+    push.lights.z = in.froxelSunChannel ? 1u : 0u;
     froxelIntegrate_.bind(cmd);
     froxelIntegrate_.pushDescriptors(cmd, writes);
     froxelIntegrate_.pushConstants(cmd, &push, sizeof(push));
@@ -505,9 +509,11 @@ void VolumetricsPass::recordVolumesProxies(VkCommandBuffer cmd, const Inputs& in
         vkCmdSetDepthTestEnable(cmd, draw.holdsCamera ? VK_FALSE : VK_TRUE);
         push.lights.z = uint32_t(draw.kind);
         pipeline.pushConstants(cmd, &push, sizeof(push));
-        vkCmdDraw(cmd,
-                  draw.kind == LightProxyKind::Cone ? kConeProxyVertices : kSphereProxyVertices,
-                  draw.instanceCount, 0, draw.firstInstance);
+        const uint32_t vertices = draw.kind == LightProxyKind::Cone ? kConeProxyVertices
+                                  : draw.kind == LightProxyKind::Hemisphere
+                                      ? kHemisphereProxyVertices
+                                      : kSphereProxyVertices;
+        vkCmdDraw(cmd, vertices, draw.instanceCount, 0, draw.firstInstance);
     }
     vkCmdEndRendering(cmd);
 }

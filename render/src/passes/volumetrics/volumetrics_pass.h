@@ -31,14 +31,16 @@ public:
     // at 1280x720) unless the settings give a grid, and settings.froxelSlices slices.
     static glm::uvec3 froxelGrid(uint32_t width, uint32_t height,
                                  const VolumetricsSettings& settings);
-    // Bytes of the froxel medium buffer (one vec4 per froxel).
+    // Bytes of one channel of the froxel buffers (one vec4 per froxel). The medium buffer has
+    // one channel, two with the sun's (Inputs::froxelSunChannel).
     static VkDeviceSize froxelBufferBytes(const glm::uvec3& grid);
     // The integrated buffer: its head (common/froxel_grid.glsl: the fog grid's shape, uvec4
-    // x, y, slices, 1 and vec4 near, far, written by the integration; then the air's
-    // aerial-perspective grid, 6 vec4, written by ScatteringPass::recordAerialPerspective),
-    // then one vec4 per froxel, then the air's boundaries. All zeros reads as "no medium".
+    // x, y, slices, 1 (2 with the sun's channel) and vec4 near, far, written by the integration;
+    // then the air's aerial-perspective grid, 6 vec4, written by
+    // ScatteringPass::recordAerialPerspective), then one vec4 per froxel (two with the sun's
+    // channel), then the air's boundaries. All zeros reads as "no medium".
     static constexpr VkDeviceSize kFroxelHeaderBytes = (2 + 6) * sizeof(glm::vec4);
-    static VkDeviceSize froxelIntegratedBytes(const glm::uvec3& grid);
+    static VkDeviceSize froxelIntegratedBytes(const glm::uvec3& grid, bool sunChannel = false);
     // The per-light volumes' half-resolution targets (in-scattered radiance, view depth); a
     // colour target too under the rasterised proxies.
     static ImageDesc volumesDesc(uint32_t width, uint32_t height, bool proxies = false);
@@ -70,13 +72,19 @@ public:
         float nearPlane = 0.05f;
         VolumetricsSettings settings;
         glm::uvec3 grid{1u};
+        // Froxels whose sun is marched per pixel (binLights' sunMarched) in a frame with
+        // blended surfaces, wires or hair: the froxels light the sun too, into a channel of its
+        // own that only those read (common/froxel_lookup.glsl's throughMediumAndAir), so the
+        // opaque frame keeps the march's shafts and the others get the sun's in-scattering.
+        bool froxelSunChannel = false;
     };
     // Lists, per workgroup of the per-light volumes' march (`volumes`) or of the froxel lighting
     // (`froxels`), the lights whose volume reaches it (light_bins.h), after prepare(); rewritten
     // every frame like the scales. A frame with blended surfaces and per-light volumes has both.
     // `sunMarched`: froxels with the sun marched per pixel at half resolution (the volumes'
     // march, blur and composite): the march lists only the directional lights and the froxels
-    // all others, so each light is counted once.
+    // all others, so each light is counted once (the froxels all of them with
+    // in.froxelSunChannel, which keeps the sun apart).
     void binLights(std::span<const LightInstance> lights, const CameraView& camera, uint32_t width,
                    uint32_t height, const Inputs& in, bool volumes, bool froxels,
                    bool sunMarched = false);
@@ -92,7 +100,8 @@ public:
 
     void recordReference(VkCommandBuffer cmd, const Inputs& in) const;
     // Froxels: light into `medium`, integrate into `integrated` (both StorageWrite, the first
-    // then StorageRead), composite `integrated` (StorageRead) over in.hdr.
+    // then StorageRead), composite `integrated` (StorageRead) over in.hdr (without the sun's
+    // channel).
     void recordFroxelLight(VkCommandBuffer cmd, const Inputs& in, const BufferRef& medium) const;
     void recordFroxelIntegrate(VkCommandBuffer cmd, const Inputs& in, const BufferRef& medium,
                                const BufferRef& integrated) const;

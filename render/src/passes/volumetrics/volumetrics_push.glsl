@@ -8,7 +8,8 @@ layout(push_constant) uniform Push {
     vec4 range;   // x: base height (m), y: near, z: far (view depth, m); w: the volumes'
                   // composite adds only (1: the froxels' composite attenuated the surface)
     uvec4 grid;   // froxels x, y, slices; w: reference steps
-    uvec4 lights; // x: count, y: buffer capacity; z, w: the reference's batch (first, count)
+    uvec4 lights; // x: count, y: buffer capacity; z, w: the reference's batch (first, count);
+                  // z in the froxel lighting and integration: 1 with the sun's channel
     vec4 boundsMin; // xyz: the medium's box (world, m); w: 1 when bounded, 0 when it fills all
     vec4 boundsMax; // xyz: the box's far corner; w: unused
 } push;

@@ -31,6 +31,16 @@ void main() {
         vec3 v = cross(w, u);  // u, v, w right-handed: the mesh keeps its winding
         vec3 local = coneProxyVertex(uint(gl_VertexIndex), range, radius);
         world = light.position + local.x * u + local.y * v + local.z * w;
+    } else if (push.lights.z == kProxyHemisphere) {
+        // A rect or disk light emits into the half-space in front of it only (its form factor
+        // is zero behind its plane: volumetric_medium.glsl's areaLightIrradiance), so its
+        // volume is the half of its range sphere there; the mesh's +y along the light's normal.
+        vec3 n = normalize(light.direction);
+        vec3 helper = abs(n.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+        vec3 u = normalize(cross(n, helper));
+        vec3 v = cross(u, n);  // u, n, v right-handed, as x, y, z: the mesh keeps its winding
+        vec3 local = hemisphereProxyVertex(uint(gl_VertexIndex));
+        world = light.position + range * (local.x * u + local.y * n + local.z * v);
     } else {
         world = light.position + range * sphereProxyVertex(uint(gl_VertexIndex));
     }

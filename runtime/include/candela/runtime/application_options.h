@@ -78,6 +78,10 @@ struct ApplicationOptions {
     // --volumetrics; unset: volumes when the scene has a medium (render/README.md
     // "Volumetric lighting"), which is the only way a frame draws one.
     std::optional<render::VolumetricsMode> volumetrics;
+    // --volume-proxies off|on; unset: the world's scene-file "volume_proxies", else off. How
+    // `volumes` finds the lights a pixel meets: each light's proxy mesh rasterised (on) or CPU
+    // tile lists (off; render/README.md "Volumetric lighting" gives the costs of both).
+    std::optional<bool> volumeProxies;
     // --fog SIGMA_S[,SIGMA_A[,G]]: a uniform medium replacing the scene's Fog (or adding one).
     std::optional<content::Fog> fog;
     // --atmosphere: the default Earth atmosphere for a scene without an Atmosphere component
@@ -103,7 +107,7 @@ struct ApplicationOptions {
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
     // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
-    // --brdf, --ao, --area-lights, --ssr, --volumetrics, --fog, --atmosphere,
+    // --brdf, --ao, --area-lights, --ssr, --volumetrics, --volume-proxies, --fog, --atmosphere,
     // --sun-elevation, --time-of-day, --scattering and its parameters.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:

@@ -68,6 +68,9 @@ public:
     std::optional<content::SceneVolumetricsMode> sceneVolumetrics() const {
         return sceneVolumetrics_;
     }
+    // Whether the last scene file asks for the per-light volumes' proxy meshes
+    // ("volume_proxies"), if it says.
+    std::optional<bool> sceneVolumeProxies() const { return sceneVolumeProxies_; }
     // The bloom strength the last scene file asks for ("bloom"; 0: off), if it sets one.
     std::optional<float> sceneBloom() const { return sceneBloom_; }
     // The exposure mode and compensation the last scene file asks for, if it sets them.
@@ -123,6 +126,7 @@ private:
     std::optional<content::SceneSsrMode> sceneSsr_;
     std::optional<content::SceneScatteringMode> sceneScattering_;
     std::optional<content::SceneVolumetricsMode> sceneVolumetrics_;
+    std::optional<bool> sceneVolumeProxies_;
     std::optional<content::SceneSkyOcclusionMode> sceneSkyOcclusion_;
     std::optional<float> sceneBloom_;
     std::optional<content::SceneExposure> sceneExposure_;
