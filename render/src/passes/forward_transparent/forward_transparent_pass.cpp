@@ -23,6 +23,7 @@
 #include "shaders/msaa_expand.vert.spv.h"
 #include "shaders/transparent_occupancy.frag.spv.h"
 #include "shaders/transparent_occupancy_merge.comp.spv.h"
+#include "vk/rendering_attachments.h"
 #include "vk/viewport.h"
 
 namespace candela::render {
@@ -331,9 +332,8 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
     std::array<VkRenderingAttachmentInfo, 2> colors{};
     for (size_t i = 0; i < colors.size(); ++i) {
         const ImageRef& single = i == 0 ? in.hdr : in.motion;
-        colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+        colors[i] = renderingAttachment(single.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                        VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_STORE);
         if (msaa) {
             // Plain average of the samples, in linear light: each pixel becomes its coverage-
             // weighted radiance, what a box-filtered supersampled frame holds (the
@@ -344,22 +344,12 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
             colors[i].resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
             colors[i].resolveImageView = single.view();
             colors[i].resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        } else {
-            colors[i].imageView = single.view();
-            colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         }
     }
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = msaa ? in.msaaDepth.view() : in.depth.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_NONE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = uint32_t(colors.size());
-    rendering.pColorAttachments = colors.data();
-    rendering.pDepthAttachment = &depth;
+    const VkRenderingAttachmentInfo depth = renderingAttachment(
+        msaa ? in.msaaDepth.view() : in.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+        VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_NONE);
+    const VkRenderingInfo rendering = renderingInfo(width, height, colors, &depth);
     vkCmdBeginRendering(cmd, &rendering);
     setViewport(cmd, width, height);
     shading_.bind(cmd);
@@ -429,23 +419,16 @@ void ForwardTransparentPass::recordExpand(VkCommandBuffer cmd, const ShadingInpu
     const uint32_t height = in.hdr.desc().height;
     std::array<VkRenderingAttachmentInfo, 2> colors{};
     for (size_t i = 0; i < colors.size(); ++i) {
-        colors[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-        colors[i].imageView = i == 0 ? in.msaaHdr.view() : in.msaaMotion.view();
-        colors[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        colors[i].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // every sample is written
-        colors[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        // Every sample is written.
+        colors[i] =
+            renderingAttachment(i == 0 ? in.msaaHdr.view() : in.msaaMotion.view(),
+                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_STORE);
     }
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = in.msaaDepth.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = uint32_t(colors.size());
-    rendering.pColorAttachments = colors.data();
-    rendering.pDepthAttachment = &depth;
+    const VkRenderingAttachmentInfo depth =
+        renderingAttachment(in.msaaDepth.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                            VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_STORE);
+    const VkRenderingInfo rendering = renderingInfo(width, height, colors, &depth);
     vkCmdBeginRendering(cmd, &rendering);
     setViewport(cmd, width, height);
     expand_.bind(cmd);

@@ -22,6 +22,7 @@
 #include "shaders/hair_resolve.frag.spv.h"
 #include "shaders/hair_shadow.vert.spv.h"
 #include "shaders/shadow_depth.frag.spv.h"
+#include "vk/rendering_attachments.h"
 #include "vk/viewport.h"
 
 namespace candela::render {
@@ -223,24 +224,16 @@ void HairPass::recordClear(VkCommandBuffer cmd, const Inputs& in) const {
 
 namespace {
 
-VkRenderingAttachmentInfo depthAttachment(const ImageRef& depth, bool write) {
-    VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    info.imageView = depth.view();
-    info.imageLayout =
-        write ? VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-    info.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    info.storeOp = write ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_NONE;
-    return info;
-}
-
 // Rendering against the scene's depth alone, over the whole target: read (the fill tests its
 // fragments against it) or written (the depth pass).
 void beginDepthRendering(VkCommandBuffer cmd, const ImageRef& depth, bool write) {
-    const VkRenderingAttachmentInfo attachment = depthAttachment(depth, write);
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {depth.desc().width, depth.desc().height}};
-    rendering.layerCount = 1;
-    rendering.pDepthAttachment = &attachment;
+    const VkRenderingAttachmentInfo attachment = renderingAttachment(
+        depth.view(),
+        write ? VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+        VK_ATTACHMENT_LOAD_OP_LOAD,
+        write ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_NONE);
+    const VkRenderingInfo rendering =
+        renderingInfo(depth.desc().width, depth.desc().height, {}, &attachment);
     vkCmdBeginRendering(cmd, &rendering);
 }
 
@@ -265,16 +258,11 @@ void HairPass::recordFill(VkCommandBuffer cmd, const Inputs& in) const {
 }
 
 void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = in.hdr.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {in.hdr.desc().width, in.hdr.desc().height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
+    const VkRenderingAttachmentInfo color =
+        renderingAttachment(in.hdr.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                            VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_STORE);
+    const VkRenderingInfo rendering =
+        renderingInfo(in.hdr.desc().width, in.hdr.desc().height, std::span(&color, 1));
     vkCmdBeginRendering(cmd, &rendering);
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
@@ -371,16 +359,12 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
         x0 = y0 = 0;
         x1 = y1 = 1;
     }
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = in.hairShadow.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth.clearValue.depthStencil = {0.0f, 0};  // reverse depth: no hair
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{int32_t(x0), int32_t(y0)}, {x1 - x0, y1 - y0}};
-    rendering.layerCount = 1;
-    rendering.pDepthAttachment = &depth;
+    // Cleared to reverse depth 0: no hair.
+    const VkRenderingAttachmentInfo depth = renderingAttachment(
+        in.hairShadow.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_ATTACHMENT_LOAD_OP_CLEAR,
+        VK_ATTACHMENT_STORE_OP_STORE, reverseDepthClear());
+    VkRenderingInfo rendering = renderingInfo(x1 - x0, y1 - y0, {}, &depth);
+    rendering.renderArea.offset = {int32_t(x0), int32_t(y0)};  // the views' tiles only
     vkCmdBeginRendering(cmd, &rendering);
     VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[] = {

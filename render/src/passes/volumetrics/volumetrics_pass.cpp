@@ -24,6 +24,7 @@
 #include "shaders/volumetrics_volumes_sun.frag.spv.h"
 #include "shaders/volumetrics_volumes_sun.vert.spv.h"
 #include "vk/memory_barrier.h"
+#include "vk/rendering_attachments.h"
 #include "vk/viewport.h"
 
 namespace candela::render {
@@ -462,22 +463,14 @@ void VolumetricsPass::recordVolumesProxies(VkCommandBuffer cmd, const Inputs& in
     const uint32_t width = marched.desc().width;
     const uint32_t height = marched.desc().height;
     // The full-screen pass writes every pixel of both targets before any proxy adds.
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = marched.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingAttachmentInfo depthTarget{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depthTarget.imageView = depth.view();
-    depthTarget.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depthTarget.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    depthTarget.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
-    rendering.pDepthAttachment = &depthTarget;
+    const VkRenderingAttachmentInfo color =
+        renderingAttachment(marched.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                            VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_STORE);
+    const VkRenderingAttachmentInfo depthTarget =
+        renderingAttachment(depth.view(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                            VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+    const VkRenderingInfo rendering =
+        renderingInfo(width, height, std::span(&color, 1), &depthTarget);
     vkCmdBeginRendering(cmd, &rendering);
     setViewportAndScissor(cmd, width, height);
 

@@ -17,6 +17,7 @@
 #include "passes/wires/wire_bindings.h"
 #include "shaders/wire.frag.spv.h"
 #include "shaders/wire.vert.spv.h"
+#include "vk/rendering_attachments.h"
 #include "vk/viewport.h"
 
 namespace candela::render {
@@ -153,22 +154,13 @@ void WirePass::buildPipeline() {
 void WirePass::record(VkCommandBuffer cmd, const Inputs& in) const {
     const uint32_t width = in.hdr.desc().width;
     const uint32_t height = in.hdr.desc().height;
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = in.hdr.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depth.imageView = in.depth.view();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_NONE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
-    rendering.pDepthAttachment = &depth;
+    const VkRenderingAttachmentInfo color =
+        renderingAttachment(in.hdr.view(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                            VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_STORE);
+    const VkRenderingAttachmentInfo depth =
+        renderingAttachment(in.depth.view(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+                            VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_NONE);
+    const VkRenderingInfo rendering = renderingInfo(width, height, std::span(&color, 1), &depth);
     vkCmdBeginRendering(cmd, &rendering);
     setViewportAndScissor(cmd, width, height);
     pipeline_.bind(cmd);
