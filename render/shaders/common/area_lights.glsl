@@ -76,8 +76,8 @@ uint areaTextureSlot(Light light) {
 }
 
 // A textured rect by LTC: the lobe's integral over the image, split along the atlas's own
-// texels. The rect is cut into kAreaLightTextureCells x kAreaLightTextureCells cells, each one
-// texel of the mip level 256 / cells texels across (aligned: lights/area_light_textures.h's 2 x 2
+// texels. The rect is cut into cells x cells cells (kAreaLightTexture*Cells), each one texel
+// of the mip level 256 / cells texels across (aligned: lights/area_light_textures.h's 2 x 2
 // box chain), so that texel is the image's exact mean over the cell. Each cell's share of the
 // lobe is its own exact polygon integral (the same closed form as the untextured rect: the cell
 // moved by M^-1, clipped, Lambert's edge sum, Heitz et al. 2016 eq. 11), so only the image's
@@ -88,10 +88,13 @@ uint areaTextureSlot(Light light) {
 //    1/2 +- 3c/2 per axis, one bilinear read of the children's level at centre + 0.75 c;
 //  - a narrower one: the read of one point (area_light_texture.glsl's two reads for specular,
 //    one for diffuse) at its mean point in the cell, kept inside the cell.
-// Cells per side against the error (candela-report --section "area light shapes", worst specular
-// cell on steps at 0.35 where no cell edge falls on the image's): 4: 5.4 %, 8: 1.9 % (the fit's
-// own error 1.0 %), against 8.8 % for the one-point reads over the whole rect; render/README.md.
-const int kAreaLightTextureCells = 8;
+// Cells per side against the error (candela-report --section "area light shapes", worst cell on
+// steps at 0.35 where no cell edge falls on the image's): specular 4: 5.4 %, 8: 1.9 % (the fit's
+// own error 1.0 %), against 8.8 % for the one-point reads over the whole rect; diffuse 4: 0.4 %,
+// 8: 0.0 %, against 2.6 % (7.3 % on quadrants): the cosine is wide, 4 x 4 cells are enough for
+// it. render/README.md.
+const int kAreaLightTextureSpecularCells = 8;
+const int kAreaLightTextureDiffuseCells = 4;
 
 #ifdef AREA_LIGHT_TEXTURED
 // One read of a cell (its -X -Y corner at `cellMin`, one texel of mip `cellLevel`) for a lobe
@@ -133,11 +136,12 @@ vec3 areaLtcTexturedIntegral(uint slot, vec3 polygon[4], mat3 minv, bool specula
     float wideLod =
         areaLightTextureLod(kAreaLightTextureSpecularWideFootprint * distance, size, 1.0);
     float diffuseLod = areaLightTextureLod(2.0 * distance, size);
-    const float cells = float(kAreaLightTextureCells);
-    const float cellLevel = log2(kAreaLightTextureTile / cells);
+    int count = specular ? kAreaLightTextureSpecularCells : kAreaLightTextureDiffuseCells;
+    float cells = float(count);
+    float cellLevel = log2(kAreaLightTextureTile / cells);
     vec3 weighted = vec3(0.0);
-    for (int j = 0; j < kAreaLightTextureCells; ++j) {
-        for (int i = 0; i < kAreaLightTextureCells; ++i) {
+    for (int j = 0; j < count; ++j) {
+        for (int i = 0; i < count; ++i) {
             vec2 lo = vec2(i, j) / cells, hi = vec2(i + 1, j + 1) / cells;
             vec3 corners[4];  // wound as rectPolygon's
             corners[0] = p0 + lo.x * e1 + lo.y * e2;

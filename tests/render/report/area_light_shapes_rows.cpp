@@ -182,7 +182,8 @@ void addAreaLightShapeRows(ReportContext& context) {
         {"Disk light: LTC (Heitz-Hill disk integral, fitted specular)", true, kLtc},
         {"Textured rect light: representative point, image at the sample", false, kRepresentative,
          1},
-        {"Textured rect light: LTC, exact integral per cell of the image (8 x 8)", false, kLtc, 1},
+        {"Textured rect light: LTC, exact integral per image cell (8 x 8 specular, 4 x 4 diffuse)",
+         false, kLtc, 1},
         {"Constant-intensity rect light: representative point x pre-integrated factors (seed 004 "
          "section 1)",
          false, kRepresentative, 0, true, true},
@@ -198,7 +199,8 @@ void addAreaLightShapeRows(ReportContext& context) {
         // chain's texels have edges at every level: nothing tuned to the first image's cut.
         {"Textured rect light (steps at 0.35): representative point, image at the sample", false,
          kRepresentative, 2},
-        {"Textured rect light (steps at 0.35): LTC, exact integral per cell of the image (8 x 8)",
+        {"Textured rect light (steps at 0.35): LTC, exact integral per image cell (8 x 8 specular, "
+         "4 x 4 diffuse)",
          false, kLtc, 2},
     };
     // Which reference set a variant reads: rect, disk, textured rect, constant-intensity rect

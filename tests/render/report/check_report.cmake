@@ -23,7 +23,7 @@ foreach(row
     "| Rect light: LTC (polygon integral, fitted specular), specular"
     "| Disk light: representative point (seed 004 section 1), specular"
     "| Disk light: LTC (Heitz-Hill disk integral, fitted specular), diffuse"
-    "| Textured rect light: LTC, exact integral per cell of the image (8 x 8), specular"
+    "| Textured rect light: LTC, exact integral per image cell (8 x 8 specular, 4 x 4 diffuse), specular"
     "| Windowed falloff (eq. 9)"
     "| Split-sum IBL"
     "| Mobile IBL"
