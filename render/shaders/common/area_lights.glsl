@@ -80,7 +80,7 @@ uint areaTextureSlot(Light light) {
 // of the mip level 256 / cells texels across (aligned: lights/area_light_textures.h's 2 x 2
 // box chain), so that texel is the image's exact mean over the cell. Each cell's share of the
 // lobe is its own exact polygon integral (the same closed form as the untextured rect: the cell
-// moved by M^-1, clipped, Lambert's edge sum, Heitz et al. 2016 eq. 11), so only the image's
+// moved by M^-1, clipped, Lambert's edge sum; Heitz et al. 2016), so only the image's
 // variation inside a cell against the lobe's variation there is approximated:
 //  - a lobe wider than half a cell (its reads at or above the cell's children's level): the
 //    lobe taken as linear over the cell, its mean point (the cell's vector form factor meets
