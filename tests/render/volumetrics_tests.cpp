@@ -202,16 +202,24 @@ TEST_F(Volumetrics, OffRendersExactlyTheFrameWithoutAMedium) {
     EXPECT_NE(clear.ldrRgba, foggy.ldrRgba) << "the medium must show when it is on";
 }
 
+// A unit plane facing the camera 3 m in front of it, and a material drawn blended (full
+// coverage): the transparency cases' pane.
+const glm::mat4 kPaneAt3m =
+    glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -3.0f)) *
+    glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
+
+content::Material drawnBlended(content::Material material) {
+    material.alphaMode = content::AlphaMode::Blend;
+    return material;
+}
+
 // The transparency case: a blended pane of full coverage 3 m away in fog (in front of a wall
 // 6 m away) shows what an opaque wall there shows: both attenuated by the medium in front of
 // them, with its in-scattering added.
 TEST_F(Volumetrics, ABlendedPaneInFogLooksLikeAnOpaqueWallAtItsDepth) {
-    const glm::mat4 paneAt3m =
-        glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -3.0f)) *
-        glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
-    content::Material glowing = emissive(50.0f);
-    content::Material pane = glowing;
-    pane.alphaMode = content::AlphaMode::Blend;
+    const glm::mat4 paneAt3m = kPaneAt3m;
+    const content::Material glowing = emissive(50.0f);
+    const content::Material pane = drawnBlended(glowing);
     TestScene opaque = wallScene(black());
     opaque.add(content::makePlane(1.0f, 1), glowing, paneAt3m);
     TestScene blended = wallScene(black());
@@ -244,12 +252,9 @@ TEST_F(Volumetrics, ABlendedPaneInFogLooksLikeAnOpaqueWallAtItsDepth) {
 // gives the opaque wall; the wall behind the pane (opaque in every frame) keeps the march's,
 // not twice it. 64x64, one renderer for the three frames.
 TEST_F(Volumetrics, ABlendedPaneAndAWireInSunlitFogLookLikeAnOpaqueWallAtTheirDepth) {
-    const glm::mat4 paneAt3m =
-        glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -3.0f)) *
-        glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
-    content::Material glowing = emissive(50.0f);
-    content::Material pane = glowing;
-    pane.alphaMode = content::AlphaMode::Blend;
+    const glm::mat4 paneAt3m = kPaneAt3m;
+    const content::Material glowing = emissive(50.0f);
+    const content::Material pane = drawnBlended(glowing);
     content::Material wireMaterial;
     wireMaterial.shadingModel = content::ShadingModel::Unlit;
     wireMaterial.emissiveFactor = {1.0f, 1.0f, 1.0f};
