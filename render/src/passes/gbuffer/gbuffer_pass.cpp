@@ -86,6 +86,27 @@ std::vector<DescriptorBinding> gbufferBindings(bool materialLayers, bool edges) 
     return bindings;
 }
 
+// Whether the G-buffer passes draw `draw`: a mesh with triangles whose material is not blended
+// (blended surfaces are drawn by the forward transparency pass).
+bool drawnInGBuffer(const SceneResources& resources, const DrawItem& draw) {
+    return resources.mesh(draw.mesh).indexCount != 0 &&
+           resources.material(draw.material).alphaMode != content::AlphaMode::Blend;
+}
+
+// One G-buffer draw with `pipeline` bound and its descriptors pushed: culled as its material
+// says; firstInstance is the draw's index, which gbuffer.vert reads its previous world by.
+void recordGBufferDraw(VkCommandBuffer cmd, const Pipeline& pipeline, SceneResources& resources,
+                       const DrawItem& draw, uint32_t drawIndex) {
+    const GpuMesh& mesh = resources.mesh(draw.mesh);
+    vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided ? VK_CULL_MODE_NONE
+                                                                        : VK_CULL_MODE_BACK_BIT);
+    DrawPush push{draw.world, draw.material};
+    pipeline.pushConstants(cmd, &push, sizeof(push));
+    bindMeshVertices(cmd, resources.vertexBufferOf(draw), resources.previousVertexBufferOf(draw));
+    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
+}
+
 }  // namespace
 
 GBufferPass::GBufferPass(GpuContext& context) : context_(context) {}
@@ -176,10 +197,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     VkDescriptorBufferInfo previousInfo{previousWorlds.handle(), 0, VK_WHOLE_SIZE};
     for (uint32_t drawIndex = 0; drawIndex < uint32_t(scene.draws.size()); ++drawIndex) {
         const DrawItem& draw = scene.draws[drawIndex];
-        const GpuMesh& mesh = resources.mesh(draw.mesh);
-        if (mesh.indexCount == 0) continue;
-        // Blended surfaces are drawn by the forward transparency pass.
-        if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
+        if (!drawnInGBuffer(resources, draw)) continue;
         const MaterialBinding& binding = resources.materialBinding(draw.material);
         std::array<VkDescriptorImageInfo, size_t(kTextureSlotCount) + kLayerTextureSlotCount>
             images{};
@@ -200,16 +218,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
             writes.push_back(sampledImageWrite(GBUFFER_BINDING_FIRST_LAYER_TEXTURE + slot, &image));
         }
         pipeline.pushDescriptors(cmd, writes);
-        vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided
-                                  ? VK_CULL_MODE_NONE
-                                  : VK_CULL_MODE_BACK_BIT);
-        DrawPush push{draw.world, draw.material};
-        pipeline.pushConstants(cmd, &push, sizeof(push));
-        bindMeshVertices(cmd, resources.vertexBufferOf(draw),
-                         resources.previousVertexBufferOf(draw));
-        vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-        // firstInstance: the draw's index, which gbuffer.vert reads its previous world by.
-        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
+        recordGBufferDraw(cmd, pipeline, resources, draw, drawIndex);
     }
     vkCmdEndRendering(cmd);
 }
@@ -243,17 +252,8 @@ void GBufferPass::recordEdges(VkCommandBuffer cmd, const ImageRef& edges, const 
     edgesOnly_.pushDescriptors(cmd, writes);
     for (uint32_t drawIndex = 0; drawIndex < uint32_t(scene.draws.size()); ++drawIndex) {
         const DrawItem& draw = scene.draws[drawIndex];
-        const GpuMesh& mesh = resources.mesh(draw.mesh);
-        if (mesh.indexCount == 0) continue;
-        const content::Material& material = resources.material(draw.material);
-        if (material.alphaMode == content::AlphaMode::Blend) continue;  // as record()
-        vkCmdSetCullMode(cmd, material.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
-        DrawPush push{draw.world, draw.material};
-        edgesOnly_.pushConstants(cmd, &push, sizeof(push));
-        bindMeshVertices(cmd, resources.vertexBufferOf(draw),
-                         resources.previousVertexBufferOf(draw));
-        vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
+        if (drawnInGBuffer(resources, draw))
+            recordGBufferDraw(cmd, edgesOnly_, resources, draw, drawIndex);
     }
     vkCmdEndRendering(cmd);
 }
