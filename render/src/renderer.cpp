@@ -473,6 +473,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                                              &clusters_->grid(),
                                                              clusters_->directionalCount()};
                                lighting.environment = &environment;
+                               lighting.lightCount = lights_->count();
                                lighting.skyIntensity = skyIntensity;
                                lighting.referenceSamples = options_.referenceSamples;
                                if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
@@ -497,7 +498,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         if (occlusion) p.read(*occlusion, Use::Sampled);
         if (specularOcclusion) p.read(*specularOcclusion, Use::Sampled);
         if (features.skyOcclusion) p.read(skyOcclusionAtlas, Use::Sampled, kComputeStage);
-        if (features.countLightPairs) p.write(pairCounts, Use::StorageWrite);
+        if (features.countLightPairs) {  // brute force adds its later dispatches' counts
+            p.write(pairCounts, features.clustered ? Use::StorageWrite : Use::StorageReadWrite);
+        }
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
     if (inputs.scene.atmosphere) {

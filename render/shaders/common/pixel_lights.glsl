@@ -54,6 +54,14 @@ PixelLights pixelLights(bool clustered, uint directionalCount, ClusterGridParams
     return lights;
 }
 
+// The brute-force lights [first, end) of `lights` (pixelLights(false, ...)): a dispatch that
+// takes every light a batch at a time.
+PixelLights pixelLightRange(PixelLights lights, uint first, uint end) {
+    lights.listFirst = first;
+    lights.listCount = min(end, lights.listCount) - min(first, lights.listCount);
+    return lights;
+}
+
 uint pixelLightCount(PixelLights lights) {
     return lights.directionalCount + lights.listCount;
 }
@@ -68,7 +76,7 @@ uint pixelLightAt(PixelLights lights, uint k) {
     if (lights.clustered && lightInEveryCluster(uint(lightData[3u * camera.frameInfo.w + i].w))) {
         return kNoLight;
     }
-    return i;
+    return lights.listFirst + i;  // 0 but for a range of the brute-force lights
 }
 
 #endif

@@ -57,7 +57,7 @@ layout(std430, binding = LIGHTING_BINDING_LIGHT_INDICES) readonly buffer LightIn
     uint lightIndices[];
 };
 // Per workgroup: evaluated pairs, lit pairs (each fits 32 bits: 64 pixels x 2^26 lights).
-layout(std430, binding = LIGHTING_BINDING_PAIR_COUNTS) writeonly buffer PairCounts {
+layout(std430, binding = LIGHTING_BINDING_PAIR_COUNTS) buffer PairCounts {
     uvec2 pairCounts[];
 };
 // The slicing the depth occupancy pass derived ([2] sliceNear, [3] logRatio as float bits):
@@ -95,6 +95,11 @@ layout(push_constant) uniform Push {
     uint referenceSamples;
     float aoIntensity;
     uint aoMultiBounce;  // 0: visibility as measured (tests of visibility itself)
+    // Brute force: this dispatch's lights, [lightFirst, lightEnd). The first dispatch also
+    // adds the sky's light and the background; the others add their lights to the radiance
+    // before them (lighting_pass.cpp).
+    uint lightFirst;
+    uint lightEnd;
 } push;
 
 shared uint groupEvaluations;
@@ -488,8 +493,9 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
     if (pixel.x >= int(size.x) || pixel.y >= int(size.y)) return;
     float depth = texelFetch(gbufferDepth, pixel, 0).r;
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(size) * 2.0 - 1.0;
+    bool firstDispatch = push.lightFirst == 0u;
     if (depth <= 0.0) {  // background (reverse-Z: 0 is infinitely far)
-        if (kIblMode != kIblNone) {
+        if (kIblMode != kIblNone && firstDispatch) {
             vec4 nearPoint = camera.inverseViewProjection * vec4(ndc, 1.0, 1.0);
             vec3 direction = safeNormalize(nearPoint.xyz / nearPoint.w - camera.cameraPosition.xyz);
             vec3 sky = textureLod(environmentCube, direction, 0.0).rgb * push.skyIntensity;
@@ -516,7 +522,7 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
                                                  saturate(dot(coatN, px.V))));
     }
 
-    if (kIblMode != kIblNone) {
+    if (kIblMode != kIblNone && firstDispatch) {
         float occlusion = texelFetch(gbufferBaseColor, pixel, 0).a;
         if (kAoMode == kAoOff) {
             px.radiance += ambientRadiance(px, pixel) * (occlusion * push.skyIntensity);
@@ -527,6 +533,7 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
 
     PixelLights lights =
         pixelLights(kClustered, push.directionalCount, push.grid, uvec2(pixel), depth);
+    if (!kClustered) lights = pixelLightRange(lights, push.lightFirst, push.lightEnd);
     uint layers = kClearCoatEnabled && px.surface.clearCoat > 0.0 ? 2u : 1u;
     for (uint k = 0u; k < pixelLightCount(lights) * layers; ++k) {
         uint light = pixelLightAt(lights, k / layers);
@@ -555,7 +562,8 @@ void main() {
         barrier();
         if (gl_LocalInvocationIndex == 0u) {
             uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-            pairCounts[group] = uvec2(groupEvaluations, groupLitPairs);
+            uvec2 counts = uvec2(groupEvaluations, groupLitPairs);
+            pairCounts[group] = push.lightFirst == 0u ? counts : pairCounts[group] + counts;
         }
     }
 }

@@ -1,5 +1,7 @@
 #include "passes/lighting/lighting_pass.h"
 
+#include <algorithm>
+
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_context.h"
 #include "clustered/gpu_cluster_params.h"
@@ -22,6 +24,8 @@ struct Push {
     uint32_t referenceSamples;
     float aoIntensity;
     uint32_t aoMultiBounce;
+    uint32_t lightFirst;  // the brute-force dispatch's lights: [lightFirst, lightEnd)
+    uint32_t lightEnd;
 };
 
 // Values of kIblMode in lighting.comp.
@@ -240,13 +244,43 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
         sampledImageWrite(LIGHTING_BINDING_AREA_LIGHT_TEXTURES, &env.areaLightTextures),
         sampledImageWrite(LIGHTING_BINDING_SKY_OCCLUSION, &in.skyOcclusion),
     };
-    Push push{toGpu(*in.grid),           in.directionalCount, in.skyIntensity,
-              env.prefilteredMipCount,   in.referenceSamples, in.aoIntensity,
-              in.aoMultiBounce ? 1u : 0u};
+    Push push{toGpu(*in.grid),
+              in.directionalCount,
+              in.skyIntensity,
+              env.prefilteredMipCount,
+              in.referenceSamples,
+              in.aoIntensity,
+              in.aoMultiBounce ? 1u : 0u,
+              0u,
+              in.lightCount};
     pipeline_.bind(cmd);
     pipeline_.pushDescriptors(cmd, writes);
-    pipeline_.pushConstants(cmd, &push, sizeof(push));
-    vkCmdDispatch(cmd, (in.hdr.desc().width + 7) / 8, (in.hdr.desc().height + 7) / 8, 1);
+    const uint32_t groupsX = (in.hdr.desc().width + 7) / 8;
+    const uint32_t groupsY = (in.hdr.desc().height + 7) / 8;
+    if (features_.clustered) {
+        pipeline_.pushConstants(cmd, &push, sizeof(push));
+        vkCmdDispatch(cmd, groupsX, groupsY, 1);
+        return;
+    }
+    // The brute-force reference adds kBruteForceLightsPerDispatch lights per dispatch, each
+    // onto the last one's radiance (and light-pair counts). One dispatch over every light
+    // runs unbounded per invocation: a long one trips a GPU's watchdog, and lavapipe stops
+    // any invocation's loops after 65,535 iterations in all, which 8,192 area lights pass.
+    for (uint32_t first = 0; first == 0 || first < in.lightCount;
+         first += kBruteForceLightsPerDispatch) {
+        if (first > 0) {
+            const VkMemoryBarrier added{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr,
+                                        VK_ACCESS_SHADER_WRITE_BIT,
+                                        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
+            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &added, 0, nullptr, 0,
+                                 nullptr);
+        }
+        push.lightFirst = first;
+        push.lightEnd = std::min(in.lightCount, first + kBruteForceLightsPerDispatch);
+        pipeline_.pushConstants(cmd, &push, sizeof(push));
+        vkCmdDispatch(cmd, groupsX, groupsY, 1);
+    }
 }
 
 }  // namespace candela::render

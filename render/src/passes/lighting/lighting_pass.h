@@ -83,6 +83,7 @@ public:
         const ClusterGrid* grid;
         uint32_t directionalCount;
         const EnvironmentDescriptors* environment;  // the sky, or placeholders
+        uint32_t lightCount = 0;  // every light in `lights` (the brute-force variant's loop)
         float skyIntensity = 1.0f;
         uint32_t referenceSamples = 0;
         // Sampled; unused (placeholders bound) when the variant has no ambient occlusion.
@@ -96,6 +97,8 @@ public:
     };
     void record(VkCommandBuffer cmd, const Inputs& inputs) const;
     static uint32_t workgroupCount(uint32_t width, uint32_t height);
+    // The brute-force variant's lights per dispatch (record() adds them a batch at a time).
+    static constexpr uint32_t kBruteForceLightsPerDispatch = 1024;
 
 private:
     GpuContext& context_;
