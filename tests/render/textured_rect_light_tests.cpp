@@ -82,7 +82,10 @@ std::pair<uint32_t, uint32_t> shifted(const TestScene& scene, std::pair<uint32_t
 // image is normalised to average luminance 1, so lumens stay lumens), an image red on its left
 // half and blue on its right. Seen from below (the lit side) the image's left column is along
 // the rect's +X edge, so the floor under +X is red and under -X blue: 0.5 m off the centre the
-// integral over the light gives 2.08 times more of the nearer half's colour; required: 1.3.
+// integral over the light gives 2.08 times more of the nearer half's colour. Required: LTC 1.8
+// (its exact integral per cell of the image, area_lights.glsl: 1.88 here, where the pixel's floor
+// point lies up to 0.08 m off and the 16-texel image is magnified bilinearly into its tile; the
+// one-point read before gave 1.66); representative 1.3 (its one read gives 4.90).
 TEST(TexturedRectLight, ImagesModulateTheRectAndKeepItsPower) {
     GpuContext context(requiredValidation());
     const uint8_t grey[3] = {90, 90, 90}, red[3] = {255, 0, 0}, blue[3] = {0, 0, 255};
@@ -131,7 +134,7 @@ TEST(TexturedRectLight, ImagesModulateTheRectAndKeepItsPower) {
             std::printf(
                 "%s: %.1f m off the centre, nearer half / further half %.2f (integral 2.08)\n",
                 name, dx, nearer / further);
-            EXPECT_GT(nearer, 1.3f * further) << name << " at " << dx;
+            EXPECT_GT(nearer, (mode == 0 ? 1.8f : 1.3f) * further) << name << " at " << dx;
         }
     }
     EXPECT_EQ(context.validationMessages(), 0u);

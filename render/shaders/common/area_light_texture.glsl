@@ -1,7 +1,8 @@
 // Textured rect lights (issue 15): the emissive image, pre-filtered into a mip chain
 // (render/src/lights/area_light_textures.h: one 256 x 256 tile per image, side by side, texels
-// scaled to average luminance 1), read at one point of the rect with the mip whose texels match
-// the footprint of the lobe there (Heitz et al. 2016, section 5.3). Shaders that bind the atlas
+// scaled to average luminance 1), read with the mip whose texels match the footprint of the lobe
+// (Heitz et al. 2016, section 5.3): in LTC mode once per cell of the rect (area_lights.glsl), in
+// representative mode at one point. Shaders that bind the atlas
 // define AREA_LIGHT_TEXTURE_BINDING before including lights.glsl; elsewhere a textured rect
 // shades as untextured (its average).
 #ifndef CANDELA_AREA_LIGHT_TEXTURE_GLSL
@@ -26,7 +27,9 @@ const float kAreaLightTextureTexelsPerFootprint = 3.0;
 // contrast 3 at 0.2, 0.35, 0.45, 1/2 and 0.62 of the side, so no image's edges are tuned to:
 // worst specular cell 7.6 to 9.9 % (9.5 % and 12.0 % on steps at 0.28 and 0.71, not fitted),
 // where one read over 1.5 texels of the footprint (the read before) gave 11.0 to 23.8 %
-// (render/README.md, "Textured rect lights").
+// (render/README.md, "Textured rect lights"). LTC now reads these only inside one of the rect's
+// cells where the lobe is narrower than the cell (area_lights.glsl, areaLtcTexturedIntegral);
+// the figures above are for the reads over the whole rect.
 const float kAreaLightTextureSpecularNarrowFootprint = 0.46;  // x the plane's distance
 const float kAreaLightTextureSpecularWideFootprint = 1.90;    // x the plane's distance
 const float kAreaLightTextureSpecularNarrowWeight = 0.45;

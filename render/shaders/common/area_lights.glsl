@@ -5,6 +5,7 @@
 //    a rect clipped to the horizon (ltc.glsl), Heitz and Hill's ellipse for a disk
 //    (ltc_disk.glsl).
 //  - "representative" mode (seed 004 section 1): area_light_representative.glsl.
+//  - A textured rect in "ltc" mode: both lobes over the image's cells (areaLtcTexturedIntegral).
 //  - Specular, "ltc" mode: the fitted LTC (lights/ltc_table_texture.h) over the same shape,
 //    in shaders that bind the table (they define AREA_LIGHT_LTC_MATRIX_BINDING and
 //    AREA_LIGHT_LTC_MAGNITUDE_BINDING before including lights.glsl: the lighting and forward
@@ -74,58 +75,124 @@ uint areaTextureSlot(Light light) {
 #endif
 }
 
-// The image a lobe sees on a textured rect, by LTC (Heitz et al. 2016, section 5.3): in the
-// lobe's cosine space (the rect moved by M^-1, where the lobe is a plain cosine) the point
-// where the rect's mean direction `direction` (ltcPolygonVectorSum) meets it; M^-1 is linear, so
-// the moved rect's affine coordinates are the image's uv. The mip from the cosine's footprint
-// there against the moved rect's size: for diffuse twice the plane's distance (half the cosine's
-// power falls within 45 degrees) over kAreaLightTextureTexelsPerFootprint; for specular the two
-// reads of area_light_texture.glsl (a sharp one for the cosine's peak, a wide one for its tail).
-vec3 areaLtcTexture(uint slot, vec3 polygon[4], mat3 minv, vec3 direction, bool specular) {
+// A textured rect by LTC: the lobe's integral over the image, split along the atlas's own
+// texels. The rect is cut into cells x cells cells (kAreaLightTexture*Cells), each one texel
+// of the mip level 256 / cells texels across (aligned: lights/area_light_textures.h's 2 x 2
+// box chain), so that texel is the image's exact mean over the cell. Each cell's share of the
+// lobe is its own exact polygon integral (the same closed form as the untextured rect: the cell
+// moved by M^-1, clipped, Lambert's edge sum; Heitz et al. 2016), so only the image's
+// variation inside a cell against the lobe's variation there is approximated:
+//  - a lobe wider than half a cell (its reads at or above the cell's children's level): the
+//    lobe taken as linear over the cell, its mean point (the cell's vector form factor meets
+//    the plane there) off the cell's centre by c gives the cell's four children weights
+//    1/2 +- 3c/2 per axis, one bilinear read of the children's level at centre + 0.75 c;
+//  - a narrower one: the read of one point (area_light_texture.glsl's two reads for specular,
+//    one for diffuse) at its mean point in the cell, kept inside the cell.
+// Cells per side against the error (candela-report --section "area light shapes", worst cell on
+// steps at 0.35 where no cell edge falls on the image's): specular 4: 5.4 %, 8: 1.9 % (the fit's
+// own error 1.0 %), against 8.8 % for the one-point reads over the whole rect; diffuse 4: 0.4 %,
+// 8: 0.0 %, against 2.6 % (7.3 % on quadrants): the cosine is wide, 4 x 4 cells are enough for
+// it. render/README.md.
+const int kAreaLightTextureSpecularCells = 8;
+const int kAreaLightTextureDiffuseCells = 4;
+
 #ifdef AREA_LIGHT_TEXTURED
+// One read of a cell (its -X -Y corner at `cellMin`, one texel of mip `cellLevel`) for a lobe
+// whose mean point in the cell is `uv` and whose read wants mip `lod`.
+vec3 areaLightTextureCellRead(uint slot, vec2 uv, vec2 cellMin, float cellLevel, float lod) {
+    float cell = exp2(cellLevel) / kAreaLightTextureTile;
+    if (lod < cellLevel - 1.0) {
+        // Half a texel of the read's coarser level in from the cell's edges: no texel of another
+        // cell enters (the levels below the cell's are aligned to it).
+        float inset = exp2(floor(lod) + 1.0) / (2.0 * kAreaLightTextureTile);
+        return areaLightTexture(slot, clamp(uv, cellMin + inset, cellMin + cell - inset), lod);
+    }
+    vec2 centre = cellMin + 0.5 * cell;
+    vec2 offset = clamp(0.75 * (uv - centre), vec2(-0.25 * cell), vec2(0.25 * cell));
+    return areaLightTexture(slot, centre + offset, cellLevel - 1.0);
+}
+#endif
+
+// The lobe (the cosine moved by M, given M^-1) over a textured rect's `polygon` (rectPolygon):
+// its integral in `integral`, the image it sees (the integral-weighted mean of its cells) as the
+// result. `specular`: the specular lobe's two reads in a narrow lobe's cell.
+vec3 areaLtcTexturedIntegral(uint slot, vec3 polygon[4], mat3 minv, bool specular,
+                             out float integral) {
+    integral = 0.0;
     vec3 p0 = minv * polygon[0];
-    vec3 e1 = minv * polygon[1] - p0;  // along the rect's +X
-    vec3 e2 = minv * polygon[3] - p0;  // along its +Y
+    vec3 e1 = minv * polygon[1] - p0;  // along the rect's +X (u)
+    vec3 e2 = minv * polygon[3] - p0;  // along its +Y (v)
+#ifdef AREA_LIGHT_TEXTURED
     vec3 n = cross(e1, e2);
     float area = length(n);
-    float offset = dot(n, p0);  // area x the plane's distance
-    float approach = dot(n, direction);
-    // Nothing above the horizon (direction 0): the integral is 0, any point will do.
-    vec3 hit = abs(approach) > 1e-12 * area * length(direction) ? direction * (offset / approach)
-                                                                 : p0 + 0.5 * (e1 + e2);
-    vec3 d = hit - p0;
+    float offset = dot(n, p0);  // area x the moved plane's distance
     float e11 = dot(e1, e1), e12 = dot(e1, e2), e22 = dot(e2, e2);
     float det = max(e11 * e22 - e12 * e12, 1e-30);
-    vec2 uv = vec2(e22 * dot(d, e1) - e12 * dot(d, e2), e11 * dot(d, e2) - e12 * dot(d, e1)) / det;
-    uv = clamp(uv, vec2(0.0), vec2(1.0));
+    // The lobe's footprints as area_light_texture.glsl reads them, in the moved rect's units.
     float distance = abs(offset) / max(area, 1e-30);
     float size = sqrt(area);
-    if (!specular) {
-        return areaLightTexture(slot, uv, areaLightTextureLod(2.0 * distance, size));
-    }
     float narrowLod =
         areaLightTextureLod(kAreaLightTextureSpecularNarrowFootprint * distance, size, 1.0);
-    float wideLod = areaLightTextureLod(kAreaLightTextureSpecularWideFootprint * distance, size, 1.0);
-    vec3 narrow = areaLightTexture(slot, uv, narrowLod);
-    vec3 wide = areaLightTexture(slot, uv, wideLod);
-    return mix(wide, narrow, kAreaLightTextureSpecularNarrowWeight);
+    float wideLod =
+        areaLightTextureLod(kAreaLightTextureSpecularWideFootprint * distance, size, 1.0);
+    float diffuseLod = areaLightTextureLod(2.0 * distance, size);
+    int count = specular ? kAreaLightTextureSpecularCells : kAreaLightTextureDiffuseCells;
+    float cells = float(count);
+    float cellLevel = log2(kAreaLightTextureTile / cells);
+    vec3 weighted = vec3(0.0);
+    for (int j = 0; j < count; ++j) {
+        for (int i = 0; i < count; ++i) {
+            vec2 lo = vec2(i, j) / cells, hi = vec2(i + 1, j + 1) / cells;
+            vec3 corners[4];  // wound as rectPolygon's
+            corners[0] = p0 + lo.x * e1 + lo.y * e2;
+            corners[1] = p0 + hi.x * e1 + lo.y * e2;
+            corners[2] = p0 + hi.x * e1 + hi.y * e2;
+            corners[3] = p0 + lo.x * e1 + hi.y * e2;
+            vec3 sum = ltcMovedPolygonVectorSum(corners, 4);
+            float share = max(sum.z * (0.5 / PI), 0.0);
+            if (share <= 0.0) continue;  // below the horizon or seen from behind
+            // Where the cell's mean direction meets the moved plane, in the rect's (u, v) (M^-1
+            // is linear: affine coordinates carry over).
+            float approach = dot(n, sum);
+            vec3 hit = abs(approach) > 1e-12 * area * length(sum) ? sum * (offset / approach)
+                                                                  : corners[0];
+            vec3 d = hit - p0;
+            vec2 uv = vec2(e22 * dot(d, e1) - e12 * dot(d, e2),
+                           e11 * dot(d, e2) - e12 * dot(d, e1)) /
+                      det;
+            uv = clamp(uv, lo, hi);
+            vec3 value;
+            if (specular) {
+                value = mix(areaLightTextureCellRead(slot, uv, lo, cellLevel, wideLod),
+                            areaLightTextureCellRead(slot, uv, lo, cellLevel, narrowLod),
+                            kAreaLightTextureSpecularNarrowWeight);
+            } else {
+                value = areaLightTextureCellRead(slot, uv, lo, cellLevel, diffuseLod);
+            }
+            weighted += share * value;
+            integral += share;
+        }
+    }
+    return weighted / max(integral, 1e-30);
 #else
+    vec3 moved[4] = vec3[4](p0, p0 + e1, p0 + e1 + e2, p0 + e2);
+    integral = max(ltcMovedPolygonVectorSum(moved, 4).z * (0.5 / PI), 0.0);
     return vec3(1.0);
 #endif
 }
 
 // areaShapeIntegral, and in `texel` what a textured rect (slot > 0) shows the lobe (1 for an
-// untextured shape): one edge sum gives both. `specular`: the specular lobe's two reads
-// (area_light_texture.glsl).
+// untextured shape): the integral-weighted mean of its cells (areaLtcTexturedIntegral), whose
+// integrals sum to the rect's. `specular`: the specular lobe's reads.
 float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv, uint slot, bool specular,
                         out vec3 texel) {
     texel = vec3(1.0);
     if (s.isDisk || slot == 0u) return areaShapeIntegral(s, P, toLocal, minv);
     vec3 polygon[4];
     rectPolygon(s, P, toLocal, polygon);
-    vec3 sum = ltcPolygonVectorSum(minv, polygon, 4);
-    texel = areaLtcTexture(slot, polygon, minv, sum, specular);
-    return max(sum.z * (0.5 / PI), 0.0);
+    float integral;
+    texel = areaLtcTexturedIntegral(slot, polygon, minv, specular, integral);
+    return integral;
 }
 
 // The image at plane coordinates q of a textured rect, filtered over `footprint` metres.
@@ -205,8 +272,8 @@ LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alph
     float window = attenuationWindow(dot(toCenter, toCenter), light.invAttenuationRadius);
     vec3 luminance = light.intensity * window;
     uint slot = areaTextureSlot(light);
-    // A textured rect's image as each lobe sees it (1 untextured): by LTC where the lobe's
-    // mean direction meets the rect; in representative mode at the sample point, over the
+    // A textured rect's image as each lobe sees it (1 untextured): by LTC over the image's cells
+    // (areaLtcTexturedIntegral); in representative mode at the sample point, over the
     // footprint of the cosine (twice the height) or of the seed's specular cone.
     vec3 diffuseTexel = vec3(1.0);
     vec3 specularTexel = vec3(1.0);

@@ -40,13 +40,12 @@ int ltcClipToHorizon(vec3 polygon[4], int count, out vec3 clipped[5]) {
 }
 
 // The vector form factor (times 2 pi) of a convex polygon (3 or 4 vertices, relative to the
-// shading point) moved by M^-1 and clipped to the horizon: the sum of its edges' vectors. Its z
-// is 2 pi x the cosine lobe's integral; its direction is the polygon's mean direction (by solid
-// angle) in the lobe's cosine space, where a textured rect reads its image (area_lights.glsl).
+// shading point, already moved by M^-1) clipped to the horizon: the sum of its edges' vectors.
+// Its z is 2 pi x the cosine lobe's integral; its direction is the polygon's mean direction (by
+// solid angle) in the lobe's cosine space, where a textured rect's cell reads its image
+// (area_lights.glsl).
 // Vertices wind clockwise as seen from the lit side; zero when nothing is above the horizon.
-vec3 ltcPolygonVectorSum(mat3 minv, vec3 polygon[4], int count) {
-    vec3 moved[4];
-    for (int i = 0; i < count; ++i) moved[i] = minv * polygon[i];
+vec3 ltcMovedPolygonVectorSum(vec3 moved[4], int count) {
     vec3 clipped[5];
     int n = ltcClipToHorizon(moved, count, clipped);
     if (n < 3) return vec3(0.0);
@@ -60,6 +59,13 @@ vec3 ltcPolygonVectorSum(mat3 minv, vec3 polygon[4], int count) {
     }
     sum += ltcEdgeVector(previous, first);
     return sum;
+}
+
+// The same for the polygon before it is moved, given M^-1.
+vec3 ltcPolygonVectorSum(mat3 minv, vec3 polygon[4], int count) {
+    vec3 moved[4];
+    for (int i = 0; i < count; ++i) moved[i] = minv * polygon[i];
+    return ltcMovedPolygonVectorSum(moved, count);
 }
 
 // The integral of the cosine lobe moved by M over a convex polygon (3 or 4 vertices, relative

@@ -16,6 +16,7 @@
 #include "report_context.h"
 #include "shader_cost.h"
 #include "shaders/area_shape_values.comp.spv.h"
+#include "svg_figures.h"
 
 #include "../../../render/ltc/ltc_ggx_table.inc"
 
@@ -181,8 +182,8 @@ void addAreaLightShapeRows(ReportContext& context) {
         {"Disk light: LTC (Heitz-Hill disk integral, fitted specular)", true, kLtc},
         {"Textured rect light: representative point, image at the sample", false, kRepresentative,
          1},
-        {"Textured rect light: LTC, image where the lobe's mean direction meets it", false, kLtc,
-         1},
+        {"Textured rect light: LTC, exact integral per image cell (8 x 8 specular, 4 x 4 diffuse)",
+         false, kLtc, 1},
         {"Constant-intensity rect light: representative point x pre-integrated factors (seed 004 "
          "section 1)",
          false, kRepresentative, 0, true, true},
@@ -198,8 +199,8 @@ void addAreaLightShapeRows(ReportContext& context) {
         // chain's texels have edges at every level: nothing tuned to the first image's cut.
         {"Textured rect light (steps at 0.35): representative point, image at the sample", false,
          kRepresentative, 2},
-        {"Textured rect light (steps at 0.35): LTC, image where the lobe's mean direction meets "
-         "it",
+        {"Textured rect light (steps at 0.35): LTC, exact integral per image cell (8 x 8 specular, "
+         "4 x 4 diffuse)",
          false, kLtc, 2},
     };
     // Which reference set a variant reads: rect, disk, textured rect, constant-intensity rect
@@ -241,6 +242,10 @@ void addAreaLightShapeRows(ReportContext& context) {
     const auto device = evaluate(context.harness, samples);
 
     const uint32_t iterations = context.budget.iterations(64);  // LTC: ~1 us each on lavapipe
+    // The textured rect's LTC is 64 cell integrals per lobe (~40 us here): 4 iterations keep its
+    // timing to seconds and each invocation under lavapipe's loop limiter (65,535 iterations of
+    // every loop together; ~1,300 per evaluation).
+    const uint32_t texturedLtcIterations = context.budget.iterations(4);
     const std::vector<Cost> ns = context.cost.nsPerEvaluation({
         {CostFunction::PointLightShading, iterations},
         {CostFunction::RectRepresentative, iterations},
@@ -248,7 +253,7 @@ void addAreaLightShapeRows(ReportContext& context) {
         {CostFunction::DiskRepresentative, iterations},
         {CostFunction::DiskLtc, iterations},
         {CostFunction::TexturedRectRepresentative, iterations},
-        {CostFunction::TexturedRectLtc, iterations},
+        {CostFunction::TexturedRectLtc, texturedLtcIterations},
         {CostFunction::RectRepresentativeConstantIntensity, iterations},
         {CostFunction::RectLtcConstantIntensity, iterations},
         {CostFunction::DiskRepresentativeConstantIntensity, iterations},
@@ -287,13 +292,39 @@ void addAreaLightShapeRows(ReportContext& context) {
         std::snprintf(text, sizeof(text), "s = %.1f m", size);
         table.header.push_back(text);
     }
+    // The heat maps (specular over roughness x size) for each shape and mode; none for
+    // the unclamped diffuse variant or the constant-intensity lights.
+    const char* const heatMapFiles[] = {"rect_representative",
+                                        nullptr,
+                                        "rect_ltc",
+                                        "disk_representative",
+                                        nullptr,
+                                        "disk_ltc",
+                                        "textured_rect_representative",
+                                        "textured_rect_ltc",
+                                        nullptr,
+                                        nullptr,
+                                        nullptr,
+                                        nullptr,
+                                        nullptr,
+                                        "textured_rect_steps_035_representative",
+                                        "textured_rect_steps_035_ltc"};
+    static_assert(std::size(heatMapFiles) == std::size(variants));
     const size_t perVariant = samples.size() / std::size(variants);
     for (size_t v = 0; v < std::size(variants); ++v) {
         const Variant& variant = variants[v];
         const size_t shapeBase = size_t(referenceSet(variant)) * perVariant;
         Errors diffuse, specular;
+        HeatMap map;
+        map.title = std::string(variant.name) + ": specular relative L1 error";
+        map.xAxis = variant.disk ? "disk diameter at 1 m" : "rect side at 1 m";
+        map.yAxis = "roughness";
+        for (double size : kSizes)
+            map.columns.push_back(formatNumber(size) + " m");
         size_t k = 0;
         for (double roughness : kRoughness) {
+            map.rows.push_back(formatNumber(roughness));
+            map.values.emplace_back();
             std::vector<std::string> row = {variant.name, formatNumber(roughness)};
             for (double size : kSizes) {
                 double diffuseError = 0, diffuseSum = 0, specularError = 0, specularSum = 0;
@@ -310,6 +341,7 @@ void addAreaLightShapeRows(ReportContext& context) {
                               size);
                 const double d = diffuseError / diffuseSum, s = specularError / specularSum;
                 diffuse.add(d, at);
+                map.values.back().push_back(s);
                 if (variant.mode != kRepresentativeUnclamped) specular.add(s, at);
                 char cell[64];
                 std::snprintf(cell, sizeof(cell), "%.1f %% / %.1f %%", 100.0 * d, 100.0 * s);
@@ -338,6 +370,10 @@ void addAreaLightShapeRows(ReportContext& context) {
                  "relative L1 over the views; roughness 0.1..1 x size 0.1..1.2 m at 1 m: " +
                      specular.text(),
                  specular.worst, "rel", specular.where, cost});
+        }
+        if (heatMapFiles[v] != nullptr) {
+            context.report.figures.push_back({std::string("area_light_") + heatMapFiles[v] + ".svg",
+                                              map.title, heatMapSvg(map)});
         }
     }
     context.report.tables.push_back(table);

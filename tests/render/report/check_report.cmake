@@ -23,6 +23,7 @@ foreach(row
     "| Rect light: LTC (polygon integral, fitted specular), specular"
     "| Disk light: representative point (seed 004 section 1), specular"
     "| Disk light: LTC (Heitz-Hill disk integral, fitted specular), diffuse"
+    "| Textured rect light: LTC, exact integral per image cell (8 x 8 specular, 4 x 4 diffuse), specular"
     "| Windowed falloff (eq. 9)"
     "| Split-sum IBL"
     "| Mobile IBL"
@@ -61,7 +62,10 @@ foreach(row
 endforeach()
 # The figures the page embeds are written beside it, as SVG.
 foreach(figure speed-vs-error-frontier area_light_sphere_representative area_light_sphere_ltc
-        area_light_tube_representative area_light_tube_ltc)
+        area_light_tube_representative area_light_tube_ltc area_light_rect_representative
+        area_light_rect_ltc area_light_disk_representative area_light_disk_ltc
+        area_light_textured_rect_representative area_light_textured_rect_ltc
+        area_light_textured_rect_steps_035_representative area_light_textured_rect_steps_035_ltc)
   if(NOT EXISTS ${folder}/${figure}.svg)
     message(FATAL_ERROR "figure missing beside ${OUT}: ${figure}.svg")
   endif()
