@@ -15,10 +15,19 @@ namespace candela::content {
 // Inverse of an affine matrix (last row 0 0 0 1), through the 3x3 adjugate.
 ecs::Mat4 affineInverse(const ecs::Mat4& m);
 
+// Asked of every skin's mesh every frame: four column compares, not sixteen branches.
 inline bool isIdentity(const ecs::Mat4& m) {
+#if defined(__SSE2__)
+    const __m128 c0 = _mm_cmpeq_ps(_mm_loadu_ps(m.m + 0), _mm_setr_ps(1, 0, 0, 0));
+    const __m128 c1 = _mm_cmpeq_ps(_mm_loadu_ps(m.m + 4), _mm_setr_ps(0, 1, 0, 0));
+    const __m128 c2 = _mm_cmpeq_ps(_mm_loadu_ps(m.m + 8), _mm_setr_ps(0, 0, 1, 0));
+    const __m128 c3 = _mm_cmpeq_ps(_mm_loadu_ps(m.m + 12), _mm_setr_ps(0, 0, 0, 1));
+    return _mm_movemask_ps(_mm_and_ps(_mm_and_ps(c0, c1), _mm_and_ps(c2, c3))) == 0xF;
+#else
     for (int i = 0; i < 16; ++i)
         if (m.m[i] != (i % 5 == 0 ? 1.0f : 0.0f)) return false;
     return true;
+#endif
 }
 
 // Last row 0 0 0 1 (glTF's inverse bind matrices are; a file may still hold another).
