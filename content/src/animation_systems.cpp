@@ -15,12 +15,6 @@
 namespace candela::content {
 namespace {
 
-// The entities each system visits, kept between frames so collecting them reuses capacity.
-struct AnimationWorkLists {
-    std::vector<ecs::Entity> players;
-    std::vector<ecs::Entity> skins;
-};
-
 ecs::LocalTransform restPose(const Node& node) {
     const Transform& t = node.local;
     return {{t.translation[0], t.translation[1], t.translation[2]},
@@ -447,10 +441,6 @@ void updateSkin(const JointWorlds& worlds, ecs::Entity entity, Skin& skin) {
     });
 }
 
-AnimationWorkLists& workLists(ecs::Registry& registry) {
-    return registry.resources().getOrEmplace<AnimationWorkLists>();
-}
-
 constexpr std::size_t kPlayersPerJob = 16;  // prefetching runs within a job's range
 // Prefetching pays only once the players' state (about 4.5 KB per Fox: scratch, pose, pass
 // table, joint matrices) outgrows a core's L2 cache (1 MB here): below this many players the
@@ -460,87 +450,83 @@ constexpr std::size_t kPlayersPerJob = 16;  // prefetching runs within a job's r
 constexpr std::size_t kPrefetchFromPlayers = 192;
 constexpr std::size_t kSkinsPerJob = 16;
 
-void advanceListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLists& lists,
-                   float deltaSeconds) {
-    lists.players.clear();
-    registry.view<AnimationPlayer>().each(
-        [&](ecs::Entity e, AnimationPlayer&) { lists.players.push_back(e); });
-    const ecs::Storage<AnimationPlayer> players = registry.storage<AnimationPlayer>();
+// A pool with at least one component, or null.
+ecs::ComponentPool* nonEmpty(ecs::ComponentPool* pool) {
+    return pool != nullptr && pool->size() > 0 ? pool : nullptr;
+}
+
+// Every player in its pool's dense order: the records themselves, by position, with no entity
+// lookup per player (the structure stays locked meanwhile, as during a view's walk).
+void advanceAll(ecs::Registry& registry, ecs::JobSystem& jobs, ecs::ComponentPool& playerPool,
+                float deltaSeconds) {
+    const ecs::Registry::StructureLock lock = registry.lockStructure();
+    AnimationPlayer* const players = playerPool.typedData<AnimationPlayer>();
+    const std::size_t count = playerPool.size();
     TransformPools pools;
-    if (!registry.view<ecs::LocalTransform>().empty())
-        pools.locals = &registry.storage<ecs::LocalTransform>().pool();
-    if (!registry.view<ecs::WorldTransform>().empty())
-        pools.worlds = &registry.storage<ecs::WorldTransform>().pool();
-    if (!registry.view<Skin>().empty()) pools.skins = &registry.storage<Skin>().pool();
+    pools.locals = nonEmpty(registry.pool<ecs::LocalTransform>());
+    pools.worlds = nonEmpty(registry.pool<ecs::WorldTransform>());
+    pools.skins = nonEmpty(registry.pool<Skin>());
     pools.hierarchyVersion = ecs::hierarchyVersion(registry);
-    const bool prefetch = lists.players.size() >= kPrefetchFromPlayers;
-    jobs.parallelFor(lists.players.size(), kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
+    const bool prefetch = count >= kPrefetchFromPlayers;
+    jobs.parallelFor(count, kPlayersPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
-            if (!prefetch) {
-                advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds);
-                continue;
+            if (prefetch) {
+                // The next players' data is requested while this one works: the record two
+                // ahead (its address only: nothing of it is read), what it points to one
+                // ahead, in this job's range only (another job may be writing its players'
+                // scratch).
+                if (i + 2 < count) prefetchPlayerRecord(players[i + 2]);
+                if (i + 1 < end) prefetchSkeletonPose(pools, players[i + 1]);
             }
-            // The next players' data is requested while this one works: the record two ahead
-            // (its address only: nothing of it is read), what it points to one ahead, in this
-            // job's range only (another job may be writing its players' scratch).
-            if (i + 2 < lists.players.size())
-                prefetchPlayerRecord(players.get(lists.players[i + 2]));
-            if (i + 1 < end) prefetchSkeletonPose(pools, players.get(lists.players[i + 1]));
-            advancePlayer(registry, pools, players.get(lists.players[i]), deltaSeconds);
+            advancePlayer(registry, pools, players[i], deltaSeconds);
         }
     });
 }
 
-void updateListed(ecs::Registry& registry, ecs::JobSystem& jobs, AnimationWorkLists& lists) {
-    lists.skins.clear();
-    registry.view<Skin>().each([&](ecs::Entity e, Skin&) { lists.skins.push_back(e); });
-    const ecs::Storage<Skin> skins = registry.storage<Skin>();
-    const JointWorlds worlds{registry,
-                             registry.view<ecs::WorldTransform>().empty()
-                                 ? nullptr
-                                 : &registry.storage<ecs::WorldTransform>().pool(),
-                             registry.view<ecs::LocalTransform>().empty()
-                                 ? nullptr
-                                 : &registry.storage<ecs::LocalTransform>().pool()};
-    jobs.parallelFor(lists.skins.size(), kSkinsPerJob, [&](std::size_t begin, std::size_t end) {
+// Every skin in its pool's dense order, as advanceAll walks the players.
+void updateAll(ecs::Registry& registry, ecs::JobSystem& jobs, ecs::ComponentPool& skinPool) {
+    const ecs::Registry::StructureLock lock = registry.lockStructure();
+    Skin* const skins = skinPool.typedData<Skin>();
+    const ecs::Entity* const entities = skinPool.entities();
+    const JointWorlds worlds{registry, nonEmpty(registry.pool<ecs::WorldTransform>()),
+                             nonEmpty(registry.pool<ecs::LocalTransform>())};
+    jobs.parallelFor(skinPool.size(), kSkinsPerJob, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
-            updateSkin(worlds, lists.skins[i], skins.get(lists.skins[i]));
+            updateSkin(worlds, entities[i], skins[i]);
     });
 }
 
 }  // namespace
 
 void advanceAnimationPlayers(ecs::Registry& registry, ecs::JobSystem& jobs, float deltaSeconds) {
-    if (registry.view<AnimationPlayer>().empty()) return;
+    ecs::ComponentPool* const players = nonEmpty(registry.pool<AnimationPlayer>());
+    if (players == nullptr) return;
     // This frame's pose gets a tick of its own: the skeleton pass stamps worlds and skins
     // (Skin::builtFrom) with it, and propagation, which otherwise advances the tick, has
     // nothing to do for joints the pass wrote.
     registry.advanceTick();
-    advanceListed(registry, jobs, workLists(registry), deltaSeconds);
+    advanceAll(registry, jobs, *players, deltaSeconds);
 }
 
 void updateSkins(ecs::Registry& registry, ecs::JobSystem& jobs) {
-    if (registry.view<Skin>().empty()) return;
-    updateListed(registry, jobs, workLists(registry));
+    ecs::ComponentPool* const skins = nonEmpty(registry.pool<Skin>());
+    if (skins == nullptr) return;
+    updateAll(registry, jobs, *skins);
 }
 
 void addAnimationSystems(ecs::Scheduler& scheduler, std::function<float()> deltaSeconds) {
-    // Created here, outside any parallel stage.
-    scheduler.registry().resources().getOrEmplace<AnimationWorkLists>();
     scheduler
         .addSystem("sample animation", ecs::Phase::Update,
                    [deltaSeconds](ecs::SystemContext& ctx) {
                        advanceAnimationPlayers(ctx.registry(), ctx.jobs(), deltaSeconds());
                    })
         .reads<ecs::HierarchyNode>()
-        .writes<AnimationPlayer, ecs::LocalTransform, ecs::WorldTransform, MorphWeights, Skin>()
-        .writesResource<AnimationWorkLists>();
+        .writes<AnimationPlayer, ecs::LocalTransform, ecs::WorldTransform, MorphWeights, Skin>();
     scheduler
         .addSystem("joint matrices", ecs::Phase::PostUpdate,
                    [](ecs::SystemContext& ctx) { updateSkins(ctx.registry(), ctx.jobs()); })
         .reads<ecs::WorldTransform>()
-        .writes<Skin>()
-        .writesResource<AnimationWorkLists>();
+        .writes<Skin>();
 }
 
 std::vector<std::array<float, 6>> jointBoundsOf(const Mesh& mesh, std::size_t jointCount) {
