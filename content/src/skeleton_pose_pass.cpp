@@ -212,9 +212,7 @@ void buildSkin(AnimationPlayer& player, const TransformPools& pools, const ecs::
     if (binding.meshPass == kAbsent) return;  // a mesh without transforms: not built
     Skin* skin = pools.skins->typedData<Skin>() + binding.skinIndex;
     const SkinData& data = model.skins[static_cast<std::size_t>(skin->skin)];
-    // A mesh at its world's origin (a character as the file places it) is its own inverse.
-    const ecs::Mat4& meshWorld = passWorlds[binding.meshPass];
-    const ecs::Mat4 toMesh = isIdentity(meshWorld) ? meshWorld : affineInverse(meshWorld);
+    const ecs::Mat4 toMesh = affineInverse(passWorlds[binding.meshPass]);
     const std::uint32_t* jointPass = s.skinJointPass.data() + binding.jointBegin;
     if (skin->skin != model.nodes[binding.meshNode].skin ||
         data.joints.size() != binding.jointEnd - binding.jointBegin) {
