@@ -286,7 +286,6 @@ void advancePlayer(ecs::Registry& registry, const TransformPools& pools, Animati
             const std::uint32_t begin = s.weightOffset[n];
             const std::size_t count = s.weightOffset[n + 1] - begin;
             if (morph->weights.size() == count) {
-                morph->previousWeights = morph->weights;  // same size: no allocation
                 std::copy_n(s.weights.begin() + begin, count, morph->weights.begin());
             }
         }
@@ -398,25 +397,16 @@ void updateSkin(const JointWorlds& worlds, ecs::Entity entity, Skin& skin) {
     ecs::Tick newest = worlds.tick(skin.meshWorldIndex);
     for (const std::uint32_t index : skin.jointWorldIndex)
         newest = std::max(newest, worlds.tick(index));
-    const bool builtByPose = skin.builtByPose;
     skin.builtByPose = false;
     // (A skeleton pass that left joint worlds unwritten built from newer worlds than their
     // ticks say: nothing newer than builtFrom means current.)
     if (skin.builtFrom != ecs::kNeverTick && newest <= skin.builtFrom &&
         skin.jointMatrices.size() == data.joints.size()) {
-        // Built this frame by the skeleton pass from these very worlds: current.
-        if (builtByPose) return;
-        if (!skin.previousIsCurrent) {  // still now: last frame's matrices equal this frame's
-            skin.previousJointMatrices = skin.jointMatrices;
-            skin.previousIsCurrent = true;
-        }
+        // Built this frame by the skeleton pass from these very worlds, or still: current.
         return;
     }
-    // Propagation moved something since (or nothing built them yet): from the worlds. A
-    // skin the pass built this frame keeps its previous matrices (they are last frame's).
-    if (builtByPose) std::swap(skin.previousJointMatrices, skin.jointMatrices);
+    // Propagation moved something since (or nothing built them yet): from the worlds.
     skin.builtFrom = newest;
-    skin.previousIsCurrent = false;
     const ecs::WorldTransform* meshWorld = worlds.world(skin.meshWorldIndex);
     if (skin.worldsSkippedByPose) {
         // Some joints' stored worlds are stale: each from the locals (rare: propagation

@@ -36,8 +36,8 @@ inline bool isAffine(const Matrix4& m) {
 }
 
 // Per joint j: toMesh * world(j) * inverse bind (the identity where world(j) is null: the
-// joint is not shown), the previous frame's matrices kept by a swap (no copy, no allocation
-// once sized), and the deformed mesh's bounds from each joint's bind-space box.
+// joint is not shown), written over last frame's in place (no allocation once sized), and
+// the deformed mesh's bounds from each joint's bind-space box.
 // `inverseBindsAffine`: the caller knows every inverse bind matrix is affine (false: each is
 // tested).
 template <class JointWorld>
@@ -45,12 +45,6 @@ void buildJointMatrices(Skin& skin, const SkinData& data, const ecs::Mat4& toMes
                         JointWorld&& world, bool inverseBindsAffine = false) {
     if (skin.jointMatrices.size() != data.joints.size())
         skin.jointMatrices.assign(data.joints.size(), ecs::Mat4::identity());
-    // Every joint below is rewritten, so the swap leaves nothing stale.
-    if (skin.previousJointMatrices.size() == skin.jointMatrices.size()) {
-        std::swap(skin.previousJointMatrices, skin.jointMatrices);
-    } else {
-        skin.previousJointMatrices = skin.jointMatrices;
-    }
     constexpr float kInf = std::numeric_limits<float>::infinity();
     ecs::Vec3 lo{kInf, kInf, kInf}, hi{-kInf, -kInf, -kInf};
     ecs::Mat4 toJoint;

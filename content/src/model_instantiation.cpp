@@ -30,7 +30,6 @@ void addAnimationComponents(ecs::Registry& registry, const Model& model,
             for (std::int32_t joint : model.skins[static_cast<std::size_t>(node.skin)].joints)
                 skin.joints.push_back(nodeEntities[static_cast<std::size_t>(joint)]);
             skin.jointMatrices.assign(skin.joints.size(), ecs::Mat4::identity());
-            skin.previousJointMatrices = skin.jointMatrices;
             computeJointBounds(model, node.mesh, skin);
             registry.emplace<Skin>(e, std::move(skin));
         }
@@ -39,7 +38,6 @@ void addAnimationComponents(ecs::Registry& registry, const Model& model,
             MorphWeights morph;
             morph.weights = node.weights.size() == mesh.defaultWeights.size() ? node.weights
                                                                               : mesh.defaultWeights;
-            morph.previousWeights = morph.weights;
             registry.emplace<MorphWeights>(e, std::move(morph));
         }
     }

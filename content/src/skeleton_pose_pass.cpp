@@ -231,7 +231,6 @@ void buildSkin(AnimationPlayer& player, const TransformPools& pools, const ecs::
     }
     skin->worldsSkippedByPose = s.skipsWorlds;
     skin->builtFrom = now;
-    skin->previousIsCurrent = false;
     skin->builtByPose = true;
 }
 

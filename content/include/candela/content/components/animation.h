@@ -166,11 +166,11 @@ struct Skin {
     std::int32_t skin = -1;           // into Model::skins
     std::vector<ecs::Entity> joints;  // one per skin joint (kNullEntity: not shown, identity)
     // Per joint: inverse(mesh world) * joint world * inverse bind matrix, i.e. bind-pose mesh
-    // space to current mesh space. The renderer skins with these.
+    // space to current mesh space. The renderer skins with these. Only this frame's: motion
+    // vectors come from last frame's deformed vertices, which the renderer keeps on the GPU
+    // (render/README.md "Animation"), so a second CPU copy would only double what a crowd
+    // writes into cache.
     std::vector<ecs::Mat4> jointMatrices;
-    // The previous frame's matrices (motion vectors / TAA: skin the vertex twice, or keep the
-    // previous deformed positions; see render/README.md "Animation").
-    std::vector<ecs::Mat4> previousJointMatrices;
     // Per joint, the bind-space box of the vertices it influences, as its centre xyz and half
     // size xyz (half size -inf when it influences none): the deformed mesh lies inside the
     // union of these boxes moved by the joint matrices.
@@ -182,7 +182,6 @@ struct Skin {
     // The newest WorldTransform change (mesh or joints) the matrices were built from: a skin
     // whose skeleton did not move is skipped (a still character costs a few tick reads).
     ecs::Tick builtFrom = ecs::kNeverTick;
-    bool previousIsCurrent = false;
     // Built this frame by its player's skeleton pass from the worlds it wrote (stamped
     // builtFrom): updateSkins keeps the matrices unless propagation changed a joint since.
     bool builtByPose = false;
@@ -200,8 +199,9 @@ struct Skin {
 };
 
 struct MorphWeights {
-    std::vector<float> weights;          // one per morph target of the mesh
-    std::vector<float> previousWeights;  // last frame's (motion vectors)
+    // One per morph target of the mesh (this frame's; last frame's morphing stays in the
+    // renderer's previous deformed vertices, as for Skin::jointMatrices).
+    std::vector<float> weights;
 };
 
 }  // namespace candela::content
