@@ -75,8 +75,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     const int joints = skeleton.num_joints();
-    // The inverse bind matrices: the inverse of the rest pose's model matrices (the values do
-    // not change the cost; glTF's own are the same up to rounding for Fox).
+    // Inverse bind matrices: the inverse of the rest pose's model matrices (ozz's files do not
+    // carry the glTF skin's; their values do not change the cost).
     std::vector<ozz::math::Float4x4> inverseBind(static_cast<std::size_t>(joints));
     {
         std::vector<ozz::math::Float4x4> rest(static_cast<std::size_t>(joints));
