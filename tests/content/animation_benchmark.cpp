@@ -6,16 +6,15 @@
 // into its own vertex buffer) timed with timestamps, against the static scene (which declares
 // no skinning pass: 0 ms) and against copying the same bytes (a bandwidth floor).
 // Usage: candela-bench-animation [--max-foxes N] [--frames F] [--gpu-frames G] [--no-gpu]
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "bench_frame_timing.h"
 #include "candela/content/animation_systems.h"
 #include "candela/content/gltf_loader.h"
 #include "candela/content/model_instantiation.h"
@@ -29,17 +28,9 @@
 namespace {
 
 using namespace candela;
-// Thread CPU time: the development machine is shared, so wall time would count other jobs.
-double cpuNow() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e9 + static_cast<double>(t.tv_nsec);
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
+using bench::framesPerClockPair;
+using bench::median;
+using bench::threadCpuNs;
 
 // Per stage (three clock pairs per frame) and the whole frame (one pair per `batch` frames,
 // as ozz-animation's side-by-side program times its frames): a thread CPU clock read is a
@@ -50,31 +41,25 @@ struct FrameTimes {
     double sampleNs = 0, propagateNs = 0, skinNs = 0, frameNs = 0;
 };
 
-// Frames per timed interval for the whole frame: about 1,000 Foxes' worth, so the clock's
-// two reads are a small share of what is timed at every size.
-int framesPerClockPair(int foxes) {
-    return std::max(1, 1000 / foxes);
-}
-
 FrameTimes measure(ecs::Registry& registry, ecs::JobSystem& jobs, int frames, int batch) {
     std::vector<double> sample, propagate, skin, whole;
     for (int f = 0; f < frames; ++f) {
-        const double t0 = cpuNow();
+        const double t0 = threadCpuNs();
         for (int b = 0; b < batch; ++b) {
             content::advanceAnimationPlayers(registry, jobs, 1.0f / 60.0f);
             ecs::propagateTransforms(registry);
             content::updateSkins(registry, jobs);
         }
-        whole.push_back((cpuNow() - t0) / batch);
+        whole.push_back((threadCpuNs() - t0) / batch);
     }
     for (int f = 0; f < frames; ++f) {
-        const double t0 = cpuNow();
+        const double t0 = threadCpuNs();
         content::advanceAnimationPlayers(registry, jobs, 1.0f / 60.0f);
-        const double t1 = cpuNow();
+        const double t1 = threadCpuNs();
         ecs::propagateTransforms(registry);
-        const double t2 = cpuNow();
+        const double t2 = threadCpuNs();
         content::updateSkins(registry, jobs);
-        const double t3 = cpuNow();
+        const double t3 = threadCpuNs();
         sample.push_back(t1 - t0);
         propagate.push_back(t2 - t1);
         skin.push_back(t3 - t2);

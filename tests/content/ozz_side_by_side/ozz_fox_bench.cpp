@@ -6,11 +6,9 @@
 // times it: one thread, thread CPU time, each Fox 0.013 s further into the clip, 1/60 s per
 // frame, max(1, 1,000 / N) frames per clock pair, medians.
 //   ozz_fox_bench skeleton.ozz Walk.ozz MAX_FOXES FRAMES
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <memory>
 #include <vector>
 
@@ -24,18 +22,9 @@
 #include "ozz/base/maths/soa_transform.h"
 #include "ozz/base/span.h"
 
+#include "../bench_frame_timing.h"
+
 namespace {
-
-double cpuNow() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) * 1e9 + static_cast<double>(t.tv_nsec);
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 template <class T>
 bool load(const char* path, T& out) {
@@ -123,17 +112,17 @@ int main(int argc, char** argv) {
                     fox.skinning[j] = fox.models[j] * inverseBind[j];
             }
         };
-        const int batch = std::max(1, 1000 / n);
+        const int batch = candela::bench::framesPerClockPair(n);
         for (int w = 0; w < 3; ++w)
             frame();
         std::vector<double> times;
         for (int f = 0; f < frames; ++f) {
-            const double t0 = cpuNow();
+            const double t0 = candela::bench::threadCpuNs();
             for (int b = 0; b < batch; ++b)
                 frame();
-            times.push_back((cpuNow() - t0) / batch);
+            times.push_back((candela::bench::threadCpuNs() - t0) / batch);
         }
-        const double ns = median(times);
+        const double ns = candela::bench::median(times);
         std::printf("| %d | %.6f | %.1f |\n", n, ns / 1e6,
                     ns / (static_cast<double>(n) * static_cast<double>(joints)));
     }
