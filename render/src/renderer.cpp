@@ -20,6 +20,7 @@
 #include "ibl/environment_sampling_table.h"
 #include "lights/area_light_textures.h"
 #include "lights/gpu_light_buffer.h"
+#include "lights/gpu_light_types.h"
 #include "lights/ltc_table_texture.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
 #include "passes/atmosphere/atmosphere_pass.h"
@@ -121,6 +122,7 @@ LightAssignmentDevice Renderer::resolveLightAssignment(const RendererOptions& op
 
 uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resources,
                                 uint32_t hdrId) {
+    declaredWork_ = {};
     FrameGraph& g = *graph_;
     // The atmosphere's tables come first; its sky cube is the environment the frame lights with.
     if (inputs.scene.atmosphere) {
@@ -143,6 +145,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     // Shadow maps for the lights that cast; none, and the variant leaves shadows out.
     features.shadows = shadowPass_->prepare(inputs.scene, resources, options_, width_, height_);
+    for (const LightInstance& l : inputs.scene.lights) {
+        if (!features.shadows || !l.light.castShadows) continue;
+        (inEveryCluster(l.light) ? features.directionalShadows : features.localShadows) = true;
+    }
     // Sky occlusion's maps: rendered when the static casters change, else kept.
     const SkyOcclusionMode skyOcclusion = options_.skyOcclusion == SkyOcclusionMode::Off &&
                                                   options_.skyOcclusionWithAtmosphere &&
@@ -398,6 +404,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         ResourceHandle specular =
             g.createImage("ao.specular", AmbientOcclusionPass::specularDesc(width_, height_));
         if (features.ao == AoMode::Gtao) {
+            // Each pixel takes `steps` depth samples on both sides of each slice.
+            declaredWork_.aoSamples = uint64_t(width_) * height_ * options_.aoSettings.slices * 2u *
+                                      options_.aoSettings.steps;
             auto p = g.addPass("ambient_occlusion_gtao", PassKind::Device,
                                [this, ids, normal, raw, specular, aoInputs](PassContext& ctx) {
                                    AmbientOcclusionPass::Inputs in = aoInputs;
@@ -589,6 +598,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         volumetricsPass_->binLights(inputs.scene.lights, inputs.scene.camera, width_, height_,
                                     volume, marchVolumes && !volumeProxies, lightFroxels,
                                     sunMarched);
+        declaredWork_.froxelLightEvaluations =
+            volumetricsPass_->binnedWork().froxelLightEvaluations;
+        declaredWork_.volumeMarchSteps = volumetricsPass_->binnedWork().volumeMarchSteps;
         if (volumeProxies) {
             volumetricsPass_->buildProxies(inputs.scene.lights, inputs.scene.camera, width_,
                                            height_);

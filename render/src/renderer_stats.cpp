@@ -62,8 +62,10 @@ const RendererStats& Renderer::collectStats() {
         stats_.hairNodesDropped =
             stats_.hairNodes > hairNodeCapacity_ ? stats_.hairNodes - hairNodeCapacity_ : 0;
     }
+    uint64_t ssrSteps = 0;
     if (ssrTraced_) {
         const SsrPass::Counts c = ssrPass_->readCounters();
+        ssrSteps = c.steps;
         stats_.ssrRays = c.rays;
         stats_.ssrStepsMax = c.maxSteps;
         if (c.rays > 0) {
@@ -78,11 +80,23 @@ const RendererStats& Renderer::collectStats() {
     }
     stats_.lightEvaluations = 0;
     stats_.litPairs = 0;
+    // Work the frame's declaration fixed (froxel pairs, AO samples), then the passes' counters.
+    stats_.work = declaredWork_;
+    stats_.work.ssrSteps = ssrSteps;
+    stats_.work.scatteringSteps = stats_.scatteringSteps;
+    stats_.work.hairFragments = stats_.hairNodes;
     if (options_.countLightPairs && !features_.empty() && features_[0] != "test_triangle") {
         const auto* counts = static_cast<const uint32_t*>(pairCounts_.mapped());
+        const uint32_t n = LightingPass::kCountsPerWorkgroup;
         for (uint32_t g = 0; g < LightingPass::workgroupCount(width_, height_); ++g) {
-            stats_.lightEvaluations += counts[2 * g];
-            stats_.litPairs += counts[2 * g + 1];
+            const uint32_t* c = counts + size_t(g) * n;
+            stats_.lightEvaluations += c[0];
+            stats_.litPairs += c[1];
+            stats_.work.lightEvaluationsPlain += c[2];
+            stats_.work.lightEvaluationsArea += c[3];
+            stats_.work.lightEvaluationsShadowed += c[4];
+            stats_.work.shadowFilterTaps += c[5];
+            stats_.work.shadowBlockerTaps += c[6];
         }
     }
     return stats_;

@@ -72,7 +72,8 @@ void Renderer::createTargets() {
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
     ensureHostBuffer(context_, pairCounts_,
-                     VkDeviceSize(LightingPass::workgroupCount(width_, height_)) * 8);
+                     VkDeviceSize(LightingPass::workgroupCount(width_, height_)) *
+                         LightingPass::kCountsPerWorkgroup * sizeof(uint32_t));
 }
 
 bool Renderer::aoAccumulates() const {

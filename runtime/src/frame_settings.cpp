@@ -110,7 +110,8 @@ render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
     render::RendererOptions r;
     r.lightCulling = options.lightCulling;
     r.lightAssignment = options.lightAssignment;
-    r.countLightPairs = options.countLightPairs;
+    // --stats reports the frame's work counts (every game's, not only `candela run`'s).
+    r.countLightPairs = options.countLightPairs || options.stats.has_value();
     r.ibl = options.ibl;
     r.areaLights = options.areaLights;
     r.hairSelfShadow = options.hairSelfShadow;

@@ -99,6 +99,35 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["hair_nodes_dropped"] = last.hairNodesDropped;
     json["hair_node_capacity"] = last.hairNodeCapacity;
     json["culling_efficiency"] = cullingEfficiency(last);
+    // Work (render::WorkCounters): each deterministic count's largest value over the run's
+    // frames, what the frame budget test (tests/budgets) holds a scene's every view to.
+    render::WorkCounters w;
+    for (const render::RendererStats& f : stats.frames) {
+        const render::WorkCounters& c = f.work;
+        w.lightEvaluationsPlain = std::max(w.lightEvaluationsPlain, c.lightEvaluationsPlain);
+        w.lightEvaluationsArea = std::max(w.lightEvaluationsArea, c.lightEvaluationsArea);
+        w.lightEvaluationsShadowed =
+            std::max(w.lightEvaluationsShadowed, c.lightEvaluationsShadowed);
+        w.shadowFilterTaps = std::max(w.shadowFilterTaps, c.shadowFilterTaps);
+        w.shadowBlockerTaps = std::max(w.shadowBlockerTaps, c.shadowBlockerTaps);
+        w.froxelLightEvaluations = std::max(w.froxelLightEvaluations, c.froxelLightEvaluations);
+        w.volumeMarchSteps = std::max(w.volumeMarchSteps, c.volumeMarchSteps);
+        w.ssrSteps = std::max(w.ssrSteps, c.ssrSteps);
+        w.aoSamples = std::max(w.aoSamples, c.aoSamples);
+        w.scatteringSteps = std::max(w.scatteringSteps, c.scatteringSteps);
+        w.hairFragments = std::max(w.hairFragments, c.hairFragments);
+    }
+    json["work"] = {{"light_evaluations_plain", w.lightEvaluationsPlain},
+                    {"light_evaluations_area", w.lightEvaluationsArea},
+                    {"light_evaluations_shadowed", w.lightEvaluationsShadowed},
+                    {"shadow_filter_taps", w.shadowFilterTaps},
+                    {"shadow_blocker_taps", w.shadowBlockerTaps},
+                    {"froxel_light_evaluations", w.froxelLightEvaluations},
+                    {"volume_march_steps", w.volumeMarchSteps},
+                    {"ssr_steps", w.ssrSteps},
+                    {"ao_samples", w.aoSamples},
+                    {"scattering_steps", w.scatteringSteps},
+                    {"hair_fragments", w.hairFragments}};
     // Shadows: GPU ms of the shadow depth pass (median over frames; 0 in frames whose maps
     // were all cached), lights with maps, rendered, cached and kept (over the render budget) maps
     // and atlas use (last frame).

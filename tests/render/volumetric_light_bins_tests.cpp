@@ -60,12 +60,45 @@ bool insideVolume(const LightInstance& l, const glm::vec3& P) {
 bool listed(const std::vector<uint32_t>& bins, uint32_t binCount, uint32_t bin, uint32_t light) {
     const auto first = bins.begin() + binCount + 1 + bins[bin];
     const auto last = bins.begin() + binCount + 1 + bins[bin + 1];
-    return std::binary_search(first, last, light);
+    return std::find(first, last, light) != last;  // plain lights first: not one sorted run
 }
 
 glm::vec3 nearPoint(const CameraView& camera, glm::vec2 ndc) {
     const glm::vec4 p = glm::inverse(camera.projection * camera.view) * glm::vec4(ndc, 1.0f, 1.0f);
     return glm::vec3(p) / p.w;
+}
+
+// The shaders walk a bin's plain lights with a body that has no shadow code, then the rest
+// (light_bins.h): every list holds the same lights as without shadows, the plain ones first,
+// each part in light order.
+TEST(VolumetricLightBins, PlainLightsLeadEveryListInLightOrder) {
+    const CameraView camera = testCamera();
+    const std::vector<LightInstance> plain = scatteredLights();
+    std::vector<LightInstance> lights = plain;
+    for (size_t i = 0; i < lights.size(); i += 4)
+        lights[i].light.castShadows = true;
+    const std::vector<float> scales(lights.size(), 1.0f);
+    const LightBinLayout layout = volumeTileLayout(kWidth, kHeight);
+    const std::vector<uint32_t> bins = binLights(lights, scales, camera, layout);
+    const std::vector<uint32_t> plainBins = binLights(plain, scales, camera, layout);
+    const uint32_t binCount = layout.bins.x * layout.bins.y;
+    uint32_t mixedBins = 0;
+    for (uint32_t b = 0; b < binCount; ++b) {
+        std::vector<uint32_t> list(bins.begin() + binCount + 1 + bins[b],
+                                   bins.begin() + binCount + 1 + bins[b + 1]);
+        const auto firstShadowed = std::find_if(
+            list.begin(), list.end(), [&](uint32_t i) { return !isPlainMediumLight(lights[i]); });
+        EXPECT_TRUE(std::none_of(firstShadowed, list.end(),
+                                 [&](uint32_t i) { return isPlainMediumLight(lights[i]); }));
+        EXPECT_TRUE(std::is_sorted(list.begin(), firstShadowed));
+        EXPECT_TRUE(std::is_sorted(firstShadowed, list.end()));
+        mixedBins += firstShadowed != list.begin() && firstShadowed != list.end();
+        std::sort(list.begin(), list.end());
+        const std::vector<uint32_t> expected(plainBins.begin() + binCount + 1 + plainBins[b],
+                                             plainBins.begin() + binCount + 1 + plainBins[b + 1]);
+        EXPECT_EQ(list, expected) << "bin " << b;
+    }
+    EXPECT_GT(mixedBins, 0u);  // the scene tests the order, not only the sets
 }
 
 TEST(VolumetricLightBins, EveryRayThatMeetsAVolumeFindsItsLightInItsTile) {

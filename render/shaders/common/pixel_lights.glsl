@@ -79,4 +79,11 @@ uint pixelLightAt(PixelLights lights, uint k) {
     return lights.listFirst + i;  // 0 but for a range of the brute-force lights
 }
 
+// The k-th entry's light index whatever its quarter bits (kNoLight as pixelLightAt for an
+// overflowing cluster's directional lights): what a walk by light class tests.
+uint pixelLightIndexAt(PixelLights lights, uint k) {
+    if (k < lights.directionalCount || lights.everyLight) return pixelLightAt(lights, k);
+    return lightIndices[lights.listFirst + k - lights.directionalCount] & LIGHT_ENTRY_INDEX_MASK;
+}
+
 #endif

@@ -52,6 +52,11 @@ const float kCascadeBlendBand = 0.1;
 const float kPenumbraMaxSearch = 16.0;
 const float kPenumbraMaxFilter = 24.0;
 
+// Work this invocation's lookups did (--stats work; private, so a shader that never reads them
+// compiles them out): compare taps of the filter, depth texels of the blocker search.
+uint shadowFilterTapCount = 0u;
+uint shadowBlockerTapCount = 0u;
+
 // Light-space depth (metres along the view's axis) of a stored depth value.
 float shadowLinearDepth(ShadowView v, float stored) {
     if (uint(v.params.y) == SHADOW_KIND_ORTHOGRAPHIC) {
@@ -97,6 +102,7 @@ float shadowCompareTap(ShadowView v, vec2 tc, float storedReceiver, vec2 invAtla
 float shadowFilter(ShadowView v, vec2 tc, float receiver, float radius, int n) {
     vec2 invAtlas = 1.0 / vec2(textureSize(shadowAtlasCompare, 0));
     float storedReceiver = shadowStoredDepth(v, receiver);
+    shadowFilterTapCount += uint(n * n);
     float sum = 0.0;
     for (int y = 0; y < n; ++y) {
         for (int x = 0; x < n; ++x) {
@@ -124,6 +130,7 @@ float shadowPenumbraRadius(ShadowView v, vec2 tc, float receiver, float lightSiz
     float sum = 0.0;
     float count = 0.0;
     const int n = 3;
+    shadowBlockerTapCount += uint(4 * n * n);
     for (int y = 0; y < n; ++y) {
         for (int x = 0; x < n; ++x) {
             vec2 o = (vec2(x, y) + 0.5) / float(n) * 2.0 - 1.0;
@@ -242,33 +249,28 @@ float subsurfaceTransmittance(Light light, uint lightIndex, vec3 P) {
     return thickness > 0.0 ? exp(-thickness / kSubsurfaceMeanFreePath) : 1.0;
 }
 
-// The light's visibility at P in [0, 1]: its cascades (directional), cube face (point) or
-// single view (spot). N is the surface normal. 1 when the light has no shadow.
-float shadowVisibility(Light light, uint lightIndex, vec3 P, vec3 N) {
-    if (!kShadowsEnabled) return 1.0;
-    uvec2 entry = shadowLights[lightIndex];
-    if (entry.x == SHADOW_NO_VIEW) return 1.0;
-    bool directional = light.type == kLightDirectional;
-    vec3 L = directional ? -light.direction : safeNormalize(light.position - P);
-    float NoL = dot(N, L);
-    if (NoL <= 0.0) return 1.0;  // facing away: the light adds nothing there anyway
-    // Sphere lights soften by their radius, tubes by their length.
-    float lightSize = directional ? 0.0 : max(2.0 * light.sourceRadius, light.sourceLength);
-    if (directional) {
-        for (uint i = 0u; i < entry.y; ++i) {
-            ShadowView v = shadowViews[entry.x + i];
-            float d = length(P - v.sphere.xyz);
-            if (d >= v.sphere.w) continue;
-            float visibility = sampleShadowView(v, P, N, NoL, 0.0);
-            float t = (v.sphere.w - d) / (v.sphere.w * kCascadeBlendBand);
-            if (t < 1.0 && i + 1u < entry.y) {
-                float next = sampleShadowView(shadowViews[entry.x + i + 1u], P, N, NoL, 0.0);
-                visibility = mix(next, visibility, t);
-            }
-            return visibility;
+// A directional light's visibility at P from its cascades (N the surface normal, NoL > 0),
+// blended into the next cascade over the outer band of each.
+float cascadeShadowVisibility(uvec2 entry, vec3 P, vec3 N, float NoL) {
+    for (uint i = 0u; i < entry.y; ++i) {
+        ShadowView v = shadowViews[entry.x + i];
+        float d = length(P - v.sphere.xyz);
+        if (d >= v.sphere.w) continue;
+        float visibility = sampleShadowView(v, P, N, NoL, 0.0);
+        float t = (v.sphere.w - d) / (v.sphere.w * kCascadeBlendBand);
+        if (t < 1.0 && i + 1u < entry.y) {
+            float next = sampleShadowView(shadowViews[entry.x + i + 1u], P, N, NoL, 0.0);
+            visibility = mix(next, visibility, t);
         }
-        return 1.0;  // beyond the last cascade
+        return visibility;
     }
+    return 1.0;  // beyond the last cascade
+}
+
+// A local light's visibility at P from its cube face (point) or single view (spot), soft by
+// its size (sphere lights by their radius, tubes by their length).
+float localShadowVisibility(Light light, uvec2 entry, vec3 P, vec3 N, float NoL) {
+    float lightSize = max(2.0 * light.sourceRadius, light.sourceLength);
     uint view = entry.x;
     if (entry.y == SHADOW_CUBE_FACES) {
         vec3 d = P - light.position;
@@ -279,6 +281,40 @@ float shadowVisibility(Light light, uint lightIndex, vec3 P, vec3 N) {
         view += face;
     }
     return sampleShadowView(shadowViews[view], P, N, NoL, lightSize);
+}
+
+// Which shadow code a caller compiles in: lavapipe runs every branch of a shader whether or
+// not a lane takes it, so a loop that only sees local lights leaves the cascades out, and one
+// that only sees directional lights leaves out the penumbra search and the cube faces.
+const uint kShadowCodeAny = 0u;
+const uint kShadowCodeDirectional = 1u;
+const uint kShadowCodeLocal = 2u;
+
+// The light's visibility at P in [0, 1]: its cascades (directional), cube face (point) or
+// single view (spot). N is the surface normal. 1 when the light has no shadow. `code` is a
+// constant of the call site (above); the light's type must be one it compiles in.
+float shadowVisibility(Light light, uint lightIndex, vec3 P, vec3 N, uint code) {
+    if (!kShadowsEnabled) return 1.0;
+    uvec2 entry = shadowLights[lightIndex];
+    if (entry.x == SHADOW_NO_VIEW) return 1.0;
+    bool directional = code == kShadowCodeDirectional ||
+                       (code == kShadowCodeAny && light.type == kLightDirectional);
+    vec3 L = directional ? -light.direction : safeNormalize(light.position - P);
+    float NoL = dot(N, L);
+    if (NoL <= 0.0) return 1.0;  // facing away: the light adds nothing there anyway
+    if (code == kShadowCodeDirectional) return cascadeShadowVisibility(entry, P, N, NoL);
+    if (code == kShadowCodeLocal) return localShadowVisibility(light, entry, P, N, NoL);
+    return directional ? cascadeShadowVisibility(entry, P, N, NoL)
+                       : localShadowVisibility(light, entry, P, N, NoL);
+}
+
+float shadowVisibility(Light light, uint lightIndex, vec3 P, vec3 N) {
+    return shadowVisibility(light, lightIndex, P, N, kShadowCodeAny);
+}
+
+// True when the light has no shadow map this frame (always without shadows).
+bool lightUnshadowed(uint lightIndex) {
+    return !kShadowsEnabled || shadowLights[lightIndex].x == SHADOW_NO_VIEW;
 }
 
 #endif

@@ -33,6 +33,10 @@
 #define SPEC_SHADOWS_ENABLED 34
 // Lighting pass: sky occlusion of the sky's light (common/sky_occlusion.glsl).
 #define SPEC_SKY_OCCLUSION 35
+// Lighting pass: of the lights that cast, a directional one (cascades) and a local one (cube
+// faces and spot views, penumbrae): each kind's shadow code only in frames that have it.
+#define SPEC_DIRECTIONAL_SHADOWS 37
+#define SPEC_LOCAL_SHADOWS 38
 // Volumetrics: the frame has rect or disk lights, lit in the medium by their exact form factor;
 // its code alone, never run, made the per-light march 10x slower on lavapipe.
 #define SPEC_MEDIUM_AREA_LIGHTS 36

@@ -207,6 +207,9 @@ private:
     std::unique_ptr<AmbientOcclusionPass> aoPass_;  // made on the first frame with AO
     std::unique_ptr<SsrPass> ssrPass_;              // made on the first frame with a glossy surface
     bool ssrTraced_ = false;  // this frame declared the SSR trace (its counters)
+    // Work the frame's declaration fixed (froxel and volume pairs, AO samples): collectStats
+    // adds the passes' counters to it.
+    WorkCounters declaredWork_;
     // SSR's temporal filter: two reflection histories like TAA's (made when the options ask
     // for it), the one written last frame and whether it holds a frame.
     std::array<GpuImage, 2> ssrHistory_;

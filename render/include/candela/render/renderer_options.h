@@ -331,6 +331,25 @@ struct FrameGraphSummary {
     bool reused = false;                   // the cached compiled graph was used
 };
 
+// Deterministic counts of a frame's work (--stats `work`): what the frame budget test
+// (tests/budgets) holds each scene to, since times are noisy and counts are not. Zero for a
+// feature the frame does not run.
+struct WorkCounters {
+    // Light-pixel evaluations of the lighting pass by class: plain (point, spot, directional
+    // without a map), area (sphere, tube, rect, disk without a map), shadowed (a map).
+    uint64_t lightEvaluationsPlain = 0;
+    uint64_t lightEvaluationsArea = 0;
+    uint64_t lightEvaluationsShadowed = 0;
+    uint64_t shadowFilterTaps = 0;        // bilinear compare taps of the shadow filter
+    uint64_t shadowBlockerTaps = 0;       // texels the penumbra's blocker search read
+    uint64_t froxelLightEvaluations = 0;  // froxel-light pairs the froxel lighting listed
+    uint64_t volumeMarchSteps = 0;        // per-light volumes: pixel-light pairs x steps
+    uint64_t ssrSteps = 0;                // Hi-Z steps of every traced ray
+    uint64_t aoSamples = 0;               // GTAO depth samples (pixels x slices x 2 x steps)
+    uint64_t scatteringSteps = 0;         // light shafts' shadow tests
+    uint64_t hairFragments = 0;           // strand fragments the A-buffer fill asked for
+};
+
 // Measurements of the last completed frame (--stats fields).
 struct RendererStats {
     uint32_t lights = 0;
@@ -413,6 +432,7 @@ struct RendererStats {
     uint32_t ssrStepsMax = 0;
     double ssrHitRate = 0.0;
     uint32_t ssrRays = 0;
+    WorkCounters work;
 };
 
 }  // namespace candela::render

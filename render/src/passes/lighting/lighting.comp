@@ -40,6 +40,10 @@ layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 layout(constant_id = SPEC_AMBIENT_OCCLUSION) const uint kAoMode = 0u;
 // Sky occlusion (common/sky_occlusion.glsl): off folds every call below to visibility 1.
 layout(constant_id = SPEC_SKY_OCCLUSION) const bool kSkyOcclusion = false;
+// Which kinds of light cast this frame (with kShadowsEnabled): each loop below compiles in
+// only the shadow code of a kind that casts.
+layout(constant_id = SPEC_DIRECTIONAL_SHADOWS) const bool kDirectionalShadows = true;
+layout(constant_id = SPEC_LOCAL_SHADOWS) const bool kLocalShadows = true;
 
 layout(binding = LIGHTING_BINDING_GBUFFER_BASE_COLOR) uniform sampler2D gbufferBaseColor;
 layout(binding = LIGHTING_BINDING_GBUFFER_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
@@ -56,9 +60,12 @@ layout(std430, binding = LIGHTING_BINDING_CLUSTER_RANGES) readonly buffer Cluste
 layout(std430, binding = LIGHTING_BINDING_LIGHT_INDICES) readonly buffer LightIndices {
     uint lightIndices[];
 };
-// Per workgroup: evaluated pairs, lit pairs (each fits 32 bits: 64 pixels x 2^26 lights).
+// Per workgroup (LightingPass::kCountsPerWorkgroup): evaluated pairs, lit pairs, evaluations
+// of plain, area and shadowed lights, shadow filter taps, blocker-search texels, and one spare
+// (each fits 32 bits: 64 pixels x 2^26 lights).
+const uint kCounts = 8u;
 layout(std430, binding = LIGHTING_BINDING_PAIR_COUNTS) buffer PairCounts {
-    uvec2 pairCounts[];
+    uint pairCounts[];
 };
 // The slicing the depth occupancy pass derived ([2] sliceNear, [3] logRatio as float bits):
 // read here rather than pushed, so lists assigned on the device need no host round trip.
@@ -102,8 +109,7 @@ layout(push_constant) uniform Push {
     uint lightEnd;
 } push;
 
-shared uint groupEvaluations;
-shared uint groupLitPairs;
+shared uint groupCounts[kCounts];
 
 Surface decodeSurface(ivec2 pixel, out vec3 N) {
     vec4 gb0 = texelFetch(gbufferBaseColor, pixel, 0);
@@ -147,23 +153,40 @@ struct PixelShading {
     float coatAlpha;
     float coatAttenuation;
     vec3 radiance;
-    uint evaluations;
-    uint litPairs;
+    uint counts[kCounts];  // kCountLightPairs: this pixel's share of PairCounts
 };
 
 // One light's share of the pixel's radiance. A coated pixel takes each light twice: the base
 // layer, then the coat (coatLayer), which sees the light from its own normal and roughness and
 // is shadowed as the base is. Two passes rather than two evaluateLight calls, because compilers
-// inline evaluateLight once per call site.
-void addLight(inout PixelShading px, uint lightIndex, bool coatLayer) {
+// inline evaluateLight once per call site. `body` (a constant of each call site, kLightBody*)
+// says which lights the caller passes, so each loop compiles only their code.
+const uint kLightBodyAny = 0u;          // any light, shadowed or not (brute force, overflow)
+const uint kLightBodyDirectional = 1u;  // directional lights, cascades
+const uint kLightBodyUnshadowed = 2u;   // local lights without a shadow map: no shadow code
+const uint kLightBodyLocal = 3u;        // local lights, shadowed or not
+void addLight(inout PixelShading px, uint lightIndex, bool coatLayer, const uint body) {
     Light light = loadLight(lightIndex, camera.frameInfo.w);
-    LightIncidence incidence =
-        evaluateLight(light, px.P, coatLayer ? px.surface.clearCoatN : px.N,
-                      coatLayer ? px.coatR : px.R, coatLayer ? px.coatAlpha : px.alpha);
-    // Out of the light's range or cone nothing is lit whatever the map says: no sampling.
-    float visibility = any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))
-                           ? shadowVisibility(light, lightIndex, px.P, px.N)
-                           : 1.0;
+    vec3 N = coatLayer ? px.surface.clearCoatN : px.N;
+    vec3 R = coatLayer ? px.coatR : px.R;
+    float alpha = coatLayer ? px.coatAlpha : px.alpha;
+    LightIncidence incidence = body == kLightBodyDirectional
+                                   ? evaluateDirectionalLight(light, N)
+                                   : evaluateLight(light, px.P, N, R, alpha);
+    float visibility = 1.0;
+    bool shadowed = body == kLightBodyDirectional ? kDirectionalShadows
+                    : body == kLightBodyLocal     ? kLocalShadows
+                    : body == kLightBodyAny       ? kShadowsEnabled
+                                                  : false;
+    if (shadowed) {
+        uint code = body == kLightBodyDirectional ? kShadowCodeDirectional
+                    : body == kLightBodyLocal     ? kShadowCodeLocal
+                                                  : kShadowCodeAny;
+        // Out of the light's range or cone nothing is lit whatever the map says: no sampling.
+        visibility = any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))
+                         ? shadowVisibility(light, lightIndex, px.P, px.N, code)
+                         : 1.0;
+    }
     incidence.diffuseIlluminance *= visibility;
     incidence.specularIlluminance *= visibility;
     if (coatLayer) {
@@ -171,16 +194,22 @@ void addLight(inout PixelShading px, uint lightIndex, bool coatLayer) {
         px.radiance += clearCoatLobe(px.surface, px.V, incidence);
         return;
     }
-    incidence.incidentIlluminance *= kSubsurfaceEnabled &&
-                                             px.surface.shadingModel == kShadingSubsurface
-                                         ? subsurfaceTransmittance(light, lightIndex, px.P)
-                                         : visibility;
+    // Without a map the subsurface thickness is 0 and its transmittance 1.
+    bool transmits = kSubsurfaceEnabled && shadowed &&
+                     px.surface.shadingModel == kShadingSubsurface;
+    incidence.incidentIlluminance *=
+        transmits ? subsurfaceTransmittance(light, lightIndex, px.P) : visibility;
     vec3 base = shadeSurface(px.surface, px.N, px.V, incidence);
     bool coated = kClearCoatEnabled && px.surface.clearCoat > 0.0;
     px.radiance += coated ? base * px.coatAttenuation : base;
     if (kCountLightPairs) {
-        px.evaluations += 1u;
-        px.litPairs += any(greaterThan(incidence.incidentIlluminance, vec3(0.0))) ? 1u : 0u;
+        px.counts[0] += 1u;
+        px.counts[1] += any(greaterThan(incidence.incidentIlluminance, vec3(0.0))) ? 1u : 0u;
+        bool area = light.type == LIGHT_TYPE_RECT || light.type == LIGHT_TYPE_DISK ||
+                    (light.type != kLightDirectional &&
+                     (light.sourceRadius > 0.0 || light.sourceLength > 0.0));
+        uint lightClass = shadowed && !lightUnshadowed(lightIndex) ? 4u : area ? 3u : 2u;
+        px.counts[lightClass] += 1u;
     }
 }
 
@@ -534,36 +563,61 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
     PixelLights lights =
         pixelLights(kClustered, push.directionalCount, push.grid, uvec2(pixel), depth);
     if (!kClustered) lights = pixelLightRange(lights, push.lightFirst, push.lightEnd);
+    // Lights by class, each loop with only its class's code: lavapipe runs every branch of a
+    // loop's body for every light whether or not a lane takes it, and the shadow code (the
+    // penumbra search above all) is most of the body. Clustered lists hold the unshadowed
+    // local lights first (light_assignment.cpp), so the shadowed ones alone pay for it; the
+    // last loop takes whatever follows, so any order stays correct, only slower.
     uint layers = kClearCoatEnabled && px.surface.clearCoat > 0.0 ? 2u : 1u;
-    for (uint k = 0u; k < pixelLightCount(lights) * layers; ++k) {
-        uint light = pixelLightAt(lights, k / layers);
-        if (light != kNoLight) addLight(px, light, k % layers == 1u);
+    uint count = pixelLightCount(lights);
+    uint k = 0u;
+    if (kClustered) {
+        for (uint i = 0u; i < lights.directionalCount * layers; ++i) {
+            addLight(px, pixelLightAt(lights, i / layers), i % layers == 1u, kLightBodyDirectional);
+        }
+        k = lights.directionalCount;
+    }
+    if (kLocalShadows) {
+        // The unshadowed prefix: a coated pixel's second pass over each light is i odd.
+        for (uint i = k * layers; i < count * layers; ++i) {
+            uint index = pixelLightIndexAt(lights, i / layers);
+            if (index != kNoLight && !lightUnshadowed(index)) break;
+            uint light = pixelLightAt(lights, i / layers);
+            if (light != kNoLight) addLight(px, light, i % layers == 1u, kLightBodyUnshadowed);
+            k = (i + 1u) / layers;
+        }
+    }
+    const uint rest = kClustered ? kLightBodyLocal : kLightBodyAny;
+    for (uint i = k * layers; i < count * layers; ++i) {
+        uint light = pixelLightAt(lights, i / layers);
+        if (light != kNoLight) addLight(px, light, i % layers == 1u, rest);
     }
     vec4 previous = imageLoad(hdrRadiance, pixel);
     imageStore(hdrRadiance, pixel, vec4(previous.rgb + px.radiance, 1.0));
 }
 
 void main() {
-    if (kCountLightPairs && gl_LocalInvocationIndex == 0u) {
-        groupEvaluations = 0u;
-        groupLitPairs = 0u;
+    if (kCountLightPairs && gl_LocalInvocationIndex < kCounts) {
+        groupCounts[gl_LocalInvocationIndex] = 0u;
     }
     if (kCountLightPairs) barrier();
 
     PixelShading px;
     px.radiance = vec3(0.0);
-    px.evaluations = 0u;
-    px.litPairs = 0u;
+    for (uint i = 0u; i < kCounts; ++i) px.counts[i] = 0u;
     shadePixel(ivec2(gl_GlobalInvocationID.xy), px);
 
     if (kCountLightPairs) {
-        atomicAdd(groupEvaluations, px.evaluations);
-        atomicAdd(groupLitPairs, px.litPairs);
+        px.counts[5] = shadowFilterTapCount;
+        px.counts[6] = shadowBlockerTapCount;
+        for (uint i = 0u; i < kCounts; ++i) atomicAdd(groupCounts[i], px.counts[i]);
         barrier();
-        if (gl_LocalInvocationIndex == 0u) {
+        if (gl_LocalInvocationIndex < kCounts) {
             uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-            uvec2 counts = uvec2(groupEvaluations, groupLitPairs);
-            pairCounts[group] = push.lightFirst == 0u ? counts : pairCounts[group] + counts;
+            uint at = group * kCounts + gl_LocalInvocationIndex;
+            uint count = groupCounts[gl_LocalInvocationIndex];
+            // Brute force adds its later dispatches' counts.
+            pairCounts[at] = push.lightFirst == 0u ? count : pairCounts[at] + count;
         }
     }
 }

@@ -80,6 +80,8 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
     }
     constants.set(SPEC_CLUSTERED, features.clustered);
     constants.set(SPEC_SHADOWS_ENABLED, features.shadows);
+    constants.set(SPEC_DIRECTIONAL_SHADOWS, features.directionalShadows);
+    constants.set(SPEC_LOCAL_SHADOWS, features.localShadows);
     constants.set(SPEC_ENERGY_CONSERVING, features.brdf == BrdfModel::EnergyConserving);
     constants.set(SPEC_AREA_LIGHTS_LTC, features.areaLights == AreaLightMode::Ltc);
 }

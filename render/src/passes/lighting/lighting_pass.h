@@ -32,7 +32,11 @@ struct LightingFeatures {
     uint32_t lightTypes = 0;
     bool clustered = true;
     bool countLightPairs = false;
-    bool shadows = false;        // a light casts this frame (common/shadows.glsl)
+    bool shadows = false;  // a light casts this frame (common/shadows.glsl)
+    // ... of them a directional light (cascades), a local light (cube faces, spot views): the
+    // lighting pass compiles in only the shadow code of the kinds that cast.
+    bool directionalShadows = false;
+    bool localShadows = false;
     std::optional<IblMode> ibl;  // none without an environment
     BrdfModel brdf = BrdfModel::EnergyConserving;
     AreaLightMode areaLights = AreaLightMode::Ltc;  // how sphere and tube lights integrate
@@ -59,6 +63,9 @@ void setMaterialExtensionConstants(SpecializationConstants& constants,
 
 class LightingPass {
 public:
+    // The counting variant's uints per workgroup (lighting.comp PairCounts): evaluated and lit
+    // pairs, evaluations of plain, area and shadowed lights, shadow filter and blocker taps.
+    static constexpr uint32_t kCountsPerWorkgroup = 8;
     explicit LightingPass(GpuContext& context);
     ~LightingPass();
     LightingPass(const LightingPass&) = delete;
@@ -69,8 +76,8 @@ public:
     const LightingFeatures& features() const { return features_; }
 
     // Frame graph uses: G-buffer images Sampled, hdr StorageReadWrite. The cluster buffers are read
-    // only by the clustered variant, pairCounts only by the counting one (one uvec2 per
-    // workgroup, see workgroupCount()).
+    // only by the clustered variant, pairCounts only by the counting one
+    // (kCountsPerWorkgroup uints per workgroup, see workgroupCount()).
     struct Inputs {
         const GBufferTargets* gbuffer;
         ImageRef hdr;

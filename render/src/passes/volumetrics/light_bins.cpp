@@ -150,6 +150,12 @@ bool binsCovered(const LightVolumeBox& box, const CameraView& camera, const Ligh
     return true;
 }
 
+bool isPlainMediumLight(const LightInstance& light) {
+    const content::LightType type = light.light.type;
+    return !light.light.castShadows && type != content::LightType::Directional &&
+           type != content::LightType::Rect && type != content::LightType::Disk;
+}
+
 std::vector<uint32_t> binLights(std::span<const LightInstance> lights,
                                 std::span<const float> scales, const CameraView& camera,
                                 const LightBinLayout& layout) {
@@ -170,6 +176,11 @@ std::vector<uint32_t> binLights(std::span<const LightInstance> lights,
                     ++counts[(z * layout.bins.y + y) * layout.bins.x + x];
         covered.push_back(c);
     }
+    // Plain lights (unshadowed points and spots, spheres, tubes) lead every list, so a shader's
+    // first loop takes them with a body that has no shadow or area-light code (lavapipe runs
+    // every branch of a body whatever the lanes take); each part stays in light order.
+    std::stable_partition(covered.begin(), covered.end(),
+                          [&](const Covered& c) { return isPlainMediumLight(lights[c.light]); });
     // Offsets (an exclusive prefix sum of the counts), then each bin's lights in light order.
     std::vector<uint32_t> bins(binCount + 1, 0u);
     for (uint32_t b = 0; b < binCount; ++b)
@@ -184,6 +195,20 @@ std::vector<uint32_t> binLights(std::span<const LightInstance> lights,
                         c.light;
     }
     return bins;
+}
+
+uint64_t binnedPairs(std::span<const uint32_t> bins, const LightBinLayout& layout) {
+    uint64_t pairs = 0;
+    for (uint32_t z = 0; z < layout.bins.z; ++z)
+        for (uint32_t y = 0; y < layout.bins.y; ++y)
+            for (uint32_t x = 0; x < layout.bins.x; ++x) {
+                const glm::uvec3 bin{x, y, z};
+                const glm::uvec3 first = bin * layout.perBin;
+                const glm::uvec3 inside = glm::min(layout.perBin, layout.elements - first);
+                const uint32_t b = (z * layout.bins.y + y) * layout.bins.x + x;
+                pairs += uint64_t(bins[b + 1] - bins[b]) * inside.x * inside.y * inside.z;
+            }
+    return pairs;
 }
 
 }  // namespace candela::render

@@ -12,8 +12,8 @@
 // the shared memory and barriers that made GPU-built lists cost more than they saved on lavapipe.
 //
 // Buffer layout (light_bins.glsl): for B bins, B + 1 offsets into the list that follows them
-// (bin b's lights are list[offset[b], offset[b + 1])), each list in ascending light index so the
-// shaders sum in the order of the light buffer.
+// (bin b's lights are list[offset[b], offset[b + 1])), the plain lights first, then the others,
+// each part in ascending light index.
 #include <cstdint>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -57,9 +57,19 @@ LightVolumeBox lightVolumeBox(const LightInstance& light);
 bool binsCovered(const LightVolumeBox& box, const CameraView& camera, const LightBinLayout& layout,
                  glm::uvec3& first, glm::uvec3& last);
 
-// Lists per bin (the layout at the top) of the lights whose `scales` entry is positive.
+// A light the volumetric shaders' first loop takes (no shadow, not directional, not a rect or
+// disk): each bin lists these first.
+bool isPlainMediumLight(const LightInstance& light);
+
+// Lists per bin (the layout at the top) of the lights whose `scales` entry is positive, the
+// plain ones first (isPlainMediumLight), each part in ascending light index.
 std::vector<uint32_t> binLights(std::span<const LightInstance> lights,
                                 std::span<const float> scales, const CameraView& camera,
                                 const LightBinLayout& layout);
+
+// Element-light pairs of `bins` (binLights' buffer for `layout`): each bin's list length times
+// the elements (pixels, froxels) of the bin inside the layout's extent. What a binned shader
+// evaluates: the frame budget's work count.
+uint64_t binnedPairs(std::span<const uint32_t> bins, const LightBinLayout& layout);
 
 }  // namespace candela::render

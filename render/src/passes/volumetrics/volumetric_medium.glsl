@@ -121,6 +121,20 @@ vec3 lightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT, float sa
     return lit * mediumShadow(light, index, P);
 }
 
+// What the light bins list first (light_bins.h isPlainMediumLight): a local light that is not a
+// rect or disk and has no shadow map.
+bool isPlainMediumLight(uint index) {
+    uint type = uint(lightData[3u * push.lights.y + index].w);
+    return type != kLightDirectional && type != LIGHT_TYPE_RECT && type != LIGHT_TYPE_DISK &&
+           lightUnshadowed(index);
+}
+
+// lightInScattering of a plain light (above): its body compiles neither shadow nor area code.
+vec3 plainLightInScattering(uint index, vec3 P, vec3 toCamera, float sigmaT, float sampleRadius) {
+    Light light = loadLight(index, push.lights.y);
+    return lightInScatteringUnshadowed(light, index, P, toCamera, sigmaT, sampleRadius, false);
+}
+
 // The in-scattering at P (a ball of radius sampleRadius) of the batch of lights the push
 // constants name (lights.z, the first, and lights.w of them), per metre, and the extinction
 // there (1/m) in w.

@@ -63,7 +63,14 @@ void main() {
     vec3 sunSum = vec3(0.0);
     if (push.medium.x > 0.0 && density > 0.0) {
         uvec2 listed = workgroupLightRange();
-        for (uint k = listed.x; k < listed.y; ++k) {
+        uint k = listed.x;
+        // The plain lights lead the list (light_bins.h): a body without shadow or area code.
+        for (; k < listed.y; ++k) {
+            uint index = lightBins[k];
+            if (!isPlainMediumLight(index)) break;
+            sum += plainLightInScattering(index, P, toCamera, sigmaT, radius);
+        }
+        for (; k < listed.y; ++k) {
             uint index = lightBins[k];
             vec3 lit = lightInScattering(index, P, toCamera, sigmaT, radius);
             if (sunChannel && uint(lightData[3u * push.lights.y + index].w) == kLightDirectional)

@@ -317,16 +317,21 @@ void VolumetricsPass::binLights(std::span<const LightInstance> lights, const Cam
             (sun ? localScales : sunScales)[i] = 0.0f;
         }
     }
+    binnedWork_ = {};
     if (volumes || sunMarched) {
-        upload(context_, volumeBins_,
-               render::binLights(lights, sunMarched ? std::span<const float>(sunScales) : scaleSpan,
-                                 camera, volumeTileLayout(width, height)));
+        const LightBinLayout layout = volumeTileLayout(width, height);
+        const std::vector<uint32_t> bins = render::binLights(
+            lights, sunMarched ? std::span<const float>(sunScales) : scaleSpan, camera, layout);
+        binnedWork_.volumeMarchSteps = binnedPairs(bins, layout) * in.settings.volumeSteps;
+        upload(context_, volumeBins_, bins);
     }
     if (froxels) {
-        upload(context_, froxelBins_,
-               render::binLights(
-                   lights, froxelsListTheSun ? scaleSpan : std::span<const float>(localScales),
-                   camera, froxelClusterLayout(in.grid, nearOf(in), farOf(in))));
+        const LightBinLayout layout = froxelClusterLayout(in.grid, nearOf(in), farOf(in));
+        const std::vector<uint32_t> bins = render::binLights(
+            lights, froxelsListTheSun ? scaleSpan : std::span<const float>(localScales), camera,
+            layout);
+        binnedWork_.froxelLightEvaluations = binnedPairs(bins, layout);
+        upload(context_, froxelBins_, bins);
     }
 }
 

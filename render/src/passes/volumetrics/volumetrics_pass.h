@@ -85,6 +85,12 @@ public:
     // march, blur and composite): the march lists only the directional lights and the froxels
     // all others, so each light is counted once (the froxels all of them with
     // in.froxelSunChannel, which keeps the sun apart).
+    // The work binLights listed (WorkCounters' froxel and volume-march counts).
+    struct BinnedWork {
+        uint64_t froxelLightEvaluations = 0;
+        uint64_t volumeMarchSteps = 0;
+    };
+    const BinnedWork& binnedWork() const { return binnedWork_; }
     void binLights(std::span<const LightInstance> lights, const CameraView& camera, uint32_t width,
                    uint32_t height, const Inputs& in, bool volumes, bool froxels,
                    bool sunMarched = false);
@@ -122,6 +128,7 @@ public:
                                 bool addOnly = false) const;
 
 private:
+    BinnedWork binnedWork_;
     struct LightingInfos {
         VkDescriptorBufferInfo camera, lights, scales;
     };
