@@ -109,7 +109,8 @@ layout(push_constant) uniform Push {
     uint lightEnd;
 } push;
 
-shared uint groupCounts[kCounts];
+// Each invocation's counts, summed per count by the first kCounts invocations (no atomics).
+shared uvec4 invocationCounts[2u * 64u];
 
 Surface decodeSurface(ivec2 pixel, out vec3 N) {
     vec4 gb0 = texelFetch(gbufferBaseColor, pixel, 0);
@@ -153,7 +154,10 @@ struct PixelShading {
     float coatAlpha;
     float coatAttenuation;
     vec3 radiance;
-    uint counts[kCounts];  // kCountLightPairs: this pixel's share of PairCounts
+    // kCountLightPairs: this pixel's share of PairCounts, [0, 4) and [4, 8) (vectors, not an
+    // array, which lavapipe would keep in memory).
+    uvec4 counts0;
+    uvec4 counts1;
 };
 
 // One light's share of the pixel's radiance. A coated pixel takes each light twice: the base
@@ -203,13 +207,15 @@ void addLight(inout PixelShading px, uint lightIndex, bool coatLayer, const uint
     bool coated = kClearCoatEnabled && px.surface.clearCoat > 0.0;
     px.radiance += coated ? base * px.coatAttenuation : base;
     if (kCountLightPairs) {
-        px.counts[0] += 1u;
-        px.counts[1] += any(greaterThan(incidence.incidentIlluminance, vec3(0.0))) ? 1u : 0u;
+        px.counts0.x += 1u;
+        px.counts0.y += any(greaterThan(incidence.incidentIlluminance, vec3(0.0))) ? 1u : 0u;
         bool area = light.type == LIGHT_TYPE_RECT || light.type == LIGHT_TYPE_DISK ||
                     (light.type != kLightDirectional &&
                      (light.sourceRadius > 0.0 || light.sourceLength > 0.0));
-        uint lightClass = shadowed && !lightUnshadowed(lightIndex) ? 4u : area ? 3u : 2u;
-        px.counts[lightClass] += 1u;
+        bool mapped = shadowed && !lightUnshadowed(lightIndex);
+        px.counts0.z += !mapped && !area ? 1u : 0u;
+        px.counts0.w += !mapped && area ? 1u : 0u;
+        px.counts1.x += mapped ? 1u : 0u;
     }
 }
 
@@ -597,27 +603,28 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
 }
 
 void main() {
-    if (kCountLightPairs && gl_LocalInvocationIndex < kCounts) {
-        groupCounts[gl_LocalInvocationIndex] = 0u;
-    }
-    if (kCountLightPairs) barrier();
-
     PixelShading px;
     px.radiance = vec3(0.0);
-    for (uint i = 0u; i < kCounts; ++i) px.counts[i] = 0u;
+    px.counts0 = uvec4(0u);
+    px.counts1 = uvec4(0u);
     shadePixel(ivec2(gl_GlobalInvocationID.xy), px);
 
     if (kCountLightPairs) {
-        px.counts[5] = shadowFilterTapCount;
-        px.counts[6] = shadowBlockerTapCount;
-        for (uint i = 0u; i < kCounts; ++i) atomicAdd(groupCounts[i], px.counts[i]);
+        px.counts1.y = shadowFilterTapCount;
+        px.counts1.z = shadowBlockerTapCount;
+        uint self = gl_LocalInvocationIndex;
+        invocationCounts[2u * self] = px.counts0;
+        invocationCounts[2u * self + 1u] = px.counts1;
         barrier();
-        if (gl_LocalInvocationIndex < kCounts) {
+        if (self < 2u) {  // invocation 0 sums counts [0, 4), invocation 1 counts [4, 8)
+            uvec4 sum = uvec4(0u);
+            for (uint i = 0u; i < 64u; ++i) sum += invocationCounts[2u * i + self];
             uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-            uint at = group * kCounts + gl_LocalInvocationIndex;
-            uint count = groupCounts[gl_LocalInvocationIndex];
-            // Brute force adds its later dispatches' counts.
-            pairCounts[at] = push.lightFirst == 0u ? count : pairCounts[at] + count;
+            uint at = group * kCounts + 4u * self;
+            for (uint c = 0u; c < 4u; ++c) {
+                // Brute force adds its later dispatches' counts.
+                pairCounts[at + c] = push.lightFirst == 0u ? sum[c] : pairCounts[at + c] + sum[c];
+            }
         }
     }
 }
