@@ -233,8 +233,14 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     h.camera = g.importBuffer("camera", &cameraBuffer_);
     h.lights = g.importBuffer("lights", &lights_->buffer());
-    const ResourceHandle pairCounts =
+    ResourceHandle pairCounts =
         g.importBuffer("lighting.pair_counts", &pairCounts_, features.countLightPairs);
+    if (features.countLightPairs) {  // the lighting pass adds its counts atomically
+        auto p = g.addPass("lighting_counts_clear", PassKind::Device, [this](PassContext& ctx) {
+            vkCmdFillBuffer(ctx.cmd(), pairCounts_.handle(), 0, VK_WHOLE_SIZE, 0);
+        });
+        pairCounts = p.write(pairCounts, Use::TransferDst);
+    }
     // Animated draws: one compute pass deforms them all before any geometry pass draws them.
     // The handle stands for every deformed vertex buffer at once: the graph synchronises
     // buffers with global memory barriers, so one resource orders the writes and the reads.
@@ -507,9 +513,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         if (occlusion) p.read(*occlusion, Use::Sampled);
         if (specularOcclusion) p.read(*specularOcclusion, Use::Sampled);
         if (features.skyOcclusion) p.read(skyOcclusionAtlas, Use::Sampled, kComputeStage);
-        if (features.countLightPairs) {  // brute force adds its later dispatches' counts
-            p.write(pairCounts, features.clustered ? Use::StorageWrite : Use::StorageReadWrite);
-        }
+        if (features.countLightPairs) p.write(pairCounts, Use::StorageReadWrite);  // atomics
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
     if (inputs.scene.atmosphere) {

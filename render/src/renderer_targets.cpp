@@ -71,9 +71,11 @@ void Renderer::createTargets() {
     ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
+    // Cleared on the device each frame (lighting_counts_clear) before the atomics add to it.
     ensureHostBuffer(context_, pairCounts_,
                      VkDeviceSize(LightingPass::workgroupCount(width_, height_)) *
-                         LightingPass::kCountsPerWorkgroup * sizeof(uint32_t));
+                         LightingPass::kCountsPerWorkgroup * sizeof(uint32_t),
+                     VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 }
 
 bool Renderer::aoAccumulates() const {

@@ -423,7 +423,13 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             if (options.captureCursor) s.window->setCursorCaptured(true);
         }
         s.context = std::make_unique<render::GpuContext>(gpuOptions);
-        const render::RendererOptions rendererOptions = rendererOptionsFor(options, world.get());
+        const QualityChoice quality =
+            qualityFor(options, world.get(),
+                       s.context->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU);
+        stats.quality = content::qualityLevelName(quality.level);
+        stats.qualitySource = content::qualitySourceName(quality.source);
+        const render::RendererOptions rendererOptions =
+            rendererOptionsFor(options, world.get(), quality);
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);

@@ -175,6 +175,9 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "gtao)\n"
            "  --hair-self-shadow off|map|reference   hair's shadow on itself: none, the hair\n"
            "                            depth map's estimate (default) or every fibre counted\n"
+           "  --quality low|medium|high|ultra   every technique's settings in one preset\n"
+           "                            (default: the scene file's, else medium on a CPU\n"
+           "                            device, high on a GPU; a flag below wins over it)\n"
            "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
            "                            (default: the scene file's, else hiz)\n"
            "  --sky-occlusion off|on|reference  the scene's geometry blocking the sky's light\n"
@@ -279,13 +282,17 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
             }
             options.brdf = brdf;
         } else if (arg == "--area-lights") {
-            if (!value() || !parseChoice(v, kAreaLightModes, options.areaLights)) {
+            render::AreaLightMode mode{};
+            if (!value() || !parseChoice(v, kAreaLightModes, mode)) {
                 return fail("--area-lights needs representative or ltc, got '" + v + "'");
             }
+            options.areaLights = mode;
         } else if (arg == "--hair-self-shadow") {
-            if (!value() || !parseChoice(v, kHairSelfShadowModes, options.hairSelfShadow)) {
+            render::HairSelfShadow mode{};
+            if (!value() || !parseChoice(v, kHairSelfShadowModes, mode)) {
                 return fail("--hair-self-shadow needs off, map or reference, got '" + v + "'");
             }
+            options.hairSelfShadow = mode;
         } else if (arg == "--aa") {
             render::AntiAliasing aa{};
             if (!value() || !parseChoice(v, kAntiAliasing, aa)) {
@@ -324,6 +331,11 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--ao needs off, gtao or reference, got '" + v + "'");
             }
             options.ao = ao;
+        } else if (arg == "--quality") {
+            const std::optional<content::QualityLevel> level =
+                value() ? content::parseQualityLevel(v) : std::nullopt;
+            if (!level) return fail("--quality needs low, medium, high or ultra, got '" + v + "'");
+            options.quality = level;
         } else if (arg == "--ssr") {
             render::SsrMode ssr{};
             if (!value() || !parseChoice(v, kSsrModes, ssr)) {
@@ -379,9 +391,9 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                             " to 4096, got '" + v + "'");
             }
             if (arg == "--scattering-slices") {
-                options.scatteringSettings.slices = n;
+                options.scatteringSlices = n;
             } else if (arg == "--scattering-samples") {
-                options.scatteringSettings.samplesPerSlice = n;
+                options.scatteringSamples = n;
             } else {
                 options.scatteringSettings.initialStep = n;
             }

@@ -1,5 +1,6 @@
 #include "frame_settings.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -105,27 +106,59 @@ std::size_t lightsInMedium(const SceneWorld& world) {
 
 }  // namespace
 
+QualityChoice qualityFor(const ApplicationOptions& options, const SceneWorld* world,
+                         bool cpuDevice) {
+    if (options.quality) return {*options.quality, content::QualitySource::Flag};
+    if (auto scene = sceneSetting(world, &SceneWorld::sceneQuality)) {
+        return {*scene, content::QualitySource::Scene};
+    }
+    return {content::qualityForDevice(cpuDevice), content::QualitySource::Device};
+}
+
 render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
-                                           const SceneWorld* world) {
+                                           const SceneWorld* world, QualityChoice quality) {
+    const content::QualityPreset& preset = content::qualityPreset(quality.level);
     render::RendererOptions r;
+    // The preset's settings that no flag or scene field names (content/quality.h).
+    r.shadowCascadeSize = preset.shadowCascadeSize;
+    r.shadowCascades = preset.shadowCascades;
+    r.shadowMaxTileSize = preset.shadowMaxTileSize;
+    r.softShadows = preset.softShadows;
+    r.aoSettings.slices = preset.aoSlices;
+    r.aoSettings.steps = preset.aoSteps;
+    r.ssrSettings.maxIterations = preset.ssrMaxIterations;
+    r.volumetricsSettings.froxelsX = preset.froxelsX;
+    r.volumetricsSettings.froxelsY = preset.froxelsY;
+    r.volumetricsSettings.froxelSlices = preset.froxelSlices;
+    r.atmosphere.skyViewWidth = preset.skyViewWidth;
+    r.atmosphere.skyViewHeight = preset.skyViewHeight;
+    r.atmosphere.cubeFaceSize = preset.skyCubeFaceSize;
     r.lightCulling = options.lightCulling;
     r.lightAssignment = options.lightAssignment;
     // --stats reports the frame's work counts (every game's, not only `candela run`'s).
     r.countLightPairs = options.countLightPairs || options.stats.has_value();
     r.ibl = options.ibl;
-    r.areaLights = options.areaLights;
-    r.hairSelfShadow = options.hairSelfShadow;
+    r.areaLights = options.areaLights.value_or(
+        preset.areaLightsLtc ? render::AreaLightMode::Ltc : render::AreaLightMode::Representative);
+    r.hairSelfShadow = options.hairSelfShadow.value_or(
+        preset.hairSelfShadow ? render::HairSelfShadow::DepthMap : render::HairSelfShadow::Off);
     r.scatteringSettings = options.scatteringSettings;
+    r.scatteringSettings.slices = options.scatteringSlices.value_or(preset.scatteringSlices);
+    r.scatteringSettings.samplesPerSlice =
+        options.scatteringSamples.value_or(preset.scatteringSamples);
 
     // Default energy-conserving.
     r.brdf = chosen(options.brdf, sceneSetting(world, &SceneWorld::sceneBrdf), kBrdf)
                  .value_or(render::BrdfModel::EnergyConserving);
-    // Default TAA: it cut edge error the most for its cost (render/README.md "Antialiasing").
+    // Default the preset's: TAA from medium up, it cut edge error the most for its cost
+    // (render/README.md "Antialiasing").
+    constexpr render::AntiAliasing kPresetAa[] = {
+        render::AntiAliasing::Off, render::AntiAliasing::Fxaa, render::AntiAliasing::Taa};
     r.aa = chosen(options.aa, sceneSetting(world, &SceneWorld::sceneAntiAliasing), kAntiAliasing)
-               .value_or(render::AntiAliasing::Taa);
+               .value_or(kPresetAa[std::min<std::size_t>(preset.antiAliasing, 2)]);
     r.msaaSamples = options.msaa.value_or(sceneSetting(world, &SceneWorld::sceneMsaa).value_or(1u));
-    r.bloomStrength = options.bloom.value_or(
-        sceneSetting(world, &SceneWorld::sceneBloom).value_or(ApplicationOptions::kDefaultBloom));
+    r.bloomStrength =
+        options.bloom.value_or(sceneSetting(world, &SceneWorld::sceneBloom).value_or(preset.bloom));
     r.exposure =
         chosen(options.exposure, sceneSetting(world, &SceneWorld::sceneExposure), kExposure)
             .value_or(render::ExposureMode::Manual);
@@ -135,12 +168,12 @@ render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
     // occlusion" gives the measurements behind the default).
     const auto sceneAo = world ? world->sceneAmbientOcclusion() : std::nullopt;
     r.ao = chosen(options.ao, sceneAo ? sceneAo->mode : std::nullopt, kAo)
-               .value_or(render::AoMode::Gtao);
+               .value_or(preset.ambientOcclusion ? render::AoMode::Gtao : render::AoMode::Off);
     // Default hiz: the renderer declares no SSR pass in a frame without a surface under the
     // roughness cut-off, so only frames with a glossy surface pay (render/README.md
     // "Screen-space reflections").
     r.ssr = chosen(options.ssr, sceneSetting(world, &SceneWorld::sceneSsr), kSsr)
-                .value_or(render::SsrMode::Hiz);
+                .value_or(preset.ssr ? render::SsrMode::Hiz : render::SsrMode::Off);
     // Unset: the renderer's default, on in frames with an atmosphere (the demo; other scenes'
     // images stay as they were): render/README.md "Sky occlusion".
     if (auto mode = chosen(options.skyOcclusion,

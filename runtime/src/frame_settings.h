@@ -8,8 +8,19 @@
 
 namespace candela::runtime {
 
-// `world` may be null (no scene): the flags and the defaults decide.
+// The quality preset a run uses and where it came from: --quality, else the scene file's
+// "quality", else the device's level (content::qualityForDevice).
+struct QualityChoice {
+    content::QualityLevel level = content::QualityLevel::Ultra;
+    content::QualitySource source = content::QualitySource::Device;
+};
+QualityChoice qualityFor(const ApplicationOptions& options, const SceneWorld* world,
+                         bool cpuDevice);
+
+// `world` may be null (no scene): the flags, the preset and the defaults decide. A setting
+// neither the flags nor the scene file choose takes `quality`'s preset value (ultra: the
+// engine's settings before presets).
 render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
-                                           const SceneWorld* world);
+                                           const SceneWorld* world, QualityChoice quality = {});
 
 }  // namespace candela::runtime

@@ -42,6 +42,8 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["width"] = stats.width;
     json["height"] = stats.height;
     json["device"] = stats.device;
+    json["quality"] = stats.quality;
+    json["quality_source"] = stats.qualitySource;
     json["frame_ms_median"] = stats.frameMsMedian();
     json["validation_messages"] = stats.validationMessages;
     json["features"] = stats.features;

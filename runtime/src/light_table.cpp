@@ -49,11 +49,17 @@ LightTable::~LightTable() {
 void LightTable::rebuild() {
     lights_.clear();
     slotOfEntity_.clear();
-    registry_.view<const ecs::WorldTransform, const content::Light>().each(
-        [&](ecs::Entity e, const ecs::WorldTransform& world, const content::Light& light) {
-            slotOfEntity_.emplace(e.bits(), uint32_t(lights_.size()));
-            lights_.push_back(lightInstance(light, world.matrix));
-        });
+    // Lights that cast shadows take the last slots: cluster lists are in slot order, and the
+    // lighting pass walks a list's unshadowed prefix with a body that has no shadow code
+    // (render/README.md "What a shader costs on lavapipe").
+    for (const bool casters : {false, true}) {
+        registry_.view<const ecs::WorldTransform, const content::Light>().each(
+            [&](ecs::Entity e, const ecs::WorldTransform& world, const content::Light& light) {
+                if (light.castShadows != casters) return;
+                slotOfEntity_.emplace(e.bits(), uint32_t(lights_.size()));
+                lights_.push_back(lightInstance(light, world.matrix));
+            });
+    }
 }
 
 void LightTable::update() {
@@ -70,9 +76,19 @@ void LightTable::update() {
             [&](ecs::Entity e, const ecs::WorldTransform& world, const content::Light& light) {
                 auto it = slotOfEntity_.find(e.bits());
                 if (it == slotOfEntity_.end()) return;
+                // A light that starts or stops casting moves to the other group of slots.
+                if (lights_[it->second].light.castShadows != light.castShadows) {
+                    structureDirty_ = true;
+                }
                 lights_[it->second] = lightInstance(light, world.matrix);
                 changed_.push_back(it->second);
             });
+        if (structureDirty_) {
+            changed_.clear();
+            restructured_ = true;
+            rebuild();
+            structureDirty_ = false;
+        }
     }
     seenUpTo_ = upTo;
 }

@@ -95,6 +95,7 @@ bool SceneWorld::loadSceneFile(const std::filesystem::path& path,
     sceneAntiAliasing_ = scene->aa;
     sceneMsaa_ = scene->msaa;
     sceneSsr_ = scene->ssr;
+    sceneQuality_ = scene->quality;
     sceneScattering_ = scene->scattering;
     sceneVolumetrics_ = scene->volumetrics;
     sceneVolumeProxies_ = scene->volumeProxies;

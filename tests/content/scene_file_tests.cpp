@@ -392,6 +392,30 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("/volume_proxies")) << badDiagnostics.toString();
 }
 
+// Issue 41: the top-level "quality" survives save and load; a bad value is named with the
+// levels.
+TEST(SceneFile, QualityRoundTripsAndBadValuesAreNamed) {
+    SceneDocument scene = exampleScene();
+    scene.quality = QualityLevel::Low;
+    std::string error;
+    const std::string text = sceneToJson(scene, error);
+    ASSERT_EQ(error, "");
+    EXPECT_NE(text.find("\"quality\": \"low\""), std::string::npos) << text;
+    Diagnostics diagnostics;
+    auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "q.scene.json", diagnostics);
+    ASSERT_TRUE(loaded) << diagnostics.toString();
+    EXPECT_EQ(loaded->quality, QualityLevel::Low);
+
+    const std::string bad =
+        R"({"format": "candela.scene", "version": 1, "quality": "epic", "entities": []})";
+    Diagnostics badDiagnostics;
+    auto fallback = parseSceneJson(std::as_bytes(std::span(bad)), "bad.scene.json", badDiagnostics);
+    ASSERT_TRUE(fallback);
+    EXPECT_FALSE(fallback->quality.has_value());
+    EXPECT_TRUE(badDiagnostics.mentions("/quality")) << badDiagnostics.toString();
+    EXPECT_TRUE(badDiagnostics.mentions("ultra")) << badDiagnostics.toString();
+}
+
 // Sky occlusion: the top-level "sky_occlusion" survives save and load; a bad value is named
 // and the scene loads with the engine's default.
 TEST(SceneFile, SkyOcclusionSettingRoundTripsAndBadValuesAreNamed) {

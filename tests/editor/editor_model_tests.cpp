@@ -252,7 +252,8 @@ TEST_F(EditorModel, SaveKeepsTheScenesBrdfSetting) {
 }
 
 // Issue 24: so are "aa", "msaa", "bloom", "exposure" and "exposure_compensation", and the
-// light shafts', volumetrics' and sky occlusion's modes (issues 16, 17, 24).
+// light shafts', volumetrics' and sky occlusion's modes (issues 16, 17, 24) and the quality
+// preset (issue 41).
 TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     content::SceneDocument settings;
     settings.aa = content::SceneAntiAliasing::Fxaa;
@@ -264,6 +265,7 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     settings.volumetrics = content::SceneVolumetricsMode::Reference;
     settings.skyOcclusion = content::SceneSkyOcclusionMode::Off;
     settings.volumeProxies = true;
+    settings.quality = content::QualityLevel::Low;
     scene->setSceneFrameSettings(settings);
     ASSERT_TRUE(setLumens("lamp", 900.0f));
     const content::SceneDocument doc = saveAndLoad(dir / "saved" / "settings.scene.json");
@@ -276,6 +278,7 @@ TEST_F(EditorModel, SaveKeepsTheScenesFrameSettings) {
     EXPECT_EQ(doc.volumetrics, content::SceneVolumetricsMode::Reference);
     EXPECT_EQ(doc.skyOcclusion, content::SceneSkyOcclusionMode::Off);
     EXPECT_EQ(doc.volumeProxies, true);
+    EXPECT_EQ(doc.quality, content::QualityLevel::Low);
 }
 
 // Issue 25: the scene-wide "ambient_occlusion" the inspector edits is saved, and an edit of

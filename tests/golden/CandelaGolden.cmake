@@ -3,7 +3,8 @@
 #
 #   candela_add_golden_test(NAME lobby SCENE scenes/lobby.scene.json SIZE 256x256 FRAMES 3
 #                           [EXPECTED_DIR goldens] [ENGINE my-game] [AA off|fxaa|taa|gbaa]
-#                           [BLOOM fraction] [ARGS "--step 0.25"])
+#                           [BLOOM fraction] [PRESET low|medium|high|ultra]
+#                           [ARGS "--step 0.25"])
 #
 # registers the ctest `golden.lobby` (label `golden`, validation required). It renders frame 3
 # (the engine renders FRAMES frames and captures the last) into <build>/golden/lobby/ as
@@ -13,13 +14,16 @@
 # target or executable that takes `candela run`'s arguments (default: the candela target).
 # AA and BLOOM are passed as --aa and --bloom (default: off and 0, so a golden tests one
 # unfiltered sample per pixel unless it names the antialiasing or bloom it checks).
+# PRESET renders at that quality preset with everything it chooses (antialiasing, bloom and
+# screen-space reflections included, so AA and BLOOM do not apply): the image a user sees.
+# Without it a golden renders at `ultra`, the engine's settings before presets.
 # ARGS: more `candela run` flags, one string split like a shell line (e.g. an animation clip).
 # Expected images are only ever written by `scripts/update-goldens lobby`.
 #
 #   candela_add_golden_tests_from_json(FILE goldens.json BASE_DIR <dir> [EXPECTED_DIR dir])
 #
 # does the same for each entry of a JSON list, {"name", "scene", "size", "frames"} and
-# optional "expected_dir", "aa", "bloom" and "args", with paths relative to BASE_DIR; CMake
+# optional "expected_dir", "aa", "bloom", "preset" and "args", with paths relative to BASE_DIR; CMake
 # variables in them expand
 # ("${CANDELA_SHARED_ASSETS}/models/Box/Box.glb"). The file is re-read when it changes.
 include_guard(GLOBAL)
@@ -40,7 +44,8 @@ endfunction()
 # at generate time. Used by candela_add_golden_test and by the harness's own tests.
 function(candela_golden_write_config config)
   cmake_parse_arguments(PARSE_ARGV 1 ARG ""
-                        "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;OUTPUT_DIR;ENGINE;AA;BLOOM;ARGS" "")
+                        "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;OUTPUT_DIR;ENGINE;AA;BLOOM;PRESET;ARGS"
+                        "")
   if(TARGET "${ARG_ENGINE}")
     set(engine "$<TARGET_FILE:${ARG_ENGINE}>")
   else()
@@ -58,12 +63,13 @@ set(GOLDEN_ENGINE [==[${engine}]==])
 set(GOLDEN_TOOL [==[$<TARGET_FILE:candela-golden>]==])
 set(GOLDEN_AA [==[${ARG_AA}]==])
 set(GOLDEN_BLOOM [==[${ARG_BLOOM}]==])
+set(GOLDEN_PRESET [==[${ARG_PRESET}]==])
 ")
 endfunction()
 
 function(candela_add_golden_test)
   cmake_parse_arguments(PARSE_ARGV 0 ARG ""
-                        "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;ENGINE;AA;BLOOM;ARGS" "")
+                        "NAME;SCENE;SIZE;FRAMES;EXPECTED_DIR;ENGINE;AA;BLOOM;PRESET;ARGS" "")
   set(where "candela_add_golden_test(${ARG_NAME})")
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "${where}: unexpected arguments: ${ARG_UNPARSED_ARGUMENTS}")
@@ -82,6 +88,12 @@ function(candela_add_golden_test)
   endif()
   if(ARG_AA AND NOT ARG_AA MATCHES "^(off|fxaa|taa|gbaa)$")
     message(FATAL_ERROR "${where}: AA must be off, fxaa, taa or gbaa, got '${ARG_AA}'")
+  endif()
+  if(ARG_PRESET AND NOT ARG_PRESET MATCHES "^(low|medium|high|ultra)$")
+    message(FATAL_ERROR "${where}: PRESET must be low, medium, high or ultra, got '${ARG_PRESET}'")
+  endif()
+  if(ARG_PRESET AND (ARG_AA OR NOT "${ARG_BLOOM}" STREQUAL ""))
+    message(FATAL_ERROR "${where}: PRESET chooses the antialiasing and bloom; drop AA and BLOOM")
   endif()
   if(NOT ARG_EXPECTED_DIR)
     set(ARG_EXPECTED_DIR expected)
@@ -107,7 +119,7 @@ function(candela_add_golden_test)
   candela_golden_write_config("${config}" NAME "${ARG_NAME}" SCENE "${scene}" SIZE "${ARG_SIZE}"
                               FRAMES "${ARG_FRAMES}" EXPECTED_DIR "${expected_dir}"
                               OUTPUT_DIR "${output_dir}" ENGINE "${ARG_ENGINE}" AA "${ARG_AA}"
-                              BLOOM "${ARG_BLOOM}" ARGS "${ARG_ARGS}")
+                              BLOOM "${ARG_BLOOM}" PRESET "${ARG_PRESET}" ARGS "${ARG_ARGS}")
   add_test(NAME golden.${ARG_NAME}
            COMMAND ${CMAKE_COMMAND} -DGOLDEN_CONFIG=${config}
                    -P ${CANDELA_GOLDEN_MODULE_DIR}/run_golden.cmake)
@@ -143,7 +155,7 @@ function(candela_add_golden_tests_from_json)
     if(error)
       set(expected_dir "${ARG_EXPECTED_DIR}")
     endif()
-    foreach(key aa bloom args)
+    foreach(key aa bloom preset args)
       string(JSON ${key} ERROR_VARIABLE error GET "${json}" ${i} ${key})
       if(error)
         set(${key} "")
@@ -159,6 +171,6 @@ function(candela_add_golden_tests_from_json)
     endif()
     candela_add_golden_test(NAME "${name}" SCENE "${scene}" SIZE "${size}" FRAMES "${frames}"
                             EXPECTED_DIR "${expected_dir}" AA "${aa}" BLOOM "${bloom}"
-                            ARGS "${args}")
+                            PRESET "${preset}" ARGS "${args}")
   endforeach()
 endfunction()

@@ -38,7 +38,7 @@ foreach(config IN LISTS configs)
   file(MAKE_DIRECTORY "${OUT}")
   execute_process(
     COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
-            --frames "${GOLDEN_FRAMES}" --brdf ue4 --ao off --aa off --bloom 0 --ssr off
+            --frames "${GOLDEN_FRAMES}" --quality ultra --brdf ue4 --ao off --aa off --bloom 0 --ssr off
             --exposure manual
             --area-lights representative
             --capture "${exr}" --capture "${png}"

@@ -53,16 +53,23 @@ endif()
 if(GOLDEN_BLOOM STREQUAL "")
   set(GOLDEN_BLOOM 0)
 endif()
+# The ultra preset (the engine's settings before presets: its goldens hold that image; a
+# device's default preset would otherwise change them with the machine).
 # Screen-space reflections off (the application's default, hiz, would change every golden
 # with a glossy surface; an entry that checks them asks with "args": "--ssr hiz", which comes
 # later and wins). And the camera's manual exposure, not the metered one. GOLDEN_ARGS: the
 # entry's own flags.
 separate_arguments(golden_args UNIX_COMMAND "${GOLDEN_ARGS}")
+# A preset golden holds what a user sees at that preset: its own antialiasing, bloom and
+# reflections (only the exposure stays the camera's).
+set(pinned --quality ultra --aa "${GOLDEN_AA}" --bloom "${GOLDEN_BLOOM}" --ssr off)
+if(GOLDEN_PRESET)
+  set(pinned --quality "${GOLDEN_PRESET}")
+endif()
 execute_process(
   COMMAND "${GOLDEN_ENGINE}" run "${GOLDEN_SCENE}" --headless --size "${GOLDEN_SIZE}"
           --frames "${GOLDEN_FRAMES}" --capture "${exr}" --capture "${png}" --stats "${stats}"
-          --aa "${GOLDEN_AA}" --bloom "${GOLDEN_BLOOM}" --ssr off --exposure manual
-          ${golden_args}
+          ${pinned} --exposure manual ${golden_args}
   RESULT_VARIABLE engine_result OUTPUT_VARIABLE engine_output ERROR_VARIABLE engine_output)
 message("${engine_output}")
 if(engine_result EQUAL 3)

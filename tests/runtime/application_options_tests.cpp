@@ -129,7 +129,7 @@ TEST(ApplicationOptions, AreaLightsFlag) {
     EXPECT_EQ(ltc.options->areaLights, candela::render::AreaLightMode::Ltc);
     CommandLine none = parseCommandLine({});
     ASSERT_TRUE(none);
-    EXPECT_EQ(none.options->areaLights, candela::render::RendererOptions{}.areaLights);
+    EXPECT_FALSE(none.options->areaLights);  // the quality preset's
     EXPECT_NE(parseError({"--area-lights", "exact"})
                   .find("--area-lights needs representative or ltc, got 'exact'"),
               std::string::npos);
@@ -188,8 +188,8 @@ TEST(ApplicationOptions, ScatteringFlags) {
                           "--scattering-threshold", "0.1", "--scattering-density", "200"});
     ASSERT_TRUE(result) << result.error;
     EXPECT_EQ(result.options->scattering, candela::render::ScatteringMode::BruteForce);
-    EXPECT_EQ(result.options->scatteringSettings.slices, 64u);
-    EXPECT_EQ(result.options->scatteringSettings.samplesPerSlice, 32u);
+    EXPECT_EQ(result.options->scatteringSlices, 64u);
+    EXPECT_EQ(result.options->scatteringSamples, 32u);
     EXPECT_EQ(result.options->scatteringSettings.initialStep, 4u);
     EXPECT_EQ(result.options->scatteringSettings.refinementThreshold, 0.1f);
     EXPECT_EQ(result.options->scatteringSettings.densityScale, 200.0f);
@@ -250,5 +250,20 @@ TEST(ApplicationOptions, LightAssignFlagChoosesTheDevice) {
     }
     EXPECT_EQ(parseCommandLine({}).options->lightAssignment, LightAssignmentDevice::Auto);
     EXPECT_NE(parseError({"--light-assign", "tpu"}).find("--light-assign needs auto, cpu or gpu"),
+              std::string::npos);
+}
+
+// Issue 41: --quality names a preset; anything else is refused with the choices.
+TEST(ApplicationOptions, QualityFlag) {
+    CommandLine low = parseCommandLine({"--quality", "low"});
+    ASSERT_TRUE(low) << low.error;
+    EXPECT_EQ(low.options->quality, candela::content::QualityLevel::Low);
+    CommandLine none = parseCommandLine({});
+    ASSERT_TRUE(none);
+    EXPECT_FALSE(none.options->quality);  // the scene's, else the device's
+    EXPECT_NE(parseError({"--quality", "epic"})
+                  .find("--quality needs low, medium, high or ultra, got 'epic'"),
+              std::string::npos);
+    EXPECT_NE(ApplicationOptions::standardFlagsUsage().find("--quality low|medium|high|ultra"),
               std::string::npos);
 }

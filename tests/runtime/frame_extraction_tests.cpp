@@ -1,9 +1,13 @@
-// Frame extraction of animated meshes (issue 24's motion vectors): a skinned instance's draw
-// names this frame's deformed vertices and last frame's, in two buffers that swap each frame;
-// its first frame, and a frame after one it was not drawn in, name the same buffer for both.
+// The light table's slot order (issue 41), and frame extraction of animated meshes (issue 24's
+// motion vectors): a skinned instance's draw names this frame's deformed vertices and last
+// frame's, in two buffers that swap each frame; its first frame, and a frame after one it was
+// not drawn in, name the same buffer for both.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "candela/content/components/animation.h"
+#include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/procedural_mesh.h"
 #include "candela/ecs/transform.h"
@@ -100,4 +104,41 @@ TEST(FrameExtraction, WiresOfAMeshInstanceBecomeWireDraws) {
     EXPECT_EQ(frame.wires[0].wire, &model.meshes[0].wires[0]);
     EXPECT_EQ(frame.wires[0].material, &model.materials[0]);
     EXPECT_FLOAT_EQ(frame.wires[0].world[3][1], 7.0f);
+}
+
+// Issue 41: lights that cast shadows take the last slots (cluster lists then hold the
+// unshadowed lights first, which the lighting pass walks without shadow code); a light that
+// starts casting moves there with a rebuild, an edit that keeps its class rewrites its slot.
+TEST(LightTableOrder, CastersTakeTheLastSlots) {
+    ecs::Registry registry;
+    LightTable table(registry);
+    std::vector<ecs::Entity> entities;
+    for (int i = 0; i < 4; ++i) {
+        const ecs::Entity e = registry.create();
+        registry.emplace<ecs::WorldTransform>(e);
+        content::Light light;
+        light.castShadows = i % 2 == 0;  // lights 0 and 2 cast
+        light.lumens = 100.0f * float(i + 1);
+        registry.emplace<content::Light>(e, light);
+        entities.push_back(e);
+    }
+    table.update();
+    ASSERT_EQ(table.lights().size(), 4u);
+    auto casters = [&] {
+        std::vector<bool> cast;
+        for (const render::LightInstance& l : table.lights())
+            cast.push_back(l.light.castShadows);
+        return cast;
+    };
+    EXPECT_EQ(casters(), (std::vector<bool>{false, false, true, true}));
+
+    registry.patch<content::Light>(entities[1], [](content::Light& l) { l.lumens = 5.0f; });
+    table.update();
+    EXPECT_FALSE(table.restructured());
+    EXPECT_EQ(table.changedSlots().size(), 1u);
+
+    registry.patch<content::Light>(entities[3], [](content::Light& l) { l.castShadows = true; });
+    table.update();
+    EXPECT_TRUE(table.restructured());
+    EXPECT_EQ(casters(), (std::vector<bool>{false, true, true, true}));
 }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "candela/content/diagnostics.h"
@@ -114,4 +115,86 @@ TEST(FrameSettings, AnAmbientOcclusionBlockWithoutAModeKeepsTheDefault) {
 TEST(FrameSettings, TheSceneFileCanAskForGbaa) {
     auto world = worldWith(R"("aa": "gbaa")");
     EXPECT_EQ(rendererOptionsFor(ApplicationOptions{}, world.get()).aa, render::AntiAliasing::Gbaa);
+}
+
+// Issue 41: one word chooses every technique's settings. Ultra is the engine before presets:
+// the renderer's own defaults for what no flag names, the application's for the rest.
+TEST(FrameSettings, UltraIsTheEngineBeforePresets) {
+    const render::RendererOptions r =
+        rendererOptionsFor({}, nullptr, {content::QualityLevel::Ultra});
+    const render::RendererOptions engine;
+    EXPECT_EQ(r.shadowCascadeSize, engine.shadowCascadeSize);
+    EXPECT_EQ(r.shadowCascades, engine.shadowCascades);
+    EXPECT_EQ(r.shadowMaxTileSize, engine.shadowMaxTileSize);
+    EXPECT_EQ(r.softShadows, engine.softShadows);
+    EXPECT_EQ(r.aoSettings.slices, engine.aoSettings.slices);
+    EXPECT_EQ(r.aoSettings.steps, engine.aoSettings.steps);
+    EXPECT_EQ(r.ssrSettings.maxIterations, engine.ssrSettings.maxIterations);
+    EXPECT_EQ(r.volumetricsSettings.froxelsX, engine.volumetricsSettings.froxelsX);
+    EXPECT_EQ(r.volumetricsSettings.froxelsY, engine.volumetricsSettings.froxelsY);
+    EXPECT_EQ(r.volumetricsSettings.froxelSlices, engine.volumetricsSettings.froxelSlices);
+    EXPECT_EQ(r.areaLights, engine.areaLights);
+    EXPECT_EQ(r.hairSelfShadow, engine.hairSelfShadow);
+    EXPECT_EQ(r.atmosphere.skyViewWidth, engine.atmosphere.skyViewWidth);
+    EXPECT_EQ(r.atmosphere.skyViewHeight, engine.atmosphere.skyViewHeight);
+    EXPECT_EQ(r.atmosphere.cubeFaceSize, engine.atmosphere.cubeFaceSize);
+    EXPECT_EQ(r.scatteringSettings.slices, engine.scatteringSettings.slices);
+    EXPECT_EQ(r.scatteringSettings.samplesPerSlice, engine.scatteringSettings.samplesPerSlice);
+    EXPECT_EQ(r.aa, render::AntiAliasing::Taa);
+    EXPECT_EQ(r.bloomStrength, ApplicationOptions::kDefaultBloom);
+    EXPECT_EQ(r.ao, render::AoMode::Gtao);
+    EXPECT_EQ(r.ssr, render::SsrMode::Hiz);
+}
+
+// Each lower preset does no more of any counted thing than the one above it.
+TEST(FrameSettings, LowerPresetsNeverCostMore) {
+    for (size_t i = 1; i < std::size(content::kQualityLevels); ++i) {
+        const content::QualityPreset& lower =
+            content::qualityPreset(content::kQualityLevels[i - 1]);
+        const content::QualityPreset& higher = content::qualityPreset(content::kQualityLevels[i]);
+        const char* name = content::qualityLevelName(content::kQualityLevels[i - 1]);
+        EXPECT_LE(lower.shadowCascadeSize, higher.shadowCascadeSize) << name;
+        EXPECT_LE(lower.shadowCascades, higher.shadowCascades) << name;
+        EXPECT_LE(lower.shadowMaxTileSize, higher.shadowMaxTileSize) << name;
+        EXPECT_LE(lower.softShadows, higher.softShadows) << name;
+        EXPECT_LE(lower.ambientOcclusion, higher.ambientOcclusion) << name;
+        EXPECT_LE(lower.aoSlices * lower.aoSteps, higher.aoSlices * higher.aoSteps) << name;
+        EXPECT_LE(lower.ssr, higher.ssr) << name;
+        EXPECT_LE(lower.ssrMaxIterations, higher.ssrMaxIterations) << name;
+        EXPECT_LE(lower.froxelsX * lower.froxelsY * lower.froxelSlices,
+                  higher.froxelsX * higher.froxelsY * higher.froxelSlices)
+            << name;
+        EXPECT_LE(lower.scatteringSlices * lower.scatteringSamples,
+                  higher.scatteringSlices * higher.scatteringSamples)
+            << name;
+    }
+}
+
+// The flag wins over the scene file's "quality", which wins over the device's level; a
+// technique's own flag or scene field wins over the preset's value.
+TEST(FrameSettings, QualityComesFromFlagSceneOrDevice) {
+    auto world = worldWith(R"("quality": "low", "ssr": "hiz")");
+    ApplicationOptions options;
+    QualityChoice q = qualityFor(options, world.get(), true);
+    EXPECT_EQ(q.level, content::QualityLevel::Low);
+    EXPECT_EQ(q.source, content::QualitySource::Scene);
+    const render::RendererOptions low = rendererOptionsFor(options, world.get(), q);
+    EXPECT_EQ(low.ssr, render::SsrMode::Hiz);  // the scene's own "ssr" wins
+    EXPECT_EQ(low.ao, render::AoMode::Off);
+    EXPECT_FALSE(low.softShadows);
+    EXPECT_EQ(low.areaLights, render::AreaLightMode::Representative);
+
+    options.quality = content::QualityLevel::High;
+    options.areaLights = render::AreaLightMode::Representative;
+    q = qualityFor(options, world.get(), true);
+    EXPECT_EQ(q.level, content::QualityLevel::High);
+    EXPECT_EQ(q.source, content::QualitySource::Flag);
+    const render::RendererOptions high = rendererOptionsFor(options, world.get(), q);
+    EXPECT_EQ(high.areaLights, render::AreaLightMode::Representative);  // the flag wins
+    EXPECT_TRUE(high.softShadows);
+
+    const QualityChoice cpu = qualityFor({}, nullptr, true);
+    EXPECT_EQ(cpu.level, content::QualityLevel::Medium);
+    EXPECT_EQ(cpu.source, content::QualitySource::Device);
+    EXPECT_EQ(qualityFor({}, nullptr, false).level, content::QualityLevel::High);
 }

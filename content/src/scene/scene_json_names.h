@@ -58,6 +58,11 @@ inline constexpr EnumNames<SceneAntiAliasing, 4> kSceneAntiAliasing{
      {SceneAntiAliasing::Taa, "taa"},
      {SceneAntiAliasing::Gbaa, "gbaa"}}};
 
+inline constexpr EnumNames<QualityLevel, 4> kQualityLevelNames{{{QualityLevel::Low, "low"},
+                                                                {QualityLevel::Medium, "medium"},
+                                                                {QualityLevel::High, "high"},
+                                                                {QualityLevel::Ultra, "ultra"}}};
+
 inline constexpr EnumNames<SceneSsrMode, 3> kSceneSsrModes{
     {{SceneSsrMode::Off, "off"},
      {SceneSsrMode::Hiz, "hiz"},

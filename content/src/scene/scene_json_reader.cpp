@@ -757,6 +757,7 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         }
     }
     optionalEnumeration("ssr", kSceneSsrModes, scene.ssr);
+    optionalEnumeration("quality", kQualityLevelNames, scene.quality);
     optionalEnumeration("scattering", kSceneScatteringModes, scene.scattering);
     optionalEnumeration("volumetrics", kSceneVolumetricsModes, scene.volumetrics);
     if (auto proxies = root.find("volume_proxies"); proxies != root.end()) {

@@ -306,6 +306,8 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
     if (scene.msaa) document["msaa"] = *scene.msaa;
     if (scene.bloom) document["bloom"] = *scene.bloom;
     if (scene.ssr) document["ssr"] = std::string(nameOf(kSceneSsrModes, *scene.ssr));
+    if (scene.quality)
+        document["quality"] = std::string(nameOf(kQualityLevelNames, *scene.quality));
     if (scene.scattering)
         document["scattering"] = std::string(nameOf(kSceneScatteringModes, *scene.scattering));
     if (scene.volumetrics)

@@ -50,6 +50,7 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     frameSettings.volumetrics = opened.world->sceneVolumetrics();
     frameSettings.volumeProxies = opened.world->sceneVolumeProxies();
     frameSettings.skyOcclusion = opened.world->sceneSkyOcclusion();
+    frameSettings.quality = opened.world->sceneQuality();
     opened.scene->setSceneFrameSettings(frameSettings);
     opened.scene->setSceneAmbientOcclusion(opened.world->sceneAmbientOcclusion());
     opened.scene->setSceneMaterialLayers(opened.world->sceneMaterialLayers());

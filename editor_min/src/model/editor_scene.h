@@ -30,8 +30,8 @@ public:
     // The opened file's scene-wide "brdf" (unset: none), written back by save().
     void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneSettings_.brdf = brdf; }
     // The opened file's scene-wide "aa", "msaa", "bloom", "exposure", "exposure_compensation"
-    // "ssr", "scattering", "volumetrics", "volume_proxies" and "sky_occlusion" (the other
-    // fields of `settings` are ignored), written back by save().
+    // "ssr", "scattering", "volumetrics", "volume_proxies", "sky_occlusion" and "quality" (the
+    // other fields of `settings` are ignored), written back by save().
     void setSceneFrameSettings(const content::SceneDocument& settings) {
         sceneSettings_.aa = settings.aa;
         sceneSettings_.msaa = settings.msaa;
@@ -43,6 +43,7 @@ public:
         sceneSettings_.volumetrics = settings.volumetrics;
         sceneSettings_.volumeProxies = settings.volumeProxies;
         sceneSettings_.skyOcclusion = settings.skyOcclusion;
+        sceneSettings_.quality = settings.quality;
     }
     // The scene-wide "ambient_occlusion" (unset: none), edited in the inspector when nothing is
     // selected, sent to the renderer every frame and written back by save(). Radius and

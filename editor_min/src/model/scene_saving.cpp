@@ -58,6 +58,7 @@ std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path
     document.volumetrics = settings.volumetrics;
     document.volumeProxies = settings.volumeProxies;
     document.skyOcclusion = settings.skyOcclusion;
+    document.quality = settings.quality;
     document.ambientOcclusion = settings.ambientOcclusion;
     document.materialLayers = settings.materialLayers;
     return content::saveSceneFile(target, document, options);

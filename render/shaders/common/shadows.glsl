@@ -15,6 +15,8 @@
 // Off in frames where no light casts: the calls below fold to 1 and the image is the
 // shadowless one bit for bit.
 layout(constant_id = SPEC_SHADOWS_ENABLED) const bool kShadowsEnabled = false;
+// Off (the lower quality presets): local lights' maps are filtered as hard shadows.
+layout(constant_id = SPEC_SOFT_SHADOWS) const bool kSoftShadows = true;
 
 // One shadow view (render/src/passes/shadows/shadow_views.h, GpuShadowView).
 struct ShadowView {
@@ -270,7 +272,7 @@ float cascadeShadowVisibility(uvec2 entry, vec3 P, vec3 N, float NoL) {
 // A local light's visibility at P from its cube face (point) or single view (spot), soft by
 // its size (sphere lights by their radius, tubes by their length).
 float localShadowVisibility(Light light, uvec2 entry, vec3 P, vec3 N, float NoL) {
-    float lightSize = max(2.0 * light.sourceRadius, light.sourceLength);
+    float lightSize = kSoftShadows ? max(2.0 * light.sourceRadius, light.sourceLength) : 0.0;
     uint view = entry.x;
     if (entry.y == SHADOW_CUBE_FACES) {
         vec3 d = P - light.position;

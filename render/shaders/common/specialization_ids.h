@@ -37,6 +37,9 @@
 // faces and spot views, penumbrae): each kind's shadow code only in frames that have it.
 #define SPEC_DIRECTIONAL_SHADOWS 37
 #define SPEC_LOCAL_SHADOWS 38
+// Shadow sampling: penumbrae of sphere and tube lights by blocker search (false: hard PCF for
+// every map, and the search's code compiled out).
+#define SPEC_SOFT_SHADOWS 39
 // Volumetrics: the frame has rect or disk lights, lit in the medium by their exact form factor;
 // its code alone, never run, made the per-light march 10x slower on lavapipe.
 #define SPEC_MEDIUM_AREA_LIGHTS 36

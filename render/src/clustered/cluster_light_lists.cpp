@@ -19,12 +19,13 @@
 
 namespace candela::render {
 
-bool ensureHostBuffer(GpuContext& context, GpuBuffer& buffer, VkDeviceSize bytes) {
+bool ensureHostBuffer(GpuContext& context, GpuBuffer& buffer, VkDeviceSize bytes,
+                      VkBufferUsageFlags extraUsage) {
     bytes = std::max<VkDeviceSize>(bytes, 16);
     if (buffer.handle() && buffer.size() >= bytes) return false;
     VkDeviceSize size = std::max(bytes, buffer.size() * 2);
-    buffer =
-        GpuBuffer(context, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryLocation::HostVisible);
+    buffer = GpuBuffer(context, size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | extraUsage,
+                       MemoryLocation::HostVisible);
     return true;
 }
 

@@ -99,7 +99,9 @@ private:
     uint32_t gpuListEntriesWanted_ = 0;  // what the next frame allocates
 };
 
-// Host-visible storage buffer of at least `bytes`; grows by doubling. True when it grew.
-bool ensureHostBuffer(GpuContext& context, GpuBuffer& buffer, VkDeviceSize bytes);
+// Host-visible storage buffer of at least `bytes` (and `extraUsage`); grows by doubling. True
+// when it grew.
+bool ensureHostBuffer(GpuContext& context, GpuBuffer& buffer, VkDeviceSize bytes,
+                      VkBufferUsageFlags extraUsage = 0);
 
 }  // namespace candela::render

@@ -295,22 +295,10 @@ void assignLights(const ClusterGrid& grid, std::span<const LightInstance> lights
         }
     }
     out.lightIndices.resize(out.directionalCount + total);
-    // Lights that cast shadows go after the others in every list: the lighting pass walks the
-    // unshadowed prefix with a body that has no shadow code (lighting.comp, "Lights by class").
-    // Each part stays ascending.
-    bool anyShadowed = false;
-    for (const LightInstance& l : lights)
-        anyShadowed = anyShadowed || (l.light.castShadows && !inEveryCluster(l.light));
-    for (int shadowedPart = 0; shadowedPart < (anyShadowed ? 2 : 1); ++shadowedPart) {
-        for (size_t job = 0; job < jobCount; ++job) {
-            const PairList& list = pairs[job];
-            for (size_t i = 0; i < list.cluster.size(); ++i) {
-                const uint32_t entry = list.light[i];
-                if (anyShadowed &&
-                    lights[entry & LIGHT_ENTRY_INDEX_MASK].light.castShadows != (shadowedPart == 1))
-                    continue;
-                out.lightIndices[cursor[list.cluster[i]]++] = entry;
-            }
+    for (size_t job = 0; job < jobCount; ++job) {
+        const PairList& list = pairs[job];
+        for (size_t i = 0; i < list.cluster.size(); ++i) {
+            out.lightIndices[cursor[list.cluster[i]]++] = list.light[i];
         }
     }
     out.assignedPairs = uint32_t(total);

@@ -43,6 +43,23 @@ bool writeDiff(const std::optional<fs::path>& path, const LdrImage& diff, std::o
     return true;
 }
 
+double luminanceOf(const HdrImage& image, std::size_t pixel) {
+    return 0.2126 * image.rgb[pixel * 3] + 0.7152 * image.rgb[pixel * 3 + 1] +
+           0.0722 * image.rgb[pixel * 3 + 2];
+}
+
+// The image's mean relative luminance error, sum |Y_a - Y_e| / sum Y_e: what the frame
+// benchmark reports of each quality preset against ultra (docs/frame-budget.md).
+double meanRelativeLuminanceError(const HdrImage& actual, const HdrImage& expected) {
+    double difference = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < expected.pixelCount(); ++i) {
+        const double y = luminanceOf(expected, i);
+        difference += std::abs(luminanceOf(actual, i) - y);
+        total += std::abs(y);
+    }
+    return total > 0.0 ? difference / total : (difference > 0.0 ? 1.0 : 0.0);
+}
+
 int compareExr(const fs::path& actualPath, const fs::path& expectedPath,
                const std::optional<fs::path>& diffPng, const HdrThresholds& thresholds,
                std::ostream& out) {
@@ -56,6 +73,8 @@ int compareExr(const fs::path& actualPath, const fs::path& expectedPath,
     HdrComparison comparison = compareHdrImages(*actual, *expected, thresholds);
     int verdict = reportVerdict(comparison.failures, describe(comparison, thresholds), out);
     if (comparison.sameSize) {
+        out << "  mean relative luminance error "
+            << meanRelativeLuminanceError(actual->image, expected->image) << "\n";
         LdrImage diff = falseColourDiff(comparison.difference.errorInTolerances,
                                         backdropFromHdr(expected->image), expected->image.width,
                                         expected->image.height, thresholds.hardLimitInTolerances);
@@ -111,8 +130,7 @@ int inspectExr(const fs::path& path, std::ostream& out) {
     const HdrImage& image = loaded->image;
     double minLuminance = std::numeric_limits<double>::infinity(), maxLuminance = 0, sum = 0;
     for (std::size_t i = 0; i < image.pixelCount(); ++i) {
-        double y = 0.2126 * image.rgb[i * 3] + 0.7152 * image.rgb[i * 3 + 1] +
-                   0.0722 * image.rgb[i * 3 + 2];
+        const double y = luminanceOf(image, i);
         minLuminance = std::min(minLuminance, y);
         maxLuminance = std::max(maxLuminance, y);
         sum += y;

@@ -32,6 +32,7 @@
 #include "candela/content/diagnostics.h"
 #include "candela/content/material.h"
 #include "candela/content/model.h"
+#include "candela/content/quality.h"
 
 namespace candela::content {
 
@@ -161,6 +162,9 @@ struct SceneDocument {
     std::optional<float> exposureCompensation;  // "exposure_compensation", EV (auto only)
     std::optional<SceneAmbientOcclusion> ambientOcclusion;  // unset: defaults
     std::optional<SceneSsrMode> ssr;                        // unset: the engine's default (hiz)
+    // Top-level "quality": "low", "medium", "high" or "ultra" (quality.h), every technique's
+    // preset; the command line's --quality overrides it. Unset: the device's level.
+    std::optional<QualityLevel> quality;
     std::optional<SceneScatteringMode> scattering;    // unset: the engine's default (epipolar)
     std::optional<SceneVolumetricsMode> volumetrics;  // unset: the engine's default (volumes)
     // Top-level "volume_proxies": true or "on", false or "off": how the per-light volumes find

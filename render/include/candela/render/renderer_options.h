@@ -300,6 +300,9 @@ struct RendererOptions {
     float shadowDistance = 50.0f;       // metres of view depth the cascades cover
     uint32_t shadowMaxTileSize = 1024;  // largest tile of a local light (per cube face)
     bool shadowCache = true;            // keep maps whose light and casters did not change
+    // Penumbrae of sphere and tube lights by blocker search (percentage-closer soft shadows);
+    // off, every local light's map is filtered as a hard shadow (the quality presets' switch).
+    bool softShadows = true;
     // Texels of local-light maps re-rendered per frame (0: no limit). Past it, a changed light
     // whose last maps are still in the atlas keeps them for the frame (shadow_maps_kept).
     uint64_t shadowRenderBudget = uint64_t(4) << 20;

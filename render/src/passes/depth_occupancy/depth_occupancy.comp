@@ -8,7 +8,11 @@
 // which quarters its light reaches (light_list_entry.h).
 #include "common/clusters.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+// Each invocation takes 2x2 pixels at a time and merges those that share a slice and quarter
+// before its shared-memory atomics: lavapipe runs a lane's atomics one by one, and one per
+// pixel and axis made this pass a fifth of the games' frames (docs/frame-budget.md).
+layout(local_size_x = 8, local_size_y = 8) in;
+const uint kInvocations = 64u;
 
 layout(binding = OCCUPANCY_BINDING_DEPTH) uniform sampler2D depthBuffer;
 layout(std430, binding = OCCUPANCY_BINDING_TILE_MASKS) writeonly buffer Occupancy {
@@ -39,12 +43,23 @@ shared uint maskHigh;
 shared uint boundsMin[kMaxSlices * 12u];
 shared uint boundsMax[kMaxSlices * 12u];
 
+const uint kNoBox = 0xffffffffu;
+
+// Widens box `box` (its first bounds index) to [lo, hi]; nothing for kNoBox.
+void addToBox(uint box, vec3 lo, vec3 hi) {
+    if (box == kNoBox) return;
+    for (uint c = 0u; c < 3u; ++c) {
+        atomicMin(boundsMin[box + c], orderedBits(lo[c]));
+        atomicMax(boundsMax[box + c], orderedBits(hi[c]));
+    }
+}
+
 void main() {
     if (gl_LocalInvocationIndex == 0u) {
         maskLow = 0u;
         maskHigh = 0u;
     }
-    for (uint i = gl_LocalInvocationIndex; i < kMaxSlices * 12u; i += 256u) {
+    for (uint i = gl_LocalInvocationIndex; i < kMaxSlices * 12u; i += kInvocations) {
         boundsMin[i] = 0xffffffffu;
         boundsMax[i] = 0u;
     }
@@ -60,34 +75,44 @@ void main() {
     }
     uvec2 tile = gl_WorkGroupID.xy;
     uvec2 origin = tile * push.grid.tileSize;
-    for (uint y = gl_LocalInvocationID.y; y < push.grid.tileSize; y += 16u) {
-        for (uint x = gl_LocalInvocationID.x; x < push.grid.tileSize; x += 16u) {
-            uvec2 pixel = origin + uvec2(x, y);
-            if (any(greaterThanEqual(pixel, push.size))) continue;
-            float ndcDepth = texelFetch(depthBuffer, ivec2(pixel), 0).r;
-            if (ndcDepth <= 0.0) continue;  // background
-            float depth = viewDepthFromNdc(ndcDepth, push.grid.projectionNear);
-            uint slice = sliceOfDepth(sliceNear, logRatio, push.grid.slices, depth);
-            if (slice < 32u) {
-                atomicOr(maskLow, 1u << slice);
-            } else {
-                atomicOr(maskHigh, 1u << (slice - 32u));
+    uvec2 mask = uvec2(0u);
+    for (uint y = 2u * gl_LocalInvocationID.y; y < push.grid.tileSize; y += 16u) {
+        for (uint x = 2u * gl_LocalInvocationID.x; x < push.grid.tileSize; x += 16u) {
+            // The quad's pixels, merged while they fall in the same slice and quarter.
+            uint pendingBox = kNoBox;
+            vec3 lo = vec3(0.0), hi = vec3(0.0);
+            for (uint q = 0u; q < 4u; ++q) {
+                uvec2 pixel = origin + uvec2(x + (q & 1u), y + (q >> 1u));
+                if (any(greaterThanEqual(pixel, push.size))) continue;
+                float ndcDepth = texelFetch(depthBuffer, ivec2(pixel), 0).r;
+                if (ndcDepth <= 0.0) continue;  // background
+                float depth = viewDepthFromNdc(ndcDepth, push.grid.projectionNear);
+                uint slice = sliceOfDepth(sliceNear, logRatio, push.grid.slices, depth);
+                mask |= slice < 32u ? uvec2(1u << slice, 0u) : uvec2(0u, 1u << (slice - 32u));
+                vec2 ndc = (vec2(pixel) + 0.5) / vec2(push.size) * 2.0 - 1.0;
+                vec3 view = vec3(ndc * depth / push.projectionScale, -depth);
+                uint box = (slice * 4u + quarterOfPixel(push.grid.tileSize, pixel)) * 3u;
+                if (box == pendingBox) {
+                    lo = min(lo, view);
+                    hi = max(hi, view);
+                    continue;
+                }
+                addToBox(pendingBox, lo, hi);
+                pendingBox = box;
+                lo = view;
+                hi = view;
             }
-            vec2 ndc = (vec2(pixel) + 0.5) / vec2(push.size) * 2.0 - 1.0;
-            vec3 view = vec3(ndc * depth / push.projectionScale, -depth);
-            uint box = (slice * 4u + quarterOfPixel(push.grid.tileSize, pixel)) * 3u;
-            for (uint c = 0u; c < 3u; ++c) {
-                atomicMin(boundsMin[box + c], orderedBits(view[c]));
-                atomicMax(boundsMax[box + c], orderedBits(view[c]));
-            }
+            addToBox(pendingBox, lo, hi);
         }
     }
+    if (mask.x != 0u) atomicOr(maskLow, mask.x);
+    if (mask.y != 0u) atomicOr(maskHigh, mask.y);
     barrier();
     uint tileIndex = tile.y * push.grid.tilesX + tile.x;
     if (gl_LocalInvocationIndex == 0u) tileMasks[tileIndex] = uvec2(maskLow, maskHigh);
     uint tileCount = push.grid.tilesX * push.grid.tilesY;
     uint clusterCount = tileCount * push.grid.slices;
-    for (uint i = gl_LocalInvocationIndex; i < push.grid.slices * 4u; i += 256u) {
+    for (uint i = gl_LocalInvocationIndex; i < push.grid.slices * 4u; i += kInvocations) {
         uint slice = i / 4u;
         uint occupied = slice < 32u ? maskLow >> slice : maskHigh >> (slice - 32u);
         if ((occupied & 1u) == 0u) continue;  // nothing in this cluster

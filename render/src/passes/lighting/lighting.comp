@@ -109,8 +109,6 @@ layout(push_constant) uniform Push {
     uint lightEnd;
 } push;
 
-// Each invocation's counts, summed per count by the first kCounts invocations (no atomics).
-shared uvec4 invocationCounts[2u * 64u];
 
 Surface decodeSurface(ivec2 pixel, out vec3 N) {
     vec4 gb0 = texelFetch(gbufferBaseColor, pixel, 0);
@@ -571,9 +569,9 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
     if (!kClustered) lights = pixelLightRange(lights, push.lightFirst, push.lightEnd);
     // Lights by class, each loop with only its class's code: lavapipe runs every branch of a
     // loop's body for every light whether or not a lane takes it, and the shadow code (the
-    // penumbra search above all) is most of the body. Clustered lists hold the unshadowed
-    // local lights first (light_assignment.cpp), so the shadowed ones alone pay for it; the
-    // last loop takes whatever follows, so any order stays correct, only slower.
+    // penumbra search above all) is most of the body. Lists are in light order and the light
+    // table gives casters the last slots (runtime/src/light_table.cpp), so the shadowed lights
+    // alone pay for it; the last loop takes whatever follows, so any order stays correct.
     uint layers = kClearCoatEnabled && px.surface.clearCoat > 0.0 ? 2u : 1u;
     uint count = pixelLightCount(lights);
     uint k = 0u;
@@ -612,19 +610,12 @@ void main() {
     if (kCountLightPairs) {
         px.counts1.y = shadowFilterTapCount;
         px.counts1.z = shadowBlockerTapCount;
-        uint self = gl_LocalInvocationIndex;
-        invocationCounts[2u * self] = px.counts0;
-        invocationCounts[2u * self + 1u] = px.counts1;
-        barrier();
-        if (self < 2u) {  // invocation 0 sums counts [0, 4), invocation 1 counts [4, 8)
-            uvec4 sum = uvec4(0u);
-            for (uint i = 0u; i < 64u; ++i) sum += invocationCounts[2u * i + self];
-            uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-            uint at = group * kCounts + 4u * self;
-            for (uint c = 0u; c < 4u; ++c) {
-                // Brute force adds its later dispatches' counts.
-                pairCounts[at + c] = push.lightFirst == 0u ? sum[c] : pairCounts[at + c] + sum[c];
-            }
+        // Added to the workgroup's slots (cleared by lighting_counts_clear): no barrier, which
+        // on lavapipe would run the whole shader as coroutines, and no atomic for a zero.
+        uint at = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * kCounts;
+        for (uint c = 0u; c < 4u; ++c) {
+            if (px.counts0[c] != 0u) atomicAdd(pairCounts[at + c], px.counts0[c]);
+            if (px.counts1[c] != 0u) atomicAdd(pairCounts[at + 4u + c], px.counts1[c]);
         }
     }
 }

@@ -37,6 +37,7 @@ struct LightingFeatures {
     // lighting pass compiles in only the shadow code of the kinds that cast.
     bool directionalShadows = false;
     bool localShadows = false;
+    bool softShadows = true;     // penumbrae for sphere and tube lights (RendererOptions)
     std::optional<IblMode> ibl;  // none without an environment
     BrdfModel brdf = BrdfModel::EnergyConserving;
     AreaLightMode areaLights = AreaLightMode::Ltc;  // how sphere and tube lights integrate

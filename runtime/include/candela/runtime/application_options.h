@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "candela/content/components/fog.h"
+#include "candela/content/quality.h"
 #include "candela/render/renderer_options.h"
 #include "candela/render/validation_mode.h"
 #include "candela/runtime/input_script.h"
@@ -52,16 +53,22 @@ struct ApplicationOptions {
     render::IblMode ibl = render::IblMode::SplitSum;
     // --brdf; unset: the world's scene-file "brdf", else energy-conserving.
     std::optional<render::BrdfModel> brdf;
-    // --area-lights: how sphere and tube lights integrate (render::AreaLightMode).
-    render::AreaLightMode areaLights = render::RendererOptions{}.areaLights;
-    // --hair-self-shadow: hair's shadow on itself (render::HairSelfShadow).
-    render::HairSelfShadow hairSelfShadow = render::RendererOptions{}.hairSelfShadow;
+    // --quality low|medium|high|ultra; unset: the world's scene-file "quality", else the
+    // device's level (content/quality.h: medium on a CPU device, high on a GPU). Every setting
+    // below that is unset takes its value from the preset.
+    std::optional<content::QualityLevel> quality;
+    // --area-lights: how sphere and tube lights integrate (render::AreaLightMode); unset: the
+    // quality preset's.
+    std::optional<render::AreaLightMode> areaLights;
+    // --hair-self-shadow: hair's shadow on itself (render::HairSelfShadow); unset: the preset's.
+    std::optional<render::HairSelfShadow> hairSelfShadow;
     // --aa; unset: the world's scene-file "aa", else TAA (render/README.md "Antialiasing").
     std::optional<render::AntiAliasing> aa;
     // --msaa; unset: the world's scene-file "msaa", else 1 (off). The forward pass's samples
     // per pixel, on top of --aa; the renderer checks them against the device.
     std::optional<uint32_t> msaa;
-    // --bloom; unset: the world's scene-file "bloom", else kDefaultBloom.
+    // --bloom; unset: the world's scene-file "bloom", else the quality preset's (kDefaultBloom
+    // from medium up).
     std::optional<float> bloom;
     static constexpr float kDefaultBloom = 0.04f;
     // --exposure, --exposure-compensation; unset: the scene file's, else manual and 0 EV.
@@ -95,6 +102,9 @@ struct ApplicationOptions {
     // density scale (render/README.md "Light shafts").
     std::optional<render::ScatteringMode> scattering;
     render::ScatteringSettings scatteringSettings;
+    // --scattering-slices, --scattering-samples; unset: the quality preset's.
+    std::optional<uint32_t> scatteringSlices;
+    std::optional<uint32_t> scatteringSamples;
     // --atmosphere off: none, even where the scene has an Atmosphere component.
     bool atmosphereOff = false;
     std::optional<float> sunElevationDegrees;

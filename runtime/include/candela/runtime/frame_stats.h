@@ -15,6 +15,9 @@ struct FrameStats {
     uint32_t width = 0;
     uint32_t height = 0;
     std::string device;
+    // The quality preset the run used and where it came from ("flag", "scene", "device").
+    std::string quality;
+    std::string qualitySource;
     std::vector<double> frameMs;  // CPU wall time per frame, including the wait for the GPU
     uint32_t validationMessages = 0;
     std::vector<std::string> features;

@@ -2,6 +2,8 @@
 // The scene's lights as one dense array kept in step with the ECS. Entities with Light and
 // WorldTransform own a slot; when either component changes only that slot is rewritten (ECS
 // change ticks), and adding or removing a light rebuilds the table (on-add/on-remove hooks).
+// Lights that cast shadows hold the last slots, so every cluster list (in slot order) has its
+// unshadowed lights first: a light that starts or stops casting rebuilds the table.
 #include <cstdint>
 #include <unordered_map>
 #include <vector>

@@ -57,6 +57,8 @@ public:
     std::optional<uint32_t> sceneMsaa() const { return sceneMsaa_; }
     // The screen-space reflections the last scene file asks for ("ssr"), if it names them.
     std::optional<content::SceneSsrMode> sceneSsr() const { return sceneSsr_; }
+    // The quality preset the last scene file asks for ("quality"), if it names one.
+    std::optional<content::QualityLevel> sceneQuality() const { return sceneQuality_; }
     std::optional<content::SceneSkyOcclusionMode> sceneSkyOcclusion() const {
         return sceneSkyOcclusion_;
     }
@@ -124,6 +126,7 @@ private:
     std::optional<content::SceneAntiAliasing> sceneAntiAliasing_;
     std::optional<uint32_t> sceneMsaa_;
     std::optional<content::SceneSsrMode> sceneSsr_;
+    std::optional<content::QualityLevel> sceneQuality_;
     std::optional<content::SceneScatteringMode> sceneScattering_;
     std::optional<content::SceneVolumetricsMode> sceneVolumetrics_;
     std::optional<bool> sceneVolumeProxies_;
