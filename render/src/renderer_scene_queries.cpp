@@ -15,6 +15,7 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     f.brdf = options.brdf;
     f.areaLights = options.areaLights;
     f.softShadows = options.softShadows;
+    f.hardShadowTapsPerAxis = options.shadowHardTapsPerAxis;
     if (resources.environment()) f.ibl = options.ibl;
     // Occlusion of the sky's light: nothing to occlude without a sky.
     if (f.ibl) f.ao = options.ao;

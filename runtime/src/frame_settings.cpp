@@ -124,6 +124,7 @@ render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
     r.shadowCascades = preset.shadowCascades;
     r.shadowMaxTileSize = preset.shadowMaxTileSize;
     r.softShadows = preset.softShadows;
+    r.shadowHardTapsPerAxis = preset.shadowHardTapsPerAxis;
     r.aoSettings.slices = preset.aoSlices;
     r.aoSettings.steps = preset.aoSteps;
     r.ssrSettings.maxIterations = preset.ssrMaxIterations;

@@ -127,6 +127,7 @@ TEST(FrameSettings, UltraIsTheEngineBeforePresets) {
     EXPECT_EQ(r.shadowCascades, engine.shadowCascades);
     EXPECT_EQ(r.shadowMaxTileSize, engine.shadowMaxTileSize);
     EXPECT_EQ(r.softShadows, engine.softShadows);
+    EXPECT_EQ(r.shadowHardTapsPerAxis, engine.shadowHardTapsPerAxis);
     EXPECT_EQ(r.aoSettings.slices, engine.aoSettings.slices);
     EXPECT_EQ(r.aoSettings.steps, engine.aoSettings.steps);
     EXPECT_EQ(r.ssrSettings.maxIterations, engine.ssrSettings.maxIterations);
@@ -157,6 +158,7 @@ TEST(FrameSettings, LowerPresetsNeverCostMore) {
         EXPECT_LE(lower.shadowCascades, higher.shadowCascades) << name;
         EXPECT_LE(lower.shadowMaxTileSize, higher.shadowMaxTileSize) << name;
         EXPECT_LE(lower.softShadows, higher.softShadows) << name;
+        EXPECT_LE(lower.shadowHardTapsPerAxis, higher.shadowHardTapsPerAxis) << name;
         EXPECT_LE(lower.ambientOcclusion, higher.ambientOcclusion) << name;
         EXPECT_LE(lower.aoSlices * lower.aoSteps, higher.aoSlices * higher.aoSteps) << name;
         EXPECT_LE(lower.ssr, higher.ssr) << name;

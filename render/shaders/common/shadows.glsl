@@ -17,6 +17,9 @@
 layout(constant_id = SPEC_SHADOWS_ENABLED) const bool kShadowsEnabled = false;
 // Off (the lower quality presets): local lights' maps are filtered as hard shadows.
 layout(constant_id = SPEC_SOFT_SHADOWS) const bool kSoftShadows = true;
+// Hard shadows' compare taps per axis: 2 (a 3x3-texel tent) or 1 (one bilinear 2x2-texel tap,
+// a quarter of the cost, the lower quality presets).
+layout(constant_id = SPEC_HARD_SHADOW_TAPS) const int kHardShadowTapsPerAxis = 2;
 
 // One shadow view (render/src/passes/shadows/shadow_views.h, GpuShadowView).
 struct ShadowView {
@@ -188,7 +191,7 @@ float sampleShadowView(ShadowView v, vec3 P, vec3 N, float NoL, float lightSize)
         // at most 6 x 6.
         return shadowFilter(v, tc, receiver, radius, clamp(int(ceil(radius)), 2, 6));
     }
-    return shadowFilter(v, tc, receiver, 1.0, 2);
+    return shadowFilter(v, tc, receiver, 1.0, kHardShadowTapsPerAxis);
 }
 
 // The view of a light's maps that holds P: its first cascade whose sphere holds P
@@ -254,19 +257,27 @@ float subsurfaceTransmittance(Light light, uint lightIndex, vec3 P) {
 // A directional light's visibility at P from its cascades (N the surface normal, NoL > 0),
 // blended into the next cascade over the outer band of each.
 float cascadeShadowVisibility(uvec2 entry, vec3 P, vec3 N, float NoL) {
+    // The cascade first, then its lookups: sampling inside the search loop made every lane run
+    // the filter once per cascade any lane of its group was still testing (lavapipe runs a
+    // loop's body for all lanes until the last one leaves).
+    uint cascade = entry.y;
+    float band = 1.0;  // 0..1 across the cascade's outer blend band, 1 inside it
     for (uint i = 0u; i < entry.y; ++i) {
-        ShadowView v = shadowViews[entry.x + i];
-        float d = length(P - v.sphere.xyz);
-        if (d >= v.sphere.w) continue;
-        float visibility = sampleShadowView(v, P, N, NoL, 0.0);
-        float t = (v.sphere.w - d) / (v.sphere.w * kCascadeBlendBand);
-        if (t < 1.0 && i + 1u < entry.y) {
-            float next = sampleShadowView(shadowViews[entry.x + i + 1u], P, N, NoL, 0.0);
-            visibility = mix(next, visibility, t);
+        vec4 sphere = shadowViews[entry.x + i].sphere;
+        float d = length(P - sphere.xyz);
+        if (d < sphere.w) {
+            cascade = i;
+            band = (sphere.w - d) / (sphere.w * kCascadeBlendBand);
+            break;
         }
-        return visibility;
     }
-    return 1.0;  // beyond the last cascade
+    if (cascade == entry.y) return 1.0;  // beyond the last cascade
+    float visibility = sampleShadowView(shadowViews[entry.x + cascade], P, N, NoL, 0.0);
+    if (band < 1.0 && cascade + 1u < entry.y) {
+        float next = sampleShadowView(shadowViews[entry.x + cascade + 1u], P, N, NoL, 0.0);
+        visibility = mix(next, visibility, band);
+    }
+    return visibility;
 }
 
 // A local light's visibility at P from its cube face (point) or single view (spot), soft by

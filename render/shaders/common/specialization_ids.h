@@ -40,6 +40,8 @@
 // Shadow sampling: penumbrae of sphere and tube lights by blocker search (false: hard PCF for
 // every map, and the search's code compiled out).
 #define SPEC_SOFT_SHADOWS 39
+// Shadow sampling: hard shadows' compare taps per axis (2: a 3x3-texel tent, 1: one tap).
+#define SPEC_HARD_SHADOW_TAPS 41
 // Volumetrics: the frame has rect or disk lights, lit in the medium by their exact form factor;
 // its code alone, never run, made the per-light march 10x slower on lavapipe.
 #define SPEC_MEDIUM_AREA_LIGHTS 36

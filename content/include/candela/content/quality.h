@@ -31,6 +31,7 @@ struct QualityPreset {
     uint32_t shadowCascades;
     uint32_t shadowMaxTileSize;
     bool softShadows;
+    uint32_t shadowHardTapsPerAxis;  // 2: a 3x3-texel tent of 4 compare taps; 1: one tap
     // Ambient occlusion (GTAO unless off) and its screen-space slices and steps per side.
     bool ambientOcclusion;
     uint32_t aoSlices;

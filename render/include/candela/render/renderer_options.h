@@ -303,6 +303,9 @@ struct RendererOptions {
     // Penumbrae of sphere and tube lights by blocker search (percentage-closer soft shadows);
     // off, every local light's map is filtered as a hard shadow (the quality presets' switch).
     bool softShadows = true;
+    // Hard shadows' compare taps per axis: 2, a 3x3-texel tent; 1, one bilinear tap over 2x2
+    // texels at a quarter of the cost.
+    uint32_t shadowHardTapsPerAxis = 2;
     // Texels of local-light maps re-rendered per frame (0: no limit). Past it, a changed light
     // whose last maps are still in the atlas keeps them for the frame (shadow_maps_kept).
     uint64_t shadowRenderBudget = uint64_t(4) << 20;

@@ -83,6 +83,7 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
     constants.set(SPEC_DIRECTIONAL_SHADOWS, features.directionalShadows);
     constants.set(SPEC_LOCAL_SHADOWS, features.localShadows);
     constants.set(SPEC_SOFT_SHADOWS, features.softShadows);
+    constants.set(SPEC_HARD_SHADOW_TAPS, int32_t(features.hardShadowTapsPerAxis));
     constants.set(SPEC_ENERGY_CONSERVING, features.brdf == BrdfModel::EnergyConserving);
     constants.set(SPEC_AREA_LIGHTS_LTC, features.areaLights == AreaLightMode::Ltc);
 }

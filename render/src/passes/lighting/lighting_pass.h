@@ -37,8 +37,9 @@ struct LightingFeatures {
     // lighting pass compiles in only the shadow code of the kinds that cast.
     bool directionalShadows = false;
     bool localShadows = false;
-    bool softShadows = true;     // penumbrae for sphere and tube lights (RendererOptions)
-    std::optional<IblMode> ibl;  // none without an environment
+    bool softShadows = true;             // penumbrae for sphere and tube lights (RendererOptions)
+    uint32_t hardShadowTapsPerAxis = 2;  // RendererOptions::shadowHardTapsPerAxis
+    std::optional<IblMode> ibl;          // none without an environment
     BrdfModel brdf = BrdfModel::EnergyConserving;
     AreaLightMode areaLights = AreaLightMode::Ltc;  // how sphere and tube lights integrate
     bool anisotropy = false;  // a drawn opaque material has KHR_materials_anisotropy
