@@ -16,6 +16,18 @@ glm::vec3 unitColumn(const ecs::Mat4& m, int column, const glm::vec3& fallback) 
     return length > 0.0f && std::isfinite(length) ? v / length : fallback;
 }
 
+// The slot group a light belongs in: points and spots without a size first, then the other
+// lights without shadows, then those that cast (cluster lists are in slot order, and the
+// lighting pass walks each group with only the code it needs: render/README.md "What a shader
+// costs on lavapipe").
+int slotGroup(const content::Light& light) {
+    if (light.castShadows) return 2;
+    const bool sized = light.type == content::LightType::Rect ||
+                       light.type == content::LightType::Disk || light.sourceRadius > 0.0f ||
+                       light.sourceLength > 0.0f;
+    return sized ? 1 : 0;
+}
+
 }  // namespace
 
 render::LightInstance lightInstance(const content::Light& light, const ecs::Mat4& world) {
@@ -49,13 +61,10 @@ LightTable::~LightTable() {
 void LightTable::rebuild() {
     lights_.clear();
     slotOfEntity_.clear();
-    // Lights that cast shadows take the last slots: cluster lists are in slot order, and the
-    // lighting pass walks a list's unshadowed prefix with a body that has no shadow code
-    // (render/README.md "What a shader costs on lavapipe").
-    for (const bool casters : {false, true}) {
+    for (int group = 0; group < 3; ++group) {
         registry_.view<const ecs::WorldTransform, const content::Light>().each(
             [&](ecs::Entity e, const ecs::WorldTransform& world, const content::Light& light) {
-                if (light.castShadows != casters) return;
+                if (slotGroup(light) != group) return;
                 slotOfEntity_.emplace(e.bits(), uint32_t(lights_.size()));
                 lights_.push_back(lightInstance(light, world.matrix));
             });
@@ -76,8 +85,8 @@ void LightTable::update() {
             [&](ecs::Entity e, const ecs::WorldTransform& world, const content::Light& light) {
                 auto it = slotOfEntity_.find(e.bits());
                 if (it == slotOfEntity_.end()) return;
-                // A light that starts or stops casting moves to the other group of slots.
-                if (lights_[it->second].light.castShadows != light.castShadows) {
+                // A light that changes group (starts casting, gets a size) moves slots.
+                if (slotGroup(lights_[it->second].light) != slotGroup(light)) {
                     structureDirty_ = true;
                 }
                 lights_[it->second] = lightInstance(light, world.matrix);

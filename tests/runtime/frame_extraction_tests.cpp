@@ -106,31 +106,34 @@ TEST(FrameExtraction, WiresOfAMeshInstanceBecomeWireDraws) {
     EXPECT_FLOAT_EQ(frame.wires[0].world[3][1], 7.0f);
 }
 
-// Issue 41: lights that cast shadows take the last slots (cluster lists then hold the
-// unshadowed lights first, which the lighting pass walks without shadow code); a light that
-// starts casting moves there with a rebuild, an edit that keeps its class rewrites its slot.
+// Issue 41: plain points first, then lights with a size, then lights that cast shadows take
+// the last slots (cluster lists follow that order, and the lighting pass walks each group
+// without the others' code); a light that starts casting moves with a rebuild, an edit that
+// keeps its group rewrites its slot.
 TEST(LightTableOrder, CastersTakeTheLastSlots) {
     ecs::Registry registry;
     LightTable table(registry);
     std::vector<ecs::Entity> entities;
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < 5; ++i) {
         const ecs::Entity e = registry.create();
         registry.emplace<ecs::WorldTransform>(e);
         content::Light light;
-        light.castShadows = i % 2 == 0;  // lights 0 and 2 cast
+        light.castShadows = i % 2 == 0 && i < 4;    // lights 0 and 2 cast
+        light.sourceRadius = i == 4 ? 0.1f : 0.0f;  // light 4 is a sphere
         light.lumens = 100.0f * float(i + 1);
         registry.emplace<content::Light>(e, light);
         entities.push_back(e);
     }
     table.update();
-    ASSERT_EQ(table.lights().size(), 4u);
+    ASSERT_EQ(table.lights().size(), 5u);
     auto casters = [&] {
         std::vector<bool> cast;
         for (const render::LightInstance& l : table.lights())
             cast.push_back(l.light.castShadows);
         return cast;
     };
-    EXPECT_EQ(casters(), (std::vector<bool>{false, false, true, true}));
+    EXPECT_EQ(casters(), (std::vector<bool>{false, false, false, true, true}));
+    EXPECT_EQ(table.lights()[2].light.sourceRadius, 0.1f);  // after the plain points
 
     registry.patch<content::Light>(entities[1], [](content::Light& l) { l.lumens = 5.0f; });
     table.update();
@@ -140,5 +143,5 @@ TEST(LightTableOrder, CastersTakeTheLastSlots) {
     registry.patch<content::Light>(entities[3], [](content::Light& l) { l.castShadows = true; });
     table.update();
     EXPECT_TRUE(table.restructured());
-    EXPECT_EQ(casters(), (std::vector<bool>{false, true, true, true}));
+    EXPECT_EQ(casters(), (std::vector<bool>{false, false, true, true, true}));
 }

@@ -196,6 +196,33 @@ LightIncidence evaluateLocalLight(Light light, vec3 P, vec3 N, vec3 R, float alp
     return o;
 }
 
+// evaluateLocalLight of a point or spot light without a size (isPlainLocalLight): the same
+// operations without the sphere and tube code, which lavapipe would run for it anyway.
+LightIncidence evaluatePlainLocalLight(Light light, vec3 P, vec3 N) {
+    LightIncidence o;
+    vec3 toCenter = light.position - P;
+    float centerDistSq = dot(toCenter, toCenter);
+    o.diffuseL = safeNormalize(toCenter);
+    float diffuseFactor = saturate(dot(N, o.diffuseL)) * inverseSquare(centerDistSq);
+    float window = attenuationWindow(dot(toCenter, toCenter), light.invAttenuationRadius);
+    vec3 intensity = light.intensity * window;
+    if (kSpotLightsEnabled && light.type == kLightSpot) intensity *= spotAttenuation(light, o.diffuseL);
+    o.specularL = safeNormalize(toCenter);
+    float specularDistSq = max(dot(toCenter, toCenter), 0.0);
+    float NoLs = saturate(dot(N, o.specularL));
+    o.diffuseIlluminance = intensity * diffuseFactor;
+    o.specularIlluminance = intensity * (NoLs * inverseSquare(specularDistSq) * 1.0);
+    o.incidentIlluminance = intensity * inverseSquare(centerDistSq);
+    o.specularLtc = vec2(0.0);
+    return o;
+}
+
+// A point or spot light without a size: what evaluatePlainLocalLight takes.
+bool isPlainLocalLight(Light light) {
+    return (light.type == LIGHT_TYPE_POINT || light.type == kLightSpot) &&
+           !(light.sourceRadius > 0.0) && !(light.sourceLength > 0.0);
+}
+
 LightIncidence evaluateDirectionalLight(Light light, vec3 N) {
     LightIncidence o;
     o.diffuseL = -light.direction;

@@ -167,14 +167,15 @@ const uint kLightBodyAny = 0u;          // any light, shadowed or not (brute for
 const uint kLightBodyDirectional = 1u;  // directional lights, cascades
 const uint kLightBodyUnshadowed = 2u;   // local lights without a shadow map: no shadow code
 const uint kLightBodyLocal = 3u;        // local lights, shadowed or not
+const uint kLightBodyPlain = 4u;        // points and spots without a size or a map
 void addLight(inout PixelShading px, uint lightIndex, bool coatLayer, const uint body) {
     Light light = loadLight(lightIndex, camera.frameInfo.w);
     vec3 N = coatLayer ? px.surface.clearCoatN : px.N;
     vec3 R = coatLayer ? px.coatR : px.R;
     float alpha = coatLayer ? px.coatAlpha : px.alpha;
-    LightIncidence incidence = body == kLightBodyDirectional
-                                   ? evaluateDirectionalLight(light, N)
-                                   : evaluateLight(light, px.P, N, R, alpha);
+    LightIncidence incidence = body == kLightBodyDirectional ? evaluateDirectionalLight(light, N)
+                               : body == kLightBodyPlain ? evaluatePlainLocalLight(light, px.P, N)
+                                                         : evaluateLight(light, px.P, N, R, alpha);
     float visibility = 1.0;
     bool shadowed = body == kLightBodyDirectional ? kDirectionalShadows
                     : body == kLightBodyLocal     ? kLocalShadows
@@ -580,6 +581,17 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
             addLight(px, pixelLightAt(lights, i / layers), i % layers == 1u, kLightBodyDirectional);
         }
         k = lights.directionalCount;
+    }
+    // The plain prefix (points and spots without a size or a map; the light table's first
+    // slots): a body without the area-light and shadow code.
+    for (uint i = k * layers; i < count * layers; ++i) {
+        uint index = pixelLightIndexAt(lights, i / layers);
+        if (index != kNoLight &&
+            !(lightUnshadowed(index) && isPlainLocalLight(loadLight(index, camera.frameInfo.w))))
+            break;
+        uint light = pixelLightAt(lights, i / layers);
+        if (light != kNoLight) addLight(px, light, i % layers == 1u, kLightBodyPlain);
+        k = (i + 1u) / layers;
     }
     if (kLocalShadows) {
         // The unshadowed prefix: a coated pixel's second pass over each light is i odd.

@@ -2,8 +2,10 @@
 // The scene's lights as one dense array kept in step with the ECS. Entities with Light and
 // WorldTransform own a slot; when either component changes only that slot is rewritten (ECS
 // change ticks), and adding or removing a light rebuilds the table (on-add/on-remove hooks).
-// Lights that cast shadows hold the last slots, so every cluster list (in slot order) has its
-// unshadowed lights first: a light that starts or stops casting rebuilds the table.
+// Slots come in groups: points and spots without a size, then the other lights without
+// shadows, then the lights that cast; every cluster list (in slot order) follows them, and the
+// lighting pass walks each group with only its code. A light that changes group rebuilds the
+// table.
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
