@@ -571,8 +571,9 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
     // Lights by class, each loop with only its class's code: lavapipe runs every branch of a
     // loop's body for every light whether or not a lane takes it, and the shadow code (the
     // penumbra search above all) is most of the body. Lists are in light order and the light
-    // table gives casters the last slots (runtime/src/light_table.cpp), so the shadowed lights
-    // alone pay for it; the last loop takes whatever follows, so any order stays correct.
+    // table groups its slots the same way (runtime/src/light_table.cpp), so each loop sees
+    // only its class; each stops at a light it cannot take and the last takes any, so any
+    // order stays correct, only slower.
     uint layers = kClearCoatEnabled && px.surface.clearCoat > 0.0 ? 2u : 1u;
     uint count = pixelLightCount(lights);
     uint k = 0u;
