@@ -1,7 +1,8 @@
-// Light shafts' frame-graph declaration (Renderer::declareScattering, issue 16, seed 004 §2):
-// the aerial perspective into the integrated froxel buffer for blended surfaces and wires,
-// then the epipolar passes (coordinates, tree, march/refine/interpolate, unwarp) or the
-// brute-force march over the lit HDR target.
+// Light shafts' frame-graph declaration (Renderer::declareScattering, issue 16, Yusov 2014,
+// GPU Pro 5, "High Performance Outdoor Light Scattering Using Epipolar Sampling"): the aerial
+// perspective into the integrated froxel buffer for blended surfaces and wires, then the epipolar
+// passes (coordinates, tree, march/refine/interpolate, unwarp) or the brute-force march over the
+// lit HDR target.
 
 #include <cstdint>
 #include <memory>

@@ -336,10 +336,10 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     meshes->model.images.push_back(rustMask());
     const int32_t rustySphere = meshes->add(content::makeSphere(0.35f), rusty);
 
-    // Issue 19 (seed 004 §6): power lines across the sky over the meadow in front of the
-    // hall, seen from the door on the way out: three conductors sagging between poles every 15 m
-    // outside the side walls, 2.4 cm thick: under a pixel wide from the tour's viewpoints, drawn by
-    // the wire pass at their real energy instead of a pixel-wide line.
+    // Issue 19 (Persson 2014, GPU Pro 5, "Wire Antialiasing"): power lines across the sky over the
+    // meadow in front of the hall, seen from the door on the way out: three conductors sagging
+    // between poles every 15 m outside the side walls, 2.4 cm thick: under a pixel wide from the
+    // tour's viewpoints, drawn by the wire pass at their real energy instead of a pixel-wide line.
     const int32_t powerLines = int32_t(meshes->model.meshes.size());
     {
         content::Mesh lines;
@@ -367,7 +367,8 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     }
     const int32_t pole = meshes->add(content::makeBox({0.12f, 4.0f, 0.12f}),
                                      material({0.3f, 0.22f, 0.15f}, 0.0f, 0.8f));
-    // Issue 19 (seed 004 §5): the furry creature's body, under its fur (placed below).
+    // Issue 19 (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering"): the
+    // furry creature's body, under its fur (placed below).
     const int32_t furryBody =
         meshes->add(content::makeSphere(0.25f, 24, 12), material({0.18f, 0.1f, 0.05f}, 0.0f, 0.9f));
 
@@ -448,7 +449,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
         draw(place(registry, "power line pole", {-37.5f + 15.0f * float(i), 4.0f, kPowerLineZ}),
              pole);
     }
-    // Issue 19 (seed 004 §5): a furry creature by the left colonnade, fur grown on its body
+    // Issue 19 (Martin et al. 2014): a furry creature by the left colonnade, fur grown on its body
     // (content::HairGrowth, as a scene file's "hair" block) and drawn by the hair pass.
     {
         const ecs::Entity creature = place(registry, "furry creature", {-2.2f, 0.3f, -4.5f});
@@ -520,7 +521,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     bulb.sourceRadius = 0.08f;
     bulb.castShadows = true;
     // The dust glows around the bulb and the neon (issue 17): their volumetric scale lifts
-    // the thin medium's in-scattering near them above the drifting lights' (the seed's
+    // the thin medium's in-scattering near them above the drifting lights' (Vos's
     // artist control, render/README.md "Volumetric lighting").
     bulb.volumetric = kDustGlow;
     ecs::Entity bulbEntity = place(registry, "lamp bulb", {-2.0f, 3.4f, -5.2f});

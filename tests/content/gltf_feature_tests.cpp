@@ -462,10 +462,10 @@ TEST(GltfFeatures, CamerasMatricesStripsU8IndicesAndVertexColours) {
     EXPECT_EQ(node.camera, 1);
 }
 
-// Issue 19 (seed 004 §6): LINES / LINE_STRIP / LINE_LOOP primitives whose material's extras
-// gives wireRadius become wires (index pairs, the radius in metres); lines without it stay
-// skipped with a warning; a radius that is not a finite positive number is an error naming
-// the file and the material's element, and its lines stay skipped.
+// Issue 19 (Persson 2014, GPU Pro 5, "Wire Antialiasing"): LINES / LINE_STRIP / LINE_LOOP
+// primitives whose material's extras gives wireRadius become wires (index pairs, the radius in
+// metres); lines without it stay skipped with a warning; a radius that is not a finite positive
+// number is an error naming the file and the material's element, and its lines stay skipped.
 TEST(GltfFeatures, LinePrimitivesWithWireRadiusBecomeWires) {
     json doc = quadDocument();
     doc["materials"] = json::array({
@@ -509,11 +509,11 @@ TEST(GltfFeatures, LinePrimitivesWithWireRadiusBecomeWires) {
     EXPECT_FALSE(diagnostics.mentions("meshes[0].primitives[1]")) << text;
 }
 
-// Issue 19 (seed 004 §5): LINES / LINE_STRIP primitives whose material's extras has a `hair`
-// object become hair strands (Mesh::hair) with each position's place from root (0) to tip
-// (1); the style's keys are read, missing ones keep their defaults (a missing tip radius: the
-// root's), and a wrong key is an error naming materials[i].extras.hair.<key>, the material
-// making no hair.
+// Issue 19 (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering"): LINES /
+// LINE_STRIP primitives whose material's extras has a `hair` object become hair strands
+// (Mesh::hair) with each position's place from root (0) to tip (1); the style's keys are read,
+// missing ones keep their defaults (a missing tip radius: the root's), and a wrong key is an error
+// naming materials[i].extras.hair.<key>, the material making no hair.
 TEST(GltfFeatures, LinePrimitivesWithHairExtrasBecomeStrands) {
     json doc = quadDocument();
     doc["materials"] = json::array({

@@ -178,8 +178,9 @@ TEST(LightTypeTable, AreaLightsWithoutAnAreaAreRejectedByName) {
     EXPECT_NEAR(emitterArea(disk), 3.14159265f * 0.04f, 1e-6f);
 }
 
-// Seed 004 section 1's constant-intensity variant: a rect's or disk's "emission" loads, is written
-// back (and left out when Lambertian), and a misspelt value is an error naming its pointer.
+// Drobot's (2014, GPU Pro 5, "Physically Based Area Lights") constant-intensity variant: a rect's
+// or disk's "emission" loads, is written back (and left out when Lambertian), and a misspelt value
+// is an error naming its pointer.
 TEST(LightTypeTable, AreaLightEmissionRoundTripsAndRejectsUnknownValues) {
     const std::string text = R"({"format": "candela.scene", "version": 1, "entities": [
         {"name": "panel", "light": {"type": "rect", "width": 1, "height": 0.5,

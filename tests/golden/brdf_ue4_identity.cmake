@@ -1,9 +1,9 @@
-# `--brdf ue4` reproduces seed 000 exactly: renders every golden whose seed-000 captures are
-# recorded in HASHES (SHA-256 of the expected .exr and .png before the energy-conserving BRDF
-# became the default) with `--brdf ue4` and requires byte-identical files. A golden added later
-# (no recorded hash) is skipped with a note. Seed 000 had no ambient occlusion, antialiasing,
-# bloom, screen-space reflections or auto exposure: `--ao off --aa off --bloom 0 --ssr off
-# --exposure manual`; its sphere and tube
+# `--brdf ue4` reproduces Karis 2013, "Real Shading in Unreal Engine 4" exactly: renders every
+# golden whose captures under that BRDF are recorded in HASHES (SHA-256 of the expected .exr and
+# .png before the energy-conserving BRDF became the default) with `--brdf ue4` and requires
+# byte-identical files. A golden added later (no recorded hash) is skipped with a note. Those
+# captures had no ambient occlusion, antialiasing, bloom, screen-space reflections or auto
+# exposure: `--ao off --aa off --bloom 0 --ssr off --exposure manual`; its sphere and tube
 # lights shaded by the representative point (issue 15 made LTC the default): `--area-lights
 # representative`. orb_game.exr was re-recorded then: lavapipe compiles the larger lighting
 # shader (the LTC branch for sphere and tube lights) with different float rounding, max

@@ -193,8 +193,8 @@ TEST(AnalyticLighting, HalvingAttenuationRadiusKeepsRadianceNearTheLight) {
 // sin sigma = 0.4 at the point under it, seen from above so its highlight fills ~40 pixels.
 // Specular per pixel against the lobe the LTC table fits (GGX D, height-correlated Smith)
 // integrated over the sphere in double (report/area_light_reference.h), as relative L1 over
-// the image: --area-lights ltc within a few %, the representative point (seed 000 eq. 10-14)
-// off by more than 100 % (the report's 222 % cell).
+// the image: --area-lights ltc within a few %, the representative point (Karis 2013, "Real Shading
+// in Unreal Engine 4", eq. 10-14) off by more than 100 % (the report's 222 % cell).
 TEST(AnalyticLighting, SphereLightSpecularByLtcMatchesIntegratedLobe) {
     GpuContext context(requiredValidation());
     TestScene scene;

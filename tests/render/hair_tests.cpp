@@ -1,5 +1,6 @@
-// Hair (issue 19, seed 004 §5): strands as camera-facing quads into a per-pixel linked list
-// (an A-buffer), resolved by sorting the nearest few and blending the rest cheaply.
+// Hair (issue 19, Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering"):
+// strands as camera-facing quads into a per-pixel linked list (an A-buffer), resolved by sorting
+// the nearest few and blending the rest cheaply.
 // - Order independence: the same hair ball with its strands in another order gives the same
 //   image (every pixel within 1e-5).
 // - Coverage (GPAA): a strand's coverages summed down a column are its width in pixels (within

@@ -291,7 +291,8 @@ TEST(IblFurnace, MetalSpheresNeverGainEnergyAndReportSingleScatteringLoss) {
     std::shared_ptr<const Environment> sky = Environment::uniform(context, 1.0f);
     for (IblMode mode : kIblModes) {
         RendererOptions options;
-        options.brdf = BrdfModel::Ue4;  // seed 000: single scattering, Schlick-Smith
+        // Karis 2013, "Real Shading in Unreal Engine 4": single scattering, Schlick-Smith.
+        options.brdf = BrdfModel::Ue4;
         options.ibl = mode;
         options.referenceSamples = 1024;
         for (float roughness : {0.0f, 0.25f, 0.5f, 0.75f, 1.0f}) {

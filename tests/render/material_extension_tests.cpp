@@ -50,10 +50,11 @@ struct Base {
 // Every pixel of the frame (the sphere and the sky behind it, which is exactly 1), coated
 // against the same base uncoated: a coat never adds light, and over bases that alone reflect
 // at most the sky (white metals, a white Lambert base) nothing exceeds 1. The white dielectric
-// (Specular 0.5) alone reflects up to 1.16 of the sky at grazing angles (seed 000's model adds
-// the specular lobe to a diffuse base without taking it away), and coated it must stay under
-// that. Coats (factor, roughness) (1, 0), (0.5, 0.3), (1, 1). Tolerance 1e-2: fp16 cubes and the
-// 16-bit LUT round; the reference's Monte Carlo (256 + 256 samples) gets 3e-2.
+// (Specular 0.5) alone reflects up to 1.16 of the sky at grazing angles (Karis 2013's ("Real
+// Shading in Unreal Engine 4") model adds the specular lobe to a diffuse base without taking it
+// away), and coated it must stay under that. Coats (factor, roughness) (1, 0), (0.5, 0.3), (1, 1).
+// Tolerance 1e-2: fp16 cubes and the 16-bit LUT round; the reference's Monte Carlo (256 + 256
+// samples) gets 3e-2.
 TEST(ClearCoatFurnace, NoConfigurationReflectsMoreThanTheSky) {
     GpuContext& context = sharedContext();
     std::shared_ptr<const Environment> sky = Environment::uniform(context, 1.0f);

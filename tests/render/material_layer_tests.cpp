@@ -1,8 +1,8 @@
-// Material layers (issue 21, seed 000 §2.3.2) on the real renderer: a layered material renders
-// as the blend of its layers. Three spheres take the mask 0, 1 and 0.5 from their vertex
-// colour; the same spheres drawn with the base alone, the layer alone and the parameters
-// averaged by hand must give the same frame (the blend happens in the G-buffer, before
-// lighting, so even the non-linear lighting of metallic and roughness matches).
+// Material layers (issue 21, Karis 2013, "Real Shading in Unreal Engine 4", "Material Layering") on
+// the real renderer: a layered material renders as the blend of its layers. Three spheres take the
+// mask 0, 1 and 0.5 from their vertex colour; the same spheres drawn with the base alone, the layer
+// alone and the parameters averaged by hand must give the same frame (the blend happens in the
+// G-buffer, before lighting, so even the non-linear lighting of metallic and roughness matches).
 #include <gtest/gtest.h>
 
 #include <algorithm>

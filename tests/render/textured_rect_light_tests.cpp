@@ -1,6 +1,7 @@
 // Textured rect lights (issue 15): the emissive image modulates a rect's luminance, scaled to
 // average luminance 1 (lights/area_light_textures.h), read by LTC where the lobe's mean
-// direction meets the rect and at the representative point in seed 004's mode. One render:
+// direction meets the rect and at the representative point in Drobot's mode (2014, GPU Pro 5,
+// "Physically Based Area Lights"). One render:
 // six rects over a floor, each far enough from the others that their falloff windows never
 // overlap, LTC and representative chosen per light ("quality").
 #include <gtest/gtest.h>

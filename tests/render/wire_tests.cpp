@@ -1,9 +1,9 @@
-// Wires (issue 19, seed 004 §6): Persson's clamp to a pixel's radius with the alpha scaled by
-// real / clamped radius, and coverage from the distance to the centre line. An unlit emissive
-// wire across the image keeps its energy (radiance summed down each column = width x
-// radiance) from 20 px wide down to 0.1 px (where the naive one-pixel line is ten times too
-// bright: candela-report's wire rows), and a 0.3 px wire moving by 1/8 pixel keeps its column
-// sums (no flicker).
+// Wires (issue 19, Persson 2014, GPU Pro 5, "Wire Antialiasing"): Persson's clamp to a pixel's
+// radius with the alpha scaled by real / clamped radius, and coverage from the distance to the
+// centre line. An unlit emissive wire across the image keeps its energy (radiance summed down each
+// column = width x radiance) from 20 px wide down to 0.1 px (where the naive one-pixel line is ten
+// times too bright: candela-report's wire rows), and a 0.3 px wire moving by 1/8 pixel keeps its
+// column sums (no flicker).
 #include <gtest/gtest.h>
 
 #include <algorithm>

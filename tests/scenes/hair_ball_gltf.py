@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes hair_ball.gltf for the hair golden (issue 19, seed 004 section 5): a dark sphere
+"""Writes hair_ball.gltf for the hair golden (issue 19; Martin et al. 2014, GPU Pro 5, "TressFX:
+Advanced Real-Time Hair Rendering"): a dark sphere
 covered in 800 strands of fur (LINES, root first, 3 segments each, from a fixed random seed)
 whose material's extras give `hair` (root and tip radius, colour, the two highlights' shifts
 and exponents), on a grey ground under a sun that casts shadows (so the hair shadows itself

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes power_lines.gltf for the wire golden (issue 19, seed 004 section 6): a grey ground
+"""Writes power_lines.gltf for the wire golden (issue 19; Persson 2014, GPU Pro 5, "Wire
+Antialiasing"): a grey ground
 quad and, against the default sky, wires from LINE_STRIP / LINES primitives whose materials'
 extras give wireRadius: five sagging 1.2 cm cables running away from the camera (from a few
 pixels wide near it to a tenth of a pixel far off), a thick 6 cm lit cable across the view

@@ -178,8 +178,9 @@ void readCavityExtra(Context& context, const std::string& element, const tinyglt
     }
 }
 
-// extras.wireRadius (seed 004 §6): the radius in metres of the wires drawn with this material.
-// Anything but a finite positive number is an error: the lines then stay skipped.
+// extras.wireRadius (Persson 2014, GPU Pro 5, "Wire Antialiasing"): the radius in metres of the
+// wires drawn with this material. Anything but a finite positive number is an error: the lines then
+// stay skipped.
 void readWireRadiusExtra(Context& context, const std::string& element,
                          const tinygltf::Value& extras, Material& material) {
     const tinygltf::Value* value = member(extras, "wireRadius");
@@ -197,11 +198,12 @@ void readWireRadiusExtra(Context& context, const std::string& element,
     material.wireRadius = float(radius);
 }
 
-// extras.hair (seed 004 §5): the material's line primitives are hair strands of this style.
-// Every key is optional (HairStyle's defaults); a key that is present but wrong (a radius not a
-// finite number of metres above 0, a colour not three finite numbers in [0, 1], a shift not
-// finite, an exponent not a finite number above 0) is an error naming
-// materials[i].extras.hair.<key>, and the material makes no hair (its lines stay skipped).
+// extras.hair (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering"): the
+// material's line primitives are hair strands of this style. Every key is optional (HairStyle's
+// defaults); a key that is present but wrong (a radius not a finite number of metres above 0, a
+// colour not three finite numbers in [0, 1], a shift not finite, an exponent not a finite number
+// above 0) is an error naming materials[i].extras.hair.<key>, and the material makes no hair (its
+// lines stay skipped).
 void readHairExtra(Context& context, const std::string& element, const tinygltf::Value& extras,
                    Material& material) {
     const tinygltf::Value* hair = member(extras, "hair");

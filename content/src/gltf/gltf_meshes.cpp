@@ -300,7 +300,8 @@ std::optional<LinePrimitive> readLines(Context& context, const tinygltf::Primiti
     return lines;
 }
 
-// A line primitive whose material has extras.wireRadius: a wire (seed 004 §6).
+// A line primitive whose material has extras.wireRadius: a wire (Persson 2014, GPU Pro 5, "Wire
+// Antialiasing").
 std::optional<Wire> convertWire(Context& context, const tinygltf::Primitive& source,
                                 const std::string& element, std::int32_t material, float radius) {
     auto lines = readLines(context, source, element, "wire");
@@ -313,8 +314,9 @@ std::optional<Wire> convertWire(Context& context, const tinygltf::Primitive& sou
     return wire;
 }
 
-// A line primitive whose material has extras.hair: hair strands (seed 004 §5), each segment
-// pointing from root toward tip as the file orders it.
+// A line primitive whose material has extras.hair: hair strands (Martin et al. 2014, GPU Pro 5,
+// "TressFX: Advanced Real-Time Hair Rendering"), each segment pointing from root toward tip as the
+// file orders it.
 std::optional<Hair> convertHair(Context& context, const tinygltf::Primitive& source,
                                 const std::string& element, std::int32_t material) {
     auto lines = readLines(context, source, element, "hair");

@@ -1,6 +1,7 @@
 // Ambient light of an environment on a surface by the split sum (eq. 7: prefiltered radiance x
-// environment BRDF) or seed 001's mobile fit, plus SH diffuse: one function for the deferred
-// lighting pass and the forward (transparent) pass, so both surfaces see the same sky.
+// environment BRDF) or Karis 2014's ("Physically Based Shading on Mobile") mobile fit, plus SH
+// diffuse: one function for the deferred lighting pass and the forward (transparent) pass, so both
+// surfaces see the same sky.
 #ifndef CANDELA_AMBIENT_LIGHTING_GLSL
 #define CANDELA_AMBIENT_LIGHTING_GLSL
 
@@ -120,7 +121,7 @@ vec3 occludedEnvironmentAmbient(Surface s, vec3 N, vec3 bentNormal, vec3 V, vec4
     return parts.diffuse * diffuseVisibility + specular * specularVisibility;
 }
 
-// The clear coat's reflection of the environment by the split sum (or seed 001's fit on the
+// The clear coat's reflection of the environment by the split sum (or Karis 2014's fit on the
 // mobile path): factor x prefiltered radiance at the coat's reflection vector and roughness x
 // its environment BRDF. The caller scales the layers below by clearCoatAttenuation.
 vec3 clearCoatAmbient(Surface s, vec3 V, samplerCube prefilteredCube, float prefilteredMipCount,

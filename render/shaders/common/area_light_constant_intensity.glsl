@@ -1,13 +1,13 @@
-// Seed 004 section 1's variant for constant-intensity lights (rect and disk, `emission`
-// "constantIntensity"): each element of the light radiates the same intensity in every direction
-// in front of it, I_A per square metre (cd/m^2 of emitting area, Light.intensity), instead of the
-// same luminance. Seen from P the luminance then varies over the light, L(x) = I_A / cos theta_o(x)
-// = I_A |x - P| / h (h: P's height above the light's plane). The seed pre-integrates that varying
-// luminance over the light, normalised by the light's area, into a diffuse factor and a specular
-// factor (over the specular cone's intersection), and multiplies the constant-luminance results
-// at their representative points by them. The pre-integral is closed-form here: the integral of
-// the distance to P over an axis-aligned rectangle of the plane (a disk's, its equal-area
-// square, as the specular cone already takes it).
+// Drobot's (2014, GPU Pro 5, "Physically Based Area Lights") variant for constant-intensity lights
+// (rect and disk, `emission` "constantIntensity"): each element of the light radiates the same
+// intensity in every direction in front of it, I_A per square metre (cd/m^2 of emitting area,
+// Light.intensity), instead of the same luminance. Seen from P the luminance then varies over the
+// light, L(x) = I_A / cos theta_o(x) = I_A |x - P| / h (h: P's height above the light's plane).
+// Drobot pre-integrates that varying luminance over the light, normalised by the light's area, into
+// a diffuse factor and a specular factor (over the specular cone's intersection), and multiplies
+// the constant-luminance results at their representative points by them. The pre-integral is
+// closed-form here: the integral of the distance to P over an axis-aligned rectangle of the plane
+// (a disk's, its equal-area square, as the specular cone already takes it).
 #ifndef CANDELA_AREA_LIGHT_CONSTANT_INTENSITY_GLSL
 #define CANDELA_AREA_LIGHT_CONSTANT_INTENSITY_GLSL
 

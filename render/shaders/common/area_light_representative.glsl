@@ -1,7 +1,8 @@
-// Seed 004 section 1's "representative" area lights (Killzone Shadow Fall, GPU Pro 5) for the
-// one-sided rect and disk lights of area_lights.glsl: one most-important point per lobe instead
-// of an integral. Everything is in world space, relative to the shading point P; the light's
-// plane passes through `center` with unit emitting normal `normal`.
+// Drobot's "representative" area lights (2014, GPU Pro 5, "Physically Based Area Lights", written
+// for Killzone Shadow Fall) for the one-sided rect and disk lights of area_lights.glsl: one
+// most-important point per lobe instead of an integral. Everything is in world space, relative to
+// the shading point P; the light's plane passes through `center` with unit emitting normal
+// `normal`.
 #ifndef CANDELA_AREA_LIGHT_REPRESENTATIVE_GLSL
 #define CANDELA_AREA_LIGHT_REPRESENTATIVE_GLSL
 
@@ -64,7 +65,7 @@ float areaPointIrradiance(AreaShape s, vec3 P, vec3 N, vec3 samplePoint, float a
 
 // Diffuse: the most important point. p_c where the cosine is largest (the normal ray's hit,
 // clamped to the shape), p_r where the distance is smallest (P projected onto the plane,
-// clamped); the sample is where their half vector meets the plane. `unclamped` is the seed's
+// clamped); the sample is where their half vector meets the plane. `unclamped` is Drobot's
 // cheaper variant: the half vector of the unclamped hit and projection.
 float areaRepresentativeDiffuse(AreaShape s, vec3 P, vec3 N, bool unclamped, out vec3 L) {
     float height = dot(P - s.center, s.normal);

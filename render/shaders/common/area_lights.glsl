@@ -4,12 +4,13 @@
 //  - Diffuse, "ltc" mode: the exact form factor with M^-1 = identity: Lambert's edge sum over
 //    a rect clipped to the horizon (ltc.glsl), Heitz and Hill's ellipse for a disk
 //    (ltc_disk.glsl).
-//  - "representative" mode (seed 004 section 1): area_light_representative.glsl.
+//  - "representative" mode (Drobot 2014, GPU Pro 5, "Physically Based Area Lights"):
+//    area_light_representative.glsl.
 //  - A textured rect in "ltc" mode: both lobes over the image's cells (areaLtcTexturedIntegral).
 //  - Specular, "ltc" mode: the fitted LTC (lights/ltc_table_texture.h) over the same shape,
 //    in shaders that bind the table (they define AREA_LIGHT_LTC_MATRIX_BINDING and
 //    AREA_LIGHT_LTC_MAGNITUDE_BINDING before including lights.glsl: the lighting and forward
-//    passes); elsewhere, and in "representative" mode, the seed's specular cone.
+//    passes); elsewhere, and in "representative" mode, Drobot's specular cone.
 // The falloff window is measured to the light's centre, so its culling bound (the falloff
 // sphere cut by the half-space in front) never changes the image.
 #ifndef CANDELA_AREA_LIGHTS_GLSL
@@ -244,7 +245,7 @@ float areaLtcSpecular(AreaShape s, vec3 P, vec3 N, vec3 V, float roughness,
 }
 #endif
 
-// Representative mode's texture reads (seed 004 section 1 gives none; the image at the sample
+// Representative mode's texture reads (Drobot 2014 gives none; the image at the sample
 // point, pre-filtered over the lobe's footprint on the rect): diffuse at the sample along L,
 // over twice the height (the cosine's footprint, as in the LTC read); specular at the centre of
 // the cone's intersection (along L), over the cone's footprint there (2 t tan alpha).
@@ -264,7 +265,7 @@ vec3 areaRepresentativeSpecularTexture(AreaShape s, uint slot, vec3 P, vec3 L, f
 }
 
 // `constantIntensity`: Light.intensity is I_A, and each lobe's constant-luminance result is
-// scaled by the seed's pre-integrated factor (area_light_constant_intensity.glsl), in either mode.
+// scaled by Drobot's pre-integrated factor (area_light_constant_intensity.glsl), in either mode.
 LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alpha,
                                  bool representative, bool constantIntensity) {
     AreaShape s = areaShapeOf(light);
@@ -274,7 +275,7 @@ LightIncidence evaluateAreaLight(Light light, vec3 P, vec3 N, vec3 R, float alph
     uint slot = areaTextureSlot(light);
     // A textured rect's image as each lobe sees it (1 untextured): by LTC over the image's cells
     // (areaLtcTexturedIntegral); in representative mode at the sample point, over the
-    // footprint of the cosine (twice the height) or of the seed's specular cone.
+    // footprint of the cosine (twice the height) or of Drobot's specular cone.
     vec3 diffuseTexel = vec3(1.0);
     vec3 specularTexel = vec3(1.0);
     float height = dot(-toCenter, s.normal);

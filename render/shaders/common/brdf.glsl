@@ -1,12 +1,13 @@
-// BRDF terms of seed 000 section 2.1 (UE4 shading model). Shared by the lighting pass, IBL and
-// the stability tests: change a formula here and every user and test sees it.
+// BRDF terms of Karis 2013, "Real Shading in Unreal Engine 4", "Shading Model" (UE4 shading model).
+// Shared by the lighting pass, IBL and the stability tests: change a formula here and every user
+// and test sees it.
 #ifndef CANDELA_BRDF_GLSL
 #define CANDELA_BRDF_GLSL
 
 #include "common/math.glsl"
 #include "common/specialization_ids.h"
 
-// The BRDF a variant shades with (`--brdf`, RendererOptions::brdf). false: seed 000 exactly
+// The BRDF a variant shades with (`--brdf`, RendererOptions::brdf). false: Karis 2013 exactly
 // (Schlick-Smith visibility, single scattering). true: height-correlated Smith visibility and
 // multiple-scattering energy compensation (render/README.md "BRDF").
 layout(constant_id = SPEC_ENERGY_CONSERVING) const bool kEnergyConserving = true;
@@ -41,8 +42,8 @@ float visibilitySmithSchlick(float alpha, float NoV, float NoL) {
     return 0.25 / (gv * gl);
 }
 
-// Anisotropic GGX (seed 000 section 2.2.1, Burley 2012's D_GGXaniso): alphaT along the tangent
-// T, alphaB along the bitangent B; ToH, BoH, NoH are H in the frame (T, B, N). The seed's
+// Anisotropic GGX (Karis 2013, "Specular D", Burley 2012's D_GGXaniso): alphaT along the tangent
+// T, alphaB along the bitangent B; ToH, BoH, NoH are H in the frame (T, B, N). Karis 2013's
 //   D = 1 / (pi aT aB d^2),  d = ToH^2 / aT^2 + BoH^2 / aB^2 + NoH^2
 // is multiplied through by aT aB here: D = aT aB / (pi s^2), s = ToH^2 aB/aT + BoH^2 aT/aB +
 // aT aB NoH^2. For aT == aB both ratios are exactly 1, so s = ToH^2 + BoH^2 + a2 NoH^2: the
@@ -124,7 +125,8 @@ vec3 fresnelSchlickPow5(vec3 specularColor, float VoH) {
     return saturate(50.0 * specularColor.g) * fc + (1.0 - fc) * specularColor;
 }
 
-// Seed 001's fit of the environment BRDF's (scale, bias), replacing the eq. 8 LUT.
+// Karis 2014's ("Physically Based Shading on Mobile") fit of the environment BRDF's (scale, bias),
+// replacing the eq. 8 LUT.
 vec2 envBrdfApproxScaleBias(float roughness, float NoV) {
     const vec4 c0 = vec4(-1.0, -0.0275, -0.572, 0.022);
     const vec4 c1 = vec4(1.0, 0.0425, 1.04, -0.04);
@@ -133,17 +135,17 @@ vec2 envBrdfApproxScaleBias(float roughness, float NoV) {
     return vec2(-1.04, 1.04) * a004 + r.zw;
 }
 
-// Seed 001: analytic environment BRDF for mobile, replacing the eq. 8 LUT.
+// Karis 2014: analytic environment BRDF for mobile, replacing the eq. 8 LUT.
 vec3 envBrdfApprox(vec3 specularColor, float roughness, float NoV) {
     vec2 ab = envBrdfApproxScaleBias(roughness, NoV);
-    // max(): toward roughness 1 and NoV 1 the fit's bias goes negative (seed 001:
+    // max(): toward roughness 1 and NoV 1 the fit's bias goes negative (Karis 2014:
     // EnvBRDFApprox(F0, 1, 1) = 0.4524 F0 - 0.0024), i.e. a negative reflectance for any F0
     // channel under 0.0053 (Specular 0, dark or saturated metals). Found by
     // tests/render/stability.
     return max(specularColor * ab.x + ab.y, vec3(0.0));
 }
 
-// Seed 001: EnvBRDFApprox(0.04, roughness, NoV) for default non-metals.
+// Karis 2014: EnvBRDFApprox(0.04, roughness, NoV) for default non-metals.
 float envBrdfApproxNonmetal(float roughness, float NoV) {
     const vec2 c0 = vec2(-1.0, -0.0275);
     const vec2 c1 = vec2(1.0, 0.0425);

@@ -1,6 +1,7 @@
-// Image-based lighting math of seed 000 section 2.2.4 (eq. 6-8) and seed 001, shared by the
-// precompute shaders (prefiltered cube, SH irradiance, environment BRDF LUT), the lighting
-// pass (split-sum, mobile and reference modes) and the tests.
+// Image-based lighting math of Karis 2013, "Real Shading in Unreal Engine 4", "Image-Based
+// Lighting" (eq. 6-8) and Karis 2014, "Physically Based Shading on Mobile", shared by the
+// precompute shaders (prefiltered cube, SH irradiance, environment BRDF LUT), the lighting pass
+// (split-sum, mobile and reference modes) and the tests.
 #ifndef CANDELA_IBL_GLSL
 #define CANDELA_IBL_GLSL
 
@@ -222,7 +223,7 @@ vec3 environmentBrdfFromLut(sampler2D lut, vec3 specularColor, float roughness, 
 // E_ss: directional albedo of the single-scattering specular lobe for F0 = 1 at (NoV,
 // roughness), what multipleScatteringCompensation needs for analytic lights: the LUT's
 // height-correlated scale + bias, one read per pixel (not per light), on the mobile path too:
-// seed 001's fit as E_ss is up to 26% low at NoV = 1 and 2.2x low at grazing angles for this
+// Karis 2014's fit as E_ss is up to 26% low at NoV = 1 and 2.2x low at grazing angles for this
 // lobe, and compensating by it made surfaces reflect up to 2.2x the light (tests/render/
 // stability WhiteFurnace). 1 (no compensation) for the UE4 BRDF.
 float specularDirectionalAlbedo(sampler2D lut, float roughness, float NoV) {
@@ -231,7 +232,7 @@ float specularDirectionalAlbedo(sampler2D lut, float roughness, float NoV) {
     return ab.x + ab.y;
 }
 
-// The mobile path's analytic equivalent for image-based light: seed 001's fit of (scale,
+// The mobile path's analytic equivalent for image-based light: Karis 2014's fit of (scale,
 // bias) summed, the E_ss of the fit's own single scattering, so the fit's F_ss E_ss plus the
 // multiple scattering built on it reflect exactly 1 for a white metal in a white furnace.
 float envBrdfApproxDirectionalAlbedo(float roughness, float NoV) {
@@ -253,7 +254,7 @@ vec3 multipleScatteringEnvironmentBrdf(vec3 singleScattering, vec3 specularColor
     return Fms * Ems;
 }
 
-// Seed 001's mobile path: the analytic fit, and its cheaper non-metal form when the material
+// Karis 2014's mobile path: the analytic fit, and its cheaper non-metal form when the material
 // is the default non-metal (Specular 0.5, Metallic 0: F0 = 0.04).
 vec3 environmentBrdfMobile(vec3 specularColor, float roughness, float NoV, bool defaultNonmetal) {
     if (defaultNonmetal) return vec3(envBrdfApproxNonmetal(roughness, NoV));

@@ -1,8 +1,9 @@
-// Linearly transformed cosines (Heitz, Dupuy, Hill and Neubelt 2016) for area lights (seed 004
-// section 1's shapes). A clamped cosine moved by a 3x3 matrix M fits the specular lobe
-// (render/ltc/, candela-ltc-fit); its integral over a polygon equals the plain cosine's integral
-// over the polygon moved by M^-1, which Lambert's edge formula gives in closed form once the
-// polygon is clipped to the horizon. With M^-1 = identity it is the diffuse form factor.
+// Linearly transformed cosines (Heitz, Dupuy, Hill and Neubelt 2016) for area lights (the shapes of
+// Drobot 2014, GPU Pro 5, "Physically Based Area Lights"). A clamped cosine moved by a 3x3 matrix M
+// fits the specular lobe (render/ltc/, candela-ltc-fit); its integral over a polygon equals the
+// plain cosine's integral over the polygon moved by M^-1, which Lambert's edge formula gives in
+// closed form once the polygon is clipped to the horizon. With M^-1 = identity it is the diffuse
+// form factor.
 // All vectors are in the shading frame: +z the normal, the shading point at the origin.
 #ifndef CANDELA_LTC_GLSL
 #define CANDELA_LTC_GLSL

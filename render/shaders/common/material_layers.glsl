@@ -1,9 +1,10 @@
-// Material layers (content::MaterialLayering, seed 000 §2.3.2) blended in the G-buffer pass,
-// before lighting: the blended parameters are what the G-buffer stores, so the lighting pass
-// costs the same whatever the layer count. Compiled only into the G-buffer's layered variants
-// (gbuffer_layered.frag, gbuffer_extended_layered.frag), which frames with a layered material
-// use; the including shader defines MATERIAL_LAYER_TEXTURE_BINDING (the mask, then base
-// colour, metallic-roughness and normal of layers 1, 2 and 3: LayerTextureSlot order).
+// Material layers (content::MaterialLayering, Karis 2013, "Real Shading in Unreal Engine 4",
+// "Material Layering") blended in the G-buffer pass, before lighting: the blended parameters are
+// what the G-buffer stores, so the lighting pass costs the same whatever the layer count. Compiled
+// only into the G-buffer's layered variants (gbuffer_layered.frag, gbuffer_extended_layered.frag),
+// which frames with a layered material use; the including shader defines
+// MATERIAL_LAYER_TEXTURE_BINDING (the mask, then base colour, metallic-roughness and normal of
+// layers 1, 2 and 3: LayerTextureSlot order).
 #ifndef CANDELA_MATERIAL_LAYERS_GLSL
 #define CANDELA_MATERIAL_LAYERS_GLSL
 
@@ -30,7 +31,7 @@ vec4 layeredVertexTint(Material m, vec4 vertexColor) {
 }
 
 // Blends one layer over `s` by weight w. Each layer samples its own textures at its own UV
-// scale (folded into its transforms), the mask at the mask's: the seed's "different
+// scale (folded into its transforms), the mask at the mask's: Karis 2013's "different
 // frequencies". All reads use explicit gradients, so skipping a zero-weight layer is safe.
 void blendLayer(inout MaterialSample s, MaterialLayer l, float w, sampler2D baseColorMap,
                 sampler2D metallicRoughnessMap, sampler2D normalMap, MaterialUv uv,
@@ -46,7 +47,7 @@ void blendLayer(inout MaterialSample s, MaterialLayer l, float w, sampler2D base
         n.xy *= l.parameters.w;
         N = safeNormalize(mat3(T, B, N) * n);
     }
-    // Linear parameters blend linearly (the seed: "a small linear material parameter set");
+    // Linear parameters blend linearly (Karis 2013: "a small linear material parameter set");
     // w = 1 gives the layer's own values exactly.
     s.baseColor.rgb = mix(s.baseColor.rgb, baseColor, w);
     s.metallic = mix(s.metallic, saturate(l.parameters.x * metalRough.b), w);

@@ -1,6 +1,7 @@
-// Thin segments drawn as camera-facing quads (wires, seed 004 §6; hair strands, seed 004 §5):
-// the segment clipped to what the quad may cover, its ends in pixels, and the coverage of a
-// pixel from its distance to the centre line (geometric antialiasing).
+// Thin segments drawn as camera-facing quads (wires, Persson 2014, GPU Pro 5, "Wire Antialiasing";
+// hair strands, Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering"): the
+// segment clipped to what the quad may cover, its ends in pixels, and the coverage of a pixel from
+// its distance to the centre line (geometric antialiasing).
 #ifndef CANDELA_SCREEN_SEGMENT_GLSL
 #define CANDELA_SCREEN_SEGMENT_GLSL
 

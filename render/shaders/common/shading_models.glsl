@@ -131,8 +131,9 @@ vec3 shadeSubsurface(Surface s, vec3 N, vec3 V, LightIncidence inc) {
 }
 
 // Non-photoreal projects: artist DiffuseColor and SpecularColor used as they are, no metallic.
-// At roughness 1 the "fully rough" fold of seed 001 moves the specular into the diffuse
-// (EnvBRDFApprox(SpecularColor, 1, 1) ~ 0.45 * SpecularColor) and skips the GGX lobe.
+// At roughness 1 the "fully rough" fold of Karis 2014, "Physically Based Shading on Mobile" moves
+// the specular into the diffuse (EnvBRDFApprox(SpecularColor, 1, 1) ~ 0.45 * SpecularColor) and
+// skips the GGX lobe.
 vec3 shadeLegacyDiffuseSpecular(Surface s, vec3 N, vec3 V, LightIncidence inc) {
     vec3 diffuseColor = s.baseColor;
     vec3 specularColor = s.customData.rgb;

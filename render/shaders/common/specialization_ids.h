@@ -6,7 +6,8 @@
 // Shading models a variant contains (shading_models.glsl).
 #define SPEC_SUBSURFACE_ENABLED 10
 #define SPEC_LEGACY_DIFFUSE_SPECULAR_ENABLED 11
-// The BRDF (brdf.glsl, --brdf): seed 000's UE4 terms (false) or energy-conserving (true).
+// The BRDF (brdf.glsl, --brdf): Karis 2013's ("Real Shading in Unreal Engine 4") UE4 terms (false)
+// or energy-conserving (true).
 #define SPEC_ENERGY_CONSERVING 12
 // Material extensions a variant contains (shading_models.glsl): KHR_materials_anisotropy and
 // KHR_materials_clearcoat.
@@ -16,7 +17,7 @@
 #define SPEC_SPHERE_LIGHTS_ENABLED 20
 #define SPEC_TUBE_LIGHTS_ENABLED 21
 #define SPEC_SPOT_LIGHTS_ENABLED 22
-// How sphere and tube lights integrate (lights.glsl, --area-lights): seed 000's representative
+// How sphere and tube lights integrate (lights.glsl, --area-lights): Karis 2013's representative
 // point (false) or linearly transformed cosines (true).
 #define SPEC_AREA_LIGHTS_LTC 23
 // Area light shapes a variant contains (lights.glsl, issue 15).

@@ -25,8 +25,8 @@ struct EnvironmentSizes {
 EnvironmentSizes environmentSizesFor(uint32_t sourceCubeFaceSize);
 uint32_t sourceCubeFaceSize(const content::EnvironmentMap& map);
 
-// GGX samples per prefiltered texel: enough with filtered importance sampling (seed 000 notes
-// 64 is what UE4 settled on).
+// GGX samples per prefiltered texel: enough with filtered importance sampling (Karis 2013, "Real
+// Shading in Unreal Engine 4", notes that 64 is what UE4 settled on).
 constexpr uint32_t kPrefilterSampleCount = 64;
 
 // Fills `cube` (all mips), `prefiltered` (all mips) and `irradianceSh` (9 vec4) from `map`;

@@ -1,10 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "ibl_bindings.h"
-// One roughness level of the prefiltered radiance cube (seed 000 PrefilterEnvMap, eq. 7's
-// first sum): GGX importance sampling with n = v = r, NoL weights, and filtered importance
-// sampling -- each sample reads the environment mip whose texel matches the solid angle the
-// sample stands for -- so a small sample count gives a smooth result.
+// One roughness level of the prefiltered radiance cube (PrefilterEnvMap of Karis 2013, "Real
+// Shading in Unreal Engine 4", eq. 7's first sum): GGX importance sampling with n = v = r, NoL
+// weights, and filtered importance sampling -- each sample reads the environment mip whose texel
+// matches the solid angle the sample stands for -- so a small sample count gives a smooth result.
 #include "common/ibl.glsl"
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;

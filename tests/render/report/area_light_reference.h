@@ -21,8 +21,9 @@ inline Vec3 normalized(const Vec3& v) {
     return (1.0 / stability::reference::length(v)) * v;
 }
 
-// D Vis NoL toward unit direction L; Vis is seed 000's Schlick-Smith, or with `correlated` the
-// energy-conserving BRDF's height-correlated Smith (the lobe the LTC table is fitted to).
+// D Vis NoL toward unit direction L; Vis is Karis 2013's ("Real Shading in Unreal Engine 4")
+// Schlick-Smith, or with `correlated` the energy-conserving BRDF's height-correlated Smith (the
+// lobe the LTC table is fitted to).
 inline double specularTimesNoL(const Vec3& V, const Vec3& L, double alpha,
                                bool correlated = false) {
     namespace ref = stability::reference;

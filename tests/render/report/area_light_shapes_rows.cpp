@@ -1,7 +1,7 @@
-// Rows: rect and disk lights (issue 15, render/shaders/common/area_lights.glsl), seed 004's
-// representative point and the LTC mode, diffuse and specular against the same BRDF integrated
-// over the light in double, on a grid of roughness x light size x view; cost against a point
-// light's shading on the device.
+// Rows: rect and disk lights (issue 15, render/shaders/common/area_lights.glsl), Drobot's (2014,
+// GPU Pro 5, "Physically Based Area Lights") representative point and the LTC mode, diffuse and
+// specular against the same BRDF integrated over the light in double, on a grid of roughness x
+// light size x view; cost against a point light's shading on the device.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -77,8 +77,8 @@ double reportTexture(int image, double u, double v) {
 // Diffuse irradiance and specular D Vis(height-correlated Smith) NoL, F0 = 1, per unit
 // luminance, integrated over the light by the midpoint rule (n x n points: the rect's grid, the
 // disk's radius x angle); a textured rect's luminance times its image `image` at each point (n
-// a multiple of 20: no point on either image's edges). A constant-intensity light (seed 004 section
-// 1's variant): per unit intensity per square metre, the luminance towards the point 1 / cos
+// a multiple of 20: no point on either image's edges). A constant-intensity light (Drobot's
+// variant): per unit intensity per square metre, the luminance towards the point 1 / cos
 // theta_o.
 std::array<double, 2> reference(bool disk, int image, bool constantIntensity, double size,
                                 const Vec3& V, double alpha, int n) {
@@ -165,7 +165,7 @@ void addAreaLightShapeRows(ReportContext& context) {
         bool disk;
         Mode mode;
         int image = 0;  // a textured rect's image (reportTexture); 0 untextured
-        // A constant-intensity light (its own reference); `factors`: shaded with the seed's
+        // A constant-intensity light (its own reference); `factors`: shaded with Drobot's
         // pre-integrated factors (else as a Lambertian light of luminance I_A, to show what the
         // factors buy).
         bool constantIntensity = false;

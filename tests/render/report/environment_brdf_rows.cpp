@@ -1,6 +1,6 @@
-// Rows: the environment BRDF (eq. 8) three ways: seed 001's analytic fit (EnvBRDFApprox,
-// mobile), the 128^2 LUT read bilinearly (split sum), and Monte Carlo at run time, each
-// against eq. 8 integrated in double precision.
+// Rows: the environment BRDF (eq. 8) three ways: Karis 2014's ("Physically Based Shading on
+// Mobile") analytic fit (EnvBRDFApprox, mobile), the 128^2 LUT read bilinearly (split sum), and
+// Monte Carlo at run time, each against eq. 8 integrated in double precision.
 #include <cmath>
 #include <cstdio>
 #include <string>

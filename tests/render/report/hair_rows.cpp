@@ -1,9 +1,10 @@
-// Rows: hair self-shadowing (issue 19, seed 004 §5). A ball of 600 or 2,500 strands (4 segments
-// each) 2.5 m ahead under a casting sun, 128x128: the lit hair with self-shadowing from the hair
-// depth map (the fibres in front estimated from the depth range behind the first hair), and
-// without self-shadowing, against the reference that counts the fibres between every shaded
-// fragment and the sun exactly; with the cost of the hair depth map and the resolve, and the
-// depth map's cost per 10,000 strands (10,000 strands, 40,000 segments, 256x256).
+// Rows: hair self-shadowing (issue 19, Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time
+// Hair Rendering"). A ball of 600 or 2,500 strands (4 segments each) 2.5 m ahead under a casting
+// sun, 128x128: the lit hair with self-shadowing from the hair depth map (the fibres in front
+// estimated from the depth range behind the first hair), and without self-shadowing, against the
+// reference that counts the fibres between every shaded fragment and the sun exactly; with the cost
+// of the hair depth map and the resolve, and the depth map's cost per 10,000 strands (10,000
+// strands, 40,000 segments, 256x256).
 #include <cmath>
 #include <cstdio>
 #include <string>

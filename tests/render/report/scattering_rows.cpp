@@ -1,7 +1,7 @@
-// Rows: light shafts (issue 16, seed 004 §2). Epipolar sampling with 1D min/max trees against
-// the brute-force march (every pixel, 512 equal steps through the cascades) on the colonnade
-// with the sun 14 degrees up behind its columns, at 640x360 and 1280x720 (quick: 160x96 with
-// 128 slices of 128 samples).
+// Rows: light shafts (issue 16, Yusov 2014, GPU Pro 5, "High Performance Outdoor Light Scattering
+// Using Epipolar Sampling"). Epipolar sampling with 1D min/max trees against the brute-force march
+// (every pixel, 512 equal steps through the cascades) on the colonnade with the sun 14 degrees up
+// behind its columns, at 640x360 and 1280x720 (quick: 160x96 with 128 slices of 128 samples).
 // The frames hold the in-scattered radiance alone, so the error is the shafts' own. Error:
 // mean |L - L_ref| / mean L_ref (green); the worst case gives the 99th percentile of
 // |L - L_ref| / mean L_ref over the pixels and where the largest one is. Cost: rays marched

@@ -42,7 +42,8 @@ enum class CostFunction : uint32_t {
     // Textured rect lights: the same with the image read once per lobe.
     TexturedRectRepresentative = 25,
     TexturedRectLtc = 26,
-    // Constant-intensity rect and disk lights: the same with seed 004's pre-integrated factors.
+    // Constant-intensity rect and disk lights: the same with Drobot's pre-integrated factors
+    // (2014, GPU Pro 5, "Physically Based Area Lights").
     RectRepresentativeConstantIntensity = 27,
     RectLtcConstantIntensity = 28,
     DiskRepresentativeConstantIntensity = 29,

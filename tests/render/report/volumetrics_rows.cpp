@@ -1,10 +1,10 @@
-// Rows: volumetric lighting (issue 17). Seed 004 §3's per-light volumes and froxels against the
-// per-pixel reference march at 1, 16, 256 and 4,096 point lights scattered through uniform fog
-// in front of a black wall, so every pixel holds only the in-scattered radiance. The lights'
-// range shrinks as they crowd (3 m up to 16 lights, then 3 m x cbrt(16 / n): 1.19 m at 256,
-// 0.47 m at 4,096), as a scene's many small lights do, so the per-light volumes' tiles (or
-// proxy meshes: VolumetricsSettings::volumeProxies, their own rows) skip
-// the lights whose volume they miss. Error: mean
+// Rows: volumetric lighting (issue 17). Vos's (2014, GPU Pro 5, "Volumetric Light Effects in
+// Killzone: Shadow Fall") per-light volumes and froxels against the per-pixel reference march at 1,
+// 16, 256 and 4,096 point lights scattered through uniform fog in front of a black wall, so every
+// pixel holds only the in-scattered radiance. The lights' range shrinks as they crowd (3 m up to 16
+// lights, then 3 m x cbrt(16 / n): 1.19 m at 256, 0.47 m at 4,096), as a scene's many small lights
+// do, so the per-light volumes' tiles (or proxy meshes: VolumetricsSettings::volumeProxies, their
+// own rows) skip the lights whose volume they miss. Error: mean
 // |mode - reference| over the image, relative to the reference's mean. Cost: GPU time of the
 // volumetrics passes (`volumetrics_ms`, median of the repetitions), each mode against the
 // reference. A note gives the light count from which froxels cost less than the volumes.

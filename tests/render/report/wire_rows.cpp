@@ -1,8 +1,8 @@
-// Rows: wires (issue 19, seed 004 §6). An unlit emissive wire across a 64x64 view, 20 px down
-// to 0.1 px wide: the worst error of the radiance summed down a column against width x
-// radiance (energy), and the worst change of a column sum while a 0.3 px wire moves by 1/8
-// pixel over 16 frames (flicker); Persson's clamp with coverage against the naive line a
-// pixel wide, with the wire pass's cost for 2,000 segments at 256x256.
+// Rows: wires (issue 19, Persson 2014, GPU Pro 5, "Wire Antialiasing"). An unlit emissive wire
+// across a 64x64 view, 20 px down to 0.1 px wide: the worst error of the radiance summed down a
+// column against width x radiance (energy), and the worst change of a column sum while a 0.3 px
+// wire moves by 1/8 pixel over 16 frames (flicker); Persson's clamp with coverage against the naive
+// line a pixel wide, with the wire pass's cost for 2,000 segments at 256x256.
 #include <cmath>
 #include <cstdio>
 #include <string>

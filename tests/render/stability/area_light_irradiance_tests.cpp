@@ -1,8 +1,8 @@
-// Rect and disk lights (issue 15, render/shaders/common/area_lights.glsl) on the device:
-// irradiance on a floor under a ceiling light against the closed-form form factors. The "ltc"
-// mode's diffuse (Lambert's edge sum; Heitz and Hill's disk integral) within 1 %; seed 004's
-// representative point within 5 % under the centre and 8 % elsewhere where it can hold, with its
-// worst error on the whole grid printed.
+// Rect and disk lights (issue 15, render/shaders/common/area_lights.glsl) on the device: irradiance
+// on a floor under a ceiling light against the closed-form form factors. The "ltc" mode's diffuse
+// (Lambert's edge sum; Heitz and Hill's disk integral) within 1 %; Drobot's representative point
+// (2014, GPU Pro 5, "Physically Based Area Lights") within 5 % under the centre and 8 % elsewhere
+// where it can hold, with its worst error on the whole grid printed.
 //
 // Where it cannot: off the centre, once the point's projection leaves the light (or its normal
 // ray misses it), p_c and p_r are both the light's nearest edge point, so the sample is the
@@ -12,7 +12,7 @@
 // overestimate peaks near o = h at about s / h (measured on the host in double: s / h = 0.05 ->
 // 5.6 %, 0.1 -> 11 %, 0.25 -> 29 %, 0.5 -> 60 %, 1 -> 123 % at o = 1.5 h). So the 8 % holds at
 // every offset only for lights under h / 14 across, and for lights up to h / 8 within h / 4 of
-// the centre (the error grows with o there); past that the seed's point is not a bound, and
+// the centre (the error grows with o there); past that Drobot's point is not a bound, and
 // the ltc mode (1 %) is the one to use.
 #include <gtest/gtest.h>
 
@@ -90,7 +90,7 @@ TEST(AreaLightIrradiance, FloorUnderRectAndDiskMatchesTheFormFactor) {
         const double representative = std::fabs(values[i][1] / c.reference - 1.0);
         anywhere.add(representative, describe);
         unclamped.add(std::fabs(values[i][2] / c.reference - 1.0), describe);
-        // The seed's point stands for the whole light off the centre while the light is small
+        // Drobot's point stands for the whole light off the centre while the light is small
         // against its height: under h / 14 at any offset, under h / 8 within h / 4 (see the top).
         if (c.offset == 0.0) {
             centre.add(representative, describe);
@@ -126,14 +126,14 @@ double parallelRectangleSolidAngle(double x0, double x1, double y0, double y1, d
     return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
 }
 
-// Seed 004 section 1's constant-intensity variant on the floor grid: the exact Lambertian
-// irradiance times the pre-integrated diffuse factor (area_light_constant_intensity.glsl)
-// against the closed form I_A x solid angle, for rects. The factor is the luminance averaged
-// over the light's area, not weighted by what each part delivers, so it holds while the
-// luminance I_A r / h varies little over the light: within 2.5 % for lights up to h / 2
-// across (host double: s / h 0.5 -> 2.0 % worst, at o = h), 7.5 % at s = h, 23 % at 2 h, and
-// a light 24 h across (the grid's 6 m at 0.25 m) is 3.2x over, its far parts' large luminance
-// counted at full area; printed with the whole grid's worst.
+// Drobot's (2014, GPU Pro 5, "Physically Based Area Lights") constant-intensity variant on the
+// floor grid: the exact Lambertian irradiance times the pre-integrated diffuse factor
+// (area_light_constant_intensity.glsl) against the closed form I_A x solid angle, for rects. The
+// factor is the luminance averaged over the light's area, not weighted by what each part delivers,
+// so it holds while the luminance I_A r / h varies little over the light: within 2.5 % for lights
+// up to h / 2 across (host double: s / h 0.5 -> 2.0 % worst, at o = h), 7.5 % at s = h, 23 % at 2
+// h, and a light 24 h across (the grid's 6 m at 0.25 m) is 3.2x over, its far parts' large
+// luminance counted at full area; printed with the whole grid's worst.
 TEST(AreaLightIrradiance, ConstantIntensityRectFactorTracksTheSolidAngle) {
     ComputeHarness harness;
     std::vector<Case> cases;

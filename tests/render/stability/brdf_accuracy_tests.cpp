@@ -161,9 +161,10 @@ TEST(BrdfAccuracy, GgxDistributionWithinItsFp32Conditioning) {
     EXPECT_LE(conditioned.error, 1.0);
 }
 
-// Seed 001's fit has outputs in [0, ~1] reflectance units, crossing zero in its bias term, so
-// it is judged in absolute terms: 1e-5 of full reflectance. brdf.glsl clamps the result at 0
-// (the fit's bias is negative near roughness 1, NoV 1), which the reference mirrors.
+// Karis 2014's ("Physically Based Shading on Mobile") fit has outputs in [0, ~1] reflectance units,
+// crossing zero in its bias term, so it is judged in absolute terms: 1e-5 of full reflectance.
+// brdf.glsl clamps the result at 0 (the fit's bias is negative near roughness 1, NoV 1), which the
+// reference mirrors.
 TEST(BrdfAccuracy, EnvBrdfApproxWithin1e5Absolute) {
     const AccuracyRun& run = accuracyRun();
     EXPECT_EQ(run.validationMessages, 0u);

@@ -1,7 +1,8 @@
 #pragma once
-// Double-precision reference of the BRDF terms, written from the formulas of seed 000 section
-// 2.1 (eq. 1-5) and seed 001 (EnvBRDFApprox), in forms chosen to be independent of the GLSL's
-// operation order (tan form of GGX, Smith's G1 quotients, Heitz's Lambda).
+// Double-precision reference of the BRDF terms, written from the formulas of Karis 2013, "Real
+// Shading in Unreal Engine 4", "Shading Model" (eq. 1-5) and Karis 2014, "Physically Based Shading
+// on Mobile" (EnvBRDFApprox), in forms chosen to be independent of the GLSL's operation order (tan
+// form of GGX, Smith's G1 quotients, Heitz's Lambda).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -67,14 +68,14 @@ inline double fresnelSchlickPow5(double f0, double f0Green, double VoH) {
     return f0 * (1.0 - grazing) + saturate(50.0 * f0Green) * grazing;
 }
 
-// Seed 001's fit as scale and bias of F0: F0 * A + B.
+// Karis 2014's fit as scale and bias of F0: F0 * A + B.
 struct ScaleBias {
     double scale;
     double bias;
 };
 
 inline ScaleBias envBrdfApproxScaleBias(double roughness, double NoV) {
-    // Coefficients of seed 001, written per output: r = roughness * c0 + c1.
+    // Coefficients of Karis 2014, written per output: r = roughness * c0 + c1.
     const double rx = 1.0 - roughness;
     const double ry = 0.0425 - 0.0275 * roughness;
     const double rz = 1.04 - 0.572 * roughness;
@@ -88,7 +89,7 @@ inline double envBrdfApprox(double f0, double roughness, double NoV) {
     return f0 * ab.scale + ab.bias;
 }
 
-// Seed 001's non-metal variant returns a004 itself.
+// Karis 2014's non-metal variant returns a004 itself.
 inline double envBrdfApproxNonmetal(double roughness, double NoV) {
     const double rx = 1.0 - roughness;
     return std::min(rx * rx, std::exp2(-9.28 * NoV)) * rx + (0.0425 - 0.0275 * roughness);

@@ -1,8 +1,8 @@
 #pragma once
-// Where the shared shading terms break in half precision (seed 001's mobile shaders compute in
-// `half`): each term is run with every operation rounded to binary16 (fp16_shading.h over
-// Half) and compared with the double reference over a grid of inputs. The findings become
-// FP16_REPORT.md.
+// Where the shared shading terms break in half precision (Karis 2014's ("Physically Based Shading
+// on Mobile") mobile shaders compute in `half`): each term is run with every operation rounded to
+// binary16 (fp16_shading.h over Half) and compared with the double reference over a grid of inputs.
+// The findings become FP16_REPORT.md.
 #include <string>
 #include <vector>
 

@@ -1,8 +1,9 @@
-// White furnace of the shared specular terms on the device (seed 000 eq. 2-5 with F0 = 1): the
-// directional albedo of D * Vis * F must not exceed 1 for any roughness or view angle, and the
-// projected GGX distribution must integrate to 1. The energy-conserving BRDF's compensated lobe
-// (height-correlated Smith x multipleScatteringCompensation, E_ss from the engine's LUT and
-// from seed 001's fit) must not exceed 1 for any F0 either, and must reach ~1 for F0 = 1.
+// White furnace of the shared specular terms on the device (Karis 2013, "Real Shading in Unreal
+// Engine 4", eq. 2-5 with F0 = 1): the directional albedo of D * Vis * F must not exceed 1 for any
+// roughness or view angle, and the projected GGX distribution must integrate to 1. The
+// energy-conserving BRDF's compensated lobe (height-correlated Smith x
+// multipleScatteringCompensation, E_ss from the engine's LUT and from Karis 2014's ("Physically
+// Based Shading on Mobile") fit) must not exceed 1 for any F0 either, and must reach ~1 for F0 = 1.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -165,7 +166,7 @@ TEST(WhiteFurnace, ProjectedGgxIntegratesToOne) {
 // single-scattering albedo x (1 + F0 (1 / E_ss - 1)), over the whole grid and F0 from 0.01
 // (under the 2% rule) to 1, with E_ss as the renderer reads it for lights: the LUT's height-
 // correlated scale + bias. For F0 = 1 it must also give back the lost energy: 0.95 to 1.01
-// from roughness 0.25 on (NoV >= 0.1). Printed only: the same with seed 001's fit as E_ss,
+// from roughness 0.25 on (NoV >= 0.1). Printed only: the same with Karis 2014's fit as E_ss,
 // which overshoots (why the mobile path's lights read the LUT too).
 TEST(WhiteFurnace, CompensatedLobeNeverExceedsOneAndRestoresRoughMetals) {
     EXPECT_EQ(furnace().validationMessages, 0u);

@@ -1,7 +1,8 @@
 #pragma once
-// IEEE 754 binary16 emulation on the CPU, for the fp16 report: seed 001's mobile shaders compute
-// in `half`. roundToHalf() rounds a float to the nearest binary16 value (ties to even, gradual
-// underflow to subnormals, overflow to infinity); Half rounds after every operation.
+// IEEE 754 binary16 emulation on the CPU, for the fp16 report: Karis 2014's ("Physically Based
+// Shading on Mobile") mobile shaders compute in `half`. roundToHalf() rounds a float to the nearest
+// binary16 value (ties to even, gradual underflow to subnormals, overflow to infinity); Half rounds
+// after every operation.
 //
 // Doing each operation in float and then rounding is correctly rounded binary16 arithmetic: for
 // +, -, *, / and sqrt, double rounding is innocuous when the wider format has at least 2p + 2

@@ -1,8 +1,8 @@
 #pragma once
-// Double-precision reference of the light incidence terms of seed 000 section 2.4 (eq. 9-20),
-// plus numerical integrations of what the closed forms stand for: the irradiance of a
-// uniformly emitting sphere (partly below the horizon too) and of a uniformly emitting
-// segment.
+// Double-precision reference of the light incidence terms of Karis 2013, "Real Shading in Unreal
+// Engine 4", "Lighting Model" (eq. 9-20), plus numerical integrations of what the closed forms
+// stand for: the irradiance of a uniformly emitting sphere (partly below the horizon too) and of a
+// uniformly emitting segment.
 #include <algorithm>
 #include <array>
 #include <cmath>

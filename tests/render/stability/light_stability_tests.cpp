@@ -1,9 +1,9 @@
-// Hard inputs for the shared light incidence on the device (seed 000 eq. 9-20): distances 0,
-// denormal, 1e-6 .. 1e6 m; sources on the normal, on the horizon and below it; sphere radii and
-// tube lengths 0, denormal, 1e-25 .. 1e6 m (far larger than the distance too); 0 and 1e9 lm;
-// attenuation radii from 1 um to infinite; point and spot lights. Nothing may be NaN, Inf or
-// negative; zero radius and length must give exactly the point light; vanishing ones must
-// come within 1e-5 of it.
+// Hard inputs for the shared light incidence on the device (Karis 2013, "Real Shading in Unreal
+// Engine 4", eq. 9-20): distances 0, denormal, 1e-6 .. 1e6 m; sources on the normal, on the horizon
+// and below it; sphere radii and tube lengths 0, denormal, 1e-25 .. 1e6 m (far larger than the
+// distance too); 0 and 1e9 lm; attenuation radii from 1 um to infinite; point and spot lights.
+// Nothing may be NaN, Inf or negative; zero radius and length must give exactly the point light;
+// vanishing ones must come within 1e-5 of it.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -1,10 +1,10 @@
-// Tube light diffuse (seed 000 section 2.4.2.6): the shared lineIrradiance (eq. 16) against a CPU
-// numerical integration along the segment. Eq. 15, which eq. 16 is built on, is the exact
-// integral of n.L / |L|^3 along the segment for any orientation (perpendicular, oblique or
-// pointing at the shaded point) - but n.L is integrated with its sign, so eq. 16 is exact
-// only while the whole segment is above the horizon; across it, saturate() of the signed
-// integral under-estimates the clamped one. The +2e-4 (eq. 16's "+2" in metres) departs from
-// a per-point 1 / (d^2 + 1e-4) falloff by ~1e-4 / d^2, negligible from 1 m.
+// Tube light diffuse (Karis 2013, "Real Shading in Unreal Engine 4", "Tube Lights"): the shared
+// lineIrradiance (eq. 16) against a CPU numerical integration along the segment. Eq. 15, which
+// eq. 16 is built on, is the exact integral of n.L / |L|^3 along the segment for any orientation
+// (perpendicular, oblique or pointing at the shaded point) - but n.L is integrated with its sign,
+// so eq. 16 is exact only while the whole segment is above the horizon; across it, saturate() of
+// the signed integral under-estimates the clamped one. The +2e-4 (eq. 16's "+2" in metres) departs
+// from a per-point 1 / (d^2 + 1e-4) falloff by ~1e-4 / d^2, negligible from 1 m.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,7 @@
-// Sphere light diffuse (seed 000 section 2.4.2.5): the shared sphereIrradianceFactor and
-// evaluateLocalLight's sphere diffuse against a CPU numerical integration of the irradiance of a
-// uniformly emitting sphere, including spheres partly and wholly below the horizon.
+// Sphere light diffuse (Karis 2013, "Real Shading in Unreal Engine 4", "Sphere Lights"): the shared
+// sphereIrradianceFactor and evaluateLocalLight's sphere diffuse against a CPU numerical
+// integration of the irradiance of a uniformly emitting sphere, including spheres partly and wholly
+// below the horizon.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,9 +1,9 @@
 #pragma once
-// Hair (seed 004 §5, TressFX-style strands): polylines from root to tip, drawn by the hair pass
-// as camera-facing quads into a per-pixel linked list, sorted and blended per pixel. Made from
-// a glTF LINES / LINE_STRIP primitive whose material's extras has a `hair` object
-// (Material::hair, content/README.md), or generated on a mesh's surface (generateHair, for
-// scene files and the demo).
+// Hair (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering", TressFX-style
+// strands): polylines from root to tip, drawn by the hair pass as camera-facing quads into a
+// per-pixel linked list, sorted and blended per pixel. Made from a glTF LINES / LINE_STRIP
+// primitive whose material's extras has a `hair` object (Material::hair, content/README.md), or
+// generated on a mesh's surface (generateHair, for scene files and the demo).
 #include <array>
 #include <cstdint>
 #include <vector>

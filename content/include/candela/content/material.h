@@ -31,12 +31,12 @@ struct TextureRef {
     bool present() const { return texture >= 0; }
 };
 
-// Material layers (seed 000 §2.3.2): a material built by blending a few layers, each a small
-// linear set of parameters with its own textures at its own UV scale, by per-pixel masks.
-// Layers come from a scene file's shared library ("materialLayers") by name; a material's
-// copies may change any parameter (scene_file.h). The G-buffer shader blends them before
-// lighting, so the lighting cost does not grow with the layer count (render/README.md
-// "Material layers").
+// Material layers (Karis 2013, "Real Shading in Unreal Engine 4", "Material Layering"): a material
+// built by blending a few layers, each a small linear set of parameters with its own textures at
+// its own UV scale, by per-pixel masks. Layers come from a scene file's shared library
+// ("materialLayers") by name; a material's copies may change any parameter (scene_file.h). The
+// G-buffer shader blends them before lighting, so the lighting cost does not grow with the layer
+// count (render/README.md "Material layers").
 //
 // At most four layers: the base and three over it, weighted by one RGBA mask's R, G and B. One
 // mask texture then gives every weight in a single fetch, and four keeps the blend (three
@@ -74,12 +74,13 @@ struct MaterialLayering {
     bool used() const { return !layers.empty(); }
 };
 
-// A hair material (seed 004 §5): the strand's radius from root to tip, its colour (K_d of the
-// diffuse K_d sin(t, l)) and Kajiya-Kay's two highlights, each from a tangent tilted toward
-// the normal by its shift (the primary toward the tip, coloured by the light; the secondary
-// toward the root, coloured by the light and the hair) and sharpened by its exponent.
-// glTF: material extras `hair` {rootRadius, tipRadius, color, primaryShift, secondaryShift,
-// primaryExponent, secondaryExponent} (content/README.md).
+// A hair material (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering"):
+// the strand's radius from root to tip, its colour (K_d of the diffuse K_d sin(t, l)) and
+// Kajiya-Kay's two highlights, each from a tangent tilted toward the normal by its shift (the
+// primary toward the tip, coloured by the light; the secondary toward the root, coloured by the
+// light and the hair) and sharpened by its exponent. glTF: material extras `hair` {rootRadius,
+// tipRadius, color, primaryShift, secondaryShift, primaryExponent, secondaryExponent}
+// (content/README.md).
 struct HairStyle {
     float rootRadius = 4e-5f;                         // metres
     float tipRadius = 1e-5f;                          // metres
@@ -105,9 +106,9 @@ struct Material {
     float normalScale = 1;
     TextureRef occlusionTexture;  // linear; R = occlusion
     float occlusionStrength = 1;
-    // UE4's Cavity (seed 000 §2.3): small-scale shadowing of the ambient (sky) light finer than
-    // the runtime shadows and AO resolve, in [0, 1]; 1: none. Read from extras.cavity. Combined
-    // with the occlusion texture by min (render/README.md "Ambient occlusion").
+    // UE4's Cavity (Karis 2013, "Material Model"): small-scale shadowing of the ambient (sky) light
+    // finer than the runtime shadows and AO resolve, in [0, 1]; 1: none. Read from extras.cavity.
+    // Combined with the occlusion texture by min (render/README.md "Ambient occlusion").
     float cavity = 1;
     TextureRef emissiveTexture;  // sRGB
     std::array<float, 3> emissiveFactor{0, 0, 0};
@@ -153,7 +154,8 @@ struct Material {
     // 0: lines with it are skipped.
     float wireRadius = 0;
 
-    // extras.hair (seed 004 §5): line primitives with this material are hair strands (hair.h).
+    // extras.hair (Martin et al. 2014): line primitives with this material are hair strands
+    // (hair.h).
     std::optional<HairStyle> hair;
 
     MaterialLayering layering;  // compiled out of frames without layered materials

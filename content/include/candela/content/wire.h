@@ -1,7 +1,7 @@
 #pragma once
-// A wire (seed 004 §6): a thin cylinder along a polyline, drawn by the wire pass as
-// camera-facing ribbons at least a pixel wide whose alpha keeps the real width's energy. Made
-// from a glTF LINES / LINE_STRIP / LINE_LOOP primitive whose material's extras gives
+// A wire (Persson 2014, GPU Pro 5, "Wire Antialiasing"): a thin cylinder along a polyline, drawn by
+// the wire pass as camera-facing ribbons at least a pixel wide whose alpha keeps the real width's
+// energy. Made from a glTF LINES / LINE_STRIP / LINE_LOOP primitive whose material's extras gives
 // `wireRadius`, or in code (the demo's power lines).
 #include <array>
 #include <cstdint>

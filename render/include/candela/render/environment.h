@@ -1,9 +1,10 @@
 #pragma once
-// Image-based lighting for one HDR environment (seed 000 section 2.2.4, eq. 6-8): the
-// environment cube with mips (sky background, reference mode), the GGX-prefiltered radiance
-// cube with one roughness per mip (split sum), and order-2 spherical-harmonic irradiance
-// (diffuse). Built on the device from an OpenEXR file; the results are cached on disk under
-// the file's content hash, so a second run reads them instead of recomputing.
+// Image-based lighting for one HDR environment (Karis 2013, "Real Shading in Unreal Engine 4",
+// "Image-Based Lighting", eq. 6-8): the environment cube with mips (sky background, reference
+// mode), the GGX-prefiltered radiance cube with one roughness per mip (split sum), and order-2
+// spherical-harmonic irradiance (diffuse). Built on the device from an OpenEXR file; the results
+// are cached on disk under the file's content hash, so a second run reads them instead of
+// recomputing.
 //
 //   content::Diagnostics diagnostics;
 //   resources.setEnvironment(Environment::load(context, "sky.exr", diagnostics));

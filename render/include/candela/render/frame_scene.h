@@ -96,9 +96,11 @@ struct FrameScene {
     std::span<const glm::mat4> jointMatrices;
     std::span<const float> morphWeights;
     std::span<const LightInstance> lights;
-    // Wires (seed 004 §6): drawn by the wire pass after the lit frame, not by the mesh passes.
+    // Wires (Persson 2014, GPU Pro 5, "Wire Antialiasing"): drawn by the wire pass after the lit
+    // frame, not by the mesh passes.
     std::span<const WireDraw> wires;
-    // Hair (seed 004 §5): drawn by the hair pass (an A-buffer) after the lit frame.
+    // Hair (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering"): drawn by
+    // the hair pass (an A-buffer) after the lit frame.
     std::span<const HairDraw> hair;
     // Light slots whose data changed since the previous frame. When lightsRestructured is set
     // (lights added or removed, or the caller does not track changes) every light is rewritten.

@@ -39,8 +39,8 @@
 #define HAIR_MODE_COVERAGE 1
 
 // The push block's `selfShadow` (RendererOptions::hairSelfShadow): none; the hair depth map's
-// estimate of the fibres in front (seed 004 §5); or the reference, every segment between the
-// fragment and the light counted exactly.
+// estimate of the fibres in front (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair
+// Rendering"); or the reference, every segment between the fragment and the light counted exactly.
 #define HAIR_SELF_SHADOW_OFF 0
 #define HAIR_SELF_SHADOW_DEPTH_MAP 1
 #define HAIR_SELF_SHADOW_REFERENCE 2

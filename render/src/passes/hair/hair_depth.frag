@@ -3,11 +3,11 @@
 #include "common/clusters.glsl"
 #include "hair_bindings.h"
 #include "hair_segment.glsl"
-// Hair writes depth after it is drawn (seed 004 §5), so later passes (blended surfaces, depth
-// effects) see it: where the pixel's strands together are at least half opaque
-// (1 - prod(1 - coverage) >= 1/2, independent of the list's order), the nearest strand's
-// depth. Thinner hair leaves the depth as it was. Every strand passed the scene's depth test
-// in the fill, so the nearest is never behind what the depth held.
+// Hair writes depth after it is drawn (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time
+// Hair Rendering"), so later passes (blended surfaces, depth effects) see it: where the pixel's
+// strands together are at least half opaque (1 - prod(1 - coverage) >= 1/2, independent of the
+// list's order), the nearest strand's depth. Thinner hair leaves the depth as it was. Every strand
+// passed the scene's depth test in the fill, so the nearest is never behind what the depth held.
 
 void main() {
     uint node = heads[pixelIndex(gl_FragCoord.xy)];

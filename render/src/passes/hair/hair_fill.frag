@@ -4,11 +4,12 @@
 #include "common/screen_segment.glsl"
 #include "hair_bindings.h"
 #include "hair_segment.glsl"
-// The A-buffer fill (seed 004 §5): every strand fragment in front of the scene's depth
-// (tested before this shader runs) is pushed onto its pixel's linked list, unsorted and
-// unshaded: its depth, segment and coverage (GPAA: the distance to the strand's edge,
-// common/screen_segment.glsl). Colour, order and light come in hair_resolve.frag. A full node
-// pool drops the fragment; the counter still counts it, so --stats shows how many were lost.
+// The A-buffer fill (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering"):
+// every strand fragment in front of the scene's depth (tested before this shader runs) is pushed
+// onto its pixel's linked list, unsorted and unshaded: its depth, segment and coverage (GPAA: the
+// distance to the strand's edge, common/screen_segment.glsl). Colour, order and light come in
+// hair_resolve.frag. A full node pool drops the fragment; the counter still counts it, so --stats
+// shows how many were lost.
 layout(early_fragment_tests) in;
 
 layout(std430, binding = HAIR_BINDING_COUNTERS) buffer Counters {

@@ -7,13 +7,13 @@
 // The vertex stage writes no storage (the lists are the fragment stage's).
 #define HAIR_NO_LISTS
 #include "hair_segment.glsl"
-// Hair geometry (seed 004 §5): each strand segment becomes a camera-facing quad, six vertices
-// per segment and no vertex buffer. Its half width is the strand's radius at each end
-// projected at that end's depth (the world-space expansion), and the quad reaches a further
-// sqrt(2)/2 px beyond it on screen so that even a strand far thinner than a pixel covers every
-// pixel centre whose box it touches: hair_fill.frag turns the distance to the centre line into
-// coverage. The shared pieces (clipping, pixels, coverage) are the wire pass's
-// (common/screen_segment.glsl).
+// Hair geometry (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering"): each
+// strand segment becomes a camera-facing quad, six vertices per segment and no vertex buffer. Its
+// half width is the strand's radius at each end projected at that end's depth (the world-space
+// expansion), and the quad reaches a further sqrt(2)/2 px beyond it on screen so that even a strand
+// far thinner than a pixel covers every pixel centre whose box it touches: hair_fill.frag turns the
+// distance to the centre line into coverage. The shared pieces (clipping, pixels, coverage) are the
+// wire pass's (common/screen_segment.glsl).
 
 layout(location = 0) flat out vec4 outEndsPx;       // xy start, zw end (pixels)
 layout(location = 1) flat out vec2 outHalfWidthPx;  // the real radius in pixels at each end

@@ -1,11 +1,11 @@
 #pragma once
-// Hair (seed 004 §5, TressFX-style strands; render/README.md "Hair"): strand segments
-// (content/hair.h) drawn as camera-facing quads into a per-pixel linked list (an A-buffer:
-// hair_fill.*), then resolved per pixel (hair_resolve.frag: sorted, the nearest fully shaded
-// with Kajiya-Kay, the rest blended cheaply) over the lit frame, and finally written into the
-// depth buffer where the hair is at least half opaque (hair_depth.frag). The node pool holds
-// RendererOptions::hairNodesPerPixel nodes per pixel; fragments beyond it are dropped and
-// counted (--stats hair_nodes_dropped).
+// Hair (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering", TressFX-style
+// strands; render/README.md "Hair"): strand segments (content/hair.h) drawn as camera-facing quads
+// into a per-pixel linked list (an A-buffer: hair_fill.*), then resolved per pixel
+// (hair_resolve.frag: sorted, the nearest fully shaded with Kajiya-Kay, the rest blended cheaply)
+// over the lit frame, and finally written into the depth buffer where the hair is at least half
+// opaque (hair_depth.frag). The node pool holds RendererOptions::hairNodesPerPixel nodes per pixel;
+// fragments beyond it are dropped and counted (--stats hair_nodes_dropped).
 #include <glm/glm.hpp>
 #include <span>
 

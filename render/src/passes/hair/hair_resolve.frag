@@ -2,13 +2,14 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/specialization_ids.h"
 #include "hair_bindings.h"
-// The A-buffer resolve (seed 004 §5): walks the pixel's list to find the HAIR_FULLY_SHADED
-// nearest fragments in order (ties broken by segment index, so the result never depends on
-// the order the fill pushed them in), shades those fully and blends them front to back; the rest,
-// behind them, blend cheaply as one layer: their total opacity 1 - prod(1 - a) with their
-// coverage-weighted mean colour lit as the fully shaded ones are on average (their radiance
-// over their colour). Sums and products commute, so shuffling the strands changes nothing but
-// rounding. Output straight alpha, blended "over" the lit frame.
+// The A-buffer resolve (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair
+// Rendering"): walks the pixel's list to find the HAIR_FULLY_SHADED nearest fragments in order
+// (ties broken by segment index, so the result never depends on the order the fill pushed them in),
+// shades those fully and blends them front to back; the rest, behind them, blend cheaply as one
+// layer: their total opacity 1 - prod(1 - a) with their coverage-weighted mean colour lit as the
+// fully shaded ones are on average (their radiance over their colour). Sums and products commute,
+// so shuffling the strands changes nothing but rounding. Output straight alpha, blended "over" the
+// lit frame.
 //
 // Shading: Kajiya-Kay with TressFX's two highlights. Diffuse K_d sin(t, l) / pi with t the
 // strand's tangent; specular from tangents tilted toward the normal by the style's shifts,
@@ -16,10 +17,10 @@
 // the secondary by the light and the hair. Lit by the clustered lights (with their shadows)
 // and the sky's irradiance.
 //
-// Self-shadowing (seed 004 §5: "approximated from a shadow map of the hair's depth, where the
-// depth range is the distance of the shaded fragment from the map's depth"; the seed's formula
-// is TressFX's): a fragment a depth range Δd behind the first hair in the light's hair depth
-// map (hair_shadow.vert) has about n = Δd / (HAIR_FIBRE_SPACING x r) fibres in front of it, r
+// Self-shadowing (Martin et al. 2014: "approximated from a shadow map of the hair's depth, where
+// the depth range is the distance of the shaded fragment from the map's depth"; the formula is
+// TressFX's): a fragment a depth range Δd behind the first hair in the light's hair
+// depth map (hair_shadow.vert) has about n = Δd / (HAIR_FIBRE_SPACING x r) fibres in front of it, r
 // its strand's radius, each letting 1 - α through (α = HAIR_SHADOW_OPACITY), so its direct
 // light is scaled by (1 - α)^n = exp(-k · density · Δd) with k = -ln(1 - α) and density = 1 /
 // (HAIR_FIBRE_SPACING x r) fibres per metre. The reference counts the fibres between the

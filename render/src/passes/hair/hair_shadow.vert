@@ -11,12 +11,13 @@
 #define SHADOW_LIGHTS_BINDING HAIR_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
 #include "common/screen_segment.glsl"
-// The hair depth map (seed 004 §5, self-shadowing): each strand segment as a quad facing the
-// light, drawn into shadow view draw.shadowView's tile of a depth image laid out as the shadow
-// atlas, so the resolve finds a point's first hair where it finds its opaque blocker. The quad
-// is the strand's radius wide at each end plus sqrt(2)/2 texel, so a strand thinner than a
-// texel still marks every texel it touches (the hair fill's expansion, in shadow texels).
-// The depth test keeps the nearest strand whatever the order of the segments.
+// The hair depth map (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering",
+// self-shadowing): each strand segment as a quad facing the light, drawn into shadow view
+// draw.shadowView's tile of a depth image laid out as the shadow atlas, so the resolve finds a
+// point's first hair where it finds its opaque blocker. The quad is the strand's radius wide at
+// each end plus sqrt(2)/2 texel, so a strand thinner than a texel still marks every texel it
+// touches (the hair fill's expansion, in shadow texels). The depth test keeps the nearest strand
+// whatever the order of the segments.
 
 const float kExpansionTexels = 0.70710678;  // sqrt(2) / 2
 

@@ -1,11 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "scattering_bindings.h"
-// Light shafts, step 1 (seed 004 §2): the epipolar samples. Each sample of each slice gets
-// its pixel position, evenly spaced from the slice's entry to its exit point, and the view
-// distance there from the depth buffer. The first sample of a slice also stores the slice's
-// end points and, per cascade, the line its plane cuts from the cascade's map, which the
-// trees (scattering_tree.comp) are built along.
+// Light shafts, step 1 (Yusov 2014, GPU Pro 5, "High Performance Outdoor Light Scattering Using
+// Epipolar Sampling"): the epipolar samples. Each sample of each slice gets its pixel position,
+// evenly spaced from the slice's entry to its exit point, and the view distance there from the
+// depth buffer. The first sample of a slice also stores the slice's end points and, per cascade,
+// the line its plane cuts from the cascade's map, which the trees (scattering_tree.comp) are built
+// along.
 #include "scattering_epipolar.glsl"
 #include "scattering_march.glsl"
 

@@ -1,9 +1,10 @@
-// Epipolar geometry on the screen (seed 004 §2 step 1; Yusov 2013 section 3): slice k's line
-// runs from the sun's projection to the exit point k on the screen border, the exit points
-// spaced evenly around it (in pixels, counter-clockwise from the bottom-left corner). The line
-// enters the screen where the ray from the sun first meets it (at the sun when it is on the
-// screen); a line whose exit point faces the sun crosses no pixel and is invalid. A pixel
-// belongs between the two slices around the exit point of the ray from the sun through it.
+// Epipolar geometry on the screen (Yusov 2014, GPU Pro 5, "High Performance Outdoor Light
+// Scattering Using Epipolar Sampling" step 1; Yusov 2013 section 3): slice k's line runs from the
+// sun's projection to the exit point k on the screen border, the exit points spaced evenly around
+// it (in pixels, counter-clockwise from the bottom-left corner). The line enters the screen where
+// the ray from the sun first meets it (at the sun when it is on the screen); a line whose exit
+// point faces the sun crosses no pixel and is invalid. A pixel belongs between the two slices
+// around the exit point of the ray from the sun through it.
 #ifndef CANDELA_SCATTERING_EPIPOLAR_GLSL
 #define CANDELA_SCATTERING_EPIPOLAR_GLSL
 

@@ -1,8 +1,9 @@
-// What the light-shaft shaders share (render/README.md "Light shafts"; issue 16, seed 004 §2,
-// Yusov 2013 "Practical Implementation of Light Scattering Effects Using Epipolar Sampling and
-// 1D Min/Max Binary Trees"): the sun's single scattering in the air along a view ray,
-// shadowed by its cascades, integrated exactly over lit runs; the march through each slice's
-// min/max trees; and the view rays of pixels.
+// What the light-shaft shaders share (render/README.md "Light shafts"; issue 16, Yusov 2014,
+// GPU Pro 5, "High Performance Outdoor Light Scattering Using Epipolar Sampling", Yusov 2013
+// "Practical Implementation of Light Scattering Effects Using Epipolar Sampling and 1D Min/Max
+// Binary Trees"): the sun's single scattering in the air along a view ray, shadowed by its
+// cascades, integrated exactly over lit runs; the march through each slice's min/max trees; and the
+// view rays of pixels.
 //
 // The air is homogeneous over a scene: the atmosphere's scattering and extinction at the
 // camera's altitude (scaled, ScatteringSettings::densityScale). Along a lit run [t0, t1] of a
@@ -27,7 +28,7 @@
 // Per slice: where its epipolar line enters and leaves the screen (pixels; w of `flags` 1
 // when the line crosses the screen) and, per cascade, the line the slice's plane cuts from
 // the cascade's map: a point (texels in the tile) and a unit direction. Every view ray of the
-// slice projects onto it, so its blocker depths are one 1D height map (seed 004 §2).
+// slice projects onto it, so its blocker depths are one 1D height map (Yusov 2014).
 struct SliceInfo {
     vec4 endpoints;  // entry xy, exit xy
     vec4 flags;      // w: valid
@@ -112,7 +113,7 @@ vec3 litPartOfLeaf(vec3 source, float t0, float t1, float blocker, float r0, flo
     return litRun(source, clamp(crossing, t0, t1), t1);
 }
 
-// The march through one cascade's tree over the ray's run [tA, tB] in it (seed 004 §2,
+// The march through one cascade's tree over the ray's run [tA, tB] in it (Yusov 2014,
 // Yusov 2013 section 4): a node whose blockers are all deeper than the run's receiver depths
 // is lit through (its run integrated at once), one whose blockers are all shallower is in
 // shadow (skipped); otherwise the march descends to its children, and at a leaf the run is

@@ -1,7 +1,8 @@
 #pragma once
-// Light shafts (render/README.md "Light shafts"; issue 16, seed 004 §2, Yusov 2013): the
-// sun's light scattered toward the camera by the air, shadowed by the sun's cascades, added to
-// the lit frame, which the air in front attenuates. Two modes:
+// Light shafts (render/README.md "Light shafts"; issue 16, Yusov 2014, GPU Pro 5, "High Performance
+// Outdoor Light Scattering Using Epipolar Sampling", Yusov 2013): the sun's light scattered toward
+// the camera by the air, shadowed by the sun's cascades, added to the lit frame, which the air in
+// front attenuates. Two modes:
 //   epipolar: scattering_coordinates (samples along epipolar lines from the sun to the screen
 //     border), scattering_tree (a 1D min/max tree of blocker depths per slice and cascade),
 //     scattering_march (the initial samples, every N-th), scattering_refine (more samples

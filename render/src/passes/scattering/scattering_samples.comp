@@ -1,8 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "scattering_bindings.h"
-// Light shafts, steps 2, 4 and 5 (seed 004 §2; Yusov 2013 section 3.2): ray marching at the
-// epipolar samples, in three phases (push batch.y).
+// Light shafts, steps 2, 4 and 5 (Yusov 2014, GPU Pro 5, "High Performance Outdoor Light Scattering
+// Using Epipolar Sampling"; Yusov 2013 section 3.2): ray marching at the epipolar samples, in three
+// phases (push batch.y).
 // 0: the initial samples, every N-th of each slice (N the initial step) and its last.
 // 1: refinement. Shafts run along epipolar lines, so between initial samples the in-scattering
 //    changes slowly except across depth edges: the two samples either side of an edge (view

@@ -1,12 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "scattering_bindings.h"
-// Light shafts, step 3 (seed 004 §2; Yusov 2013 section 4): per slice and cascade, the blocker
-// depths along the line the slice's plane cuts from the cascade's map, one per texel (the 1D
-// height map every view ray of the slice is compared with), and above them the min/max binary
-// tree: node j of level L holds the least and greatest depth of leaves j 2^L .. (j + 1) 2^L - 1.
-// One invocation per row builds it bottom-up (M + M - 1 loop iterations, under lavapipe's
-// limit of 65,535).
+// Light shafts, step 3 (Yusov 2014, GPU Pro 5, "High Performance Outdoor Light Scattering Using
+// Epipolar Sampling"; Yusov 2013 section 4): per slice and cascade, the blocker depths along the
+// line the slice's plane cuts from the cascade's map, one per texel (the 1D height map every view
+// ray of the slice is compared with), and above them the min/max binary tree: node j of level L
+// holds the least and greatest depth of leaves j 2^L .. (j + 1) 2^L - 1. One invocation per row
+// builds it bottom-up (M + M - 1 loop iterations, under lavapipe's limit of 65,535).
 #include "scattering_march.glsl"
 
 layout(local_size_x = 64) in;

@@ -1,12 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "scattering_bindings.h"
-// Light shafts, step 6 (seed 004 §2; Yusov 2013 section 3.3): from epipolar samples back to
-// pixels. A pixel lies between two slices and, on each, between two samples: the four are
-// weighted bilinearly and by how close their view distances are to the pixel's (a sample
-// across a depth edge gets none), and the frame behind is attenuated by the air in front:
-// hdr = hdr T + L. A pixel whose four samples all lie across depth edges is marched itself,
-// through the trees of its nearer slice.
+// Light shafts, step 6 (Yusov 2014, GPU Pro 5, "High Performance Outdoor Light Scattering Using
+// Epipolar Sampling"; Yusov 2013 section 3.3): from epipolar samples back to pixels. A pixel lies
+// between two slices and, on each, between two samples: the four are weighted bilinearly and by how
+// close their view distances are to the pixel's (a sample across a depth edge gets none), and the
+// frame behind is attenuated by the air in front: hdr = hdr T + L. A pixel whose four samples all
+// lie across depth edges is marched itself, through the trees of its nearer slice.
 #include "scattering_epipolar.glsl"
 #include "scattering_march.glsl"
 

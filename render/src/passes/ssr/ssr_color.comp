@@ -1,11 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "ssr_bindings.h"
-// Pre-convolution of the lit scene (seed 004 section 4, pass 4): level 0 copies the HDR
-// radiance, each coarser level averages the 2x2 finer texels it covers (the last texel of an
-// odd size repeats its one neighbour, so its average is of the texels it really covers), the
-// same layout as the Hi-Z pyramid (ssr_levels.glsl). A level is the scene blurred over 2^level
-// pixels: what a cone of that footprint gathers (ssr_trace.comp picks it per roughness).
+// Pre-convolution of the lit scene (Uludag 2014, GPU Pro 5, "Hi-Z Screen-Space Cone-Traced
+// Reflections", pass 4): level 0 copies the HDR radiance, each coarser level averages the 2x2 finer
+// texels it covers (the last texel of an odd size repeats its one neighbour, so its average is of
+// the texels it really covers), the same layout as the Hi-Z pyramid (ssr_levels.glsl). A level is
+// the scene blurred over 2^level pixels: what a cone of that footprint gathers (ssr_trace.comp
+// picks it per roughness).
 #include "ssr_levels.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;

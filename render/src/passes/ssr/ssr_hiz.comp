@@ -1,14 +1,15 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "ssr_bindings.h"
-// One level of the Hi-Z pyramid (seed 004 section 4, pass 1): each texel keeps the nearest
-// depth (reverse-Z: the largest value, in r) and the farthest (the smallest, in g) of every
-// finer texel it overlaps: the seed's min-depth quad tree, which the trace climbs, and the
-// other end of each cell's depth range, which the pre-integration (ssr_visibility.comp) and
-// the cone's intersection test need. Level 0 copies the G-buffer depth into both. Sizes halve rounding up, so for an odd size the last texel of a level covers
-// one finer texel instead of two: coarse texel i covers finer texels 2i and 2i + 1 (clamped),
-// and level k's texel i covers exactly the pixels [i 2^k, (i + 1) 2^k) (ssr_trace.comp relies
-// on it). Every level lives in one image: level 0 at the origin, level k > 0 stacked in a
+// One level of the Hi-Z pyramid (Uludag 2014, GPU Pro 5, "Hi-Z Screen-Space Cone-Traced
+// Reflections", pass 1): each texel keeps the nearest depth (reverse-Z: the largest value, in r)
+// and the farthest (the smallest, in g) of every finer texel it overlaps: Uludag's min-depth quad
+// tree, which the trace climbs, and the other end of each cell's depth range, which the
+// pre-integration (ssr_visibility.comp) and the cone's intersection test need. Level 0 copies the
+// G-buffer depth into both. Sizes halve rounding up, so for an odd size the last texel of a level
+// covers one finer texel instead of two: coarse texel i covers finer texels 2i and 2i + 1
+// (clamped), and level k's texel i covers exactly the pixels [i 2^k, (i + 1) 2^k) (ssr_trace.comp
+// relies on it). Every level lives in one image: level 0 at the origin, level k > 0 stacked in a
 // column right of it (ssr_levels.glsl).
 #include "ssr_levels.glsl"
 

@@ -1,8 +1,8 @@
 #pragma once
-// Screen-space reflections by Hi-Z tracing (seed 004 section 4; render/README.md
-// "Screen-space reflections"): a Hi-Z pyramid of the G-buffer depth, one ray per glossy pixel
-// (Hi-Z or the linear reference march), and a composite that replaces the environment's
-// split-sum specular by the reflection in proportion to its confidence.
+// Screen-space reflections by Hi-Z tracing (Uludag 2014, GPU Pro 5, "Hi-Z Screen-Space Cone-Traced
+// Reflections"; render/README.md "Screen-space reflections"): a Hi-Z pyramid of the G-buffer depth,
+// one ray per glossy pixel (Hi-Z or the linear reference march), and a composite that replaces the
+// environment's split-sum specular by the reflection in proportion to its confidence.
 #include <cstdint>
 #include <optional>
 
@@ -57,7 +57,8 @@ public:
         ImageRef colors;                                      // StorageRead: pre-convolved
         const EnvironmentDescriptors* environment;
         bool hasEnvironment = false;  // take the sky's split-sum specular out where rays hit
-        bool hasLut = false;          // weight by the LUT, else by seed 001's fit
+        // Weight by the LUT, else by Karis 2014's fit ("Physically Based Shading on Mobile").
+        bool hasLut = false;
         // The ambient occlusion the lighting pass applied to the sky's specular (Sampled; unset
         // without it) and its variant (lighting.comp's kAoMode) and intensity.
         std::optional<ImageRef> ambientOcclusion, specularOcclusion;

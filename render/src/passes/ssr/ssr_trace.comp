@@ -1,9 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "ssr_bindings.h"
-// Screen-space reflection rays (seed 004 section 4, pass 3), one per pixel whose roughness is
-// under the cut-off, in screen space: x, y in pixels and z the reverse-Z depth, which is
-// affine along a projected line, so the ray is a straight line in (x, y, z).
+// Screen-space reflection rays (Uludag 2014, GPU Pro 5, "Hi-Z Screen-Space Cone-Traced
+// Reflections", pass 3), one per pixel whose roughness is under the cut-off, in screen space: x, y
+// in pixels and z the reverse-Z depth, which is affine along a projected line, so the ray is a
+// straight line in (x, y, z).
 // - Hi-Z (mode 0): start at level 0; while the ray stays in front of a cell's nearest depth,
 //   move to the cell's boundary (plus a small offset, so a ray always enters the next cell)
 //   and climb a level; where it reaches the nearest depth inside the cell, move to it and

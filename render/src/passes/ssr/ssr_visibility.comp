@@ -1,17 +1,18 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "ssr_bindings.h"
-// Pre-integration of the Hi-Z pyramid (seed 004 section 4, pass 2): the visibility of each
-// cell, the share of the volume between the cell's nearest and farthest depth (the pyramid's r
-// and g, ssr_hiz.comp) that lies in front of the surfaces it holds, so a cone can see through
-// it. A level-0 cell is one surface: 100%. A coarser cell averages, over the four finer cells
-// it covers, the share of its own depth range in front of each finer cell's nearest surface,
-// times that cell's own visibility: Visibility(n) <= Visibility(n - 1), e.g. 50% at level 1
-// and (1 - 0.25) x 50% = 37.5% at level 2 for the seed's example. Depths are compared as view
-// distances (reverse-Z with an infinite far plane: distance = near / depth; the near plane
-// cancels out of the share), the sky (depth 0) infinitely far. A cell whose surfaces all lie
-// at one depth holds no volume: its visibility is its finer cells'. Same layout as the Hi-Z
-// pyramid (ssr_levels.glsl); ssr_trace.comp weights its cone samples by it (pass 5).
+// Pre-integration of the Hi-Z pyramid (Uludag 2014, GPU Pro 5, "Hi-Z Screen-Space Cone-Traced
+// Reflections", pass 2): the visibility of each cell, the share of the volume between the cell's
+// nearest and farthest depth (the pyramid's r and g, ssr_hiz.comp) that lies in front of the
+// surfaces it holds, so a cone can see through it. A level-0 cell is one surface: 100%. A coarser
+// cell averages, over the four finer cells it covers, the share of its own depth range in front of
+// each finer cell's nearest surface, times that cell's own visibility: Visibility(n) <=
+// Visibility(n - 1), e.g. 50% at level 1 and (1 - 0.25) x 50% = 37.5% at level 2 for Uludag's
+// example. Depths are compared as view distances (reverse-Z with an infinite far plane: distance =
+// near / depth; the near plane cancels out of the share), the sky (depth 0) infinitely far. A cell
+// whose surfaces all lie at one depth holds no volume: its visibility is its finer cells'. Same
+// layout as the Hi-Z pyramid (ssr_levels.glsl); ssr_trace.comp weights its cone samples by it
+// (pass 5).
 #include "ssr_levels.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -1,15 +1,16 @@
 #pragma once
 // Which lights reach which part of the screen, for the volumetric lighting shaders (issue 17,
-// render/README.md "Volumetric lighting"): seed 004 §3 has each light render its volume (a
-// sphere for a point light, a cone for a spot, the whole screen for the sun) so that a light
-// costs only the pixels it covers. Here each light's volume is bounded on the CPU (a box around
-// its range sphere, or around its cone cut at its range; everywhere for the sun and for a volume
-// that reaches behind the near plane, such as one holding the camera), the box projected to the
-// screen, and the light listed in every workgroup's bin that the projection covers: an 8x8 tile
-// of the per-light volumes' half-resolution march, or a 4x4x4 cluster of froxels (its slices
-// from the box's view depths too). A shader invocation then loops over its workgroup's list
-// only: the proxy mesh's per-pixel coverage at tile granularity, with neither rasterisation nor
-// the shared memory and barriers that made GPU-built lists cost more than they saved on lavapipe.
+// render/README.md "Volumetric lighting"): Vos 2014, GPU Pro 5, "Volumetric Light Effects in
+// Killzone: Shadow Fall" has each light render its volume (a sphere for a point light, a cone for a
+// spot, the whole screen for the sun) so that a light costs only the pixels it covers. Here each
+// light's volume is bounded on the CPU (a box around its range sphere, or around its cone cut at
+// its range; everywhere for the sun and for a volume that reaches behind the near plane, such as
+// one holding the camera), the box projected to the screen, and the light listed in every
+// workgroup's bin that the projection covers: an 8x8 tile of the per-light volumes' half-resolution
+// march, or a 4x4x4 cluster of froxels (its slices from the box's view depths too). A shader
+// invocation then loops over its workgroup's list only: the proxy mesh's per-pixel coverage at tile
+// granularity, with neither rasterisation nor the shared memory and barriers that made GPU-built
+// lists cost more than they saved on lavapipe.
 //
 // Buffer layout (light_bins.glsl): for B bins, B + 1 offsets into the list that follows them
 // (bin b's lights are list[offset[b], offset[b + 1])), the plain lights first, then the others,

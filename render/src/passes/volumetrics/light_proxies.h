@@ -1,13 +1,14 @@
 #pragma once
-// The rasterised per-light volumes' draws (seed 004 §3: each light renders its volume, a sphere
-// for a point light, a cone for a spot, the whole screen for the sun, and here a hemisphere for
-// a rect or disk light, which lights only the half-space in front of it; render/README.md
-// "Volumetric lighting"). Each frame the CPU sorts the lights that scatter into groups, each
-// drawn with one instanced draw of its proxy mesh (light_proxy_mesh.glsl), the light index per
-// instance, so a light costs the GPU only the pixels its proxy covers and the CPU no draw call.
-// Lights whose volume misses the view get no instance. A proxy the camera is outside of draws its
-// front faces tested against the scene's depth (a volume behind the surfaces costs no
-// fragments); one that holds the camera or reaches the near plane draws its back faces untested.
+// The rasterised per-light volumes' draws (Vos 2014, GPU Pro 5, "Volumetric Light Effects in
+// Killzone: Shadow Fall": each light renders its volume, a sphere for a point light, a cone for a
+// spot, the whole screen for the sun, and here a hemisphere for a rect or disk light, which lights
+// only the half-space in front of it; render/README.md "Volumetric lighting"). Each frame the CPU
+// sorts the lights that scatter into groups, each drawn with one instanced draw of its proxy mesh
+// (light_proxy_mesh.glsl), the light index per instance, so a light costs the GPU only the pixels
+// its proxy covers and the CPU no draw call. Lights whose volume misses the view get no instance. A
+// proxy the camera is outside of draws its front faces tested against the scene's depth (a volume
+// behind the surfaces costs no fragments); one that holds the camera or reaches the near plane
+// draws its back faces untested.
 //
 // Instance list: the directional lights first (the full-screen pass marches them), then each
 // draw's lights, in light order within a draw.

@@ -1,7 +1,7 @@
-// The per-light volumes' proxy meshes (seed 004 §3: each light renders its volume, a sphere for
-// a point light, a cone for a spot, a hemisphere for a one-sided rect or disk light), made in
-// the vertex shader from gl_VertexIndex: no vertex
-// buffer. Both enclose the volume they stand for (their flat faces lie outside the curved
+// The per-light volumes' proxy meshes (Vos 2014, GPU Pro 5, "Volumetric Light Effects in Killzone:
+// Shadow Fall": each light renders its volume, a sphere for a point light, a cone for a spot, a
+// hemisphere for a one-sided rect or disk light), made in the vertex shader from gl_VertexIndex: no
+// vertex buffer. Both enclose the volume they stand for (their flat faces lie outside the curved
 // surface), so every pixel whose ray meets the volume is covered; the fragment shader then
 // marches the ray's exact segment (light_volume.glsl). Triangles wind counter-clockwise seen from
 // outside, as glTF's do, so culling back faces draws the near side.

@@ -1,6 +1,6 @@
-// The segment of a view ray inside a light's volume (seed 004 §3: each light renders its
-// volume, a sphere for a point light, a cone for a spot, the whole screen for the sun). The
-// per-light volumes march only that segment.
+// The segment of a view ray inside a light's volume (Vos 2014, GPU Pro 5, "Volumetric Light Effects
+// in Killzone: Shadow Fall": each light renders its volume, a sphere for a point light, a cone for
+// a spot, the whole screen for the sun). The per-light volumes march only that segment.
 #ifndef CANDELA_LIGHT_VOLUME_GLSL
 #define CANDELA_LIGHT_VOLUME_GLSL
 

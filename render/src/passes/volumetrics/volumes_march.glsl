@@ -1,11 +1,12 @@
-// The per-light volumes' march (seed 004 §3), shared by the tile-binned compute march
-// (volumetrics_volumes_march.comp) and the rasterised proxies (volumetrics_volumes_proxy.frag,
-// volumetrics_volumes_sun.frag): one half-resolution pixel's view ray, its 4x4 Bayer start
-// offset, and the march of a light's segment along it. Each sample is lit as the seed's white
-// diffuse surface facing the light gives E (unfiltered shadow), scaled by the step and sigma_s
-// with the Henyey-Greenstein phase in place of 1/pi, and by the view leg's transmittance to it.
+// The per-light volumes' march (Vos 2014, GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow
+// Fall"), shared by the tile-binned compute march (volumetrics_volumes_march.comp) and the
+// rasterised proxies (volumetrics_volumes_proxy.frag, volumetrics_volumes_sun.frag): one
+// half-resolution pixel's view ray, its 4x4 Bayer start offset, and the march of a light's segment
+// along it. Each sample is lit as Vos's white diffuse surface facing the light gives E (unfiltered
+// shadow), scaled by the step and sigma_s with the Henyey-Greenstein phase in place of 1/pi, and by
+// the view leg's transmittance to it.
 //
-// The sun's volume is the whole screen, marched cascade by cascade (seed 004 §3): the ray is
+// The sun's volume is the whole screen, marched cascade by cascade (Vos 2014): the ray is
 // cut where it leaves each cascade's sphere, and each piece is marched against that cascade's
 // map alone, the rest beyond the last cascade unshadowed. The pieces share the ray's `grid.w`
 // steps by length (at least one each): `grid.w` steps per piece cost 11x the demo's march.

@@ -44,8 +44,9 @@ float mediumShadowInView(ShadowView v, vec3 P) {
     return receiver - kShadowDepthBias * texel <= blocker ? 1.0 : 0.0;
 }
 
-// Lit fraction of a light at P in the medium: one unfiltered lookup in its map (seed 004 §3:
-// the many samples along a ray filter it anyway). 1 without a map or outside it.
+// Lit fraction of a light at P in the medium: one unfiltered lookup in its map (Vos 2014,
+// GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow Fall": the many samples along a ray
+// filter it anyway). 1 without a map or outside it.
 float mediumShadow(Light light, uint index, vec3 P) {
     if (!kShadowsEnabled) return 1.0;
     ShadowView v;
@@ -57,7 +58,7 @@ bool isMediumAreaLight(Light light) {
     return light.type == LIGHT_TYPE_RECT || light.type == LIGHT_TYPE_DISK;
 }
 
-// Irradiance at P from a rect or disk light (issue 15), as the seed's white diffuse surface
+// Irradiance at P from a rect or disk light (issue 15), as Vos's white diffuse surface
 // facing the light sees it: the same exact form factor the surfaces' "ltc" diffuse uses
 // (area_lights.glsl's areaExactDiffuse) on a surface at P whose normal points at the light's
 // centre, times its luminance and falloff window (and the constant-intensity factor of an

@@ -1,9 +1,9 @@
 #pragma once
 // Volumetric lighting in the scene's medium (render/README.md "Volumetric lighting", issue 17):
-// the per-pixel ray-marched reference; seed 004 §3's per-light volumes (each light's volume
-// marched at half resolution with dithered starts, blurred and upsampled bilaterally); and
-// froxels (a view-aligned grid lit per froxel, integrated front to back and composited over
-// the lit HDR target by depth).
+// the per-pixel ray-marched reference; Vos's (2014, GPU Pro 5, "Volumetric Light Effects in
+// Killzone: Shadow Fall") per-light volumes (each light's volume marched at half resolution with
+// dithered starts, blurred and upsampled bilaterally); and froxels (a view-aligned grid lit per
+// froxel, integrated front to back and composited over the lit HDR target by depth).
 #include <array>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -117,7 +117,7 @@ public:
     // in-scattering, the surface's transmittance having been applied already (the sun marched
     // over the froxels' composite, which attenuates by the whole medium).
     void recordVolumesMarch(VkCommandBuffer cmd, const Inputs& in, const ImageRef& marched) const;
-    // Rasterised per-light volumes (seed 004 §3) into `marched` (ColorAttachment) with `depth`
+    // Rasterised per-light volumes (Vos 2014) into `marched` (ColorAttachment) with `depth`
     // (DepthWrite, half resolution): the full-screen pass (the sun, the view depths, the depth
     // target), then each proxy draw, added.
     void recordVolumesProxies(VkCommandBuffer cmd, const Inputs& in, const ImageRef& marched,

@@ -1,10 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
-// Per-light volumes, step 2 (seed 004 §3): a bilateral blur of the half-resolution march.
-// The kernel is 1 2 2 2 1 each way, which weighs the four Bayer offsets of every row and
-// column equally (the two ends share one), so it cancels the dither where the depth is
-// smooth; the depth term keeps a surface's fog from bleeding onto another's.
+// Per-light volumes, step 2 (Vos 2014, GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow
+// Fall"): a bilateral blur of the half-resolution march. The kernel is 1 2 2 2 1 each way, which
+// weighs the four Bayer offsets of every row and column equally (the two ends share one), so it
+// cancels the dither where the depth is smooth; the depth term keeps a surface's fog from bleeding
+// onto another's.
 #include "volumetrics_push.glsl"
 #include "common/camera.glsl"
 

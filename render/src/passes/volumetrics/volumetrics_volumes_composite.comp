@@ -2,12 +2,13 @@
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
 #include "volumetric_view_ray.glsl"
-// Per-light volumes, step 3 (seed 004 §3): a bilateral upsample of the blurred half-resolution
-// in-scattering onto the frame, and the view leg's transmittance on the surface behind:
-// hdr = hdr * T + L. Half-resolution pixel q holds full-resolution pixel 2q's ray, so pixel p
-// sits at p / 2 among them; the four around it weigh bilinearly and by depth likeness.
-// Froxels with the sun marched per pixel (range.w = 1): the march holds the sun alone, added
-// over the froxels' composite, which already attenuated the surface by the whole medium.
+// Per-light volumes, step 3 (Vos 2014, GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow
+// Fall"): a bilateral upsample of the blurred half-resolution in-scattering onto the frame, and the
+// view leg's transmittance on the surface behind: hdr = hdr * T + L. Half-resolution pixel q holds
+// full-resolution pixel 2q's ray, so pixel p sits at p / 2 among them; the four around it weigh
+// bilinearly and by depth likeness. Froxels with the sun marched per pixel (range.w = 1): the march
+// holds the sun alone, added over the froxels' composite, which already attenuated the surface by
+// the whole medium.
 #include "volumetrics_push.glsl"
 #include "common/camera.glsl"
 #include "volumetric_density.glsl"

@@ -2,10 +2,11 @@
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
 #include "volumetric_view_ray.glsl"
-// Per-light volumes, step 1 (seed 004 §3), tile-binned: at half resolution, each pixel's view
-// ray (volumes_march.glsl) crosses each listed light's volume (a sphere, a cone or, for the
-// sun, the whole screen: light_volume.glsl) and marches the segment inside. Stores
-// (in-scattered radiance, view depth) for the bilateral blur and upsample.
+// Per-light volumes, step 1 (Vos 2014, GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow
+// Fall"), tile-binned: at half resolution, each pixel's view ray (volumes_march.glsl) crosses each
+// listed light's volume (a sphere, a cone or, for the sun, the whole screen: light_volume.glsl) and
+// marches the segment inside. Stores (in-scattered radiance, view depth) for the bilateral blur and
+// upsample.
 //
 // A light costs only the pixels its volume covers: each 8x8 tile (a workgroup) marches the
 // lights listed for it on the CPU (light_bins.h: the volume's box projected to the screen, the

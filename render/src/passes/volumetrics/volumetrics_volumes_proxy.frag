@@ -1,15 +1,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
-// Per-light volumes, rasterised (seed 004 §3): a fragment of light i's proxy mesh at
-// half-resolution pixel q marches the part of q's view ray inside the light's volume (the
-// exact sphere or cone segment, cut at the surface's depth and the medium's box), exactly as the
-// tile-binned march does (volumes_march.glsl), and adds it to the target (additive blending;
-// alpha, the view depth the full-screen pass stored, is kept). A proxy the camera is outside
-// draws its front faces tested against the half-resolution depth, so a volume behind the
-// surfaces costs no fragments; one that holds the camera or reaches the near plane draws its
-// back faces untested. Rect and disk lights draw in their own variant (SPEC_MEDIUM_AREA_LIGHTS:
-// their form-factor code, present but unrun, made the march 10x slower on lavapipe).
+// Per-light volumes, rasterised (Vos 2014, GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow
+// Fall"): a fragment of light i's proxy mesh at half-resolution pixel q marches the part of q's
+// view ray inside the light's volume (the exact sphere or cone segment, cut at the surface's depth
+// and the medium's box), exactly as the tile-binned march does (volumes_march.glsl), and adds it to
+// the target (additive blending; alpha, the view depth the full-screen pass stored, is kept). A
+// proxy the camera is outside draws its front faces tested against the half-resolution depth, so a
+// volume behind the surfaces costs no fragments; one that holds the camera or reaches the near
+// plane draws its back faces untested. Rect and disk lights draw in their own variant
+// (SPEC_MEDIUM_AREA_LIGHTS: their form-factor code, present but unrun, made the march 10x slower on
+// lavapipe).
 #include "volumes_march.glsl"
 
 layout(location = 0) flat in uint lightIndex;

@@ -1,9 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
-// Per-light volumes, rasterised (seed 004 §3): one instance per light, its proxy mesh
-// (light_proxy_mesh.glsl) placed over its volume. The light's index comes from the instance
-// list (light_proxies.h); push.lights.z says which mesh this draw makes.
+// Per-light volumes, rasterised (Vos 2014, GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow
+// Fall"): one instance per light, its proxy mesh (light_proxy_mesh.glsl) placed over its volume.
+// The light's index comes from the instance list (light_proxies.h); push.lights.z says which mesh
+// this draw makes.
 #include "common/camera.glsl"
 #include "common/light_buffer.glsl"
 #include "light_proxy_mesh.glsl"

@@ -1,11 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "volumetrics_bindings.h"
-// Per-light volumes, rasterised, first draw: the whole screen, the sun's volume (seed 004 §3),
-// marched cascade by cascade (volumes_march.glsl) for each directional light in the instance
-// list's head (push.lights.z of them). It stores (in-scattered radiance, view depth) at every
-// half-resolution pixel, which the proxies then add to, and the scene's depth at full-resolution
-// pixel 2q (the sample the rays end at) for their depth test.
+// Per-light volumes, rasterised, first draw: the whole screen, the sun's volume (Vos 2014,
+// GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow Fall"), marched cascade by cascade
+// (volumes_march.glsl) for each directional light in the instance list's head (push.lights.z of
+// them). It stores (in-scattered radiance, view depth) at every half-resolution pixel, which the
+// proxies then add to, and the scene's depth at full-resolution pixel 2q (the sample the rays end
+// at) for their depth test.
 #include "volumes_march.glsl"
 
 layout(std430, binding = VOLUMETRICS_BINDING_PROXY_INSTANCES) readonly buffer ProxyInstances {

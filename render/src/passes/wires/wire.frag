@@ -2,12 +2,12 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/specialization_ids.h"
 #include "wire_bindings.h"
-// Wire shading and coverage (seed 004 §6). Geometric antialiasing: the pixel's coverage of the
-// wire's (clamped) width from its distance to the centre line, a box across the wire one
-// pixel step wide, so the coverages down any column sum to exactly the wire's cross-section
-// and a moving wire keeps its energy; times wire.vert's fade (real / clamped radius). Shading
-// aliasing: a pixel-thin wire shows a pixel several normals at once, so its normal is bent toward
-// the camera and its diffuse term is half-Lambert ((N.L / 2 + 1/2)^2), blended into the true
+// Wire shading and coverage (Persson 2014, GPU Pro 5, "Wire Antialiasing"). Geometric antialiasing:
+// the pixel's coverage of the wire's (clamped) width from its distance to the centre line, a box
+// across the wire one pixel step wide, so the coverages down any column sum to exactly the wire's
+// cross-section and a moving wire keeps its energy; times wire.vert's fade (real / clamped radius).
+// Shading aliasing: a pixel-thin wire shows a pixel several normals at once, so its normal is bent
+// toward the camera and its diffuse term is half-Lambert ((N.L / 2 + 1/2)^2), blended into the true
 // cylinder normal and Lambert as the wire grows wider on screen. Lit like the forward transparent
 // pass: the clustered lights (with shadows) and the sky. Output straight alpha, blended "over".
 #include "common/ambient_lighting.glsl"
@@ -65,7 +65,7 @@ vec3 lightRadiance(Surface surface, vec3 P, vec3 N, vec3 V, vec3 R, float alpha,
     float visibility = any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))
                            ? shadowVisibility(light, index, P, N)
                            : 1.0;
-    // Half-Lambert (seed 004 §6): wraps the diffuse term round the wire, so the few normals a
+    // Half-Lambert (Persson 2014): wraps the diffuse term round the wire, so the few normals a
     // thin wire shows a pixel light it alike; weighted in by thinness.
     float wrapped = 0.5 * dot(N, incidence.diffuseL) + 0.5;
     incidence.diffuseIlluminance =

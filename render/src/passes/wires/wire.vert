@@ -5,12 +5,12 @@
 #include "common/screen_segment.glsl"
 #include "wire_bindings.h"
 #include "wire_segment.glsl"
-// Wire antialiasing (seed 004 §6, Persson's "phone-wire AA"): each segment becomes a
-// camera-facing quad, six vertices per segment, no vertex buffer. Its radius is clamped to at
-// least one pixel's radius at the wire's depth (so it never falls between pixel centres and
-// never flickers) and the alpha is multiplied by real radius / clamped radius (so its energy,
-// width x radiance, stays the real wire's). The quad reaches one pixel past the clamped edge
-// for the coverage ramp wire.frag computes from the distance to the centre line.
+// Wire antialiasing (Persson 2014, GPU Pro 5, "Wire Antialiasing": his "phone-wire AA"): each
+// segment becomes a camera-facing quad, six vertices per segment, no vertex buffer. Its radius is
+// clamped to at least one pixel's radius at the wire's depth (so it never falls between pixel
+// centres and never flickers) and the alpha is multiplied by real radius / clamped radius (so its
+// energy, width x radiance, stays the real wire's). The quad reaches one pixel past the clamped
+// edge for the coverage ramp wire.frag computes from the distance to the centre line.
 
 // The segment on screen and its width at each end, all flat: wire.frag measures each pixel's
 // distance to the centre line from gl_FragCoord itself rather than from interpolated values,

@@ -1,10 +1,11 @@
 #pragma once
-// Wires (seed 004 §6): thin cylinders along polylines (content/wire.h), drawn after the lit
-// frame and its volumetrics, before the blended surfaces, as camera-facing quads at least a
-// pixel wide whose alpha carries the real width (Persson's phone-wire antialiasing), with
-// coverage from the distance to the centre line and shading that bends thin wires' normals
-// toward the camera (wire.vert, wire.frag). Depth-tested against the G-buffer depth, not
-// written; lit by the clustered lights and the sky like the forward transparent pass.
+// Wires (Persson 2014, GPU Pro 5, "Wire Antialiasing"): thin cylinders along polylines
+// (content/wire.h), drawn after the lit frame and its volumetrics, before the blended surfaces, as
+// camera-facing quads at least a pixel wide whose alpha carries the real width (Persson's
+// phone-wire antialiasing), with coverage from the distance to the centre line and shading that
+// bends thin wires' normals toward the camera (wire.vert, wire.frag). Depth-tested against the
+// G-buffer depth, not written; lit by the clustered lights and the sky like the forward transparent
+// pass.
 #include <glm/glm.hpp>
 #include <vector>
 

@@ -21,8 +21,9 @@ float specularTimesNoL(vec3 V, vec3 L, float alpha) {
     return distributionGgx(alpha * alpha, NoH) * visibilitySmithSchlick(alpha, NoV, NoL) * NoL;
 }
 
-// The lighting pass's specular (shading_models.glsl specularGgx) with F = 1, with seed 000's
-// Schlick-Smith visibility or (correlated) the energy-conserving BRDF's height-correlated Smith.
+// The lighting pass's specular (shading_models.glsl specularGgx) with F = 1, with Karis 2013's
+// ("Real Shading in Unreal Engine 4") Schlick-Smith visibility or (correlated) the
+// energy-conserving BRDF's height-correlated Smith.
 float representativePointSpecular(Light light, vec3 V, float roughness, bool correlated) {
     float alpha = alphaFromRoughness(roughness);
     vec3 N = kSurfaceNormal;

@@ -14,7 +14,7 @@ layout(local_size_x = 64) in;
 // a.xyz light centre, a.w 1 for a disk; b.xyz V, b.w roughness; c.xyz the light's X axis,
 // c.w half width (disk: radius); d.x half height, d.y mode (0 representative, 1 its unclamped
 // diffuse, 2 ltc), d.z a textured rect's image (report_light_texture.glsl's slot), d.w 1 for a
-// constant-intensity light (values per unit I_A: the seed's pre-integrated factors applied).
+// constant-intensity light (values per unit I_A: Drobot's pre-integrated factors applied).
 // The surface is at the origin with N = +Z; the light faces it.
 struct AreaShapeSample {
     vec4 a;

@@ -158,8 +158,9 @@ float areaShading(bool disk, bool ltc, vec3 V, float roughness, float size, uint
            visibilitySmithGgxCorrelated(alpha, saturate(V.z), saturate(L.z)) * e;
 }
 
-// A constant-intensity rect or disk (seed 004 section 1's variant): the same shading with the
-// pre-integrated diffuse and specular factors (area_light_constant_intensity.glsl).
+// A constant-intensity rect or disk (Drobot's (2014, GPU Pro 5, "Physically Based Area Lights")
+// variant): the same shading with the pre-integrated diffuse and specular factors
+// (area_light_constant_intensity.glsl).
 float areaShadingConstantIntensity(bool disk, bool ltc, vec3 V, float roughness, float size) {
     AreaShape s = costShape(disk, size);
     vec3 N = vec3(0.0, 0.0, 1.0);

@@ -1,7 +1,8 @@
 #version 460
-// Hard-input grid over the shared BRDF terms (seed 000 eq. 1-5, seed 001 EnvBRDFApprox) and the
-// full shadeSurface chain. One invocation = one (roughness, cos view, cos light) triple, looping
-// over every azimuth and material; results are tallied, never stored.
+// Hard-input grid over the shared BRDF terms (Karis 2013, "Real Shading in Unreal Engine 4",
+// eq. 1-5, Karis 2014, "Physically Based Shading on Mobile" EnvBRDFApprox) and the full
+// shadeSurface chain. One invocation = one (roughness, cos view, cos light) triple, looping over
+// every azimuth and material; results are tallied, never stored.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/shading_models.glsl"
@@ -47,7 +48,7 @@ const uint kCheckSpecularGgx = 9u;
 const uint kCheckShadeSurface = 10u;
 const uint kCheckCount = 11u;
 
-// Seed 001's EnvBRDFApprox at roughness 0, NoV 0 is 1.0442 - 0.0442 F0 (a004 = 1.0425), and its
+// Karis 2014's EnvBRDFApprox at roughness 0, NoV 0 is 1.0442 - 0.0442 F0 (a004 = 1.0425), and its
 // non-metal variant 1.0425: a 4.4% overshoot of the physical bound 1 at grazing angles on
 // mirrors, inherent in the fit (reported, not a float problem). Anything above is a bug.
 const float kEnvBrdfFitMax = 1.04421;
@@ -94,7 +95,7 @@ void main() {
             s.specular = mat.specular;
             s.shadingModel = mat.shadingModel;
             s.customData = mat.customData;
-            // A plausible E_ss (seed 001's fit; the lighting pass reads the LUT), so the
+            // A plausible E_ss (Karis 2014's fit; the lighting pass reads the LUT), so the
             // energy-conserving BRDF's compensation is exercised over the whole grid.
             vec2 albedoTerms = envBrdfApproxScaleBias(roughness, NoV);
             s.directionalAlbedo = albedoTerms.x + albedoTerms.y;
@@ -113,7 +114,7 @@ void main() {
                    caseIndex);
             tally3(t[kCheckLambert], diffuseLambert(s.baseColor), 0.0, 1.0 / PI, caseIndex);
             // The split-sum environment BRDF is a directional albedo, within [0, 1], except
-            // that seed 001's fit itself overshoots at roughness 0, NoV 0 (see kEnvBrdfFitMax).
+            // that Karis 2014's fit itself overshoots at roughness 0, NoV 0 (see kEnvBrdfFitMax).
             tally3(t[kCheckEnvBrdf], envBrdfApprox(specularColor, roughness, NoV), 0.0,
                    kEnvBrdfFitMax, caseIndex);
             tally(t[kCheckEnvBrdfNonmetal], envBrdfApproxNonmetal(roughness, NoV), 0.0,

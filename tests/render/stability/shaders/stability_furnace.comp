@@ -1,15 +1,15 @@
 #version 460
 // White furnace of the specular lobe, evaluated with the real shared terms: for each
 // (roughness, NoV) cell, the directional albedo  integral of D * Vis * F * NoL over the
-// hemisphere with F0 = 1 (seed 000 eq. 2-5), which energy conservation bounds by 1. Directions
-// come from a fixed Hammersley set through visible-normal sampling (Heitz 2018) with a GGX
-// density written here, not the shared D, so the shared D is what gets integrated; the
-// estimator stays bounded even at NoV = 0. The same cell also integrates the projected NDF
-// integral of D * NoH over the hemisphere, which must be exactly 1. For the energy-conserving
-// BRDF it also integrates the lobe with height-correlated Smith for a set of F0 and scales it
-// by multipleScatteringCompensation, with E_ss from the engine's LUT (given per cell by the
-// host) and from seed 001's fit (the mobile path): what a surface reflects of a white
-// furnace, which must not exceed 1.
+// hemisphere with F0 = 1 (Karis 2013, "Real Shading in Unreal Engine 4", eq. 2-5), which energy
+// conservation bounds by 1. Directions come from a fixed Hammersley set through visible-normal
+// sampling (Heitz 2018) with a GGX density written here, not the shared D, so the shared D is what
+// gets integrated; the estimator stays bounded even at NoV = 0. The same cell also integrates the
+// projected NDF integral of D * NoH over the hemisphere, which must be exactly 1. For the
+// energy-conserving BRDF it also integrates the lobe with height-correlated Smith for a set of F0
+// and scales it by multipleScatteringCompensation, with E_ss from the engine's LUT (given per cell
+// by the host) and from Karis 2014's ("Physically Based Shading on Mobile") fit (the mobile path):
+// what a surface reflects of a white furnace, which must not exceed 1.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/brdf.glsl"

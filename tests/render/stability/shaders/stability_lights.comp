@@ -1,10 +1,10 @@
 #version 460
-// Hard-input grid over the shared light incidence (seed 000 eq. 9-20): evaluateLocalLight for
-// point, spot, sphere and tube lights at distances from 0 to 1e6 m, radii and lengths from 0 to
-// far beyond the distance, intensities from 0 to 1e9 lm, plus the reductions the SPEC demands:
-// zero radius and length bit-identical to the point light, and vanishing radius or length
-// within 1e-5 of it. One invocation = one (distance, direction, light, view, roughness, type);
-// it loops over every radius, length and tube axis.
+// Hard-input grid over the shared light incidence (Karis 2013, "Real Shading in Unreal Engine 4",
+// eq. 9-20): evaluateLocalLight for point, spot, sphere and tube lights at distances from 0 to 1e6
+// m, radii and lengths from 0 to far beyond the distance, intensities from 0 to 1e9 lm, plus the
+// reductions the SPEC demands: zero radius and length bit-identical to the point light, and
+// vanishing radius or length within 1e-5 of it. One invocation = one (distance, direction, light,
+// view, roughness, type); it loops over every radius, length and tube axis.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/shading_models.glsl"

@@ -1,9 +1,9 @@
 #pragma once
-// Fog component: a participating medium filling the scene or a box of it (issue 17, seed 004 §3).
-// Uniform scattering and absorption coefficients per metre, optionally thinning with height, and a
-// Henyey-Greenstein phase function. In-scattered radiance per metre is
-// sigmaS * density * p(theta) * E, E a light's irradiance at the point (render/README.md
-// "Volumetric lighting").
+// Fog component: a participating medium filling the scene or a box of it (issue 17, Vos 2014,
+// GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow Fall"). Uniform scattering and
+// absorption coefficients per metre, optionally thinning with height, and a Henyey-Greenstein phase
+// function. In-scattered radiance per metre is sigmaS * density * p(theta) * E, E a light's
+// irradiance at the point (render/README.md "Volumetric lighting").
 #include <array>
 #include <optional>
 

@@ -9,15 +9,15 @@ namespace candela::content {
 enum class LightType : std::uint8_t { Point, Spot, Directional, Rect, Disk };
 
 // How an area light (rect, disk) or a sphere or tube light is shaded: the renderer's default (its
-// --area-lights), or a per-light override ("quality" in scene files): seed 004's representative
-// point or LTC.
+// --area-lights), or a per-light override ("quality" in scene files): Drobot's representative
+// point (2014, GPU Pro 5, "Physically Based Area Lights") or LTC.
 enum class AreaLightQuality : std::uint8_t { Default, Representative, Ltc };
 
 // How a rect or disk light spreads its power ("emission" in scene files): Lambertian (the same
-// luminance lumens / (pi area) in every direction), or seed 004 section 1's constant-intensity
-// light (every element radiates the same intensity in every direction in front of it: lumens /
-// (2 pi area) cd per square metre), shaded by the seed's pre-integrated diffuse and specular
-// factors (area_light_constant_intensity.glsl).
+// luminance lumens / (pi area) in every direction), or Drobot's constant-intensity light (every
+// element radiates the same intensity in every direction in front of it: lumens / (2 pi area) cd
+// per square metre), shaded by Drobot's pre-integrated diffuse and specular factors
+// (area_light_constant_intensity.glsl).
 enum class AreaLightEmission : std::uint8_t { Lambertian, ConstantIntensity };
 
 struct Light {
@@ -33,8 +33,9 @@ struct Light {
     float sourceLength = 0.0f;          // metres; > 0 makes a tube along local +X (eq. 16-20)
     float innerConeAngle = 0.0f;        // radians, spot only
     float outerConeAngle = 0.7853982f;  // radians, spot only
-    // Scales this light's in-scattering in a Fog medium (artist control, seed 004 §3); 0: the
-    // light lights no fog. Surfaces are lit the same whatever it is.
+    // Scales this light's in-scattering in a Fog medium (artist control, Vos 2014, GPU Pro 5,
+    // "Volumetric Light Effects in Killzone: Shadow Fall"); 0: the light lights no fog. Surfaces
+    // are lit the same whatever it is.
     float volumetric = 1.0f;
     // Renders a shadow map for this light. Scene files and glTF default it per type
     // (LightTypeInfo::castsShadowsByDefault: directional yes, local lights no); code that builds
