@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace candela::render {
 
@@ -25,6 +26,15 @@ GpuTextureTransform packTransform(const content::TextureRef& ref) {
 }
 
 }  // namespace
+
+uint32_t presentTextureSlots(const content::Material& material) {
+    const GpuMaterial packed = packMaterial(material);
+    uint32_t slots = 0;
+    for (uint32_t i = 0; i < std::size(packed.transforms); ++i) {
+        if (packed.transforms[i].present != 0u) slots |= 1u << i;
+    }
+    return slots;
+}
 
 ShadingModelId shadingModelId(content::ShadingModel model) {
     switch (model) {

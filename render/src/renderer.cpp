@@ -182,7 +182,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     features_ = features.names();
     // Layers blend in the G-buffer pass only; the lighting variant does not change with them.
-    gbufferPass_->prepare(usesMaterialLayers(inputs.scene, resources),
+    gbufferPass_->prepare(inputs.scene, resources, usesMaterialLayers(inputs.scene, resources),
                           features.materialExtensions(), gbaaPass_ != nullptr);
     if (gbufferPass_->materialLayers()) features_.push_back("material_layers");
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.

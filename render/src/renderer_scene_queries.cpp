@@ -37,6 +37,14 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
                 break;
         }
     }
+    // lights.glsl's isPlainLocalLight: a point or spot without a size.
+    f.plainLocalLights =
+        std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightInstance& l) {
+            const content::Light& light = l.light;
+            return (light.type == content::LightType::Point ||
+                    light.type == content::LightType::Spot) &&
+                   !(light.sourceRadius > 0.0f) && !(light.sourceLength > 0.0f);
+        });
     for (const LightInstance& l : scene.lights) {
         if (inEveryCluster(l.light)) continue;
         f.sphereLights |= l.light.sourceRadius > 0.0f;

@@ -7,6 +7,13 @@
 #define CANDELA_MATERIAL_GLSL
 
 #include "common/math.glsl"
+#include "common/specialization_ids.h"
+
+// The texture slots the pipeline's draws may have (bit i: TextureSlot i). A slot outside it
+// holds the white default, so its lookup (1.0) is left out: lavapipe runs both sides of a
+// branch, and four textureGrad calls per fragment were most of an untextured G-buffer.
+layout(constant_id = SPEC_MATERIAL_TEXTURE_SLOTS) const uint kMaterialTextureSlots = 0xffffffffu;
+bool slotInPipeline(uint slot) { return (kMaterialTextureSlots & (1u << slot)) != 0u; }
 
 struct TextureTransform {
     vec4 matrix;  // 2x2 column-major
@@ -109,7 +116,8 @@ vec4 sampleSlot(sampler2D tex, TextureTransform t, MaterialUv uv) {
 
 // Base colour with vertex colour: what the alpha test and blending read.
 vec4 materialBaseColor(Material m, MaterialUv uv, vec4 vertexColor) {
-    return m.baseColor * vertexColor * sampleSlot(baseColorTexture, m.transforms[0], uv);
+    vec4 texel = slotInPipeline(0u) ? sampleSlot(baseColorTexture, m.transforms[0], uv) : vec4(1.0);
+    return m.baseColor * vertexColor * texel;
 }
 
 // Everything but the base colour (pass materialBaseColor's result in).
@@ -117,10 +125,13 @@ MaterialSample evaluateMaterial(Material m, MaterialUv uv, vec4 baseColor, vec3 
                                 vec4 tangent, bool frontFacing) {
     MaterialSample s;
     s.baseColor = baseColor;
-    vec4 metalRough = sampleSlot(metallicRoughnessTexture, m.transforms[1], uv);
+    vec4 metalRough =
+        slotInPipeline(1u) ? sampleSlot(metallicRoughnessTexture, m.transforms[1], uv) : vec4(1.0);
     s.roughness = saturate(m.roughness * metalRough.g);
     s.metallic = saturate(m.metallic * metalRough.b);
-    s.occlusion = 1.0 + m.occlusionStrength * (sampleSlot(occlusionTexture, m.transforms[3], uv).r - 1.0);
+    float occlusion =
+        slotInPipeline(3u) ? sampleSlot(occlusionTexture, m.transforms[3], uv).r : 1.0;
+    s.occlusion = 1.0 + m.occlusionStrength * (occlusion - 1.0);
     // Cavity joins the occlusion texture by the same rule AO uses: the minimum (both describe
     // the same small-scale shadowing; the product would count it twice). Cavity 1: unchanged.
     s.occlusion = min(s.occlusion, m.cavity);
@@ -128,7 +139,7 @@ MaterialSample evaluateMaterial(Material m, MaterialUv uv, vec4 baseColor, vec3 
     vec3 N = safeNormalize(normal);
     if (!frontFacing) N = -N;  // double-sided surfaces light their back side
     float tangentLength = dot(tangent.xyz, tangent.xyz);
-    if (m.transforms[2].present != 0u && tangentLength > 0.0) {
+    if (slotInPipeline(2u) && m.transforms[2].present != 0u && tangentLength > 0.0) {
         vec3 T = safeNormalize(tangent.xyz - N * dot(N, tangent.xyz));
         vec3 B = cross(N, T) * (tangent.w < 0.0 ? -1.0 : 1.0);
         vec3 n = sampleSlot(normalTexture, m.transforms[2], uv).xyz * 2.0 - 1.0;
@@ -136,16 +147,18 @@ MaterialSample evaluateMaterial(Material m, MaterialUv uv, vec4 baseColor, vec3 
         N = safeNormalize(mat3(T, B, N) * n);
     }
     s.N = N;
-    s.emissive = m.emissive.rgb * sampleSlot(emissiveTexture, m.transforms[4], uv).rgb;
+    vec3 emissive =
+        slotInPipeline(4u) ? sampleSlot(emissiveTexture, m.transforms[4], uv).rgb : vec3(1.0);
+    s.emissive = m.emissive.rgb * emissive;
     // KHR_materials_specular: glTF's dielectric F0 = 0.04 * specularFactor * specularTexture.a *
     // specularColorFactor * specularColorTexture.rgb; the engine's F0 = 0.08 * specular with one
     // scalar, so the colour's largest channel is taken (as the loader does for the factors).
     // The slots are sampled only when the material has the texture (uniform per draw).
     float specular = m.specular;
-    if (m.transforms[5].present != 0u) {
+    if (slotInPipeline(5u) && m.transforms[5].present != 0u) {
         specular *= sampleSlot(specularTexture, m.transforms[5], uv).a;
     }
-    if (m.transforms[6].present != 0u) {
+    if (slotInPipeline(6u) && m.transforms[6].present != 0u) {
         vec3 c = m.specularColorScale.rgb * sampleSlot(specularColorTexture, m.transforms[6], uv).rgb;
         specular *= max(c.r, max(c.g, c.b));
     }
@@ -177,7 +190,7 @@ MaterialExtensions evaluateMaterialExtensions(Material m, MaterialUv uv, vec3 no
     // (1, 0) without a texture; strength *= texture.b.
     e.anisotropy = m.anisotropy.x;
     vec2 direction = vec2(1.0, 0.0);
-    if (m.transforms[7].present != 0u) {
+    if (slotInPipeline(7u) && m.transforms[7].present != 0u) {
         vec3 t = sampleSlot(anisotropyTexture, m.transforms[7], uv).rgb;
         direction = t.rg * 2.0 - 1.0;
         e.anisotropy *= t.b;
@@ -189,17 +202,17 @@ MaterialExtensions evaluateMaterialExtensions(Material m, MaterialUv uv, vec3 no
     e.anisotropyT = safeNormalize(stretched);
 
     e.clearCoat = m.clearcoat.x;
-    if (m.transforms[8].present != 0u) {
+    if (slotInPipeline(8u) && m.transforms[8].present != 0u) {
         e.clearCoat *= sampleSlot(clearcoatTexture, m.transforms[8], uv).r;
     }
     e.clearCoat = saturate(e.clearCoat);
     e.clearCoatRoughness = m.clearcoat.y;
-    if (m.transforms[9].present != 0u) {
+    if (slotInPipeline(9u) && m.transforms[9].present != 0u) {
         e.clearCoatRoughness *= sampleSlot(clearcoatRoughnessTexture, m.transforms[9], uv).g;
     }
     e.clearCoatRoughness = saturate(e.clearCoatRoughness);
     e.clearCoatN = geometricN;
-    if (m.transforms[10].present != 0u) {
+    if (slotInPipeline(10u) && m.transforms[10].present != 0u) {
         vec3 n = sampleSlot(clearcoatNormalTexture, m.transforms[10], uv).xyz * 2.0 - 1.0;
         n.xy *= m.clearcoat.z;
         e.clearCoatN = safeNormalize(mat3(T, B, geometricN) * n);

@@ -48,5 +48,10 @@
 #define SPEC_MEDIUM_AREA_LIGHTS 36
 // assign_lights.comp: the counting or the writing walk.
 #define SPEC_ASSIGN_WRITE_PASS 40
+// material.glsl: which texture slots a draw's material may have (bit i: slot i); a slot
+// outside the mask reads as its white default without a lookup.
+#define SPEC_MATERIAL_TEXTURE_SLOTS 42
+// lighting.comp: the frame has a point or spot light without a size (its plain loop).
+#define SPEC_PLAIN_LOCAL_LIGHTS 43
 
 #endif

@@ -1,18 +1,20 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "depth_occupancy_bindings.h"
-// One workgroup per screen tile. For each depth slice of the tile: whether any pixel lies in
-// it (a 64-bit mask per tile) and, per quarter of the tile, the view-space box around those
-// pixels. Light assignment skips empty clusters and tests lights against the boxes of the
-// surfaces actually there, so light lists shrink to the depths present and each entry says
-// which quarters its light reaches (light_list_entry.h).
+// Per screen tile, which depth slices hold a pixel (a 64-bit mask per tile) and, per quarter
+// of the tile, the view-space box around those pixels. Light assignment skips empty clusters
+// and tests lights against the boxes of the surfaces actually there, so light lists shrink to
+// the depths present and each entry says which quarters its light reaches
+// (light_list_entry.h).
 #include "common/clusters.glsl"
 
-// Each invocation takes 2x2 pixels at a time and merges those that share a slice and quarter
-// before its shared-memory atomics: lavapipe runs a lane's atomics one by one, and one per
-// pixel and axis made this pass a fifth of the games' frames (docs/frame-budget.md).
-layout(local_size_x = 8, local_size_y = 8) in;
-const uint kInvocations = 64u;
+// One invocation per tile quarter walks its pixels in order and keeps the box of the current
+// run of pixels in one slice in registers, writing it out when the slice changes: no shared
+// atomics (lavapipe runs a lane's atomics one at a time, and one per pixel and axis made this
+// pass a fifth of the games' frames) and one barrier, before the quarters of a tile merge.
+// Invocations x: the tile's 4 quarters; y: 8 tiles (linear tile index).
+layout(local_size_x = 4, local_size_y = 8) in;
+const uint kTilesPerGroup = 8u;
 
 layout(binding = OCCUPANCY_BINDING_DEPTH) uniform sampler2D depthBuffer;
 layout(std430, binding = OCCUPANCY_BINDING_TILE_MASKS) writeonly buffer Occupancy {
@@ -20,8 +22,9 @@ layout(std430, binding = OCCUPANCY_BINDING_TILE_MASKS) writeonly buffer Occupanc
 };
 // Per cluster, min xyz and max xyz of its pixels in view space, then per cluster and quarter
 // the same, kEmptyQuarterBound-empty for a quarter without pixels (light_list_entry.h;
-// unwritten where unoccupied).
-layout(std430, binding = OCCUPANCY_BINDING_CLUSTER_BOUNDS) writeonly buffer ClusterBounds {
+// unwritten where unoccupied). Coherent: each tile's quarters read each other's boxes after
+// the barrier.
+layout(std430, binding = OCCUPANCY_BINDING_CLUSTER_BOUNDS) coherent buffer ClusterBounds {
     float clusterBounds[];
 };
 // From depth_range.comp: [0] min, [1] max view depth (ordered bits); this pass writes the
@@ -35,107 +38,129 @@ layout(push_constant) uniform Push {
     vec2 projectionScale;  // projection[0][0], projection[1][1]
 } push;
 
-const uint kMaxSlices = 64u;
-shared uint maskLow;
-shared uint maskHigh;
-// Order-preserving float bits (see orderedBits), so uint atomics give float min/max.
-// Per slice and quarter: [(slice * 4 + quarter) * 3 + axis].
-shared uint boundsMin[kMaxSlices * 12u];
-shared uint boundsMax[kMaxSlices * 12u];
+shared uvec2 quarterMasks[kTilesPerGroup * 4u];
 
-const uint kNoBox = 0xffffffffu;
+const uint kNoSlice = 0xffffffffu;
 
-// Widens box `box` (its first bounds index) to [lo, hi]; nothing for kNoBox.
-void addToBox(uint box, vec3 lo, vec3 hi) {
-    if (box == kNoBox) return;
+bool hasSlice(uvec2 mask, uint slice) {
+    return ((slice < 32u ? mask.x >> slice : mask.y >> (slice - 32u)) & 1u) != 0u;
+}
+
+uvec2 sliceBit(uint slice) {
+    return slice < 32u ? uvec2(1u << slice, 0u) : uvec2(0u, 1u << (slice - 32u));
+}
+
+// Where quarter `quarter` of cluster `cluster` keeps its box.
+uint quarterBox(uint clusterCount, uint cluster, uint quarter) {
+    return clusterCount * CLUSTER_BOX_FLOATS + cluster * CLUSTER_QUARTER_BOXES_FLOATS +
+           quarter * 6u;
+}
+
+void storeBox(uint at, vec3 lo, vec3 hi) {
     for (uint c = 0u; c < 3u; ++c) {
-        atomicMin(boundsMin[box + c], orderedBits(lo[c]));
-        atomicMax(boundsMax[box + c], orderedBits(hi[c]));
+        clusterBounds[at + c] = lo[c];
+        clusterBounds[at + 3u + c] = hi[c];
     }
 }
 
+// Adds a run's box to its slice's box of this quarter (the first run of a slice stores it).
+void flushRun(uint at, bool seen, vec3 lo, vec3 hi) {
+    if (seen) {
+        for (uint c = 0u; c < 3u; ++c) {
+            lo[c] = min(lo[c], clusterBounds[at + c]);
+            hi[c] = max(hi[c], clusterBounds[at + 3u + c]);
+        }
+    }
+    storeBox(at, lo, hi);
+}
+
 void main() {
-    if (gl_LocalInvocationIndex == 0u) {
-        maskLow = 0u;
-        maskHigh = 0u;
-    }
-    for (uint i = gl_LocalInvocationIndex; i < kMaxSlices * 12u; i += kInvocations) {
-        boundsMin[i] = 0xffffffffu;
-        boundsMax[i] = 0u;
-    }
-    barrier();
     // Slices span the depths present: from the nearest to the farthest geometry.
     float minDepth = range[0] == 0xffffffffu ? push.grid.projectionNear : fromOrderedBits(range[0]);
     float maxDepth = range[1] == 0u ? minDepth : fromOrderedBits(range[1]);
     float sliceNear = max(minDepth, push.grid.projectionNear);
     float logRatio = log(max(maxDepth, sliceNear * 1.01) / sliceNear) / float(push.grid.slices);
-    if (gl_WorkGroupID.xy == uvec2(0u) && gl_LocalInvocationIndex == 0u) {
+    if (gl_WorkGroupID.x == 0u && gl_LocalInvocationIndex == 0u) {
         range[2] = floatBitsToUint(sliceNear);
         range[3] = floatBitsToUint(logRatio);
     }
-    uvec2 tile = gl_WorkGroupID.xy;
-    uvec2 origin = tile * push.grid.tileSize;
-    uvec2 mask = uvec2(0u);
-    for (uint y = 2u * gl_LocalInvocationID.y; y < push.grid.tileSize; y += 16u) {
-        for (uint x = 2u * gl_LocalInvocationID.x; x < push.grid.tileSize; x += 16u) {
-            // The quad's pixels, merged while they fall in the same slice and quarter.
-            uint pendingBox = kNoBox;
-            vec3 lo = vec3(0.0), hi = vec3(0.0);
-            for (uint q = 0u; q < 4u; ++q) {
-                uvec2 pixel = origin + uvec2(x + (q & 1u), y + (q >> 1u));
-                if (any(greaterThanEqual(pixel, push.size))) continue;
-                float ndcDepth = texelFetch(depthBuffer, ivec2(pixel), 0).r;
-                if (ndcDepth <= 0.0) continue;  // background
-                float depth = viewDepthFromNdc(ndcDepth, push.grid.projectionNear);
-                uint slice = sliceOfDepth(sliceNear, logRatio, push.grid.slices, depth);
-                mask |= slice < 32u ? uvec2(1u << slice, 0u) : uvec2(0u, 1u << (slice - 32u));
-                vec2 ndc = (vec2(pixel) + 0.5) / vec2(push.size) * 2.0 - 1.0;
-                vec3 view = vec3(ndc * depth / push.projectionScale, -depth);
-                uint box = (slice * 4u + quarterOfPixel(push.grid.tileSize, pixel)) * 3u;
-                if (box == pendingBox) {
-                    lo = min(lo, view);
-                    hi = max(hi, view);
-                    continue;
-                }
-                addToBox(pendingBox, lo, hi);
-                pendingBox = box;
-                lo = view;
-                hi = view;
-            }
-            addToBox(pendingBox, lo, hi);
-        }
-    }
-    if (mask.x != 0u) atomicOr(maskLow, mask.x);
-    if (mask.y != 0u) atomicOr(maskHigh, mask.y);
-    barrier();
-    uint tileIndex = tile.y * push.grid.tilesX + tile.x;
-    if (gl_LocalInvocationIndex == 0u) tileMasks[tileIndex] = uvec2(maskLow, maskHigh);
     uint tileCount = push.grid.tilesX * push.grid.tilesY;
     uint clusterCount = tileCount * push.grid.slices;
-    for (uint i = gl_LocalInvocationIndex; i < push.grid.slices * 4u; i += kInvocations) {
-        uint slice = i / 4u;
-        uint occupied = slice < 32u ? maskLow >> slice : maskHigh >> (slice - 32u);
-        if ((occupied & 1u) == 0u) continue;  // nothing in this cluster
+    uint quarter = gl_LocalInvocationID.x;
+    uint tileIndex = gl_WorkGroupID.x * kTilesPerGroup + gl_LocalInvocationID.y;
+    uvec2 tile = uvec2(tileIndex % push.grid.tilesX, tileIndex / push.grid.tilesX);
+    // quarterOfPixel's split: the first half of a tile's side is its first (size + 1) / 2
+    // pixels.
+    uint tileSize = push.grid.tileSize;
+    uint firstHalf = (tileSize + 1u) / 2u;
+    uvec2 side = uvec2(quarter & 1u, quarter >> 1u);
+    uvec2 origin = tile * tileSize + side * firstHalf;
+    uvec2 extent = mix(uvec2(firstHalf), uvec2(tileSize - firstHalf), equal(side, uvec2(1u)));
+    uvec2 end = min(origin + extent, push.size);
+    uvec2 pixels = tileIndex < tileCount ? max(end, origin) - origin : uvec2(0u);
+
+    uvec2 mask = uvec2(0u);
+    uint runSlice = kNoSlice;
+    vec3 lo = vec3(0.0), hi = vec3(0.0);
+    for (uint i = 0u; i < pixels.x * pixels.y; ++i) {
+        uvec2 pixel = origin + uvec2(i % pixels.x, i / pixels.x);
+        float ndcDepth = texelFetch(depthBuffer, ivec2(pixel), 0).r;
+        if (ndcDepth <= 0.0) continue;  // background
+        float depth = viewDepthFromNdc(ndcDepth, push.grid.projectionNear);
+        uint slice = sliceOfDepth(sliceNear, logRatio, push.grid.slices, depth);
+        vec2 ndc = (vec2(pixel) + 0.5) / vec2(push.size) * 2.0 - 1.0;
+        vec3 view = vec3(ndc * depth / push.projectionScale, -depth);
+        if (slice == runSlice) {
+            lo = min(lo, view);
+            hi = max(hi, view);
+            continue;
+        }
+        if (runSlice != kNoSlice) {
+            uint cluster = runSlice * tileCount + tileIndex;
+            flushRun(quarterBox(clusterCount, cluster, quarter), hasSlice(mask, runSlice), lo, hi);
+            mask |= sliceBit(runSlice);
+        }
+        runSlice = slice;
+        lo = view;
+        hi = view;
+    }
+    if (runSlice != kNoSlice) {
+        uint cluster = runSlice * tileCount + tileIndex;
+        flushRun(quarterBox(clusterCount, cluster, quarter), hasSlice(mask, runSlice), lo, hi);
+        mask |= sliceBit(runSlice);
+    }
+    quarterMasks[gl_LocalInvocationIndex] = mask;
+    memoryBarrierBuffer();
+    barrier();
+    if (tileIndex >= tileCount) return;
+
+    // The tile's quarters merge: each quarter marks itself empty in the occupied clusters it
+    // has no pixel of, and writes the cluster box (the union of its quarters) of every fourth.
+    uint first = gl_LocalInvocationID.y * 4u;
+    uvec2 quarters[4] = uvec2[4](quarterMasks[first], quarterMasks[first + 1u],
+                                 quarterMasks[first + 2u], quarterMasks[first + 3u]);
+    uvec2 tileMask = quarters[0] | quarters[1] | quarters[2] | quarters[3];
+    if (quarter == 0u) tileMasks[tileIndex] = tileMask;
+    uvec2 remaining = tileMask;
+    for (uint k = 0u; any(notEqual(remaining, uvec2(0u))); ++k) {
+        uint slice = remaining.x != 0u ? uint(findLSB(remaining.x))
+                                       : 32u + uint(findLSB(remaining.y));
+        remaining &= ~sliceBit(slice);
         uint cluster = slice * tileCount + tileIndex;
-        if (i % 4u == 0u) {
-            // The cluster's box: its quarters' union (the cleared values are neutral).
+        if (!hasSlice(mask, slice)) {
+            storeBox(quarterBox(clusterCount, cluster, quarter), vec3(kEmptyQuarterBound),
+                     vec3(-kEmptyQuarterBound));
+        }
+        if (k % 4u != quarter) continue;
+        vec3 boxLo = vec3(kEmptyQuarterBound), boxHi = vec3(-kEmptyQuarterBound);
+        for (uint q = 0u; q < 4u; ++q) {
+            if (!hasSlice(quarters[q], slice)) continue;
+            uint at = quarterBox(clusterCount, cluster, q);
             for (uint c = 0u; c < 3u; ++c) {
-                uint lo = min(min(boundsMin[i * 3u + c], boundsMin[i * 3u + 3u + c]),
-                              min(boundsMin[i * 3u + 6u + c], boundsMin[i * 3u + 9u + c]));
-                uint hi = max(max(boundsMax[i * 3u + c], boundsMax[i * 3u + 3u + c]),
-                              max(boundsMax[i * 3u + 6u + c], boundsMax[i * 3u + 9u + c]));
-                clusterBounds[cluster * CLUSTER_BOX_FLOATS + c] = fromOrderedBits(lo);
-                clusterBounds[cluster * CLUSTER_BOX_FLOATS + 3u + c] = fromOrderedBits(hi);
+                boxLo[c] = min(boxLo[c], clusterBounds[at + c]);
+                boxHi[c] = max(boxHi[c], clusterBounds[at + 3u + c]);
             }
         }
-        uint out_ = clusterCount * CLUSTER_BOX_FLOATS + cluster * CLUSTER_QUARTER_BOXES_FLOATS +
-                    (i % 4u) * 6u;
-        bool empty = boundsMax[i * 3u] == 0u;  // no pixel in this quarter
-        for (uint c = 0u; c < 3u; ++c) {
-            clusterBounds[out_ + c] =
-                empty ? kEmptyQuarterBound : fromOrderedBits(boundsMin[i * 3u + c]);
-            clusterBounds[out_ + 3u + c] =
-                empty ? -kEmptyQuarterBound : fromOrderedBits(boundsMax[i * 3u + c]);
-        }
+        storeBox(cluster * CLUSTER_BOX_FLOATS, boxLo, boxHi);
     }
 }

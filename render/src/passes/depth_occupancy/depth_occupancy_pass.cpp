@@ -79,7 +79,9 @@ void DepthOccupancyPass::recordMeasureRange(VkCommandBuffer cmd, const ImageRef&
     rangePipeline_.bind(cmd);
     rangePipeline_.pushDescriptors(cmd, rangeWrites);
     rangePipeline_.pushConstants(cmd, &rangePush, sizeof(rangePush));
-    vkCmdDispatch(cmd, (width + 15) / 16, (height + 15) / 16, 1);
+    // depth_range.comp: an invocation per 8x8 block, 8 invocations a workgroup.
+    const uint32_t blocks = ((width + 7) / 8) * ((height + 7) / 8);
+    vkCmdDispatch(cmd, (blocks + 7) / 8, 1, 1);
 }
 
 void DepthOccupancyPass::recordMarkOccupancy(VkCommandBuffer cmd, const ImageRef& depth,
@@ -102,7 +104,9 @@ void DepthOccupancyPass::recordMarkOccupancy(VkCommandBuffer cmd, const ImageRef
     occupancyPipeline_.bind(cmd);
     occupancyPipeline_.pushDescriptors(cmd, writes);
     occupancyPipeline_.pushConstants(cmd, &push, sizeof(push));
-    vkCmdDispatch(cmd, grid.tilesX, grid.tilesY, 1);
+    // depth_occupancy.comp: a workgroup takes 8 tiles, an invocation a quarter of one.
+    const uint32_t tiles = grid.tilesX * grid.tilesY;
+    vkCmdDispatch(cmd, (tiles + 7) / 8, 1, 1);
 }
 
 }  // namespace candela::render

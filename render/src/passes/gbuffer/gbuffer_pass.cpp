@@ -8,7 +8,9 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/scene_resources.h"
 #include "common/gbaa_edges.h"
+#include "common/specialization_ids.h"
 #include "gbuffer_targets.h"
+#include "gpu_material.h"
 #include "mesh_vertex_input.h"
 #include "passes/gbuffer/gbuffer_bindings.h"
 #include "shaders/gbuffer.frag.spv.h"
@@ -111,7 +113,8 @@ void recordGBufferDraw(VkCommandBuffer cmd, const Pipeline& pipeline, SceneResou
 
 GBufferPass::GBufferPass(GpuContext& context) : context_(context) {}
 
-void GBufferPass::prepare(bool materialLayers, bool extended, bool edges) {
+void GBufferPass::prepare(const FrameScene& scene, const SceneResources& resources,
+                          bool materialLayers, bool extended, bool edges) {
     materialLayers_ = materialLayers;
     if (edges && !context_.geometryShaders()) {
         throw std::runtime_error("--aa gbaa needs geometry shaders, which " +
@@ -139,8 +142,6 @@ void GBufferPass::prepare(bool materialLayers, bool extended, bool edges) {
         }
     }
     const size_t index = variantIndex(materialLayers, extended, edges);
-    Pipeline& pipeline = variants_[index];
-    if (pipeline.handle() != VK_NULL_HANDLE) return;
     const std::span<const uint32_t> fragments[8] = {gbuffer_frag_spv,
                                                     gbuffer_extended_frag_spv,
                                                     gbuffer_layered_frag_spv,
@@ -149,8 +150,22 @@ void GBufferPass::prepare(bool materialLayers, bool extended, bool edges) {
                                                     gbuffer_extended_edges_frag_spv,
                                                     gbuffer_layered_edges_frag_spv,
                                                     gbuffer_extended_layered_edges_frag_spv};
-    pipeline = Pipeline::graphics(context_, gbufferDesc(fragments[index], extended, edges),
-                                  gbufferBindings(materialLayers, edges), sizeof(DrawPush));
+    drawPipelines_.assign(scene.draws.size(), nullptr);
+    for (size_t i = 0; i < scene.draws.size(); ++i) {
+        const DrawItem& draw = scene.draws[i];
+        if (!drawnInGBuffer(resources, draw)) continue;
+        const uint32_t slots = presentTextureSlots(resources.material(draw.material));
+        Pipeline& pipeline = variants_[variantKey(index, slots)];
+        if (pipeline.handle() == VK_NULL_HANDLE) {
+            SpecializationConstants constants;
+            constants.set(SPEC_MATERIAL_TEXTURE_SLOTS, slots);
+            GraphicsPipelineDesc desc = gbufferDesc(fragments[index], extended, edges);
+            desc.specialization = &constants;
+            pipeline = Pipeline::graphics(context_, desc, gbufferBindings(materialLayers, edges),
+                                          sizeof(DrawPush));
+        }
+        drawPipelines_[i] = &pipeline;
+    }
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, const ImageRef& hdr,
@@ -187,9 +202,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
 
     vkCmdBeginRendering(cmd, &rendering);
     setViewportAndScissor(cmd, width, height);
-    const Pipeline& pipeline =
-        variants_[variantIndex(materialLayers_, targets.extended, targets.hasEdges)];
-    pipeline.bind(cmd);
+    const Pipeline* bound = nullptr;
 
     const GpuBuffer& materials = resources.materialBuffer();
     VkDescriptorBufferInfo cameraInfo{cameraBuffer.handle(), 0, VK_WHOLE_SIZE};
@@ -197,7 +210,10 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     VkDescriptorBufferInfo previousInfo{previousWorlds.handle(), 0, VK_WHOLE_SIZE};
     for (uint32_t drawIndex = 0; drawIndex < uint32_t(scene.draws.size()); ++drawIndex) {
         const DrawItem& draw = scene.draws[drawIndex];
-        if (!drawnInGBuffer(resources, draw)) continue;
+        const Pipeline* pipeline = drawPipelines_[drawIndex];
+        if (pipeline == nullptr) continue;  // not drawn here (drawnInGBuffer)
+        if (pipeline != bound) pipeline->bind(cmd);
+        bound = pipeline;
         const MaterialBinding& binding = resources.materialBinding(draw.material);
         std::array<VkDescriptorImageInfo, size_t(kTextureSlotCount) + kLayerTextureSlotCount>
             images{};
@@ -217,8 +233,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
             image = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
             writes.push_back(sampledImageWrite(GBUFFER_BINDING_FIRST_LAYER_TEXTURE + slot, &image));
         }
-        pipeline.pushDescriptors(cmd, writes);
-        recordGBufferDraw(cmd, pipeline, resources, draw, drawIndex);
+        pipeline->pushDescriptors(cmd, writes);
+        recordGBufferDraw(cmd, *pipeline, resources, draw, drawIndex);
     }
     vkCmdEndRendering(cmd);
 }

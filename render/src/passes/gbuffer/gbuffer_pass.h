@@ -1,6 +1,8 @@
 #pragma once
 // Rasterises the scene's meshes into the G-buffer, depth and the HDR target (emissive).
-#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
 
 #include "candela/render/frame_scene.h"
 #include "candela/render/pipeline.h"
@@ -22,7 +24,10 @@ public:
     // pipeline, built on first use, so a run compiles only the variants its frames draw with.
     // With both the extended targets and the edges, the edge target is written by a pass of
     // its own (recordEdges): nine colour attachments are more than devices guarantee.
-    void prepare(bool materialLayers, bool extended, bool edges = false);
+    // Each draw takes the variant compiled for its material's texture slots (untextured
+    // materials skip every lookup), built here for the draws of `scene`.
+    void prepare(const FrameScene& scene, const SceneResources& resources, bool materialLayers,
+                 bool extended, bool edges = false);
     // Whether prepare() chose the separate edge pass (recordEdges) for this frame.
     static bool separateEdges(bool extended, bool edges) { return edges && extended; }
     bool materialLayers() const { return materialLayers_; }
@@ -44,10 +49,16 @@ public:
 
 private:
     GpuContext& context_;
-    // Indexed by variantIndex(): plain, extended (also writes targets.anisotropy and
+    // By variantIndex() (plain, extended (also writes targets.anisotropy and
     // targets.clearCoat), layered (gbuffer_layered.frag), extended and layered; then the same
-    // four with GBAA's edges. Empty until prepare() first asks for the variant.
-    std::array<Pipeline, 8> variants_;
+    // four with GBAA's edges) and texture slots (variantKey). Built when prepare() first
+    // meets the pair.
+    std::unordered_map<uint64_t, Pipeline> variants_;
+    static uint64_t variantKey(size_t index, uint32_t textureSlots) {
+        return uint64_t(index) << 32 | textureSlots;
+    }
+    // Per scene draw, prepare()'s pipeline (null for draws the pass skips).
+    std::vector<const Pipeline*> drawPipelines_;
     Pipeline edgesOnly_;  // recordEdges; empty until a frame needs it
     static size_t variantIndex(bool materialLayers, bool extended, bool edges) {
         return (edges ? 4 : 0) + (materialLayers ? 2 : 0) + (extended ? 1 : 0);

@@ -44,6 +44,8 @@ layout(constant_id = SPEC_SKY_OCCLUSION) const bool kSkyOcclusion = false;
 // only the shadow code of a kind that casts.
 layout(constant_id = SPEC_DIRECTIONAL_SHADOWS) const bool kDirectionalShadows = true;
 layout(constant_id = SPEC_LOCAL_SHADOWS) const bool kLocalShadows = true;
+// The frame has a point or spot light without a size: without one, the plain loop is left out.
+layout(constant_id = SPEC_PLAIN_LOCAL_LIGHTS) const bool kPlainLocalLights = true;
 
 layout(binding = LIGHTING_BINDING_GBUFFER_BASE_COLOR) uniform sampler2D gbufferBaseColor;
 layout(binding = LIGHTING_BINDING_GBUFFER_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
@@ -585,7 +587,7 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
     }
     // The plain prefix (points and spots without a size or a map; the light table's first
     // slots): a body without the area-light and shadow code.
-    for (uint i = k * layers; i < count * layers; ++i) {
+    for (uint i = k * layers; kPlainLocalLights && i < count * layers; ++i) {
         uint index = pixelLightIndexAt(lights, i / layers);
         if (index != kNoLight &&
             !(lightUnshadowed(index) && isPlainLocalLight(loadLight(index, camera.frameInfo.w))))
@@ -604,8 +606,14 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
             k = (i + 1u) / layers;
         }
     }
+    // The rest: sized and casting local lights, and anything out of class order. A frame
+    // whose local lights are all plain leaves this loop out, as lavapipe runs a loop's body
+    // at least once, lanes masked.
+    const bool kOnlyPlainLocalLights = kClustered && !kSphereLightsEnabled &&
+                                       !kTubeLightsEnabled && !kRectLightsEnabled &&
+                                       !kDiskLightsEnabled && !kLocalShadows;
     const uint rest = kClustered ? kLightBodyLocal : kLightBodyAny;
-    for (uint i = k * layers; i < count * layers; ++i) {
+    for (uint i = k * layers; !kOnlyPlainLocalLights && i < count * layers; ++i) {
         uint light = pixelLightAt(lights, i / layers);
         if (light != kNoLight) addLight(px, light, i % layers == 1u, rest);
     }

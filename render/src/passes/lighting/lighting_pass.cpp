@@ -72,6 +72,7 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
     constants.set(SPEC_LEGACY_DIFFUSE_SPECULAR_ENABLED, features.legacyDiffuseSpecular);
     constants.set(SPEC_SPHERE_LIGHTS_ENABLED, features.sphereLights);
     constants.set(SPEC_TUBE_LIGHTS_ENABLED, features.tubeLights);
+    constants.set(SPEC_PLAIN_LOCAL_LIGHTS, features.plainLocalLights);
     for (const GpuLightTypeInfo& t : kGpuLightTypeTable) {
         if (t.specialization != kNoSpecialization) {
             constants.set(t.specialization,

@@ -27,6 +27,7 @@ struct LightingFeatures {
     bool legacyDiffuseSpecular = false;
     bool sphereLights = false;
     bool tubeLights = false;
+    bool plainLocalLights = true;  // a point or spot without a size (lighting.comp's plain loop)
     // Bit lightTypeIndex(type) per light type present (lights/gpu_light_types.h gives the
     // types whose code a variant can leave out).
     uint32_t lightTypes = 0;
