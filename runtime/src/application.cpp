@@ -447,8 +447,12 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         }
         const Clock::time_point runStart = Clock::now();
         double previousSeconds = 0.0;
+        // --stats-work last: a run of known length counts its last frame only.
+        const bool countLightPairs = rendererOptions.countLightPairs;
+        const bool countLastOnly = options.countWorkOnLastFrame && frames != 0;
         for (std::uint32_t i = 0; frames == 0 || i < frames; ++i) {
             Clock::time_point start = Clock::now();
+            s.renderer->setCountLightPairs(countLightPairs && (!countLastOnly || i + 1 == frames));
             input.beginFrame();
             if (s.window) s.window->pollEvents();
             if (options.inputScript) options.inputScript->apply(i, input);

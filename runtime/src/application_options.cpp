@@ -153,6 +153,8 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --input SCRIPT            replay recorded input (see input_script.h)\n"
            "  --capture FILE.png|.exr   write the last frame (may repeat)\n"
            "  --stats FILE.json         write per-run measurements\n"
+           "  --stats-work every|last   frames whose lighting work --stats counts (default\n"
+           "                            every; last: the others timed without counting)\n"
            "  --step SECONDS            scene time per frame when headless (default 1/30)\n"
            "  --validation off|on|require\n"
            "  --lights clustered|brute-force\n"
@@ -243,6 +245,11 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
         } else if (arg == "--stats") {
             if (!value()) return fail("--stats needs a file name");
             options.stats = v;
+        } else if (arg == "--stats-work") {
+            if (!value() || (v != "every" && v != "last")) {
+                return fail("--stats-work needs every or last, got '" + v + "'");
+            }
+            options.countWorkOnLastFrame = v == "last";
         } else if (arg == "--input") {
             if (!value()) return fail("--input needs an input script (see input_script.h)");
             std::string error;

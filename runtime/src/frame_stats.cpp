@@ -102,7 +102,8 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["hair_node_capacity"] = last.hairNodeCapacity;
     json["culling_efficiency"] = cullingEfficiency(last);
     // Work (render::WorkCounters): each deterministic count's largest value over the run's
-    // frames, what the frame budget test (tests/budgets) holds a scene's every view to.
+    // frames, what the frame budget test (tests/budgets) holds a scene's every view to (the
+    // lighting pass's counts from the counted frames: every one unless --stats-work last).
     render::WorkCounters w;
     for (const render::RendererStats& f : stats.frames) {
         const render::WorkCounters& c = f.work;

@@ -95,6 +95,34 @@ TEST(Cli, StatsCountPipelinesAndOnlyLitFramesBuildTheLightingOnes) {
     EXPECT_GT(l["create_ms"].get<double>(), t["create_ms"].get<double>());
 }
 
+// --stats-work last: the frames before the last run the lighting variant without counters
+// (one more pipeline: the counting one, built for the last frame), and the static scene's
+// counts are those of a run that counts every frame.
+TEST(Cli, StatsWorkLastCountsTheLastFrameOnly) {
+    auto dir = tempDir();
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/spot_light.scene.json";
+    const std::string run = "run " + scene + " --headless --size 32x32 --frames 3 --stats ";
+    RunResult every = runCandela(run + (dir / "every.json").string());
+    ASSERT_EQ(every.exitCode, 0) << every.output;
+    RunResult last = runCandela(run + (dir / "last.json").string() + " --stats-work last");
+    ASSERT_EQ(last.exitCode, 0) << last.output;
+    const nlohmann::json e = nlohmann::json::parse(readBytes(dir / "every.json"));
+    const nlohmann::json l = nlohmann::json::parse(readBytes(dir / "last.json"));
+    EXPECT_GT(e["light_evaluations"].get<uint64_t>(), 0u);
+    EXPECT_EQ(l["light_evaluations"], e["light_evaluations"]);
+    EXPECT_EQ(l["work"], e["work"]);
+    EXPECT_GT(l["work"]["light_evaluations_plain"].get<uint64_t>() +
+                  l["work"]["light_evaluations_shadowed"].get<uint64_t>(),
+              0u);
+    EXPECT_EQ(l["pipelines"]["created"].get<int>(), e["pipelines"]["created"].get<int>() + 1);
+
+    RunResult bad = runCandela(kTriangle + "--stats-work some");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find("--stats-work needs every or last, got 'some'"), std::string::npos)
+        << bad.output;
+}
+
 TEST(Cli, CapturesAreIdenticalRunAfterRun) {
     auto dir = tempDir();
     for (const char* ext : {".exr", ".png"}) {

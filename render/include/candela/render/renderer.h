@@ -81,6 +81,10 @@ public:
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
     const RendererOptions& options() const { return options_; }
+    // Whether the next frames count their light evaluations and shadow taps (stats' `work`):
+    // the counting variant of the lighting pass costs it a fifth more on lavapipe (runtime's
+    // --stats-work last counts a run's last frame only).
+    void setCountLightPairs(bool count) { options_.countLightPairs = count; }
 
     // Records the frame's passes. Clustered lighting with CPU assignment submits the geometry
     // part and waits for it (assignment reads the depth occupancy on the CPU), then begins a

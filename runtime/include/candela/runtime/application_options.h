@@ -44,6 +44,9 @@ struct ApplicationOptions {
     std::optional<std::filesystem::path> stats;       // per-run JSON (see frame_stats.h)
     std::optional<std::filesystem::path> frameGraph;  // the last frame's graph as Graphviz
     bool countLightPairs = false;  // renderer counts light-pixel pairs (stats' culling figures)
+    // --stats-work last: a run of known length counts the lighting pass's work on its last
+    // frame only, so the other frames time the pass without the counting variant's cost.
+    bool countWorkOnLastFrame = false;
     render::ValidationMode validation = render::ValidationMode::IfPresent;
     render::LightCulling lightCulling = render::LightCulling::Clustered;
     render::LightAssignmentDevice lightAssignment = render::LightAssignmentDevice::Auto;
