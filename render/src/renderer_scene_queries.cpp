@@ -37,14 +37,9 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
                 break;
         }
     }
-    // lights.glsl's isPlainLocalLight: a point or spot without a size.
     f.plainLocalLights =
-        std::any_of(scene.lights.begin(), scene.lights.end(), [](const LightInstance& l) {
-            const content::Light& light = l.light;
-            return (light.type == content::LightType::Point ||
-                    light.type == content::LightType::Spot) &&
-                   !(light.sourceRadius > 0.0f) && !(light.sourceLength > 0.0f);
-        });
+        std::any_of(scene.lights.begin(), scene.lights.end(),
+                    [](const LightInstance& l) { return content::isPlainPunctualLight(l.light); });
     for (const LightInstance& l : scene.lights) {
         if (inEveryCluster(l.light)) continue;
         f.sphereLights |= l.light.sourceRadius > 0.0f;

@@ -120,7 +120,8 @@ constexpr std::pair<const char*, render::VolumetricsMode> kVolumetricsModes[] = 
 
 // SIGMA_S[,SIGMA_A[,G]]: 1, 2 or 3 numbers by the Fog component's rules (validateFog); an
 // empty string when they hold, else what is wrong.
-std::string parseFog(const std::string& text, content::Fog& fog) {
+// `clamps` gets "FIELD MESSAGE" for each value the fog rules clamped (component_validation.h).
+std::string parseFog(const std::string& text, content::Fog& fog, std::vector<std::string>& clamps) {
     float values[3] = {0.0f, 0.0f, 0.0f};
     size_t count = 0;
     const char* at = text.data();
@@ -140,6 +141,7 @@ std::string parseFog(const std::string& text, content::Fog& fog) {
     fog.anisotropy = values[2];
     for (const content::ValueProblem& problem : content::validateFog(fog)) {
         if (!problem.clamped) return problem.field + " " + problem.message;
+        clamps.push_back(problem.field + " " + problem.message);
     }
     return {};
 }
@@ -328,7 +330,8 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
             if (!value()) return fail("--exposure-compensation needs a number of EV");
             const char* end = v.data() + v.size();
             auto [ptr, ec] = std::from_chars(v.data(), end, compensation);
-            if (ec != std::errc() || ptr != end || std::abs(compensation) > 16.0f) {
+            // Written so NaN fails too (from_chars reads "nan").
+            if (ec != std::errc() || ptr != end || !(std::abs(compensation) <= 16.0f)) {
                 return fail("--exposure-compensation needs EV from -16 to 16, got '" + v + "'");
             }
             options.exposureCompensation = compensation;
@@ -370,9 +373,12 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
         } else if (arg == "--fog") {
             if (!value()) return fail("--fog needs SIGMA_S[,SIGMA_A[,G]] (per metre)");
             content::Fog fog;
-            if (std::string problem = parseFog(v, fog); !problem.empty()) {
+            std::vector<std::string> clamps;
+            if (std::string problem = parseFog(v, fog, clamps); !problem.empty()) {
                 return fail("--fog: " + problem);
             }
+            for (const std::string& clamp : clamps)
+                result.warnings.push_back("clamped: --fog " + clamp);
             options.fog = fog;
         } else if (arg == "--atmosphere") {
             // `--atmosphere off` drops the scene's atmosphere (tests that exercise something
@@ -428,8 +434,10 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
         } else if (arg == "--time-of-day") {
             int hours = -1, minutes = -1;
             char tail = 0;
+            // Hours are bounded before they are multiplied: 35791395:00 overflowed an int.
             if (!value() || std::sscanf(v.c_str(), "%d:%d%c", &hours, &minutes, &tail) != 2 ||
-                hours < 0 || minutes < 0 || minutes > 59 || hours * 60 + minutes > 24 * 60) {
+                hours < 0 || hours > 24 || minutes < 0 || minutes > 59 ||
+                hours * 60 + minutes > 24 * 60) {
                 return fail("--time-of-day needs HH:MM between 00:00 and 24:00, got '" + v + "'");
             }
             options.timeOfDayHours = float(hours) + float(minutes) / 60.0f;
@@ -455,6 +463,9 @@ CommandLine ApplicationOptions::fromCommandLine(int argc, const char* const* arg
     ApplicationOptions defaults;
     defaults.validation = validationModeFromEnvironment();
     CommandLine result = parseCommandLine(args, others, std::move(defaults));
+    for (const std::string& warning : result.warnings) {
+        std::fprintf(stderr, "%s: warning: %s\n", program.c_str(), warning.c_str());
+    }
     if (result.options) return result;
     std::string usage = "usage: " + program + " [options]";
     if (!gameUsage.empty()) usage += " " + std::string(gameUsage);

@@ -94,6 +94,12 @@ TEST(ApplicationOptions, ExposureFlags) {
     EXPECT_NE(parseError({"--exposure", "fast"}).find("--exposure needs manual or auto"),
               std::string::npos);
     EXPECT_NE(parseError({"--exposure-compensation", "x"}).find("got 'x'"), std::string::npos);
+    // Issue 44: NaN passed the +-16 check (every frame came out NaN); so did infinities.
+    for (const char* bad : {"nan", "-nan", "inf", "-inf", "16.5"}) {
+        EXPECT_NE(parseError({"--exposure-compensation", bad}).find("from -16 to 16"),
+                  std::string::npos)
+            << bad;
+    }
 }
 
 TEST(ApplicationOptions, AntiAliasingAndBloomFlags) {
@@ -174,6 +180,10 @@ TEST(ApplicationOptions, AtmosphereFlags) {
     EXPECT_NE(parseError({"--time-of-day", "25:00"}).find("'25:00'"), std::string::npos);
     EXPECT_NE(parseError({"--time-of-day", "12:60"}).find("HH:MM"), std::string::npos);
     EXPECT_NE(parseError({"--time-of-day", "noon"}).find("--time-of-day needs"), std::string::npos);
+    // Issue 44: hours * 60 overflowed an int and the value was taken.
+    EXPECT_NE(parseError({"--time-of-day", "35791395:00"}).find("'35791395:00'"),
+              std::string::npos);
+    EXPECT_NE(parseError({"--time-of-day", "2147483647:59"}).find("HH:MM"), std::string::npos);
     for (const char* flag :
          {"--atmosphere", "--atmosphere off", "--sun-elevation DEG", "--time-of-day HH:MM"})
         EXPECT_NE(ApplicationOptions::standardFlagsUsage().find(flag), std::string::npos) << flag;
@@ -219,6 +229,18 @@ TEST(ApplicationOptions, VolumetricsAndFogFlags) {
     EXPECT_EQ(one.options->fog->scattering, 0.05f);
     EXPECT_EQ(one.options->fog->absorption, 0.0f);
     EXPECT_EQ(one.options->fog->anisotropy, 0.0f);
+    EXPECT_TRUE(one.warnings.empty());
+    // Issue 44: a clamp says so, as the scene file's does (it was silent on the command line).
+    for (const char* huge : {"1e30", "inf", "0.1,1e30"}) {
+        CommandLine clamped = parseCommandLine({"--fog", huge});
+        ASSERT_TRUE(clamped) << clamped.error;
+        ASSERT_EQ(clamped.warnings.size(), 1u) << huge;
+        EXPECT_EQ(clamped.warnings[0].rfind("clamped: --fog ", 0), 0u) << clamped.warnings[0];
+        const bool absorption = std::string(huge).find(',') != std::string::npos;
+        EXPECT_NE(clamped.warnings[0].find(absorption ? "absorption" : "scattering"),
+                  std::string::npos)
+            << clamped.warnings[0];
+    }
     EXPECT_FALSE(parseCommandLine({}).options->fog);
     EXPECT_FALSE(parseCommandLine({}).options->volumetrics);
     EXPECT_FALSE(parseCommandLine({}).options->volumeProxies);

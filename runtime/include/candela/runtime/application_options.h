@@ -141,6 +141,8 @@ struct CommandLine {
     std::optional<ApplicationOptions> options;  // empty after --help or a bad argument
     std::vector<std::string> arguments;         // the rest, with OtherArguments::Keep
     std::string error;                          // the problem, when there was one
+    // Values taken as changed ("clamped: --fog scattering ..."): printed by fromCommandLine.
+    std::vector<std::string> warnings;
     bool helpRequested = false;
     int exitCode = 0;  // ExitCode to return when options is empty: ok after --help, else 2
     explicit operator bool() const { return options.has_value(); }

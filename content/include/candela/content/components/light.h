@@ -52,4 +52,11 @@ struct Light {
     std::uint32_t texture = 0;
 };
 
+// A point or spot light without a size: the class the renderer shades with its cheapest code
+// (lights.glsl's isPlainLocalLight is the same rule on the GPU). NaN sizes count as none.
+inline bool isPlainPunctualLight(const Light& light) {
+    return (light.type == LightType::Point || light.type == LightType::Spot) &&
+           !(light.sourceRadius > 0.0f) && !(light.sourceLength > 0.0f);
+}
+
 }  // namespace candela::content
