@@ -570,7 +570,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         froxels = g.createBuffer("froxels.integrated", bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     }
     // Volumetric lighting over the lit opaque surfaces and the background (frames whose scene
-    // has a medium): seed 004 §3's per-light volumes (marched at half resolution, blurred,
+    // has a medium): Vos's (GPU Pro 5) per-light volumes (marched at half resolution, blurred,
     // upsampled), froxels (lit, integrated, composited by depth) or the reference march.
     if (inputs.scene.fog && options_.volumetrics != VolumetricsMode::Off) {
         if (!volumetricsPass_) volumetricsPass_ = std::make_unique<VolumetricsPass>(context_);
@@ -690,7 +690,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 ResourceHandle blurred = g.createImage(
                     "volumetrics.volumes_blurred", VolumetricsPass::volumesDesc(width_, height_));
                 if (volumeProxies) {
-                    // Each light's proxy mesh rasterised at half resolution (seed 004 §3).
+                    // Each light's proxy mesh rasterised at half resolution (Vos, GPU Pro 5).
                     ResourceHandle proxyDepth =
                         g.createImage("volumetrics.volumes_depth",
                                       VolumetricsPass::volumesDepthDesc(width_, height_));
@@ -751,14 +751,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             }
         }
     }
-    // Light shafts (issue 16, seed 004 §2): the sun's light scattered by the air, over the lit
-    // frame and its medium, under the blended surfaces (frames whose scene has an atmosphere).
+    // Light shafts (issue 16; Yusov, GPU Pro 5, epipolar sampling): the sun's light scattered by
+    // the air, over the lit frame and its medium, under the blended surfaces (frames whose scene
+    // has an atmosphere).
     declareScattering(
         inputs, h,
         ShadowReads{features.shadows, shadowAtlas, shadowViews, shadowLights, shadowDescriptors},
         airFroxels ? &*froxels : nullptr, fogBoundaries);
-    // Hair (seed 004 §5) over the lit frame, under the wires and blended surfaces, which then
-    // see its depth.
+    // Hair (TressFX, Martin et al., GPU Pro 5) over the lit frame, under the wires and blended
+    // surfaces, which then see its depth.
     if (!inputs.scene.hair.empty()) {
         if (!hairPass_) hairPass_ = std::make_unique<HairPass>(context_);
         if (hairPass_->prepare(inputs.scene, features, options_.hairShading,
@@ -780,8 +781,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             ResourceHandle nodes = g.createBuffer("hair.nodes", HairPass::nodeBytes(capacity),
                                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
             ResourceHandle counters = g.importBuffer("hair.counters", &hairPass_->counters(), true);
-            // Self-shadowing (seed 004 §5): a hair depth map for every shadow view, only in
-            // frames where some light has a shadow map.
+            // Self-shadowing (TressFX, Martin et al., GPU Pro 5): a hair depth map for every shadow
+            // view, only in frames where some light has a shadow map.
             const bool selfShadow = features.shadows &&
                                     options_.hairSelfShadow != HairSelfShadow::Off &&
                                     options_.hairShading == HairShading::Lit;
@@ -869,7 +870,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             }
         }
     }
-    // Wires (seed 004 §6) over the lit frame and its medium, under the blended surfaces.
+    // Wires (Persson, GPU Pro 5, "Wire Antialiasing") over the lit frame and its medium, under the
+    // blended surfaces.
     if (!inputs.scene.wires.empty()) {
         if (!wirePass_) wirePass_ = std::make_unique<WirePass>(context_);
         if (wirePass_->prepare(inputs.scene, features, options_.wires)) {

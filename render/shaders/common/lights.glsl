@@ -1,5 +1,6 @@
-// Light incidence of seed 000 section 2.4: windowed inverse-square falloff (eq. 9), sphere
-// lights (eq. 10-14) and tube lights (eq. 16-20), all in metres. Every function is finite for
+// Light incidence (Karis 2013, "Real Shading in Unreal Engine 4", lighting model): windowed
+// inverse-square falloff (eq. 9), sphere lights (eq. 10-14) and tube lights (eq. 16-20), all
+// in metres. Every function is finite for
 // any finite input: d -> 0, zero radius or length, R parallel to the tube, huge intensities.
 #ifndef CANDELA_LIGHTS_GLSL
 #define CANDELA_LIGHTS_GLSL

@@ -234,9 +234,10 @@ bool shadowMapLookup(Light light, uint lightIndex, vec3 P, out ShadowView v, out
     return true;
 }
 
-// Subsurface thickness (seed 000 section 2.3, "samples the shadow map differently"): how far
-// the light travelled inside matter before reaching P, the depth of P behind the nearest
-// blocker in the light's map (metres, 0 when nothing is in front of P or the light has no map).
+// Subsurface thickness (Karis 2013, "Real Shading in Unreal Engine 4", subsurface model:
+// "samples the shadow map differently"): how far the light travelled inside matter before
+// reaching P, the depth of P behind the nearest blocker in the light's map (metres, 0 when
+// nothing is in front of P or the light has no map).
 // For a surface lit from behind, the blocker is the object's own lit side.
 float shadowThickness(Light light, uint lightIndex, vec3 P) {
     if (!kShadowsEnabled) return 0.0;

@@ -20,10 +20,11 @@ enum class LightAssignmentDevice {
     Cpu,   // job system, after a mid-frame wait for the depth occupancy
     Gpu,   // compute shaders between the occupancy and lighting passes, no wait
 };
-// How an environment (sky) lights surfaces (seed 000 section 2.2.4, seed 001).
+// How an environment (sky) lights surfaces (Karis 2013 "Real Shading in Unreal Engine 4",
+// image-based lighting; Karis 2014 "Physically Based Shading on Mobile").
 enum class IblMode {
     SplitSum,   // prefiltered radiance cube x environment BRDF LUT (eq. 7, 8): the default
-    Mobile,     // prefiltered cube x EnvBRDFApprox (seed 001), no LUT
+    Mobile,     // prefiltered cube x EnvBRDFApprox (Karis 2014, mobile), no LUT
     Reference,  // eq. 6 by Monte Carlo per pixel (referenceSamples): for measurement only
 };
 const char* iblModeName(IblMode mode);  // "split_sum", "mobile", "reference"
@@ -52,7 +53,7 @@ const char* antiAliasingName(AntiAliasing aa);  // "off", "fxaa", "taa", "gbaa"
 
 // How sphere and tube lights (and the area shapes of issue 15) are integrated (`--area-lights`;
 // render/README.md "Area lights by linearly transformed cosines").
-//   Representative: seed 000's representative point (sphere, tube) and seed 004's most
+//   Representative: Karis 2013's representative point (sphere, tube) and Drobot's (GPU Pro 5) most
 //                   important point: one direction per light, cheap, wrong for glossy surfaces
 //                   near large lights (docs/speed-vs-error.md).
 //   Ltc:            linearly transformed cosines (Heitz et al. 2016, Heitz and Hill 2017).
@@ -94,15 +95,16 @@ enum class AoSpecular {
 // in frames whose scene has a FogMedium).
 enum class VolumetricsMode {
     Off,        // no medium is drawn even if the scene has one
-    Volumes,    // seed 004 §3: each light's volume marched at half resolution
+    Volumes,    // Vos, GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow Fall": each light's
+                // volume marched at half resolution
     Froxels,    // a view-aligned grid lit from the cluster lists, integrated front to back
     Reference,  // every light, many steps per pixel at full resolution: for measurement only
 };
 const char* volumetricsModeName(VolumetricsMode mode);  // "off", "volumes", "froxels", ...
 
 // Light shafts: the sun's light scattered by the atmosphere's air between the camera and the
-// surfaces, shadowed by the sun's cascades (render/README.md "Light shafts"; issue 16, seed 004
-// §2; only in frames whose scene has an atmosphere).
+// surfaces, shadowed by the sun's cascades (render/README.md "Light shafts"; issue 16, Yusov, GPU
+// Pro 5; only in frames whose scene has an atmosphere).
 enum class ScatteringMode {
     Off,
     Epipolar,    // Yusov 2013: epipolar samples, 1D min/max trees per slice, unwarped to pixels
@@ -136,20 +138,20 @@ struct ScatteringSettings {
     float aerialFar = 200.0f;
 };
 
-// Wires (seed 004 §6, render/README.md "Wires"): Persson's clamp to a pixel's radius with the
-// alpha scaled by real / clamped radius and coverage from the distance to the centre line, or
-// the naive line a pixel wide at full alpha it replaces (for measurement).
+// Wires (Persson, GPU Pro 5, "Wire Antialiasing"; render/README.md "Wires"): Persson's clamp to a
+// pixel's radius with the alpha scaled by real / clamped radius and coverage from the distance to
+// the centre line, or the naive line a pixel wide at full alpha it replaces (for measurement).
 enum class WireMode { Coverage, Naive };
 
-// Hair (seed 004 §5, render/README.md "Hair"): Kajiya-Kay shading, or every strand fragment
-// unlit radiance 1 times its coverage (the GPAA measurement: a strand's column sums are its
-// width in pixels).
+// Hair (Martin et al., GPU Pro 5, TressFX; render/README.md "Hair"): Kajiya-Kay shading, or every
+// strand fragment unlit radiance 1 times its coverage (the GPAA measurement: a strand's column sums
+// are its width in pixels).
 enum class HairShading { Lit, Coverage };
 
-// Hair self-shadowing (seed 004 §5, render/README.md "Hair"): off; from a hair depth map per
-// shadow view, the fibres in front estimated from the depth range behind the first hair; or
-// the reference that counts the fibres between each shaded fragment and the light exactly
-// (every segment tested: small scenes only, lavapipe's loop limit).
+// Hair self-shadowing (Martin et al., GPU Pro 5, TressFX; render/README.md "Hair"): off; from a
+// hair depth map per shadow view, the fibres in front estimated from the depth range behind the
+// first hair; or the reference that counts the fibres between each shaded fragment and the light
+// exactly (every segment tested: small scenes only, lavapipe's loop limit).
 enum class HairSelfShadow { Off, DepthMap, Reference };
 
 struct VolumetricsSettings {
@@ -163,7 +165,7 @@ struct VolumetricsSettings {
     uint32_t volumeSteps = 16;
     // How `volumes` finds the lights a pixel's ray meets: true, each light's proxy mesh (a
     // sphere, a cone) rasterised into the half-resolution target with additive blending, the
-    // fragment marching its light (seed 004 §3); false, a compute march over CPU light lists
+    // fragment marching its light (Vos, GPU Pro 5); false, a compute march over CPU light lists
     // per 8x8 tile (light_bins.h). The same sums (to 1e-7); the lists cost 1.5-3.5x less on
     // lavapipe at 1 to 4,096 lights (render/README.md "Volumetric lighting"), so they are the
     // default.
@@ -191,8 +193,9 @@ struct AmbientOcclusionSettings {
 // reflections"). They replace the environment's split-sum specular where a ray finds the
 // reflected surface on screen, in proportion to its confidence.
 enum class SsrMode {
-    Off,        // no pass in the graph
-    Hiz,        // Hi-Z tracing against a nearest-depth pyramid (seed 004 section 4)
+    Off,  // no pass in the graph
+    Hiz,  // Hi-Z tracing against a nearest-depth pyramid (Uludag, GPU Pro 5, "Hi-Z Screen-Space
+          // Cone-Traced Reflections")
     Reference,  // a linear march in small steps at full resolution: for measurement only
 };
 const char* ssrModeName(SsrMode mode);  // "off", "hiz", "reference"
@@ -218,8 +221,8 @@ struct SsrSettings {
     // The reference's rays per pixel of a rough surface (importance-sampled from its GGX lobe;
     // a mirror traces one).
     uint32_t referenceRays = 64;
-    // Cone tracing (seed 004 section 4, pass 5): circles along the cone weighted by the
-    // pre-integrated visibility; off: one pre-convolved read at the hit.
+    // Cone tracing (Uludag, GPU Pro 5, the cone-tracing pass): circles along the cone weighted by
+    // the pre-integrated visibility; off: one pre-convolved read at the hit.
     bool coneTracing = true;
     uint32_t coneSamples = 8;  // most circles along a cone
     // Temporal filtering: last frame's reflection reprojected with the motion vectors, clamped

@@ -29,7 +29,7 @@ layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
 // Stats variant: counts evaluated and lit light-pixel pairs per workgroup.
 layout(constant_id = SPEC_COUNT_LIGHT_PAIRS) const bool kCountLightPairs = false;
 // Image-based lighting: none (no sky), split sum (prefiltered cube x LUT, eq. 7), mobile
-// (prefiltered cube x seed 001's analytic fit) or reference (eq. 6 by Monte Carlo per pixel).
+// (prefiltered cube x Karis 2014's analytic fit) or reference (eq. 6 by Monte Carlo per pixel).
 const uint kIblNone = 0u;
 const uint kIblSplitSum = 1u;
 const uint kIblMobile = 2u;
@@ -477,7 +477,8 @@ vec3 ambientRadiance(PixelShading px, ivec2 pixel) {
                                            push.prefilteredMipCount, environmentBrdfLut,
                                            kIblMode == kIblMobile);
         if (kSkyOcclusion) coat *= sky.specular;
-        // The mobile path's coat reflects by seed 001's fit: it takes what the fit gives it.
+        // The mobile path's coat reflects by Karis 2014's mobile fit: it takes what the fit
+        // gives it.
         float attenuation = px.coatAttenuation;
         if (kIblMode == kIblMobile) {
             attenuation = clearCoatAttenuation(
