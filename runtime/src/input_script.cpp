@@ -29,6 +29,9 @@ bool parseFloat(const std::string& text, float& value) {
 std::optional<InputScript> InputScript::parse(std::string_view text, const std::string& source,
                                               std::string& error) {
     InputScript script;
+    // A UTF-8 byte order mark (editors on Windows write one) is not part of the first line:
+    // it was read as part of its frame number ("got '\ufeff0'").
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     std::istringstream lines{std::string(text)};
     std::string line;
     std::uint32_t lineNumber = 0;

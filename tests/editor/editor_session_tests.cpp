@@ -244,6 +244,12 @@ TEST_F(EditorSession, AMissingSceneIsABadArgument) {
     std::string errors;
     EXPECT_EQ(runEditor(dir / "missing.scene.json", "quit\n", errors), 2);
     EXPECT_NE(errors.find("missing.scene.json: no such file"), std::string::npos) << errors;
+    // Issue 44: a device or a folder is named as what it is, not as missing.
+    EXPECT_EQ(runEditor("/dev/zero", "quit\n", errors), 2);
+    EXPECT_NE(errors.find("/dev/zero: not a regular file"), std::string::npos) << errors;
+    EXPECT_EQ(errors.find("no such file"), std::string::npos) << errors;
+    EXPECT_EQ(runEditor(dir, "quit\n", errors), 2);
+    EXPECT_NE(errors.find("is a directory, not a scene file"), std::string::npos) << errors;
 }
 
 // Issue 22: saving over a file keeps what the file is. A read-only scene is refused unless the

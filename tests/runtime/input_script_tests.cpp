@@ -45,6 +45,22 @@ TEST(InputScript, KeysGoDownAndUpOnTheirFrames) {
     EXPECT_EQ(pressed, (std::vector<bool>{false, false, true, false, false, false}));
 }
 
+// Issue 44: a script saved with a UTF-8 byte order mark reads as the same script.
+TEST(InputScript, ByteOrderMarkIsNotPartOfTheFirstFrameNumber) {
+    InputScript withMark = parseOk(
+        "\xEF\xBB\xBF"
+        "0 down d\n2 up d\n");
+    InputState state;
+    state.beginFrame();
+    withMark.apply(0, state);
+    EXPECT_TRUE(state.down(Key::D));
+    // Only at the start: a mark anywhere else is still an error.
+    EXPECT_NE(parseError("0 down d\n\xEF\xBB\xBF"
+                         "2 up d\n")
+                  .find("bad.input:2"),
+              std::string::npos);
+}
+
 TEST(InputScript, TapHoldMouseButtonAndQuit) {
     InputScript script =
         parseOk("1 tap R\n0 hold LeftShift 3\n1 mouse 4.5 -2\n2 button down left\n5 quit\n");

@@ -15,9 +15,19 @@ bool isGltf(const std::filesystem::path& path) {
 }  // namespace
 
 std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::string& error) {
+    // What is there, said as it is: `open /dev/zero` answered "no such file" (issue 44).
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) {
         error = path.string() + ": no such file";
+        return std::nullopt;
+    }
+    if (std::filesystem::is_directory(status)) {
+        error = path.string() + ": is a directory, not a scene file";
+        return std::nullopt;
+    }
+    if (!std::filesystem::is_regular_file(status)) {
+        error = path.string() + ": not a regular file (a device, pipe or socket), not a scene file";
         return std::nullopt;
     }
     // The same loading as `candela run` (viewing defaults for a bare glTF, the background),
