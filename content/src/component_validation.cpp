@@ -270,7 +270,12 @@ ValueProblems validateAtmosphere(Atmosphere& a) {
 ValueProblems validateRotation(const std::array<float, 4>& q) {
     ValueProblems problems;
     const float lengthSq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-    if (!(lengthSq > 1e-12f) || !finite(lengthSq)) {
+    // Said as it is: a 3e38 component overflowed the length and was called "a zero quaternion".
+    if (!finite(lengthSq)) {
+        reject(problems, "rotation",
+               "its length is not a finite number (components too large or not finite): not "
+               "a rotation");
+    } else if (!(lengthSq > 1e-12f)) {
         reject(problems, "rotation", "a zero quaternion is not a rotation");
     }
     return problems;

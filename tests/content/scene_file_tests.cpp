@@ -416,6 +416,43 @@ TEST(SceneFile, QualityRoundTripsAndBadValuesAreNamed) {
     EXPECT_TRUE(badDiagnostics.mentions("ultra")) << badDiagnostics.toString();
 }
 
+// Issue 44: "exposure_compensation" takes the range --exposure-compensation takes; +-3e38 was
+// accepted. A value outside it is named and the scene loads without it.
+TEST(SceneFile, ExposureCompensationOutsideSixteenEvIsNamed) {
+    for (const char* value : {"3e38", "-3e38", "16.5"}) {
+        const std::string bad = std::string(R"({"format": "candela.scene", "version": 1, )") +
+                                R"("exposure_compensation": )" + value + R"(, "entities": []})";
+        Diagnostics diagnostics;
+        auto scene = parseSceneJson(std::as_bytes(std::span(bad)), "e.scene.json", diagnostics);
+        ASSERT_TRUE(scene) << value;
+        EXPECT_FALSE(scene->exposureCompensation.has_value()) << value;
+        EXPECT_TRUE(
+            diagnostics.mentions("/exposure_compensation: error: expected EV from -16 to 16"))
+            << diagnostics.toString();
+    }
+    const std::string fine =
+        R"({"format": "candela.scene", "version": 1, "exposure_compensation": -16, "entities": []})";
+    Diagnostics diagnostics;
+    auto scene = parseSceneJson(std::as_bytes(std::span(fine)), "e.scene.json", diagnostics);
+    ASSERT_TRUE(scene);
+    EXPECT_EQ(scene->exposureCompensation, -16.0f);
+}
+
+// Issue 44: a quaternion whose length overflows is not called a zero quaternion.
+TEST(SceneFile, OverflowingQuaternionIsNamedAsSuch) {
+    const std::string text = R"({"format": "candela.scene", "version": 1, "entities": [
+        {"name": "huge", "transform": {"rotation": [3e38, 0, 0, 3e38]}}]})";
+    Diagnostics diagnostics;
+    auto scene = parseSceneJson(std::as_bytes(std::span(text)), "r.scene.json", diagnostics);
+    ASSERT_TRUE(scene);
+    EXPECT_TRUE(
+        diagnostics.mentions("/entities/0/transform/rotation: error: its length is not a "
+                             "finite number"))
+        << diagnostics.toString();
+    EXPECT_FALSE(diagnostics.mentions("zero quaternion")) << diagnostics.toString();
+    EXPECT_EQ(scene->entities[0].transform.rotation, (std::array<float, 4>{0, 0, 0, 1}));
+}
+
 // Sky occlusion: the top-level "sky_occlusion" survives save and load; a bad value is named
 // and the scene loads with the engine's default.
 TEST(SceneFile, SkyOcclusionSettingRoundTripsAndBadValuesAreNamed) {

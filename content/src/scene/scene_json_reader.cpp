@@ -741,7 +741,13 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
     optionalEnumeration("exposure", kSceneExposures, scene.exposure);
     if (root.contains("exposure_compensation")) {
         float compensation = 0.0f;
-        if (reader.clean([&] { reader.number(root, "", "exposure_compensation", compensation); })) {
+        // The range --exposure-compensation takes (issue 44: +-3e38 was accepted).
+        if (reader.clean([&] {
+                reader.number(root, "", "exposure_compensation", compensation);
+                if (!(std::abs(compensation) <= 16.0f)) {
+                    reader.error("/exposure_compensation", "expected EV from -16 to 16");
+                }
+            })) {
             scene.exposureCompensation = compensation;
         }
     }
