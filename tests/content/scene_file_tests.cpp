@@ -438,6 +438,39 @@ TEST(SceneFile, ExposureCompensationOutsideSixteenEvIsNamed) {
     EXPECT_EQ(scene->exposureCompensation, -16.0f);
 }
 
+// Issue 44: unknown keys were ignored without a word. Each is a warning naming its JSON
+// pointer and, when one is near, the known key meant; the scene loads as before. A written
+// scene reads back without one, and "gameData" is the game's to check.
+TEST(SceneFile, UnknownKeysAreNamedWithTheClosestKnownKey) {
+    const std::string text = R"({"format": "candela.scene", "version": 1, "qualty": "low",
+      "entities": [
+        {"name": "a", "transform": {"translaton": [1, 2, 3]}, "rigidBody": {"mass": 1},
+         "light": {"type": "point", "lumen": 5}, "gameData": {"anything": 1}}]})";
+    Diagnostics diagnostics;
+    auto scene = parseSceneJson(std::as_bytes(std::span(text)), "k.scene.json", diagnostics);
+    ASSERT_TRUE(scene) << diagnostics.toString();
+    ASSERT_EQ(scene->entities.size(), 1u);
+    EXPECT_TRUE(scene->entities[0].light.has_value());
+    EXPECT_EQ(scene->entities[0].transform.translation, (std::array<float, 3>{0, 0, 0}));
+    for (const char* expected :
+         {"/qualty: warning: unknown key 'qualty', ignored (did you mean 'quality'?)",
+          "/entities/0/transform/translaton: warning: unknown key 'translaton', ignored (did "
+          "you mean 'translation'?)",
+          "/entities/0/light/lumen: warning: unknown key 'lumen', ignored (did you mean "
+          "'lumens'?)",
+          "/entities/0/rigidBody: warning: unknown key 'rigidBody', ignored"}) {
+        EXPECT_TRUE(diagnostics.mentions(expected)) << expected << "\n" << diagnostics.toString();
+    }
+    EXPECT_FALSE(diagnostics.mentions("anything")) << diagnostics.toString();
+
+    std::string error;
+    const std::string written = sceneToJson(exampleScene(), error);
+    ASSERT_EQ(error, "");
+    Diagnostics clean;
+    ASSERT_TRUE(parseSceneJson(std::as_bytes(std::span(written)), "w.scene.json", clean));
+    EXPECT_FALSE(clean.mentions("unknown key")) << clean.toString();
+}
+
 // Issue 44: a quaternion whose length overflows is not called a zero quaternion.
 TEST(SceneFile, OverflowingQuaternionIsNamedAsSuch) {
     const std::string text = R"({"format": "candela.scene", "version": 1, "entities": [

@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <set>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "candela/content/builtin_meshes.h"
 #include "candela/content/component_validation.h"
@@ -61,7 +65,52 @@ public:
 
     void error(const std::string& pointer, const std::string& message) {
         diagnostics_.error(file_, pointer, message);
+        errorPointers_.push_back(pointer);
         failed_ = true;
+    }
+
+    // Keys the reading looked for, per JSON object (whether present or not), so the keys it
+    // never looked for can be named (reportUnknownKeys): a typo such as "translaton" loaded as
+    // if absent, without a word (issue 44).
+    void known(const json& object, const std::string& p, const char* key) {
+        KnownKeys& k = known_[&object];
+        k.pointer = p;
+        k.keys.insert(key);
+    }
+    bool has(const json& object, const std::string& p, const char* key) {
+        known(object, p, key);
+        return object.contains(key);
+    }
+    // A warning per key of a read object that no reading looked for, with the closest known
+    // key when one is near. Objects with an error of their own (at the object or one of its
+    // keys) are left out: their reading may have stopped before it looked for the rest.
+    void reportUnknownKeys() {
+        auto ownError = [](const std::string& error, const std::string& object) {
+            if (error == object) return true;
+            const std::string prefix = object + "/";
+            return error.rfind(prefix, 0) == 0 &&
+                   error.find('/', prefix.size()) == std::string::npos;
+        };
+        std::vector<std::pair<std::string, std::string>> unknown;
+        for (const auto& [object, k] : known_) {
+            if (!object->is_object()) continue;
+            if (std::any_of(errorPointers_.begin(), errorPointers_.end(),
+                            [&](const std::string& e) { return ownError(e, k.pointer); })) {
+                continue;
+            }
+            for (const auto& item : object->items()) {
+                if (k.keys.count(item.key())) continue;
+                std::string message = "unknown key '" + item.key() + "', ignored";
+                if (const std::string near = closestKey(item.key(), k.keys); !near.empty()) {
+                    message += " (did you mean '" + near + "'?)";
+                }
+                unknown.emplace_back(k.pointer + "/" + item.key(), std::move(message));
+            }
+        }
+        // In document order of their pointers, not of the objects' addresses.
+        std::sort(unknown.begin(), unknown.end());
+        for (const auto& [pointer, message] : unknown)
+            warning(pointer, message);
     }
     void warning(const std::string& pointer, const std::string& message) {
         diagnostics_.warning(file_, pointer, message);
@@ -70,6 +119,7 @@ public:
     // Each read leaves `out` unchanged when the key is absent and records an error (setting
     // failed_) when it is present but wrong.
     void number(const json& object, const std::string& p, const char* key, float& out) {
+        known(object, p, key);
         auto it = object.find(key);
         if (it == object.end()) return;
         if (!it->is_number()) return error(p + "/" + key, "expected a number");
@@ -82,6 +132,7 @@ public:
     template <std::size_t N>
     void numbers(const json& object, const std::string& p, const char* key,
                  std::array<float, N>& out) {
+        known(object, p, key);
         auto it = object.find(key);
         if (it == object.end()) return;
         if (!it->is_array() || it->size() != N) {
@@ -101,6 +152,7 @@ public:
     template <typename Int>
     void integer(const json& object, const std::string& p, const char* key, Int& out,
                  std::int64_t lo, std::int64_t hi) {
+        known(object, p, key);
         auto it = object.find(key);
         if (it == object.end()) return;
         if (!it->is_number_integer()) return error(p + "/" + key, "expected an integer");
@@ -113,12 +165,14 @@ public:
         out = static_cast<Int>(v);
     }
     void string(const json& object, const std::string& p, const char* key, std::string& out) {
+        known(object, p, key);
         auto it = object.find(key);
         if (it == object.end()) return;
         if (!it->is_string()) return error(p + "/" + key, "expected a string");
         out = it->get<std::string>();
     }
     void boolean(const json& object, const std::string& p, const char* key, bool& out) {
+        known(object, p, key);
         auto it = object.find(key);
         if (it == object.end()) return;
         if (!it->is_boolean()) return error(p + "/" + key, "expected true or false");
@@ -127,6 +181,7 @@ public:
     template <typename E, std::size_t N>
     void enumeration(const json& object, const std::string& p, const char* key,
                      const EnumNames<E, N>& names, E& out) {
+        known(object, p, key);
         std::string text;
         auto it = object.find(key);
         if (it == object.end()) return;
@@ -173,6 +228,7 @@ public:
             error(q + "/secondaryExponent", "an exponent must be above 0");
     }
     bool object(const json& parent, const std::string& p, const char* key, const json*& out) {
+        known(parent, p, key);
         auto it = parent.find(key);
         if (it == parent.end()) return false;
         if (!it->is_object()) {
@@ -212,7 +268,7 @@ public:
         numbers(j, p, "rotation", t.rotation);
         numbers(j, p, "scale", t.scale);
         report(p, validateRotation(t.rotation));
-        if (j.contains("lookAt")) {
+        if (has(j, p, "lookAt")) {
             if (j.contains("rotation")) {
                 return error(p + "/lookAt", "give \"rotation\" or \"lookAt\", not both");
             }
@@ -280,7 +336,7 @@ public:
         textureRef(j, p, "clearcoatNormalTexture", m.clearcoatNormalTexture);
         number(j, p, "clearcoatNormalScale", m.clearcoatNormalScale);
         report(p, validateEmission(m));
-        if (j.contains("layers") || j.contains("layerMask")) layering(j, p, m);
+        if (has(j, p, "layers") || has(j, p, "layerMask")) layering(j, p, m);
     }
 
     // One layer's parameters (library entry or a material's copy of one).
@@ -301,6 +357,7 @@ public:
 
     // The layer library (top-level "materialLayers"); read before the entities.
     void layerLibrary(const json& root, std::vector<MaterialLayer>& library) {
+        known(root, "", "materialLayers");
         auto it = root.find("materialLayers");
         if (it == root.end()) return;
         if (!it->is_array()) return error("/materialLayers", "expected an array");
@@ -442,13 +499,13 @@ public:
         integer(m, p, "mesh", mesh.meshIndex, 0, std::numeric_limits<std::int32_t>::max());
         string(m, p, "builtin", mesh.builtin);
         if (!mesh.builtin.empty()) {
-            if (m.contains("gltf") || m.contains("mesh")) {
+            if (has(m, p, "gltf") || has(m, p, "mesh")) {
                 error(p + "/builtin", "give \"gltf\" or \"builtin\", not both");
             } else if (!builtinMeshFromName(mesh.builtin)) {
                 error(p + "/builtin",
                       "'" + mesh.builtin + "' is not one of: " + std::string(builtinMeshNames()));
             }
-        } else if (mesh.gltfPath.empty() && !m.contains("builtin")) {
+        } else if (mesh.gltfPath.empty() && !has(m, p, "builtin")) {
             error(p + "/gltf",
                   "missing glTF path (or \"builtin\": " + std::string(builtinMeshNames()) + ")");
         } else if (mesh.gltfPath.empty()) {
@@ -465,6 +522,7 @@ public:
     // A clip by name (a string) or by index (an integer); whether the model has it is checked
     // when the model is loaded (instantiateScene).
     void clip(const json& object, const std::string& p, SceneClip& out) {
+        known(object, p, "clip");
         auto it = object.find("clip");
         if (it == object.end()) return;
         if (it->is_string()) {
@@ -542,6 +600,7 @@ public:
                 e.animation = value;
             }
         }
+        known(j, p, "materialOverrides");
         if (auto it = j.find("materialOverrides"); it != j.end()) {
             if (!it->is_array()) error(p + "/materialOverrides", "expected an array");
             for (std::size_t i = 0; it->is_array() && i < it->size(); ++i) {
@@ -592,7 +651,7 @@ public:
                         numbers(*b, q + "/bounds", "min", bounds.min);
                         numbers(*b, q + "/bounds", "max", bounds.max);
                         for (const char* key : {"min", "max"}) {
-                            if (!b->contains(key)) {
+                            if (!has(*b, q + "/bounds", key)) {
                                 error(q + "/bounds/" + key,
                                       "expected an array of 3 numbers (metres, world space)");
                             }
@@ -612,11 +671,48 @@ public:
             Atmosphere value;
             if (clean([&] { atmosphere(*a, p + "/atmosphere", value); })) e.atmosphere = value;
         }
+        known(j, p, "gameData");  // the game's own: its keys are not the engine's to check
         if (auto it = j.find("gameData"); it != j.end()) e.gameDataJson = it->dump();
         return e;
     }
 
 private:
+    struct KnownKeys {
+        std::string pointer;
+        std::set<std::string> keys;
+    };
+    // The known key nearest `key` by edit distance, if within a third of its length (at least
+    // 1, at most 3 edits); empty otherwise.
+    static std::string closestKey(const std::string& key, const std::set<std::string>& keys) {
+        std::string best;
+        std::size_t bestDistance = std::clamp<std::size_t>(key.size() / 3, 1, 3) + 1;
+        for (const std::string& candidate : keys) {
+            const std::size_t d = editDistance(key, candidate);
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = candidate;
+            }
+        }
+        return best;
+    }
+    // Levenshtein distance (insertions, deletions, substitutions), two rows.
+    static std::size_t editDistance(const std::string& a, const std::string& b) {
+        std::vector<std::size_t> previous(b.size() + 1), current(b.size() + 1);
+        for (std::size_t j = 0; j <= b.size(); ++j)
+            previous[j] = j;
+        for (std::size_t i = 1; i <= a.size(); ++i) {
+            current[0] = i;
+            for (std::size_t j = 1; j <= b.size(); ++j) {
+                const std::size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+                current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+            }
+            std::swap(previous, current);
+        }
+        return previous[b.size()];
+    }
+
+    std::map<const json*, KnownKeys> known_;
+    std::vector<std::string> errorPointers_;
     const std::string& file_;
     Diagnostics& diagnostics_;
     const std::vector<MaterialLayer>* library_ = nullptr;
@@ -698,6 +794,8 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         reader.error("", "expected a JSON object at the top level");
         return std::nullopt;
     }
+    for (const char* key : {"format", "version", "entities"})
+        reader.known(root, "", key);
     if (auto format = root.find("format"); format == root.end() || *format != kFormatName) {
         reader.error("/format", "missing or not \"" + std::string(kFormatName) + "\"");
         return std::nullopt;
@@ -722,13 +820,13 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
     // A top-level choice among named values, when present: a bad name is reported and the
     // field left unset (the engine's default).
     auto optionalEnumeration = [&](const char* key, const auto& names, auto& field) {
-        if (!root.contains(key)) return;
+        if (!reader.has(root, "", key)) return;
         typename std::remove_reference_t<decltype(field)>::value_type value{};
         if (reader.clean([&] { reader.enumeration(root, "", key, names, value); })) field = value;
     };
     // A misspelt value is reported and the default kept: the scene still loads.
     optionalEnumeration("brdf", kSceneBrdfs, scene.brdf);
-    if (root.contains("bloom")) {
+    if (reader.has(root, "", "bloom")) {
         float bloom = 0.0f;
         if (reader.clean([&] { reader.number(root, "", "bloom", bloom); })) {
             if (bloom >= 0.0f && bloom <= 1.0f) {
@@ -739,7 +837,7 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         }
     }
     optionalEnumeration("exposure", kSceneExposures, scene.exposure);
-    if (root.contains("exposure_compensation")) {
+    if (reader.has(root, "", "exposure_compensation")) {
         float compensation = 0.0f;
         // The range --exposure-compensation takes (issue 44: +-3e38 was accepted).
         if (reader.clean([&] {
@@ -752,7 +850,7 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         }
     }
     optionalEnumeration("aa", kSceneAntiAliasing, scene.aa);
-    if (root.contains("msaa")) {
+    if (reader.has(root, "", "msaa")) {
         uint32_t msaa = 1;
         if (reader.clean([&] { reader.integer(root, "", "msaa", msaa, 1, 8); })) {
             if (msaa == 1 || msaa == 2 || msaa == 4 || msaa == 8) {
@@ -766,6 +864,7 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
     optionalEnumeration("quality", kQualityLevelNames, scene.quality);
     optionalEnumeration("scattering", kSceneScatteringModes, scene.scattering);
     optionalEnumeration("volumetrics", kSceneVolumetricsModes, scene.volumetrics);
+    reader.known(root, "", "volume_proxies");
     if (auto proxies = root.find("volume_proxies"); proxies != root.end()) {
         // As the command line spells it ("off", "on") or as JSON does (false, true).
         if (proxies->is_boolean()) {
@@ -783,7 +882,7 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         // Like "brdf": a bad value is reported and its default kept; the scene still loads.
         SceneAmbientOcclusion settings;
         SceneAoMode mode = SceneAoMode::Gtao;
-        if (ao->contains("mode") && reader.clean([&] {
+        if (reader.has(*ao, "/ambient_occlusion", "mode") && reader.clean([&] {
                 reader.enumeration(*ao, "/ambient_occlusion", "mode", kSceneAoModes, mode);
             })) {
             settings.mode = mode;
@@ -814,6 +913,7 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
             reader.entity((*entities)[i], "/entities/" + std::to_string(i), entities->size()));
     }
     checkParents(scene, reader);
+    reader.reportUnknownKeys();
     return scene;
 }
 
