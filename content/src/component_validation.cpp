@@ -281,6 +281,39 @@ ValueProblems validateRotation(const std::array<float, 4>& q) {
     return problems;
 }
 
+ValueProblems validateMaterialFactors(Material& material) {
+    struct UnitFactor {
+        const char* name;
+        float Material::*field;
+    };
+    static constexpr UnitFactor kUnitFactors[] = {
+        {"metallicFactor", &Material::metallicFactor},
+        {"roughnessFactor", &Material::roughnessFactor},
+        {"occlusionStrength", &Material::occlusionStrength},
+        {"cavity", &Material::cavity},
+        {"specular", &Material::specular},
+        {"subsurfaceOpacity", &Material::subsurfaceOpacity},
+        {"anisotropyStrength", &Material::anisotropyStrength},
+        {"clearcoatFactor", &Material::clearcoatFactor},
+        {"clearcoatRoughnessFactor", &Material::clearcoatRoughnessFactor},
+    };
+    ValueProblems problems;
+    for (const UnitFactor& f : kUnitFactors) {
+        float& value = material.*f.field;
+        if (std::isnan(value)) {
+            reject(problems, f.name, "must be a number from 0 to 1, got NaN");
+        } else if (value < 0.0f || value > 1.0f) {
+            const float clamped = std::clamp(value, 0.0f, 1.0f);
+            problems.push_back({f.name,
+                                std::string(f.name) + " of material '" + material.name + "' " +
+                                    text(value) + " is outside [0, 1]; clamped to " + text(clamped),
+                                true});
+            value = clamped;
+        }
+    }
+    return problems;
+}
+
 ValueProblems validateEmission(Material& material) {
     ValueProblems problems;
     for (float& c : material.emissiveFactor) {

@@ -471,6 +471,32 @@ TEST(SceneFile, UnknownKeysAreNamedWithTheClosestKnownKey) {
     EXPECT_FALSE(clean.mentions("unknown key")) << clean.toString();
 }
 
+// Issue 44: material overrides in scene files skipped the range checks glTF's importer applies
+// (anisotropyStrength 3e38 or -5, clearcoatFactor 3e38 were taken). Factors on [0, 1] are
+// clamped with a warning naming the field.
+TEST(SceneFile, MaterialFactorsOutsideZeroToOneAreClampedWithAWarning) {
+    const std::string text = R"({"format": "candela.scene", "version": 1, "entities": [
+        {"name": "m", "mesh": {"builtin": "box", "material": {"name": "odd",
+          "anisotropyStrength": 3e38, "clearcoatFactor": 3e38, "roughnessFactor": -5,
+          "metallicFactor": 0.5}}}]})";
+    Diagnostics diagnostics;
+    auto scene = parseSceneJson(std::as_bytes(std::span(text)), "m.scene.json", diagnostics);
+    ASSERT_TRUE(scene) << diagnostics.toString();
+    ASSERT_EQ(scene->entities[0].materialOverrides.size(), 1u) << diagnostics.toString();
+    const Material& m = scene->entities[0].materialOverrides[0].material;
+    EXPECT_EQ(m.anisotropyStrength, 1.0f);
+    EXPECT_EQ(m.clearcoatFactor, 1.0f);
+    EXPECT_EQ(m.roughnessFactor, 0.0f);
+    EXPECT_EQ(m.metallicFactor, 0.5f);
+    for (const char* field : {"anisotropyStrength", "clearcoatFactor", "roughnessFactor"}) {
+        EXPECT_TRUE(diagnostics.mentions(std::string("/entities/0/mesh/material/") + field +
+                                         ": warning: " + field + " of material 'odd'"))
+            << field << "\n"
+            << diagnostics.toString();
+    }
+    EXPECT_FALSE(diagnostics.mentions("metallicFactor")) << diagnostics.toString();
+}
+
 // Issue 44: a quaternion whose length overflows is not called a zero quaternion.
 TEST(SceneFile, OverflowingQuaternionIsNamedAsSuch) {
     const std::string text = R"({"format": "candela.scene", "version": 1, "entities": [

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -489,6 +490,21 @@ TEST_F(EditorModel, MaterialEditsWriteOverridesAndKeepTheModelMaterial) {
     EXPECT_EQ(effectiveMaterial(*scene, floor, 0).cavity, 0.4f);
     ASSERT_TRUE(scene->execute(propertyEdit(*scene, floor, "material.cavity", {3.0f}, error)));
     EXPECT_EQ(effectiveMaterial(*scene, floor, 0).cavity, 1.0f);
+    // Issue 44: the clamp says so, as every other clamped edit does (3e38 was silent).
+    std::string notice;
+    ASSERT_TRUE(
+        scene->execute(propertyEdit(*scene, floor, "material.cavity", {3e38f}, error, &notice)));
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).cavity, 1.0f);
+    EXPECT_NE(notice.find("cavity"), std::string::npos) << notice;
+    EXPECT_NE(notice.find("clamped to 1"), std::string::npos) << notice;
+    ASSERT_TRUE(scene->execute(
+        propertyEdit(*scene, floor, "material.anisotropy", {-5.0f}, error, &notice)));
+    EXPECT_EQ(effectiveMaterial(*scene, floor, 0).anisotropyStrength, 0.0f);
+    EXPECT_NE(notice.find("anisotropyStrength"), std::string::npos) << notice;
+    EXPECT_FALSE(propertyEdit(*scene, floor, "material.clearcoat", {std::nanf("")}, error));
+    EXPECT_NE(error.find("clearcoatFactor"), std::string::npos) << error;
+    ASSERT_TRUE(scene->undo());
+    ASSERT_TRUE(scene->undo());
     ASSERT_TRUE(scene->undo());
     ASSERT_TRUE(scene->undo());
     EXPECT_EQ(effectiveMaterial(*scene, floor, 0).cavity, 1.0f);

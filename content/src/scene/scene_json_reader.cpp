@@ -305,13 +305,6 @@ public:
         textureRef(j, p, "occlusionTexture", m.occlusionTexture);
         number(j, p, "occlusionStrength", m.occlusionStrength);
         number(j, p, "cavity", m.cavity);
-        if (!(m.cavity >= 0.0f && m.cavity <= 1.0f)) {
-            const float clamped = std::clamp(m.cavity, 0.0f, 1.0f);
-            warning(p + "/cavity", "cavity of material '" + m.name + "' " +
-                                       std::to_string(m.cavity) +
-                                       " is outside [0, 1]; clamped to " + std::to_string(clamped));
-            m.cavity = clamped;
-        }
         textureRef(j, p, "emissiveTexture", m.emissiveTexture);
         numbers(j, p, "emissiveFactor", m.emissiveFactor);
         number(j, p, "emissiveStrength", m.emissiveStrength);
@@ -335,6 +328,7 @@ public:
         textureRef(j, p, "clearcoatRoughnessTexture", m.clearcoatRoughnessTexture);
         textureRef(j, p, "clearcoatNormalTexture", m.clearcoatNormalTexture);
         number(j, p, "clearcoatNormalScale", m.clearcoatNormalScale);
+        report(p, validateMaterialFactors(m));
         report(p, validateEmission(m));
         if (has(j, p, "layers") || has(j, p, "layerMask")) layering(j, p, m);
     }

@@ -46,7 +46,10 @@ EditCheck checkEdit(ecs::LocalTransform& value) {
 }
 
 EditCheck checkEdit(content::Material& value) {
-    return fromProblems(content::validateEmission(value));
+    content::ValueProblems problems = content::validateMaterialFactors(value);
+    for (content::ValueProblem& p : content::validateEmission(value))
+        problems.push_back(std::move(p));
+    return fromProblems(problems);
 }
 
 }  // namespace candela::editor

@@ -100,8 +100,8 @@ const std::map<std::string, Field<content::Material>>& fields() {
         {"metallic", {1, [](M& m, const Values& v) { m.metallicFactor = v[0]; }}},
         {"roughness", {1, [](M& m, const Values& v) { m.roughnessFactor = v[0]; }}},
         {"specular", {1, [](M& m, const Values& v) { m.specular = v[0]; }}},
-        // Clamped as the loaders clamp it: [0, 1], 1 none.
-        {"cavity", {1, [](M& m, const Values& v) { m.cavity = std::clamp(v[0], 0.0f, 1.0f); }}},
+        // [0, 1], 1 none: clamped with a notice by the shared rules (checkEdit).
+        {"cavity", {1, [](M& m, const Values& v) { m.cavity = v[0]; }}},
         {"anisotropy", {1, [](M& m, const Values& v) { m.anisotropyStrength = v[0]; }}},
         {"anisotropyRotation", {1, [](M& m, const Values& v) { m.anisotropyRotation = v[0]; }}},
         {"clearcoat", {1, [](M& m, const Values& v) { m.clearcoatFactor = v[0]; }}},

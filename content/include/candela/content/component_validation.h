@@ -61,5 +61,10 @@ ValueProblems validateRotation(const std::array<float, 4>& rotation);
 // emissiveFactor x emissiveStrength: negative values and luminances over
 // kMaxEmissiveLuminance are clamped.
 ValueProblems validateEmission(Material& material);
+// The factors defined on [0, 1] (metallic, roughness, occlusion strength, cavity, specular,
+// subsurface opacity, anisotropy strength, clear coat and its roughness): outside, clamped
+// with a warning; NaN refused. Scene files and editor edits share it (issue 44: a cavity of
+// 3e38 was clamped by the editor without a word).
+ValueProblems validateMaterialFactors(Material& material);
 
 }  // namespace candela::content
