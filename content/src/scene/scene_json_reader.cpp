@@ -100,11 +100,13 @@ public:
             }
             for (const auto& item : object->items()) {
                 if (k.keys.count(item.key())) continue;
-                std::string message = "unknown key '" + item.key() + "', ignored";
+                const std::string shown =
+                    item.key().size() > 64 ? item.key().substr(0, 64) + "..." : item.key();
+                std::string message = "unknown key '" + shown + "', ignored";
                 if (const std::string near = closestKey(item.key(), k.keys); !near.empty()) {
                     message += " (did you mean '" + near + "'?)";
                 }
-                unknown.emplace_back(k.pointer + "/" + item.key(), std::move(message));
+                unknown.emplace_back(k.pointer + "/" + shown, std::move(message));
             }
         }
         // In document order of their pointers, not of the objects' addresses.
@@ -679,6 +681,9 @@ private:
     // 1, at most 3 edits); empty otherwise.
     static std::string closestKey(const std::string& key, const std::set<std::string>& keys) {
         std::string best;
+        // Names are short; a long key is no typo, and its distances would cost its length
+        // times every known key's (a fuzzed file can hold megabyte keys).
+        if (key.size() > 64) return best;
         std::size_t bestDistance = std::clamp<std::size_t>(key.size() / 3, 1, 3) + 1;
         for (const std::string& candidate : keys) {
             const std::size_t d = editDistance(key, candidate);
