@@ -109,7 +109,7 @@ public:
                 unknown.emplace_back(k.pointer + "/" + shown, std::move(message));
             }
         }
-        // In document order of their pointers, not of the objects' addresses.
+        // Sorted by pointer, so the order is the same run after run (not the objects' addresses).
         std::sort(unknown.begin(), unknown.end());
         for (const auto& [pointer, message] : unknown)
             warning(pointer, message);
