@@ -52,7 +52,8 @@ static_assert(sizeof(GpuMaterial) % 16 == 0, "std430 array stride");
 
 GpuMaterial packMaterial(const content::Material& material);
 // The texture slots packMaterial marks present (bit i: GpuMaterial::transforms[i]): the
-// G-buffer pipeline a draw takes (material.glsl's kMaterialTextureSlots).
+// G-buffer pipeline a draw takes (material.glsl's kMaterialTextureSlots). SceneResources keeps
+// it per material (materialTextureSlots).
 uint32_t presentTextureSlots(const content::Material& material);
 ShadingModelId shadingModelId(content::ShadingModel model);
 

@@ -278,6 +278,7 @@ uint32_t SceneResources::addMaterialWithTextures(const content::Material& materi
                                                  const MaterialBinding& binding) {
     materials_.push_back(material);
     materialBindings_.push_back(binding);
+    materialTextureSlots_.push_back(presentTextureSlots(material));
     materialsDirty_ = true;
     return uint32_t(materials_.size() - 1);
 }

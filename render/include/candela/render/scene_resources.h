@@ -140,6 +140,9 @@ public:
         return materialBindings_[material];
     }
     const content::Material& material(uint32_t index) const { return materials_[index]; }
+    // Bit i: the material's texture slot i is present (the G-buffer pipeline it draws with),
+    // found once when the material is added.
+    uint32_t materialTextureSlots(uint32_t index) const { return materialTextureSlots_[index]; }
     // std430 array of GpuMaterial; rebuilt when materials were added since the last call.
     const GpuBuffer& materialBuffer();
 
@@ -169,6 +172,7 @@ private:
     std::vector<GpuTexture> textures_;
     std::vector<content::Material> materials_;
     std::vector<MaterialBinding> materialBindings_;
+    std::vector<uint32_t> materialTextureSlots_;  // per material, presentTextureSlots
     std::unordered_map<const content::Model*, UploadedModel> models_;
     // Per animated instance: two vertex buffers, this frame's at `current`, last frame's at
     // the other (swapped by deformedVertexBuffers).

@@ -10,7 +10,6 @@
 #include "common/gbaa_edges.h"
 #include "common/specialization_ids.h"
 #include "gbuffer_targets.h"
-#include "gpu_material.h"
 #include "mesh_vertex_input.h"
 #include "passes/gbuffer/gbuffer_bindings.h"
 #include "shaders/gbuffer.frag.spv.h"
@@ -154,7 +153,7 @@ void GBufferPass::prepare(const FrameScene& scene, const SceneResources& resourc
     for (size_t i = 0; i < scene.draws.size(); ++i) {
         const DrawItem& draw = scene.draws[i];
         if (!drawnInGBuffer(resources, draw)) continue;
-        const uint32_t slots = presentTextureSlots(resources.material(draw.material));
+        const uint32_t slots = resources.materialTextureSlots(draw.material);
         Pipeline& pipeline = variants_[variantKey(index, slots)];
         if (pipeline.handle() == VK_NULL_HANDLE) {
             SpecializationConstants constants;
