@@ -63,15 +63,18 @@ void storeBox(uint at, vec3 lo, vec3 hi) {
     }
 }
 
-// Adds a run's box to its slice's box of this quarter (the first run of a slice stores it).
-void flushRun(uint at, bool seen, vec3 lo, vec3 hi) {
-    if (seen) {
+// Adds the run's box [lo, hi] in slice `slice` (kNoSlice: no run yet) to that slice's box of
+// this quarter, which the slice's first run stores; `mask` gains the slice.
+void flushRun(uint at, uint slice, vec3 lo, vec3 hi, inout uvec2 mask) {
+    if (slice == kNoSlice) return;
+    if (hasSlice(mask, slice)) {
         for (uint c = 0u; c < 3u; ++c) {
             lo[c] = min(lo[c], clusterBounds[at + c]);
             hi[c] = max(hi[c], clusterBounds[at + 3u + c]);
         }
     }
     storeBox(at, lo, hi);
+    mask |= sliceBit(slice);
 }
 
 void main() {
@@ -115,20 +118,14 @@ void main() {
             hi = max(hi, view);
             continue;
         }
-        if (runSlice != kNoSlice) {
-            uint cluster = runSlice * tileCount + tileIndex;
-            flushRun(quarterBox(clusterCount, cluster, quarter), hasSlice(mask, runSlice), lo, hi);
-            mask |= sliceBit(runSlice);
-        }
+        flushRun(quarterBox(clusterCount, runSlice * tileCount + tileIndex, quarter), runSlice, lo,
+                 hi, mask);
         runSlice = slice;
         lo = view;
         hi = view;
     }
-    if (runSlice != kNoSlice) {
-        uint cluster = runSlice * tileCount + tileIndex;
-        flushRun(quarterBox(clusterCount, cluster, quarter), hasSlice(mask, runSlice), lo, hi);
-        mask |= sliceBit(runSlice);
-    }
+    flushRun(quarterBox(clusterCount, runSlice * tileCount + tileIndex, quarter), runSlice, lo, hi,
+             mask);
     quarterMasks[gl_LocalInvocationIndex] = mask;
     memoryBarrierBuffer();
     barrier();
