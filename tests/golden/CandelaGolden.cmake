@@ -29,6 +29,12 @@
 include_guard(GLOBAL)
 
 set(CANDELA_GOLDEN_MODULE_DIR "${CMAKE_CURRENT_LIST_DIR}" CACHE INTERNAL "")
+# What every golden renders under: validation required, and lavapipe at 256-bit lanes. On a CPU
+# with AVX-512 lavapipe picks 512-bit lanes by default and filters textures differently (one
+# channel of a textured pixel off by 1-8%); goldens are recorded at 256 bits, so they hold on
+# every x86-64 machine CI may draw. No effect on a GPU driver.
+set(CANDELA_GOLDEN_ENVIRONMENT "CANDELA_VALIDATION=require;LP_NATIVE_VECTOR_WIDTH=256"
+    CACHE INTERNAL "")
 
 # Resolves `path` against `base` unless it is absolute or a built-in scene.
 function(_candela_golden_resolve out path base)
@@ -124,7 +130,7 @@ function(candela_add_golden_test)
            COMMAND ${CMAKE_COMMAND} -DGOLDEN_CONFIG=${config}
                    -P ${CANDELA_GOLDEN_MODULE_DIR}/run_golden.cmake)
   set_tests_properties(golden.${ARG_NAME} PROPERTIES LABELS golden
-                       ENVIRONMENT CANDELA_VALIDATION=require TIMEOUT 300)
+                       ENVIRONMENT "${CANDELA_GOLDEN_ENVIRONMENT}" TIMEOUT 300)
   # In the engine's own tree, the release stage of scripts/test builds what goldens run.
   if(COMMAND candela_release_stage AND TARGET "${ARG_ENGINE}")
     candela_release_stage(${ARG_ENGINE} candela-golden)

@@ -100,5 +100,12 @@ execute_process(
           --expected-dir "${GOLDEN_EXPECTED_DIR}"
   RESULT_VARIABLE check_result)
 if(NOT check_result EQUAL 0)
-  message(FATAL_ERROR "golden ${GOLDEN_NAME}: FAIL (candela-golden exit ${check_result})")
+  # The device drew it: a driver or lane width other than the goldens' is the first suspect.
+  file(READ "${stats}" stats_text)
+  string(JSON device ERROR_VARIABLE device_error GET "${stats_text}" device)
+  if(device_error)
+    set(device "an unknown device")
+  endif()
+  message(FATAL_ERROR "golden ${GOLDEN_NAME}: FAIL (candela-golden exit ${check_result}), "
+                      "rendered on ${device}; goldens are recorded on lavapipe at 256 bits")
 endif()
