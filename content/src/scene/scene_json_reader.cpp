@@ -94,8 +94,10 @@ public:
         std::vector<std::pair<std::string, std::string>> unknown;
         for (const auto& [object, k] : known_) {
             if (!object->is_object()) continue;
+            // A named copy: clang 14 cannot capture a structured binding in a lambda.
+            const std::string& objectPointer = k.pointer;
             if (std::any_of(errorPointers_.begin(), errorPointers_.end(),
-                            [&](const std::string& e) { return ownError(e, k.pointer); })) {
+                            [&](const std::string& e) { return ownError(e, objectPointer); })) {
                 continue;
             }
             for (const auto& item : object->items()) {
