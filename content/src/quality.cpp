@@ -11,7 +11,8 @@ namespace {
 // Low keeps TAA: on lavapipe its resolve costs half of FXAA's (7 against 15 ms at 640x360).
 constexpr std::array<QualityPreset, 4> kPresets{{
     // low
-    QualityPreset{.shadowCascadeSize = 512,
+    QualityPreset{.renderScale = 0.5f,
+                  .shadowCascadeSize = 512,
                   .shadowCascades = 2,
                   .shadowMaxTileSize = 128,
                   .softShadows = false,
@@ -34,7 +35,8 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .scatteringSamples = 64,
                   .hairSelfShadow = false},
     // medium: the CPU device's default
-    QualityPreset{.shadowCascadeSize = 1024,
+    QualityPreset{.renderScale = 0.5f,
+                  .shadowCascadeSize = 1024,
                   .shadowCascades = 3,
                   .shadowMaxTileSize = 256,
                   .softShadows = false,
@@ -57,7 +59,8 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .scatteringSamples = 128,
                   .hairSelfShadow = true},
     // high: a GPU's default
-    QualityPreset{.shadowCascadeSize = 1024,
+    QualityPreset{.renderScale = 1.0f,
+                  .shadowCascadeSize = 1024,
                   .shadowCascades = 4,
                   .shadowMaxTileSize = 512,
                   .softShadows = true,
@@ -80,7 +83,8 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .scatteringSamples = 256,
                   .hairSelfShadow = true},
     // ultra: the engine's image before presets
-    QualityPreset{.shadowCascadeSize = 1024,
+    QualityPreset{.renderScale = 1.0f,
+                  .shadowCascadeSize = 1024,
                   .shadowCascades = 4,
                   .shadowMaxTileSize = 1024,
                   .softShadows = true,

@@ -40,6 +40,7 @@
 #include "passes/skinning/skinning_pass.h"
 #include "passes/sky_occlusion/sky_occlusion_pass.h"
 #include "passes/ssr/ssr_pass.h"
+#include "passes/upscale/upscale_pass.h"
 #include "passes/taa/taa_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
@@ -71,8 +72,10 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
                    const RendererOptions& options)
     : context_(context),
       options_(options),
-      width_(width),
-      height_(height),
+      outputWidth_(width),
+      outputHeight_(height),
+      width_(scaledSize(width, options.renderScale)),
+      height_(scaledSize(height, options.renderScale)),
       lightAssignment_(resolveLightAssignment(options, context)),
       graph_(std::make_unique<FrameGraph>()),
       executor_(std::make_unique<FrameGraphExecutor>(context)),
@@ -80,6 +83,9 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
                     MemoryLocation::HostVisible),
       lights_(std::make_unique<GpuLightBuffer>()),
       clusters_(std::make_unique<ClusterLightLists>(context, options_, lightAssignment_)) {
+    if (width_ != outputWidth_ || height_ != outputHeight_) {
+        upscalePass_ = std::make_unique<UpscalePass>(context_);
+    }
     createTargets();
     trianglePass_ = std::make_unique<TrianglePass>(context_);
     gbufferPass_ = std::make_unique<GBufferPass>(context_);
@@ -103,6 +109,12 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     }
     shadowPass_ = std::make_unique<ShadowPass>(context_);
     skyOcclusionPass_ = std::make_unique<SkyOcclusionPass>(context_);  // pipeline when used
+}
+
+uint32_t Renderer::scaledSize(uint32_t outputSize, float scale) {
+    // Anything but a fraction in (0, 1] renders at the output size.
+    if (!(scale > 0.0f && scale < 1.0f)) return outputSize;
+    return std::max(1u, uint32_t(std::lround(double(outputSize) * scale)));
 }
 
 Renderer::~Renderer() {
@@ -1063,13 +1075,24 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     if (bloomPass_ && features_[0] != "test_triangle") {
         hdr.version = declareBloom(hdr.id, hdr.version);
     }
+    if (upscalePass_) {
+        features_.push_back("upscale");
+        ResourceHandle output = g.importImage("hdr.output", &outputHdr_, kDiscardAfterCopies,
+                                              kReadyToCopy);
+        auto p = g.addPass("upscale", PassKind::Device, [this, hdr, output](PassContext& ctx) {
+            upscalePass_->record(ctx.cmd(), ctx.image(hdr), ctx.image(output));
+        });
+        p.read(hdr, Use::Sampled);
+        hdr = p.write(output, Use::StorageWrite);
+    }
     features_.push_back("tonemap_aces");
     {
         // FXAA reads the tonemapped image from a transient and writes the LDR target.
         ResourceHandle tonemapped = ldr;
         if (fxaaPass_) {
             tonemapped = g.createImage("fxaa.input",
-                                       {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
+                                       {VK_FORMAT_R8G8B8A8_UNORM, outputWidth_, outputHeight_, 1,
+                                        false,
                                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
         }
         auto p = g.addPass(
@@ -1091,7 +1114,7 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     }
     if (!inputs.text.empty()) {
         if (!debugTextPass_) debugTextPass_ = std::make_unique<DebugTextPass>(context_);
-        const uint32_t glyphs = debugTextPass_->prepare(inputs.text, width_, height_);
+        const uint32_t glyphs = debugTextPass_->prepare(inputs.text, outputWidth_, outputHeight_);
         if (glyphs > 0) {
             features_.push_back("debug_text");
             const ResourceHandle text =

@@ -10,26 +10,37 @@
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/ssr/ssr_pass.h"
+#include "passes/upscale/upscale_pass.h"
 #include "vk/image_transfer.h"
 
 namespace candela::render {
 
 void Renderer::resize(uint32_t width, uint32_t height) {
-    width_ = width;
-    height_ = height;
+    outputWidth_ = width;
+    outputHeight_ = height;
+    width_ = scaledSize(width, options_.renderScale);
+    height_ = scaledSize(height, options_.renderScale);
+    // The upscale pass exists exactly while the sizes differ (a 1-pixel side may round to 1).
+    if (width_ == outputWidth_ && height_ == outputHeight_) {
+        upscalePass_.reset();
+        outputHdr_ = GpuImage();
+    } else if (!upscalePass_) {
+        upscalePass_ = std::make_unique<UpscalePass>(context_);
+    }
     createTargets();
 }
 
 void Renderer::createTargets() {
     // RGBA32F, not 16F: captures are compared at 1e-4..1e-5 relative, below half precision.
     // Transfer destination: TAA copies its resolve back into it.
-    // Sampled: forward MSAA copies it into its multisampled target.
+    // Sampled: forward MSAA copies it into its multisampled target; the upscale pass filters it.
     hdr_ = GpuImage(
         context_,
         {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
              VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-             (options_.msaaSamples > 1 ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT) : 0u)});
+             (options_.msaaSamples > 1 || upscalePass_ ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT)
+                                                        : 0u)});
     if (options_.aa == AntiAliasing::Taa) {
         // RGBA32F like the target it is copied into; alpha counts the samples it holds. Both
         // start cleared and shader-readable, so every frame imports them in the same states
@@ -68,7 +79,14 @@ void Renderer::createTargets() {
     }
     ssrHistoryValid_ = false;
     // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
-    ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, width_, height_, 1, false,
+    if (upscalePass_) {
+        // Written by the upscale pass, read by tonemapping, copied by captures.
+        outputHdr_ = GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, outputWidth_,
+                                         outputHeight_, 1, false,
+                                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                             VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+    }
+    ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, outputWidth_, outputHeight_, 1, false,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
     // Cleared on the device each frame (lighting_counts_clear) before the atomics add to it.

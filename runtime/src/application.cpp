@@ -435,6 +435,8 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
         s.resources = std::make_unique<render::SceneResources>(*s.context);
         stats.device = s.context->deviceName();
+        stats.renderWidth = s.renderer->renderWidth();
+        stats.renderHeight = s.renderer->renderHeight();
         for (auto& layer : layers)
             layer->start(*s.context, s.window.get());
 

@@ -171,6 +171,8 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --msaa 1|2|4|8            samples per pixel of the forward (blended) pass, with\n"
            "                            --aa (default: the scene file's, else 1 = off)\n"
            "  --bloom FRACTION          radiance scattered into glare, 0 (off) to 1\n"
+           "  --render-scale FRACTION   width and height the scene renders at, 0.25 to 1,\n"
+           "                            upscaled to the output (default: the preset's)\n"
            "                            (default: the scene file's, else 0.04)\n"
            "  --exposure manual|auto    the camera's EV100, or metered and adapted\n"
            "                            (default: the scene file's, else manual)\n"
@@ -313,6 +315,13 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--msaa needs 1, 2, 4 or 8 samples per pixel, got '" + v + "'");
             }
             options.msaa = uint32_t(std::stoul(v));
+        } else if (arg == "--render-scale") {
+            float scale = 0.0f;
+            if (!value() || !parseFloat(v, scale) || !(scale >= 0.25f && scale <= 1.0f)) {
+                return fail("--render-scale needs a fraction of the output's size from 0.25 to "
+                            "1, got '" + v + "'");
+            }
+            options.renderScale = scale;
         } else if (arg == "--bloom") {
             float bloom = 0.0f;
             if (!value() || !parseFraction(v, bloom)) {

@@ -44,6 +44,8 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["device"] = stats.device;
     json["quality"] = stats.quality;
     json["quality_source"] = stats.qualitySource;
+    json["render_width"] = stats.renderWidth;
+    json["render_height"] = stats.renderHeight;
     json["frame_ms_median"] = stats.frameMsMedian();
     json["validation_messages"] = stats.validationMessages;
     json["features"] = stats.features;

@@ -123,6 +123,74 @@ TEST(Cli, StatsWorkLastCountsTheLastFrameOnly) {
         << bad.output;
 }
 
+// --render-scale renders the scene at a fraction of the output and upscales the radiance: the
+// captures keep the output's size, the stats say the render size, and the image stays close to
+// the full-size one (a spot light's smooth falloff on a floor, no antialiasing or bloom).
+TEST(Cli, RenderScaleRendersSmallerAndUpscalesToTheOutput) {
+    auto dir = tempDir();
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/spot_light.scene.json";
+    auto render = [&](const std::string& name, const std::string& scale) {
+        const std::string exr = (dir / (name + ".exr")).string();
+        RunResult r = runCandela("run " + scene +
+                                 " --headless --size 96x64 --frames 2 --quality ultra --aa off "
+                                 "--bloom 0 --render-scale " +
+                                 scale + " --capture " + exr + " --stats " +
+                                 (dir / (name + ".json")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        candela::content::Diagnostics diagnostics;
+        auto image = candela::content::readExrImage(exr, diagnostics);
+        EXPECT_TRUE(image.has_value()) << name;
+        return image;
+    };
+    auto full = render("full", "1");
+    auto half = render("half", "0.5");
+    ASSERT_TRUE(full && half);
+    const nlohmann::json f = nlohmann::json::parse(readBytes(dir / "full.json"));
+    const nlohmann::json h = nlohmann::json::parse(readBytes(dir / "half.json"));
+    EXPECT_EQ(f["render_width"], 96);
+    EXPECT_EQ(f["render_height"], 64);
+    EXPECT_EQ(h["render_width"], 48);
+    EXPECT_EQ(h["render_height"], 32);
+    EXPECT_EQ(h["width"], 96);
+    const auto has = [](const nlohmann::json& j, const char* feature) {
+        const auto& list = j["features"];
+        return std::find(list.begin(), list.end(), feature) != list.end();
+    };
+    EXPECT_FALSE(has(f, "upscale"));
+    EXPECT_TRUE(has(h, "upscale"));
+    ASSERT_EQ(half->image.width, 96u);
+    ASSERT_EQ(half->image.height, 64u);
+    // The luminance difference against the full-size frame relative to its total light (an
+    // L1 error that dark pixels at the cone's edge cannot blow up), and the total within 5%.
+    double difference = 0.0, fullSum = 0.0, halfSum = 0.0;
+    for (uint32_t y = 0; y < 64; ++y) {
+        for (uint32_t x = 0; x < 96; ++x) {
+            const float* a = full->image.texel(x, y);
+            const float* b = half->image.texel(x, y);
+            const double la = 0.2126 * a[0] + 0.7152 * a[1] + 0.0722 * a[2];
+            const double lb = 0.2126 * b[0] + 0.7152 * b[1] + 0.0722 * b[2];
+            difference += std::abs(lb - la);
+            fullSum += la;
+            halfSum += lb;
+        }
+    }
+    ASSERT_GT(fullSum, 0.0);
+    const double error = difference / fullSum;
+    std::printf("render scale 0.5: relative L1 luminance error %.4f, total light ratio %.4f\n",
+                error, halfSum / fullSum);
+    EXPECT_GT(error, 0.0) << "the half-size frame is the full-size one: nothing was scaled";
+    EXPECT_LT(error, 0.1);
+    EXPECT_NEAR(halfSum / fullSum, 1.0, 0.05);
+
+    RunResult bad = runCandela(kTriangle + "--render-scale 0.1");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find("--render-scale needs a fraction of the output's size from 0.25 to "
+                              "1, got '0.1'"),
+              std::string::npos)
+        << bad.output;
+}
+
 TEST(Cli, CapturesAreIdenticalRunAfterRun) {
     auto dir = tempDir();
     for (const char* ext : {".exr", ".png"}) {

@@ -25,6 +25,9 @@ const char* qualitySourceName(QualitySource source);  // "flag", "scene", "devic
 // One column of the table. `ultra` is the engine's image before presets (its goldens); the
 // reference modes stay separate flags.
 struct QualityPreset {
+    // The fraction of the output's width and height the scene renders at before the upscale
+    // to the output (a scene's cost on a CPU device goes with its pixels).
+    float renderScale;
     // Shadows: texels per cascade side, cascades per directional light, largest local-light tile,
     // and penumbrae by blocker search for sphere and tube lights (off: hard 3x3-texel PCF).
     uint32_t shadowCascadeSize;

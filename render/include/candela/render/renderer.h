@@ -50,6 +50,7 @@ class SceneResources;
 class TonemapPass;
 class TaaPass;
 class FxaaPass;
+class UpscalePass;
 class GbaaPass;
 class BloomPass;
 class ExposureHistogramPass;
@@ -77,9 +78,15 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
+    // Output size: the targets read after the frame (hdrTarget, ldrTarget, captures, the
+    // swapchain blit). The scene renders at renderWidth x renderHeight (options().renderScale).
     void resize(uint32_t width, uint32_t height);
-    uint32_t width() const { return width_; }
-    uint32_t height() const { return height_; }
+    uint32_t width() const { return outputWidth_; }
+    uint32_t height() const { return outputHeight_; }
+    uint32_t renderWidth() const { return width_; }
+    uint32_t renderHeight() const { return height_; }
+    // The size a scene renders at for an output size and scale: each side rounded, at least 1.
+    static uint32_t scaledSize(uint32_t outputSize, float scale);
     const RendererOptions& options() const { return options_; }
     // Whether the next frames count their light evaluations and shadow taps (stats' `work`):
     // the counting variant of the lighting pass costs it a fifth more on lavapipe (runtime's
@@ -107,7 +114,8 @@ public:
     // Reads the GPU-side measurements of the last frame; call once its submission completed.
     const RendererStats& collectStats();
 
-    const GpuImage& hdrTarget() const { return hdr_; }  // RGBA32F scene radiance
+    // RGBA32F scene radiance at the output size (upscaled when the render scale is below 1).
+    const GpuImage& hdrTarget() const { return upscalePass_ ? outputHdr_ : hdr_; }
     const GpuImage& ldrTarget() const { return ldr_; }  // RGBA8, sRGB-encoded values
     // With RendererOptions::captureMotionVectors: the last frame's motion vectors, one per pixel
     // row by row (texture-space offset current - previous, motion_vectors.glsl); call once
@@ -163,11 +171,14 @@ private:
 
     GpuContext& context_;
     RendererOptions options_;
-    uint32_t width_;
+    uint32_t outputWidth_;
+    uint32_t outputHeight_;
+    uint32_t width_;   // the render size: every scene pass's
     uint32_t height_;
     LightAssignmentDevice lightAssignment_;  // options_.lightAssignment resolved
-    GpuImage hdr_;
-    GpuImage ldr_;
+    GpuImage hdr_;        // at the render size
+    GpuImage outputHdr_;  // at the output size, when upscalePass_ (else empty)
+    GpuImage ldr_;        // at the output size
     std::unique_ptr<FrameGraph> graph_;
     std::unique_ptr<FrameGraphExecutor> executor_;
     GpuBuffer cameraBuffer_;
@@ -196,6 +207,7 @@ private:
     GpuBuffer motionReadback_;  // captureMotionVectors: RG16F texels, host-visible
     std::unique_ptr<TaaPass> taaPass_;
     std::unique_ptr<FxaaPass> fxaaPass_;
+    std::unique_ptr<UpscalePass> upscalePass_;  // renderScale below 1
     std::unique_ptr<GbaaPass> gbaaPass_;
     uint32_t edgesId_ = UINT32_MAX;  // this frame's gbuffer.edges (--aa gbaa) in the graph
     uint32_t edgesVersion_ = 0;

@@ -278,6 +278,11 @@ struct RendererOptions {
     // conserving: the frame's total is unchanged). 0: off (here, so tests render without it;
     // the application's default is ApplicationOptions').
     float bloomStrength = 0.0f;
+    // The fraction of the output's width and height the scene is rendered at (`--render-scale`,
+    // the quality presets' first lever on a CPU device): every pass up to bloom runs at the
+    // render size, then upscale.comp filters the radiance up to the output for tonemapping,
+    // antialiasing after it and the overlays, so text and UI stay sharp. 1: no upscale pass.
+    float renderScale = 1.0f;
     ExposureMode exposure = ExposureMode::Manual;
     AutoExposureSettings autoExposure;
     AoMode ao = AoMode::Off;

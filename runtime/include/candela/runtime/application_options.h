@@ -73,6 +73,8 @@ struct ApplicationOptions {
     // --bloom; unset: the world's scene-file "bloom", else the quality preset's (kDefaultBloom
     // from medium up).
     std::optional<float> bloom;
+    // --render-scale; unset: the quality preset's (RendererOptions::renderScale).
+    std::optional<float> renderScale;
     static constexpr float kDefaultBloom = 0.04f;
     // --exposure, --exposure-compensation; unset: the scene file's, else manual and 0 EV.
     std::optional<render::ExposureMode> exposure;

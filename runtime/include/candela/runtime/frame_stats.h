@@ -18,6 +18,9 @@ struct FrameStats {
     // The quality preset the run used and where it came from ("flag", "scene", "device").
     std::string quality;
     std::string qualitySource;
+    // The size the scene rendered at (RendererOptions::renderScale of width x height).
+    uint32_t renderWidth = 0;
+    uint32_t renderHeight = 0;
     std::vector<double> frameMs;  // CPU wall time per frame, including the wait for the GPU
     uint32_t validationMessages = 0;
     std::vector<std::string> features;
