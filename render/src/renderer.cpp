@@ -40,10 +40,10 @@
 #include "passes/skinning/skinning_pass.h"
 #include "passes/sky_occlusion/sky_occlusion_pass.h"
 #include "passes/ssr/ssr_pass.h"
-#include "passes/upscale/upscale_pass.h"
 #include "passes/taa/taa_pass.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
+#include "passes/upscale/upscale_pass.h"
 #include "passes/volumetrics/volumetrics_pass.h"
 #include "passes/wires/wire_pass.h"
 #include "renderer_ao_temporal.h"
@@ -1077,8 +1077,8 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     }
     if (upscalePass_) {
         features_.push_back("upscale");
-        ResourceHandle output = g.importImage("hdr.output", &outputHdr_, kDiscardAfterCopies,
-                                              kReadyToCopy);
+        ResourceHandle output =
+            g.importImage("hdr.output", &outputHdr_, kDiscardAfterCopies, kReadyToCopy);
         auto p = g.addPass("upscale", PassKind::Device, [this, hdr, output](PassContext& ctx) {
             upscalePass_->record(ctx.cmd(), ctx.image(hdr), ctx.image(output));
         });
@@ -1090,10 +1090,9 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
         // FXAA reads the tonemapped image from a transient and writes the LDR target.
         ResourceHandle tonemapped = ldr;
         if (fxaaPass_) {
-            tonemapped = g.createImage("fxaa.input",
-                                       {VK_FORMAT_R8G8B8A8_UNORM, outputWidth_, outputHeight_, 1,
-                                        false,
-                                        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
+            tonemapped = g.createImage(
+                "fxaa.input", {VK_FORMAT_R8G8B8A8_UNORM, outputWidth_, outputHeight_, 1, false,
+                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT});
         }
         auto p = g.addPass(
             "tonemap", PassKind::Device, [this, hdr, tonemapped, exposure](PassContext& ctx) {

@@ -34,13 +34,13 @@ void Renderer::createTargets() {
     // RGBA32F, not 16F: captures are compared at 1e-4..1e-5 relative, below half precision.
     // Transfer destination: TAA copies its resolve back into it.
     // Sampled: forward MSAA copies it into its multisampled target; the upscale pass filters it.
-    hdr_ = GpuImage(
-        context_,
-        {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
-         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
-             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-             (options_.msaaSamples > 1 || upscalePass_ ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT)
-                                                        : 0u)});
+    hdr_ =
+        GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                (options_.msaaSamples > 1 || upscalePass_
+                                     ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT)
+                                     : 0u)});
     if (options_.aa == AntiAliasing::Taa) {
         // RGBA32F like the target it is copied into; alpha counts the samples it holds. Both
         // start cleared and shader-readable, so every frame imports them in the same states
@@ -81,10 +81,10 @@ void Renderer::createTargets() {
     // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
     if (upscalePass_) {
         // Written by the upscale pass, read by tonemapping, copied by captures.
-        outputHdr_ = GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, outputWidth_,
-                                         outputHeight_, 1, false,
-                                         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                             VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+        outputHdr_ = GpuImage(context_,
+                              {VK_FORMAT_R32G32B32A32_SFLOAT, outputWidth_, outputHeight_, 1, false,
+                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT});
     }
     ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, outputWidth_, outputHeight_, 1, false,
                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |

@@ -318,8 +318,10 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
         } else if (arg == "--render-scale") {
             float scale = 0.0f;
             if (!value() || !parseFloat(v, scale) || !(scale >= 0.25f && scale <= 1.0f)) {
-                return fail("--render-scale needs a fraction of the output's size from 0.25 to "
-                            "1, got '" + v + "'");
+                return fail(
+                    "--render-scale needs a fraction of the output's size from 0.25 to "
+                    "1, got '" +
+                    v + "'");
             }
             options.renderScale = scale;
         } else if (arg == "--bloom") {

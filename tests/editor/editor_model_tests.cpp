@@ -298,6 +298,19 @@ TEST_F(EditorModel, SaveKeepsTheScenesAmbientOcclusionSetting) {
     EXPECT_EQ(doc.ambientOcclusion->intensity, 0.5f);
 }
 
+// Issue 41: the quality preset the inspector edits marks the scene modified and is saved;
+// "device's" (unset) saves no key.
+TEST_F(EditorModel, SaveKeepsTheQualityPresetEditedInTheInspector) {
+    EXPECT_FALSE(saveAndLoad(dir / "saved" / "no_quality.scene.json").quality.has_value());
+    scene->setSceneQuality(content::QualityLevel::Ultra, true);
+    EXPECT_TRUE(scene->modified());
+    EXPECT_EQ(saveAndLoad(dir / "saved" / "ultra.scene.json").quality,
+              content::QualityLevel::Ultra);
+    EXPECT_FALSE(scene->modified());
+    scene->setSceneQuality(std::nullopt, true);
+    EXPECT_FALSE(saveAndLoad(dir / "saved" / "device.scene.json").quality.has_value());
+}
+
 TEST_F(EditorModel, SavingIntoAMissingDirectoryFailsNamingTheFileAndKeepsModified) {
     ASSERT_TRUE(setLumens("lamp", 1600.0f));
     const fs::path bad = dir / "no_such_dir" / "x.scene.json";

@@ -109,6 +109,28 @@ TEST_F(EditorPanels, ClickSelectsAndDragOntoAnotherRowReparents) {
     EXPECT_EQ(ecs::parentOf(registry, scene->findByName("camera")), ecs::kNullEntity);
 }
 
+// Issue 41: with nothing selected the inspector shows the scene's quality preset; choosing one
+// in its list sets the scene's "quality" and marks the scene modified.
+TEST_F(EditorPanels, TheQualityPresetIsChosenFromTheScenesSettings) {
+    ASSERT_EQ(scene->selected(), ecs::kNullEntity);
+    ASSERT_TRUE(inspectorLayout.count("Quality preset"));
+    EXPECT_FALSE(scene->sceneQuality().has_value());
+    const InspectorWidget combo = inspectorLayout.at("Quality preset");
+    frame(combo.center(), true);
+    frame(combo.center(), false);
+    frame(ImVec2(-1, -1), false);  // the list is open below the field
+    // Its rows: one text line and the item spacing each, after the popup's padding.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float rowHeight = ImGui::GetTextLineHeight() + style.ItemSpacing.y;
+    const ImVec2 ultra(combo.center().x, combo.max.y + style.WindowPadding.y + 4.5f * rowHeight -
+                                             0.5f * style.ItemSpacing.y);
+    frame(ultra, true);
+    frame(ultra, false);
+    frame(ImVec2(-1, -1), false);
+    EXPECT_EQ(scene->sceneQuality(), content::QualityLevel::Ultra);
+    EXPECT_TRUE(scene->modified());
+}
+
 TEST_F(EditorPanels, DraggingTheLumensFieldIsOneLiveUndoStep) {
     select("lamp");  // the inspector now shows the lamp
     ASSERT_TRUE(inspectorLayout.count("Set Lumens"));

@@ -462,9 +462,26 @@ void drawAddComponent(EditorScene& scene, ecs::Entity e) {
 
 }  // namespace
 
-// Scene-wide settings, shown when no entity is selected: ambient occlusion of the sky's light
-// (the scene file's "ambient_occlusion").
-void drawSceneSettings(EditorScene& scene) {
+namespace {
+
+// The scene file's "quality": the preset its frames render at (unset: the device's).
+void drawSceneQuality(EditorScene& scene) {
+    if (!ImGui::CollapsingHeader("Quality", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    static constexpr const char* kLevels[] = {"device's", "low", "medium", "high", "ultra"};
+    const std::optional<content::QualityLevel> level = scene.sceneQuality();
+    int choice = level ? int(*level) + 1 : 0;
+    if (ImGui::Combo("Preset", &choice, kLevels, 5)) {
+        scene.setSceneQuality(
+            choice == 0 ? std::nullopt
+                        : std::optional<content::QualityLevel>(content::kQualityLevels[choice - 1]),
+            true);
+    }
+    record("Quality preset");
+    ImGui::TextDisabled("Applies when the scene is next opened");
+}
+
+// Ambient occlusion of the sky's light (the scene file's "ambient_occlusion").
+void drawSceneAmbientOcclusion(EditorScene& scene) {
     if (!ImGui::CollapsingHeader("Ambient occlusion", ImGuiTreeNodeFlags_DefaultOpen)) return;
     content::SceneAmbientOcclusion ao =
         scene.sceneAmbientOcclusion().value_or(content::SceneAmbientOcclusion{});
@@ -485,6 +502,14 @@ void drawSceneSettings(EditorScene& scene) {
     ao.intensity = std::clamp(ao.intensity, 0.0f, 1.0f);
     if (changed) scene.setSceneAmbientOcclusion(ao, true);
     ImGui::TextDisabled("Mode applies when the scene is next opened");
+}
+
+}  // namespace
+
+// Scene-wide settings, shown when no entity is selected.
+void drawSceneSettings(EditorScene& scene) {
+    drawSceneQuality(scene);
+    drawSceneAmbientOcclusion(scene);
 }
 
 void drawInspectorPanel(EditorScene& scene, InspectorState& state) {

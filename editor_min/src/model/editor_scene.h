@@ -60,6 +60,15 @@ public:
         if (edited) settingsEdited_ = true;
     }
 
+    // The scene-wide "quality" preset (unset: the device's), edited in the inspector when nothing
+    // is selected and written back by save(). It applies when the scene is next opened (a
+    // preset chooses the renderer's passes, targets and shader variants).
+    std::optional<content::QualityLevel> sceneQuality() const { return sceneSettings_.quality; }
+    void setSceneQuality(std::optional<content::QualityLevel> level, bool edited = false) {
+        sceneSettings_.quality = level;
+        if (edited) settingsEdited_ = true;
+    }
+
     // The opened file's layer library ("materialLayers"): what the inspector offers to add to
     // a material (each material edits its own copies), written back by save().
     const std::vector<content::MaterialLayer>& sceneMaterialLayers() const {

@@ -173,12 +173,12 @@ private:
     RendererOptions options_;
     uint32_t outputWidth_;
     uint32_t outputHeight_;
-    uint32_t width_;   // the render size: every scene pass's
+    uint32_t width_;  // the render size: every scene pass's
     uint32_t height_;
     LightAssignmentDevice lightAssignment_;  // options_.lightAssignment resolved
-    GpuImage hdr_;        // at the render size
-    GpuImage outputHdr_;  // at the output size, when upscalePass_ (else empty)
-    GpuImage ldr_;        // at the output size
+    GpuImage hdr_;                           // at the render size
+    GpuImage outputHdr_;                     // at the output size, when upscalePass_ (else empty)
+    GpuImage ldr_;                           // at the output size
     std::unique_ptr<FrameGraph> graph_;
     std::unique_ptr<FrameGraphExecutor> executor_;
     GpuBuffer cameraBuffer_;
