@@ -83,9 +83,6 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
                     MemoryLocation::HostVisible),
       lights_(std::make_unique<GpuLightBuffer>()),
       clusters_(std::make_unique<ClusterLightLists>(context, options_, lightAssignment_)) {
-    if (width_ != outputWidth_ || height_ != outputHeight_) {
-        upscalePass_ = std::make_unique<UpscalePass>(context_);
-    }
     createTargets();
     trianglePass_ = std::make_unique<TrianglePass>(context_);
     gbufferPass_ = std::make_unique<GBufferPass>(context_);

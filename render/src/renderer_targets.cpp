@@ -20,17 +20,18 @@ void Renderer::resize(uint32_t width, uint32_t height) {
     outputHeight_ = height;
     width_ = scaledSize(width, options_.renderScale);
     height_ = scaledSize(height, options_.renderScale);
-    // The upscale pass exists exactly while the sizes differ (a 1-pixel side may round to 1).
+    createTargets();
+}
+
+void Renderer::createTargets() {
+    // The upscale pass and its target exist exactly while the sizes differ (a 1-pixel side
+    // may round to 1).
     if (width_ == outputWidth_ && height_ == outputHeight_) {
         upscalePass_.reset();
         outputHdr_ = GpuImage();
     } else if (!upscalePass_) {
         upscalePass_ = std::make_unique<UpscalePass>(context_);
     }
-    createTargets();
-}
-
-void Renderer::createTargets() {
     // RGBA32F, not 16F: captures are compared at 1e-4..1e-5 relative, below half precision.
     // Transfer destination: TAA copies its resolve back into it.
     // Sampled: forward MSAA copies it into its multisampled target; the upscale pass filters it.
