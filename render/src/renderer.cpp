@@ -11,6 +11,7 @@
 #include "candela/render/scene_resources.h"
 #include "clustered/cluster_light_lists.h"
 #include "cpu_clock.h"
+#include "culling/draws_in_view.h"
 #include "frame_graph/frame_graph.h"
 #include "frame_graph/frame_graph_executor.h"
 #include "gbuffer_targets.h"
@@ -191,7 +192,18 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     features_ = features.names();
     // Layers blend in the G-buffer pass only; the lighting variant does not change with them.
-    gbufferPass_->prepare(inputs.scene, resources, usesMaterialLayers(inputs.scene, resources),
+    // The draws the camera sees: the G-buffer and forward passes record no other. The sides
+    // widen by two pixels for TAA's jitter, which moves the image after this test.
+    const CameraView& view = inputs.scene.camera;
+    const std::vector<uint8_t> visible =
+        options_.culling ? drawsInView(inputs.scene, resources,
+                                       viewFrustumOf(view.projection * view.view,
+                                                     {4.0f / float(width_), 4.0f / float(height_)}))
+                         : std::vector<uint8_t>(inputs.scene.draws.size(), 1);
+    stats_.draws = uint32_t(visible.size());
+    stats_.drawsCulled = uint32_t(std::count(visible.begin(), visible.end(), uint8_t(0)));
+    gbufferPass_->prepare(inputs.scene, resources, visible,
+                          usesMaterialLayers(inputs.scene, resources),
                           features.materialExtensions(), gbaaPass_ != nullptr);
     if (gbufferPass_->materialLayers()) features_.push_back("material_layers");
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
@@ -204,7 +216,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             features.skyOcclusion ? skyOcclusionPass_->layout() : glm::uvec4(0u);
     }
     const bool blended =
-        transparentPass_->prepare(inputs.scene, resources, features, previousWorlds_);
+        transparentPass_->prepare(inputs.scene, resources, visible, features, previousWorlds_);
     stats_.lights = lights_->count();
     stats_.lightsRewritten = lights_->rewrittenLastUpdate();
     stats_.lightAssignMs = 0.0;
@@ -213,6 +225,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     stats_.shadowMapsCached = shadowPass_->stats().mapsCached;
     stats_.shadowMapsKept = shadowPass_->stats().mapsKept;
     stats_.shadowAtlasUsed = shadowPass_->stats().atlasUsed;
+    stats_.shadowCasterDraws = shadowPass_->stats().casterDraws;
     if (!features.clustered) clusters_->usePlaceholders();
 
     SceneHandles h;

@@ -171,9 +171,10 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --msaa 1|2|4|8            samples per pixel of the forward (blended) pass, with\n"
            "                            --aa (default: the scene file's, else 1 = off)\n"
            "  --bloom FRACTION          radiance scattered into glare, 0 (off) to 1\n"
+           "                            (default: the scene file's, else 0.04)\n"
            "  --render-scale FRACTION   width and height the scene renders at, 0.25 to 1,\n"
            "                            upscaled to the output (default: the preset's)\n"
-           "                            (default: the scene file's, else 0.04)\n"
+           "  --culling on|off          frustum culling of draws (off: the reference)\n"
            "  --exposure manual|auto    the camera's EV100, or metered and adapted\n"
            "                            (default: the scene file's, else manual)\n"
            "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n"
@@ -324,6 +325,10 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                     v + "'");
             }
             options.renderScale = scale;
+        } else if (arg == "--culling") {
+            if (!value() || (v != "on" && v != "off"))
+                return fail("--culling needs on or off, got '" + v + "'");
+            options.culling = v == "on";
         } else if (arg == "--bloom") {
             float bloom = 0.0f;
             if (!value() || !parseFraction(v, bloom)) {

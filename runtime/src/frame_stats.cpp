@@ -66,6 +66,9 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     // animated draws it deformed in the last frame.
     json["skinning_ms"] = median(collect(stats.frames, [](auto& f) { return f.skinningMs; }));
     json["deformed_draws"] = last.deformedDraws;
+    // Culling (last frame): the scene's draws and those outside the camera's frustum.
+    json["draws"] = last.draws;
+    json["draws_culled"] = last.drawsCulled;
     // The last frame's metered EV100 (auto exposure; else the camera's) and the one it used.
     json["exposure_ev100"] = last.exposureEv100;
     json["exposure_adapted_ev100"] = last.adaptedEv100;
@@ -142,6 +145,7 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["shadow_maps_cached"] = last.shadowMapsCached;
     json["shadow_maps_kept"] = last.shadowMapsKept;
     json["shadow_atlas_used"] = last.shadowAtlasUsed;
+    json["shadow_caster_draws"] = last.shadowCasterDraws;
     // Frame graph: each pass's median GPU milliseconds (a host pass: CPU) over the frames that
     // ran it, and the last frame's graph; record_ms + compile_ms is the graph's CPU cost.
     std::map<std::string, std::vector<double>> passTimes;

@@ -308,6 +308,10 @@ struct RendererOptions {
     float shadowDistance = 50.0f;       // metres of view depth the cascades cover
     uint32_t shadowMaxTileSize = 1024;  // largest tile of a local light (per cube face)
     bool shadowCache = true;            // keep maps whose light and casters did not change
+    // Frustum culling: the camera's passes record only the draws in its view, each shadow
+    // view only the casters in its own. Off (--culling off), every view records every draw:
+    // the reference a culled frame must match pixel for pixel.
+    bool culling = true;
     // Penumbrae of sphere and tube lights by blocker search (percentage-closer soft shadows);
     // off, every local light's map is filtered as a hard shadow (the quality presets' switch).
     bool softShadows = true;
@@ -421,6 +425,10 @@ struct RendererStats {
     // the animated draws it deformed this frame (--stats deformed_draws).
     double skinningMs = 0.0;
     uint32_t deformedDraws = 0;
+    // The scene's draws and those outside the camera's frustum, which no camera pass records
+    // (--stats draws, draws_culled).
+    uint32_t draws = 0;
+    uint32_t drawsCulled = 0;
     // The EV100 metered from the last read histogram (--stats exposure_ev100; auto exposure
     // only, else the camera's), and the adapted EV100 the frame was exposed with.
     float exposureEv100 = 0.0f;
@@ -438,6 +446,7 @@ struct RendererStats {
     uint32_t shadowMapsCached = 0;
     uint32_t shadowMapsKept = 0;
     double shadowAtlasUsed = 0.0;
+    uint32_t shadowCasterDraws = 0;  // draws recorded into the maps rendered this frame
     // Screen-space reflections (--stats ssr_*): GPU ms of the Hi-Z, trace and composite
     // passes, the mean and most steps of a traced ray, and the share of traced rays that hit
     // (0 in frames that trace none).

@@ -223,6 +223,7 @@ void ForwardTransparentPass::buildShadingPipeline() {
 }
 
 bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& resources,
+                                     std::span<const uint8_t> visible,
                                      const LightingFeatures& features,
                                      const GpuBuffer& previousWorlds) {
     previousWorlds_ = &previousWorlds;
@@ -231,6 +232,7 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
     sortedIndex_.clear();
     for (uint32_t i = 0; i < uint32_t(scene.draws.size()); ++i) {
         const DrawItem& draw = scene.draws[i];
+        if (!visible[i]) continue;
         if (resources.material(draw.material).alphaMode != content::AlphaMode::Blend) continue;
         if (resources.mesh(draw.mesh).indexCount == 0) continue;
         glm::vec4 centre = draw.world * glm::vec4(resources.meshSpaceBounds(draw).first, 1.0f);

@@ -6,7 +6,9 @@
 // lists hold the lights that reach them. With MSAA (`samples` > 1) the pass draws into
 // multisampled copies of the HDR, motion and depth targets (recordExpand fills them from the
 // deferred result) and resolves them back by plain averaging at the end of its rendering.
+#include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 #include <vector>
 
 #include "candela/render/frame_scene.h"
@@ -33,13 +35,15 @@ public:
     ForwardTransparentPass(const ForwardTransparentPass&) = delete;
     ForwardTransparentPass& operator=(const ForwardTransparentPass&) = delete;
 
-    // Collects the frame's blended draws, sorted back to front by the view depth of their
-    // bounds centre, and selects the shader variant. False when there are none: the frame then
-    // records nothing of this pass.
+    // Collects the frame's blended draws the camera sees (`visible`: a flag per draw,
+    // drawsInView), sorted back to front by the view depth of their bounds centre, and
+    // selects the shader variant. False when there are none: the frame then records nothing
+    // of this pass.
     // `previousWorlds` (one mat4 per scene draw, gbuffer.vert's motion vectors) is bound by
     // every draw this frame records.
     bool prepare(const FrameScene& scene, SceneResources& resources,
-                 const LightingFeatures& features, const GpuBuffer& previousWorlds);
+                 std::span<const uint8_t> visible, const LightingFeatures& features,
+                 const GpuBuffer& previousWorlds);
     size_t drawCount() const { return sorted_.size(); }
 
     // Clustered culling only: three frame-graph passes after DepthOccupancyPass and before its

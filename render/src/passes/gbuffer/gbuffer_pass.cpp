@@ -113,7 +113,8 @@ void recordGBufferDraw(VkCommandBuffer cmd, const Pipeline& pipeline, SceneResou
 GBufferPass::GBufferPass(GpuContext& context) : context_(context) {}
 
 void GBufferPass::prepare(const FrameScene& scene, const SceneResources& resources,
-                          bool materialLayers, bool extended, bool edges) {
+                          std::span<const uint8_t> visible, bool materialLayers, bool extended,
+                          bool edges) {
     materialLayers_ = materialLayers;
     if (edges && !context_.geometryShaders()) {
         throw std::runtime_error("--aa gbaa needs geometry shaders, which " +
@@ -152,7 +153,7 @@ void GBufferPass::prepare(const FrameScene& scene, const SceneResources& resourc
     drawPipelines_.assign(scene.draws.size(), nullptr);
     for (size_t i = 0; i < scene.draws.size(); ++i) {
         const DrawItem& draw = scene.draws[i];
-        if (!drawnInGBuffer(resources, draw)) continue;
+        if (!visible[i] || !drawnInGBuffer(resources, draw)) continue;
         const uint32_t slots = resources.materialTextureSlots(draw.material);
         Pipeline& pipeline = variants_[variantKey(index, slots)];
         if (pipeline.handle() == VK_NULL_HANDLE) {
@@ -266,9 +267,9 @@ void GBufferPass::recordEdges(VkCommandBuffer cmd, const ImageRef& edges, const 
         storageBufferWrite(PREVIOUS_WORLDS_BINDING, &previousInfo)};
     edgesOnly_.pushDescriptors(cmd, writes);
     for (uint32_t drawIndex = 0; drawIndex < uint32_t(scene.draws.size()); ++drawIndex) {
-        const DrawItem& draw = scene.draws[drawIndex];
-        if (drawnInGBuffer(resources, draw))
-            recordGBufferDraw(cmd, edgesOnly_, resources, draw, drawIndex);
+        if (drawPipelines_[drawIndex] != nullptr) {
+            recordGBufferDraw(cmd, edgesOnly_, resources, scene.draws[drawIndex], drawIndex);
+        }
     }
     vkCmdEndRendering(cmd);
 }

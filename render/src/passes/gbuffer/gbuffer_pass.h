@@ -1,6 +1,7 @@
 #pragma once
 // Rasterises the scene's meshes into the G-buffer, depth and the HDR target (emissive).
 #include <cstdint>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -25,9 +26,11 @@ public:
     // With both the extended targets and the edges, the edge target is written by a pass of
     // its own (recordEdges): nine colour attachments are more than devices guarantee.
     // Each draw takes the variant compiled for its material's texture slots (untextured
-    // materials skip every lookup), built here for the draws of `scene`.
-    void prepare(const FrameScene& scene, const SceneResources& resources, bool materialLayers,
-                 bool extended, bool edges = false);
+    // materials skip every lookup), built here for the draws of `scene` the camera sees
+    // (`visible`: a flag per draw, drawsInView).
+    void prepare(const FrameScene& scene, const SceneResources& resources,
+                 std::span<const uint8_t> visible, bool materialLayers, bool extended,
+                 bool edges = false);
     // Whether prepare() chose the separate edge pass (recordEdges) for this frame.
     static bool separateEdges(bool extended, bool edges) { return edges && extended; }
     bool materialLayers() const { return materialLayers_; }
@@ -57,7 +60,8 @@ private:
     static uint64_t variantKey(size_t index, uint32_t textureSlots) {
         return uint64_t(index) << 32 | textureSlots;
     }
-    // Per scene draw, prepare()'s pipeline (null for draws the pass skips).
+    // Per scene draw, prepare()'s pipeline (null for draws the pass skips: blended, empty or
+    // out of view).
     std::vector<const Pipeline*> drawPipelines_;
     Pipeline edgesOnly_;  // recordEdges; empty until a frame needs it
     static size_t variantIndex(bool materialLayers, bool extended, bool edges) {

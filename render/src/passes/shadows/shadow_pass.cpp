@@ -8,6 +8,8 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/scene_resources.h"
 #include "clustered/cluster_light_lists.h"
+#include "culling/draw_bounds.h"
+#include "culling/view_frustum.h"
 #include "ibl/environment_cache.h"
 #include "lights/gpu_light_types.h"
 #include "mesh_vertex.h"
@@ -33,24 +35,6 @@ constexpr float kLocalNear = 0.05f;
 // Cube faces and spot views reach a little past their edge, so the 3x3 filter at a face's
 // border reads texels of that face.
 constexpr float kBorderTexels = 2.0f;
-
-// A draw's world-space box (centre, half extent) from its mesh-space box (a skinned draw's
-// pose this frame, else its mesh's).
-struct CasterBounds {
-    glm::vec3 centre;
-    glm::vec3 extent;
-    float radius;
-};
-
-CasterBounds boundsOf(const DrawItem& draw, const SceneResources& resources) {
-    const auto [centre, extent] = resources.meshSpaceBounds(draw);
-    CasterBounds b;
-    b.centre = glm::vec3(draw.world * glm::vec4(centre, 1.0f));
-    const glm::mat3 m(draw.world);
-    b.extent = glm::abs(m[0]) * extent.x + glm::abs(m[1]) * extent.y + glm::abs(m[2]) * extent.z;
-    b.radius = glm::length(b.extent);
-    return b;
-}
 
 // The 6 cube faces: forward and up of each, major-axis order +X, -X, +Y, -Y, +Z, -Z.
 const glm::vec3 kFaceForward[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
@@ -144,14 +128,14 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
     if (!options.shadows) return false;
 
     // Casters: every drawn opaque or masked surface (blended ones let light through).
-    std::vector<CasterBounds> bounds(scene.draws.size());
+    std::vector<WorldBounds> bounds(scene.draws.size());
     std::vector<uint32_t> casters;
     for (uint32_t d = 0; d < scene.draws.size(); ++d) {
         const DrawItem& draw = scene.draws[d];
         const GpuMesh& mesh = resources.mesh(draw.mesh);
         if (mesh.indexCount == 0) continue;
         if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
-        bounds[d] = boundsOf(draw, resources);
+        bounds[d] = worldBoundsOf(draw, resources);
         casters.push_back(d);
     }
 
@@ -268,9 +252,13 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                 pv.gpu.params = glm::vec4(2.0f * tanHalf / float(tile.size),
                                           float(SHADOW_KIND_PERSPECTIVE), kLocalNear, 0.0f);
                 const float reach = std::max(l.attenuationRadius, 0.0f) + 0.5f * l.sourceLength;
+                // A caster outside this face's (or the spot's) frustum draws nothing in its
+                // tile: each face gets the sixth of the light's casters it sees.
+                const ViewFrustum frustum = viewFrustumOf(pv.gpu.worldToClip);
                 for (uint32_t d : casters) {
-                    const CasterBounds& b = bounds[d];
+                    const WorldBounds& b = bounds[d];
                     if (glm::length(b.centre - instance.position) > reach + b.radius) continue;
+                    if (options.culling && !intersects(frustum, b)) continue;
                     // The light's own fixture (a bulb or tube mesh around it) casts nothing.
                     if (glm::all(glm::lessThanEqual(glm::abs(instance.position - b.centre),
                                                     b.extent + 1e-4f))) {
@@ -339,6 +327,8 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                 previousViews_[light].push_back(planned_[lp.firstView + v].gpu);
         }
         rendersThisFrame_ |= lp.render;
+        for (uint32_t v = 0; lp.render && v < lp.viewCount; ++v)
+            stats_.casterDraws += uint32_t(planned_[lp.firstView + v].casters.size());
         (lp.render ? stats_.mapsRendered : stats_.mapsCached) += 1;
     }
     // A light that casts no shadow this frame loses its claim on the atlas: another light may

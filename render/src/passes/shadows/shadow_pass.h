@@ -44,6 +44,7 @@ struct ShadowFrameStats {
     uint32_t mapsCached = 0;    // lights whose maps were kept from an earlier frame
     uint32_t mapsKept = 0;      // lights that changed but kept stale maps (render budget spent)
     double atlasUsed = 0.0;     // share of the atlas's texels in tiles
+    uint32_t casterDraws = 0;   // draws recorded into the maps rendered this frame
 };
 
 class ShadowPass {

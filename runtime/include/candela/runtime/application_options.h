@@ -75,6 +75,8 @@ struct ApplicationOptions {
     std::optional<float> bloom;
     // --render-scale; unset: the quality preset's (RendererOptions::renderScale).
     std::optional<float> renderScale;
+    // --culling off: every view records every draw (RendererOptions::culling's reference).
+    bool culling = true;
     static constexpr float kDefaultBloom = 0.04f;
     // --exposure, --exposure-compensation; unset: the scene file's, else manual and 0 EV.
     std::optional<render::ExposureMode> exposure;
