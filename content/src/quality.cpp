@@ -12,6 +12,7 @@ namespace {
 constexpr std::array<QualityPreset, 4> kPresets{{
     // low
     QualityPreset{.renderScale = 0.5f,
+                  .lodPixelError = 0.5f,
                   .shadowCascadeSize = 512,
                   .shadowCascades = 2,
                   .shadowMaxTileSize = 128,
@@ -36,6 +37,7 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .hairSelfShadow = false},
     // medium: the CPU device's default
     QualityPreset{.renderScale = 0.5f,
+                  .lodPixelError = 0.25f,
                   .shadowCascadeSize = 1024,
                   .shadowCascades = 3,
                   .shadowMaxTileSize = 256,
@@ -60,6 +62,7 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .hairSelfShadow = true},
     // high: a GPU's default
     QualityPreset{.renderScale = 1.0f,
+                  .lodPixelError = 0.25f,
                   .shadowCascadeSize = 1024,
                   .shadowCascades = 4,
                   .shadowMaxTileSize = 512,
@@ -84,6 +87,7 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .hairSelfShadow = true},
     // ultra: the engine's image before presets
     QualityPreset{.renderScale = 1.0f,
+                  .lodPixelError = 0.0f,
                   .shadowCascadeSize = 1024,
                   .shadowCascades = 4,
                   .shadowMaxTileSize = 1024,

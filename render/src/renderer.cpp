@@ -192,16 +192,24 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     features_ = features.names();
     // Layers blend in the G-buffer pass only; the lighting variant does not change with them.
-    // The draws the camera sees: the G-buffer and forward passes record no other. The sides
-    // widen by two pixels for TAA's jitter, which moves the image after this test.
+    // The draws the camera sees, each at its level of detail: the G-buffer and forward passes
+    // record no other. The sides widen by two pixels for TAA's jitter, which moves the image
+    // after this test. --culling off: a frustum that holds everything.
     const CameraView& view = inputs.scene.camera;
-    const std::vector<uint8_t> visible =
-        options_.culling ? drawsInView(inputs.scene, resources,
-                                       viewFrustumOf(view.projection * view.view,
-                                                     {4.0f / float(width_), 4.0f / float(height_)}))
-                         : std::vector<uint8_t>(inputs.scene.draws.size(), 1);
+    const ViewFrustum frustum = options_.culling
+                                    ? viewFrustumOf(view.projection * view.view,
+                                                    {4.0f / float(width_), 4.0f / float(height_)})
+                                    : ViewFrustum{};
+    const std::vector<uint8_t> visible = drawsInView(
+        inputs.scene, resources, frustum,
+        perspectiveLodView(view.position, view.projection, float(height_), options_.lodPixelError));
     stats_.draws = uint32_t(visible.size());
-    stats_.drawsCulled = uint32_t(std::count(visible.begin(), visible.end(), uint8_t(0)));
+    stats_.drawsCulled = uint32_t(std::count(visible.begin(), visible.end(), kDrawCulled));
+    for (size_t i = 0; i < visible.size(); ++i) {
+        if (visible[i] != kDrawCulled)
+            declaredWork_.triangles +=
+                resources.mesh(inputs.scene.draws[i].mesh).lods[visible[i]].indexCount / 3;
+    }
     gbufferPass_->prepare(inputs.scene, resources, visible,
                           usesMaterialLayers(inputs.scene, resources),
                           features.materialExtensions(), gbaaPass_ != nullptr);
@@ -226,6 +234,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     stats_.shadowMapsKept = shadowPass_->stats().mapsKept;
     stats_.shadowAtlasUsed = shadowPass_->stats().atlasUsed;
     stats_.shadowCasterDraws = shadowPass_->stats().casterDraws;
+    declaredWork_.shadowTriangles = shadowPass_->stats().casterTriangles;
     if (!features.clustered) clusters_->usePlaceholders();
 
     SceneHandles h;

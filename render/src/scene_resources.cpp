@@ -409,10 +409,17 @@ const UploadedModel& SceneResources::addModel(const content::Model& model) {
                                  (deformable ? VK_BUFFER_USAGE_STORAGE_BUFFER_BIT : 0));
             gpu.vertexCount = uint32_t(p.positions.size());
             if (deformable && !p.positions.empty()) uploadDeformation(context_, p, skinned, gpu);
-            gpu.indices =
-                uploadBuffer(context_, p.indices.data(), p.indices.size() * sizeof(uint32_t),
-                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+            // The full list, then each coarser level after it (content/mesh_lods.h).
+            std::vector<uint32_t> indices = p.indices;
             gpu.indexCount = uint32_t(p.indices.size());
+            gpu.lods[0] = {0, gpu.indexCount, 0.0f};
+            for (content::MeshLod& lod : content::buildMeshLods(p)) {
+                gpu.lods[gpu.lodCount++] = {uint32_t(indices.size()), uint32_t(lod.indices.size()),
+                                            lod.error};
+                indices.insert(indices.end(), lod.indices.begin(), lod.indices.end());
+            }
+            gpu.indices = uploadBuffer(context_, indices.data(), indices.size() * sizeof(uint32_t),
+                                       VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
             if (!p.positions.empty()) {
                 glm::vec3 lo(p.positions[0][0], p.positions[0][1], p.positions[0][2]);
                 glm::vec3 hi = lo;

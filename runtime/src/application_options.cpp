@@ -175,6 +175,8 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --render-scale FRACTION   width and height the scene renders at, 0.25 to 1,\n"
            "                            upscaled to the output (default: the preset's)\n"
            "  --culling on|off          frustum culling of draws (off: the reference)\n"
+           "  --lod-error PIXELS        levels of detail: a coarser mesh strays at most this\n"
+           "                            far, 0 to 8 (0: full meshes; default: the preset's)\n"
            "  --exposure manual|auto    the camera's EV100, or metered and adapted\n"
            "                            (default: the scene file's, else manual)\n"
            "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n"
@@ -325,6 +327,12 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                     v + "'");
             }
             options.renderScale = scale;
+        } else if (arg == "--lod-error") {
+            float pixels = 0.0f;
+            if (!value() || !parseFloat(v, pixels) || !(pixels >= 0.0f && pixels <= 8.0f)) {
+                return fail("--lod-error needs pixels from 0 (full meshes) to 8, got '" + v + "'");
+            }
+            options.lodPixelError = pixels;
         } else if (arg == "--culling") {
             if (!value() || (v != "on" && v != "off"))
                 return fail("--culling needs on or off, got '" + v + "'");

@@ -124,6 +124,8 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
         w.aoSamples = std::max(w.aoSamples, c.aoSamples);
         w.scatteringSteps = std::max(w.scatteringSteps, c.scatteringSteps);
         w.hairFragments = std::max(w.hairFragments, c.hairFragments);
+        w.triangles = std::max(w.triangles, c.triangles);
+        w.shadowTriangles = std::max(w.shadowTriangles, c.shadowTriangles);
     }
     json["work"] = {{"light_evaluations_plain", w.lightEvaluationsPlain},
                     {"light_evaluations_area", w.lightEvaluationsArea},
@@ -135,7 +137,9 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
                     {"ssr_steps", w.ssrSteps},
                     {"ao_samples", w.aoSamples},
                     {"scattering_steps", w.scatteringSteps},
-                    {"hair_fragments", w.hairFragments}};
+                    {"hair_fragments", w.hairFragments},
+                    {"triangles", w.triangles},
+                    {"shadow_triangles", w.shadowTriangles}};
     // Shadows: GPU ms of the shadow depth pass (median over frames; 0 in frames whose maps
     // were all cached), lights with maps, rendered, cached and kept (over the render budget) maps
     // and atlas use (last frame).

@@ -103,7 +103,8 @@ TEST(Cli, StatsWorkLastCountsTheLastFrameOnly) {
     auto dir = tempDir();
     const std::string scene =
         std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/spot_light.scene.json";
-    const std::string run = "run " + scene + " --headless --size 32x32 --frames 3 --aa off --stats ";
+    const std::string run =
+        "run " + scene + " --headless --size 32x32 --frames 3 --aa off --stats ";
     RunResult every = runCandela(run + (dir / "every.json").string());
     ASSERT_EQ(every.exitCode, 0) << every.output;
     RunResult last = runCandela(run + (dir / "last.json").string() + " --stats-work last");
@@ -189,6 +190,67 @@ TEST(Cli, RenderScaleRendersSmallerAndUpscalesToTheOutput) {
     EXPECT_NE(bad.output.find("--render-scale needs a fraction of the output's size from 0.25 to "
                               "1, got '0.1'"),
               std::string::npos)
+        << bad.output;
+}
+
+// --lod-error: a grid of 10,600-triangle spheres drawn at their levels of detail draws a
+// fraction of the triangles, in shadow maps too, and stays close to the full meshes' image;
+// --culling off records every draw and changes no pixel.
+TEST(Cli, LevelsOfDetailAndCullingFlags) {
+    auto dir = tempDir();
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/sphere_grid_point.scene.json";
+    auto render = [&](const std::string& name, const std::string& flags) {
+        const std::string exr = (dir / (name + ".exr")).string();
+        RunResult r = runCandela(
+            "run " + scene + " --headless --size 96x96 --quality ultra --aa off --bloom 0 " +
+            flags + " --capture " + exr + " --stats " + (dir / (name + ".json")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        candela::content::Diagnostics diagnostics;
+        auto image = candela::content::readExrImage(exr, diagnostics);
+        EXPECT_TRUE(image.has_value()) << name;
+        return std::make_pair(std::move(image),
+                              nlohmann::json::parse(readBytes(dir / (name + ".json"))));
+    };
+    const auto [full, fullStats] = render("full", "--lod-error 0");
+    const auto [coarse, coarseStats] = render("coarse", "--lod-error 1");
+    const auto [unculled, unculledStats] = render("unculled", "--lod-error 0 --culling off");
+    ASSERT_TRUE(full && coarse && unculled);
+    const uint64_t fullTriangles = fullStats["work"]["triangles"].get<uint64_t>();
+    const uint64_t coarseTriangles = coarseStats["work"]["triangles"].get<uint64_t>();
+    EXPECT_GT(fullTriangles, 100000u);
+    EXPECT_LT(coarseTriangles * 4, fullTriangles);
+    EXPECT_LE(coarseStats["work"]["shadow_triangles"].get<uint64_t>(),
+              fullStats["work"]["shadow_triangles"].get<uint64_t>());
+    EXPECT_EQ(unculledStats["draws_culled"], 0);
+    double difference = 0.0, total = 0.0;
+    for (uint32_t y = 0; y < 96; ++y) {
+        for (uint32_t x = 0; x < 96; ++x) {
+            const float* a = full->image.texel(x, y);
+            const float* b = coarse->image.texel(x, y);
+            const float* c = unculled->image.texel(x, y);
+            const double la = 0.2126 * a[0] + 0.7152 * a[1] + 0.0722 * a[2];
+            const double lb = 0.2126 * b[0] + 0.7152 * b[1] + 0.0722 * b[2];
+            difference += std::abs(lb - la);
+            total += la;
+            for (int k = 0; k < 3; ++k)
+                ASSERT_EQ(a[k], c[k]) << "culling changed pixel " << x << "," << y;
+        }
+    }
+    ASSERT_GT(total, 0.0);
+    std::printf("levels of detail at 1 pixel: %llu of %llu triangles, relative L1 error %.4f\n",
+                (unsigned long long)coarseTriangles, (unsigned long long)fullTriangles,
+                difference / total);
+    EXPECT_LT(difference / total, 0.02);
+
+    RunResult bad = runCandela(kTriangle + "--lod-error 9");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find("--lod-error needs pixels from 0 (full meshes) to 8, got '9'"),
+              std::string::npos)
+        << bad.output;
+    bad = runCandela(kTriangle + "--culling maybe");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find("--culling needs on or off, got 'maybe'"), std::string::npos)
         << bad.output;
 }
 

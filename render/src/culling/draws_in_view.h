@@ -1,18 +1,21 @@
 #pragma once
-// Which of a frame's draws a view can see: a flag per draw, by its world box against the
-// view's frustum. The G-buffer and forward passes skip the rest; on a CPU rasterizer every
-// vertex of a draw off screen would still be transformed.
+// What a view draws of each of a frame's draws: nothing, when its world box lies outside the
+// view's frustum, else a level of detail. The G-buffer and forward passes skip the rest; on a
+// CPU rasterizer every vertex of a draw off screen would still be transformed.
 #include <cstdint>
 #include <vector>
 
+#include "culling/lod_selection.h"
 #include "culling/view_frustum.h"
 
 namespace candela::render {
 
 struct FrameScene;
 
-// 1 for each draw of `scene` whose box meets `frustum`, else 0.
+inline constexpr uint8_t kDrawCulled = 0xFF;
+
+// Per draw of `scene`: kDrawCulled, or the level of detail `lod` picks (selectLod).
 std::vector<uint8_t> drawsInView(const FrameScene& scene, const SceneResources& resources,
-                                 const ViewFrustum& frustum);
+                                 const ViewFrustum& frustum, const LodView& lod);
 
 }  // namespace candela::render

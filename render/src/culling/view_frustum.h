@@ -13,7 +13,8 @@ namespace candela::render {
 
 struct ViewFrustum {
     // Left, right, bottom, top, near: inside where dot(plane, (p, 1)) >= 0. No far plane: the
-    // engine's projections (reverse-Z, infinite far) have none.
+    // engine's projections (reverse-Z, infinite far) have none. All zero (the default): a
+    // frustum that holds everything.
     std::array<glm::vec4, 5> planes{};
 };
 

@@ -54,5 +54,6 @@ void addAtmosphereRows(ReportContext& context);
 void addScatteringRows(ReportContext& context);
 void addWireRows(ReportContext& context);
 void addHairRows(ReportContext& context);
+void addLevelOfDetailRows(ReportContext& context);
 
 }  // namespace candela::report

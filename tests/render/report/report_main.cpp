@@ -145,6 +145,7 @@ int main(int argc, char** argv) {
         section("light shafts", [&] { addScatteringRows(context); });
         section("wires", [&] { addWireRows(context); });
         section("hair", [&] { addHairRows(context); });
+        section("levels of detail", [&] { addLevelOfDetailRows(context); });
         if (harness.validationMessages() != 0) {
             std::fprintf(stderr, "candela-report: %u Vulkan validation messages\n",
                          harness.validationMessages());

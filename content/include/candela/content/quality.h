@@ -28,6 +28,9 @@ struct QualityPreset {
     // The fraction of the output's width and height the scene renders at before the upscale
     // to the output (a scene's cost on a CPU device goes with its pixels).
     float renderScale;
+    // Levels of detail: the most pixels (shadow maps: texels) a coarser mesh may stray from
+    // the full one where a view draws it (content/mesh_lods.h); 0, every mesh in full.
+    float lodPixelError;
     // Shadows: texels per cascade side, cascades per directional light, largest local-light tile,
     // and penumbrae by blocker search for sphere and tube lights (off: hard 3x3-texel PCF).
     uint32_t shadowCascadeSize;

@@ -312,6 +312,10 @@ struct RendererOptions {
     // view only the casters in its own. Off (--culling off), every view records every draw:
     // the reference a culled frame must match pixel for pixel.
     bool culling = true;
+    // Levels of detail (content/mesh_lods.h): each view draws a mesh at the coarsest level whose
+    // error stays within this many of its pixels (shadow maps: texels). 0: every mesh in full,
+    // the reference (--lod-error 0; the quality presets' lodPixelError otherwise).
+    float lodPixelError = 0.0f;
     // Penumbrae of sphere and tube lights by blocker search (percentage-closer soft shadows);
     // off, every local light's map is filtered as a hard shadow (the quality presets' switch).
     bool softShadows = true;
@@ -366,6 +370,10 @@ struct WorkCounters {
     uint64_t aoSamples = 0;               // GTAO depth samples (pixels x slices x 2 x steps)
     uint64_t scatteringSteps = 0;         // light shafts' shadow tests
     uint64_t hairFragments = 0;           // strand fragments the A-buffer fill asked for
+    // Triangles drawn at their levels of detail: by the camera's passes (G-buffer, forward),
+    // and into the shadow maps rendered this frame.
+    uint64_t triangles = 0;
+    uint64_t shadowTriangles = 0;
 };
 
 // Measurements of the last completed frame (--stats fields).
@@ -426,7 +434,7 @@ struct RendererStats {
     double skinningMs = 0.0;
     uint32_t deformedDraws = 0;
     // The scene's draws and those outside the camera's frustum, which no camera pass records
-    // (--stats draws, draws_culled).
+    // (--stats draws, draws_culled; their triangles: WorkCounters).
     uint32_t draws = 0;
     uint32_t drawsCulled = 0;
     // The EV100 metered from the last read histogram (--stats exposure_ev100; auto exposure

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "candela/content/mesh_lods.h"
 #include "candela/content/model.h"
 #include "candela/render/environment.h"
 #include "candela/render/gpu_buffer.h"
@@ -22,9 +23,19 @@ namespace candela::render {
 class GpuContext;
 
 struct GpuMesh {
-    GpuBuffer vertices;  // interleaved MeshVertex
-    GpuBuffer indices;   // uint32
-    uint32_t indexCount = 0;
+    GpuBuffer vertices;       // interleaved MeshVertex
+    GpuBuffer indices;        // uint32
+    uint32_t indexCount = 0;  // level 0's: the full triangle list
+    // Levels of detail (content::buildMeshLods): level 0 the full list, then coarser ones over
+    // the same vertices, all in `indices` one after another; each level's error is the
+    // distance (metres, mesh space) its surface may lie from the full one.
+    struct Lod {
+        uint32_t firstIndex = 0;
+        uint32_t indexCount = 0;
+        float error = 0.0f;
+    };
+    std::array<Lod, content::kMeshLodMaxLevels> lods{};
+    uint32_t lodCount = 1;
     int32_t defaultMaterial = -1;  // the primitive's material in SceneResources, -1: default
     // Of the positions' box, mesh space (transparency sorting, shadow caster culling); with
     // morph targets, grown to hold every weight combination in [0, 1].

@@ -11,6 +11,7 @@
 #include "clustered/cluster_grid.h"
 #include "clustered/gpu_cluster_params.h"
 #include "common/specialization_ids.h"
+#include "culling/draws_in_view.h"
 #include "gbuffer_targets.h"
 #include "ibl/environment_descriptors.h"
 #include "mesh_vertex_input.h"
@@ -49,13 +50,13 @@ static_assert(FORWARD_BINDING_FIRST_TEXTURE + kTextureSlotCount <= FORWARD_BINDI
 
 // The draw's vertices: the mesh's, or a skinned or morphed draw's deformed vertices and last
 // frame's (SceneResources::vertexBufferOf, previousVertexBufferOf). firstInstance: the draw's
-// index in FrameScene::draws, gbuffer.vert's previous-world index.
+// index in FrameScene::draws, gbuffer.vert's previous-world index. `lod`: the level of detail.
 void drawMesh(VkCommandBuffer cmd, const SceneResources& resources, const DrawItem& draw,
-              uint32_t drawIndex) {
-    const GpuMesh& mesh = resources.mesh(draw.mesh);
+              uint32_t drawIndex, uint8_t lod) {
+    const GpuMesh::Lod& level = resources.mesh(draw.mesh).lods[lod];
     bindMeshVertices(cmd, resources.vertexBufferOf(draw), resources.previousVertexBufferOf(draw));
-    vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
+    vkCmdBindIndexBuffer(cmd, resources.mesh(draw.mesh).indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, level.indexCount, 1, level.firstIndex, 0, drawIndex);
 }
 
 void setViewport(VkCommandBuffer cmd, uint32_t width, uint32_t height) {
@@ -230,9 +231,10 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
     order_.clear();
     sorted_.clear();
     sortedIndex_.clear();
+    sortedLod_.clear();
     for (uint32_t i = 0; i < uint32_t(scene.draws.size()); ++i) {
         const DrawItem& draw = scene.draws[i];
-        if (!visible[i]) continue;
+        if (visible[i] == kDrawCulled) continue;
         if (resources.material(draw.material).alphaMode != content::AlphaMode::Blend) continue;
         if (resources.mesh(draw.mesh).indexCount == 0) continue;
         glm::vec4 centre = draw.world * glm::vec4(resources.meshSpaceBounds(draw).first, 1.0f);
@@ -247,6 +249,7 @@ bool ForwardTransparentPass::prepare(const FrameScene& scene, SceneResources& re
     for (const auto& [depth, index] : order_) {
         sorted_.push_back(scene.draws[index]);
         sortedIndex_.push_back(index);
+        sortedLod_.push_back(visible[index]);
     }
     if (occupancy_.handle() == VK_NULL_HANDLE) buildFixedPipelines();
     if (!built_ || !(features == features_)) {
@@ -304,7 +307,7 @@ void ForwardTransparentPass::recordMarkOccupancy(VkCommandBuffer cmd, SceneResou
         push.world = draw.world;
         push.material = draw.material;
         occupancy_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources, draw, sortedIndex_[i]);
+        drawMesh(cmd, resources, draw, sortedIndex_[i], sortedLod_[i]);
     }
     vkCmdEndRendering(cmd);
 }
@@ -411,7 +414,7 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
         push.world = draw.world;
         push.material = draw.material;
         shading_.pushConstants(cmd, &push, sizeof(push));
-        drawMesh(cmd, resources, draw, sortedIndex_[i]);
+        drawMesh(cmd, resources, draw, sortedIndex_[i], sortedLod_[i]);
     }
     vkCmdEndRendering(cmd);
 }

@@ -35,12 +35,11 @@ public:
     ForwardTransparentPass(const ForwardTransparentPass&) = delete;
     ForwardTransparentPass& operator=(const ForwardTransparentPass&) = delete;
 
-    // Collects the frame's blended draws the camera sees (`visible`: a flag per draw,
-    // drawsInView), sorted back to front by the view depth of their bounds centre, and
-    // selects the shader variant. False when there are none: the frame then records nothing
-    // of this pass.
-    // `previousWorlds` (one mat4 per scene draw, gbuffer.vert's motion vectors) is bound by
-    // every draw this frame records.
+    // Collects the frame's blended draws the camera sees (`visible`: per draw, kDrawCulled or
+    // its level of detail; drawsInView), sorted back to front by the view depth of their bounds
+    // centre, and selects the shader variant. False when there are none: the frame then records
+    // nothing of this pass. `previousWorlds` (one mat4 per scene draw, gbuffer.vert's motion
+    // vectors) is bound by every draw this frame records.
     bool prepare(const FrameScene& scene, SceneResources& resources,
                  std::span<const uint8_t> visible, const LightingFeatures& features,
                  const GpuBuffer& previousWorlds);
@@ -119,6 +118,7 @@ private:
     VkSampleCountFlagBits samples_;
     std::vector<DrawItem> sorted_;
     std::vector<uint32_t> sortedIndex_;  // each sorted draw's index in FrameScene::draws
+    std::vector<uint8_t> sortedLod_;     // and its level of detail
     const GpuBuffer* previousWorlds_ = nullptr;
     std::vector<std::pair<float, uint32_t>> order_;  // (view depth, draw index) scratch
     LightingFeatures features_;

@@ -9,6 +9,7 @@
 #include "candela/render/scene_resources.h"
 #include "common/gbaa_edges.h"
 #include "common/specialization_ids.h"
+#include "culling/draws_in_view.h"
 #include "gbuffer_targets.h"
 #include "mesh_vertex_input.h"
 #include "passes/gbuffer/gbuffer_bindings.h"
@@ -94,10 +95,11 @@ bool drawnInGBuffer(const SceneResources& resources, const DrawItem& draw) {
            resources.material(draw.material).alphaMode != content::AlphaMode::Blend;
 }
 
-// One G-buffer draw with `pipeline` bound and its descriptors pushed: culled as its material
-// says; firstInstance is the draw's index, which gbuffer.vert reads its previous world by.
+// One G-buffer draw at level of detail `lod` with `pipeline` bound and its descriptors pushed:
+// culled as its material says; firstInstance is the draw's index, which gbuffer.vert reads its
+// previous world by.
 void recordGBufferDraw(VkCommandBuffer cmd, const Pipeline& pipeline, SceneResources& resources,
-                       const DrawItem& draw, uint32_t drawIndex) {
+                       const DrawItem& draw, uint32_t drawIndex, uint8_t lod) {
     const GpuMesh& mesh = resources.mesh(draw.mesh);
     vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided ? VK_CULL_MODE_NONE
                                                                         : VK_CULL_MODE_BACK_BIT);
@@ -105,7 +107,7 @@ void recordGBufferDraw(VkCommandBuffer cmd, const Pipeline& pipeline, SceneResou
     pipeline.pushConstants(cmd, &push, sizeof(push));
     bindMeshVertices(cmd, resources.vertexBufferOf(draw), resources.previousVertexBufferOf(draw));
     vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, drawIndex);
+    vkCmdDrawIndexed(cmd, mesh.lods[lod].indexCount, 1, mesh.lods[lod].firstIndex, 0, drawIndex);
 }
 
 }  // namespace
@@ -151,9 +153,10 @@ void GBufferPass::prepare(const FrameScene& scene, const SceneResources& resourc
                                                     gbuffer_layered_edges_frag_spv,
                                                     gbuffer_extended_layered_edges_frag_spv};
     drawPipelines_.assign(scene.draws.size(), nullptr);
+    drawLods_.assign(visible.begin(), visible.end());
     for (size_t i = 0; i < scene.draws.size(); ++i) {
         const DrawItem& draw = scene.draws[i];
-        if (!visible[i] || !drawnInGBuffer(resources, draw)) continue;
+        if (visible[i] == kDrawCulled || !drawnInGBuffer(resources, draw)) continue;
         const uint32_t slots = resources.materialTextureSlots(draw.material);
         Pipeline& pipeline = variants_[variantKey(index, slots)];
         if (pipeline.handle() == VK_NULL_HANDLE) {
@@ -234,7 +237,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
             writes.push_back(sampledImageWrite(GBUFFER_BINDING_FIRST_LAYER_TEXTURE + slot, &image));
         }
         pipeline->pushDescriptors(cmd, writes);
-        recordGBufferDraw(cmd, *pipeline, resources, draw, drawIndex);
+        recordGBufferDraw(cmd, *pipeline, resources, draw, drawIndex, drawLods_[drawIndex]);
     }
     vkCmdEndRendering(cmd);
 }
@@ -268,7 +271,8 @@ void GBufferPass::recordEdges(VkCommandBuffer cmd, const ImageRef& edges, const 
     edgesOnly_.pushDescriptors(cmd, writes);
     for (uint32_t drawIndex = 0; drawIndex < uint32_t(scene.draws.size()); ++drawIndex) {
         if (drawPipelines_[drawIndex] != nullptr) {
-            recordGBufferDraw(cmd, edgesOnly_, resources, scene.draws[drawIndex], drawIndex);
+            recordGBufferDraw(cmd, edgesOnly_, resources, scene.draws[drawIndex], drawIndex,
+                              drawLods_[drawIndex]);
         }
     }
     vkCmdEndRendering(cmd);

@@ -27,7 +27,7 @@ public:
     // its own (recordEdges): nine colour attachments are more than devices guarantee.
     // Each draw takes the variant compiled for its material's texture slots (untextured
     // materials skip every lookup), built here for the draws of `scene` the camera sees
-    // (`visible`: a flag per draw, drawsInView).
+    // (`visible`: per draw, kDrawCulled or the level of detail it is drawn at; drawsInView).
     void prepare(const FrameScene& scene, const SceneResources& resources,
                  std::span<const uint8_t> visible, bool materialLayers, bool extended,
                  bool edges = false);
@@ -63,7 +63,8 @@ private:
     // Per scene draw, prepare()'s pipeline (null for draws the pass skips: blended, empty or
     // out of view).
     std::vector<const Pipeline*> drawPipelines_;
-    Pipeline edgesOnly_;  // recordEdges; empty until a frame needs it
+    std::vector<uint8_t> drawLods_;  // per scene draw, prepare()'s level of detail
+    Pipeline edgesOnly_;             // recordEdges; empty until a frame needs it
     static size_t variantIndex(bool materialLayers, bool extended, bool edges) {
         return (edges ? 4 : 0) + (materialLayers ? 2 : 0) + (extended ? 1 : 0);
     }

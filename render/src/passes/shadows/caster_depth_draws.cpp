@@ -8,9 +8,9 @@ namespace candela::render {
 
 void drawCasterDepths(VkCommandBuffer cmd, const Pipeline& pipeline, const FrameScene& scene,
                       const SceneResources& resources, std::span<const uint32_t> casters,
-                      const glm::mat4& viewToClip) {
-    for (uint32_t d : casters) {
-        const DrawItem& draw = scene.draws[d];
+                      const glm::mat4& viewToClip, std::span<const uint8_t> lods) {
+    for (size_t c = 0; c < casters.size(); ++c) {
+        const DrawItem& draw = scene.draws[casters[c]];
         const GpuMesh& mesh = resources.mesh(draw.mesh);
         const glm::mat4 worldToClip = viewToClip * draw.world;
         pipeline.pushConstants(cmd, &worldToClip, sizeof(worldToClip));
@@ -18,7 +18,8 @@ void drawCasterDepths(VkCommandBuffer cmd, const Pipeline& pipeline, const Frame
         const VkBuffer vertexBuffer = resources.vertexBufferOf(draw);
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
         vkCmdBindIndexBuffer(cmd, mesh.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, 0, 0, 0);
+        const GpuMesh::Lod& level = mesh.lods[lods.empty() ? 0 : lods[c]];
+        vkCmdDrawIndexed(cmd, level.indexCount, 1, level.firstIndex, 0, 0);
     }
 }
 

@@ -9,6 +9,7 @@
 #include "candela/render/scene_resources.h"
 #include "clustered/cluster_light_lists.h"
 #include "culling/draw_bounds.h"
+#include "culling/lod_selection.h"
 #include "culling/view_frustum.h"
 #include "ibl/environment_cache.h"
 #include "lights/gpu_light_types.h"
@@ -229,12 +230,19 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                 pv.gpu.sphere = c.sphere;
                 const glm::mat3 basis = lightBasis(direction);
                 const glm::vec3 centre = glm::transpose(basis) * glm::vec3(c.sphere);
+                // Levels of detail by the cascade's texels (orthographic: one size everywhere).
+                LodView lod;
+                lod.pixelsPerMetre = 1.0f / std::max(c.texelWorld, 1e-6f);
+                lod.perspective = false;
+                lod.pixelError = options.lodPixelError;
                 for (uint32_t d : casters) {
                     const glm::vec3 p = glm::transpose(basis) * bounds[d].centre;
                     const float reach = c.sphere.w + bounds[d].radius + c.texelWorld;
                     if (std::abs(p.x - centre.x) <= reach && std::abs(p.y - centre.y) <= reach &&
                         p.z - bounds[d].radius <= c.farDepth) {
                         pv.casters.push_back(d);
+                        pv.lods.push_back(uint8_t(selectLod(resources.mesh(scene.draws[d].mesh),
+                                                            scene.draws[d].world, bounds[d], lod)));
                     }
                 }
             } else {
@@ -255,6 +263,11 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                 // A caster outside this face's (or the spot's) frustum draws nothing in its
                 // tile: each face gets the sixth of the light's casters it sees.
                 const ViewFrustum frustum = viewFrustumOf(pv.gpu.worldToClip);
+                // Levels of detail by the face's texels: tile.size across 2 tanHalf at 1 m.
+                LodView lod;
+                lod.eye = instance.position;
+                lod.pixelsPerMetre = float(tile.size) / (2.0f * tanHalf);
+                lod.pixelError = options.lodPixelError;
                 for (uint32_t d : casters) {
                     const WorldBounds& b = bounds[d];
                     if (glm::length(b.centre - instance.position) > reach + b.radius) continue;
@@ -265,15 +278,18 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                         continue;
                     }
                     pv.casters.push_back(d);
+                    pv.lods.push_back(uint8_t(selectLod(resources.mesh(scene.draws[d].mesh),
+                                                        scene.draws[d].world, b, lod)));
                 }
             }
             key = fnv1a64(&pv.gpu, sizeof(pv.gpu), key);
-            for (uint32_t d : pv.casters) {
+            for (size_t c = 0; c < pv.casters.size(); ++c) {
                 // Field by field: DrawItem has padding bytes.
-                const DrawItem& draw = scene.draws[d];
+                const DrawItem& draw = scene.draws[pv.casters[c]];
                 key = fnv1a64(&draw.mesh, sizeof(draw.mesh), key);
                 key = fnv1a64(&draw.material, sizeof(draw.material), key);
                 key = fnv1a64(&draw.world, sizeof(draw.world), key);
+                key = fnv1a64(&pv.lods[c], sizeof(pv.lods[c]), key);
                 // An animated caster changes shape under the same draw: never cached.
                 if (draw.deformedVertices)
                     key = fnv1a64(&frameCounter_, sizeof(frameCounter_), key);
@@ -327,8 +343,14 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
                 previousViews_[light].push_back(planned_[lp.firstView + v].gpu);
         }
         rendersThisFrame_ |= lp.render;
-        for (uint32_t v = 0; lp.render && v < lp.viewCount; ++v)
-            stats_.casterDraws += uint32_t(planned_[lp.firstView + v].casters.size());
+        for (uint32_t v = 0; lp.render && v < lp.viewCount; ++v) {
+            const PlannedView& pv = planned_[lp.firstView + v];
+            stats_.casterDraws += uint32_t(pv.casters.size());
+            for (size_t c = 0; c < pv.casters.size(); ++c) {
+                stats_.casterTriangles +=
+                    resources.mesh(scene.draws[pv.casters[c]].mesh).lods[pv.lods[c]].indexCount / 3;
+            }
+        }
         (lp.render ? stats_.mapsRendered : stats_.mapsCached) += 1;
     }
     // A light that casts no shadow this frame loses its claim on the atlas: another light may
@@ -373,7 +395,8 @@ void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
                 vkCmdClearAttachments(cmd, 1, &clear, 1, &clearRect);
             }
             setViewportAndScissor(cmd, rect);
-            drawCasterDepths(cmd, pipeline_, scene, resources, pv.casters, pv.gpu.worldToClip);
+            drawCasterDepths(cmd, pipeline_, scene, resources, pv.casters, pv.gpu.worldToClip,
+                             pv.lods);
         }
     }
     vkCmdEndRendering(cmd);

@@ -40,11 +40,12 @@ struct ShadowDescriptors {
 
 struct ShadowFrameStats {
     uint32_t shadowedLights = 0;
-    uint32_t mapsRendered = 0;  // lights whose maps were rendered this frame
-    uint32_t mapsCached = 0;    // lights whose maps were kept from an earlier frame
-    uint32_t mapsKept = 0;      // lights that changed but kept stale maps (render budget spent)
-    double atlasUsed = 0.0;     // share of the atlas's texels in tiles
-    uint32_t casterDraws = 0;   // draws recorded into the maps rendered this frame
+    uint32_t mapsRendered = 0;     // lights whose maps were rendered this frame
+    uint32_t mapsCached = 0;       // lights whose maps were kept from an earlier frame
+    uint32_t mapsKept = 0;         // lights that changed but kept stale maps (render budget spent)
+    double atlasUsed = 0.0;        // share of the atlas's texels in tiles
+    uint32_t casterDraws = 0;      // draws recorded into the maps rendered this frame
+    uint64_t casterTriangles = 0;  // their triangles, at their levels of detail
 };
 
 class ShadowPass {
@@ -78,6 +79,7 @@ private:
         GpuShadowView gpu;
         uint32_t light;
         std::vector<uint32_t> casters;  // draw indices
+        std::vector<uint8_t> lods;      // each caster's level of detail in this view
     };
     struct LightPlan {
         uint32_t light;

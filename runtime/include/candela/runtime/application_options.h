@@ -75,6 +75,8 @@ struct ApplicationOptions {
     std::optional<float> bloom;
     // --render-scale; unset: the quality preset's (RendererOptions::renderScale).
     std::optional<float> renderScale;
+    // --lod-error PIXELS; unset: the quality preset's (RendererOptions::lodPixelError).
+    std::optional<float> lodPixelError;
     // --culling off: every view records every draw (RendererOptions::culling's reference).
     bool culling = true;
     static constexpr float kDefaultBloom = 0.04f;
