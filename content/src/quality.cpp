@@ -34,6 +34,8 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .skyCubeFaceSize = 32,
                   .scatteringSlices = 128,
                   .scatteringSamples = 64,
+                  .aerialGrid = 16,
+                  .aerialStepsPerSlice = 4,
                   .hairSelfShadow = false},
     // medium: the CPU device's default
     QualityPreset{.renderScale = 0.5f,
@@ -59,6 +61,8 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .skyCubeFaceSize = 64,
                   .scatteringSlices = 256,
                   .scatteringSamples = 128,
+                  .aerialGrid = 16,
+                  .aerialStepsPerSlice = 8,
                   .hairSelfShadow = true},
     // high: a GPU's default
     QualityPreset{.renderScale = 1.0f,
@@ -84,6 +88,8 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .skyCubeFaceSize = 64,
                   .scatteringSlices = 512,
                   .scatteringSamples = 256,
+                  .aerialGrid = 32,
+                  .aerialStepsPerSlice = 8,
                   .hairSelfShadow = true},
     // ultra: the engine's image before presets
     QualityPreset{.renderScale = 1.0f,
@@ -109,6 +115,8 @@ constexpr std::array<QualityPreset, 4> kPresets{{
                   .skyCubeFaceSize = 64,
                   .scatteringSlices = 512,
                   .scatteringSamples = 256,
+                  .aerialGrid = 32,
+                  .aerialStepsPerSlice = 8,
                   .hairSelfShadow = true},
 }};
 

@@ -150,6 +150,10 @@ render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
     r.scatteringSettings.slices = options.scatteringSlices.value_or(preset.scatteringSlices);
     r.scatteringSettings.samplesPerSlice =
         options.scatteringSamples.value_or(preset.scatteringSamples);
+    r.scatteringSettings.aerialColumns = preset.aerialGrid;
+    r.scatteringSettings.aerialRows = preset.aerialGrid;
+    r.scatteringSettings.aerialSlices = preset.aerialGrid;
+    r.scatteringSettings.aerialStepsPerSlice = preset.aerialStepsPerSlice;
 
     // Default energy-conserving.
     r.brdf = chosen(options.brdf, sceneSetting(world, &SceneWorld::sceneBrdf), kBrdf)

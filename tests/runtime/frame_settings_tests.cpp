@@ -169,6 +169,12 @@ TEST(FrameSettings, LowerPresetsNeverCostMore) {
         EXPECT_LE(lower.scatteringSlices * lower.scatteringSamples,
                   higher.scatteringSlices * higher.scatteringSamples)
             << name;
+        EXPECT_LE(lower.aerialGrid * lower.aerialStepsPerSlice,
+                  higher.aerialGrid * higher.aerialStepsPerSlice)
+            << name;
+        // Levels of detail: a higher preset strays no further from the full meshes (0: full).
+        EXPECT_GE(lower.lodPixelError, higher.lodPixelError) << name;
+        EXPECT_LE(lower.renderScale, higher.renderScale) << name;
     }
 }
 

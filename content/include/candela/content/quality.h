@@ -56,6 +56,9 @@ struct QualityPreset {
     uint32_t skyViewWidth, skyViewHeight, skyCubeFaceSize;
     // Light shafts' epipolar slices and samples per slice.
     uint32_t scatteringSlices, scatteringSamples;
+    // The air in front of blended surfaces and wires (aerial perspective): view rays per side
+    // of its grid (also its depth slices) and shadow lookups per slice.
+    uint32_t aerialGrid, aerialStepsPerSlice;
     bool hairSelfShadow;  // hair's depth-map self-shadowing
 };
 
