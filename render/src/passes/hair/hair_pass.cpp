@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "candela/render/gpu_context.h"
 #include "candela/render/gpu_image.h"
 #include "clustered/cluster_grid.h"
 #include "clustered/gpu_cluster_params.h"
 #include "common/specialization_ids.h"
+#include "culling/view_frustum.h"
 #include "gbuffer_targets.h"
 #include "host_storage_array.h"
 #include "ibl/environment_descriptors.h"
@@ -93,6 +95,8 @@ bool HairPass::prepare(const FrameScene& scene, const LightingFeatures& features
     }
     segmentCount_ = uint32_t(count);
     if (count == 0) return false;
+    // The strands' world box (radii included): shadow views it misses draw no hair.
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     HairSegment* out = reserveHostStorageArray<HairSegment>(context_, segments_, count);
     for (const HairDraw& draw : scene.hair) {
         if (!draw.hair || !draw.style) continue;
@@ -117,8 +121,14 @@ bool HairPass::prepare(const FrameScene& scene, const LightingFeatures& features
             const glm::vec3 p0 = glm::vec3(draw.world * glm::vec4(a[0], a[1], a[2], 1.0f));
             const glm::vec3 p1 = glm::vec3(draw.world * glm::vec4(b[0], b[1], b[2], 1.0f));
             *out++ = {glm::vec4(p0, radiusAt(ia)), glm::vec4(p1, radiusAt(ib)), color, highlights};
+            const float radius = std::max(radiusAt(ia), radiusAt(ib));
+            lo = glm::min(lo, glm::min(p0, p1) - radius);
+            hi = glm::max(hi, glm::max(p0, p1) + radius);
         }
     }
+    bounds_.centre = 0.5f * (lo + hi);
+    bounds_.extent = glm::max(0.5f * (hi - lo), glm::vec3(0.0f));
+    bounds_.radius = glm::length(bounds_.extent);
     if (!built_ || !(features == features_) || shading != shading_) {
         features_ = features;
         shading_ = shading;
@@ -345,11 +355,17 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
         };
         shadowDepth_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
     }
-    // Cleared and drawn only over the views' tiles (their bounding box: the atlas packs tiles
-    // from its corner), which is all the resolve reads.
+    // Drawn into the views whose frustum holds strands (a cube face or cascade beside the hair
+    // has none: the resolve never looks a hair fragment up there), cleared and drawn only over
+    // their tiles' bounding box (the atlas packs tiles from its corner).
+    std::vector<uint32_t> drawn;
+    for (uint32_t v = 0; v < views.size(); ++v) {
+        if (intersects(viewFrustumOf(views[v].worldToClip), bounds_)) drawn.push_back(v);
+    }
     const uint32_t size = in.hairShadow.desc().width;
     uint32_t x0 = size, y0 = size, x1 = 0, y1 = 0;
-    for (const GpuShadowView& v : views) {
+    for (uint32_t d : drawn) {
+        const GpuShadowView& v = views[d];
         x0 = std::min(x0, uint32_t(v.tile.x));
         y0 = std::min(y0, uint32_t(v.tile.y));
         x1 = std::max(x1, std::min(size, uint32_t(v.tile.x + v.tile.z)));
@@ -373,7 +389,7 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
     shadowDepth_.bind(cmd);
     shadowDepth_.pushDescriptors(cmd, writes);
     HairPush push{};
-    for (uint32_t v = 0; v < views.size(); ++v) {
+    for (uint32_t v : drawn) {
         const VkRect2D rect{{int32_t(views[v].tile.x), int32_t(views[v].tile.y)},
                             {uint32_t(views[v].tile.z), uint32_t(views[v].tile.z)}};
         setViewportAndScissor(cmd, rect);

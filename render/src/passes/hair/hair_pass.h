@@ -13,6 +13,7 @@
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/pipeline.h"
 #include "candela/render/renderer_options.h"
+#include "culling/draw_bounds.h"
 #include "frame_graph/graph_resources.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/shadows/shadow_pass.h"
@@ -98,6 +99,7 @@ private:
     // has no froxels.
     GpuBuffer noMedium_;
     uint32_t segmentCount_ = 0;
+    WorldBounds bounds_;  // the strands' world box this frame (prepare)
     HairShading shading_ = HairShading::Lit;
     HairSelfShadow selfShadow_ = HairSelfShadow::DepthMap;
     LightingFeatures features_;
