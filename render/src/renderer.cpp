@@ -154,7 +154,10 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                      "cube is rendered in the first\n");
     }
     // Shadow maps for the lights that cast; none, and the variant leaves shadows out.
-    features.shadows = shadowPass_->prepare(inputs.scene, resources, options_, width_, height_);
+    // Every draw's world box, once: the shadow views' and the camera's culling read it.
+    const std::vector<WorldBounds> drawBounds = worldBoundsOf(inputs.scene, resources);
+    features.shadows =
+        shadowPass_->prepare(inputs.scene, resources, drawBounds, options_, width_, height_);
     for (const LightInstance& l : inputs.scene.lights) {
         if (!features.shadows || !l.light.castShadows) continue;
         (inEveryCluster(l.light) ? features.directionalShadows : features.localShadows) = true;
@@ -201,7 +204,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                                     {4.0f / float(width_), 4.0f / float(height_)})
                                     : ViewFrustum{};
     const std::vector<uint8_t> visible = drawsInView(
-        inputs.scene, resources, frustum,
+        inputs.scene, resources, drawBounds, frustum,
         perspectiveLodView(view.position, view.projection, float(height_), options_.lodPixelError));
     stats_.draws = uint32_t(visible.size());
     stats_.drawsCulled = uint32_t(std::count(visible.begin(), visible.end(), kDrawCulled));

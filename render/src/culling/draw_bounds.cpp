@@ -18,4 +18,12 @@ WorldBounds worldBoundsOf(const DrawItem& draw, const SceneResources& resources)
     return b;
 }
 
+std::vector<WorldBounds> worldBoundsOf(const FrameScene& scene, const SceneResources& resources) {
+    std::vector<WorldBounds> bounds;
+    bounds.reserve(scene.draws.size());
+    for (const DrawItem& draw : scene.draws)
+        bounds.push_back(worldBoundsOf(draw, resources));
+    return bounds;
+}
+
 }  // namespace candela::render

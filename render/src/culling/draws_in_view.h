@@ -3,6 +3,7 @@
 // view's frustum, else a level of detail. The G-buffer and forward passes skip the rest; on a
 // CPU rasterizer every vertex of a draw off screen would still be transformed.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "culling/lod_selection.h"
@@ -14,8 +15,10 @@ struct FrameScene;
 
 inline constexpr uint8_t kDrawCulled = 0xFF;
 
-// Per draw of `scene`: kDrawCulled, or the level of detail `lod` picks (selectLod).
+// Per draw of `scene` (`bounds`: their world boxes, worldBoundsOf): kDrawCulled, or the level
+// of detail `lod` picks (selectLod).
 std::vector<uint8_t> drawsInView(const FrameScene& scene, const SceneResources& resources,
-                                 const ViewFrustum& frustum, const LodView& lod);
+                                 std::span<const WorldBounds> bounds, const ViewFrustum& frustum,
+                                 const LodView& lod);
 
 }  // namespace candela::render

@@ -120,7 +120,8 @@ void ShadowPass::ensureAtlas(uint32_t size) {
 }
 
 bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resources,
-                         const RendererOptions& options, uint32_t width, uint32_t height) {
+                         std::span<const WorldBounds> bounds, const RendererOptions& options,
+                         uint32_t width, uint32_t height) {
     planned_.clear();
     lightPlans_.clear();
     stats_ = {};
@@ -129,14 +130,12 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
     if (!options.shadows) return false;
 
     // Casters: every drawn opaque or masked surface (blended ones let light through).
-    std::vector<WorldBounds> bounds(scene.draws.size());
     std::vector<uint32_t> casters;
     for (uint32_t d = 0; d < scene.draws.size(); ++d) {
         const DrawItem& draw = scene.draws[d];
         const GpuMesh& mesh = resources.mesh(draw.mesh);
         if (mesh.indexCount == 0) continue;
         if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
-        bounds[d] = worldBoundsOf(draw, resources);
         casters.push_back(d);
     }
 

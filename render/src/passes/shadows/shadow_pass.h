@@ -7,6 +7,7 @@
 // the atlas, the views and a per-light table indexed like the light buffer.
 #include <glm/glm.hpp>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "candela/render/frame_scene.h"
@@ -14,6 +15,7 @@
 #include "candela/render/gpu_image.h"
 #include "candela/render/pipeline.h"
 #include "candela/render/renderer_options.h"
+#include "culling/draw_bounds.h"
 #include "vk/sampler.h"
 
 namespace candela::render {
@@ -56,9 +58,11 @@ public:
     ShadowPass& operator=(const ShadowPass&) = delete;
 
     // Plans the frame's maps and writes the view and per-light tables; false when no light
-    // casts (the shading variant without shadows, nothing else to declare).
+    // casts (the shading variant without shadows, nothing else to declare). `bounds`: every
+    // draw's world box (worldBoundsOf), which casters are fitted and culled by.
     bool prepare(const FrameScene& scene, const SceneResources& resources,
-                 const RendererOptions& options, uint32_t width, uint32_t height);
+                 std::span<const WorldBounds> bounds, const RendererOptions& options,
+                 uint32_t width, uint32_t height);
     // Some tile needs rendering this frame (else the pass is not declared).
     bool rendersThisFrame() const { return rendersThisFrame_; }
     // Frame graph use: the atlas DepthWrite.

@@ -6,6 +6,7 @@
 
 #include "candela/render/gpu_context.h"
 #include "candela/render/scene_resources.h"
+#include "culling/draw_bounds.h"
 #include "mesh_vertex.h"
 #include "passes/shadows/caster_depth_draws.h"
 #include "passes/sky_occlusion/sky_occlusion_directions.h"
@@ -87,14 +88,11 @@ bool SkyOcclusionPass::prepare(const FrameScene& scene, const SceneResources& re
         const GpuMesh& mesh = resources.mesh(draw.mesh);
         if (mesh.indexCount == 0 || draw.deformedVertices != VK_NULL_HANDLE) continue;
         if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
-        const auto [centre, extent] = resources.meshSpaceBounds(draw);
-        const glm::vec3 c = glm::vec3(draw.world * glm::vec4(centre, 1.0f));
-        const glm::mat3 m(draw.world);
-        const glm::vec3 e =
-            glm::abs(m[0]) * extent.x + glm::abs(m[1]) * extent.y + glm::abs(m[2]) * extent.z;
+        const WorldBounds world = worldBoundsOf(draw, resources);
+        const glm::vec3 c = world.centre, e = world.extent;
         // Small casters (half-diagonal under kSmallCaster) are screen-space AO's scale; drawing
         // them n times would cost more than the sky light they block at the maps' texel size.
-        if (glm::length(e) < kSmallCaster) continue;
+        if (world.radius < kSmallCaster) continue;
         boxes.push_back({c - e, c + e});
         lo = glm::min(lo, c - e);
         hi = glm::max(hi, c + e);
