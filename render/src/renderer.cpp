@@ -11,6 +11,7 @@
 #include "candela/render/scene_resources.h"
 #include "clustered/cluster_light_lists.h"
 #include "cpu_clock.h"
+#include "culling/draw_order.h"
 #include "culling/draws_in_view.h"
 #include "frame_graph/frame_graph.h"
 #include "frame_graph/frame_graph_executor.h"
@@ -162,6 +163,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         if (!features.shadows || !l.light.castShadows) continue;
         (inEveryCluster(l.light) ? features.directionalShadows : features.localShadows) = true;
     }
+    features.lightLoops =
+        lightLoopsFor(inputs.scene.lights, shadowPass_->lightsWithMaps(), features.clustered);
     // Sky occlusion's maps: rendered when the static casters change, else kept.
     const SkyOcclusionMode skyOcclusion = options_.skyOcclusion == SkyOcclusionMode::Off &&
                                                   options_.skyOcclusionWithAtmosphere &&
@@ -215,7 +218,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     gbufferPass_->prepare(inputs.scene, resources, visible,
                           usesMaterialLayers(inputs.scene, resources),
-                          features.materialExtensions(), gbaaPass_ != nullptr);
+                          features.materialExtensions(), gbaaPass_ != nullptr,
+                          nearestFirst(visible, drawBounds, view.position));
     if (gbufferPass_->materialLayers()) features_.push_back("material_layers");
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
     uploadFrameData(inputs);

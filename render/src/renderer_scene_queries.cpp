@@ -1,11 +1,31 @@
 #include "renderer_scene_queries.h"
 
 #include <algorithm>
+#include <bit>
 
 #include "candela/render/scene_resources.h"
 #include "lights/gpu_light_types.h"
 
 namespace candela::render {
+
+uint32_t areaLightPathsOf(const content::Light& light, AreaLightMode renderersDefault) {
+    const bool ltc = light.quality == content::AreaLightQuality::Ltc ||
+                     (light.quality == content::AreaLightQuality::Default &&
+                      renderersDefault == AreaLightMode::Ltc);
+    if (light.type == content::LightType::Rect || light.type == content::LightType::Disk) {
+        uint32_t paths = ltc ? AREA_PATH_LTC : AREA_PATH_REPRESENTATIVE;
+        if (light.type == content::LightType::Rect && light.texture != 0) {
+            paths |= AREA_PATH_TEXTURED;
+        }
+        if (light.emission == content::AreaLightEmission::ConstantIntensity) {
+            paths |= AREA_PATH_CONSTANT_INTENSITY;
+        }
+        return paths;
+    }
+    // A sphere or tube (NaN sizes are none, as on the GPU).
+    const bool sized = light.sourceRadius > 0.0f || light.sourceLength > 0.0f;
+    return sized && ltc ? AREA_PATH_PUNCTUAL_LTC : 0u;
+}
 
 LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resources,
                             const RendererOptions& options) {
@@ -14,6 +34,8 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
     f.countLightPairs = options.countLightPairs;
     f.brdf = options.brdf;
     f.areaLights = options.areaLights;
+    // A power of two up to 16: each cell one texel of a level of the image's 256-texel chain.
+    f.areaTextureCells = std::bit_floor(std::clamp(options.areaTextureCells, 1u, 16u));
     f.softShadows = options.softShadows;
     f.hardShadowTapsPerAxis = options.shadowHardTapsPerAxis;
     if (resources.environment()) f.ibl = options.ibl;
@@ -37,14 +59,13 @@ LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resou
                 break;
         }
     }
-    f.plainLocalLights =
-        std::any_of(scene.lights.begin(), scene.lights.end(),
-                    [](const LightInstance& l) { return content::isPlainPunctualLight(l.light); });
+    f.areaLightPaths = 0;
     for (const LightInstance& l : scene.lights) {
         if (inEveryCluster(l.light)) continue;
         f.sphereLights |= l.light.sourceRadius > 0.0f;
         f.tubeLights |= l.light.sourceLength > 0.0f;
         f.lightTypes |= LightingFeatures::bit(l.light.type);
+        f.areaLightPaths |= areaLightPathsOf(l.light, options.areaLights);
     }
     return f;
 }

@@ -11,6 +11,11 @@ namespace candela::render {
 
 class SceneResources;
 
+// The integration paths (AREA_PATH_* bits) a light takes in the lighting shaders: a rect or disk
+// by LTC or representative point (its quality, else the renderer's default), textured,
+// constant intensity; a sphere or tube by LTC. None for the other lights.
+uint32_t areaLightPathsOf(const content::Light& light, AreaLightMode renderersDefault);
+
 // The shader variant a scene needs: only the shading models its drawn materials use and the
 // light shapes its lights have.
 LightingFeatures featuresOf(const FrameScene& scene, const SceneResources& resources,

@@ -177,6 +177,8 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --culling on|off          frustum culling of draws (off: the reference)\n"
            "  --lod-error PIXELS        levels of detail: a coarser mesh strays at most this\n"
            "                            far, 0 to 8 (0: full meshes; default: the preset's)\n"
+           "  --area-texture-cells N    textured rect lights by LTC: cells per side of the\n"
+           "                            image, 1, 2, 4, 8 or 16 (default: the preset's)\n"
            "  --exposure manual|auto    the camera's EV100, or metered and adapted\n"
            "                            (default: the scene file's, else manual)\n"
            "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n"
@@ -333,6 +335,13 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--lod-error needs pixels from 0 (full meshes) to 8, got '" + v + "'");
             }
             options.lodPixelError = pixels;
+        } else if (arg == "--area-texture-cells") {
+            uint32_t cells = 0;
+            if (!value() || !parseUint(v, cells) || cells == 0 || cells > 16 ||
+                (cells & (cells - 1)) != 0) {
+                return fail("--area-texture-cells needs 1, 2, 4, 8 or 16, got '" + v + "'");
+            }
+            options.areaTextureCells = cells;
         } else if (arg == "--culling") {
             if (!value() || (v != "on" && v != "off"))
                 return fail("--culling needs on or off, got '" + v + "'");

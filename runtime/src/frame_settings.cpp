@@ -137,6 +137,7 @@ render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
     r.renderScale = options.renderScale.value_or(preset.renderScale);
     r.culling = options.culling;
     r.lodPixelError = options.lodPixelError.value_or(preset.lodPixelError);
+    r.areaTextureCells = options.areaTextureCells.value_or(preset.areaTextureCells);
     r.lightCulling = options.lightCulling;
     r.lightAssignment = options.lightAssignment;
     // --stats reports the frame's work counts (every game's, not only `candela run`'s).

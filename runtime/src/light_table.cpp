@@ -16,17 +16,21 @@ glm::vec3 unitColumn(const ecs::Mat4& m, int column, const glm::vec3& fallback) 
     return length > 0.0f && std::isfinite(length) ? v / length : fallback;
 }
 
-// The slot group a light belongs in: points and spots without a size first, then the other
-// lights without shadows, then those that cast (cluster lists are in slot order, and the
-// lighting pass walks each group with only the code it needs: render/README.md "What a shader
+// The slot group a light belongs in, in the order of the lighting pass's loops by class
+// (render/src/passes/lighting/light_loops.h): points and spots without a size; spheres and
+// tubes; rects and disks; then points, spots, spheres and tubes that cast, and rects and disks
+// that cast. Cluster lists are in slot order, so each loop
+// takes a run of a pixel's list with only its class's code (render/README.md "What a shader
 // costs on lavapipe").
 int slotGroup(const content::Light& light) {
-    if (light.castShadows) return 2;
-    const bool sized = light.type == content::LightType::Rect ||
-                       light.type == content::LightType::Disk || light.sourceRadius > 0.0f ||
-                       light.sourceLength > 0.0f;
-    return sized ? 1 : 0;
+    const bool area =
+        light.type == content::LightType::Rect || light.type == content::LightType::Disk;
+    if (area && light.castShadows) return 4;
+    if (light.castShadows) return 3;
+    if (area) return 2;
+    return content::isPlainPunctualLight(light) ? 0 : 1;
 }
+constexpr int kSlotGroups = 5;
 
 }  // namespace
 
@@ -61,7 +65,7 @@ LightTable::~LightTable() {
 void LightTable::rebuild() {
     lights_.clear();
     slotOfEntity_.clear();
-    for (int group = 0; group < 3; ++group) {
+    for (int group = 0; group < kSlotGroups; ++group) {
         registry_.view<const ecs::WorldTransform, const content::Light>().each(
             [&](ecs::Entity e, const ecs::WorldTransform& world, const content::Light& light) {
                 if (slotGroup(light) != group) return;

@@ -3,6 +3,7 @@
 // efficiency (evaluated / lit light-pixel pairs) on a floor scene.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -121,10 +122,34 @@ double maxRelativeDifference(const CapturedFrame& a, const CapturedFrame& b) {
     return worst;
 }
 
-void expectClusteredMatchesBruteForce(size_t lightCount, uint32_t size) {
+// The light table's slot order (runtime/src/light_table.cpp), with three casters: each class
+// runs in its own loop of the lighting shader and the catch-all loop is compiled out
+// (render/src/passes/lighting/light_loops.h).
+void arrangeByClass(std::vector<LightInstance>& lights) {
+    int casters = 0;
+    for (LightInstance& l : lights) {
+        if (casters < 3 && l.light.type != LightType::Rect && l.light.type != LightType::Disk &&
+            l.light.type != LightType::Directional && l.light.type != LightType::Spot) {
+            l.light.castShadows = true;
+            ++casters;
+        }
+    }
+    const auto group = [](const LightInstance& l) {
+        const bool area = l.light.type == LightType::Rect || l.light.type == LightType::Disk;
+        if (l.light.castShadows) return area ? 4 : 3;
+        if (area) return 2;
+        return candela::content::isPlainPunctualLight(l.light) ? 0 : 1;
+    };
+    std::stable_sort(
+        lights.begin(), lights.end(),
+        [&](const LightInstance& a, const LightInstance& b) { return group(a) < group(b); });
+}
+
+void expectClusteredMatchesBruteForce(size_t lightCount, uint32_t size, bool byClass = false) {
     GpuContext context(requiredValidation());
     TestScene scene = roomScene(size);
     scene.lights = hardLights(lightCount, uint32_t(lightCount));
+    if (byClass) arrangeByClass(scene.lights);
     RendererOptions clustered;
     clustered.countLightPairs = true;
     RendererOptions bruteForce = clustered;
@@ -174,6 +199,11 @@ void expectClusteredMatchesBruteForce(size_t lightCount, uint32_t size) {
 
 TEST(ClusteredLighting, MatchesBruteForceWith16Lights) {
     expectClusteredMatchesBruteForce(16, 128);
+}
+
+// Issue 41: lights in class order, the lighting shader's loops by class with no catch-all.
+TEST(ClusteredLighting, MatchesBruteForceWithLightsByClass) {
+    expectClusteredMatchesBruteForce(64, 96, true);
 }
 
 TEST(ClusteredLighting, MatchesBruteForceWith1024Lights) {

@@ -144,6 +144,22 @@ TEST(ApplicationOptions, AreaLightsFlag) {
               std::string::npos);
 }
 
+// Issue 41: a textured rect's cells per side, a power of two up to 16 (each cell one texel of
+// a level of the image's chain).
+TEST(ApplicationOptions, AreaTextureCellsFlag) {
+    CommandLine result = parseCommandLine({"--area-texture-cells", "4"});
+    ASSERT_TRUE(result) << result.error;
+    EXPECT_EQ(result.options->areaTextureCells, 4u);
+    EXPECT_FALSE(parseCommandLine({}).options->areaTextureCells);  // the quality preset's
+    for (const char* bad : {"0", "3", "32", "x"}) {
+        EXPECT_NE(parseError({"--area-texture-cells", bad})
+                      .find(std::string("--area-texture-cells needs 1, 2, 4, 8 or 16, got '") +
+                            bad + "'"),
+                  std::string::npos)
+            << bad;
+    }
+}
+
 TEST(ApplicationOptions, HelpAsksForTheUsageAndSucceeds) {
     CommandLine result = parseCommandLine({"--frames", "3", "--help"});
     EXPECT_FALSE(result);

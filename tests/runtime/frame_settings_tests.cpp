@@ -175,6 +175,7 @@ TEST(FrameSettings, LowerPresetsNeverCostMore) {
         // Levels of detail: a higher preset strays no further from the full meshes (0: full).
         EXPECT_GE(lower.lodPixelError, higher.lodPixelError) << name;
         EXPECT_LE(lower.renderScale, higher.renderScale) << name;
+        EXPECT_LE(lower.areaTextureCells, higher.areaTextureCells) << name;
     }
 }
 
@@ -200,6 +201,9 @@ TEST(FrameSettings, QualityComesFromFlagSceneOrDevice) {
     const render::RendererOptions high = rendererOptionsFor(options, world.get(), q);
     EXPECT_EQ(high.areaLights, render::AreaLightMode::Representative);  // the flag wins
     EXPECT_TRUE(high.softShadows);
+    EXPECT_EQ(high.areaTextureCells, 8u);
+    options.areaTextureCells = 2;
+    EXPECT_EQ(rendererOptionsFor(options, world.get(), q).areaTextureCells, 2u);
 
     const QualityChoice cpu = qualityFor({}, nullptr, true);
     EXPECT_EQ(cpu.level, content::QualityLevel::Medium);

@@ -70,6 +70,7 @@ float areaShapeIntegral(AreaShape s, vec3 P, mat3 toLocal, mat3 minv) {
 // always 0 where the shader binds no atlas.
 uint areaTextureSlot(Light light) {
 #ifdef AREA_LIGHT_TEXTURED
+    if (!areaPathTaken(AREA_PATH_TEXTURED)) return 0u;
     return light.type == LIGHT_TYPE_RECT ? uint(max(light.spotScale, 1.0) + 0.5) - 1u : 0u;
 #else
     return 0u;
@@ -92,10 +93,13 @@ uint areaTextureSlot(Light light) {
 // Cells per side against the error (candela-report --section "area light shapes", worst cell on
 // steps at 0.35 where no cell edge falls on the image's): specular 4: 5.4 %, 8: 1.9 % (the fit's
 // own error 1.0 %), against 8.8 % for the one-point reads over the whole rect; diffuse 4: 0.4 %,
-// 8: 0.0 %, against 2.6 % (7.3 % on quadrants): the cosine is wide, 4 x 4 cells are enough for
-// it. render/README.md.
-const int kAreaLightTextureSpecularCells = 8;
-const int kAreaLightTextureDiffuseCells = 4;
+// 8: 0.0 %, against 2.6 % (7.3 % on quadrants): the cosine is wide, half the specular's cells
+// are enough for it. Each cell is a polygon integral, so the cells are most of a textured
+// rect's cost: the quality presets choose them (RendererOptions::areaTextureCells; 8 at ultra).
+// render/README.md.
+layout(constant_id = SPEC_AREA_TEXTURE_CELLS) const int kAreaLightTextureSpecularCells = 8;
+const int kAreaLightTextureDiffuseCells =
+    kAreaLightTextureSpecularCells > 1 ? kAreaLightTextureSpecularCells / 2 : 1;
 
 #ifdef AREA_LIGHT_TEXTURED
 // One read of a cell (its -X -Y corner at `cellMin`, one texel of mip `cellLevel`) for a lobe

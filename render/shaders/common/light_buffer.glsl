@@ -29,4 +29,9 @@ Light loadLight(uint index, uint capacity) {
     return light;
 }
 
+// Only the type (stream 3's w): what a walk by light class tests.
+uint loadLightType(uint index, uint capacity) {
+    return uint(lightData[3u * capacity + index].w);
+}
+
 #endif

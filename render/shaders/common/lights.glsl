@@ -39,6 +39,11 @@ layout(constant_id = SPEC_RECT_LIGHTS_ENABLED) const bool kRectLightsEnabled = t
 layout(constant_id = SPEC_DISK_LIGHTS_ENABLED) const bool kDiskLightsEnabled = true;
 // The renderer's --area-lights (RendererOptions::areaLights): LTC (true) or representative.
 layout(constant_id = SPEC_AREA_LIGHTS_LTC) const bool kAreaLightsLtc = true;
+// The integration paths the frame's lights take (AREA_PATH_* bits); the others compile out.
+layout(constant_id = SPEC_AREA_LIGHT_PATHS) const uint kAreaLightPaths = AREA_PATHS_ALL;
+bool areaPathTaken(uint path) {
+    return (kAreaLightPaths & path) != 0u;
+}
 
 // The "+1" of eq. 9 is 1 cm^2 in UE4's centimetres: 1e-4 m^2 here. Without the conversion a
 // light 2 m away would be 20% too dark.
@@ -295,7 +300,7 @@ LightIncidence withLtcIntegrals(LightIncidence o, Light light, vec3 P, vec3 N, v
 // representative point is exact). A tube's specular and diffuse are its capsule's (ltc_tube.glsl).
 bool localLightByLtc(Light light, vec3 P) {
 #ifdef AREA_LIGHT_LTC_MATRIX_BINDING
-    if (localLightRepresentative(light)) return false;
+    if (!areaPathTaken(AREA_PATH_PUNCTUAL_LTC) || localLightRepresentative(light)) return false;
     if (kTubeLightsEnabled && light.sourceLength > 0.0) return true;
     if (!kSphereLightsEnabled || !(light.sourceRadius > 0.0)) return false;
     vec3 toCenter = light.position - P;
@@ -303,6 +308,16 @@ bool localLightByLtc(Light light, vec3 P) {
 #else
     return false;
 #endif
+}
+
+// A point, spot, sphere or tube light: evaluateLight without the rect and disk code (a loop of
+// such lights leaves that code out, lavapipe running it for every light otherwise).
+LightIncidence evaluatePunctualLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
+    LightIncidence o = evaluateLocalLight(light, P, N, R, alpha);
+#ifdef AREA_LIGHT_LTC_MATRIX_BINDING
+    if (localLightByLtc(light, P)) o = withLtcIntegrals(o, light, P, N, R, alpha);
+#endif
+    return o;
 }
 
 // The incidence of any light: one function per light type, chosen by its type code. A new type
@@ -316,14 +331,14 @@ LightIncidence evaluateLight(Light light, vec3 P, vec3 N, vec3 R, float alpha) {
         uint quality = code & 3u;
         bool representative = quality == kAreaQualityRepresentative ||
                               (quality == kAreaQualityDefault && !kAreaLightsLtc);
-        return evaluateAreaLight(light, P, N, R, alpha, representative,
-                                 (code & kAreaEmissionConstantIntensity) != 0u);
+        // A path no light of the frame takes is a constant, and its code drops out.
+        if (!areaPathTaken(AREA_PATH_LTC)) representative = true;
+        if (!areaPathTaken(AREA_PATH_REPRESENTATIVE)) representative = false;
+        bool constantIntensity = areaPathTaken(AREA_PATH_CONSTANT_INTENSITY) &&
+                                 (code & kAreaEmissionConstantIntensity) != 0u;
+        return evaluateAreaLight(light, P, N, R, alpha, representative, constantIntensity);
     }
-    LightIncidence o = evaluateLocalLight(light, P, N, R, alpha);  // point, spot, sphere, tube
-#ifdef AREA_LIGHT_LTC_MATRIX_BINDING
-    if (localLightByLtc(light, P)) o = withLtcIntegrals(o, light, P, N, R, alpha);
-#endif
-    return o;
+    return evaluatePunctualLight(light, P, N, R, alpha);
 }
 
 #endif

@@ -23,6 +23,20 @@
 // Area light shapes a variant contains (lights.glsl, issue 15).
 #define SPEC_RECT_LIGHTS_ENABLED 24
 #define SPEC_DISK_LIGHTS_ENABLED 25
+// The ways the frame's sized lights are integrated (lights.glsl), one bit each: a rect or disk
+// by LTC, by representative point, a textured rect, a constant-intensity emitter, a sphere or
+// tube by LTC. Each per-light choice is a branch lavapipe runs for every light; a path no light
+// takes is compiled out.
+#define SPEC_AREA_LIGHT_PATHS 26
+#define AREA_PATH_LTC 1u
+#define AREA_PATH_REPRESENTATIVE 2u
+#define AREA_PATH_TEXTURED 4u
+#define AREA_PATH_CONSTANT_INTENSITY 8u
+#define AREA_PATH_PUNCTUAL_LTC 16u
+#define AREA_PATHS_ALL 31u
+// A textured rect by LTC: cells per side of the image its specular lobe is integrated over
+// (area_lights.glsl; its diffuse takes half as many, at least one).
+#define SPEC_AREA_TEXTURE_CELLS 27
 // Lighting and forward passes: clustered lists or brute force, pair counters, IBL mode
 // (0 none, 1 split sum, 2 mobile, 3 reference).
 #define SPEC_CLUSTERED 30
@@ -51,7 +65,7 @@
 // material.glsl: which texture slots a draw's material may have (bit i: slot i); a slot
 // outside the mask reads as its white default without a lookup.
 #define SPEC_MATERIAL_TEXTURE_SLOTS 42
-// lighting.comp: the frame has a point or spot light without a size (its plain loop).
-#define SPEC_PLAIN_LOCAL_LIGHTS 43
+// lighting.comp: the local-light loops the frame's lights reach (light_loop_bits.h).
+#define SPEC_LIGHT_LOOPS 43
 
 #endif

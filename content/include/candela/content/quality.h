@@ -49,6 +49,8 @@ struct QualityPreset {
     uint32_t froxelsX, froxelsY, froxelSlices;
     // Sphere and tube lights by linearly transformed cosines (off: representative point).
     bool areaLightsLtc;
+    // A textured rect light by LTC: cells per side of its image (RendererOptions).
+    uint32_t areaTextureCells;
     // Antialiasing: 0 off, 1 FXAA, 2 TAA (the renderer's AntiAliasing order).
     uint8_t antiAliasing;
     float bloom;  // fraction of radiance in the glare kernel; 0 off

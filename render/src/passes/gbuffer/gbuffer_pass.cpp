@@ -116,8 +116,13 @@ GBufferPass::GBufferPass(GpuContext& context) : context_(context) {}
 
 void GBufferPass::prepare(const FrameScene& scene, const SceneResources& resources,
                           std::span<const uint8_t> visible, bool materialLayers, bool extended,
-                          bool edges) {
+                          bool edges, std::span<const uint32_t> order) {
     materialLayers_ = materialLayers;
+    order_.assign(order.begin(), order.end());
+    if (order_.empty()) {
+        for (uint32_t i = 0; i < uint32_t(scene.draws.size()); ++i)
+            order_.push_back(i);
+    }
     if (edges && !context_.geometryShaders()) {
         throw std::runtime_error("--aa gbaa needs geometry shaders, which " +
                                  context_.deviceName() + " does not have");
@@ -211,7 +216,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& targets, con
     VkDescriptorBufferInfo cameraInfo{cameraBuffer.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo materialInfo{materials.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo previousInfo{previousWorlds.handle(), 0, VK_WHOLE_SIZE};
-    for (uint32_t drawIndex = 0; drawIndex < uint32_t(scene.draws.size()); ++drawIndex) {
+    for (const uint32_t drawIndex : order_) {
+        if (drawIndex >= scene.draws.size()) continue;
         const DrawItem& draw = scene.draws[drawIndex];
         const Pipeline* pipeline = drawPipelines_[drawIndex];
         if (pipeline == nullptr) continue;  // not drawn here (drawnInGBuffer)

@@ -27,10 +27,11 @@ public:
     // its own (recordEdges): nine colour attachments are more than devices guarantee.
     // Each draw takes the variant compiled for its material's texture slots (untextured
     // materials skip every lookup), built here for the draws of `scene` the camera sees
-    // (`visible`: per draw, kDrawCulled or the level of detail it is drawn at; drawsInView).
+    // (`visible`: per draw, kDrawCulled or the level of detail it is drawn at; drawsInView),
+    // recorded in `order` (culling/draw_order.h: nearest first; empty, the scene's order).
     void prepare(const FrameScene& scene, const SceneResources& resources,
                  std::span<const uint8_t> visible, bool materialLayers, bool extended,
-                 bool edges = false);
+                 bool edges = false, std::span<const uint32_t> order = {});
     // Whether prepare() chose the separate edge pass (recordEdges) for this frame.
     static bool separateEdges(bool extended, bool edges) { return edges && extended; }
     bool materialLayers() const { return materialLayers_; }
@@ -63,6 +64,7 @@ private:
     // Per scene draw, prepare()'s pipeline (null for draws the pass skips: blended, empty or
     // out of view).
     std::vector<const Pipeline*> drawPipelines_;
+    std::vector<uint32_t> order_;    // the draws in recording order
     std::vector<uint8_t> drawLods_;  // per scene draw, prepare()'s level of detail
     Pipeline edgesOnly_;             // recordEdges; empty until a frame needs it
     static size_t variantIndex(bool materialLayers, bool extended, bool edges) {

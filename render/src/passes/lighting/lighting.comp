@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "lighting_bindings.h"
+#include "light_loop_bits.h"
 // Deferred lighting: reads the G-buffer and adds the lit radiance to the HDR target, which
 // holds emissive already. Clustered: each pixel evaluates its cluster's light list (plus the
 // directional lights); brute force: every light at every pixel, the reference. With an
@@ -44,8 +45,9 @@ layout(constant_id = SPEC_SKY_OCCLUSION) const bool kSkyOcclusion = false;
 // only the shadow code of a kind that casts.
 layout(constant_id = SPEC_DIRECTIONAL_SHADOWS) const bool kDirectionalShadows = true;
 layout(constant_id = SPEC_LOCAL_SHADOWS) const bool kLocalShadows = true;
-// The frame has a point or spot light without a size: without one, the plain loop is left out.
-layout(constant_id = SPEC_PLAIN_LOCAL_LIGHTS) const bool kPlainLocalLights = true;
+// The local-light loops the frame's lights reach (light_loops.h, one bit per loop); the others
+// are left out, as lavapipe runs a loop's body at least once per pixel.
+layout(constant_id = SPEC_LIGHT_LOOPS) const uint kLightLoops = LIGHT_LOOPS_ALL;
 
 layout(binding = LIGHTING_BINDING_GBUFFER_BASE_COLOR) uniform sampler2D gbufferBaseColor;
 layout(binding = LIGHTING_BINDING_GBUFFER_NORMAL) uniform sampler2D gbufferNormalRoughMetal;
@@ -165,28 +167,32 @@ struct PixelShading {
 // is shadowed as the base is. Two passes rather than two evaluateLight calls, because compilers
 // inline evaluateLight once per call site. `body` (a constant of each call site, kLightBody*)
 // says which lights the caller passes, so each loop compiles only their code.
-const uint kLightBodyAny = 0u;          // any light, shadowed or not (brute force, overflow)
+const uint kLightBodyAny = 0u;          // any light, shadowed or not (brute force)
 const uint kLightBodyDirectional = 1u;  // directional lights, cascades
-const uint kLightBodyUnshadowed = 2u;   // local lights without a shadow map: no shadow code
-const uint kLightBodyLocal = 3u;        // local lights, shadowed or not
-const uint kLightBodyPlain = 4u;        // points and spots without a size or a map
+const uint kLightBodyPlain = 2u;        // points and spots without a size or a map
+const uint kLightBodyUnshadowedPunctual = 3u;  // points, spots, spheres, tubes without a map
+const uint kLightBodyUnshadowed = 4u;   // local lights without a map: no shadow code
+const uint kLightBodyPunctual = 5u;     // points, spots, spheres, tubes, mapped or not
+const uint kLightBodyLocal = 6u;        // local lights, shadowed or not
 void addLight(inout PixelShading px, uint lightIndex, bool coatLayer, const uint body) {
     Light light = loadLight(lightIndex, camera.frameInfo.w);
     vec3 N = coatLayer ? px.surface.clearCoatN : px.N;
     vec3 R = coatLayer ? px.coatR : px.R;
     float alpha = coatLayer ? px.coatAlpha : px.alpha;
+    bool punctual = body == kLightBodyUnshadowedPunctual || body == kLightBodyPunctual;
     LightIncidence incidence = body == kLightBodyDirectional ? evaluateDirectionalLight(light, N)
                                : body == kLightBodyPlain ? evaluatePlainLocalLight(light, px.P, N)
-                                                         : evaluateLight(light, px.P, N, R, alpha);
+                               : punctual ? evaluatePunctualLight(light, px.P, N, R, alpha)
+                                          : evaluateLight(light, px.P, N, R, alpha);
     float visibility = 1.0;
     bool shadowed = body == kLightBodyDirectional ? kDirectionalShadows
-                    : body == kLightBodyLocal     ? kLocalShadows
-                    : body == kLightBodyAny       ? kShadowsEnabled
-                                                  : false;
+                    : body == kLightBodyLocal || body == kLightBodyPunctual ? kLocalShadows
+                    : body == kLightBodyAny ? kShadowsEnabled
+                                            : false;
     if (shadowed) {
         uint code = body == kLightBodyDirectional ? kShadowCodeDirectional
-                    : body == kLightBodyLocal     ? kShadowCodeLocal
-                                                  : kShadowCodeAny;
+                    : body == kLightBodyAny       ? kShadowCodeAny
+                                                  : kShadowCodeLocal;
         // Out of the light's range or cone nothing is lit whatever the map says: no sampling.
         visibility = any(greaterThan(incidence.incidentIlluminance, vec3(0.0)))
                          ? shadowVisibility(light, lightIndex, px.P, px.N, code)
@@ -525,6 +531,32 @@ vec3 occludedAmbientRadiance(PixelShading px, ivec2 pixel, float occlusion) {
                                       specularVisibility);
 }
 
+// Whether the loop of `body` takes light `index` (light_loops.cpp's loopTakes, which decides
+// the loops a frame compiles in).
+bool loopTakes(uint index, const uint body) {
+    if (body == kLightBodyLocal || body == kLightBodyAny) return true;
+    uint type = loadLightType(index, camera.frameInfo.w);
+    bool area = type == LIGHT_TYPE_RECT || type == LIGHT_TYPE_DISK;
+    if (body == kLightBodyPunctual) return !area;
+    if (!lightUnshadowed(index)) return false;
+    if (body == kLightBodyPlain) return isPlainLocalLight(loadLight(index, camera.frameInfo.w));
+    return body == kLightBodyUnshadowed || !area;
+}
+
+// One loop: the pixel's lights from list position k on, while its class takes them; returns
+// where it stopped. A coated pixel takes each light twice (i odd: the coat).
+uint addLightRun(inout PixelShading px, PixelLights lights, uint k, uint layers, const uint body) {
+    uint count = pixelLightCount(lights);
+    for (uint i = k * layers; i < count * layers; ++i) {
+        uint index = pixelLightIndexAt(lights, i / layers);
+        if (index != kNoLight && !loopTakes(index, body)) break;
+        uint light = pixelLightAt(lights, i / layers);
+        if (light != kNoLight) addLight(px, light, i % layers == 1u, body);
+        k = (i + 1u) / layers;
+    }
+    return k;
+}
+
 void shadePixel(ivec2 pixel, inout PixelShading px) {
     uvec2 size = camera.frameInfo.xy;
     if (pixel.x >= int(size.x) || pixel.y >= int(size.y)) return;
@@ -573,12 +605,11 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
     if (!kClustered) lights = pixelLightRange(lights, push.lightFirst, push.lightEnd);
     // Lights by class, each loop with only its class's code: lavapipe runs every branch of a
     // loop's body for every light whether or not a lane takes it, and the shadow code (the
-    // penumbra search above all) is most of the body. Lists are in light order and the light
-    // table groups its slots the same way (runtime/src/light_table.cpp), so each loop sees
-    // only its class; each stops at a light it cannot take and the last takes any, so any
-    // order stays correct, only slower.
+    // penumbra search above all) and the area shapes are most of the body. Lists are in light
+    // order and the light table groups its slots the same way (runtime/src/light_table.cpp), so
+    // each loop sees only its class; each stops at a light it cannot take, and the loops
+    // compiled in (light_loops.h) take every light of any list, whatever the order.
     uint layers = kClearCoatEnabled && px.surface.clearCoat > 0.0 ? 2u : 1u;
-    uint count = pixelLightCount(lights);
     uint k = 0u;
     if (kClustered) {
         for (uint i = 0u; i < lights.directionalCount * layers; ++i) {
@@ -586,37 +617,20 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
         }
         k = lights.directionalCount;
     }
-    // The plain prefix (points and spots without a size or a map; the light table's first
-    // slots): a body without the area-light and shadow code.
-    for (uint i = k * layers; kPlainLocalLights && i < count * layers; ++i) {
-        uint index = pixelLightIndexAt(lights, i / layers);
-        if (index != kNoLight &&
-            !(lightUnshadowed(index) && isPlainLocalLight(loadLight(index, camera.frameInfo.w))))
-            break;
-        uint light = pixelLightAt(lights, i / layers);
-        if (light != kNoLight) addLight(px, light, i % layers == 1u, kLightBodyPlain);
-        k = (i + 1u) / layers;
+    if ((kLightLoops & LIGHT_LOOP_PLAIN) != 0u) {
+        k = addLightRun(px, lights, k, layers, kLightBodyPlain);
     }
-    if (kLocalShadows) {
-        // The unshadowed prefix: a coated pixel's second pass over each light is i odd.
-        for (uint i = k * layers; i < count * layers; ++i) {
-            uint index = pixelLightIndexAt(lights, i / layers);
-            if (index != kNoLight && !lightUnshadowed(index)) break;
-            uint light = pixelLightAt(lights, i / layers);
-            if (light != kNoLight) addLight(px, light, i % layers == 1u, kLightBodyUnshadowed);
-            k = (i + 1u) / layers;
-        }
+    if ((kLightLoops & LIGHT_LOOP_UNSHADOWED_PUNCTUAL) != 0u) {
+        k = addLightRun(px, lights, k, layers, kLightBodyUnshadowedPunctual);
     }
-    // The rest: sized and casting local lights, and anything out of class order. A frame
-    // whose local lights are all plain leaves this loop out, as lavapipe runs a loop's body
-    // at least once, lanes masked.
-    const bool kOnlyPlainLocalLights = kClustered && !kSphereLightsEnabled &&
-                                       !kTubeLightsEnabled && !kRectLightsEnabled &&
-                                       !kDiskLightsEnabled && !kLocalShadows;
-    const uint rest = kClustered ? kLightBodyLocal : kLightBodyAny;
-    for (uint i = k * layers; !kOnlyPlainLocalLights && i < count * layers; ++i) {
-        uint light = pixelLightAt(lights, i / layers);
-        if (light != kNoLight) addLight(px, light, i % layers == 1u, rest);
+    if ((kLightLoops & LIGHT_LOOP_UNSHADOWED) != 0u) {
+        k = addLightRun(px, lights, k, layers, kLightBodyUnshadowed);
+    }
+    if ((kLightLoops & LIGHT_LOOP_PUNCTUAL) != 0u) {
+        k = addLightRun(px, lights, k, layers, kLightBodyPunctual);
+    }
+    if ((kLightLoops & LIGHT_LOOP_ANY) != 0u) {
+        addLightRun(px, lights, k, layers, kClustered ? kLightBodyLocal : kLightBodyAny);
     }
     vec4 previous = imageLoad(hdrRadiance, pixel);
     imageStore(hdrRadiance, pixel, vec4(previous.rgb + px.radiance, 1.0));

@@ -56,6 +56,9 @@ std::vector<std::string> LightingFeatures::names() const {
         if (t.feature && (lightTypes & bit(t.type))) out.push_back(t.feature);
     }
     out.push_back(clustered ? "light_culling_clustered" : "light_culling_brute_force");
+    for (const LightLoopName& loop : kLightLoopNames) {
+        if (lightLoops & loop.bit) out.push_back(std::string("light_loop_") + loop.name);
+    }
     if (countLightPairs) out.push_back("light_pair_counters");
     if (shadows) out.push_back("shadows");
     if (skyOcclusion) out.push_back("sky_occlusion");
@@ -72,7 +75,7 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
     constants.set(SPEC_LEGACY_DIFFUSE_SPECULAR_ENABLED, features.legacyDiffuseSpecular);
     constants.set(SPEC_SPHERE_LIGHTS_ENABLED, features.sphereLights);
     constants.set(SPEC_TUBE_LIGHTS_ENABLED, features.tubeLights);
-    constants.set(SPEC_PLAIN_LOCAL_LIGHTS, features.plainLocalLights);
+    constants.set(SPEC_LIGHT_LOOPS, features.lightLoops);
     for (const GpuLightTypeInfo& t : kGpuLightTypeTable) {
         if (t.specialization != kNoSpecialization) {
             constants.set(t.specialization,
@@ -87,6 +90,8 @@ void setShadingConstants(SpecializationConstants& constants, const LightingFeatu
     constants.set(SPEC_HARD_SHADOW_TAPS, int32_t(features.hardShadowTapsPerAxis));
     constants.set(SPEC_ENERGY_CONSERVING, features.brdf == BrdfModel::EnergyConserving);
     constants.set(SPEC_AREA_LIGHTS_LTC, features.areaLights == AreaLightMode::Ltc);
+    constants.set(SPEC_AREA_LIGHT_PATHS, features.areaLightPaths);
+    constants.set(SPEC_AREA_TEXTURE_CELLS, features.areaTextureCells);
 }
 
 void setMaterialExtensionConstants(SpecializationConstants& constants,

@@ -10,7 +10,9 @@
 #include "candela/render/gpu_image.h"
 #include "candela/render/pipeline.h"
 #include "candela/render/renderer_options.h"
+#include "common/specialization_ids.h"
 #include "frame_graph/graph_resources.h"
+#include "light_loops.h"
 #include "vk/sampler.h"
 
 namespace candela::render {
@@ -27,7 +29,10 @@ struct LightingFeatures {
     bool legacyDiffuseSpecular = false;
     bool sphereLights = false;
     bool tubeLights = false;
-    bool plainLocalLights = true;  // a point or spot without a size (lighting.comp's plain loop)
+    // The paths the sized lights take (AREA_PATH_* of common/specialization_ids.h).
+    uint32_t areaLightPaths = AREA_PATHS_ALL;
+    uint32_t areaTextureCells = 8;         // RendererOptions::areaTextureCells
+    uint32_t lightLoops = kAllLightLoops;  // the local-light loops the lights reach (light_loops.h)
     // Bit lightTypeIndex(type) per light type present (lights/gpu_light_types.h gives the
     // types whose code a variant can leave out).
     uint32_t lightTypes = 0;

@@ -402,6 +402,14 @@ void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,
     atlasHoldsMaps_ = true;
 }
 
+std::vector<uint8_t> ShadowPass::lightsWithMaps() const {
+    std::vector<uint8_t> mapped(previousKeys_.size(), 0);
+    for (const LightPlan& lp : lightPlans_) {
+        if (lp.light < mapped.size()) mapped[lp.light] = 1;
+    }
+    return mapped;
+}
+
 std::vector<GpuShadowView> ShadowPass::views() const {
     std::vector<GpuShadowView> out;
     out.reserve(planned_.size());

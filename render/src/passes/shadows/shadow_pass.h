@@ -75,6 +75,8 @@ public:
     bool atlasHoldsMaps() const { return atlasHoldsMaps_; }
     ShadowDescriptors descriptors(bool enabled) const;
     const ShadowFrameStats& stats() const { return stats_; }
+    // Per light slot of the last prepare(): 1 where the light has a map this frame.
+    std::vector<uint8_t> lightsWithMaps() const;
     // This frame's views as viewBuffer() holds them (the hair depth map draws into each).
     std::vector<GpuShadowView> views() const;
 

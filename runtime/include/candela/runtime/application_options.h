@@ -77,6 +77,8 @@ struct ApplicationOptions {
     std::optional<float> renderScale;
     // --lod-error PIXELS; unset: the quality preset's (RendererOptions::lodPixelError).
     std::optional<float> lodPixelError;
+    // --area-texture-cells N; unset: the quality preset's (RendererOptions::areaTextureCells).
+    std::optional<uint32_t> areaTextureCells;
     // --culling off: every view records every draw (RendererOptions::culling's reference).
     bool culling = true;
     static constexpr float kDefaultBloom = 0.04f;
