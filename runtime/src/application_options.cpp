@@ -179,6 +179,8 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "                            far, 0 to 8 (0: full meshes; default: the preset's)\n"
            "  --area-texture-cells N    textured rect lights by LTC: cells per side of the\n"
            "                            image, 1, 2, 4, 8 or 16 (default: the preset's)\n"
+           "  --froxel-light-cap N      most plain lights per froxel cluster lighting the\n"
+           "                            medium, 0 (all) to 4096 (default: the preset's)\n"
            "  --exposure manual|auto    the camera's EV100, or metered and adapted\n"
            "                            (default: the scene file's, else manual)\n"
            "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n"
@@ -342,6 +344,13 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--area-texture-cells needs 1, 2, 4, 8 or 16, got '" + v + "'");
             }
             options.areaTextureCells = cells;
+        } else if (arg == "--froxel-light-cap") {
+            uint32_t cap = 0;
+            if (!value() || !parseUint(v, cap) || cap > 4096) {
+                return fail("--froxel-light-cap needs a count from 0 (every light) to 4096, got '" +
+                            v + "'");
+            }
+            options.froxelLightCap = cap;
         } else if (arg == "--culling") {
             if (!value() || (v != "on" && v != "off"))
                 return fail("--culling needs on or off, got '" + v + "'");

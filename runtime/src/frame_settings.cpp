@@ -131,6 +131,7 @@ render::RendererOptions rendererOptionsFor(const ApplicationOptions& options,
     r.volumetricsSettings.froxelsX = preset.froxelsX;
     r.volumetricsSettings.froxelsY = preset.froxelsY;
     r.volumetricsSettings.froxelSlices = preset.froxelSlices;
+    r.volumetricsSettings.froxelLightCap = options.froxelLightCap.value_or(preset.froxelLightCap);
     r.atmosphere.skyViewWidth = preset.skyViewWidth;
     r.atmosphere.skyViewHeight = preset.skyViewHeight;
     r.atmosphere.cubeFaceSize = preset.skyCubeFaceSize;

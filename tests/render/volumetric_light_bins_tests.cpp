@@ -292,4 +292,67 @@ TEST(VolumetricLightProxies, DrawOnlyTheVolumesTheViewCanSee) {
 }
 
 }  // namespace
+// Issue 41: the froxel lighting's per-cluster cap keeps, in each crowded cluster, the plain
+// lights that put the most light into its air, and every light that is not plain; lists keep
+// their order (plain first, each part ascending) and clusters under the cap are untouched.
+TEST(VolumetricLightBins, ACappedClusterKeepsItsStrongestPlainLightsAndEveryOther) {
+    const CameraView camera = testCamera();
+    std::vector<LightInstance> lights = scatteredLights();
+    lights[7].light.castShadows = true;  // not plain: never dropped
+    lights[11].light.type = content::LightType::Rect;
+    for (LightInstance& l : lights)
+        l.light.lumens = 500.0f;
+    const std::vector<float> scales(lights.size(), 1.0f);
+    const LightBinLayout layout = froxelClusterLayout(glm::uvec3(12, 8, 64), 0.05f, 100.0f);
+    const std::vector<uint32_t> bins = binLights(lights, scales, camera, layout);
+    const uint32_t binCount = layout.bins.x * layout.bins.y * layout.bins.z;
+    constexpr uint32_t kCap = 6;
+    const std::vector<uint32_t> capped = capPlainLights(bins, lights, scales, camera, layout, kCap);
+    EXPECT_EQ(capPlainLights(bins, lights, scales, camera, layout, 0), bins);  // 0: no cap
+    uint32_t crowded = 0;
+    for (uint32_t b = 0; b < binCount; ++b) {
+        const std::vector<uint32_t> before(bins.begin() + binCount + 1 + bins[b],
+                                           bins.begin() + binCount + 1 + bins[b + 1]);
+        const std::vector<uint32_t> after(capped.begin() + binCount + 1 + capped[b],
+                                          capped.begin() + binCount + 1 + capped[b + 1]);
+        const auto plainCount = [&](const std::vector<uint32_t>& list) {
+            return uint32_t(std::count_if(list.begin(), list.end(), [&](uint32_t l) {
+                return isPlainMediumLight(lights[l]);
+            }));
+        };
+        const uint32_t plainBefore = plainCount(before);
+        if (plainBefore <= kCap) {
+            EXPECT_EQ(after, before) << "cluster " << b;
+            continue;
+        }
+        ++crowded;
+        EXPECT_EQ(plainCount(after), kCap) << "cluster " << b;
+        EXPECT_EQ(after.size(), before.size() - (plainBefore - kCap)) << "cluster " << b;
+        // A subsequence of the old list: order kept, only plain lights gone.
+        EXPECT_TRUE(std::includes(before.begin(), before.begin() + plainBefore, after.begin(),
+                                  after.begin() + kCap));
+        EXPECT_TRUE(std::equal(after.begin() + kCap, after.end(), before.begin() + plainBefore));
+    }
+    EXPECT_GT(crowded, 0u);
+
+    // Three lights in one place: a cap of one keeps the brightest wherever they are listed.
+    std::vector<LightInstance> three(3);
+    for (uint32_t i = 0; i < 3; ++i) {
+        three[i].position = glm::vec3(0.0f, 0.0f, -4.0f);
+        three[i].light.attenuationRadius = 3.0f;
+        three[i].light.lumens = i == 1 ? 1000.0f : 100.0f;
+    }
+    const std::vector<float> ones(3, 1.0f);
+    const std::vector<uint32_t> threeBins = binLights(three, ones, camera, layout);
+    const std::vector<uint32_t> one = capPlainLights(threeBins, three, ones, camera, layout, 1);
+    uint32_t listedBins = 0;
+    for (uint32_t b = 0; b < binCount; ++b) {
+        if (threeBins[b + 1] == threeBins[b]) continue;
+        ++listedBins;
+        ASSERT_EQ(one[b + 1] - one[b], 1u);
+        EXPECT_EQ(one[binCount + 1 + one[b]], 1u);
+    }
+    EXPECT_GT(listedBins, 0u);
+}
+
 }  // namespace candela::render

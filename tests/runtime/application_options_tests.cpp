@@ -160,6 +160,22 @@ TEST(ApplicationOptions, AreaTextureCellsFlag) {
     }
 }
 
+// Issue 41: the froxel lighting's per-cluster cap of plain lights, 0 (none) to 4096.
+TEST(ApplicationOptions, FroxelLightCapFlag) {
+    CommandLine result = parseCommandLine({"--froxel-light-cap", "0"});
+    ASSERT_TRUE(result) << result.error;
+    EXPECT_EQ(result.options->froxelLightCap, 0u);
+    EXPECT_FALSE(parseCommandLine({}).options->froxelLightCap);  // the quality preset's
+    for (const char* bad : {"-1", "4097", "x"}) {
+        EXPECT_NE(parseError({"--froxel-light-cap", bad})
+                      .find(std::string("--froxel-light-cap needs a count from 0 (every light) "
+                                        "to 4096, got '") +
+                            bad + "'"),
+                  std::string::npos)
+            << bad;
+    }
+}
+
 TEST(ApplicationOptions, HelpAsksForTheUsageAndSucceeds) {
     CommandLine result = parseCommandLine({"--frames", "3", "--help"});
     EXPECT_FALSE(result);

@@ -176,6 +176,10 @@ TEST(FrameSettings, LowerPresetsNeverCostMore) {
         EXPECT_GE(lower.lodPixelError, higher.lodPixelError) << name;
         EXPECT_LE(lower.renderScale, higher.renderScale) << name;
         EXPECT_LE(lower.areaTextureCells, higher.areaTextureCells) << name;
+        // The froxel light cap: 0 is none, the most.
+        EXPECT_TRUE(higher.froxelLightCap == 0 ||
+                    (lower.froxelLightCap != 0 && lower.froxelLightCap <= higher.froxelLightCap))
+            << name;
     }
 }
 
@@ -204,6 +208,9 @@ TEST(FrameSettings, QualityComesFromFlagSceneOrDevice) {
     EXPECT_EQ(high.areaTextureCells, 8u);
     options.areaTextureCells = 2;
     EXPECT_EQ(rendererOptionsFor(options, world.get(), q).areaTextureCells, 2u);
+    EXPECT_EQ(high.volumetricsSettings.froxelLightCap, 0u);  // high: every light
+    options.froxelLightCap = 12;
+    EXPECT_EQ(rendererOptionsFor(options, world.get(), q).volumetricsSettings.froxelLightCap, 12u);
 
     const QualityChoice cpu = qualityFor({}, nullptr, true);
     EXPECT_EQ(cpu.level, content::QualityLevel::Medium);

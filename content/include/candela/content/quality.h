@@ -47,6 +47,9 @@ struct QualityPreset {
     uint32_t ssrMaxIterations;
     // The froxel grid at 1280x720 (scaled with the image) and its depth slices.
     uint32_t froxelsX, froxelsY, froxelSlices;
+    // The most plain lights a froxel cluster lights the medium with (0: every one that reaches
+    // it; RendererOptions' VolumetricsSettings::froxelLightCap).
+    uint32_t froxelLightCap;
     // Sphere and tube lights by linearly transformed cosines (off: representative point).
     bool areaLightsLtc;
     // A textured rect light by LTC: cells per side of its image (RendererOptions).

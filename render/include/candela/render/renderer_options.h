@@ -159,6 +159,11 @@ struct VolumetricsSettings {
     // from the near plane to `froxelFar` metres.
     uint32_t froxelsX = 160, froxelsY = 90, froxelSlices = 64;
     float froxelFar = 100.0f;
+    // The most plain lights (unshadowed points, spots, spheres, tubes) each 4x4x4 cluster of
+    // froxels lights the medium with, the strongest at the cluster kept (light_bins.h
+    // capPlainLights); shadowed, area and directional lights are never dropped. 0: every light
+    // that reaches it (the reference; --froxel-light-cap).
+    uint32_t froxelLightCap = 0;
     uint32_t referenceSteps = 256;  // per pixel, uniformly over the ray up to referenceFar
     // Per-light volumes: steps per light along each half-resolution pixel's segment inside
     // the light's volume (the 4x4 dither and the blur make 16 sets of offsets of them).

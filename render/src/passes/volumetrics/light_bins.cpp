@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <glm/vec4.hpp>
 
+#include "candela/content/components/light.h"
 #include "lights/gpu_light_types.h"
 
 namespace candela::render {
@@ -195,6 +197,115 @@ std::vector<uint32_t> binLights(std::span<const LightInstance> lights,
                         c.light;
     }
     return bins;
+}
+
+namespace {
+
+// A froxel bin's piece of the view frustum as a sphere in view space: the centre of its eight
+// corners and the farthest corner's distance from it.
+struct BinSphere {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+
+BinSphere binSphere(const glm::uvec3& bin, const glm::mat4& inverseProjection,
+                    const LightBinLayout& layout) {
+    const glm::uvec3 first = bin * layout.perBin;
+    const glm::uvec3 end = glm::min(first + layout.perBin, layout.elements);
+    const float z = float(layout.elements.z);
+    auto depthAt = [&](uint32_t slice) {
+        return slice == 0 ? 0.0f
+                          : layout.nearDepth *
+                                std::pow(layout.farDepth / layout.nearDepth, float(slice) / z);
+    };
+    glm::vec3 corners[8];
+    glm::vec3 centre(0.0f);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec2 element((c & 1) ? float(end.x) : float(first.x),
+                                (c & 2) ? float(end.y) : float(first.y));
+        // An element boundary's NDC (stride 1, edges at element / extent).
+        const glm::vec2 ndc = element / layout.extent * 2.0f - 1.0f;
+        glm::vec4 near = inverseProjection * glm::vec4(ndc, 1.0f, 1.0f);  // reverse-Z near
+        const glm::vec3 perDepth = glm::vec3(near) / near.w / std::max(-near.z / near.w, 1e-6f);
+        corners[c] = perDepth * depthAt((c & 4) ? end.z : first.z);
+        centre += corners[c] / 8.0f;
+    }
+    float radius = 0.0f;
+    for (const glm::vec3& corner : corners)
+        radius = std::max(radius, glm::length(corner - centre));
+    return {centre, radius};
+}
+
+// What a plain light puts into a bin's air, up to a constant: its luminous intensity x its
+// volumetric scale x the falloff window at the bin's nearest point over that distance squared.
+float binLightScore(const LightInstance& instance, float scale, const glm::vec3& viewPosition,
+                    const BinSphere& sphere) {
+    const content::Light& light = instance.light;
+    const float distance =
+        std::max(glm::length(viewPosition - sphere.centre) - sphere.radius, 0.0f);
+    const float range = std::max(light.attenuationRadius, 0.0f);
+    if (!(distance < range)) return 0.0f;
+    const float ratio = distance / range;
+    const float window = (1.0f - ratio * ratio * ratio * ratio);
+    const float luminance =
+        0.2126f * light.color[0] + 0.7152f * light.color[1] + 0.0722f * light.color[2];
+    const float score = std::max(light.lumens, 0.0f) * std::max(luminance, 0.0f) * scale * window *
+                        window / (distance * distance + 1e-2f);
+    return std::isfinite(score) ? score : 0.0f;
+}
+
+}  // namespace
+
+std::vector<uint32_t> capPlainLights(std::span<const uint32_t> bins,
+                                     std::span<const LightInstance> lights,
+                                     std::span<const float> scales, const CameraView& camera,
+                                     const LightBinLayout& layout, uint32_t cap) {
+    const uint32_t binCount = layout.bins.x * layout.bins.y * layout.bins.z;
+    if (cap == 0 || bins.size() < binCount + 1) return {bins.begin(), bins.end()};
+    const glm::mat4 inverseProjection = glm::inverse(camera.projection);
+    std::vector<glm::vec3> viewPositions(lights.size());
+    for (size_t i = 0; i < lights.size(); ++i)
+        viewPositions[i] = glm::vec3(camera.view * glm::vec4(lights[i].position, 1.0f));
+    std::vector<uint32_t> out(binCount + 1, 0u);
+    std::vector<uint32_t> lists;
+    lists.reserve(bins.size() - binCount - 1);
+    std::vector<std::pair<float, uint32_t>> scored;
+    for (uint32_t b = 0; b < binCount; ++b) {
+        const uint32_t* list = bins.data() + binCount + 1 + bins[b];
+        const uint32_t count = bins[b + 1] - bins[b];
+        uint32_t plain = 0;  // the plain lights lead the list
+        while (plain < count && isPlainMediumLight(lights[list[plain]]))
+            ++plain;
+        if (plain <= cap) {
+            lists.insert(lists.end(), list, list + count);
+        } else {
+            const glm::uvec3 bin(b % layout.bins.x, (b / layout.bins.x) % layout.bins.y,
+                                 b / (layout.bins.x * layout.bins.y));
+            const BinSphere sphere = binSphere(bin, inverseProjection, layout);
+            scored.clear();
+            for (uint32_t k = 0; k < plain; ++k) {
+                const uint32_t light = list[k];
+                const float scale = light < scales.size() ? scales[light] : 0.0f;
+                scored.push_back(
+                    {binLightScore(lights[light], scale, viewPositions[light], sphere), light});
+            }
+            // The strongest `cap`, ties to the lower index; then back in light order.
+            std::nth_element(scored.begin(), scored.begin() + cap, scored.end(),
+                             [](const auto& x, const auto& y) {
+                                 return x.first > y.first ||
+                                        (x.first == y.first && x.second < y.second);
+                             });
+            scored.resize(cap);
+            std::sort(scored.begin(), scored.end(),
+                      [](const auto& x, const auto& y) { return x.second < y.second; });
+            for (const auto& kept : scored)
+                lists.push_back(kept.second);
+            lists.insert(lists.end(), list + plain, list + count);
+        }
+        out[b + 1] = uint32_t(lists.size());
+    }
+    out.insert(out.end(), lists.begin(), lists.end());
+    return out;
 }
 
 uint64_t binnedPairs(std::span<const uint32_t> bins, const LightBinLayout& layout) {

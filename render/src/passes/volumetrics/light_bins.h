@@ -68,6 +68,17 @@ std::vector<uint32_t> binLights(std::span<const LightInstance> lights,
                                 std::span<const float> scales, const CameraView& camera,
                                 const LightBinLayout& layout);
 
+// A per-bin light cap (the froxel lighting's; the quality presets' froxelLightCap): in each bin
+// of `bins` (binLights' buffer for `layout`) that lists more than `cap` plain lights, only the
+// `cap` of them that put the most light into the bin's air stay: intensity x volumetric scale
+// x the falloff window at the bin's nearest point, over that distance squared (the bin's
+// frustum piece bounded by a sphere). The lights that are not plain (shadowed, rect and disk,
+// the sun) all stay; each part keeps its light order. 0: no cap.
+std::vector<uint32_t> capPlainLights(std::span<const uint32_t> bins,
+                                     std::span<const LightInstance> lights,
+                                     std::span<const float> scales, const CameraView& camera,
+                                     const LightBinLayout& layout, uint32_t cap);
+
 // Element-light pairs of `bins` (binLights' buffer for `layout`): each bin's list length times
 // the elements (pixels, froxels) of the bin inside the layout's extent. What a binned shader
 // evaluates: the frame budget's work count.

@@ -327,9 +327,11 @@ void VolumetricsPass::binLights(std::span<const LightInstance> lights, const Cam
     }
     if (froxels) {
         const LightBinLayout layout = froxelClusterLayout(in.grid, nearOf(in), farOf(in));
-        const std::vector<uint32_t> bins = render::binLights(
-            lights, froxelsListTheSun ? scaleSpan : std::span<const float>(localScales), camera,
-            layout);
+        const std::span<const float> froxelScales =
+            froxelsListTheSun ? scaleSpan : std::span<const float>(localScales);
+        const std::vector<uint32_t> bins =
+            capPlainLights(render::binLights(lights, froxelScales, camera, layout), lights,
+                           froxelScales, camera, layout, in.settings.froxelLightCap);
         binnedWork_.froxelLightEvaluations = binnedPairs(bins, layout);
         upload(context_, froxelBins_, bins);
     }

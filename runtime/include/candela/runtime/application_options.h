@@ -79,6 +79,8 @@ struct ApplicationOptions {
     std::optional<float> lodPixelError;
     // --area-texture-cells N; unset: the quality preset's (RendererOptions::areaTextureCells).
     std::optional<uint32_t> areaTextureCells;
+    // --froxel-light-cap N; unset: the quality preset's (VolumetricsSettings::froxelLightCap).
+    std::optional<uint32_t> froxelLightCap;
     // --culling off: every view records every draw (RendererOptions::culling's reference).
     bool culling = true;
     static constexpr float kDefaultBloom = 0.04f;
