@@ -106,6 +106,36 @@ TEST(FrameExtraction, WiresOfAMeshInstanceBecomeWireDraws) {
     EXPECT_FLOAT_EQ(frame.wires[0].world[3][1], 7.0f);
 }
 
+// Issue 41: the slot groups follow the lighting shader's loops by class (light_loops.h):
+// plain points, spheres and tubes, rects and disks, then the casters, casting rects and disks
+// last; each group keeps the registry's order.
+TEST(LightTableOrder, GroupsFollowTheLightingLoops) {
+    ecs::Registry registry;
+    LightTable table(registry);
+    auto add = [&](content::LightType type, float radius, bool casts, float lumens) {
+        const ecs::Entity e = registry.create();
+        registry.emplace<ecs::WorldTransform>(e);
+        content::Light light;
+        light.type = type;
+        light.sourceRadius = radius;
+        light.castShadows = casts;
+        light.lumens = lumens;
+        registry.emplace<content::Light>(e, light);
+    };
+    add(content::LightType::Rect, 0.0f, true, 1.0f);    // group 4
+    add(content::LightType::Point, 0.1f, true, 2.0f);   // group 3
+    add(content::LightType::Disk, 0.2f, false, 3.0f);   // group 2
+    add(content::LightType::Point, 0.1f, false, 4.0f);  // group 1
+    add(content::LightType::Spot, 0.0f, false, 5.0f);   // group 0
+    add(content::LightType::Rect, 0.0f, false, 6.0f);   // group 2
+    add(content::LightType::Point, 0.0f, false, 7.0f);  // group 0
+    table.update();
+    std::vector<float> order;
+    for (const render::LightInstance& l : table.lights())
+        order.push_back(l.light.lumens);
+    EXPECT_EQ(order, (std::vector<float>{5.0f, 7.0f, 4.0f, 3.0f, 6.0f, 2.0f, 1.0f}));
+}
+
 // Issue 41: plain points first, then lights with a size, then lights that cast shadows take
 // the last slots (cluster lists follow that order, and the lighting pass walks each group
 // without the others' code); a light that starts casting moves with a rebuild, an edit that
