@@ -531,8 +531,8 @@ vec3 occludedAmbientRadiance(PixelShading px, ivec2 pixel, float occlusion) {
                                       specularVisibility);
 }
 
-// Whether the loop of `body` takes light `index` (light_loops.cpp's loopTakes, which decides
-// the loops a frame compiles in).
+// Whether the loop of `body` takes light `index` (light_loops.cpp's lightLoopTakes, which
+// decides the loops a frame compiles in).
 bool loopTakes(uint index, const uint body) {
     if (body == kLightBodyLocal || body == kLightBodyAny) return true;
     uint type = loadLightType(index, camera.frameInfo.w);
@@ -543,13 +543,17 @@ bool loopTakes(uint index, const uint body) {
     return body == kLightBodyUnshadowed || !area;
 }
 
-// One loop: the pixel's lights from list position k on, while its class takes them; returns
-// where it stopped. A coated pixel takes each light twice (i odd: the coat).
-uint addLightRun(inout PixelShading px, PixelLights lights, uint k, uint layers, const uint body) {
+// One loop (`loop`, its LIGHT_LOOP_* bit): the pixel's lights from list position k on, while
+// its class takes them; returns where it stopped. The last loop compiled in tests nothing: every
+// light that reaches it is one it takes (light_loops.h), and the test costs a light's loads. A
+// coated pixel takes each light twice (i odd: the coat).
+uint addLightRun(inout PixelShading px, PixelLights lights, uint k, uint layers, const uint body,
+                 const uint loop) {
+    bool lastLoop = (kLightLoops & ~(loop | (loop - 1u))) == 0u;
     uint count = pixelLightCount(lights);
     for (uint i = k * layers; i < count * layers; ++i) {
         uint index = pixelLightIndexAt(lights, i / layers);
-        if (index != kNoLight && !loopTakes(index, body)) break;
+        if (!lastLoop && index != kNoLight && !loopTakes(index, body)) break;
         uint light = pixelLightAt(lights, i / layers);
         if (light != kNoLight) addLight(px, light, i % layers == 1u, body);
         k = (i + 1u) / layers;
@@ -618,19 +622,21 @@ void shadePixel(ivec2 pixel, inout PixelShading px) {
         k = lights.directionalCount;
     }
     if ((kLightLoops & LIGHT_LOOP_PLAIN) != 0u) {
-        k = addLightRun(px, lights, k, layers, kLightBodyPlain);
+        k = addLightRun(px, lights, k, layers, kLightBodyPlain, LIGHT_LOOP_PLAIN);
     }
     if ((kLightLoops & LIGHT_LOOP_UNSHADOWED_PUNCTUAL) != 0u) {
-        k = addLightRun(px, lights, k, layers, kLightBodyUnshadowedPunctual);
+        k = addLightRun(px, lights, k, layers, kLightBodyUnshadowedPunctual,
+                        LIGHT_LOOP_UNSHADOWED_PUNCTUAL);
     }
     if ((kLightLoops & LIGHT_LOOP_UNSHADOWED) != 0u) {
-        k = addLightRun(px, lights, k, layers, kLightBodyUnshadowed);
+        k = addLightRun(px, lights, k, layers, kLightBodyUnshadowed, LIGHT_LOOP_UNSHADOWED);
     }
     if ((kLightLoops & LIGHT_LOOP_PUNCTUAL) != 0u) {
-        k = addLightRun(px, lights, k, layers, kLightBodyPunctual);
+        k = addLightRun(px, lights, k, layers, kLightBodyPunctual, LIGHT_LOOP_PUNCTUAL);
     }
     if ((kLightLoops & LIGHT_LOOP_ANY) != 0u) {
-        addLightRun(px, lights, k, layers, kClustered ? kLightBodyLocal : kLightBodyAny);
+        addLightRun(px, lights, k, layers, kClustered ? kLightBodyLocal : kLightBodyAny,
+                    LIGHT_LOOP_ANY);
     }
     vec4 previous = imageLoad(hdrRadiance, pixel);
     imageStore(hdrRadiance, pixel, vec4(previous.rgb + px.radiance, 1.0));
