@@ -35,7 +35,7 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
     for (uint32_t level = 0; level < levels; ++level) {
         const ResourceHandle source = pyramid;
         auto p = g.addPass("ssr_hiz" + std::to_string(level), PassKind::Device,
-                           [this, camera, depth, source, level](PassContext& ctx) {
+                           [this, depth, source, level](PassContext& ctx) {
                                ssrPass_->recordHiz(ctx.cmd(), cameraBuffer_, ctx.image(depth),
                                                    ctx.image(source), level, width_, height_);
                            });
