@@ -43,15 +43,13 @@ LightInstance lightOf(Kind kind, bool castShadows = false) {
     return l;
 }
 
-const LightLoop kLoopOrder[] = {kLightLoopPlain, kLightLoopUnshadowedPunctual, kLightLoopUnshadowed,
-                                kLightLoopPunctual, kLightLoopAny};
-
 // lighting.comp's walk of one pixel's list (ascending light indices) with the loops `enabled`:
 // each loop takes lights while it takes them; returns the lights no loop took.
 size_t lightsLost(const std::vector<LightInstance>& lights, const std::vector<uint8_t>& mapped,
                   const std::vector<size_t>& list, uint32_t enabled) {
     size_t at = 0;
-    for (LightLoop loop : kLoopOrder) {
+    for (const LightLoopName& named : kLightLoopNames) {
+        const LightLoop loop = named.bit;
         if (!(enabled & loop)) continue;
         while (at < list.size() &&
                (lights[list[at]].light.type == LightType::Directional ||

@@ -119,10 +119,6 @@ void GBufferPass::prepare(const FrameScene& scene, const SceneResources& resourc
                           bool edges, std::span<const uint32_t> order) {
     materialLayers_ = materialLayers;
     order_.assign(order.begin(), order.end());
-    if (order_.empty()) {
-        for (uint32_t i = 0; i < uint32_t(scene.draws.size()); ++i)
-            order_.push_back(i);
-    }
     if (edges && !context_.geometryShaders()) {
         throw std::runtime_error("--aa gbaa needs geometry shaders, which " +
                                  context_.deviceName() + " does not have");

@@ -28,10 +28,10 @@ public:
     // Each draw takes the variant compiled for its material's texture slots (untextured
     // materials skip every lookup), built here for the draws of `scene` the camera sees
     // (`visible`: per draw, kDrawCulled or the level of detail it is drawn at; drawsInView),
-    // recorded in `order` (culling/draw_order.h: nearest first; empty, the scene's order).
+    // recorded in `order` (culling/draw_order.h: nearest first).
     void prepare(const FrameScene& scene, const SceneResources& resources,
-                 std::span<const uint8_t> visible, bool materialLayers, bool extended,
-                 bool edges = false, std::span<const uint32_t> order = {});
+                 std::span<const uint8_t> visible, bool materialLayers, bool extended, bool edges,
+                 std::span<const uint32_t> order);
     // Whether prepare() chose the separate edge pass (recordEdges) for this frame.
     static bool separateEdges(bool extended, bool edges) { return edges && extended; }
     bool materialLayers() const { return materialLayers_; }

@@ -1,21 +1,12 @@
 #include "light_loops.h"
 
-#include <array>
-
 #include "candela/content/components/light.h"
+#include "candela/content/light_types.h"
 
 namespace candela::render {
 
-namespace {
-
-constexpr std::array<LightLoop, 5> kLoops{kLightLoopPlain, kLightLoopUnshadowedPunctual,
-                                          kLightLoopUnshadowed, kLightLoopPunctual, kLightLoopAny};
-
-}  // namespace
-
 bool lightLoopTakes(LightLoop loop, const content::Light& light, bool mapped) {
-    const bool area =
-        light.type == content::LightType::Rect || light.type == content::LightType::Disk;
+    const bool area = content::isAreaLight(light.type);
     switch (loop) {
         case kLightLoopPlain:
             // The GPU light carries NaN and negative sizes as 0, which this reads the same way.
@@ -41,9 +32,9 @@ uint32_t lightLoopsFor(std::span<const LightInstance> lights, std::span<const ui
         const content::Light& light = lights[i].light;
         if (light.type == content::LightType::Directional) continue;
         const bool hasMap = i < mapped.size() && mapped[i] != 0;
-        while (!lightLoopTakes(kLoops[walk], light, hasMap))
+        while (!lightLoopTakes(kLightLoopNames[walk].bit, light, hasMap))
             ++walk;  // stops: the last loop takes any light
-        loops |= kLoops[walk];
+        loops |= kLightLoopNames[walk].bit;
     }
     return loops;
 }

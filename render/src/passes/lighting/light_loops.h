@@ -23,7 +23,8 @@ enum LightLoop : uint32_t {
 };
 inline constexpr uint32_t kAllLightLoops = LIGHT_LOOPS_ALL;
 
-// Each loop's name in --stats `features` ("light_loop_" + name).
+// The loops in the order lighting.comp runs them, each with its name in --stats `features`
+// ("light_loop_" + name).
 struct LightLoopName {
     LightLoop bit;
     const char* name;
