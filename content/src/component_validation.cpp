@@ -260,6 +260,23 @@ ValueProblems validateAtmosphere(Atmosphere& a) {
                "must be hours in [0, 24] (negative: keep the light's direction), got " +
                    text(a.timeOfDay));
     }
+    // Past these the tables' optical depths (coefficient x path length through the air)
+    // overflow to Inf and the sky turns to NaN; 1e3 1/m is already opaque within a millimetre.
+    for (auto [field, rgb] : {std::pair{"rayleighScattering", &a.rayleighScattering},
+                              std::pair{"ozoneAbsorption", &a.ozoneAbsorption}}) {
+        const float largest = std::max({(*rgb)[0], (*rgb)[1], (*rgb)[2]});
+        if (largest > kMaxAirCoefficient) {
+            problems.push_back({field,
+                                "channels up to " + text(largest) +
+                                    " 1/m are beyond the limit of " + text(kMaxAirCoefficient) +
+                                    " 1/m; using " + text(kMaxAirCoefficient) + " 1/m for those",
+                                true});
+            for (float& c : *rgb)
+                c = std::min(c, kMaxAirCoefficient);
+        }
+    }
+    clampAbove(problems, "mieScattering", a.mieScattering, kMaxAirCoefficient, " 1/m");
+    clampAbove(problems, "mieAbsorption", a.mieAbsorption, kMaxAirCoefficient, " 1/m");
     // Past these the single-precision shaders lose the planet (radii in km keep 7 digits).
     clampAbove(problems, "groundRadius", a.groundRadius, 1e9f, " m");
     clampAbove(problems, "atmosphereHeight", a.atmosphereHeight, 1e7f, " m");

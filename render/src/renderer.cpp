@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "candela/render/environment.h"
 #include "candela/render/frame_submitter.h"
@@ -37,6 +38,8 @@
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/hair/hair_pass.h"
 #include "passes/lighting/lighting_pass.h"
+#include "passes/nonfinite/nonfinite_pass.h"
+#include "passes/nonfinite/nonfinite_probes.h"
 #include "passes/scattering/scattering_pass.h"
 #include "passes/shadows/shadow_pass.h"
 #include "passes/skinning/skinning_pass.h"
@@ -56,7 +59,10 @@
 namespace candela::render {
 
 float exposureFromEv100(float ev100) {
-    return 1.0f / (1.2f * std::exp2(ev100));
+    // Below an EV100 of about -127 the scale overflows; the largest float keeps every pass
+    // that multiplies by it (TAA's clipping, tonemapping) away from 0 * Inf.
+    const float exposure = 1.0f / (1.2f * std::exp2(ev100));
+    return std::isfinite(exposure) ? exposure : std::numeric_limits<float>::max();
 }
 
 namespace {
@@ -1111,6 +1117,8 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
         p.read(hdr, Use::Sampled);
         hdr = p.write(output, Use::StorageWrite);
     }
+    nonFiniteChecked_ = false;
+    if (options_.checkNonFinite || diagnoseNonFinite_) declareNonFiniteCheck(hdr);
     features_.push_back("tonemap_aces");
     {
         // FXAA reads the tonemapped image from a transient and writes the LDR target.
@@ -1166,6 +1174,7 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
             }
         }
     }
+    addNonFiniteProbes();
     const double recordMs = millisecondsSince(start);
     executor_->execute(g, submitter, cmd);
     frameRecorded_ = true;

@@ -34,6 +34,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.ssrRays = 0;
     stats_.passMs.clear();
     if (!frameRecorded_) return stats_;
+    collectNonFinite();
     const bool onDevice = clusters_->assignedOnDevice();
     clusters_->collectStats(stats_);
     if (onDevice) stats_.lightAssignMs = 0.0;

@@ -428,8 +428,9 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                        s.context->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU);
         stats.quality = content::qualityLevelName(quality.level);
         stats.qualitySource = content::qualitySourceName(quality.source);
-        const render::RendererOptions rendererOptions =
-            rendererOptionsFor(options, world.get(), quality);
+        render::RendererOptions rendererOptions = rendererOptionsFor(options, world.get(), quality);
+        // A headless run or one that writes stats is checked for non-finite radiance.
+        rendererOptions.checkNonFinite = headless || options.stats.has_value();
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,
                                                         rendererOptions);
         s.submitter = std::make_unique<render::FrameSubmitter>(*s.context);
@@ -452,7 +453,11 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         // --stats-work last: a run of known length counts its last frame only.
         const bool countLightPairs = rendererOptions.countLightPairs;
         const bool countLastOnly = options.countWorkOnLastFrame && frames != 0;
-        for (std::uint32_t i = 0; frames == 0 || i < frames; ++i) {
+        // A frame with non-finite radiance is followed by one that finds the pass it came
+        // from; a run whose last frame had it renders that one more.
+        std::uint32_t diagnosisFrames = 0;
+        bool nonFiniteReported = false;
+        for (std::uint32_t i = 0; frames == 0 || i < frames + diagnosisFrames; ++i) {
             Clock::time_point start = Clock::now();
             s.renderer->setCountLightPairs(countLightPairs && (!countLastOnly || i + 1 == frames));
             input.beginFrame();
@@ -583,7 +588,23 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             }
             s.submitter->waitIdle();
             stats.frameMs.push_back(millisecondsSince(start));
-            stats.addRendererStats(s.renderer->collectStats());
+            const render::RendererStats& frameStats = s.renderer->collectStats();
+            stats.addRendererStats(frameStats);
+            if (frameStats.nonFinitePixels > 0 && !nonFiniteReported) {
+                std::fprintf(stderr,
+                             "candela: error: frame %u: %llu pixels of the scene's radiance are "
+                             "not finite (NaN or Inf)\n",
+                             i, static_cast<unsigned long long>(frameStats.nonFinitePixels));
+                s.exitCode = kExitFailure;
+                nonFiniteReported = true;
+                s.renderer->diagnoseNonFiniteNextFrame();
+                if (frames != 0 && i + 1 == frames) diagnosisFrames = 1;
+            }
+            if (!frameStats.nonFiniteSource.empty()) {
+                std::fprintf(stderr,
+                             "candela: error: frame %u: the first to write NaN or Inf: %s\n", i,
+                             frameStats.nonFiniteSource.c_str());
+            }
             if (!wanted.empty()) {
                 render::CapturedFrame captured = s.readback->read();
                 if (size_t bad = captured.nonFiniteHdrValues()) {

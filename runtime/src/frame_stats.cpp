@@ -49,6 +49,16 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["frame_ms_median"] = stats.frameMsMedian();
     json["validation_messages"] = stats.validationMessages;
     json["features"] = stats.features;
+    // Non-finite radiance: the most pixels of one frame with a NaN or Inf channel (0 in a sound
+    // run), and the first pass a diagnosis frame found writing one (empty when none ran).
+    uint64_t nonFinite = 0;
+    std::string nonFiniteSource;
+    for (const render::RendererStats& f : stats.frames) {
+        nonFinite = std::max(nonFinite, f.nonFinitePixels);
+        if (nonFiniteSource.empty()) nonFiniteSource = f.nonFiniteSource;
+    }
+    json["nonfinite_pixels"] = nonFinite;
+    json["nonfinite_source"] = nonFiniteSource;
     // Light culling: counts describe the last frame; times are medians over all frames.
     render::RendererStats last =
         stats.frames.empty() ? render::RendererStats{} : stats.frames.back();

@@ -6,6 +6,7 @@
 
 #include <span>
 #include <string>
+#include <vector>
 
 #include "candela/content/component_validation.h"
 #include "candela/content/scene_file.h"
@@ -95,6 +96,31 @@ TEST(AtmosphereComponent, AbsurdSunIsClampedWithAWarning) {
     ASSERT_EQ(problems.size(), 1u);
     EXPECT_TRUE(problems[0].clamped);
     EXPECT_EQ(a.solarIlluminance, kMaxLux);
+}
+
+// Issue 44: a Rayleigh coefficient of 1e38 overflowed the tables' optical depths and the whole
+// frame was NaN. Each coefficient is capped with a warning naming it.
+TEST(AtmosphereComponent, AbsurdCoefficientsAreClampedWithAWarning) {
+    Atmosphere a;
+    a.rayleighScattering = {1e38f, 5.8e-6f, 3e38f};
+    a.mieScattering = 1e38f;
+    a.mieAbsorption = 1e30f;
+    a.ozoneAbsorption = {1e38f, 0.0f, 0.0f};
+    const ValueProblems problems = validateAtmosphere(a);
+    EXPECT_FALSE(anyRejected(problems));
+    std::vector<std::string> fields;
+    for (const ValueProblem& p : problems) {
+        EXPECT_TRUE(p.clamped) << p.field;
+        fields.push_back(p.field);
+    }
+    EXPECT_EQ(fields, (std::vector<std::string>{"rayleighScattering", "ozoneAbsorption",
+                                                "mieScattering", "mieAbsorption"}));
+    EXPECT_EQ(a.rayleighScattering[0], kMaxAirCoefficient);
+    EXPECT_EQ(a.rayleighScattering[1], 5.8e-6f);
+    EXPECT_EQ(a.rayleighScattering[2], kMaxAirCoefficient);
+    EXPECT_EQ(a.mieScattering, kMaxAirCoefficient);
+    EXPECT_EQ(a.mieAbsorption, kMaxAirCoefficient);
+    EXPECT_EQ(a.ozoneAbsorption[0], kMaxAirCoefficient);
 }
 
 }  // namespace

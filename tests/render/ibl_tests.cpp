@@ -11,15 +11,19 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "candela/content/exr_image.h"
 #include "candela/render/environment.h"
 #include "ibl/environment_brdf_lut.h"
+#include "ibl/environment_cache.h"
 #include "ibl_test_support.h"
 #include "test_scene.h"
 #include "vk/image_transfer.h"
@@ -214,6 +218,50 @@ TEST(EnvironmentBrdfLutCache, LoadsFromDiskAndProcessEqualToTheBuiltLut) {
         EXPECT_EQ(lutImageBytes(context, *lut), expected) << lut->sourceName();
     }
     EXPECT_EQ(context.validationMessages(), 0u);
+}
+
+// Issue 44: an environment entry whose payload held NaN or Inf under a valid checksum lit every
+// later run with NaN until the cache was deleted. Its content is checked now: such an entry is
+// refused (and the caller recomputes and rewrites it), a finite one is read back.
+TEST(EnvironmentCache, AnEntryWhosePayloadIsNotFiniteIsRefused) {
+    const std::filesystem::path dir = freshDirectory("environment_cache_nonfinite");
+    CachedEnvironment entry;
+    entry.sizes = environmentSizesFor(16);
+    entry.cube.assign(64, 0);
+    entry.prefiltered.assign(64, 0);
+    entry.irradianceSh.assign(9 * 16, 0);
+    const uint16_t halfOne = 0x3C00, halfInf = 0x7C00, halfNaN = 0x7E00;
+    std::memcpy(entry.cube.data(), &halfOne, 2);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    struct Case {
+        const char* name;
+        std::function<void(CachedEnvironment&)> damage;
+        bool refused;
+    };
+    const Case cases[] = {
+        {"finite", [](CachedEnvironment&) {}, false},
+        {"cube_inf", [&](CachedEnvironment& e) { std::memcpy(e.cube.data() + 10, &halfInf, 2); },
+         true},
+        {"prefiltered_nan",
+         [&](CachedEnvironment& e) { std::memcpy(e.prefiltered.data() + 62, &halfNaN, 2); }, true},
+        {"sh_nan", [&](CachedEnvironment& e) { std::memcpy(e.irradianceSh.data() + 4, &nan, 4); },
+         true},
+    };
+    for (const Case& c : cases) {
+        CachedEnvironment damaged = entry;
+        c.damage(damaged);
+        const std::filesystem::path path = dir / (std::string(c.name) + ".bin");
+        ASSERT_EQ(writeCachedEnvironment(path, damaged), "") << c.name;
+        std::string problem;
+        const std::optional<CachedEnvironment> read = readCachedEnvironment(path, problem);
+        EXPECT_EQ(!read.has_value(), c.refused) << c.name;
+        if (c.refused) {
+            EXPECT_EQ(problem, "its payload holds NaN or Inf") << c.name;
+        } else {
+            ASSERT_TRUE(read) << problem;
+            EXPECT_EQ(read->cube, damaged.cube);
+        }
+    }
 }
 
 // A flipped payload byte (checksum) or a truncated file is noticed, warned about, rebuilt

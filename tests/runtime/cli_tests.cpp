@@ -13,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -984,6 +985,67 @@ TEST(Cli, AbsurdLightsAndExposuresGiveAFiniteLitFrame) {
         // The centre of the frame is the spot's pool on the floor: saturated, not black.
         const std::size_t centre = (std::size_t(ldr->height / 2) * ldr->width + ldr->width / 2) * 3;
         EXPECT_EQ(ldr->rgb[centre], 255) << c.name;
+    }
+}
+
+// Issue 44: values the engine accepts gave whole frames of NaN with exit code 0: a height fog
+// falling off at 30/m seen from 3 m above its base (the optical depth of a ray diving below
+// the base overflowed), an atmosphere whose coefficients are 1e38 (clamped now, with a warning
+// naming the field), an EV100 of -130 under TAA (the exposure overflowed and the history's
+// clipping box turned to Inf - Inf). Each frame is now finite and the run's stats say so.
+TEST(Cli, HostileMediaAndExposuresGiveFiniteFrames) {
+    auto dir = tempDir() / "hostile_media";
+    std::filesystem::create_directories(dir);
+    nlohmann::json base = nlohmann::json::parse(readBytes(
+        std::filesystem::path(CANDELA_SOURCE_DIR) / "tests/scenes/spot_light.scene.json"));
+    base["entities"][0]["mesh"]["gltf"] =
+        std::string(CANDELA_SHARED_ASSETS) + "/models/Box/Box.glb";
+    const float cameraHeight = base["entities"][2]["transform"]["translation"][1];
+    const nlohmann::json fog = {{"name", "fog"},
+                                {"fog",
+                                 {{"scattering", 0.5},
+                                  {"absorption", 0.1},
+                                  {"anisotropy", 0.3},
+                                  {"heightFalloff", 30.0},
+                                  {"baseHeight", cameraHeight - 3.0f}}}};
+    nlohmann::json air = {{"name", "air"},
+                          {"atmosphere",
+                           {{"rayleighScattering", {1e38, 1e38, 1e38}},
+                            {"mieScattering", 1e38},
+                            {"ozoneAbsorption", {1e38, 0.0, 0.0}}}}};
+    struct Case {
+        const char* name;
+        nlohmann::json extra;  // an entity added, or null
+        float ev100;           // the camera's manual EV100, or NaN to keep the scene's
+        const char* flags;
+        const char* warning;  // expected on stderr, or nullptr
+    };
+    const float keep = std::numeric_limits<float>::quiet_NaN();
+    const Case cases[] = {
+        {"fog_volumes", fog, keep, "--volumetrics volumes", nullptr},
+        {"fog_froxels", fog, keep, "--volumetrics froxels", nullptr},
+        {"atmosphere", air, keep, "", "/entities/3/atmosphere/rayleighScattering: warning"},
+        {"ev_minus_130_taa", nullptr, -130.0f, "--aa taa", nullptr},
+    };
+    for (const Case& c : cases) {
+        nlohmann::json scene = base;
+        if (!c.extra.is_null()) scene["entities"].push_back(c.extra);
+        if (!std::isnan(c.ev100)) scene["entities"][2]["camera"]["manualEv100"] = c.ev100;
+        const auto path = dir / (std::string(c.name) + ".scene.json");
+        std::ofstream(path) << scene.dump();
+        const auto stats = dir / (std::string(c.name) + ".json");
+        RunResult r = runCandela("run " + path.string() + " --headless --size 48x32 --frames 3 " +
+                                 c.flags + " --stats " + stats.string());
+        EXPECT_EQ(r.exitCode, 0) << c.name << "\n" << r.output;
+        EXPECT_EQ(r.output.find("not finite"), std::string::npos) << c.name << "\n" << r.output;
+        if (c.warning) {
+            EXPECT_NE(r.output.find(path.string() + ": " + c.warning), std::string::npos)
+                << r.output;
+        }
+        const nlohmann::json json = nlohmann::json::parse(readBytes(stats));
+        EXPECT_EQ(json["nonfinite_pixels"], 0) << c.name;
+        EXPECT_EQ(json["nonfinite_source"], "") << c.name;
+        EXPECT_EQ(json["validation_messages"], 0) << c.name;
     }
 }
 

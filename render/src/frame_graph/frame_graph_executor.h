@@ -49,6 +49,8 @@ public:
     // Call after that frame's submission completed.
     std::vector<std::pair<std::string, double>> passTimes();
     const FrameGraphSummary& stats() const { return stats_; }
+    // The last executed frame's compiled graph (execution order, barriers).
+    const CompiledFrameGraph& compiled() const { return compiled_; }
     std::string dot(const FrameGraph& graph) const { return frameGraphDot(graph, compiled_); }
 
 private:

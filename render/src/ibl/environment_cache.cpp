@@ -1,5 +1,6 @@
 #include "ibl/environment_cache.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -32,6 +33,25 @@ uint64_t payloadChecksum(const CachedEnvironment& e) {
     uint64_t h = fnv1a64(e.cube.data(), e.cube.size());
     h = fnv1a64(e.prefiltered.data(), e.prefiltered.size(), h);
     return fnv1a64(e.irradianceSh.data(), e.irradianceSh.size(), h);
+}
+
+// RGBA16F texels: a half is NaN or Inf when its five exponent bits are all set.
+bool halvesFinite(const std::vector<uint8_t>& bytes) {
+    for (size_t i = 0; i + 1 < bytes.size(); i += 2) {
+        uint16_t half;
+        std::memcpy(&half, bytes.data() + i, sizeof(half));
+        if ((half & 0x7C00u) == 0x7C00u) return false;
+    }
+    return true;
+}
+
+bool floatsFinite(const std::vector<uint8_t>& bytes) {
+    for (size_t i = 0; i + sizeof(float) <= bytes.size(); i += sizeof(float)) {
+        float value;
+        std::memcpy(&value, bytes.data() + i, sizeof(value));
+        if (!std::isfinite(value)) return false;
+    }
+    return true;
 }
 
 }  // namespace
@@ -101,6 +121,12 @@ std::optional<CachedEnvironment> readCachedEnvironment(const std::filesystem::pa
     }
     if (payloadChecksum(e) != h.payloadChecksum) {
         problem = "checksum mismatch";
+        return std::nullopt;
+    }
+    // A checksum proves only that the bytes are the ones written: a payload that is not finite
+    // (from a build with a bug, or forged) would light every later run with NaN.
+    if (!halvesFinite(e.cube) || !halvesFinite(e.prefiltered) || !floatsFinite(e.irradianceSh)) {
+        problem = "its payload holds NaN or Inf";
         return std::nullopt;
     }
     return e;

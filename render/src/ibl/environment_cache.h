@@ -2,8 +2,9 @@
 // The on-disk cache of precomputed environments, keyed by the source file's content hash
 // (FNV-1a 64 of its bytes, combined with the precompute version). One file per environment:
 //   header (magic, version, sizes, payload checksum) | cube mips | prefiltered mips | SH
-// A file that does not match its header or checksum is ignored and rewritten; writes go to a
-// temporary file that is renamed into place, so a crash never leaves a partial entry.
+// A file that does not match its header or checksum, or whose payload is not finite, is ignored
+// and rewritten; writes go to a temporary file that is renamed into place, so a crash never
+// leaves a partial entry.
 #include <cstdint>
 #include <filesystem>
 #include <optional>

@@ -35,6 +35,8 @@ inline constexpr float kMaxSkyIntensity = 1e6f;        // multiplies the sky's c
 inline constexpr float kMaxEmissiveLuminance = 1e10f;  // cd/m^2; the sun's disc is ~1.6e9
 // Fog coefficients (1/m): 1e3 already hides everything past a millimetre.
 inline constexpr float kMaxFogCoefficient = 1e3f;
+// The atmosphere's scattering and absorption coefficients (1/m; Earth's Rayleigh is ~6e-6).
+inline constexpr float kMaxAirCoefficient = 1e3f;
 inline constexpr float kMaxVolumetricScale = 1e3f;  // multiplies a light's in-scattering
 
 struct ValueProblem {

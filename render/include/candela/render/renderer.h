@@ -59,6 +59,8 @@ class SkyOcclusionPass;
 class SkinningPass;
 class DebugTextPass;
 class TrianglePass;
+class NonFinitePass;
+struct NonFiniteProbe;
 
 // A pass recorded after tonemapping by someone outside the renderer (runtime FrameLayers: the
 // editor's UI, the stats overlay). The graph orders it after the passes that wrote what it
@@ -114,6 +116,11 @@ public:
     // Reads the GPU-side measurements of the last frame; call once its submission completed.
     const RendererStats& collectStats();
 
+    // The next frame probes every float image each pass writes for NaN and Inf, and its
+    // stats name the first pass that wrote one (RendererStats::nonFiniteSource). Call after a
+    // frame whose nonFinitePixels was not 0; it costs a pass per probed image.
+    void diagnoseNonFiniteNextFrame() { diagnoseNonFinite_ = true; }
+
     // RGBA32F scene radiance at the output size (upscaled when the render scale is below 1).
     const GpuImage& hdrTarget() const { return upscalePass_ ? outputHdr_ : hdr_; }
     const GpuImage& ldrTarget() const { return ldr_; }  // RGBA8, sRGB-encoded values
@@ -168,6 +175,11 @@ private:
                            ResourceHandle* aerialFroxels, uint32_t fogBoundaries);
     // captureMotionVectors: copies the frame's final motion vectors into motionReadback_.
     void declareMotionCapture();
+    // Non-finite radiance (renderer_nonfinite.cpp): the frame's count over the HDR target
+    // before tonemapping, a diagnosis frame's probes, and reading both after the frame.
+    void declareNonFiniteCheck(ResourceHandle hdr);
+    void addNonFiniteProbes();
+    void collectNonFinite();
 
     GpuContext& context_;
     RendererOptions options_;
@@ -217,6 +229,10 @@ private:
     bool histogramWritten_ = false;
     std::optional<float> adaptedEv100_;  // unset until the first metered frame
     bool frameRecorded_ = false;
+    std::unique_ptr<NonFinitePass> nonFinitePass_;  // made on the first checked frame
+    bool nonFiniteChecked_ = false;                 // this frame declared the check
+    bool diagnoseNonFinite_ = false;                // the next frame probes its passes
+    std::vector<NonFiniteProbe> nonFiniteProbes_;   // this frame's probes (diagnosis)
     std::unique_ptr<TrianglePass> trianglePass_;
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<LightingPass> lightingPass_;

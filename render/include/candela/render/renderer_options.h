@@ -251,6 +251,9 @@ struct AtmosphereSettings {
 };
 
 struct RendererOptions {
+    // Count the scene radiance's non-finite pixels each frame (RendererStats::nonFinitePixels;
+    // one pass over the image before tonemapping). Headless runs and --stats turn it on.
+    bool checkNonFinite = false;
     LightCulling lightCulling = LightCulling::Clustered;
     LightAssignmentDevice lightAssignment = LightAssignmentDevice::Auto;
     // Device assignment: light index entries of the first frame's list buffer (0: a guess from
@@ -388,6 +391,11 @@ struct WorkCounters {
 
 // Measurements of the last completed frame (--stats fields).
 struct RendererStats {
+    // With RendererOptions::checkNonFinite: pixels of the frame's scene radiance (before
+    // tonemapping) with a NaN or Inf channel. After Renderer::diagnoseNonFiniteNextFrame, the
+    // first pass that wrote a non-finite value, its image and the texel count, else empty.
+    uint64_t nonFinitePixels = 0;
+    std::string nonFiniteSource;
     uint32_t lights = 0;
     uint32_t lightsRewritten = 0;  // light slots uploaded this frame (change detection)
     uint32_t clusters = 0;

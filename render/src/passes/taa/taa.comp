@@ -12,7 +12,8 @@
 //      would make edges against a bright sky or a bulb alias again).
 // The blend factor starts at 1 / (samples + 1) per pixel (history alpha counts them) so a
 // static image converges to the plain mean of the jitter sequence, and never falls below
-// push.minimumBlend so a moving one keeps responding.
+// push.minimumBlend so a moving one keeps responding. A history texel that is not finite is
+// dropped as a missing history would be, so one bad frame cannot live on in every later one.
 #include "common/color.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -35,6 +36,18 @@ float luminance(vec3 c) {
 vec3 toYCoCg(vec3 c) {
     return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b,
                 -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);
+}
+
+// The scale the box and the weights work in: the exposure, capped at 1e12 (an EV100 near -40)
+// where every texel a tonemapper can tell from black is long saturated, so that an absurd
+// exposure (EV100 near -127: a scale near the largest float) cannot overflow the box's sums
+// to Inf - Inf. Ordinary exposures (EV100 -10 to 20) pass through bit for bit.
+float workingScale() {
+    return min(push.exposure, 1.0e12);
+}
+
+vec3 exposed(vec3 radiance) {
+    return radiance * workingScale();
 }
 
 vec3 fromYCoCg(vec3 c) {
@@ -64,7 +77,7 @@ void main() {
         for (int dx = -1; dx <= 1; ++dx) {
             ivec2 q = clamp(pixel + ivec2(dx, dy), ivec2(0), size - 1);
             vec3 c = imageLoad(current, q).rgb;
-            vec3 y = toYCoCg(c * push.exposure);
+            vec3 y = toYCoCg(exposed(c));
             boxMin = min(boxMin, y);
             boxMax = max(boxMax, y);
             if ((dx == 0) != (dy == 0)) crossSum += c;
@@ -81,17 +94,18 @@ void main() {
     vec2 previousUv = uv - texelFetch(motion, pixel, 0).xy;
     bool onScreen = all(greaterThanEqual(previousUv, vec2(0.0))) &&
                     all(lessThanEqual(previousUv, vec2(1.0)));
-    if (push.historyValid == 0u || !onScreen) {
+    vec4 previous = textureLod(history, previousUv, 0.0);
+    bool finiteHistory = !any(isnan(previous)) && !any(isinf(previous));
+    if (push.historyValid == 0u || !onScreen || !finiteHistory) {
         imageStore(resolved, pixel, vec4(centre, 1.0));
         return;
     }
-    vec4 previous = textureLod(history, previousUv, 0.0);
-    vec3 clipped = clipToBox(toYCoCg(max(previous.rgb, vec3(0.0)) * push.exposure), boxMin, boxMax);
-    vec3 historyRadiance = fromYCoCg(clipped) / push.exposure;
+    vec3 clipped = clipToBox(toYCoCg(exposed(max(previous.rgb, vec3(0.0)))), boxMin, boxMax);
+    vec3 historyRadiance = fromYCoCg(clipped) / workingScale();
     float samples = max(previous.a, 1.0);
     float blend = max(1.0 / (samples + 1.0), push.minimumBlend);
-    float currentWeight = blend / (1.0 + luminance(centre) * push.exposure);
-    float historyWeight = (1.0 - blend) / (1.0 + luminance(historyRadiance) * push.exposure);
+    float currentWeight = blend / (1.0 + luminance(centre) * workingScale());
+    float historyWeight = (1.0 - blend) / (1.0 + luminance(historyRadiance) * workingScale());
     vec3 result = (currentWeight * centre + historyWeight * historyRadiance) /
                   (currentWeight + historyWeight);
     imageStore(resolved, pixel, vec4(result, min(samples + 1.0, 1.0 / push.minimumBlend)));

@@ -37,14 +37,19 @@ vec2 mediumSpan(vec3 origin, vec3 direction, float far) {
 // Optical depth (extinction integrated, no unit) along the unit direction from `entry` over
 // `length` metres of the medium as if it had no box, in closed form: sigma_t length in a uniform
 // medium, and with the height falloff k
-// sigma_t density(entry) (1 - exp(-k dir.y length)) / (k dir.y).
+// sigma_t (density(entry) - density(exit)) / (k dir.y).
+// Both densities are taken from their exponents, each capped as mediumDensity caps it: a ray
+// that dives below the base under a steep falloff would otherwise overflow exp() to infinity
+// and turn the transmittance's 0 into NaN further on.
 float opticalDepthInside(vec3 entry, vec3 direction, float metres) {
     float sigmaT = push.medium.x + push.medium.y;
     float k = push.medium.w;
     if (k <= 0.0) return sigmaT * metres;
     float rate = k * direction.y;
-    float along = abs(rate * metres) < 1e-4 ? metres : (1.0 - exp(-rate * metres)) / rate;
-    return sigmaT * exp(min(-k * (entry.y - push.range.x), 30.0)) * along;
+    float entryExponent = -k * (entry.y - push.range.x);
+    if (abs(rate * metres) < 1e-4) return sigmaT * exp(min(entryExponent, 30.0)) * metres;
+    float exitExponent = entryExponent - rate * metres;
+    return sigmaT * (exp(min(entryExponent, 30.0)) - exp(min(exitExponent, 30.0))) / rate;
 }
 
 // Optical depth from origin along the unit direction to distance t: of the ray's part inside
