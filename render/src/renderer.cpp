@@ -811,7 +811,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             features_.push_back("hair");
             hairDrawn_ = true;
             const uint32_t capacity = uint32_t(std::min<uint64_t>(
-                uint64_t(std::max(options_.hairNodesPerPixel, 1u)) * width_ * height_, 1u << 26));
+                {uint64_t(std::max(options_.hairNodesPerPixel, 1u)) * width_ * height_, 1u << 26,
+                 HairPass::maxNodes(context_)}));
             hairNodeCapacity_ = capacity;
             const glm::mat4& projection = inputs.scene.camera.projection;
             HairPass::Inputs base{};

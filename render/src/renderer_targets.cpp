@@ -2,9 +2,13 @@
 // LDR images, the cleared TAA, GTAO and SSR histories and the light pair counts, and the
 // temporal state that restarts with them.
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 #include <vector>
 
+#include "candela/render/gpu_context.h"
 #include "candela/render/renderer.h"
 #include "clustered/cluster_light_lists.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
@@ -14,6 +18,47 @@
 #include "vk/image_transfer.h"
 
 namespace candela::render {
+
+std::string Renderer::outputSizeProblem(const GpuContext& context, uint32_t width,
+                                        uint32_t height) {
+    const auto gib = [](uint64_t bytes) {
+        char text[32];
+        std::snprintf(text, sizeof(text), "%.1f GiB", double(bytes) / double(1ull << 30));
+        return std::string(text);
+    };
+    const uint32_t largestSide = context.properties().limits.maxImageDimension2D;
+    if (width > largestSide || height > largestSide) {
+        return "this device's images are at most " + std::to_string(largestSide) +
+               " pixels on a side";
+    }
+    const uint64_t pixels = uint64_t(width) * height;
+    VkImageFormatProperties format{};
+    if (vkGetPhysicalDeviceImageFormatProperties(
+            context.physicalDevice(), VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_TYPE_2D,
+            VK_IMAGE_TILING_OPTIMAL,
+            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+            0, &format) == VK_SUCCESS &&
+        pixels * 16 >= format.maxResourceSize) {
+        return "its RGBA32F radiance target (" + gib(pixels * 16) +
+               ") is past this device's largest image of that format (" +
+               gib(format.maxResourceSize) + ")";
+    }
+    VkPhysicalDeviceMemoryProperties memory{};
+    vkGetPhysicalDeviceMemoryProperties(context.physicalDevice(), &memory);
+    VkDeviceSize largestHeap = 0;
+    for (uint32_t h = 0; h < memory.memoryHeapCount; ++h) {
+        if (memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) {
+            largestHeap = std::max(largestHeap, memory.memoryHeaps[h].size);
+        }
+    }
+    if (largestHeap > 0 && pixels * kMinimumBytesPerPixel > largestHeap) {
+        return "a frame's targets need at least " + gib(pixels * kMinimumBytesPerPixel) + " (" +
+               std::to_string(kMinimumBytesPerPixel) +
+               " bytes a pixel) and this device's largest memory heap holds " + gib(largestHeap);
+    }
+    return "";
+}
 
 void Renderer::resize(uint32_t width, uint32_t height) {
     outputWidth_ = width;

@@ -423,6 +423,13 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             if (options.captureCursor) s.window->setCursorCaptured(true);
         }
         s.context = std::make_unique<render::GpuContext>(gpuOptions);
+        if (std::string problem =
+                render::Renderer::outputSizeProblem(*s.context, options.width, options.height);
+            !problem.empty()) {
+            std::fprintf(stderr, "candela: --size %ux%u: %s; choose a smaller size\n",
+                         options.width, options.height, problem.c_str());
+            return kExitBadArguments;
+        }
         const QualityChoice quality =
             qualityFor(options, world.get(),
                        s.context->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU);

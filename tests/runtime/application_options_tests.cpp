@@ -244,6 +244,19 @@ TEST(ApplicationOptions, ScatteringFlags) {
               std::string::npos);
     EXPECT_NE(ApplicationOptions::standardFlagsUsage().find("--scattering off|epipolar"),
               std::string::npos);
+    // Issue 44: each flag within its range, 4096 x 4096 took 38 s for a 64x64 frame; their
+    // product is bounded (the side not given counts as the presets' largest, 512 or 256).
+    EXPECT_NE(parseError({"--scattering-slices", "4096", "--scattering-samples", "4096"})
+                  .find("--scattering-slices 4096 x --scattering-samples 4096 = 16777216 "
+                        "samples a frame, past the limit of 1048576"),
+              std::string::npos);
+    EXPECT_NE(parseError({"--scattering-slices", "4097"}).find("to 4096"), std::string::npos);
+    EXPECT_NE(parseError({"--scattering-samples", "4096"})
+                  .find("--scattering-slices 512 x --scattering-samples 4096"),
+              std::string::npos);
+    EXPECT_TRUE(parseCommandLine({"--scattering-slices", "4096"}));  // 4096 x 256 = 2^20
+    EXPECT_TRUE(parseCommandLine({"--scattering-slices", "4096", "--scattering-samples", "256"}));
+    EXPECT_TRUE(parseCommandLine({"--scattering-samples", "2048"}));  // 512 x 2048 = 2^20
 }
 
 // Issue 17: --volumetrics picks the method, --fog SIGMA_S[,SIGMA_A[,G]] a uniform medium by

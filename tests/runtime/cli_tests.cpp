@@ -988,6 +988,48 @@ TEST(Cli, AbsurdLightsAndExposuresGiveAFiniteLitFrame) {
     }
 }
 
+// Issue 44: --size 16384x16384 passed the parser and failed 20 s later with
+// VK_ERROR_OUT_OF_DEVICE_MEMORY and a validation error that never named --size. A size this
+// device cannot hold is refused before anything is allocated, naming the flag and the limit.
+TEST(Cli, ASizeTheDeviceCannotHoldIsRefusedUpFront) {
+    for (const char* size : {"16384x16384", "8192x8192"}) {
+        RunResult r = runCandela(std::string("run builtin:triangle --headless --size ") + size);
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_NE(r.output.find(std::string("--size ") + size + ": "), std::string::npos)
+            << r.output;
+        EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find("VK_ERROR"), std::string::npos) << r.output;
+    }
+    RunResult fits = runCandela("run builtin:triangle --headless --size 2048x64");
+    EXPECT_EQ(fits.exitCode, 0) << fits.output;
+}
+
+// Issue 44: hair of 600,000 strands (under the documented 1,000,000) bound a 154 MB segment
+// buffer whole, past maxStorageBufferRange (a validation error on lavapipe, undefined
+// behaviour on a GPU). A frame draws what one binding reaches and says what it left out.
+TEST(Cli, HairPastOneBindingIsDrawnInPartWithAWarning) {
+    auto dir = tempDir() / "hair_binding";
+    std::filesystem::create_directories(dir);
+    nlohmann::json scene = nlohmann::json::parse(readBytes(
+        std::filesystem::path(CANDELA_SOURCE_DIR) / "tests/scenes/spot_light.scene.json"));
+    scene["entities"][0]["mesh"]["gltf"] =
+        std::string(CANDELA_SHARED_ASSETS) + "/models/Box/Box.glb";
+    scene["entities"][0]["hair"] = {{"count", 600000}, {"length", 0.05}};
+    const auto path = dir / "hair.scene.json";
+    std::ofstream(path) << scene.dump();
+    const auto stats = dir / "hair.json";
+    RunResult r =
+        runCandela("run " + path.string() + " --headless --size 64x48 --stats " + stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: hair: 2400000 strand segments are more than this device "
+                            "binds at once"),
+              std::string::npos)
+        << r.output;
+    const nlohmann::json json = nlohmann::json::parse(readBytes(stats));
+    EXPECT_EQ(json["validation_messages"], 0);
+    EXPECT_GT(json["hair_nodes"], 0);
+}
+
 // Issue 44: values the engine accepts gave whole frames of NaN with exit code 0: a height fog
 // falling off at 30/m seen from 3 m above its base (the optical depth of a ray diving below
 // the base overflowed), an atmosphere whose coefficients are 1e38 (clamped now, with a warning

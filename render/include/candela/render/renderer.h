@@ -89,6 +89,13 @@ public:
     uint32_t renderHeight() const { return height_; }
     // The size a scene renders at for an output size and scale: each side rounded, at least 1.
     static uint32_t scaledSize(uint32_t outputSize, float scale);
+    // Why this device cannot hold a frame of this output size (empty when it can): a side past
+    // maxImageDimension2D, an RGBA32F target past the format's maxResourceSize, or the
+    // targets every frame needs (kMinimumBytesPerPixel) past the largest device-local heap.
+    // Checked before a renderer is made, so a bad --size is refused up front.
+    static constexpr uint64_t kMinimumBytesPerPixel = 40;
+    static std::string outputSizeProblem(const GpuContext& context, uint32_t width,
+                                         uint32_t height);
     const RendererOptions& options() const { return options_; }
     // Whether the next frames count their light evaluations and shadow taps (stats' `work`):
     // the counting variant of the lighting pass costs it a fifth more on lavapipe (runtime's

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 
@@ -78,6 +79,14 @@ VkDeviceSize HairPass::headBytes(uint32_t width, uint32_t height) {
     return VkDeviceSize(width) * height * sizeof(uint32_t);
 }
 
+size_t HairPass::maxSegments(const GpuContext& context) {
+    return context.properties().limits.maxStorageBufferRange / sizeof(HairSegment);
+}
+
+uint32_t HairPass::maxNodes(const GpuContext& context) {
+    return uint32_t(context.properties().limits.maxStorageBufferRange / kNodeBytes);
+}
+
 VkDeviceSize HairPass::nodeBytes(uint32_t nodeCapacity) {
     return std::max<VkDeviceSize>(nodeCapacity, 1) * kNodeBytes;
 }
@@ -92,6 +101,22 @@ bool HairPass::prepare(const FrameScene& scene, const LightingFeatures& features
     size_t count = 0;
     for (const HairDraw& draw : scene.hair) {
         if (draw.hair && draw.style) count += draw.hair->segments.size() / 2;
+    }
+    // The shaders bind the segments whole (the resolve reads any segment a node names), so
+    // a frame draws at most what one binding reaches on this device (2,097,152 segments at
+    // lavapipe's 128 MiB); the rest is left out with a warning, never bound past the range.
+    const size_t bindable = maxSegments(context_);
+    if (count > bindable) {
+        if (count != segmentsWarnedAbout_) {
+            std::fprintf(stderr,
+                         "warning: hair: %zu strand segments are more than this device binds at "
+                         "once (maxStorageBufferRange %u bytes holds %zu); drawing the first "
+                         "%zu\n",
+                         count, context_.properties().limits.maxStorageBufferRange, bindable,
+                         bindable);
+            segmentsWarnedAbout_ = count;
+        }
+        count = bindable;
     }
     segmentCount_ = uint32_t(count);
     if (count == 0) return false;
@@ -114,7 +139,7 @@ bool HairPass::prepare(const FrameScene& scene, const LightingFeatures& features
             const float t = index < hair.rootToTip.size() ? hair.rootToTip[index] : 0.0f;
             return scale * (style.rootRadius + t * (style.tipRadius - style.rootRadius));
         };
-        for (size_t i = 0; i + 1 < hair.segments.size(); i += 2) {
+        for (size_t i = 0; i + 1 < hair.segments.size() && count > 0; i += 2, --count) {
             const uint32_t ia = hair.segments[i], ib = hair.segments[i + 1];
             const auto& a = hair.positions[ia];
             const auto& b = hair.positions[ib];

@@ -42,6 +42,9 @@ public:
     // The A-buffer's sizes for a target of width x height.
     static VkDeviceSize headBytes(uint32_t width, uint32_t height);
     static VkDeviceSize nodeBytes(uint32_t nodeCapacity);
+    // The most segments and A-buffer nodes one storage binding reaches on this device.
+    static size_t maxSegments(const GpuContext& context);
+    static uint32_t maxNodes(const GpuContext& context);
     // The counter buffer the fill pass allocates nodes with; read back after the frame.
     GpuBuffer& counters() { return counters_; }
     // Nodes the last recorded frame asked for (beyond `capacity`: dropped).
@@ -99,7 +102,8 @@ private:
     // has no froxels.
     GpuBuffer noMedium_;
     uint32_t segmentCount_ = 0;
-    WorldBounds bounds_;  // the strands' world box this frame (prepare)
+    size_t segmentsWarnedAbout_ = 0;  // the count last warned about as too many to bind
+    WorldBounds bounds_;              // the strands' world box this frame (prepare)
     HairShading shading_ = HairShading::Lit;
     HairSelfShadow selfShadow_ = HairSelfShadow::DepthMap;
     LightingFeatures features_;

@@ -115,7 +115,9 @@ struct ApplicationOptions {
     // density scale (render/README.md "Light shafts").
     std::optional<render::ScatteringMode> scattering;
     render::ScatteringSettings scatteringSettings;
-    // --scattering-slices, --scattering-samples; unset: the quality preset's.
+    // --scattering-slices, --scattering-samples; unset: the quality preset's. Their product
+    // (the samples a frame may march) is at most kMaxScatteringSamples.
+    static constexpr uint64_t kMaxScatteringSamples = uint64_t(1) << 20;
     std::optional<uint32_t> scatteringSlices;
     std::optional<uint32_t> scatteringSamples;
     // --atmosphere off: none, even where the scene has an Atmosphere component.
