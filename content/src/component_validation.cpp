@@ -36,6 +36,18 @@ void clampAbove(ValueProblems& problems, const char* field, float& value, float 
     value = limit;
 }
 
+// Positive values below `limit` become `limit`, with a clamped problem (0 and below are the
+// caller's to reject).
+void clampBelow(ValueProblems& problems, const char* field, float& value, float limit,
+                const char* unit) {
+    if (!(value > 0 && value < limit)) return;
+    problems.push_back({field,
+                        text(value) + unit + " is below the limit of " + text(limit) + unit +
+                            "; using " + text(limit) + unit,
+                        true});
+    value = limit;
+}
+
 bool finite(float value) {
     return std::isfinite(value);
 }
@@ -84,9 +96,11 @@ ValueProblems validateLight(Light& light) {
                 break;
             }
             case LightFieldRule::FiniteNonNegative: {
-                const float value = light.*f.scalar;
+                float& value = light.*f.scalar;
                 if (!finite(value) || value < 0) {
                     reject(problems, f.name, "must be finite and not negative, got " + text(value));
+                } else if (f.max > 0) {
+                    clampAbove(problems, f.name, value, f.max, unit.c_str());
                 }
                 break;
             }
@@ -101,6 +115,15 @@ ValueProblems validateLight(Light& light) {
         reject(problems, "sourceRadius",
                "a disk light needs a radius greater than 0 (zero area), got " +
                    text(light.sourceRadius));
+    }
+    // Emitters too small to integrate (kMinAreaLightSize) are made that small: they still shed
+    // their lumens, as the point-like light they are.
+    if (isAreaLight(light.type)) {
+        for (LightField field : {LightField::Width, LightField::Height, LightField::SourceRadius}) {
+            if (!usesField(light.type, field)) continue;
+            const LightFieldInfo& f = kLightFieldTable[std::size_t(field)];
+            clampBelow(problems, f.name, light.*f.scalar, kMinAreaLightSize, " m");
+        }
     }
     if (usesField(light.type, LightField::OuterConeAngle)) {
         const float inner = light.innerConeAngle;

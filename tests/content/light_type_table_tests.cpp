@@ -178,6 +178,48 @@ TEST(LightTypeTable, AreaLightsWithoutAnAreaAreRejectedByName) {
     EXPECT_NEAR(emitterArea(disk), 3.14159265f * 0.04f, 1e-6f);
 }
 
+// Issue 44: area, sphere and tube lights switched off without a word at extreme accepted sizes
+// (a disk of radius 1e-45 or 1e20, a 1e-30 m rect, a sphere radius or tube length of 3e38).
+// Too small an emitter is clamped up to kMinAreaLightSize, too large a one down to
+// kMaxAreaLightSize, each with a warning naming the field; Inf and NaN stay errors.
+TEST(LightTypeTable, ExtremeEmitterSizesAreClampedWithAWarning) {
+    struct Case {
+        LightType type;
+        float Light::*field;
+        const char* name;
+        float value;
+        float expected;
+    };
+    const float tiny = std::numeric_limits<float>::denorm_min();
+    const Case cases[] = {
+        {LightType::Disk, &Light::sourceRadius, "sourceRadius", tiny, kMinAreaLightSize},
+        {LightType::Disk, &Light::sourceRadius, "sourceRadius", 1e20f, kMaxAreaLightSize},
+        {LightType::Rect, &Light::width, "width", 1e-30f, kMinAreaLightSize},
+        {LightType::Rect, &Light::height, "height", 5e-4f, kMinAreaLightSize},
+        {LightType::Point, &Light::sourceRadius, "sourceRadius", 3e38f, kMaxAreaLightSize},
+        {LightType::Point, &Light::sourceLength, "sourceLength", 3e38f, kMaxAreaLightSize},
+        {LightType::Spot, &Light::sourceRadius, "sourceRadius", 1e5f, kMaxAreaLightSize},
+    };
+    for (const Case& c : cases) {
+        Light light;
+        light.type = c.type;
+        if (c.type == LightType::Disk) light.sourceRadius = 0.2f;
+        light.*c.field = c.value;
+        const ValueProblems problems = validateLight(light);
+        ASSERT_EQ(problems.size(), 1u) << c.name << " " << c.value;
+        EXPECT_EQ(problems[0].field, c.name);
+        EXPECT_TRUE(problems[0].clamped) << problems[0].message;
+        EXPECT_EQ(light.*c.field, c.expected) << c.name << " " << c.value;
+    }
+    // A point light's sphere may be as small as it likes: it is a point light then.
+    Light point;
+    point.sourceRadius = tiny;
+    EXPECT_TRUE(validateLight(point).empty());
+    Light infinite;
+    infinite.sourceLength = std::numeric_limits<float>::infinity();
+    EXPECT_TRUE(rejects(validateLight(infinite), "sourceLength"));
+}
+
 // Drobot's (2014, GPU Pro 5, "Physically Based Area Lights") constant-intensity variant: a rect's
 // or disk's "emission" loads, is written back (and left out when Lambertian), and a misspelt value
 // is an error naming its pointer.

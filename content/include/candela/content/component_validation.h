@@ -28,7 +28,11 @@ namespace candela::content {
 // Far beyond any real lamp (a stadium floodlight is ~1e6 lm), yet small enough that intensity
 // x colour x BRDF x exposure stays finite in 32-bit floats.
 inline constexpr float kMaxLumens = 1e12f;
-inline constexpr float kMaxAreaLightSize = 1e4f;       // metres, a rect light's width or height
+inline constexpr float kMaxAreaLightSize = 1e4f;  // metres, a rect light's width or height
+// Metres: the smallest rect side or disk radius. The rect's LTC polygon integral loses its
+// precision below it (a 0.1 mm rect came out 11x too bright at ultra), and the emitting area
+// that divides the lumens underflows further down (a 1e-30 m rect was switched off).
+inline constexpr float kMinAreaLightSize = 1e-3f;
 inline constexpr float kMaxLux = 1e7f;                 // the sun at noon is ~1.2e5 lux
 inline constexpr float kMaxLightColorChannel = 1e3f;   // colour is a multiplier, normally <= 1
 inline constexpr float kMaxSkyIntensity = 1e6f;        // multiplies the sky's cd/m^2

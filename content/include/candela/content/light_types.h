@@ -35,7 +35,7 @@ enum class LightFieldRule : std::uint8_t {
     ColorChannels,      // every channel finite and >= 0, capped at `max`
     NonNegative,        // >= 0, capped at `max`
     Positive,           // > 0, capped at `max` (+Inf becomes the cap)
-    FiniteNonNegative,  // finite and >= 0
+    FiniteNonNegative,  // finite and >= 0, capped at `max` when it is above 0
     ConeAngle,          // radians; inner and outer checked together, for types that use both
 };
 
@@ -70,12 +70,12 @@ inline constexpr std::array<LightFieldInfo, 11> kLightFieldTable{{
     {LightField::AttenuationRadius, "attenuationRadius", "m", LightFieldRule::Positive,
      kMaxAttenuationRadius, "Attenuation radius", "Set Attenuation Radius", LightFieldWidget::Drag,
      0.05f, 0.01f, 1.0e4f, "%.2f m", false, &Light::attenuationRadius, nullptr},
-    {LightField::SourceRadius, "sourceRadius", "m", LightFieldRule::FiniteNonNegative, 0,
-     "Source radius", "Set Source Radius", LightFieldWidget::Drag, 0.005f, 0.0f, 100.0f, "%.3f m",
-     true, &Light::sourceRadius, nullptr},
-    {LightField::SourceLength, "sourceLength", "m", LightFieldRule::FiniteNonNegative, 0,
-     "Source length", "Set Source Length", LightFieldWidget::Drag, 0.01f, 0.0f, 100.0f, "%.3f m",
-     true, &Light::sourceLength, nullptr},
+    {LightField::SourceRadius, "sourceRadius", "m", LightFieldRule::FiniteNonNegative,
+     kMaxAreaLightSize, "Source radius", "Set Source Radius", LightFieldWidget::Drag, 0.005f, 0.0f,
+     100.0f, "%.3f m", true, &Light::sourceRadius, nullptr},
+    {LightField::SourceLength, "sourceLength", "m", LightFieldRule::FiniteNonNegative,
+     kMaxAreaLightSize, "Source length", "Set Source Length", LightFieldWidget::Drag, 0.01f, 0.0f,
+     100.0f, "%.3f m", true, &Light::sourceLength, nullptr},
     {LightField::InnerConeAngle, "innerConeAngle", "rad", LightFieldRule::ConeAngle, 0,
      "Inner cone", "Set Inner Cone", LightFieldWidget::Angle, 0, 0.0f, 90.0f, "", false,
      &Light::innerConeAngle, nullptr},
