@@ -382,4 +382,42 @@ ValueProblems validateEmission(Material& material) {
     return problems;
 }
 
+ValueProblems validateMaterialTextures(const Material& material, std::size_t textureCount) {
+    ValueProblems problems;
+    auto check = [&](const std::string& field, const TextureRef& ref) {
+        if (!ref.present() || std::size_t(ref.texture) < textureCount) return;
+        problems.push_back({field,
+                            "texture " + std::to_string(ref.texture) +
+                                " is not one of the model's " + std::to_string(textureCount) +
+                                " textures; the slot uses its fallback",
+                            true});
+    };
+    static constexpr std::pair<const char*, TextureRef Material::*> kSlots[] = {
+        {"baseColorTexture", &Material::baseColorTexture},
+        {"metallicRoughnessTexture", &Material::metallicRoughnessTexture},
+        {"normalTexture", &Material::normalTexture},
+        {"occlusionTexture", &Material::occlusionTexture},
+        {"emissiveTexture", &Material::emissiveTexture},
+        {"specularTexture", &Material::specularTexture},
+        {"specularColorTexture", &Material::specularColorTexture},
+        {"anisotropyTexture", &Material::anisotropyTexture},
+        {"clearcoatTexture", &Material::clearcoatTexture},
+        {"clearcoatRoughnessTexture", &Material::clearcoatRoughnessTexture},
+        {"clearcoatNormalTexture", &Material::clearcoatNormalTexture},
+    };
+    for (const auto& [name, member] : kSlots)
+        check(name, material.*member);
+    const MaterialLayering& layering = material.layering;
+    if (layering.used() && layering.maskSource == LayerMaskSource::Texture) {
+        check("layerMask/texture", layering.maskTexture);
+    }
+    for (std::size_t i = 0; i < layering.layers.size(); ++i) {
+        const std::string layer = "layers/" + std::to_string(i) + "/";
+        check(layer + "baseColorTexture", layering.layers[i].baseColorTexture);
+        check(layer + "metallicRoughnessTexture", layering.layers[i].metallicRoughnessTexture);
+        check(layer + "normalTexture", layering.layers[i].normalTexture);
+    }
+    return problems;
+}
+
 }  // namespace candela::content

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "candela/content/components/mesh_instance.h"
+#include "candela/content/components/scene_components.h"
 #include "candela/content/gltf_loader.h"
 #include "candela/content/model_instantiation.h"
 #include "candela/content/scene_instantiation.h"
@@ -75,6 +76,38 @@ TEST(SceneInstantiation, SceneToRegistryAndBackIsIdentical) {
     std::string b;
     EXPECT_EQ(sceneToJson(captured, a), sceneToJson(scene, b));
     EXPECT_TRUE(a.empty() && b.empty());
+}
+
+// Issue 44: a scene file's material override naming texture 99 (or 2^31 - 1) of a model with
+// fewer was bound to the slot's fallback without a word. It is a warning naming the override's
+// slot; the entity and its override still load.
+TEST(SceneInstantiation, AnOverrideNamingAMissingTextureIsAWarningNamingTheSlot) {
+    SceneDocument scene;
+    SceneEntity& e = scene.entities.emplace_back();
+    e.mesh = MeshReference{"models/Box/Box.glb", 0};  // no textures
+    MaterialOverride override;
+    override.material.baseColorTexture.texture = 99;
+    override.material.clearcoatNormalTexture.texture = 2147483647;
+    e.materialOverrides.push_back(override);
+    e.materialOverrides.push_back(MaterialOverride{});  // untextured: nothing to say
+
+    ecs::Registry registry;
+    AssetCache cache;
+    Diagnostics diagnostics;
+    const auto sceneFile = std::filesystem::path(CANDELA_SHARED_ASSETS) / "level.scene.json";
+    const auto entities = instantiateScene(registry, scene, sceneFile, cache, diagnostics);
+    ASSERT_EQ(entities.size(), 1u);
+    ASSERT_NE(registry.get<MeshInstance>(entities[0]).model, nullptr) << diagnostics.toString();
+    const std::string messages = diagnostics.toString();
+    EXPECT_NE(messages.find("/entities/0/materialOverrides/0/material/baseColorTexture: warning: "
+                            "texture 99 is not one of the model's 0 textures"),
+              std::string::npos)
+        << messages;
+    EXPECT_NE(messages.find("/entities/0/materialOverrides/0/material/clearcoatNormalTexture"),
+              std::string::npos)
+        << messages;
+    EXPECT_EQ(messages.find("/materialOverrides/1"), std::string::npos) << messages;
+    EXPECT_EQ(registry.get<MaterialOverrides>(entities[0]).overrides.size(), 2u);
 }
 
 }  // namespace

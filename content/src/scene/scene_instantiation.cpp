@@ -5,6 +5,7 @@
 #include <candela/ecs/view.h>
 
 #include "candela/content/builtin_meshes.h"
+#include "candela/content/component_validation.h"
 #include "candela/content/components/animation.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
@@ -98,6 +99,14 @@ std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDo
             // The cache keeps the model alive as long as the cache lives.
             registry.emplace<MeshInstance>(
                 e, MeshInstance{hasMesh ? model.get() : nullptr, mesh, source.mesh->gltfPath});
+            for (std::size_t o = 0; hasMesh && o < source.materialOverrides.size(); ++o) {
+                const std::string at = "/entities/" + std::to_string(i) + "/materialOverrides/" +
+                                       std::to_string(o) + "/material/";
+                for (const ValueProblem& problem : validateMaterialTextures(
+                         source.materialOverrides[o].material, model->textures.size())) {
+                    diagnostics.warning(sceneFile.string(), at + problem.field, problem.message);
+                }
+            }
         }
         if (source.model) {
             instantiateSceneModel(registry, e, source, "/entities/" + std::to_string(i), sceneFile,

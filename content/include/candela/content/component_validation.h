@@ -72,5 +72,9 @@ ValueProblems validateEmission(Material& material);
 // with a warning; NaN refused. Scene files and editor edits share it (issue 44: a cavity of
 // 3e38 was clamped by the editor without a word).
 ValueProblems validateMaterialFactors(Material& material);
+// Texture references against the model's `textureCount` textures: an index past them (a scene
+// file's material override naming texture 99) is a warning per slot, named by its key; the
+// renderer binds the slot's fallback (white, or a flat normal).
+ValueProblems validateMaterialTextures(const Material& material, std::size_t textureCount);
 
 }  // namespace candela::content
