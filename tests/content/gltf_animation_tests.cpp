@@ -44,13 +44,13 @@ struct SkinnedQuad {
     std::vector<float> times = {0, 1};
     std::vector<float> translations = {0, 0, 0, 0, 1, 0};
     int channelNode = 2;
+    std::vector<float> inverseBind = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0,  0, 1,
+                                      1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1};
 
     json document() const {
         BinaryBuffer buffer;
         const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
         const std::vector<std::uint16_t> indices = {0, 1, 2, 0, 2, 3};
-        const std::vector<float> inverseBind = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0,  0, 1,
-                                                1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 0, 1};
         std::vector<json> views;
         std::vector<json> accessors;
         auto add = [&](const auto& values, int componentType, const char* type, std::size_t count) {
@@ -177,6 +177,34 @@ TEST(GltfAnimation, NanKeysDropTheClip) {
     SkinnedQuad badTime;
     badTime.times[1] = std::nanf("");
     expectDropped(badTime, "animations[0].samplers[0]", "input key 1 is NaN/Inf", false, true);
+}
+
+// Issue 44: finite but absurd values made the skinned mesh vanish without a word. An inverse
+// bind matrix holding 3e38 or flattening space drops the skin (bind pose, with an error);
+// keyframes of 3e38 drop the clip; four weights of 3e38 normalise to a quarter each (their
+// float sum overflowed and every weight became 0).
+TEST(GltfAnimation, AbsurdFiniteValuesDropTheSkinOrClipByName) {
+    SkinnedQuad huge;
+    huge.inverseBind[12] = 3e38f;
+    expectDropped(huge, "skins[0]", "values beyond 1e9", true, false);
+    SkinnedQuad flat;
+    std::fill(flat.inverseBind.begin() + 16, flat.inverseBind.end(), 0.0f);
+    expectDropped(flat, "skins[0]", "matrix 1 is singular", true, false);
+    SkinnedQuad keys;
+    keys.translations[4] = 3e38f;
+    expectDropped(keys, "animations[0].samplers[0]",
+                  "output key 1 has a NaN/Inf value or one beyond", false, true);
+
+    SkinnedQuad weights;
+    std::fill(weights.weights.begin(), weights.weights.begin() + 4, 3e38f);
+    weights.joints[2] = 1;  // four distinct influences of the same joint pair
+    Diagnostics diagnostics;
+    auto model = load(weights, diagnostics);
+    ASSERT_TRUE(model);
+    EXPECT_FALSE(diagnostics.hasErrors()) << diagnostics.toString();
+    for (const Float4& w : model->meshes[0].primitives[0].weights) {
+        EXPECT_FLOAT_EQ(w[0] + w[1] + w[2] + w[3], 1.0f);
+    }
 }
 
 TEST(GltfAnimation, NonIncreasingKeyTimesDropTheClip) {

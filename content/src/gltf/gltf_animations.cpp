@@ -7,6 +7,7 @@
 #include "candela/content/animation_sampling.h"
 #include "gltf_accessors.h"
 #include "gltf_context.h"
+#include "gltf_value_limits.h"
 
 namespace candela::content::gltf {
 namespace {
@@ -81,8 +82,9 @@ std::string convertSampler(Context& context, const tinygltf::AnimationSampler& f
         return "output has " + std::to_string(out.values.size()) + " values but " +
                std::to_string(out.times.size()) + " input keys need " + std::to_string(expected);
     for (std::size_t i = 0; i < out.values.size(); ++i) {
-        if (!std::isfinite(out.values[i]))
-            return "output key " + std::to_string(i / perKey) + " has a NaN/Inf value";
+        if (!usableMagnitude(out.values[i]))
+            return "output key " + std::to_string(i / perKey) +
+                   " has a NaN/Inf value or one beyond 1e9";
     }
     return {};
 }

@@ -6,6 +6,7 @@
 
 #include "gltf_accessors.h"
 #include "gltf_context.h"
+#include "gltf_value_limits.h"
 
 namespace candela::content::gltf {
 namespace {
@@ -108,13 +109,14 @@ void readSkinAttributes(Context& context, const std::string& element,
                 static_cast<std::ptrdiff_t>(std::min<std::size_t>(4, influences.size())),
             influences.end(),
             [](const Influence& a, const Influence& b) { return a.weight > b.weight; });
-        float sum = 0;
+        // In double: four weights of 3e38 sum to Inf in float and normalised to zero.
+        double sum = 0;
         for (std::size_t c = 0; c < 4 && c < influences.size(); ++c)
             sum += influences[c].weight;
         for (std::size_t c = 0; c < 4; ++c) {
             const bool used = c < influences.size();
             joints[v][c] = used ? static_cast<std::uint16_t>(influences[c].joint) : 0;
-            weights[v][c] = used ? influences[c].weight / sum : 0.0f;
+            weights[v][c] = used ? float(influences[c].weight / sum) : 0.0f;
         }
     }
     primitive.joints = std::move(joints);
@@ -138,9 +140,8 @@ void readMorphTargets(Context& context, const std::string& element,
             if (error.empty() && flat.size() != vertexCount * 3)
                 error = std::to_string(flat.size() / 3) + " elements but POSITION has " +
                         std::to_string(vertexCount);
-            if (error.empty() &&
-                !std::all_of(flat.begin(), flat.end(), [](float f) { return std::isfinite(f); }))
-                error = "NaN/Inf values";
+            if (error.empty() && !allUsableMagnitudes(flat))
+                error = "NaN/Inf values or values beyond 1e9";
             if (!error.empty()) {
                 context.error(targetElement, name + ": " + error + "; morph targets dropped");
                 return;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gltf_context.h"
+#include "gltf_value_limits.h"
 #include "gltf_values.h"
 
 namespace candela::content::gltf {
@@ -225,8 +226,14 @@ void convertNodes(Context& context) {
                 context.error(element, "KHR_lights_punctual light " + std::to_string(light) +
                                            " does not exist");
         }
-        for (double w : from.weights)
-            node.weights.push_back(std::isfinite(w) ? static_cast<float>(w) : 0.0f);
+        for (std::size_t w = 0; w < from.weights.size(); ++w) {
+            const float weight = static_cast<float>(from.weights[w]);
+            if (!usableMagnitude(weight)) {
+                context.warning(
+                    element, "weights[" + std::to_string(w) + "] is NaN/Inf or beyond 1e9; 0 used");
+            }
+            node.weights.push_back(usableMagnitude(weight) ? weight : 0.0f);
+        }
     }
     buildHierarchy(context);
     chooseRoots(context);

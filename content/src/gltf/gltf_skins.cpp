@@ -7,6 +7,7 @@
 #include "candela/content/animation_systems.h"
 #include "gltf_accessors.h"
 #include "gltf_context.h"
+#include "gltf_value_limits.h"
 
 namespace candela::content::gltf {
 namespace {
@@ -45,9 +46,17 @@ bool convertSkin(Context& context, const tinygltf::Skin& from, const std::string
         if (error.empty() && flat.size() < skin.joints.size() * 16)
             error = std::to_string(flat.size() / 16) + " matrices for " +
                     std::to_string(skin.joints.size()) + " joints";
-        if (error.empty() &&
-            !std::all_of(flat.begin(), flat.end(), [](float f) { return std::isfinite(f); }))
-            error = "NaN/Inf values";
+        if (error.empty() && !allUsableMagnitudes(flat))
+            error = "NaN/Inf values or values beyond 1e9";
+        // A joint whose inverse bind matrix flattens space (all zero: determinant 0) collapses
+        // every vertex it weighs onto a point.
+        for (std::size_t j = 0; error.empty() && j < skin.joints.size(); ++j) {
+            const float* m = flat.data() + j * 16;  // column-major
+            const double det = double(m[0]) * (double(m[5]) * m[10] - double(m[9]) * m[6]) -
+                               double(m[4]) * (double(m[1]) * m[10] - double(m[9]) * m[2]) +
+                               double(m[8]) * (double(m[1]) * m[6] - double(m[5]) * m[2]);
+            if (det == 0.0) error = "matrix " + std::to_string(j) + " is singular";
+        }
         if (!error.empty()) {
             context.error(element, "inverseBindMatrices: " + error + "; skin dropped");
             return false;
