@@ -143,14 +143,22 @@ ValueProblems validateLight(Light& light) {
 
 ValueProblems validateCamera(Camera& camera) {
     ValueProblems problems;
+    // Past these limits the projection's scale (1 / tan(fov / 2), 1 / half height) or its
+    // near-plane terms overflow single precision and the whole frame turns to NaN (issue 44:
+    // a field of view of 1e-45 rad).
     if (camera.projection == Projection::Perspective) {
         if (!(camera.verticalFov > 0 && camera.verticalFov < kPi)) {
             reject(problems, "verticalFov",
                    "must be between 0 and pi radians (exclusive), got " + text(camera.verticalFov));
         }
+        clampBelow(problems, "verticalFov", camera.verticalFov, kMinVerticalFov, " rad");
+        clampBelow(problems, "nearPlane", camera.nearPlane, kMinNearPlane, " m");
     } else if (!(camera.orthographicHalfHeight > 0) || !finite(camera.orthographicHalfHeight)) {
         reject(problems, "orthographicHalfHeight",
                "must be greater than 0, got " + text(camera.orthographicHalfHeight));
+    } else {
+        clampBelow(problems, "orthographicHalfHeight", camera.orthographicHalfHeight,
+                   kMinOrthographicHalfHeight, " m");
     }
     const bool orthographic = camera.projection == Projection::Orthographic;
     if (!finite(camera.nearPlane) || camera.nearPlane < 0 ||

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the content fuzz targets (clang, libFuzzer + ASan + UBSan) and runs each for a
-# bounded time. Exit status 1 when any target finds a crash, leak, hang or trap; the input is
+# bounded time, then the frame settings fuzzer against the ASan build when it is there. Exit status 1 when any target finds a crash, leak, hang or trap; the input is
 # left in <build>/fuzz-artifacts/ and should be added to tests/content/regressions/<kind>/.
 #
 #   tests/content/run_fuzzers.sh [seconds-per-target=60]
@@ -47,4 +47,18 @@ for target in fuzz_gltf_loader fuzz_scene_file fuzz_exr_image; do
     grep -E "stat::number_of_executed_units|cov:" "$build/fuzz-artifacts/$target.log" | tail -2
   fi
 done
+# The frame settings fuzzer (tests/runtime/fuzz_frame_settings.cpp): scene files of float edge
+# cases rendered by the ASan build's candela, a fresh seed each run (printed, to replay).
+asan=${CANDELA_ASAN_BUILD:-$repo/build-asan}
+if [ -x "$asan/bin/fuzz_frame_settings" ] && [ -x "$asan/bin/candela" ]; then
+  echo "== fuzz_frame_settings for ${seconds}s"
+  if ! CANDELA_SHARED_ASSETS="$assets" ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1} \
+      LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$repo/tests/sanitizers/lsan.supp:print_suppressions=0} \
+      UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1} \
+      "$asan/bin/fuzz_frame_settings" --candela "$asan/bin/candela" --seconds "$seconds" \
+      --out "$build/fuzz-artifacts/frame_settings"; then
+    echo "!! fuzz_frame_settings failed; the inputs are in $build/fuzz-artifacts/frame_settings/"
+    status=1
+  fi
+fi
 exit $status

@@ -41,7 +41,12 @@ inline constexpr float kMaxEmissiveLuminance = 1e10f;  // cd/m^2; the sun's disc
 inline constexpr float kMaxFogCoefficient = 1e3f;
 // The atmosphere's scattering and absorption coefficients (1/m; Earth's Rayleigh is ~6e-6).
 inline constexpr float kMaxAirCoefficient = 1e3f;
-inline constexpr float kMaxVolumetricScale = 1e3f;  // multiplies a light's in-scattering
+// The narrowest perspective camera (0.06 degrees, past any lens), its nearest near plane and
+// the smallest orthographic half height: below them the projection overflows.
+inline constexpr float kMinVerticalFov = 1e-3f;             // radians
+inline constexpr float kMinNearPlane = 1e-5f;               // metres
+inline constexpr float kMinOrthographicHalfHeight = 1e-6f;  // metres
+inline constexpr float kMaxVolumetricScale = 1e3f;          // multiplies a light's in-scattering
 
 struct ValueProblem {
     std::string field;     // as the scene file names it: "lumens", "verticalFov", "exr"
