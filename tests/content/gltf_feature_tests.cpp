@@ -576,6 +576,33 @@ TEST(GltfFeatures, LinePrimitivesWithHairExtrasBecomeStrands) {
     EXPECT_TRUE(diagnostics.mentions("'bad radius'")) << text;
 }
 
+// Issue 44: every key of extras.hair is optional, yet `"hair": {}` made no hair: tinygltf's
+// value tree drops empty objects. An empty object is hair in the default style, alone or
+// beside other extras.
+TEST(GltfFeatures, AnEmptyHairExtraIsHairInTheDefaultStyle) {
+    json doc = quadDocument();
+    doc["materials"] = json::array({
+        {{"name", "alone"}, {"extras", {{"hair", json::object()}}}},
+        {{"name", "beside"}, {"extras", {{"hair", json::object()}, {"specular", 0.25}}}},
+        {{"name", "none"}, {"extras", {{"specular", 0.25}}}},
+    });
+    for (int material = 0; material < 3; ++material) {
+        doc["meshes"][0]["primitives"].push_back(
+            {{"attributes", {{"POSITION", 0}}}, {"mode", 3}, {"material", material}});
+    }
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics, "empty_hair.gltf");
+    ASSERT_TRUE(m) << diagnostics.toString();
+    const HairStyle defaults;
+    for (int material = 0; material < 2; ++material) {
+        ASSERT_TRUE(m->materials[size_t(material)].hair) << material;
+        EXPECT_EQ(m->materials[size_t(material)].hair->rootRadius, defaults.rootRadius);
+    }
+    EXPECT_FLOAT_EQ(m->materials[1].specular, 0.25f);
+    EXPECT_FALSE(m->materials[2].hair);
+    EXPECT_EQ(m->meshes[0].hair.size(), 2u) << diagnostics.toString();
+}
+
 // Hair generated on a mesh (scene files, the demo): the same seed gives the same strands, a
 // different seed others; every root lies on the surface and every strand has its length.
 TEST(GltfFeatures, GeneratedHairIsDeterministicAndRootedOnTheSurface) {

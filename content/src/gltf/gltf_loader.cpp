@@ -88,6 +88,8 @@ bool parseDocument(std::span<const std::byte> bytes, const std::filesystem::path
     tinygltf::TinyGLTF parser;
     parser.SetImageLoader(gltf::decodeImageFromUri, &images);
     parser.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, writeWholeFile, &access});
+    // The extras' text too: tinygltf's value tree drops empty objects ("hair": {}).
+    parser.SetStoreOriginalJSONForExtrasAndExtensions(true);
     std::string error;
     std::string warning;
     const std::string baseDir = path.parent_path().string();

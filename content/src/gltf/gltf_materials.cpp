@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
 
 #include "candela/content/component_validation.h"
 #include "gltf_context.h"
@@ -205,9 +207,12 @@ void readWireRadiusExtra(Context& context, const std::string& element,
 // above 0) is an error naming materials[i].extras.hair.<key>, and the material makes no hair (its
 // lines stay skipped).
 void readHairExtra(Context& context, const std::string& element, const tinygltf::Value& extras,
-                   Material& material) {
+                   bool emptyHair, Material& material) {
     const tinygltf::Value* hair = member(extras, "hair");
-    if (hair == nullptr) return;
+    if (hair == nullptr) {
+        if (emptyHair) material.hair = HairStyle{};  // every key left at its default
+        return;
+    }
     const std::string where = element + ".hair";
     if (!hair->IsObject()) {
         context.error(where, "material '" + material.name +
@@ -260,9 +265,24 @@ void readHairExtra(Context& context, const std::string& element, const tinygltf:
     if (valid) material.hair = style;
 }
 
+// Whether the extras' original JSON holds `key` as an empty object: tinygltf's value tree drops
+// empty objects (and an extras object left empty by that), so `"hair": {}` (hair in every
+// default) is only visible in the text it keeps (SetStoreOriginalJSONForExtrasAndExtensions).
+bool hasEmptyObject(const std::string& extrasJson, const char* key) {
+    if (extrasJson.find(key) == std::string::npos) return false;
+    const nlohmann::json extras = nlohmann::json::parse(extrasJson, nullptr, false);
+    if (!extras.is_object()) return false;
+    const auto it = extras.find(key);
+    return it != extras.end() && it->is_object() && it->empty();
+}
+
 void readEngineExtras(Context& context, const std::string& element, const tinygltf::Value& extras,
-                      Material& material) {
-    if (!extras.IsObject()) return;
+                      const std::string& extrasJson, Material& material) {
+    const bool emptyHair = hasEmptyObject(extrasJson, "hair");
+    if (!extras.IsObject()) {
+        if (emptyHair) material.hair = HairStyle{};
+        return;
+    }
     if (std::string model; readString(extras, "shadingModel", model)) {
         if (model == "defaultLit")
             material.shadingModel = ShadingModel::DefaultLit;
@@ -297,7 +317,7 @@ void readEngineExtras(Context& context, const std::string& element, const tinygl
     color("specularColor", material.specularColor);
     readCavityExtra(context, element, extras, material);
     readWireRadiusExtra(context, element, extras, material);
-    readHairExtra(context, element, extras, material);
+    readHairExtra(context, element, extras, emptyHair, material);
 }
 
 Material convertMaterial(Context& context, const tinygltf::Material& source,
@@ -368,7 +388,8 @@ Material convertMaterial(Context& context, const tinygltf::Material& source,
                                material);
     }
     // Extras come last: an engine-specific value wins over what an extension implied.
-    readEngineExtras(context, element + ".extras", source.extras, material);
+    readEngineExtras(context, element + ".extras", source.extras, source.extras_json_string,
+                     material);
     // Shared with the scene loader: emission that would overflow the shaders is clamped.
     for (const ValueProblem& problem : validateEmission(material)) {
         context.warning(element, problem.field + ": " + problem.message);
