@@ -39,6 +39,16 @@ std::string readBytes(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// tests/scenes/spot_light.scene.json (a box floor under a spot, entity 2 the camera) with its
+// box found in the shared assets, for tests that change one value of it.
+nlohmann::json spotLightScene() {
+    nlohmann::json scene = nlohmann::json::parse(readBytes(
+        std::filesystem::path(CANDELA_SOURCE_DIR) / "tests/scenes/spot_light.scene.json"));
+    scene["entities"][0]["mesh"]["gltf"] =
+        std::string(CANDELA_SHARED_ASSETS) + "/models/Box/Box.glb";
+    return scene;
+}
+
 // One folder per test: ctest runs the tests in parallel processes, and several write files of
 // the same names (default.json, flag.exr, ...), which raced in one shared folder.
 std::filesystem::path tempDir() {
@@ -938,11 +948,7 @@ TEST(Cli, DefaultLightsOnlyWithoutLightsOrASkyAndTheRunSaysSo) {
 TEST(Cli, AbsurdLightsAndExposuresGiveAFiniteLitFrame) {
     auto dir = tempDir() / "absurd";
     std::filesystem::create_directories(dir);
-    const std::filesystem::path source =
-        std::filesystem::path(CANDELA_SOURCE_DIR) / "tests/scenes/spot_light.scene.json";
-    nlohmann::json base = nlohmann::json::parse(readBytes(source));
-    base["entities"][0]["mesh"]["gltf"] =
-        std::string(CANDELA_SHARED_ASSETS) + "/models/Box/Box.glb";
+    const nlohmann::json base = spotLightScene();
     struct Case {
         const char* name;
         std::function<void(nlohmann::json&)> change;
@@ -1010,10 +1016,7 @@ TEST(Cli, ASizeTheDeviceCannotHoldIsRefusedUpFront) {
 TEST(Cli, HairPastOneBindingIsDrawnInPartWithAWarning) {
     auto dir = tempDir() / "hair_binding";
     std::filesystem::create_directories(dir);
-    nlohmann::json scene = nlohmann::json::parse(readBytes(
-        std::filesystem::path(CANDELA_SOURCE_DIR) / "tests/scenes/spot_light.scene.json"));
-    scene["entities"][0]["mesh"]["gltf"] =
-        std::string(CANDELA_SHARED_ASSETS) + "/models/Box/Box.glb";
+    nlohmann::json scene = spotLightScene();
     scene["entities"][0]["hair"] = {{"count", 600000}, {"length", 0.05}};
     const auto path = dir / "hair.scene.json";
     std::ofstream(path) << scene.dump();
@@ -1038,10 +1041,7 @@ TEST(Cli, HairPastOneBindingIsDrawnInPartWithAWarning) {
 TEST(Cli, HostileMediaAndExposuresGiveFiniteFrames) {
     auto dir = tempDir() / "hostile_media";
     std::filesystem::create_directories(dir);
-    nlohmann::json base = nlohmann::json::parse(readBytes(
-        std::filesystem::path(CANDELA_SOURCE_DIR) / "tests/scenes/spot_light.scene.json"));
-    base["entities"][0]["mesh"]["gltf"] =
-        std::string(CANDELA_SHARED_ASSETS) + "/models/Box/Box.glb";
+    const nlohmann::json base = spotLightScene();
     const float cameraHeight = base["entities"][2]["transform"]["translation"][1];
     const nlohmann::json fog = {{"name", "fog"},
                                 {"fog",
