@@ -52,7 +52,9 @@ void Renderer::collectNonFinite() {
             "pass '" + first->passName + "' (image '" + first->imageName + "', " +
             std::to_string(counts[size_t(first - &nonFiniteProbes_[0])]) + " texels)";
     } else {
-        stats_.nonFiniteSource = "no pass's float images (a buffer or a copy, or not repeated)";
+        stats_.nonFiniteSource =
+            "no pass's float image held one in this frame (it came through a buffer or a copy, "
+            "or this frame did not repeat it)";
     }
 }
 

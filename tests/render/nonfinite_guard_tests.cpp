@@ -81,7 +81,7 @@ TEST(NonFiniteGuard, ASoundFrameCountsNothingAndItsProbesFindNothing) {
     const auto [first, second] = twoFrames(triangle(2.0f), true);
     EXPECT_EQ(first.nonFinitePixels, 0u);
     EXPECT_EQ(second.nonFinitePixels, 0u);
-    EXPECT_EQ(second.source.rfind("no pass's float images", 0), 0u) << second.source;
+    EXPECT_EQ(second.source.rfind("no pass's float image held one", 0), 0u) << second.source;
 }
 
 // Compile-only: probes go after each pass that writes a float colour image, not after one

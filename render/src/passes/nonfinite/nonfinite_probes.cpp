@@ -1,6 +1,7 @@
 #include "passes/nonfinite/nonfinite_probes.h"
 
 #include <algorithm>
+#include <string>
 
 #include "frame_graph/frame_graph_executor.h"
 #include "passes/nonfinite/nonfinite_pass.h"
@@ -45,10 +46,6 @@ void clearFirst(FrameGraph& graph, uint32_t resource) {
     });
     clear.write(image, Use::TransferDst, 0);
 }
-
-}  // namespace
-
-namespace {
 
 // The image a device pass's write makes probeable, or null.
 const ImageDesc* probedImage(const FrameGraph& graph, const PassDecl& writer, const UseDecl& use) {
