@@ -7,8 +7,11 @@
 
 #include "common/shared_bindings.h"
 
-// The frame's strand segments, world space (HairSegment in hair_pass.cpp).
+// The frame's strand segments, world space (HairSegment in hair_pass.cpp): two ranges of one
+// buffer, each at most maxStorageBufferRange, so hair past one binding's reach is split
+// (hair_segment.glsl's hairSegment reads either).
 #define HAIR_BINDING_SEGMENTS 2
+#define HAIR_BINDING_SEGMENTS_HIGH 18
 // The A-buffer: one list head per pixel, the node pool, and the pool's allocation counter.
 #define HAIR_BINDING_HEADS 3
 #define HAIR_BINDING_NODES 4

@@ -25,7 +25,7 @@ const float kScreenExpansionPx = 0.70710678;  // sqrt(2) / 2
 void main() {
     const uint segment = uint(gl_VertexIndex) / 6u;
     const vec2 corner = kSegmentQuadCorners[uint(gl_VertexIndex) % 6u];
-    const HairSegment s = segments[segment];
+    const HairSegment s = hairSegment(segment);
     outSegment = segment;
     vec4 c0 = camera.viewProjection * vec4(s.start.xyz, 1.0);
     vec4 c1 = camera.viewProjection * vec4(s.end.xyz, 1.0);

@@ -1,6 +1,7 @@
 #include "passes/hair/hair_pass.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -80,7 +81,27 @@ VkDeviceSize HairPass::headBytes(uint32_t width, uint32_t height) {
 }
 
 size_t HairPass::maxSegments(const GpuContext& context) {
-    return context.properties().limits.maxStorageBufferRange / sizeof(HairSegment);
+    return 2 * segmentsPerRange(context);
+}
+
+size_t HairPass::segmentsPerRange(const GpuContext& context) {
+    // Whole 256-byte blocks (four segments): the second range's offset then meets any device's
+    // minStorageBufferOffsetAlignment (256 at most).
+    return context.properties().limits.maxStorageBufferRange / 256 * (256 / sizeof(HairSegment));
+}
+
+std::array<VkDescriptorBufferInfo, 2> HairPass::segmentRanges() const {
+    // The first range as far as one binding reaches; the second the rest (or, when there is
+    // none, the first segment again: bound, never read).
+    const VkDeviceSize perRange = segmentsPerRange(context_) * sizeof(HairSegment);
+    const VkDeviceSize used = std::max<VkDeviceSize>(segmentCount_, 1) * sizeof(HairSegment);
+    const VkDeviceSize low = std::min(used, perRange);
+    if (used <= perRange) {
+        return {VkDescriptorBufferInfo{segments_.handle(), 0, low},
+                VkDescriptorBufferInfo{segments_.handle(), 0, sizeof(HairSegment)}};
+    }
+    return {VkDescriptorBufferInfo{segments_.handle(), 0, low},
+            VkDescriptorBufferInfo{segments_.handle(), low, used - low}};
 }
 
 uint32_t HairPass::maxNodes(const GpuContext& context) {
@@ -102,16 +123,16 @@ bool HairPass::prepare(const FrameScene& scene, const LightingFeatures& features
     for (const HairDraw& draw : scene.hair) {
         if (draw.hair && draw.style) count += draw.hair->segments.size() / 2;
     }
-    // The shaders bind the segments whole (the resolve reads any segment a node names), so
-    // a frame draws at most what one binding reaches on this device (2,097,152 segments at
-    // lavapipe's 128 MiB); the rest is left out with a warning, never bound past the range.
+    // The shaders read the segments through two bindings (hair_segment.glsl), so a frame
+    // draws at most what two reach on this device (4,194,304 segments at lavapipe's 128 MiB:
+    // a million strands of four); the rest is left out with a warning, never bound past them.
     const size_t bindable = maxSegments(context_);
     if (count > bindable) {
         if (count != segmentsWarnedAbout_) {
             std::fprintf(stderr,
-                         "warning: hair: %zu strand segments are more than this device binds at "
-                         "once (maxStorageBufferRange %u bytes holds %zu); drawing the first "
-                         "%zu\n",
+                         "warning: hair: %zu strand segments are more than this device binds "
+                         "(two ranges of maxStorageBufferRange %u bytes hold %zu); drawing the "
+                         "first %zu\n",
                          count, context_.properties().limits.maxStorageBufferRange, bindable,
                          bindable);
             segmentsWarnedAbout_ = count;
@@ -174,6 +195,7 @@ void HairPass::buildPipelines() {
         const DescriptorBinding bindings[] = {
             {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, raster},
             {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, raster},
+            {HAIR_BINDING_SEGMENTS_HIGH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, raster},
             {HAIR_BINDING_HEADS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
@@ -194,6 +216,7 @@ void HairPass::buildPipelines() {
             {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, raster},
             {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_SEGMENTS_HIGH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_HEADS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
@@ -222,6 +245,7 @@ void HairPass::buildPipelines() {
         const DescriptorBinding bindings[] = {
             {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, raster},
             {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+            {HAIR_BINDING_SEGMENTS_HIGH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_HEADS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
         };
@@ -277,15 +301,17 @@ void beginDepthRendering(VkCommandBuffer cmd, const ImageRef& depth, bool write)
 void HairPass::recordFill(VkCommandBuffer cmd, const Inputs& in) const {
     beginDepthRendering(cmd, in.depth, false);
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
+    const std::array<VkDescriptorBufferInfo, 2> segmentInfo = segmentRanges();
     VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo nodeInfo{in.nodes.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo counterInfo{counters_.handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet writes[] = {uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
-                                           storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo),
-                                           storageBufferWrite(HAIR_BINDING_HEADS, &headInfo),
-                                           storageBufferWrite(HAIR_BINDING_NODES, &nodeInfo),
-                                           storageBufferWrite(HAIR_BINDING_COUNTERS, &counterInfo)};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo[0]),
+        storageBufferWrite(HAIR_BINDING_SEGMENTS_HIGH, &segmentInfo[1]),
+        storageBufferWrite(HAIR_BINDING_HEADS, &headInfo),
+        storageBufferWrite(HAIR_BINDING_NODES, &nodeInfo),
+        storageBufferWrite(HAIR_BINDING_COUNTERS, &counterInfo)};
     pushCommon(cmd, fill_, in);
     fill_.pushDescriptors(cmd, writes);
     vkCmdDraw(cmd, 6 * segmentCount_, 1, 0, 0);
@@ -301,7 +327,7 @@ void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
     vkCmdBeginRendering(cmd, &rendering);
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
+    const std::array<VkDescriptorBufferInfo, 2> segmentInfo = segmentRanges();
     VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo nodeInfo{in.nodes.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
@@ -317,7 +343,8 @@ void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
     const VkWriteDescriptorSet writes[] = {
         uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
         storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
-        storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo),
+        storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo[0]),
+        storageBufferWrite(HAIR_BINDING_SEGMENTS_HIGH, &segmentInfo[1]),
         storageBufferWrite(HAIR_BINDING_HEADS, &headInfo),
         storageBufferWrite(HAIR_BINDING_NODES, &nodeInfo),
         storageBufferWrite(HAIR_BINDING_CLUSTER_RANGES, &rangesInfo),
@@ -341,13 +368,15 @@ void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
 void HairPass::recordDepth(VkCommandBuffer cmd, const Inputs& in) const {
     beginDepthRendering(cmd, in.depth, true);
     VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
+    const std::array<VkDescriptorBufferInfo, 2> segmentInfo = segmentRanges();
     VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo nodeInfo{in.nodes.handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet writes[] = {uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
-                                           storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo),
-                                           storageBufferWrite(HAIR_BINDING_HEADS, &headInfo),
-                                           storageBufferWrite(HAIR_BINDING_NODES, &nodeInfo)};
+    const VkWriteDescriptorSet writes[] = {
+        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo[0]),
+        storageBufferWrite(HAIR_BINDING_SEGMENTS_HIGH, &segmentInfo[1]),
+        storageBufferWrite(HAIR_BINDING_HEADS, &headInfo),
+        storageBufferWrite(HAIR_BINDING_NODES, &nodeInfo)};
     pushCommon(cmd, depth_, in);
     depth_.pushDescriptors(cmd, writes);
     vkCmdDraw(cmd, 3, 1, 0, 0);
@@ -375,6 +404,8 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
         desc.cullMode = VK_CULL_MODE_NONE;
         const DescriptorBinding bindings[] = {
             {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+            {HAIR_BINDING_SEGMENTS_HIGH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+             VK_SHADER_STAGE_VERTEX_BIT},
             {HAIR_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
              VK_SHADER_STAGE_VERTEX_BIT},
         };
@@ -407,9 +438,10 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
     VkRenderingInfo rendering = renderingInfo(x1 - x0, y1 - y0, {}, &depth);
     rendering.renderArea.offset = {int32_t(x0), int32_t(y0)};  // the views' tiles only
     vkCmdBeginRendering(cmd, &rendering);
-    VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
+    const std::array<VkDescriptorBufferInfo, 2> segmentInfo = segmentRanges();
     const VkWriteDescriptorSet writes[] = {
-        storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo),
+        storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo[0]),
+        storageBufferWrite(HAIR_BINDING_SEGMENTS_HIGH, &segmentInfo[1]),
         storageBufferWrite(HAIR_BINDING_SHADOW_VIEWS, &in.shadows->views)};
     shadowDepth_.bind(cmd);
     shadowDepth_.pushDescriptors(cmd, writes);

@@ -6,6 +6,7 @@
 // over the lit frame, and finally written into the depth buffer where the hair is at least half
 // opaque (hair_depth.frag). The node pool holds RendererOptions::hairNodesPerPixel nodes per pixel;
 // fragments beyond it are dropped and counted (--stats hair_nodes_dropped).
+#include <array>
 #include <glm/glm.hpp>
 #include <span>
 
@@ -42,7 +43,8 @@ public:
     // The A-buffer's sizes for a target of width x height.
     static VkDeviceSize headBytes(uint32_t width, uint32_t height);
     static VkDeviceSize nodeBytes(uint32_t nodeCapacity);
-    // The most segments and A-buffer nodes one storage binding reaches on this device.
+    // The most segments a frame draws (two storage bindings' reach, hair_segment.glsl) and
+    // the most A-buffer nodes one binding reaches on this device.
     static size_t maxSegments(const GpuContext& context);
     static uint32_t maxNodes(const GpuContext& context);
     // The counter buffer the fill pass allocates nodes with; read back after the frame.
@@ -101,6 +103,10 @@ private:
     // Zeros: an integrated froxel buffer whose header says "no medium", bound when the frame
     // has no froxels.
     GpuBuffer noMedium_;
+    static size_t segmentsPerRange(const GpuContext& context);
+    // The two ranges of segments_ the shaders bind (HAIR_BINDING_SEGMENTS and _HIGH).
+    std::array<VkDescriptorBufferInfo, 2> segmentRanges() const;
+
     uint32_t segmentCount_ = 0;
     size_t segmentsWarnedAbout_ = 0;  // the count last warned about as too many to bind
     WorldBounds bounds_;              // the strands' world box this frame (prepare)

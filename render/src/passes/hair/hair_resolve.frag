@@ -93,7 +93,7 @@ float kajiyaKayLobe(vec3 T, vec3 H, float exponent) {
 float fibresCrossed(vec3 P, vec3 L, float tMin, float tMax) {
     float count = 0.0;
     for (uint i = 0u; i < draw.segmentCount; ++i) {
-        const HairSegment s = segments[i];
+        const HairSegment s = hairSegment(i);
         const vec3 d = s.end.xyz - s.start.xyz;
         const vec3 w = P - s.start.xyz;
         const float b = dot(L, d), c = dot(d, d), e = dot(d, w);
@@ -162,7 +162,7 @@ vec3 hairLightRadiance(HairPoint h, uint index) {
 }
 
 vec3 shadeHair(float depth, uint segment) {
-    const HairSegment s = segments[segment];
+    const HairSegment s = hairSegment(segment);
     if (draw.mode == HAIR_MODE_COVERAGE) return vec3(1.0);
     HairPoint h;
     const vec2 ndc = gl_FragCoord.xy / draw.targetSize * 2.0 - 1.0;
@@ -273,7 +273,7 @@ void main() {
             const float a = uintBitsToFloat(n.z);
             tailTransmittance *= 1.0 - a;
             tailColor +=
-                a * (draw.mode == HAIR_MODE_COVERAGE ? vec3(1.0) : segments[n.y].color.rgb);
+                a * (draw.mode == HAIR_MODE_COVERAGE ? vec3(1.0) : hairSegment(n.y).color.rgb);
             tailWeight += a;
         }
     }
@@ -286,8 +286,9 @@ void main() {
         radiance += transmittance * coverage[i] * shaded;
         transmittance *= 1.0 - coverage[i];
         litSum += coverage[i] * shaded;
-        colorSum +=
-            coverage[i] * (draw.mode == HAIR_MODE_COVERAGE ? vec3(1.0) : segments[segment[i]].color.rgb);
+        colorSum += coverage[i] * (draw.mode == HAIR_MODE_COVERAGE
+                                       ? vec3(1.0)
+                                       : hairSegment(segment[i]).color.rgb);
     }
     if (tailWeight > 0.0) {
         // Lit per unit of colour as the kept fragments are on average.

@@ -13,6 +13,31 @@ struct HairSegment {
 layout(std430, binding = HAIR_BINDING_SEGMENTS) readonly buffer Segments {
     HairSegment segments[];
 };
+// The segments past the first range's reach (the same buffer further on; unused otherwise).
+layout(std430, binding = HAIR_BINDING_SEGMENTS_HIGH) readonly buffer SegmentsHigh {
+    HairSegment segmentsHigh[];
+};
+
+// Segment i of the frame: the first range holds as many as its binding reaches (its length).
+// Copied member by member: a buffer's struct and a local one are different SPIR-V types, which
+// this glslang would store one into the other (invalid SPIR-V).
+HairSegment hairSegment(uint i) {
+    const uint low = uint(segments.length());
+    HairSegment s;
+    if (i < low) {
+        s.start = segments[i].start;
+        s.end = segments[i].end;
+        s.color = segments[i].color;
+        s.highlights = segments[i].highlights;
+    } else {
+        const uint j = i - low;
+        s.start = segmentsHigh[j].start;
+        s.end = segmentsHigh[j].end;
+        s.color = segmentsHigh[j].color;
+        s.highlights = segmentsHigh[j].highlights;
+    }
+    return s;
+}
 
 #ifndef HAIR_NO_LISTS
 // A node of a pixel's list: x the fragment's depth (float bits, reverse-Z), y its segment, z

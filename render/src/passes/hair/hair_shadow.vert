@@ -31,7 +31,7 @@ float viewDepth(ShadowView v, vec4 clip) {
 void main() {
     const uint segment = uint(gl_VertexIndex) / 6u;
     const vec2 corner = kSegmentQuadCorners[uint(gl_VertexIndex) % 6u];
-    const HairSegment s = segments[segment];
+    const HairSegment s = hairSegment(segment);
     const ShadowView v = shadowViews[draw.shadowView];
     const vec4 c0 = v.worldToClip * vec4(s.start.xyz, 1.0);
     const vec4 c1 = v.worldToClip * vec4(s.end.xyz, 1.0);
