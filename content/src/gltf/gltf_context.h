@@ -4,6 +4,7 @@
 #include <tiny_gltf.h>
 
 #include <string>
+#include <vector>
 
 #include "candela/content/diagnostics.h"
 #include "candela/content/gltf_loader.h"
@@ -63,5 +64,9 @@ void readSkinAttributes(Context& context, const std::string& element,
 void readMorphTargets(Context& context, const std::string& element,
                       const tinygltf::Primitive& source, std::size_t vertexCount,
                       const AccessorLimits& limits, Primitive& primitive);
+// A mesh's or node's default morph `weights`: one that is NaN/Inf or beyond 1e9 is 0, with a
+// warning naming `element` and its index.
+std::vector<float> readMorphWeights(Context& context, const std::string& element,
+                                    const std::vector<double>& weights);
 
 }  // namespace candela::content::gltf

@@ -154,4 +154,19 @@ void readMorphTargets(Context& context, const std::string& element,
     primitive.morphTargets = std::move(targets);
 }
 
+std::vector<float> readMorphWeights(Context& context, const std::string& element,
+                                    const std::vector<double>& weights) {
+    std::vector<float> out;
+    out.reserve(weights.size());
+    for (std::size_t w = 0; w < weights.size(); ++w) {
+        const float weight = static_cast<float>(weights[w]);
+        if (!usableMagnitude(weight)) {
+            context.warning(element,
+                            "weights[" + std::to_string(w) + "] is NaN/Inf or beyond 1e9; 0 used");
+        }
+        out.push_back(usableMagnitude(weight) ? weight : 0.0f);
+    }
+    return out;
+}
+
 }  // namespace candela::content::gltf

@@ -9,7 +9,6 @@
 #include "candela/content/tangent_generation.h"
 #include "gltf_accessors.h"
 #include "gltf_context.h"
-#include "gltf_value_limits.h"
 
 namespace candela::content::gltf {
 namespace {
@@ -388,14 +387,8 @@ void convertMeshes(Context& context) {
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         Mesh& mesh = context.model.meshes[m];
         mesh.name = meshes[m].name;
-        for (std::size_t w = 0; w < meshes[m].weights.size(); ++w) {
-            const float weight = static_cast<float>(meshes[m].weights[w]);
-            if (!usableMagnitude(weight)) {
-                context.warning(elementName("meshes", m), "weights[" + std::to_string(w) +
-                                                              "] is NaN/Inf or beyond 1e9; 0 used");
-            }
-            mesh.defaultWeights.push_back(usableMagnitude(weight) ? weight : 0.0f);
-        }
+        mesh.defaultWeights =
+            readMorphWeights(context, elementName("meshes", m), meshes[m].weights);
         for (std::size_t p = 0; p < meshes[m].primitives.size(); ++p) {
             const std::string element =
                 elementName("meshes", m) + "." + elementName("primitives", p);

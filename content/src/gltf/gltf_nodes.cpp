@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "gltf_context.h"
-#include "gltf_value_limits.h"
 #include "gltf_values.h"
 
 namespace candela::content::gltf {
@@ -226,14 +225,7 @@ void convertNodes(Context& context) {
                 context.error(element, "KHR_lights_punctual light " + std::to_string(light) +
                                            " does not exist");
         }
-        for (std::size_t w = 0; w < from.weights.size(); ++w) {
-            const float weight = static_cast<float>(from.weights[w]);
-            if (!usableMagnitude(weight)) {
-                context.warning(
-                    element, "weights[" + std::to_string(w) + "] is NaN/Inf or beyond 1e9; 0 used");
-            }
-            node.weights.push_back(usableMagnitude(weight) ? weight : 0.0f);
-        }
+        node.weights = readMorphWeights(context, element, from.weights);
     }
     buildHierarchy(context);
     chooseRoots(context);
