@@ -204,7 +204,6 @@ Outcome render(const std::string& candela, const std::filesystem::path& scene,
                                 "' > '" + log.string() + "' 2>&1";
     const int status = std::system(command.c_str());
     const std::string output = readText(log);
-    Outcome o;
     if (!WIFEXITED(status)) {
         return {true, "killed by signal " + std::to_string(WTERMSIG(status)) + "\n" + output};
     }
@@ -227,7 +226,7 @@ Outcome render(const std::string& candela, const std::filesystem::path& scene,
                     std::string("exit 0 without readable stats: ") + e.what() + "\n" + output};
         }
     }
-    return o;
+    return {};
 }
 
 }  // namespace
