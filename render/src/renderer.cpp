@@ -14,6 +14,9 @@
 #include "cpu_clock.h"
 #include "culling/draw_order.h"
 #include "culling/draws_in_view.h"
+#include "features/frame_blackboard.h"
+#include "features/render_feature.h"
+#include "features/scene_targets.h"
 #include "frame_graph/frame_graph.h"
 #include "frame_graph/frame_graph_executor.h"
 #include "gbuffer_targets.h"
@@ -25,6 +28,7 @@
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
 #include "lights/ltc_table_texture.h"
+#include "lit_inputs.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
 #include "passes/atmosphere/atmosphere_pass.h"
 #include "passes/bloom/bloom_pass.h"
@@ -36,11 +40,12 @@
 #include "passes/fxaa/fxaa_pass.h"
 #include "passes/gbaa/gbaa_pass.h"
 #include "passes/gbuffer/gbuffer_pass.h"
-#include "passes/hair/hair_pass.h"
+#include "passes/hair/hair_feature.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/nonfinite/nonfinite_pass.h"
 #include "passes/nonfinite/nonfinite_probes.h"
 #include "passes/scattering/scattering_pass.h"
+#include "passes/shadows/shadow_frame.h"
 #include "passes/shadows/shadow_pass.h"
 #include "passes/skinning/skinning_pass.h"
 #include "passes/sky_occlusion/sky_occlusion_pass.h"
@@ -49,11 +54,13 @@
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "passes/upscale/upscale_pass.h"
+#include "passes/volumetrics/integrated_froxels.h"
 #include "passes/volumetrics/volumetrics_pass.h"
-#include "passes/wires/wire_pass.h"
+#include "passes/wires/wire_feature.h"
 #include "renderer_ao_temporal.h"
 #include "renderer_frame_handles.h"
 #include "renderer_scene_queries.h"
+#include "temporal_history.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -90,7 +97,11 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
       cameraBuffer_(context, sizeof(GpuCamera), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                     MemoryLocation::HostVisible),
       lights_(std::make_unique<GpuLightBuffer>()),
-      clusters_(std::make_unique<ClusterLightLists>(context, options_, lightAssignment_)) {
+      clusters_(std::make_unique<ClusterLightLists>(context, options_, lightAssignment_)),
+      taaHistory_(std::make_unique<TemporalHistory>()),
+      aoHistory_(std::make_unique<TemporalHistory>()),
+      ssrHistory_(std::make_unique<TemporalHistory>()),
+      board_(std::make_unique<FrameBlackboard>()) {
     createTargets();
     trianglePass_ = std::make_unique<TrianglePass>(context_);
     gbufferPass_ = std::make_unique<GBufferPass>(context_);
@@ -114,6 +125,9 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     }
     shadowPass_ = std::make_unique<ShadowPass>(context_);
     skyOcclusionPass_ = std::make_unique<SkyOcclusionPass>(context_);  // pipeline when used
+    renderFeatures_.push_back(std::make_unique<HairFeature>(context_));
+    renderFeatures_.push_back(std::make_unique<WireFeature>(context_));
+    featureDeclared_.assign(renderFeatures_.size(), false);
 }
 
 uint32_t Renderer::scaledSize(uint32_t outputSize, float scale) {
@@ -354,23 +368,6 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     } else {
         skyOcclusionDescriptor = skyOcclusionPass_->descriptor(false);
     }
-    // What every lit pass reads beside its own inputs: the light buffer, the cluster lists and
-    // the shadow maps (the lighting pass in its compute stage, hair, wires and blended surfaces
-    // in their fragment stage).
-    auto readLitInputs = [&](FrameGraph::PassBuilder& p, VkPipelineStageFlags2 stages) {
-        p.read(h.lights, Use::StorageRead, stages);
-        if (features.clustered) {
-            p.read(h.clusters.ranges, Use::StorageRead, stages);
-            p.read(h.clusters.indices, Use::StorageRead, stages);
-            p.read(h.clusters.depthRange, Use::StorageRead, stages);
-        }
-        if (features.shadows) {
-            p.read(shadowAtlas, Use::Sampled, stages);
-            p.read(shadowViews, Use::StorageRead, stages);
-            p.read(shadowLights, Use::StorageRead, stages);
-        }
-    };
-
     const SceneHandles ids = h;  // resource ids for the passes to look up
     auto gbufferViews = [ids](PassContext& ctx) {
         GBufferTargets targets;
@@ -430,6 +427,12 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                 blended ? transparentPass_.get() : nullptr, &resources, deformed},
                                stats_);
     }
+    // What every lit pass reads beside its own inputs (the lighting pass in its compute stage,
+    // hair, wires and blended surfaces in their fragment stage).
+    const LitInputHandles litReads{h.camera,         h.lights,         features.clustered,
+                                   h.clusters,       features.shadows, shadowAtlas,
+                                   shadowViews,      shadowLights,     features.skyOcclusion,
+                                   skyOcclusionAtlas};
 
     // Ambient occlusion between the G-buffer and lighting: GTAO and its denoise, or the
     // reference. (Frames without it declare nothing: no pass, no images.)
@@ -485,10 +488,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                 features_.push_back("ao_temporal");
                 occlusion = declareAoTemporal(
                     g, {*occlusion, h.motion, h.depth, normal, h.camera, aoPass_.get(), aoInputs,
-                        &aoHistory_[aoHistoryWrite_ ^ 1u], &aoHistory_[aoHistoryWrite_],
-                        aoHistoryValid_, options_.aoSettings.temporalFrames, width_, height_});
-                aoHistoryWrite_ ^= 1u;
-                aoHistoryValid_ = true;
+                        aoHistory_->declare(g, "ao.history", "ao.history_written"),
+                        options_.aoSettings.temporalFrames, width_, height_});
             }
         } else {
             auto p = g.addPass("ambient_occlusion_reference", PassKind::Device,
@@ -504,7 +505,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             specularOcclusion = p.write(specular, Use::StorageWrite);
         }
     }
-    if (features.ao != AoMode::Gtao) aoHistoryValid_ = false;  // the sequence broke
+    if (features.ao != AoMode::Gtao) aoHistory_->invalidate();  // the sequence broke
     const float aoIntensity = std::clamp(inputs.scene.aoIntensity, 0.0f, 1.0f);
     const bool aoMultiBounce = options_.aoSettings.multiBounce;
 
@@ -515,36 +516,25 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     environment.ltcMagnitude = ltcTable_->magnitude();
     environment.areaLightTextures = areaLightTextures_->descriptor();
     const float skyIntensity = inputs.scene.skyIntensity;
+    const LitInputs lit{&cameraBuffer_, &lights_->buffer(), clusters_.get(),       environment,
+                        skyIntensity,   shadowDescriptors,  skyOcclusionDescriptor};
     {
-        auto p = g.addPass("lighting", PassKind::Device,
-                           [this, gbufferViews, ids, environment, skyIntensity, occlusion,
-                            specularOcclusion, aoIntensity, aoMultiBounce, shadowDescriptors,
-                            skyOcclusionDescriptor](PassContext& ctx) {
-                               const GBufferTargets targets = gbufferViews(ctx);
-                               LightingPass::Inputs lighting{&targets,
-                                                             ctx.image(ids.hdr),
-                                                             &cameraBuffer_,
-                                                             &lights_->buffer(),
-                                                             &clusters_->ranges(),
-                                                             &clusters_->indices(),
-                                                             &pairCounts_,
-                                                             &clusters_->depthRange(),
-                                                             &clusters_->grid(),
-                                                             clusters_->directionalCount()};
-                               lighting.environment = &environment;
-                               lighting.lightCount = lights_->count();
-                               lighting.skyIntensity = skyIntensity;
-                               lighting.referenceSamples = options_.referenceSamples;
-                               if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
-                               if (specularOcclusion) {
-                                   lighting.specularOcclusion = ctx.image(*specularOcclusion);
-                               }
-                               lighting.aoIntensity = aoIntensity;
-                               lighting.aoMultiBounce = aoMultiBounce;
-                               lighting.shadows = &shadowDescriptors;
-                               lighting.skyOcclusion = skyOcclusionDescriptor;
-                               lightingPass_->record(ctx.cmd(), lighting);
-                           });
+        auto p = g.addPass(
+            "lighting", PassKind::Device,
+            [this, gbufferViews, ids, lit, occlusion, specularOcclusion, aoIntensity,
+             aoMultiBounce](PassContext& ctx) {
+                const GBufferTargets targets = gbufferViews(ctx);
+                LightingPass::Inputs lighting{&targets, ctx.image(ids.hdr), lit, &pairCounts_};
+                lighting.lightCount = lights_->count();
+                lighting.referenceSamples = options_.referenceSamples;
+                if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
+                if (specularOcclusion) {
+                    lighting.specularOcclusion = ctx.image(*specularOcclusion);
+                }
+                lighting.aoIntensity = aoIntensity;
+                lighting.aoMultiBounce = aoMultiBounce;
+                lightingPass_->record(ctx.cmd(), lighting);
+            });
         for (ResourceHandle c : h.color)
             p.read(c, Use::Sampled);
         p.read(h.depth, Use::Sampled);
@@ -553,10 +543,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             p.read(h.clearCoat, Use::Sampled);
         }
         p.read(h.camera, Use::Uniform);
-        readLitInputs(p, kComputeStage);
+        litReads.declareReads(p, kComputeStage);
         if (occlusion) p.read(*occlusion, Use::Sampled);
         if (specularOcclusion) p.read(*specularOcclusion, Use::Sampled);
-        if (features.skyOcclusion) p.read(skyOcclusionAtlas, Use::Sampled, kComputeStage);
         if (features.countLightPairs) p.write(pairCounts, Use::StorageReadWrite);  // atomics
         h.hdr = p.write(h.hdr, Use::StorageReadWrite);
     }
@@ -565,12 +554,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.hdr = atmospherePass_->declareBackground(g, h.camera, h.depth, h.hdr, cameraBuffer_);
     }
     ssrTraced_ = false;
-    hairDrawn_ = false;
-    const bool ssrHistoryWas = ssrHistoryValid_;
-    ssrHistoryValid_ = false;  // unless this frame filters (a frame without SSR breaks it)
     if (options_.ssr != SsrMode::Off &&
         hasGlossySurface(inputs.scene, resources, options_.ssrSettings.roughnessCutoff)) {
-        ssrHistoryValid_ = ssrHistoryWas;
         // As LightingPass::setFeatures picks its variant.
         const uint32_t aoMode = features.ao == AoMode::Gtao && features.aoSpecularFromHorizons
                                     ? 3u
@@ -578,6 +563,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.hdr.version = declareSsr(h, environment, features.ibl.has_value(),
                                    features.ibl == IblMode::Mobile, inputs.scene.skyIntensity,
                                    SsrOcclusion{occlusion, specularOcclusion, aoMode, aoIntensity});
+    } else {
+        ssrHistory_->invalidate();  // a frame without SSR breaks the sequence
     }
     // The integrated froxel buffer (common/froxel_grid.glsl): the fog's grid (froxel
     // volumetrics; blended surfaces under per-light volumes) and the air's aerial-perspective
@@ -802,159 +789,24 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         inputs, h,
         ShadowReads{features.shadows, shadowAtlas, shadowViews, shadowLights, shadowDescriptors},
         airFroxels ? &*froxels : nullptr, fogBoundaries);
-    // Hair (TressFX, Martin et al., GPU Pro 5) over the lit frame, under the wires and blended
-    // surfaces, which then see its depth.
-    if (!inputs.scene.hair.empty()) {
-        if (!hairPass_) hairPass_ = std::make_unique<HairPass>(context_);
-        if (hairPass_->prepare(inputs.scene, features, options_.hairShading,
-                               options_.hairSelfShadow)) {
-            features_.push_back("hair");
-            hairDrawn_ = true;
-            const uint32_t capacity = uint32_t(std::min<uint64_t>(
-                {uint64_t(std::max(options_.hairNodesPerPixel, 1u)) * width_ * height_, 1u << 26,
-                 HairPass::maxNodes(context_)}));
-            hairNodeCapacity_ = capacity;
-            const glm::mat4& projection = inputs.scene.camera.projection;
-            HairPass::Inputs base{};
-            base.nodeCapacity = capacity;
-            base.pixelRadiusPerDepth = 1.0f / (std::abs(projection[1][1]) * float(height_));
-            base.nearPlane = inputs.scene.camera.nearPlane;
-            base.skyIntensity = skyIntensity;
-            ResourceHandle heads = g.createBuffer(
-                "hair.heads", HairPass::headBytes(width_, height_),
-                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-            ResourceHandle nodes = g.createBuffer("hair.nodes", HairPass::nodeBytes(capacity),
-                                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-            ResourceHandle counters = g.importBuffer("hair.counters", &hairPass_->counters(), true);
-            // Self-shadowing (TressFX, Martin et al., GPU Pro 5): a hair depth map for every shadow
-            // view, only in frames where some light has a shadow map.
-            const bool selfShadow = features.shadows &&
-                                    options_.hairSelfShadow != HairSelfShadow::Off &&
-                                    options_.hairShading == HairShading::Lit;
-            ResourceHandle hairShadow{};
-            if (selfShadow) {
-                hairShadow =
-                    g.createImage("hair.shadow_depth",
-                                  HairPass::hairShadowDepthDesc(shadowPass_->atlas().desc().width));
-                features_.push_back("hair_self_shadow");
-            }
-            auto inputsOf = [this, ids, base, heads, nodes, environment, shadowDescriptors,
-                             selfShadow, hairShadow, froxels](PassContext& ctx) {
-                HairPass::Inputs in = base;
-                if (froxels) {
-                    in.froxels = true;
-                    in.froxelIntegrated = ctx.buffer(*froxels);
-                }
-                in.selfShadow = selfShadow;
-                if (selfShadow) in.hairShadow = ctx.image(hairShadow);
-                in.hdr = ctx.image(ids.hdr);
-                in.depth = ctx.image(ids.depth);
-                in.heads = ctx.buffer(heads);
-                in.nodes = ctx.buffer(nodes);
-                in.camera = &cameraBuffer_;
-                in.lights = &lights_->buffer();
-                in.clusterRanges = &clusters_->ranges();
-                in.lightIndices = &clusters_->indices();
-                in.depthRange = &clusters_->depthRange();
-                in.grid = &clusters_->grid();
-                in.directionalCount = clusters_->directionalCount();
-                in.environment = &environment;
-                in.shadows = &shadowDescriptors;
-                return in;
-            };
-            {
-                auto p =
-                    g.addPass("hair_clear", PassKind::Device, [this, inputsOf](PassContext& ctx) {
-                        hairPass_->recordClear(ctx.cmd(), inputsOf(ctx));
-                    });
-                heads = p.write(heads, Use::TransferDst);
-                counters = p.write(counters, Use::TransferDst);
-            }
-            {
-                auto p =
-                    g.addPass("hair_fill", PassKind::Device, [this, inputsOf](PassContext& ctx) {
-                        hairPass_->recordFill(ctx.cmd(), inputsOf(ctx));
-                    });
-                p.read(h.depth, Use::DepthRead);
-                p.read(h.camera, Use::Uniform, kRasterStages);
-                heads = p.write(heads, Use::StorageReadWrite, kFragmentStage);
-                nodes = p.write(nodes, Use::StorageWrite, kFragmentStage);
-                counters = p.write(counters, Use::StorageReadWrite, kFragmentStage);
-            }
-            if (selfShadow) {
-                auto p = g.addPass("hair_shadow_depth", PassKind::Device,
-                                   [this, inputsOf](PassContext& ctx) {
-                                       hairPass_->recordShadowDepth(ctx.cmd(), inputsOf(ctx),
-                                                                    shadowPass_->views());
-                                   });
-                p.read(shadowViews, Use::StorageRead, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
-                hairShadow = p.write(hairShadow, Use::DepthWrite);
-            }
-            {
-                auto p =
-                    g.addPass("hair_resolve", PassKind::Device, [this, inputsOf](PassContext& ctx) {
-                        hairPass_->recordResolve(ctx.cmd(), inputsOf(ctx));
-                    });
-                p.read(h.camera, Use::Uniform, kRasterStages);
-                p.read(heads, Use::StorageRead, kFragmentStage);
-                p.read(nodes, Use::StorageRead, kFragmentStage);
-                readLitInputs(p, kFragmentStage);
-                if (selfShadow) p.read(hairShadow, Use::Sampled, kFragmentStage);
-                if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
-                h.hdr = p.write(h.hdr, Use::ColorAttachment);
-            }
-            {
-                auto p =
-                    g.addPass("hair_depth", PassKind::Device, [this, inputsOf](PassContext& ctx) {
-                        hairPass_->recordDepth(ctx.cmd(), inputsOf(ctx));
-                    });
-                p.read(h.camera, Use::Uniform, kRasterStages);
-                p.read(heads, Use::StorageRead, kFragmentStage);
-                p.read(nodes, Use::StorageRead, kFragmentStage);
-                h.depth = p.write(h.depth, Use::DepthWrite);
-            }
-        }
+    // The features that own themselves, in frame order (hair, then wires: over the lit frame
+    // and its medium, under the blended surfaces, which then see the hair's depth).
+    FrameBlackboard& board = *board_;
+    board.clear();
+    board.put(SceneTargets{h.hdr, h.depth, h.motion, h.camera});
+    board.put(LitFrame{lit, litReads});
+    if (froxels) board.put(IntegratedFroxels{*froxels});
+    if (features.shadows) {
+        board.put(ShadowFrame{shadowPass_.get(), shadowAtlas, shadowViews, shadowLights});
     }
-    // Wires (Persson, GPU Pro 5, "Wire Antialiasing") over the lit frame and its medium, under the
-    // blended surfaces.
-    if (!inputs.scene.wires.empty()) {
-        if (!wirePass_) wirePass_ = std::make_unique<WirePass>(context_);
-        if (wirePass_->prepare(inputs.scene, features, options_.wires)) {
-            features_.push_back("wires");
-            const glm::mat4& projection = inputs.scene.camera.projection;
-            const float pixelRadiusPerDepth = 1.0f / (std::abs(projection[1][1]) * float(height_));
-            const float nearPlane = inputs.scene.camera.nearPlane;
-            auto p = g.addPass("wires", PassKind::Device,
-                               [this, ids, environment, skyIntensity, shadowDescriptors,
-                                pixelRadiusPerDepth, nearPlane, froxels](PassContext& ctx) {
-                                   WirePass::Inputs in{};
-                                   in.hdr = ctx.image(ids.hdr);
-                                   in.depth = ctx.image(ids.depth);
-                                   in.camera = &cameraBuffer_;
-                                   in.lights = &lights_->buffer();
-                                   in.clusterRanges = &clusters_->ranges();
-                                   in.lightIndices = &clusters_->indices();
-                                   in.depthRange = &clusters_->depthRange();
-                                   in.grid = &clusters_->grid();
-                                   in.directionalCount = clusters_->directionalCount();
-                                   in.environment = &environment;
-                                   in.skyIntensity = skyIntensity;
-                                   in.shadows = &shadowDescriptors;
-                                   in.pixelRadiusPerDepth = pixelRadiusPerDepth;
-                                   in.nearPlane = nearPlane;
-                                   if (froxels) {
-                                       in.froxels = true;
-                                       in.froxelIntegrated = ctx.buffer(*froxels);
-                                   }
-                                   wirePass_->record(ctx.cmd(), in);
-                               });
-            p.read(h.depth, Use::DepthRead);
-            p.read(h.camera, Use::Uniform, kRasterStages);
-            readLitInputs(p, kFragmentStage);
-            if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
-            h.hdr = p.write(h.hdr, Use::ColorAttachment);
-        }
+    FeatureFrame frame{g,       inputs,   resources, options_,  width_,
+                       height_, features, board,     features_, declaredWork_};
+    for (size_t i = 0; i < renderFeatures_.size(); ++i) {
+        featureDeclared_[i] = renderFeatures_[i]->active(frame);
+        if (featureDeclared_[i]) renderFeatures_[i]->declare(frame);
     }
+    h.hdr = board.get<SceneTargets>().hdr;
+    h.depth = board.get<SceneTargets>().depth;
     if (blended) {
         // MSAA: multisampled copies of the targets, made only for frames with blended draws.
         const VkSampleCountFlagBits samples = transparentPass_->samples();
@@ -969,22 +821,12 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             msaaDepth = g.createImage("forward.msaa_depth", ForwardTransparentPass::msaaDepthDesc(
                                                                 width_, height_, samples));
         }
-        auto shadingInputs = [this, ids, environment, skyIntensity, shadowDescriptors, msaa,
-                              msaaHdr, msaaMotion, msaaDepth](PassContext& ctx) {
+        auto shadingInputs = [ids, lit, msaa, msaaHdr, msaaMotion, msaaDepth](PassContext& ctx) {
             ForwardTransparentPass::ShadingInputs in{};
             in.hdr = ctx.image(ids.hdr);
             in.motion = ctx.image(ids.motion);
             in.depth = ctx.image(ids.depth);
-            in.camera = &cameraBuffer_;
-            in.lights = &lights_->buffer();
-            in.clusterRanges = &clusters_->ranges();
-            in.lightIndices = &clusters_->indices();
-            in.depthRange = &clusters_->depthRange();
-            in.grid = &clusters_->grid();
-            in.directionalCount = clusters_->directionalCount();
-            in.environment = &environment;
-            in.skyIntensity = skyIntensity;
-            in.shadows = &shadowDescriptors;
+            in.lit = lit;
             if (msaa) {
                 in.msaaHdr = ctx.image(msaaHdr);
                 in.msaaMotion = ctx.image(msaaMotion);
@@ -1005,19 +847,16 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             msaaMotion = e.write(msaaMotion, Use::ColorAttachment);
             msaaDepth = e.write(msaaDepth, Use::DepthWrite);
         }
-        auto p = g.addPass(
-            "forward_transparent", PassKind::Device,
-            [this, shadingInputs, froxels, skyOcclusionDescriptor, &resources](PassContext& ctx) {
-                ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
-                in.skyOcclusion = skyOcclusionDescriptor;
-                if (froxels) {
-                    in.froxels = true;
-                    in.froxelIntegrated = ctx.buffer(*froxels);
-                }
-                transparentPass_->recordShading(ctx.cmd(), resources, in);
-            });
+        auto p = g.addPass("forward_transparent", PassKind::Device,
+                           [this, shadingInputs, froxels, &resources](PassContext& ctx) {
+                               ForwardTransparentPass::ShadingInputs in = shadingInputs(ctx);
+                               if (froxels) {
+                                   in.froxels = true;
+                                   in.froxelIntegrated = ctx.buffer(*froxels);
+                               }
+                               transparentPass_->recordShading(ctx.cmd(), resources, in);
+                           });
         if (froxels) p.read(*froxels, Use::StorageRead, kFragmentStage);
-        if (features.skyOcclusion) p.read(skyOcclusionAtlas, Use::Sampled, kFragmentStage);
         if (msaa) {
             // Drawn into, then resolved into hdr and motion (their last use).
             p.read(msaaDepth, Use::DepthRead);
@@ -1028,7 +867,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         }
         p.read(h.camera, Use::Uniform, kRasterStages);
         readDeformed(p);
-        readLitInputs(p, kFragmentStage);
+        litReads.declareReads(p, kFragmentStage);
         h.hdr = p.write(h.hdr, Use::ColorAttachment);
         h.motion = p.write(h.motion, Use::ColorAttachment);
         features_.push_back("forward_transparency");
@@ -1101,7 +940,7 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     if (taaPass_ && features_[0] != "test_triangle") {
         hdr.version = declareTaa(hdr.id, hdr.version, exposure);
     } else {
-        historyValid_ = false;  // a frame without history breaks the sequence
+        taaHistory_->invalidate();  // a frame without history breaks the sequence
     }
     if (gbaaPass_ && sceneFrame) hdr.version = declareGbaa(hdr.id, hdr.version);
     if (histogramPass_ && sceneFrame) declareHistogram(hdr.id, hdr.version);

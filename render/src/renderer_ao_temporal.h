@@ -6,10 +6,9 @@
 
 #include "frame_graph/frame_graph.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
+#include "temporal_history.h"
 
 namespace candela::render {
-
-class GpuImage;
 
 // GTAO's temporal accumulation after its denoise (ao_temporal.comp): reads the history
 // written last frame, writes the other; returns the accumulated occlusion.
@@ -17,9 +16,7 @@ struct AoTemporalDeclaration {
     ResourceHandle current, motion, depth, normal, camera;
     const AmbientOcclusionPass* pass;
     AmbientOcclusionPass::Inputs aoInputs;
-    const GpuImage* readHistory;
-    const GpuImage* writeHistory;
-    bool historyValid;
+    TemporalHistory::Frame history;
     uint32_t maxFrames;
     uint32_t width, height;
 };

@@ -18,28 +18,19 @@
 #include "passes/exposure/exposure_bindings.h"
 #include "passes/exposure/exposure_pass.h"
 #include "passes/taa/taa_pass.h"
+#include "temporal_history.h"
 
 namespace candela::render {
 
 uint32_t Renderer::declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposure) {
     FrameGraph& g = *graph_;
     features_.push_back("taa");
-    // The history written last frame is read in the state that frame left it in (created in
-    // it: createTargets); the other image's contents (the frame before's) are discarded.
-    constexpr ImageState kSampledByCompute{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                           VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
-    constexpr ImageState kDiscard{VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                  0};
-    const GpuImage& readImage = history_[historyWrite_ ^ 1u];
-    const GpuImage& writeImage = history_[historyWrite_];
-    const ResourceHandle history =
-        g.importImage("taa.history", &readImage, kSampledByCompute, ImageState{});
-    ResourceHandle resolved =
-        g.importImage("taa.resolved", &writeImage, kDiscard, kSampledByCompute);
+    const TemporalHistory::Frame frame = taaHistory_->declare(g, "taa.history", "taa.resolved");
+    const ResourceHandle history = frame.previous;
+    ResourceHandle resolved = frame.written;
     ResourceHandle hdr{hdrId, hdrVersion};
     const ResourceHandle motion{motionId_, motionVersion_};
-    const TaaPass::Settings settings{exposure, options_.taaMinimumBlend, historyValid_,
+    const TaaPass::Settings settings{exposure, options_.taaMinimumBlend, frame.valid,
                                      options_.taaSharpness};
     {
         auto p = g.addPass("taa", PassKind::Device,
@@ -54,8 +45,6 @@ uint32_t Renderer::declareTaa(uint32_t hdrId, uint32_t hdrVersion, float exposur
         resolved = p.write(resolved, Use::StorageWrite);
     }
     hdr = declareImageCopy(g, "taa_copy", resolved, hdr);
-    historyWrite_ ^= 1u;
-    historyValid_ = true;
     return hdr.version;
 }
 

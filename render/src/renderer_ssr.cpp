@@ -11,6 +11,7 @@
 #include "ibl/environment_descriptors.h"
 #include "passes/ssr/ssr_pass.h"
 #include "renderer_frame_handles.h"
+#include "temporal_history.h"
 
 namespace candela::render {
 
@@ -116,21 +117,14 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
         reflection = p.write(reflection, Use::StorageWrite);
     }
     if (options_.ssrSettings.temporal) {
-        // As TAA's history: last frame's image is read in the state it was left in, the
-        // other's contents are discarded and rewritten.
-        constexpr ImageState kSampledByCompute{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                               VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
-        constexpr ImageState kDiscard{VK_IMAGE_LAYOUT_UNDEFINED,
-                                      VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, 0};
         features_.push_back("ssr_temporal");
-        const ResourceHandle history = g.importImage(
-            "ssr.history", &ssrHistory_[ssrHistoryWrite_ ^ 1u], kSampledByCompute, ImageState{});
-        ResourceHandle filtered = g.importImage(
-            "ssr.history_written", &ssrHistory_[ssrHistoryWrite_], kDiscard, kSampledByCompute);
+        const TemporalHistory::Frame frame =
+            ssrHistory_->declare(g, "ssr.history", "ssr.history_written");
+        const ResourceHandle history = frame.previous;
+        ResourceHandle filtered = frame.written;
         const ResourceHandle motion = h.motion;
         const ResourceHandle current = reflection;
-        const bool valid = ssrHistoryValid_;
+        const bool valid = frame.valid;
         const float blend = options_.ssrSettings.temporalBlend;
         auto t =
             g.addPass("ssr_temporal", PassKind::Device,
@@ -144,8 +138,6 @@ uint32_t Renderer::declareSsr(const SceneHandles& h, const EnvironmentDescriptor
         t.read(motion, Use::Sampled);
         t.read(history, Use::Sampled);
         reflection = t.write(filtered, Use::StorageWrite);
-        ssrHistoryWrite_ ^= 1u;
-        ssrHistoryValid_ = true;
     }
     auto p =
         g.addPass("ssr_composite", PassKind::Device, [this, reflection, hdr](PassContext& ctx) {

@@ -6,8 +6,8 @@
 
 #include "candela/render/renderer.h"
 #include "clustered/cluster_light_lists.h"
+#include "features/render_feature.h"
 #include "frame_graph/frame_graph_executor.h"
-#include "passes/hair/hair_pass.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/scattering/scattering_pass.h"
 #include "passes/ssr/ssr_pass.h"
@@ -54,15 +54,8 @@ const RendererStats& Renderer::collectStats() {
         if (name.starts_with("ssr_")) stats_.ssrMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
     }
-    stats_.hairNodes = 0;
-    stats_.hairNodesDropped = 0;
-    stats_.hairNodeCapacity = 0;
-    if (hairDrawn_) {
-        stats_.hairNodes = hairPass_->requestedNodes();
-        stats_.hairNodeCapacity = hairNodeCapacity_;
-        stats_.hairNodesDropped =
-            stats_.hairNodes > hairNodeCapacity_ ? stats_.hairNodes - hairNodeCapacity_ : 0;
-    }
+    for (size_t i = 0; i < renderFeatures_.size(); ++i)
+        renderFeatures_[i]->collectStats(stats_, featureDeclared_[i]);
     uint64_t ssrSteps = 0;
     if (ssrTraced_) {
         const SsrPass::Counts c = ssrPass_->readCounters();

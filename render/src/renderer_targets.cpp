@@ -11,10 +11,12 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/renderer.h"
 #include "clustered/cluster_light_lists.h"
+#include "features/render_feature.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/ssr/ssr_pass.h"
 #include "passes/upscale/upscale_pass.h"
+#include "temporal_history.h"
 #include "vk/image_transfer.h"
 
 namespace candela::render {
@@ -92,38 +94,24 @@ void Renderer::createTargets() {
         // start cleared and shader-readable, so every frame imports them in the same states
         // and the compiled graph is reused from the second frame on (the first frame ignores
         // the history through a push constant, not a different graph).
-        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
-        for (GpuImage& h : history_) {
-            h = GpuImage(context_,
-                         {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
-                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
-            writeImage(context_, h, 16, zeros.data());
-        }
+        taaHistory_->create(context_,
+                            {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
+                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT},
+                            16);
     }
-    historyValid_ = false;
+    taaHistory_->invalidate();
     hasPreviousFrame_ = false;
     frameIndex_ = 0;
     if (aoAccumulates()) {
-        // Cleared and shader-readable from the start, like TAA's, so every frame imports them
-        // in the same states (the first frame ignores the history through a push constant).
-        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
-        for (GpuImage& h : aoHistory_) {
-            h = GpuImage(context_, AmbientOcclusionPass::historyDesc(width_, height_));
-            writeImage(context_, h, 16, zeros.data());
-        }
+        aoHistory_->create(context_, AmbientOcclusionPass::historyDesc(width_, height_), 16);
     }
-    aoHistoryValid_ = false;
+    aoHistory_->invalidate();
     aoFrame_ = 0;
     if (options_.ssr != SsrMode::Off && options_.ssrSettings.temporal) {
-        // Cleared and shader-readable from the start, as AO's (the first frame ignores them).
-        const std::vector<uint8_t> zeros(size_t(width_) * height_ * 16, 0);
-        for (GpuImage& h : ssrHistory_) {
-            h = GpuImage(context_, SsrPass::historyDesc(width_, height_));
-            writeImage(context_, h, 16, zeros.data());
-        }
+        ssrHistory_->create(context_, SsrPass::historyDesc(width_, height_), 16);
     }
-    ssrHistoryValid_ = false;
+    ssrHistory_->invalidate();
     // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
     if (upscalePass_) {
         // Written by the upscale pass, read by tonemapping, copied by captures.
@@ -156,10 +144,12 @@ bool Renderer::aoAccumulates() const {
 }
 
 void Renderer::restartTemporalHistory() {
-    historyValid_ = false;
-    ssrHistoryValid_ = false;
-    aoHistoryValid_ = false;
+    taaHistory_->invalidate();
+    ssrHistory_->invalidate();
+    aoHistory_->invalidate();
     aoFrame_ = 0;
+    for (const std::unique_ptr<RenderFeature>& feature : renderFeatures_)
+        feature->restartHistory();
     hasPreviousFrame_ = false;
     frameIndex_ = 0;
     adaptedEv100_.reset();

@@ -25,8 +25,8 @@ namespace candela::render {
 
 class ClusterLightLists;
 class ForwardTransparentPass;
-class WirePass;
-class HairPass;
+class FrameBlackboard;
+class RenderFeature;
 class EnvironmentBrdfLut;
 class EnvironmentPlaceholders;
 class EnvironmentSamplingTable;
@@ -49,6 +49,7 @@ class ScatteringPass;
 class SceneResources;
 class TonemapPass;
 class TaaPass;
+class TemporalHistory;
 class FxaaPass;
 class UpscalePass;
 class GbaaPass;
@@ -211,15 +212,11 @@ private:
     glm::vec2 previousJitter_{0.0f};
     bool hasPreviousFrame_ = false;
     uint32_t frameIndex_ = 0;  // scene frames since creation or resize: the jitter phase
-    std::array<GpuImage, 2> history_;
-    uint32_t historyWrite_ = 0;
-    bool historyValid_ = false;
+    std::unique_ptr<TemporalHistory> taaHistory_;
     // GTAO's temporal accumulation (ao_temporal.comp): two RGBA32UI histories like TAA's, made
     // only when the options accumulate, and the frame count that rotates GTAO's slices.
     bool aoAccumulates() const;
-    std::array<GpuImage, 2> aoHistory_;
-    uint32_t aoHistoryWrite_ = 0;
-    bool aoHistoryValid_ = false;
+    std::unique_ptr<TemporalHistory> aoHistory_;
     uint32_t aoFrame_ = 0;
     uint32_t motionId_ = UINT32_MAX;  // this frame's gbuffer.motion in the graph
     uint32_t motionVersion_ = 0;
@@ -251,18 +248,17 @@ private:
     WorkCounters declaredWork_;
     // SSR's temporal filter: two reflection histories like TAA's (made when the options ask
     // for it), the one written last frame and whether it holds a frame.
-    std::array<GpuImage, 2> ssrHistory_;
-    uint32_t ssrHistoryWrite_ = 0;
-    bool ssrHistoryValid_ = false;
+    std::unique_ptr<TemporalHistory> ssrHistory_;
     std::unique_ptr<VolumetricsPass> volumetricsPass_;  // made on the first frame with a medium
     std::unique_ptr<AtmospherePass> atmospherePass_;    // made on the first frame with a sky
     std::unique_ptr<ScatteringPass> scatteringPass_;    // made on the first frame with shafts
     bool scatteringMarched_ = false;  // this frame declared light shafts (their counters)
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
-    std::unique_ptr<WirePass> wirePass_;  // made for the first frame with wires
-    std::unique_ptr<HairPass> hairPass_;  // made for the first frame with hair
-    bool hairDrawn_ = false;              // the last recorded frame drew hair (its stats)
-    uint32_t hairNodeCapacity_ = 0;
+    // The techniques that own themselves (features/render_feature.h), in frame order, and
+    // which of them the last declared frame declared.
+    std::vector<std::unique_ptr<RenderFeature>> renderFeatures_;
+    std::vector<bool> featureDeclared_;
+    std::unique_ptr<FrameBlackboard> board_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<SkyOcclusionPass> skyOcclusionPass_;

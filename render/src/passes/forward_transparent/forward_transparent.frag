@@ -16,10 +16,6 @@
 #include "common/material.glsl"
 #include "common/motion_vectors.glsl"
 #include "common/shading_models.glsl"
-#define SHADOW_ATLAS_BINDING FORWARD_BINDING_SHADOW_ATLAS
-#define SHADOW_ATLAS_COMPARE_BINDING FORWARD_BINDING_SHADOW_ATLAS_COMPARE
-#define SHADOW_VIEWS_BINDING FORWARD_BINDING_SHADOW_VIEWS
-#define SHADOW_LIGHTS_BINDING FORWARD_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
 #define FROXEL_INTEGRATED_BINDING FORWARD_BINDING_FROXEL_INTEGRATED
 #include "common/froxel_lookup.glsl"
@@ -32,23 +28,8 @@ layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 // Sky occlusion as the lighting pass applies it (off: the full sky).
 layout(constant_id = SPEC_SKY_OCCLUSION) const bool kSkyOcclusion = false;
 
-layout(std430, binding = FORWARD_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
-    uint clusterRanges[];
-};
-layout(std430, binding = FORWARD_BINDING_LIGHT_INDICES) readonly buffer LightIndices {
-    uint lightIndices[];
-};
-// The frame's slicing from depth_occupancy.comp ([2] sliceNear, [3] logRatio as float bits):
-// read here, as lists assigned on the device leave the host without it.
-layout(std430, binding = FORWARD_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
-    uint depthRange[];
-};
+#include "common/lit_inputs.glsl"
 #include "common/pixel_lights.glsl"
-layout(binding = FORWARD_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
-layout(binding = FORWARD_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
-layout(std430, binding = FORWARD_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
-    vec4 irradianceSh[9];
-};
 
 
 layout(push_constant) uniform Draw {

@@ -43,7 +43,8 @@ struct DrawPush {
     float prefilteredMipCount;
 };
 
-static_assert(FORWARD_BINDING_FIRST_TEXTURE + kTextureSlotCount <= FORWARD_BINDING_CLUSTER_RANGES);
+static_assert(FORWARD_BINDING_FIRST_TEXTURE + kTextureSlotCount <=
+              FORWARD_BINDING_FROXEL_INTEGRATED);
 
 // Specialization constants shared with the lighting pass (shading_models.glsl, lights.glsl,
 // forward_transparent.frag).
@@ -176,44 +177,15 @@ void ForwardTransparentPass::buildShadingPipeline() {
     desc.dynamicCullMode = true;
     desc.samples = samples_;
     desc.specialization = &constants;
-    std::vector<DescriptorBinding> bindings = {
-        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+    const DescriptorBinding own[] = {
         {PREVIOUS_WORLDS_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
-        {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_LIGHT_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_PREFILTERED, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_BRDF_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_IRRADIANCE_SH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_SHADOW_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_SKY_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
         {FORWARD_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
-        {FORWARD_BINDING_AREA_LIGHT_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
     };
+    std::vector<DescriptorBinding> bindings =
+        withLitInputBindings(own, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
     for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
         bindings.push_back({FORWARD_BINDING_FIRST_TEXTURE + slot,
                             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
@@ -360,54 +332,32 @@ void ForwardTransparentPass::recordShading(VkCommandBuffer cmd, SceneResources& 
     shading_.bind(cmd);
 
     const GpuBuffer& materials = resources.materialBuffer();
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo materialInfo{materials.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo previousInfo{previousWorlds_->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo froxelInfo{
         in.froxels ? in.froxelIntegrated.handle() : noMedium_.handle(), 0, VK_WHOLE_SIZE};
     DrawPush push{};
-    push.directionalCount = in.directionalCount;
-    push.grid = toGpu(*in.grid);
+    push.directionalCount = in.lit.clusters->directionalCount();
+    push.grid = toGpu(in.lit.clusters->grid());
     push.size[0] = width;
     push.size[1] = height;
-    push.skyIntensity = in.skyIntensity;
-    push.prefilteredMipCount = in.environment->prefilteredMipCount;
+    push.skyIntensity = in.lit.skyIntensity;
+    push.prefilteredMipCount = in.lit.environment.prefilteredMipCount;
     for (size_t i = 0; i < sorted_.size(); ++i) {
         const DrawItem& draw = sorted_[i];
         const MaterialBinding& binding = resources.materialBinding(draw.material);
         std::array<VkDescriptorImageInfo, kTextureSlotCount> images{};
-        std::vector<VkWriteDescriptorSet> writes = {
-            uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
+        std::vector<VkWriteDescriptorSet> own = {
             storageBufferWrite(PREVIOUS_WORLDS_BINDING, &previousInfo),
-            storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
             storageBufferWrite(FORWARD_BINDING_MATERIALS, &materialInfo),
-            storageBufferWrite(FORWARD_BINDING_CLUSTER_RANGES, &rangesInfo),
-            storageBufferWrite(FORWARD_BINDING_LIGHT_INDICES, &indicesInfo),
-            storageBufferWrite(FORWARD_BINDING_DEPTH_RANGE, &depthRangeInfo),
-            sampledImageWrite(FORWARD_BINDING_PREFILTERED, &in.environment->prefiltered),
-            sampledImageWrite(FORWARD_BINDING_BRDF_LUT, &in.environment->brdfLut),
-            storageBufferWrite(FORWARD_BINDING_IRRADIANCE_SH, &in.environment->irradianceSh),
-            sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
-            storageBufferWrite(FORWARD_BINDING_SHADOW_VIEWS, &in.shadows->views),
-            storageBufferWrite(FORWARD_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
-            sampledImageWrite(FORWARD_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
-            sampledImageWrite(FORWARD_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
-            sampledImageWrite(FORWARD_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude),
-            sampledImageWrite(FORWARD_BINDING_SKY_OCCLUSION, &in.skyOcclusion),
-            storageBufferWrite(FORWARD_BINDING_FROXEL_INTEGRATED, &froxelInfo),
-            sampledImageWrite(FORWARD_BINDING_AREA_LIGHT_TEXTURES,
-                              &in.environment->areaLightTextures)};
+            storageBufferWrite(FORWARD_BINDING_FROXEL_INTEGRATED, &froxelInfo)};
         for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
             const GpuTexture& t = resources.texture(binding.textures[slot]);
             images[slot] = {t.sampler, t.image.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-            writes.push_back(
-                sampledImageWrite(FORWARD_BINDING_FIRST_TEXTURE + slot, &images[slot]));
+            own.push_back(sampledImageWrite(FORWARD_BINDING_FIRST_TEXTURE + slot, &images[slot]));
         }
-        shading_.pushDescriptors(cmd, writes);
+        const LitDescriptorWrites writes(in.lit, own);
+        shading_.pushDescriptors(cmd, writes.writes());
         vkCmdSetCullMode(cmd, resources.material(draw.material).doubleSided
                                   ? VK_CULL_MODE_NONE
                                   : VK_CULL_MODE_BACK_BIT);

@@ -81,22 +81,10 @@ public:
         ImageRef msaaHdr;
         ImageRef msaaMotion;
         ImageRef msaaDepth;
-        const GpuBuffer* camera;
-        const GpuBuffer* lights;
-        const GpuBuffer* clusterRanges;
-        const GpuBuffer* lightIndices;
-        const GpuBuffer* depthRange;  // the slicing DepthOccupancyPass derived
-        const ClusterGrid* grid;
-        uint32_t directionalCount;
-        const EnvironmentDescriptors* environment;  // the sky (features().ibl), or placeholders
-        float skyIntensity;
-        const ShadowDescriptors* shadows;  // the atlas and tables, or placeholders
+        LitInputs lit;
         // Froxels (passes/volumetrics), read in the fragment shader; null: no medium.
         bool froxels = false;  // froxelIntegrated holds the frame's grid
         BufferRef froxelIntegrated;
-        // The sky occlusion atlas (features().skyOcclusion) or its placeholder
-        // (SkyOcclusionPass::descriptor).
-        VkDescriptorImageInfo skyOcclusion{};
     };
     void recordShading(VkCommandBuffer cmd, SceneResources& resources,
                        const ShadingInputs& in) const;

@@ -1,11 +1,10 @@
 // Bindings of the hair shaders (hair_fill.*, hair_resolve.frag, hair_depth.frag), shared with
-// hair_pass.cpp (valid in C++ and GLSL). Camera and lights: common/shared_bindings.h. The hair
-// passes have their own descriptor layouts (the forward pass is at lavapipe's 32 push
-// descriptors).
+// hair_pass.cpp (valid in C++ and GLSL). The resolve also binds the lit inputs
+// (common/lit_bindings.h).
 #ifndef CANDELA_HAIR_BINDINGS_H
 #define CANDELA_HAIR_BINDINGS_H
 
-#include "common/shared_bindings.h"
+#include "common/lit_bindings.h"
 
 // The frame's strand segments, world space (HairSegment in hair_pass.cpp): two ranges of one
 // buffer, each at most maxStorageBufferRange, so hair past one binding's reach is split
@@ -16,25 +15,11 @@
 #define HAIR_BINDING_HEADS 3
 #define HAIR_BINDING_NODES 4
 #define HAIR_BINDING_COUNTERS 5
-#define HAIR_BINDING_CLUSTER_RANGES 6
-#define HAIR_BINDING_LIGHT_INDICES 7
-#define HAIR_BINDING_DEPTH_RANGE 8
-#define HAIR_BINDING_IRRADIANCE_SH 9
-// Shadows (common/shadows.glsl, passes/shadows/shadow_pass.h).
-#define HAIR_BINDING_SHADOW_ATLAS 10
-#define HAIR_BINDING_SHADOW_VIEWS 11
-#define HAIR_BINDING_SHADOW_LIGHTS 12
-#define HAIR_BINDING_SHADOW_ATLAS_COMPARE 13
-// The area lights' LTC table (lights/ltc_table_texture.h, common/area_lights.glsl).
-#define HAIR_BINDING_LTC_MATRIX 14
-#define HAIR_BINDING_LTC_MAGNITUDE 15
 // The hair depth map (hair_shadow.vert): the nearest strand from each shadow view, laid out as
 // the shadow atlas.
 #define HAIR_BINDING_HAIR_SHADOW 16
 // The integrated froxel buffer (common/froxel_lookup.glsl): the fog and air in front of the hair.
 #define HAIR_BINDING_FROXEL_INTEGRATED 17
-#define AREA_LIGHT_LTC_MATRIX_BINDING HAIR_BINDING_LTC_MATRIX
-#define AREA_LIGHT_LTC_MAGNITUDE_BINDING HAIR_BINDING_LTC_MAGNITUDE
 
 // The push block's `mode`: lit (Kajiya-Kay), or every fragment unlit radiance 1 (its coverage
 // alone: the GPAA measurement, RendererOptions::hairShading).

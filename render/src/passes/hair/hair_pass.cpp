@@ -212,27 +212,15 @@ void HairPass::buildPipelines() {
         desc.colorFormats = {VK_FORMAT_R32G32B32A32_SFLOAT};  // the HDR target
         desc.alphaBlend = true;
         desc.specialization = &constants;
-        const DescriptorBinding bindings[] = {
-            {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, raster},
-            {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
+        const DescriptorBinding own[] = {
             {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_SEGMENTS_HIGH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_HEADS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
             {HAIR_BINDING_NODES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-            {HAIR_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-            {HAIR_BINDING_LIGHT_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-            {HAIR_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-            {HAIR_BINDING_IRRADIANCE_SH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-            {HAIR_BINDING_SHADOW_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
-            {HAIR_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-            {HAIR_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
-            {HAIR_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-             fragment},
-            {HAIR_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
-            {HAIR_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
             {HAIR_BINDING_HAIR_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment},
             {HAIR_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fragment},
         };
+        const std::vector<DescriptorBinding> bindings = withLitInputBindings(own, raster);
         resolve_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
     }
     {
@@ -260,14 +248,14 @@ void HairPass::pushCommon(VkCommandBuffer cmd, const Pipeline& pipeline, const I
     setViewportAndScissor(cmd, width, height);
     pipeline.bind(cmd);
     HairPush push{};
-    push.grid = toGpu(*in.grid);
+    push.grid = toGpu(in.lit.clusters->grid());
     push.targetSize[0] = float(width);
     push.targetSize[1] = float(height);
     push.pixelRadiusPerDepth = in.pixelRadiusPerDepth;
     push.nearPlane = in.nearPlane;
     push.mode = shading_ == HairShading::Coverage ? HAIR_MODE_COVERAGE : HAIR_MODE_LIT;
-    push.directionalCount = in.directionalCount;
-    push.skyIntensity = in.skyIntensity;
+    push.directionalCount = in.lit.clusters->directionalCount();
+    push.skyIntensity = in.lit.skyIntensity;
     push.nodeCapacity = in.nodeCapacity;
     push.selfShadow = !in.selfShadow                             ? HAIR_SELF_SHADOW_OFF
                       : selfShadow_ == HairSelfShadow::Reference ? HAIR_SELF_SHADOW_REFERENCE
@@ -300,7 +288,7 @@ void beginDepthRendering(VkCommandBuffer cmd, const ImageRef& depth, bool write)
 
 void HairPass::recordFill(VkCommandBuffer cmd, const Inputs& in) const {
     beginDepthRendering(cmd, in.depth, false);
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo cameraInfo{in.lit.camera->handle(), 0, VK_WHOLE_SIZE};
     const std::array<VkDescriptorBufferInfo, 2> segmentInfo = segmentRanges();
     VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo nodeInfo{in.nodes.handle(), 0, VK_WHOLE_SIZE};
@@ -325,49 +313,34 @@ void HairPass::recordResolve(VkCommandBuffer cmd, const Inputs& in) const {
     const VkRenderingInfo rendering =
         renderingInfo(in.hdr.desc().width, in.hdr.desc().height, std::span(&color, 1));
     vkCmdBeginRendering(cmd, &rendering);
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
     const std::array<VkDescriptorBufferInfo, 2> segmentInfo = segmentRanges();
     VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo nodeInfo{in.nodes.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     // Without self-shadowing the atlas stands in (bound, never read).
+    const ShadowDescriptors& shadows = in.lit.shadows;
     const VkDescriptorImageInfo hairShadowInfo =
-        in.selfShadow ? VkDescriptorImageInfo{in.shadows->atlas.sampler, in.hairShadow.view(),
+        in.selfShadow ? VkDescriptorImageInfo{shadows.atlas.sampler, in.hairShadow.view(),
                                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}
-                      : in.shadows->atlas;
+                      : shadows.atlas;
     VkDescriptorBufferInfo froxelInfo{
         in.froxels ? in.froxelIntegrated.handle() : noMedium_.handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
-        storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
+    const VkWriteDescriptorSet own[] = {
         storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo[0]),
         storageBufferWrite(HAIR_BINDING_SEGMENTS_HIGH, &segmentInfo[1]),
         storageBufferWrite(HAIR_BINDING_HEADS, &headInfo),
         storageBufferWrite(HAIR_BINDING_NODES, &nodeInfo),
-        storageBufferWrite(HAIR_BINDING_CLUSTER_RANGES, &rangesInfo),
-        storageBufferWrite(HAIR_BINDING_LIGHT_INDICES, &indicesInfo),
-        storageBufferWrite(HAIR_BINDING_DEPTH_RANGE, &depthRangeInfo),
-        storageBufferWrite(HAIR_BINDING_IRRADIANCE_SH, &in.environment->irradianceSh),
-        sampledImageWrite(HAIR_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
-        storageBufferWrite(HAIR_BINDING_SHADOW_VIEWS, &in.shadows->views),
-        storageBufferWrite(HAIR_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
-        sampledImageWrite(HAIR_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
-        sampledImageWrite(HAIR_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
-        sampledImageWrite(HAIR_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude),
         sampledImageWrite(HAIR_BINDING_HAIR_SHADOW, &hairShadowInfo),
         storageBufferWrite(HAIR_BINDING_FROXEL_INTEGRATED, &froxelInfo)};
+    const LitDescriptorWrites writes(in.lit, own);
     pushCommon(cmd, resolve_, in);
-    resolve_.pushDescriptors(cmd, writes);
+    resolve_.pushDescriptors(cmd, writes.writes());
     vkCmdDraw(cmd, 3, 1, 0, 0);
     vkCmdEndRendering(cmd);
 }
 
 void HairPass::recordDepth(VkCommandBuffer cmd, const Inputs& in) const {
     beginDepthRendering(cmd, in.depth, true);
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo cameraInfo{in.lit.camera->handle(), 0, VK_WHOLE_SIZE};
     const std::array<VkDescriptorBufferInfo, 2> segmentInfo = segmentRanges();
     VkDescriptorBufferInfo headInfo{in.heads.handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo nodeInfo{in.nodes.handle(), 0, VK_WHOLE_SIZE};
@@ -406,7 +379,7 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
             {HAIR_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
             {HAIR_BINDING_SEGMENTS_HIGH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
              VK_SHADER_STAGE_VERTEX_BIT},
-            {HAIR_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+            {LIT_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
              VK_SHADER_STAGE_VERTEX_BIT},
         };
         shadowDepth_ = Pipeline::graphics(context_, desc, bindings, sizeof(HairPush));
@@ -442,7 +415,7 @@ void HairPass::recordShadowDepth(VkCommandBuffer cmd, const Inputs& in,
     const VkWriteDescriptorSet writes[] = {
         storageBufferWrite(HAIR_BINDING_SEGMENTS, &segmentInfo[0]),
         storageBufferWrite(HAIR_BINDING_SEGMENTS_HIGH, &segmentInfo[1]),
-        storageBufferWrite(HAIR_BINDING_SHADOW_VIEWS, &in.shadows->views)};
+        storageBufferWrite(LIT_BINDING_SHADOW_VIEWS, &in.lit.shadows.views)};
     shadowDepth_.bind(cmd);
     shadowDepth_.pushDescriptors(cmd, writes);
     HairPush push{};

@@ -16,6 +16,7 @@
 #include "candela/render/renderer_options.h"
 #include "culling/draw_bounds.h"
 #include "frame_graph/graph_resources.h"
+#include "lit_inputs.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/shadows/shadow_pass.h"
 
@@ -58,16 +59,7 @@ public:
         BufferRef heads;
         BufferRef nodes;
         uint32_t nodeCapacity;
-        const GpuBuffer* camera;
-        const GpuBuffer* lights;
-        const GpuBuffer* clusterRanges;
-        const GpuBuffer* lightIndices;
-        const GpuBuffer* depthRange;
-        const ClusterGrid* grid;
-        uint32_t directionalCount;
-        const EnvironmentDescriptors* environment;
-        float skyIntensity;
-        const ShadowDescriptors* shadows;
+        LitInputs lit;  // the camera block for every hair pass; the rest for the resolve
         float pixelRadiusPerDepth;  // 1 / (projection[1][1] x target height)
         float nearPlane;
         // The hair depth map (hairShadowDepthDesc), or none: self-shadowing off this frame.

@@ -36,10 +36,6 @@
 #include "common/ibl.glsl"
 #include "common/light_buffer.glsl"
 #include "common/shading_models.glsl"
-#define SHADOW_ATLAS_BINDING HAIR_BINDING_SHADOW_ATLAS
-#define SHADOW_ATLAS_COMPARE_BINDING HAIR_BINDING_SHADOW_ATLAS_COMPARE
-#define SHADOW_VIEWS_BINDING HAIR_BINDING_SHADOW_VIEWS
-#define SHADOW_LIGHTS_BINDING HAIR_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
 #define FROXEL_INTEGRATED_BINDING HAIR_BINDING_FROXEL_INTEGRATED
 #include "common/froxel_lookup.glsl"
@@ -49,18 +45,7 @@ layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
 // Image-based lighting: 0 none, else the sky's SH irradiance lights the hair's diffuse.
 layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 
-layout(std430, binding = HAIR_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
-    uint clusterRanges[];
-};
-layout(std430, binding = HAIR_BINDING_LIGHT_INDICES) readonly buffer LightIndices {
-    uint lightIndices[];
-};
-layout(std430, binding = HAIR_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
-    uint depthRange[];
-};
-layout(std430, binding = HAIR_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
-    vec4 irradianceSh[9];
-};
+#include "common/lit_inputs.glsl"
 
 layout(binding = HAIR_BINDING_HAIR_SHADOW) uniform sampler2D hairShadowDepth;
 

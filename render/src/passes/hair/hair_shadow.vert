@@ -5,10 +5,6 @@
 // The vertex stage writes no storage.
 #define HAIR_NO_LISTS
 #include "hair_segment.glsl"
-#define SHADOW_ATLAS_BINDING HAIR_BINDING_SHADOW_ATLAS
-#define SHADOW_ATLAS_COMPARE_BINDING HAIR_BINDING_SHADOW_ATLAS_COMPARE
-#define SHADOW_VIEWS_BINDING HAIR_BINDING_SHADOW_VIEWS
-#define SHADOW_LIGHTS_BINDING HAIR_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
 #include "common/screen_segment.glsl"
 // The hair depth map (Martin et al. 2014, GPU Pro 5, "TressFX: Advanced Real-Time Hair Rendering",

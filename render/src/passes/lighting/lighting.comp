@@ -15,12 +15,7 @@
 #include "common/ibl.glsl"
 #include "common/light_buffer.glsl"
 #include "common/shading_models.glsl"
-#define SHADOW_ATLAS_BINDING LIGHTING_BINDING_SHADOW_ATLAS
-#define SHADOW_ATLAS_COMPARE_BINDING LIGHTING_BINDING_SHADOW_ATLAS_COMPARE
-#define SHADOW_VIEWS_BINDING LIGHTING_BINDING_SHADOW_VIEWS
-#define SHADOW_LIGHTS_BINDING LIGHTING_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
-#define SKY_OCCLUSION_BINDING LIGHTING_BINDING_SKY_OCCLUSION
 #include "common/sky_occlusion.glsl"
 #include "common/sky_occluded_ambient.glsl"
 
@@ -58,12 +53,7 @@ layout(binding = LIGHTING_BINDING_GBUFFER_DEPTH) uniform sampler2D gbufferDepth;
 layout(binding = LIGHTING_BINDING_GBUFFER_ANISOTROPY) uniform sampler2D gbufferAnisotropy;
 layout(binding = LIGHTING_BINDING_GBUFFER_CLEAR_COAT) uniform sampler2D gbufferClearCoat;
 layout(binding = LIGHTING_BINDING_HDR, rgba32f) uniform image2D hdrRadiance;
-layout(std430, binding = LIGHTING_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
-    uint clusterRanges[];
-};
-layout(std430, binding = LIGHTING_BINDING_LIGHT_INDICES) readonly buffer LightIndices {
-    uint lightIndices[];
-};
+#include "common/lit_inputs.glsl"
 // Per workgroup (LightingPass::kCountsPerWorkgroup): evaluated pairs, lit pairs, evaluations
 // of plain, area and shadowed lights, shadow filter taps, blocker-search texels, and one spare
 // (each fits 32 bits: 64 pixels x 2^26 lights).
@@ -71,21 +61,9 @@ const uint kCounts = 8u;
 layout(std430, binding = LIGHTING_BINDING_PAIR_COUNTS) buffer PairCounts {
     uint pairCounts[];
 };
-// The slicing the depth occupancy pass derived ([2] sliceNear, [3] logRatio as float bits):
-// read here rather than pushed, so lists assigned on the device need no host round trip.
-layout(std430, binding = LIGHTING_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
-    uint depthRange[];
-};
 #include "common/pixel_lights.glsl"
 
-
 layout(binding = LIGHTING_BINDING_ENVIRONMENT) uniform samplerCube environmentCube;  // all mips
-// Roughness per mip.
-layout(binding = LIGHTING_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
-layout(binding = LIGHTING_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
-layout(std430, binding = LIGHTING_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
-    vec4 irradianceSh[9];
-};
 // Reference mode: luminance importance sampling of environmentCube's mip 0
 // (render/src/ibl/environment_sampling_table.h).
 layout(std430, binding = LIGHTING_BINDING_SAMPLING_TABLE) readonly buffer EnvironmentSampling {

@@ -10,7 +10,6 @@
 #include "ibl/environment_descriptors.h"
 #include "lights/gpu_light_types.h"
 #include "passes/lighting/lighting_bindings.h"
-#include "passes/shadows/shadow_pass.h"
 #include "shaders/lighting.comp.spv.h"
 
 namespace candela::render {
@@ -121,63 +120,25 @@ void LightingPass::setFeatures(const LightingFeatures& features) {
                       ? 3u
                       : uint32_t(features.ao));
     constants.set(SPEC_SKY_OCCLUSION, features.skyOcclusion);
-    const DescriptorBinding bindings[] = {
-        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_GBUFFER_BASE_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_GBUFFER_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_GBUFFER_SPECULAR_MODEL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_GBUFFER_CUSTOM_DATA, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_GBUFFER_DEPTH, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_LIGHT_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_PAIR_COUNTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_PREFILTERED, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_BRDF_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_IRRADIANCE_SH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_SAMPLING_TABLE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_GBUFFER_ANISOTROPY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_GBUFFER_CLEAR_COAT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_AMBIENT_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_SPECULAR_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_SHADOW_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_AREA_LIGHT_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
-        {LIGHTING_BINDING_SKY_OCCLUSION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_COMPUTE_BIT},
+    constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+    constexpr VkDescriptorType kImage = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    const DescriptorBinding own[] = {
+        {LIGHTING_BINDING_GBUFFER_BASE_COLOR, kImage, kCompute},
+        {LIGHTING_BINDING_GBUFFER_NORMAL, kImage, kCompute},
+        {LIGHTING_BINDING_GBUFFER_SPECULAR_MODEL, kImage, kCompute},
+        {LIGHTING_BINDING_GBUFFER_CUSTOM_DATA, kImage, kCompute},
+        {LIGHTING_BINDING_GBUFFER_DEPTH, kImage, kCompute},
+        {LIGHTING_BINDING_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+        {LIGHTING_BINDING_PAIR_COUNTS, kBuffer, kCompute},
+        {LIGHTING_BINDING_ENVIRONMENT, kImage, kCompute},
+        {LIGHTING_BINDING_SAMPLING_TABLE, kBuffer, kCompute},
+        {LIGHTING_BINDING_GBUFFER_ANISOTROPY, kImage, kCompute},
+        {LIGHTING_BINDING_GBUFFER_CLEAR_COAT, kImage, kCompute},
+        {LIGHTING_BINDING_AMBIENT_OCCLUSION, kImage, kCompute},
+        {LIGHTING_BINDING_SPECULAR_OCCLUSION, kImage, kCompute},
     };
+    const std::vector<DescriptorBinding> bindings = withLitInputBindings(own, kCompute);
     pipeline_ = Pipeline::compute(context_, lighting_comp_spv, bindings, sizeof(Push), &constants);
     built_ = true;
 }
@@ -187,12 +148,7 @@ uint32_t LightingPass::workgroupCount(uint32_t width, uint32_t height) {
 }
 
 void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo countsInfo{in.pairCounts->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     std::array<VkDescriptorImageInfo, 7> images{};
     for (size_t i = 0; i < 4; ++i) {
         images[i] = {pointSampler_.handle(), in.gbuffer->color[i].view(),
@@ -210,7 +166,7 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
                  extended ? in.gbuffer->clearCoat.view() : in.gbuffer->color[0].view(),
                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, in.hdr.view(), VK_IMAGE_LAYOUT_GENERAL};
-    const EnvironmentDescriptors& env = *in.environment;
+    const EnvironmentDescriptors& env = in.lit.environment;
     // Without ambient occlusion the variant never reads these: any 2D image will do, and the
     // LUT (or its placeholder) is always at hand.
     VkDescriptorImageInfo occlusionInfo = env.brdfLut;
@@ -223,40 +179,25 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
         specularOcclusionInfo = {pointSampler_.handle(), in.specularOcclusion->view(),
                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     }
-    const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
-        storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
+    const VkWriteDescriptorSet own[] = {
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_BASE_COLOR, &images[0]),
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_NORMAL, &images[1]),
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_SPECULAR_MODEL, &images[2]),
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_CUSTOM_DATA, &images[3]),
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_DEPTH, &images[4]),
         storageImageWrite(LIGHTING_BINDING_HDR, &hdrInfo),
-        storageBufferWrite(LIGHTING_BINDING_CLUSTER_RANGES, &rangesInfo),
-        storageBufferWrite(LIGHTING_BINDING_LIGHT_INDICES, &indicesInfo),
         storageBufferWrite(LIGHTING_BINDING_PAIR_COUNTS, &countsInfo),
-        storageBufferWrite(LIGHTING_BINDING_DEPTH_RANGE, &depthRangeInfo),
         sampledImageWrite(LIGHTING_BINDING_ENVIRONMENT, &env.environment),
-        sampledImageWrite(LIGHTING_BINDING_PREFILTERED, &env.prefiltered),
-        sampledImageWrite(LIGHTING_BINDING_BRDF_LUT, &env.brdfLut),
-        storageBufferWrite(LIGHTING_BINDING_IRRADIANCE_SH, &env.irradianceSh),
         storageBufferWrite(LIGHTING_BINDING_SAMPLING_TABLE, &env.samplingTable),
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_ANISOTROPY, &images[5]),
         sampledImageWrite(LIGHTING_BINDING_GBUFFER_CLEAR_COAT, &images[6]),
         sampledImageWrite(LIGHTING_BINDING_AMBIENT_OCCLUSION, &occlusionInfo),
         sampledImageWrite(LIGHTING_BINDING_SPECULAR_OCCLUSION, &specularOcclusionInfo),
-        sampledImageWrite(LIGHTING_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
-        storageBufferWrite(LIGHTING_BINDING_SHADOW_VIEWS, &in.shadows->views),
-        storageBufferWrite(LIGHTING_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
-        sampledImageWrite(LIGHTING_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
-        sampledImageWrite(LIGHTING_BINDING_LTC_MATRIX, &env.ltcMatrix),
-        sampledImageWrite(LIGHTING_BINDING_LTC_MAGNITUDE, &env.ltcMagnitude),
-        sampledImageWrite(LIGHTING_BINDING_AREA_LIGHT_TEXTURES, &env.areaLightTextures),
-        sampledImageWrite(LIGHTING_BINDING_SKY_OCCLUSION, &in.skyOcclusion),
     };
-    Push push{toGpu(*in.grid),
-              in.directionalCount,
-              in.skyIntensity,
+    const LitDescriptorWrites writes(in.lit, own);
+    Push push{toGpu(in.lit.clusters->grid()),
+              in.lit.clusters->directionalCount(),
+              in.lit.skyIntensity,
               env.prefilteredMipCount,
               in.referenceSamples,
               in.aoIntensity,
@@ -264,7 +205,7 @@ void LightingPass::record(VkCommandBuffer cmd, const Inputs& in) const {
               0u,
               in.lightCount};
     pipeline_.bind(cmd);
-    pipeline_.pushDescriptors(cmd, writes);
+    pipeline_.pushDescriptors(cmd, writes.writes());
     const uint32_t groupsX = (in.hdr.desc().width + 7) / 8;
     const uint32_t groupsY = (in.hdr.desc().height + 7) / 8;
     if (features_.clustered) {

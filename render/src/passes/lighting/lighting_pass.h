@@ -13,6 +13,7 @@
 #include "common/specialization_ids.h"
 #include "frame_graph/graph_resources.h"
 #include "light_loops.h"
+#include "lit_inputs.h"
 #include "vk/sampler.h"
 
 namespace candela::render {
@@ -89,26 +90,15 @@ public:
     struct Inputs {
         const GBufferTargets* gbuffer;
         ImageRef hdr;
-        const GpuBuffer* camera;
-        const GpuBuffer* lights;
-        const GpuBuffer* clusterRanges;
-        const GpuBuffer* lightIndices;
-        const GpuBuffer* pairCounts;
-        const GpuBuffer* depthRange;  // slicing from DepthOccupancyPass (clustered only)
-        const ClusterGrid* grid;
-        uint32_t directionalCount;
-        const EnvironmentDescriptors* environment;  // the sky, or placeholders
-        uint32_t lightCount = 0;  // every light in `lights` (the brute-force variant's loop)
-        float skyIntensity = 1.0f;
+        LitInputs lit;                // the cluster lists read by the clustered variant only
+        const GpuBuffer* pairCounts;  // the counting variant's
+        uint32_t lightCount = 0;      // every light in lit.lights (the brute-force variant's loop)
         uint32_t referenceSamples = 0;
         // Sampled; unused (placeholders bound) when the variant has no ambient occlusion.
         std::optional<ImageRef> ambientOcclusion;
         std::optional<ImageRef> specularOcclusion;  // the reference mode's only
         float aoIntensity = 1.0f;
         bool aoMultiBounce = true;
-        const ShadowDescriptors* shadows = nullptr;  // the atlas and tables, or placeholders
-        // Sky occlusion's atlas (SkyOcclusionPass::descriptor), a placeholder when off.
-        VkDescriptorImageInfo skyOcclusion{};
     };
     void record(VkCommandBuffer cmd, const Inputs& inputs) const;
     static uint32_t workgroupCount(uint32_t width, uint32_t height);

@@ -16,6 +16,7 @@
 #include "candela/render/pipeline.h"
 #include "candela/render/renderer_options.h"
 #include "culling/draw_bounds.h"
+#include "passes/shadows/shadow_descriptors.h"
 #include "vk/sampler.h"
 
 namespace candela::render {
@@ -31,14 +32,6 @@ struct GpuShadowView {
     glm::vec4 sphere;  // cascades: centre and radius of what they cover
 };
 static_assert(sizeof(GpuShadowView) == 112, "std430 layout of ShadowView");
-
-// What the shading passes bind (placeholders when no light casts).
-struct ShadowDescriptors {
-    VkDescriptorImageInfo atlas;         // raw depths (blocker search, thickness)
-    VkDescriptorImageInfo atlasCompare;  // the same through the comparison sampler (filtering)
-    VkDescriptorBufferInfo views;
-    VkDescriptorBufferInfo lights;
-};
 
 struct ShadowFrameStats {
     uint32_t shadowedLights = 0;

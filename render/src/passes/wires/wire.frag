@@ -16,10 +16,6 @@
 #include "common/light_buffer.glsl"
 #include "common/screen_segment.glsl"
 #include "common/shading_models.glsl"
-#define SHADOW_ATLAS_BINDING WIRE_BINDING_SHADOW_ATLAS
-#define SHADOW_ATLAS_COMPARE_BINDING WIRE_BINDING_SHADOW_ATLAS_COMPARE
-#define SHADOW_VIEWS_BINDING WIRE_BINDING_SHADOW_VIEWS
-#define SHADOW_LIGHTS_BINDING WIRE_BINDING_SHADOW_LIGHTS
 #include "common/shadows.glsl"
 #define FROXEL_INTEGRATED_BINDING WIRE_BINDING_FROXEL_INTEGRATED
 #include "common/froxel_lookup.glsl"
@@ -29,21 +25,8 @@ layout(constant_id = SPEC_CLUSTERED) const bool kClustered = true;
 // Image-based lighting: 0 none, 1 split sum, 2 mobile.
 layout(constant_id = SPEC_IBL_MODE) const uint kIblMode = 0u;
 
-layout(std430, binding = WIRE_BINDING_CLUSTER_RANGES) readonly buffer ClusterRanges {
-    uint clusterRanges[];
-};
-layout(std430, binding = WIRE_BINDING_LIGHT_INDICES) readonly buffer LightIndices {
-    uint lightIndices[];
-};
-layout(std430, binding = WIRE_BINDING_DEPTH_RANGE) readonly buffer DepthRange {
-    uint depthRange[];
-};
+#include "common/lit_inputs.glsl"
 #include "common/pixel_lights.glsl"
-layout(binding = WIRE_BINDING_PREFILTERED) uniform samplerCube prefilteredCube;
-layout(binding = WIRE_BINDING_BRDF_LUT) uniform sampler2D environmentBrdfLut;
-layout(std430, binding = WIRE_BINDING_IRRADIANCE_SH) readonly buffer IrradianceSh {
-    vec4 irradianceSh[9];
-};
 
 // Screen widths (pixels) over which the shading turns from bent normals and half-Lambert (a
 // wire a pixel or less wide) to the cylinder's own normals and Lambert.

@@ -115,38 +115,14 @@ void WirePass::buildPipeline() {
     desc.depthWrite = false;
     desc.alphaBlend = true;
     desc.specialization = &constants;
-    const DescriptorBinding bindings[] = {
-        {CAMERA_BINDING, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-        {LIGHT_BUFFER_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_CLUSTER_RANGES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_LIGHT_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_DEPTH_RANGE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_PREFILTERED, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_BRDF_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_IRRADIANCE_SH, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_SHADOW_ATLAS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_SHADOW_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_SHADOW_ATLAS_COMPARE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_LTC_MATRIX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
-        {WIRE_BINDING_LTC_MAGNITUDE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-         VK_SHADER_STAGE_FRAGMENT_BIT},
+    constexpr VkShaderStageFlags kRaster =
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    const DescriptorBinding own[] = {
+        {WIRE_BINDING_SEGMENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kRaster},
         {WIRE_BINDING_FROXEL_INTEGRATED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
          VK_SHADER_STAGE_FRAGMENT_BIT},
     };
+    const std::vector<DescriptorBinding> bindings = withLitInputBindings(own, kRaster);
     pipeline_ = Pipeline::graphics(context_, desc, bindings, sizeof(WirePush));
     built_ = true;
 }
@@ -165,42 +141,24 @@ void WirePass::record(VkCommandBuffer cmd, const Inputs& in) const {
     setViewportAndScissor(cmd, width, height);
     pipeline_.bind(cmd);
 
-    VkDescriptorBufferInfo cameraInfo{in.camera->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo lightInfo{in.lights->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo segmentInfo{segments_.handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo rangesInfo{in.clusterRanges->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo indicesInfo{in.lightIndices->handle(), 0, VK_WHOLE_SIZE};
-    VkDescriptorBufferInfo depthRangeInfo{in.depthRange->handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo froxelInfo{
         in.froxels ? in.froxelIntegrated.handle() : noMedium_.handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet writes[] = {
-        uniformBufferWrite(CAMERA_BINDING, &cameraInfo),
-        storageBufferWrite(LIGHT_BUFFER_BINDING, &lightInfo),
+    const VkWriteDescriptorSet own[] = {
         storageBufferWrite(WIRE_BINDING_SEGMENTS, &segmentInfo),
-        storageBufferWrite(WIRE_BINDING_CLUSTER_RANGES, &rangesInfo),
-        storageBufferWrite(WIRE_BINDING_LIGHT_INDICES, &indicesInfo),
-        storageBufferWrite(WIRE_BINDING_DEPTH_RANGE, &depthRangeInfo),
-        sampledImageWrite(WIRE_BINDING_PREFILTERED, &in.environment->prefiltered),
-        sampledImageWrite(WIRE_BINDING_BRDF_LUT, &in.environment->brdfLut),
-        storageBufferWrite(WIRE_BINDING_IRRADIANCE_SH, &in.environment->irradianceSh),
-        sampledImageWrite(WIRE_BINDING_SHADOW_ATLAS, &in.shadows->atlas),
-        storageBufferWrite(WIRE_BINDING_SHADOW_VIEWS, &in.shadows->views),
-        storageBufferWrite(WIRE_BINDING_SHADOW_LIGHTS, &in.shadows->lights),
-        sampledImageWrite(WIRE_BINDING_SHADOW_ATLAS_COMPARE, &in.shadows->atlasCompare),
-        sampledImageWrite(WIRE_BINDING_LTC_MATRIX, &in.environment->ltcMatrix),
-        sampledImageWrite(WIRE_BINDING_LTC_MAGNITUDE, &in.environment->ltcMagnitude),
         storageBufferWrite(WIRE_BINDING_FROXEL_INTEGRATED, &froxelInfo)};
-    pipeline_.pushDescriptors(cmd, writes);
+    const LitDescriptorWrites writes(in.lit, own);
+    pipeline_.pushDescriptors(cmd, writes.writes());
     WirePush push{};
-    push.grid = toGpu(*in.grid);
+    push.grid = toGpu(in.lit.clusters->grid());
     push.targetSize[0] = float(width);
     push.targetSize[1] = float(height);
     push.pixelRadiusPerDepth = in.pixelRadiusPerDepth;
     push.nearPlane = in.nearPlane;
     push.mode = mode_ == WireMode::Naive ? WIRE_MODE_NAIVE : WIRE_MODE_COVERAGE;
-    push.directionalCount = in.directionalCount;
-    push.skyIntensity = in.skyIntensity;
-    push.prefilteredMipCount = in.environment->prefilteredMipCount;
+    push.directionalCount = in.lit.clusters->directionalCount();
+    push.skyIntensity = in.lit.skyIntensity;
+    push.prefilteredMipCount = in.lit.environment.prefilteredMipCount;
     pipeline_.pushConstants(cmd, &push, sizeof(push));
     vkCmdDraw(cmd, 6 * segmentCount_, 1, 0, 0);
     vkCmdEndRendering(cmd);

@@ -41,16 +41,7 @@ public:
     struct Inputs {
         ImageRef hdr;
         ImageRef depth;
-        const GpuBuffer* camera;
-        const GpuBuffer* lights;
-        const GpuBuffer* clusterRanges;
-        const GpuBuffer* lightIndices;
-        const GpuBuffer* depthRange;
-        const ClusterGrid* grid;
-        uint32_t directionalCount;
-        const EnvironmentDescriptors* environment;
-        float skyIntensity;
-        const ShadowDescriptors* shadows;
+        LitInputs lit;
         float pixelRadiusPerDepth;  // 1 / (projection[1][1] x target height)
         float nearPlane;
         // Froxels (passes/volumetrics), read in the fragment shader; null: no medium.
