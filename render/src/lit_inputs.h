@@ -50,6 +50,9 @@ struct LitInputHandles {
 struct LitFrame {
     LitInputs inputs;
     LitInputHandles reads;
+    uint32_t lightCount = 0;     // lights in inputs.lights
+    uint32_t lightCapacity = 0;  // lights its streams hold room for
+    bool brdfLut = false;        // inputs.environment.brdfLut is the LUT, not its placeholder
 };
 
 // A lit pipeline's layout: its own bindings, then the lit inputs' (camera and lights included),

@@ -15,52 +15,50 @@
 #include "culling/draw_order.h"
 #include "culling/draws_in_view.h"
 #include "features/frame_blackboard.h"
+#include "features/frame_exposure.h"
+#include "features/gbuffer_frame.h"
 #include "features/render_feature.h"
 #include "features/scene_targets.h"
+#include "frame_camera.h"
 #include "frame_graph/frame_graph.h"
 #include "frame_graph/frame_graph_executor.h"
 #include "gbuffer_targets.h"
 #include "gpu_camera.h"
-#include "ibl/environment_brdf_lut.h"
 #include "ibl/environment_descriptors.h"
-#include "ibl/environment_sampling_table.h"
-#include "lights/area_light_textures.h"
 #include "lights/gpu_light_buffer.h"
 #include "lights/gpu_light_types.h"
-#include "lights/ltc_table_texture.h"
 #include "lit_inputs.h"
-#include "passes/ambient_occlusion/ambient_occlusion_pass.h"
+#include "passes/ambient_occlusion/ambient_occlusion_feature.h"
+#include "passes/ambient_occlusion/ambient_occlusion_frame.h"
 #include "passes/atmosphere/atmosphere_pass.h"
-#include "passes/bloom/bloom_pass.h"
+#include "passes/bloom/bloom_feature.h"
 #include "passes/debug_text/debug_text_pass.h"
+#include "passes/exposure/auto_exposure_feature.h"
 #include "passes/exposure/exposure_bindings.h"
-#include "passes/exposure/exposure_pass.h"
 #include "passes/forward_transparent/forward_transparent_pass.h"
 #include "passes/forward_transparent/msaa_samples.h"
 #include "passes/fxaa/fxaa_pass.h"
-#include "passes/gbaa/gbaa_pass.h"
+#include "passes/gbaa/gbaa_feature.h"
 #include "passes/gbuffer/gbuffer_pass.h"
 #include "passes/hair/hair_feature.h"
 #include "passes/lighting/lighting_pass.h"
-#include "passes/nonfinite/nonfinite_pass.h"
-#include "passes/nonfinite/nonfinite_probes.h"
-#include "passes/scattering/scattering_pass.h"
+#include "passes/nonfinite/nonfinite_guard.h"
+#include "passes/scattering/scattering_feature.h"
 #include "passes/shadows/shadow_frame.h"
 #include "passes/shadows/shadow_pass.h"
 #include "passes/skinning/skinning_pass.h"
 #include "passes/sky_occlusion/sky_occlusion_pass.h"
-#include "passes/ssr/ssr_pass.h"
-#include "passes/taa/taa_pass.h"
+#include "passes/ssr/ssr_feature.h"
+#include "passes/taa/taa_feature.h"
 #include "passes/tonemap/tonemap_pass.h"
 #include "passes/triangle/triangle_pass.h"
 #include "passes/upscale/upscale_pass.h"
 #include "passes/volumetrics/integrated_froxels.h"
-#include "passes/volumetrics/volumetrics_pass.h"
+#include "passes/volumetrics/volumetrics_feature.h"
 #include "passes/wires/wire_feature.h"
-#include "renderer_ao_temporal.h"
 #include "renderer_frame_handles.h"
 #include "renderer_scene_queries.h"
-#include "temporal_history.h"
+#include "shading_tables.h"
 #include "vk/vk_check.h"
 
 namespace candela::render {
@@ -94,40 +92,48 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
       lightAssignment_(resolveLightAssignment(options, context)),
       graph_(std::make_unique<FrameGraph>()),
       executor_(std::make_unique<FrameGraphExecutor>(context)),
-      cameraBuffer_(context, sizeof(GpuCamera), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                    MemoryLocation::HostVisible),
+      camera_(std::make_unique<FrameCamera>(context)),
       lights_(std::make_unique<GpuLightBuffer>()),
       clusters_(std::make_unique<ClusterLightLists>(context, options_, lightAssignment_)),
-      taaHistory_(std::make_unique<TemporalHistory>()),
-      aoHistory_(std::make_unique<TemporalHistory>()),
-      ssrHistory_(std::make_unique<TemporalHistory>()),
       board_(std::make_unique<FrameBlackboard>()) {
     createTargets();
     trianglePass_ = std::make_unique<TrianglePass>(context_);
     gbufferPass_ = std::make_unique<GBufferPass>(context_);
     lightingPass_ = std::make_unique<LightingPass>(context_);
-    environmentPlaceholders_ = std::make_unique<EnvironmentPlaceholders>(context_);
-    ltcTable_ = std::make_unique<LtcTableTexture>(context_);
-    areaLightTextures_ = std::make_unique<AreaLightTextures>(context_);
+    shadingTables_ = std::make_unique<ShadingTables>(context_);
+    nonFinite_ = std::make_unique<NonFiniteGuard>(context_);
     transparentPass_ = std::make_unique<ForwardTransparentPass>(
         context_, forwardMsaaSamples(context_, options_.msaaSamples));
     tonemapPass_ = std::make_unique<TonemapPass>(context_);
-    if (options_.aa == AntiAliasing::Taa) taaPass_ = std::make_unique<TaaPass>(context_);
     if (options_.aa == AntiAliasing::Fxaa) fxaaPass_ = std::make_unique<FxaaPass>(context_);
-    if (options_.aa == AntiAliasing::Gbaa) gbaaPass_ = std::make_unique<GbaaPass>(context_);
-    if (options_.bloomStrength > 0.0f) bloomPass_ = std::make_unique<BloomPass>(context_);
-    if (options_.exposure == ExposureMode::Auto) {
-        histogramPass_ = std::make_unique<ExposureHistogramPass>(context_);
-        histogram_ =
-            GpuBuffer(context_, HISTOGRAM_BINS * sizeof(uint32_t),
-                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                      MemoryLocation::HostVisible);
-    }
     shadowPass_ = std::make_unique<ShadowPass>(context_);
     skyOcclusionPass_ = std::make_unique<SkyOcclusionPass>(context_);  // pipeline when used
+    // Before lighting, then over the lit frame (declareScene).
+    renderFeatures_.push_back(std::make_unique<AmbientOcclusionFeature>(context_));
+    firstLitFeature_ = renderFeatures_.size();
+    renderFeatures_.push_back(std::make_unique<SsrFeature>(context_));
+    renderFeatures_.push_back(std::make_unique<VolumetricsFeature>(context_));
+    renderFeatures_.push_back(std::make_unique<ScatteringFeature>(context_));
     renderFeatures_.push_back(std::make_unique<HairFeature>(context_));
     renderFeatures_.push_back(std::make_unique<WireFeature>(context_));
+    // After the scene's passes, on the HDR target (the exposure meter is asked for the frame's
+    // exposure before them).
+    renderFeatures_.push_back(std::make_unique<TaaFeature>(context_));
+    renderFeatures_.push_back(std::make_unique<GbaaFeature>(context_));
+    auto autoExposure = std::make_unique<AutoExposureFeature>(context_);
+    autoExposure_ = autoExposure.get();
+    renderFeatures_.push_back(std::move(autoExposure));
+    renderFeatures_.push_back(std::make_unique<BloomFeature>(context_));
+    firstPostFeature_ = renderFeatures_.size() - 4;
     featureDeclared_.assign(renderFeatures_.size(), false);
+}
+
+void Renderer::diagnoseNonFiniteNextFrame() {
+    nonFinite_->diagnoseNextFrame();
+}
+
+const EnvironmentBrdfLut* Renderer::environmentBrdfLut() const {
+    return shadingTables_->brdfLut();
 }
 
 uint32_t Renderer::scaledSize(uint32_t outputSize, float scale) {
@@ -137,8 +143,7 @@ uint32_t Renderer::scaledSize(uint32_t outputSize, float scale) {
 }
 
 Renderer::~Renderer() {
-    brdfLut_.reset();
-    samplingTable_.reset();
+    shadingTables_.reset();
 }
 
 LightAssignmentDevice Renderer::resolveLightAssignment(const RendererOptions& options,
@@ -195,27 +200,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         features.skyOcclusion = skyOcclusionPass_->prepare(inputs.scene, resources, skyOcclusion);
     }
     lightingPass_->setFeatures(features);
-    // The environment BRDF LUT is the same for every sky: built once, when first needed (the
-    // energy-conserving BRDF reads its directional albedo for every light, sky or not).
-    const bool needsLut =
-        features.ibl || features.brdf == BrdfModel::EnergyConserving || features.clearCoat;
-    // Its texels come from the environment cache folder after the first run (390 ms of
-    // lavapipe otherwise); a cache problem is a warning and a rebuild.
-    if (needsLut && !brdfLut_) {
-        std::vector<std::string> warnings;
-        brdfLut_ =
-            EnvironmentBrdfLut::loadOrBuild(context_, defaultEnvironmentCacheDirectory(), warnings);
-        for (const std::string& w : warnings)
-            std::fprintf(stderr, "warning: %s\n", w.c_str());
-        stats_.brdfLutSource = brdfLut_->sourceName();
-        stats_.brdfLutMs = brdfLut_->buildMs();
-    }
-    // The reference mode also samples the sky by luminance: a table per environment.
-    if (features.ibl == IblMode::Reference &&
-        (!samplingTable_ || samplingTable_->source() != resources.environment())) {
-        samplingTable_ =
-            std::make_unique<EnvironmentSamplingTable>(context_, *resources.environment());
-    }
+    shadingTables_->prepare(features, resources, stats_);
     features_ = features.names();
     // Layers blend in the G-buffer pass only; the lighting variant does not change with them.
     // The draws the camera sees, each at its level of detail: the G-buffer and forward passes
@@ -238,20 +223,20 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     gbufferPass_->prepare(inputs.scene, resources, visible,
                           usesMaterialLayers(inputs.scene, resources),
-                          features.materialExtensions(), gbaaPass_ != nullptr,
+                          features.materialExtensions(), options_.aa == AntiAliasing::Gbaa,
                           nearestFirst(visible, drawBounds, view.position));
     if (gbufferPass_->materialLayers()) features_.push_back("material_layers");
     // Blended draws leave the G-buffer for the forward pass; none, and it records nothing.
     uploadFrameData(inputs);
     {  // the camera block carries sky occlusion's sphere and layout
-        GpuCamera* camera = static_cast<GpuCamera*>(cameraBuffer_.mapped());
+        GpuCamera* camera = static_cast<GpuCamera*>(camera_->buffer().mapped());
         camera->skyOcclusionSphere =
             features.skyOcclusion ? skyOcclusionPass_->sphere() : glm::vec4(0.0f);
         camera->skyOcclusionLayout =
             features.skyOcclusion ? skyOcclusionPass_->layout() : glm::uvec4(0u);
     }
-    const bool blended =
-        transparentPass_->prepare(inputs.scene, resources, visible, features, previousWorlds_);
+    const bool blended = transparentPass_->prepare(inputs.scene, resources, visible, features,
+                                                   camera_->previousWorlds());
     stats_.lights = lights_->count();
     stats_.lightsRewritten = lights_->rewrittenLastUpdate();
     stats_.lightAssignMs = 0.0;
@@ -282,14 +267,14 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
             "gbuffer.clear_coat",
             GBufferTargets::extensionDesc(GBufferTargets::kClearCoatFormat, width_, height_));
     }
-    h.hasEdges = gbaaPass_ != nullptr;
+    h.hasEdges = options_.aa == AntiAliasing::Gbaa;
     h.separateEdges = GBufferPass::separateEdges(h.extended, h.hasEdges);
     if (h.hasEdges) {
         h.edges = g.createImage(
             GBufferTargets::kEdgesName,
             GBufferTargets::extensionDesc(GBufferTargets::kEdgesFormat, width_, height_));
     }
-    h.camera = g.importBuffer("camera", &cameraBuffer_);
+    h.camera = g.importBuffer("camera", &camera_->buffer());
     h.lights = g.importBuffer("lights", &lights_->buffer());
     ResourceHandle pairCounts =
         g.importBuffer("lighting.pair_counts", &pairCounts_, features.countLightPairs);
@@ -390,7 +375,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                       [this, gbufferViews, ids, &inputs, &resources](PassContext& ctx) {
                           gbufferPass_->record(ctx.cmd(), gbufferViews(ctx), ctx.image(ids.hdr),
                                                inputs.clearRadiance, inputs.scene, resources,
-                                               cameraBuffer_, previousWorlds_);
+                                               camera_->buffer(), camera_->previousWorlds());
                       });
         // GBAA's geometry stage reads the target size from the camera block too.
         p.read(h.camera, Use::Uniform,
@@ -412,7 +397,8 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         auto p = g.addPass(
             "gbuffer_edges", PassKind::Device, [this, ids, &inputs, &resources](PassContext& ctx) {
                 gbufferPass_->recordEdges(ctx.cmd(), ctx.image(ids.edges), ctx.image(ids.depth),
-                                          inputs.scene, resources, cameraBuffer_, previousWorlds_);
+                                          inputs.scene, resources, camera_->buffer(),
+                                          camera_->previousWorlds());
             });
         p.read(h.camera, Use::Uniform, kRasterStages | VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT);
         readDeformed(p);
@@ -422,7 +408,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     if (features.clustered) {
         h.clusters =
             clusters_->declare(g,
-                               {&inputs, h.depth, h.camera, h.lights, &cameraBuffer_,
+                               {&inputs, h.depth, h.camera, h.lights, &camera_->buffer(),
                                 &lights_->buffer(), lights_->count(), lights_->capacity(),
                                 blended ? transparentPass_.get() : nullptr, &resources, deformed},
                                stats_);
@@ -434,97 +420,40 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
                                    shadowViews,      shadowLights,     features.skyOcclusion,
                                    skyOcclusionAtlas};
 
-    // Ambient occlusion between the G-buffer and lighting: GTAO and its denoise, or the
-    // reference. (Frames without it declare nothing: no pass, no images.)
-    std::optional<ResourceHandle> occlusion, specularOcclusion;
-    if (features.ao != AoMode::Off) {
-        if (!aoPass_) aoPass_ = std::make_unique<AmbientOcclusionPass>(context_);
-        AmbientOcclusionPass::Inputs aoInputs{{}, {}, &cameraBuffer_, options_.aoSettings};
-        aoInputs.settings.radius = std::max(inputs.scene.aoRadius, 1e-3f);
-        aoInputs.settings.intensity = inputs.scene.aoIntensity;
-        // Temporal accumulation rotates the slices every frame; without it they stay put, so
-        // a single frame (and every golden) is what it always was.
-        const bool accumulate = features.ao == AoMode::Gtao && aoAccumulates();
-        if (accumulate) aoInputs.frameRotation = AmbientOcclusionPass::frameRotation(aoFrame_++);
-        const ResourceHandle normal = h.color[1];
-        auto declareInputs = [&](FrameGraph::PassBuilder& p) {
-            p.read(h.depth, Use::Sampled);
-            p.read(normal, Use::Sampled);
-            p.read(h.camera, Use::Uniform);
-        };
-        ResourceHandle raw =
-            g.createImage("ao.raw", AmbientOcclusionPass::occlusionDesc(width_, height_));
-        ResourceHandle specular =
-            g.createImage("ao.specular", AmbientOcclusionPass::specularDesc(width_, height_));
-        if (features.ao == AoMode::Gtao) {
-            // Each pixel takes `steps` depth samples on both sides of each slice.
-            declaredWork_.aoSamples = uint64_t(width_) * height_ * options_.aoSettings.slices * 2u *
-                                      options_.aoSettings.steps;
-            auto p = g.addPass("ambient_occlusion_gtao", PassKind::Device,
-                               [this, ids, normal, raw, specular, aoInputs](PassContext& ctx) {
-                                   AmbientOcclusionPass::Inputs in = aoInputs;
-                                   in.depth = ctx.image(ids.depth);
-                                   in.normalRoughMetal = ctx.image(normal);
-                                   aoPass_->recordGtao(ctx.cmd(), in, ctx.image(raw),
-                                                       ctx.image(specular));
-                               });
-            declareInputs(p);
-            raw = p.write(raw, Use::StorageWrite);
-            specularOcclusion = p.write(specular, Use::StorageWrite);
-            ResourceHandle filtered =
-                g.createImage("ao.filtered", AmbientOcclusionPass::occlusionDesc(width_, height_));
-            auto d = g.addPass("ambient_occlusion_denoise", PassKind::Device,
-                               [this, ids, normal, raw, filtered, aoInputs](PassContext& ctx) {
-                                   AmbientOcclusionPass::Inputs in = aoInputs;
-                                   in.depth = ctx.image(ids.depth);
-                                   in.normalRoughMetal = ctx.image(normal);
-                                   aoPass_->recordDenoise(ctx.cmd(), in, ctx.image(raw),
-                                                          ctx.image(filtered));
-                               });
-            declareInputs(d);
-            d.read(raw, Use::Sampled);
-            occlusion = d.write(filtered, Use::StorageWrite);
-            if (accumulate) {
-                features_.push_back("ao_temporal");
-                occlusion = declareAoTemporal(
-                    g, {*occlusion, h.motion, h.depth, normal, h.camera, aoPass_.get(), aoInputs,
-                        aoHistory_->declare(g, "ao.history", "ao.history_written"),
-                        options_.aoSettings.temporalFrames, width_, height_});
-            }
-        } else {
-            auto p = g.addPass("ambient_occlusion_reference", PassKind::Device,
-                               [this, ids, normal, raw, specular, aoInputs](PassContext& ctx) {
-                                   AmbientOcclusionPass::Inputs in = aoInputs;
-                                   in.depth = ctx.image(ids.depth);
-                                   in.normalRoughMetal = ctx.image(normal);
-                                   aoPass_->recordReference(ctx.cmd(), in, ctx.image(raw),
-                                                            ctx.image(specular));
-                               });
-            declareInputs(p);
-            occlusion = p.write(raw, Use::StorageWrite);
-            specularOcclusion = p.write(specular, Use::StorageWrite);
-        }
-    }
-    if (features.ao != AoMode::Gtao) aoHistory_->invalidate();  // the sequence broke
-    const float aoIntensity = std::clamp(inputs.scene.aoIntensity, 0.0f, 1.0f);
-    const bool aoMultiBounce = options_.aoSettings.multiBounce;
-
-    EnvironmentDescriptors environment = environmentPlaceholders_->describe(
-        features.ibl ? resources.environment() : nullptr, brdfLut_.get(),
-        samplingTable_ && features.ibl == IblMode::Reference ? &samplingTable_->buffer() : nullptr);
-    environment.ltcMatrix = ltcTable_->matrix();
-    environment.ltcMagnitude = ltcTable_->magnitude();
-    environment.areaLightTextures = areaLightTextures_->descriptor();
+    const EnvironmentDescriptors environment = shadingTables_->describe(features, resources);
     const float skyIntensity = inputs.scene.skyIntensity;
-    const LitInputs lit{&cameraBuffer_, &lights_->buffer(), clusters_.get(),       environment,
-                        skyIntensity,   shadowDescriptors,  skyOcclusionDescriptor};
+    const LitInputs lit{&camera_->buffer(), &lights_->buffer(), clusters_.get(),       environment,
+                        skyIntensity,       shadowDescriptors,  skyOcclusionDescriptor};
+    // The features that own themselves, in frame order, get what the frame so far gives them:
+    // ambient occlusion between the G-buffer and lighting; then SSR, volumetrics, light shafts,
+    // hair and wires over the lit frame and its medium, under the blended surfaces (which then
+    // see the hair's depth); then the post features on the HDR target (recordFrame).
+    FrameBlackboard& board = *board_;
+    board.clear();
+    SceneTargets& targets = board.put(SceneTargets{h.hdr, h.depth, h.motion, h.camera});
+    board.put(GBufferFrame{h.color, h.hasEdges ? std::optional(h.edges) : std::nullopt});
+    board.put(LitFrame{lit, litReads, lights_->count(), lights_->capacity(),
+                       shadingTables_->brdfLut() != nullptr});
+    if (features.shadows) {
+        board.put(ShadowFrame{shadowPass_.get(), shadowAtlas, shadowViews, shadowLights});
+    }
+    FeatureFrame frame{g,       inputs,   resources, options_,  width_,
+                       height_, features, board,     features_, declaredWork_};
+    declareFeatures(frame, 0, firstLitFeature_);
+    const float aoIntensity = std::clamp(inputs.scene.aoIntensity, 0.0f, 1.0f);
+    if (!board.find<AmbientOcclusionFrame>())
+        board.put(AmbientOcclusionFrame{{}, {}, 0, aoIntensity});
+    const std::optional<ResourceHandle> occlusion = board.get<AmbientOcclusionFrame>().occlusion;
+    const std::optional<ResourceHandle> specularOcclusion =
+        board.get<AmbientOcclusionFrame>().specular;
+    const bool aoMultiBounce = options_.aoSettings.multiBounce;
     {
         auto p = g.addPass(
             "lighting", PassKind::Device,
             [this, gbufferViews, ids, lit, occlusion, specularOcclusion, aoIntensity,
              aoMultiBounce](PassContext& ctx) {
-                const GBufferTargets targets = gbufferViews(ctx);
-                LightingPass::Inputs lighting{&targets, ctx.image(ids.hdr), lit, &pairCounts_};
+                const GBufferTargets gbuffer = gbufferViews(ctx);
+                LightingPass::Inputs lighting{&gbuffer, ctx.image(ids.hdr), lit, &pairCounts_};
                 lighting.lightCount = lights_->count();
                 lighting.referenceSamples = options_.referenceSamples;
                 if (occlusion) lighting.ambientOcclusion = ctx.image(*occlusion);
@@ -551,262 +480,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     }
     if (inputs.scene.atmosphere) {
         features_.push_back("atmosphere");
-        h.hdr = atmospherePass_->declareBackground(g, h.camera, h.depth, h.hdr, cameraBuffer_);
+        h.hdr = atmospherePass_->declareBackground(g, h.camera, h.depth, h.hdr, camera_->buffer());
     }
-    ssrTraced_ = false;
-    if (options_.ssr != SsrMode::Off &&
-        hasGlossySurface(inputs.scene, resources, options_.ssrSettings.roughnessCutoff)) {
-        // As LightingPass::setFeatures picks its variant.
-        const uint32_t aoMode = features.ao == AoMode::Gtao && features.aoSpecularFromHorizons
-                                    ? 3u
-                                    : uint32_t(features.ao);
-        h.hdr.version = declareSsr(h, environment, features.ibl.has_value(),
-                                   features.ibl == IblMode::Mobile, inputs.scene.skyIntensity,
-                                   SsrOcclusion{occlusion, specularOcclusion, aoMode, aoIntensity});
-    } else {
-        ssrHistory_->invalidate();  // a frame without SSR breaks the sequence
-    }
-    // The integrated froxel buffer (common/froxel_grid.glsl): the fog's grid (froxel
-    // volumetrics; blended surfaces under per-light volumes) and the air's aerial-perspective
-    // grid (blended surfaces, wires and hair under an atmosphere's shafts), in frames that have
-    // them; one buffer, so its readers need one binding. (Wires and hair under per-light volumes
-    // read no fog grid: lighting the demo's, made only for its power lines, cost 14x the
-    // volumes' march.)
-    const bool fogFroxels =
-        inputs.scene.fog && (options_.volumetrics == VolumetricsMode::Froxels ||
-                             (options_.volumetrics == VolumetricsMode::Volumes && blended));
-    const glm::uvec3 fogGrid =
-        fogFroxels ? VolumetricsPass::froxelGrid(width_, height_, options_.volumetricsSettings)
-                   : glm::uvec3(0u);
-    const bool seenThroughTheGrid =
-        blended || hasWireSegments(inputs.scene) || !inputs.scene.hair.empty();
-    // Froxels march the sun per pixel over their composite, as the per-light volumes march it
-    // (a froxel, 8x8 pixels and up to metres deep, is too coarse for shafts through windows):
-    // the grid then holds the local lights only, and the sun in a channel of its own for
-    // blended surfaces, wires and hair, which the march does not reach (frames with them).
-    const bool sunMarched = inputs.scene.fog && options_.volumetrics == VolumetricsMode::Froxels &&
-                            VolumetricsPass::sunInMedium(inputs.scene.lights);
-    const bool froxelSunChannel = sunMarched && seenThroughTheGrid;
-    const uint32_t fogBoundaries =
-        uint32_t((VolumetricsPass::froxelIntegratedBytes(fogGrid, froxelSunChannel) -
-                  VolumetricsPass::kFroxelHeaderBytes) /
-                 sizeof(glm::vec4));
-    const bool airFroxels =
-        seenThroughTheGrid && scatteringDrawn(inputs.scene, options_.scattering);
-    std::optional<ResourceHandle> froxels;
-    if (fogFroxels || airFroxels) {
-        const VkDeviceSize bytes =
-            VolumetricsPass::froxelIntegratedBytes(fogGrid, froxelSunChannel) +
-            (airFroxels ? ScatteringPass::aerialBytes(options_.scatteringSettings) : 0);
-        froxels = g.createBuffer("froxels.integrated", bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    }
-    // Volumetric lighting over the lit opaque surfaces and the background (frames whose scene
-    // has a medium): Vos's (GPU Pro 5) per-light volumes (marched at half resolution, blurred,
-    // upsampled), froxels (lit, integrated, composited by depth) or the reference march.
-    if (inputs.scene.fog && options_.volumetrics != VolumetricsMode::Off) {
-        if (!volumetricsPass_) volumetricsPass_ = std::make_unique<VolumetricsPass>(context_);
-        const bool marchVolumes = options_.volumetrics == VolumetricsMode::Volumes;
-        const bool volumeProxies = marchVolumes && options_.volumetricsSettings.volumeProxies;
-        const bool lightFroxels =
-            options_.volumetrics == VolumetricsMode::Froxels || (marchVolumes && blended);
-        VolumetricsPass::Uses uses;
-        uses.reference = options_.volumetrics == VolumetricsMode::Reference;
-        uses.froxels = lightFroxels;
-        uses.volumesMarch = (marchVolumes && !volumeProxies) || sunMarched;
-        uses.volumesProxies = volumeProxies;
-        volumetricsPass_->prepare(inputs.scene.lights, features.shadows, uses);
-        VolumetricsPass::Inputs volume;
-        volume.camera = &cameraBuffer_;
-        volume.lights = &lights_->buffer();
-        volume.lightCount = lights_->count();
-        volume.lightCapacity = lights_->capacity();
-        volume.fog = *inputs.scene.fog;
-        volume.nearPlane = inputs.scene.camera.nearPlane;
-        volume.settings = options_.volumetricsSettings;
-        volume.grid = VolumetricsPass::froxelGrid(width_, height_, volume.settings);
-        if (fogFroxels) volume.grid = fogGrid;
-        volume.froxelSunChannel = froxelSunChannel;
-        const ResourceHandle scales =
-            g.importBuffer("volumetrics.light_scales", &volumetricsPass_->lightScales());
-        // Which lights each march tile or froxel cluster meets (the reference meets them all),
-        // or the rasterised proxies' instances.
-        volumetricsPass_->binLights(inputs.scene.lights, inputs.scene.camera, width_, height_,
-                                    volume, marchVolumes && !volumeProxies, lightFroxels,
-                                    sunMarched);
-        declaredWork_.froxelLightEvaluations =
-            volumetricsPass_->binnedWork().froxelLightEvaluations;
-        declaredWork_.volumeMarchSteps = volumetricsPass_->binnedWork().volumeMarchSteps;
-        if (volumeProxies) {
-            volumetricsPass_->buildProxies(inputs.scene.lights, inputs.scene.camera, width_,
-                                           height_);
-        }
-        auto readLights = [&](FrameGraph::PassBuilder& p,
-                              VkPipelineStageFlags2 stages = kComputeStage) {
-            p.read(h.camera, Use::Uniform, stages);
-            p.read(h.lights, Use::StorageRead, stages);
-            p.read(scales, Use::StorageRead, stages);
-            if (features.shadows) {
-                p.read(shadowAtlas, Use::Sampled, stages);
-                p.read(shadowViews, Use::StorageRead, stages);
-                p.read(shadowLights, Use::StorageRead, stages);
-            }
-        };
-        if (options_.volumetrics == VolumetricsMode::Reference) {
-            features_.push_back("volumetrics_reference");
-            auto p = g.addPass("volumetrics_reference", PassKind::Device,
-                               [this, ids, volume, shadowDescriptors](PassContext& ctx) {
-                                   VolumetricsPass::Inputs in = volume;
-                                   in.depth = ctx.image(ids.depth);
-                                   in.hdr = ctx.image(ids.hdr);
-                                   in.shadows = &shadowDescriptors;
-                                   volumetricsPass_->recordReference(ctx.cmd(), in);
-                               });
-            readLights(p);
-            p.read(h.depth, Use::Sampled);
-            h.hdr = p.write(h.hdr, Use::StorageReadWrite);
-        } else {
-            // Per-light volumes light only opaque surfaces; blended ones and wires read the
-            // froxel grid, made for them in frames that have them.
-            const bool volumes = options_.volumetrics == VolumetricsMode::Volumes;
-            if (fogFroxels) {
-                if (!volumes) features_.push_back("volumetrics_froxels");
-                if (froxelSunChannel) features_.push_back("volumetrics_froxel_sun");
-                const VkDeviceSize bytes =
-                    VolumetricsPass::froxelBufferBytes(volume.grid) * (froxelSunChannel ? 2 : 1);
-                ResourceHandle medium = g.createBuffer("volumetrics.froxel_medium", bytes,
-                                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-                const ResourceHandle integrated = *froxels;
-                auto light = g.addPass("volumetrics_froxel_light", PassKind::Device,
-                                       [this, medium, volume, shadowDescriptors](PassContext& ctx) {
-                                           VolumetricsPass::Inputs in = volume;
-                                           in.shadows = &shadowDescriptors;
-                                           volumetricsPass_->recordFroxelLight(ctx.cmd(), in,
-                                                                               ctx.buffer(medium));
-                                       });
-                readLights(light);
-                light.read(
-                    g.importBuffer("volumetrics.froxel_bins", &volumetricsPass_->froxelBins()),
-                    Use::StorageRead);
-                medium = light.write(medium, Use::StorageWrite);
-                auto integrate = g.addPass("volumetrics_froxel_integrate", PassKind::Device,
-                                           [this, medium, integrated, volume](PassContext& ctx) {
-                                               volumetricsPass_->recordFroxelIntegrate(
-                                                   ctx.cmd(), volume, ctx.buffer(medium),
-                                                   ctx.buffer(integrated));
-                                           });
-                integrate.read(h.camera, Use::Uniform);
-                integrate.read(medium, Use::StorageRead);
-                froxels = integrate.write(integrated, Use::StorageWrite);
-            }
-            // The froxels' composite first: the sun marched over them only adds its light.
-            if (!volumes) {
-                auto composite = g.addPass(
-                    "volumetrics_composite", PassKind::Device,
-                    [this, ids, integrated = *froxels, volume](PassContext& ctx) {
-                        VolumetricsPass::Inputs in = volume;
-                        in.depth = ctx.image(ids.depth);
-                        in.hdr = ctx.image(ids.hdr);
-                        volumetricsPass_->recordComposite(ctx.cmd(), in, ctx.buffer(integrated));
-                    });
-                composite.read(h.camera, Use::Uniform);
-                composite.read(h.depth, Use::Sampled);
-                composite.read(*froxels, Use::StorageRead);
-                h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
-            }
-            if (volumes || sunMarched) {
-                features_.push_back(volumes ? "volumetrics_volumes" : "volumetrics_sun_march");
-                ResourceHandle marched =
-                    g.createImage("volumetrics.volumes_marched",
-                                  VolumetricsPass::volumesDesc(width_, height_, volumeProxies));
-                ResourceHandle blurred = g.createImage(
-                    "volumetrics.volumes_blurred", VolumetricsPass::volumesDesc(width_, height_));
-                if (volumeProxies) {
-                    // Each light's proxy mesh rasterised at half resolution (Vos, GPU Pro 5).
-                    ResourceHandle proxyDepth =
-                        g.createImage("volumetrics.volumes_depth",
-                                      VolumetricsPass::volumesDepthDesc(width_, height_));
-                    auto proxies =
-                        g.addPass("volumetrics_volumes_proxies", PassKind::Device,
-                                  [this, ids, marched, proxyDepth, volume,
-                                   shadowDescriptors](PassContext& ctx) {
-                                      VolumetricsPass::Inputs in = volume;
-                                      in.depth = ctx.image(ids.depth);
-                                      in.shadows = &shadowDescriptors;
-                                      volumetricsPass_->recordVolumesProxies(
-                                          ctx.cmd(), in, ctx.image(marched), ctx.image(proxyDepth));
-                                  });
-                    readLights(proxies, kRasterStages);
-                    proxies.read(g.importBuffer("volumetrics.proxy_instances",
-                                                &volumetricsPass_->proxyInstances()),
-                                 Use::StorageRead, kRasterStages);
-                    proxies.read(h.depth, Use::Sampled, kFragmentStage);
-                    marched = proxies.write(marched, Use::ColorAttachment);
-                    proxies.write(proxyDepth, Use::DepthWrite);
-                } else {
-                    auto march = g.addPass(
-                        "volumetrics_volumes_march", PassKind::Device,
-                        [this, ids, marched, volume, shadowDescriptors](PassContext& ctx) {
-                            VolumetricsPass::Inputs in = volume;
-                            in.depth = ctx.image(ids.depth);
-                            in.shadows = &shadowDescriptors;
-                            volumetricsPass_->recordVolumesMarch(ctx.cmd(), in, ctx.image(marched));
-                        });
-                    readLights(march);
-                    march.read(
-                        g.importBuffer("volumetrics.volume_bins", &volumetricsPass_->volumeBins()),
-                        Use::StorageRead);
-                    march.read(h.depth, Use::Sampled);
-                    marched = march.write(marched, Use::StorageWrite);
-                }
-                auto blur =
-                    g.addPass("volumetrics_volumes_blur", PassKind::Device,
-                              [this, marched, blurred, volume](PassContext& ctx) {
-                                  volumetricsPass_->recordVolumesBlur(
-                                      ctx.cmd(), volume, ctx.image(marched), ctx.image(blurred));
-                              });
-                blur.read(h.camera, Use::Uniform);
-                blur.read(marched, Use::StorageRead);
-                blurred = blur.write(blurred, Use::StorageWrite);
-                auto composite = g.addPass("volumetrics_volumes_composite", PassKind::Device,
-                                           [this, ids, blurred, volume, volumes](PassContext& ctx) {
-                                               VolumetricsPass::Inputs in = volume;
-                                               in.depth = ctx.image(ids.depth);
-                                               in.hdr = ctx.image(ids.hdr);
-                                               volumetricsPass_->recordVolumesComposite(
-                                                   ctx.cmd(), in, ctx.image(blurred), !volumes);
-                                           });
-                composite.read(h.camera, Use::Uniform);
-                composite.read(h.depth, Use::Sampled);
-                composite.read(blurred, Use::StorageRead);
-                h.hdr = composite.write(h.hdr, Use::StorageReadWrite);
-            }
-        }
-    }
-    // Light shafts (issue 16; Yusov, GPU Pro 5, epipolar sampling): the sun's light scattered by
-    // the air, over the lit frame and its medium, under the blended surfaces (frames whose scene
-    // has an atmosphere).
-    declareScattering(
-        inputs, h,
-        ShadowReads{features.shadows, shadowAtlas, shadowViews, shadowLights, shadowDescriptors},
-        airFroxels ? &*froxels : nullptr, fogBoundaries);
-    // The features that own themselves, in frame order (hair, then wires: over the lit frame
-    // and its medium, under the blended surfaces, which then see the hair's depth).
-    FrameBlackboard& board = *board_;
-    board.clear();
-    board.put(SceneTargets{h.hdr, h.depth, h.motion, h.camera});
-    board.put(LitFrame{lit, litReads});
-    if (froxels) board.put(IntegratedFroxels{*froxels});
-    if (features.shadows) {
-        board.put(ShadowFrame{shadowPass_.get(), shadowAtlas, shadowViews, shadowLights});
-    }
-    FeatureFrame frame{g,       inputs,   resources, options_,  width_,
-                       height_, features, board,     features_, declaredWork_};
-    for (size_t i = 0; i < renderFeatures_.size(); ++i) {
-        featureDeclared_[i] = renderFeatures_[i]->active(frame);
-        if (featureDeclared_[i]) renderFeatures_[i]->declare(frame);
-    }
-    h.hdr = board.get<SceneTargets>().hdr;
-    h.depth = board.get<SceneTargets>().depth;
+    targets.hdr = h.hdr;
+    const IntegratedFroxels& froxelPlan =
+        board.put(declareIntegratedFroxels(g, inputs.scene, options_, width_, height_, blended));
+    declareFeatures(frame, firstLitFeature_, firstPostFeature_);
+    h.hdr = targets.hdr;
+    h.depth = targets.depth;
+    const std::optional<ResourceHandle> froxels = froxelPlan.buffer;
     if (blended) {
         // MSAA: multisampled copies of the targets, made only for frames with blended draws.
         const VkSampleCountFlagBits samples = transparentPass_->samples();
@@ -872,11 +554,20 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         h.motion = p.write(h.motion, Use::ColorAttachment);
         features_.push_back("forward_transparency");
     }
-    motionId_ = h.motion.id;
-    motionVersion_ = h.motion.version;
-    edgesId_ = h.hasEdges ? h.edges.id : UINT32_MAX;
-    edgesVersion_ = h.edges.version;
+    targets.hdr = h.hdr;
+    targets.motion = h.motion;
     return h.hdr.version;
+}
+
+void Renderer::declareFeatures(FeatureFrame& frame, size_t first, size_t end) {
+    for (size_t i = first; i < end; ++i) {
+        featureDeclared_[i] = renderFeatures_[i]->active(frame);
+        if (featureDeclared_[i]) {
+            renderFeatures_[i]->declare(frame);
+        } else {
+            renderFeatures_[i]->restartHistory();  // a frame without it breaks its sequence
+        }
+    }
 }
 
 namespace {
@@ -928,24 +619,32 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
         features_ = {"test_triangle"};
     } else {
         hdr.version = declareScene(inputs, *resources, hdr.id);
-        if (options_.captureMotionVectors) declareMotionCapture();
+        if (options_.captureMotionVectors) declareMotionCapture(board_->get<SceneTargets>().motion);
     }
     // Auto exposure reads the histogram of the previous frame, which begin() waited for.
     const bool sceneFrame = features_[0] != "test_triangle";
     float ev100 = inputs.scene.camera.ev100;
     stats_.exposureEv100 = ev100;
     stats_.adaptedEv100 = ev100;
-    if (histogramPass_ && sceneFrame) ev100 = autoExposureEv100(inputs);
-    const float exposure = exposureFromEv100(ev100);
-    if (taaPass_ && features_[0] != "test_triangle") {
-        hdr.version = declareTaa(hdr.id, hdr.version, exposure);
-    } else {
-        taaHistory_->invalidate();  // a frame without history breaks the sequence
+    if (options_.exposure == ExposureMode::Auto && sceneFrame) {
+        ev100 = autoExposure_->ev100(inputs, options_.autoExposure, stats_);
     }
-    if (gbaaPass_ && sceneFrame) hdr.version = declareGbaa(hdr.id, hdr.version);
-    if (histogramPass_ && sceneFrame) declareHistogram(hdr.id, hdr.version);
-    if (bloomPass_ && features_[0] != "test_triangle") {
-        hdr.version = declareBloom(hdr.id, hdr.version);
+    const float exposure = exposureFromEv100(ev100);
+    if (sceneFrame) {
+        // The post features (TAA, GBAA, the exposure histogram, bloom) on the scene's HDR
+        // target, as the scene's passes left it.
+        FrameBlackboard& board = *board_;
+        SceneTargets& targets = board.get<SceneTargets>();
+        targets.hdr = hdr;
+        board.put(FrameExposure{exposure});
+        FeatureFrame frame{
+            g,     inputs,    *resources,   options_, width_, height_, lightingPass_->features(),
+            board, features_, declaredWork_};
+        declareFeatures(frame, firstPostFeature_, renderFeatures_.size());
+        hdr = targets.hdr;
+    } else {
+        for (const std::unique_ptr<RenderFeature>& feature : renderFeatures_)
+            feature->restartHistory();  // a frame without the scene breaks every sequence
     }
     if (upscalePass_) {
         features_.push_back("upscale");
@@ -957,8 +656,11 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
         p.read(hdr, Use::Sampled);
         hdr = p.write(output, Use::StorageWrite);
     }
-    nonFiniteChecked_ = false;
-    if (options_.checkNonFinite || diagnoseNonFinite_) declareNonFiniteCheck(hdr);
+    if (nonFinite_->checks(options_.checkNonFinite)) {
+        nonFinite_->declareCheck(g, hdr);
+    } else {
+        nonFinite_->skipCheck();
+    }
     features_.push_back("tonemap_aces");
     {
         // FXAA reads the tonemapped image from a transient and writes the LDR target.
@@ -1014,7 +716,7 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
             }
         }
     }
-    addNonFiniteProbes();
+    if (nonFinite_->declareProbes(g)) features_.push_back("nonfinite_probes");
     const double recordMs = millisecondsSince(start);
     executor_->execute(g, submitter, cmd);
     frameRecorded_ = true;

@@ -5,12 +5,10 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
 
 #include "candela/render/renderer.h"
 #include "clustered/cluster_light_lists.h"
 #include "frame_graph/frame_graph.h"
-#include "passes/shadows/shadow_pass.h"
 
 namespace candela::render {
 
@@ -25,20 +23,6 @@ struct Renderer::SceneHandles {
     bool hasEdges = false;       // GBAA's edge target (--aa gbaa; gbuffer_targets.h)
     bool separateEdges = false;  // written by its own pass (GBufferPass::separateEdges)
     ResourceHandle edges;
-};
-
-struct Renderer::ShadowReads {
-    bool shadows = false;  // the frame has shadow maps
-    ResourceHandle atlas, views, lights;
-    ShadowDescriptors descriptors;
-};
-
-// The ambient occlusion the lighting pass applied to the sky's specular, which the SSR trace
-// takes out as occluded (unset handles: none).
-struct Renderer::SsrOcclusion {
-    std::optional<ResourceHandle> occlusion, specular;
-    uint32_t mode = 0;  // lighting.comp's kAoMode
-    float intensity = 1.0f;
 };
 
 }  // namespace candela::render

@@ -9,8 +9,7 @@
 #include "features/render_feature.h"
 #include "frame_graph/frame_graph_executor.h"
 #include "passes/lighting/lighting_pass.h"
-#include "passes/scattering/scattering_pass.h"
-#include "passes/ssr/ssr_pass.h"
+#include "passes/nonfinite/nonfinite_guard.h"
 
 namespace candela::render {
 
@@ -34,7 +33,7 @@ const RendererStats& Renderer::collectStats() {
     stats_.ssrRays = 0;
     stats_.passMs.clear();
     if (!frameRecorded_) return stats_;
-    collectNonFinite();
+    nonFinite_->collect(executor_->compiled().order, stats_);
     const bool onDevice = clusters_->assignedOnDevice();
     clusters_->collectStats(stats_);
     if (onDevice) stats_.lightAssignMs = 0.0;
@@ -54,29 +53,13 @@ const RendererStats& Renderer::collectStats() {
         if (name.starts_with("ssr_")) stats_.ssrMs += ms;
         if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
     }
+    // Work the frame's declaration fixed (froxel pairs, AO samples), then the passes' counters:
+    // the features' (SSR steps...), then the lighting pass's.
+    stats_.work = declaredWork_;
     for (size_t i = 0; i < renderFeatures_.size(); ++i)
         renderFeatures_[i]->collectStats(stats_, featureDeclared_[i]);
-    uint64_t ssrSteps = 0;
-    if (ssrTraced_) {
-        const SsrPass::Counts c = ssrPass_->readCounters();
-        ssrSteps = c.steps;
-        stats_.ssrRays = c.rays;
-        stats_.ssrStepsMax = c.maxSteps;
-        if (c.rays > 0) {
-            stats_.ssrStepsMean = double(c.steps) / c.rays;
-            stats_.ssrHitRate = double(c.hits) / c.rays;
-        }
-    }
-    if (scatteringMarched_) {
-        const ScatteringPass::Counts c = scatteringPass_->readCounters();
-        stats_.scatteringSamples = c.rays;
-        stats_.scatteringSteps = c.steps;
-    }
     stats_.lightEvaluations = 0;
     stats_.litPairs = 0;
-    // Work the frame's declaration fixed (froxel pairs, AO samples), then the passes' counters.
-    stats_.work = declaredWork_;
-    stats_.work.ssrSteps = ssrSteps;
     stats_.work.scatteringSteps = stats_.scatteringSteps;
     stats_.work.hairFragments = stats_.hairNodes;
     if (options_.countLightPairs && !features_.empty() && features_[0] != "test_triangle") {

@@ -12,11 +12,11 @@
 #include "candela/render/renderer.h"
 #include "clustered/cluster_light_lists.h"
 #include "features/render_feature.h"
+#include "frame_camera.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/ssr/ssr_pass.h"
 #include "passes/upscale/upscale_pass.h"
-#include "temporal_history.h"
 #include "vk/image_transfer.h"
 
 namespace candela::render {
@@ -89,29 +89,7 @@ void Renderer::createTargets() {
                                 (options_.msaaSamples > 1 || upscalePass_
                                      ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT)
                                      : 0u)});
-    if (options_.aa == AntiAliasing::Taa) {
-        // RGBA32F like the target it is copied into; alpha counts the samples it holds. Both
-        // start cleared and shader-readable, so every frame imports them in the same states
-        // and the compiled graph is reused from the second frame on (the first frame ignores
-        // the history through a push constant, not a different graph).
-        taaHistory_->create(context_,
-                            {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
-                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT},
-                            16);
-    }
-    taaHistory_->invalidate();
-    hasPreviousFrame_ = false;
-    frameIndex_ = 0;
-    if (aoAccumulates()) {
-        aoHistory_->create(context_, AmbientOcclusionPass::historyDesc(width_, height_), 16);
-    }
-    aoHistory_->invalidate();
-    aoFrame_ = 0;
-    if (options_.ssr != SsrMode::Off && options_.ssrSettings.temporal) {
-        ssrHistory_->create(context_, SsrPass::historyDesc(width_, height_), 16);
-    }
-    ssrHistory_->invalidate();
+    camera_->restart();
     // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
     if (upscalePass_) {
         // Written by the upscale pass, read by tonemapping, copied by captures.
@@ -130,29 +108,10 @@ void Renderer::createTargets() {
                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 }
 
-bool Renderer::aoAccumulates() const {
-    if (options_.ao != AoMode::Gtao) return false;
-    switch (options_.aoSettings.temporal) {
-        case AoTemporal::WithTaa:
-            return options_.aa == AntiAliasing::Taa;
-        case AoTemporal::Always:
-            return true;
-        case AoTemporal::Never:
-            break;
-    }
-    return false;
-}
-
 void Renderer::restartTemporalHistory() {
-    taaHistory_->invalidate();
-    ssrHistory_->invalidate();
-    aoHistory_->invalidate();
-    aoFrame_ = 0;
     for (const std::unique_ptr<RenderFeature>& feature : renderFeatures_)
         feature->restartHistory();
-    hasPreviousFrame_ = false;
-    frameIndex_ = 0;
-    adaptedEv100_.reset();
+    camera_->restart();
 }
 
 }  // namespace candela::render

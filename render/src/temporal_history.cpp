@@ -16,6 +16,15 @@ void TemporalHistory::create(GpuContext& context, const ImageDesc& desc, uint32_
     valid_ = false;
 }
 
+void TemporalHistory::ensure(GpuContext& context, const ImageDesc& desc, uint32_t texelBytes) {
+    const ImageDesc& now = images_[0].desc();
+    if (created() && now.format == desc.format && now.width == desc.width &&
+        now.height == desc.height) {
+        return;
+    }
+    create(context, desc, texelBytes);
+}
+
 TemporalHistory::Frame TemporalHistory::declare(FrameGraph& graph, std::string previousName,
                                                 std::string writtenName) {
     constexpr ImageState kSampledByCompute{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,

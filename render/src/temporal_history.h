@@ -19,6 +19,8 @@ public:
     // the same states and the compiled graph is reused from the second frame on (the first
     // frame ignores the history through `valid`, not through a different graph).
     void create(GpuContext& context, const ImageDesc& desc, uint32_t texelBytes);
+    // create() unless the images already have desc's format and size (a resize makes new ones).
+    void ensure(GpuContext& context, const ImageDesc& desc, uint32_t texelBytes);
     bool created() const { return images_[0].handle() != VK_NULL_HANDLE; }
 
     // This frame's pair in the graph: last frame's image (sampled by compute, in the state that

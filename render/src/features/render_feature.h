@@ -12,13 +12,13 @@
 #include "candela/render/renderer_options.h"
 #include "features/frame_blackboard.h"
 #include "frame_graph/frame_graph.h"
+#include "passes/lighting/lighting_pass.h"  // LightingFeatures
 
 namespace candela::render {
 
 class GpuContext;
 class SceneResources;
 struct FrameInputs;
-struct LightingFeatures;
 
 // What a feature sees of the frame it declares into.
 struct FeatureFrame {
@@ -44,7 +44,7 @@ public:
         (void)stats;
         (void)declared;
     }
-    // A camera cut or a resize: temporal state starts again.
+    // A camera cut, a resize or a frame the feature sat out: temporal state starts again.
     virtual void restartHistory() {}
 };
 

@@ -69,8 +69,7 @@ void HairFeature::declare(FeatureFrame& frame) {
     }
     const ResourceHandle hdr = targets.hdr;
     const ResourceHandle depth = targets.depth;
-    const std::optional<ResourceHandle> froxelBuffer =
-        froxels ? std::optional(froxels->buffer) : std::nullopt;
+    const std::optional<ResourceHandle> froxelBuffer = froxels ? froxels->buffer : std::nullopt;
     auto inputsOf = [hdr, depth, base, heads, nodes, selfShadow, hairShadow,
                      froxelBuffer](PassContext& ctx) {
         HairPass::Inputs in = base;

@@ -34,8 +34,7 @@ void WireFeature::declare(FeatureFrame& frame) {
     base.nearPlane = camera.nearPlane;
     const ResourceHandle hdr = targets.hdr;
     const ResourceHandle depth = targets.depth;
-    const std::optional<ResourceHandle> froxelBuffer =
-        froxels ? std::optional(froxels->buffer) : std::nullopt;
+    const std::optional<ResourceHandle> froxelBuffer = froxels ? froxels->buffer : std::nullopt;
     const WirePass* pass = pass_.get();
     auto p = frame.graph.addPass("wires", PassKind::Device,
                                  [pass, base, hdr, depth, froxelBuffer](PassContext& ctx) {
