@@ -46,7 +46,7 @@
 #include "passes/scattering/scattering_feature.h"
 #include "passes/shadows/shadow_frame.h"
 #include "passes/shadows/shadow_pass.h"
-#include "passes/skinning/skinning_pass.h"
+#include "passes/skinning/skinning_feature.h"
 #include "passes/sky_occlusion/sky_occlusion_pass.h"
 #include "passes/ssr/ssr_feature.h"
 #include "passes/taa/taa_feature.h"
@@ -108,24 +108,20 @@ Renderer::Renderer(GpuContext& context, uint32_t width, uint32_t height,
     if (options_.aa == AntiAliasing::Fxaa) fxaaPass_ = std::make_unique<FxaaPass>(context_);
     shadowPass_ = std::make_unique<ShadowPass>(context_);
     skyOcclusionPass_ = std::make_unique<SkyOcclusionPass>(context_);  // pipeline when used
-    // Before lighting, then over the lit frame (declareScene).
-    renderFeatures_.push_back(std::make_unique<AmbientOcclusionFeature>(context_));
-    firstLitFeature_ = renderFeatures_.size();
-    renderFeatures_.push_back(std::make_unique<SsrFeature>(context_));
-    renderFeatures_.push_back(std::make_unique<VolumetricsFeature>(context_));
-    renderFeatures_.push_back(std::make_unique<ScatteringFeature>(context_));
-    renderFeatures_.push_back(std::make_unique<HairFeature>(context_));
-    renderFeatures_.push_back(std::make_unique<WireFeature>(context_));
-    // After the scene's passes, on the HDR target (the exposure meter is asked for the frame's
-    // exposure before them).
-    renderFeatures_.push_back(std::make_unique<TaaFeature>(context_));
-    renderFeatures_.push_back(std::make_unique<GbaaFeature>(context_));
+    // The features, in frame order within each run.
+    addFeature(FeatureRun::BeforeGeometry, std::make_unique<SkinningFeature>(context_));
+    addFeature(FeatureRun::BeforeLighting, std::make_unique<AmbientOcclusionFeature>(context_));
+    addFeature(FeatureRun::OverLitFrame, std::make_unique<SsrFeature>(context_));
+    addFeature(FeatureRun::OverLitFrame, std::make_unique<VolumetricsFeature>(context_));
+    addFeature(FeatureRun::OverLitFrame, std::make_unique<ScatteringFeature>(context_));
+    addFeature(FeatureRun::OverLitFrame, std::make_unique<HairFeature>(context_));
+    addFeature(FeatureRun::OverLitFrame, std::make_unique<WireFeature>(context_));
+    addFeature(FeatureRun::AfterScene, std::make_unique<TaaFeature>(context_));
+    addFeature(FeatureRun::AfterScene, std::make_unique<GbaaFeature>(context_));
     auto autoExposure = std::make_unique<AutoExposureFeature>(context_);
-    autoExposure_ = autoExposure.get();
-    renderFeatures_.push_back(std::move(autoExposure));
-    renderFeatures_.push_back(std::make_unique<BloomFeature>(context_));
-    firstPostFeature_ = renderFeatures_.size() - 4;
-    featureDeclared_.assign(renderFeatures_.size(), false);
+    autoExposure_ = autoExposure.get();  // the frame's exposure comes from it
+    addFeature(FeatureRun::AfterScene, std::move(autoExposure));
+    addFeature(FeatureRun::AfterScene, std::make_unique<BloomFeature>(context_));
 }
 
 void Renderer::diagnoseNonFiniteNextFrame() {
@@ -284,28 +280,16 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
         });
         pairCounts = p.write(pairCounts, Use::TransferDst);
     }
-    // Animated draws: one compute pass deforms them all before any geometry pass draws them.
-    // The handle stands for every deformed vertex buffer at once: the graph synchronises
-    // buffers with global memory barriers, so one resource orders the writes and the reads.
-    ResourceHandle deformed;
+    // The features get what the frame so far gives them (the blackboard, filled as it goes).
+    FrameBlackboard& board = *board_;
+    board.clear();
+    FeatureFrame frame{g,       inputs,   resources, options_,  width_,
+                       height_, features, board,     features_, declaredWork_};
     stats_.deformedDraws = uint32_t(inputs.scene.deforms.size());
-    if (!inputs.scene.deforms.empty()) {
-        if (!skinningPass_) skinningPass_ = std::make_unique<SkinningPass>(context_);
-        skinningPass_->upload(inputs.scene.jointMatrices, inputs.scene.morphWeights);
-        deformed = g.importBuffer("deformed_vertices", nullptr);
-        const ResourceHandle joints =
-            g.importBuffer("skinning.joints", &skinningPass_->jointBuffer());
-        const ResourceHandle weights =
-            g.importBuffer("skinning.morph_weights", &skinningPass_->morphWeightBuffer());
-        auto p =
-            g.addPass("skinning", PassKind::Device, [this, &inputs, &resources](PassContext& ctx) {
-                skinningPass_->record(ctx.cmd(), inputs.scene, resources);
-            });
-        p.read(joints, Use::StorageRead);
-        p.read(weights, Use::StorageRead);
-        deformed = p.write(deformed, Use::StorageWrite);
-    }
-    auto readDeformed = [&deformed](FrameGraph::PassBuilder& p) {
+    declareRun(frame, FeatureRun::BeforeGeometry);
+    const DeformedVertices* deformedVertices = board.find<DeformedVertices>();
+    const ResourceHandle deformed = deformedVertices ? deformedVertices->buffers : ResourceHandle{};
+    auto readDeformed = [deformed](FrameGraph::PassBuilder& p) {
         if (deformed.valid()) p.read(deformed, Use::VertexInput);
     };
 
@@ -424,12 +408,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     const float skyIntensity = inputs.scene.skyIntensity;
     const LitInputs lit{&camera_->buffer(), &lights_->buffer(), clusters_.get(),       environment,
                         skyIntensity,       shadowDescriptors,  skyOcclusionDescriptor};
-    // The features that own themselves, in frame order, get what the frame so far gives them:
-    // ambient occlusion between the G-buffer and lighting; then SSR, volumetrics, light shafts,
+    // Ambient occlusion between the G-buffer and lighting; then SSR, volumetrics, light shafts,
     // hair and wires over the lit frame and its medium, under the blended surfaces (which then
     // see the hair's depth); then the post features on the HDR target (recordFrame).
-    FrameBlackboard& board = *board_;
-    board.clear();
     SceneTargets& targets = board.put(SceneTargets{h.hdr, h.depth, h.motion, h.camera});
     board.put(GBufferFrame{h.color, h.hasEdges ? std::optional(h.edges) : std::nullopt});
     board.put(LitFrame{lit, litReads, lights_->count(), lights_->capacity(),
@@ -437,9 +418,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     if (features.shadows) {
         board.put(ShadowFrame{shadowPass_.get(), shadowAtlas, shadowViews, shadowLights});
     }
-    FeatureFrame frame{g,       inputs,   resources, options_,  width_,
-                       height_, features, board,     features_, declaredWork_};
-    declareFeatures(frame, 0, firstLitFeature_);
+    declareRun(frame, FeatureRun::BeforeLighting);
     const float aoIntensity = std::clamp(inputs.scene.aoIntensity, 0.0f, 1.0f);
     if (!board.find<AmbientOcclusionFrame>())
         board.put(AmbientOcclusionFrame{{}, {}, 0, aoIntensity});
@@ -485,7 +464,7 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     targets.hdr = h.hdr;
     const IntegratedFroxels& froxelPlan =
         board.put(declareIntegratedFroxels(g, inputs.scene, options_, width_, height_, blended));
-    declareFeatures(frame, firstLitFeature_, firstPostFeature_);
+    declareRun(frame, FeatureRun::OverLitFrame);
     h.hdr = targets.hdr;
     h.depth = targets.depth;
     const std::optional<ResourceHandle> froxels = froxelPlan.buffer;
@@ -559,8 +538,15 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     return h.hdr.version;
 }
 
-void Renderer::declareFeatures(FeatureFrame& frame, size_t first, size_t end) {
-    for (size_t i = first; i < end; ++i) {
+void Renderer::addFeature(FeatureRun run, std::unique_ptr<RenderFeature> feature) {
+    renderFeatures_.push_back(std::move(feature));
+    featureRuns_.push_back(run);
+    featureDeclared_.push_back(false);
+}
+
+void Renderer::declareRun(FeatureFrame& frame, FeatureRun run) {
+    for (size_t i = 0; i < renderFeatures_.size(); ++i) {
+        if (featureRuns_[i] != run) continue;
         featureDeclared_[i] = renderFeatures_[i]->active(frame);
         if (featureDeclared_[i]) {
             renderFeatures_[i]->declare(frame);
@@ -640,7 +626,7 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
         FeatureFrame frame{
             g,     inputs,    *resources,   options_, width_, height_, lightingPass_->features(),
             board, features_, declaredWork_};
-        declareFeatures(frame, firstPostFeature_, renderFeatures_.size());
+        declareRun(frame, FeatureRun::AfterScene);
         hdr = targets.hdr;
     } else {
         for (const std::unique_ptr<RenderFeature>& feature : renderFeatures_)

@@ -33,6 +33,15 @@ struct FeatureFrame {
     WorkCounters& work;                  // counts fixed when the frame is declared
 };
 
+// Where in the frame a feature declares its passes, around those the renderer still declares
+// itself (render/README.md, "Features that own themselves").
+enum class FeatureRun : uint8_t {
+    BeforeGeometry,  // before shadow maps and the G-buffer: skinning
+    BeforeLighting,  // between the G-buffer and lighting: ambient occlusion
+    OverLitFrame,    // over the lit frame, under blended surfaces: SSR, media, hair, wires
+    AfterScene,      // on the scene's HDR target: antialiasing, exposure, bloom
+};
+
 class RenderFeature {
 public:
     virtual ~RenderFeature() = default;

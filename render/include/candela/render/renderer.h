@@ -29,6 +29,7 @@ class AutoExposureFeature;
 class FrameBlackboard;
 class FrameCamera;
 struct FeatureFrame;
+enum class FeatureRun : uint8_t;
 class RenderFeature;
 class EnvironmentBrdfLut;
 class FrameGraph;
@@ -56,7 +57,6 @@ class BloomPass;
 class ExposureHistogramPass;
 class ShadowPass;
 class SkyOcclusionPass;
-class SkinningPass;
 class DebugTextPass;
 class TrianglePass;
 class NonFiniteGuard;
@@ -153,9 +153,10 @@ private:
     struct SceneHandles;
     // Declare the frame's passes; return the HDR target's last version.
     uint32_t declareScene(const FrameInputs& inputs, SceneResources& resources, uint32_t hdr);
-    // renderFeatures_[first, end): the active ones declare their passes, the others restart
-    // their history.
-    void declareFeatures(FeatureFrame& frame, size_t first, size_t end);
+    // Features are declared in runs (FeatureRun), in the order they were added; in a run the
+    // active ones declare their passes, the others restart their history.
+    void addFeature(FeatureRun run, std::unique_ptr<RenderFeature> feature);
+    void declareRun(FeatureFrame& frame, FeatureRun run);
     void uploadFrameData(const FrameInputs& inputs);
     // captureMotionVectors: copies the frame's final motion vectors into motionReadback_.
     void declareMotionCapture(ResourceHandle motion);
@@ -199,14 +200,12 @@ private:
     // which of them the last declared frame declared.
     std::vector<std::unique_ptr<RenderFeature>> renderFeatures_;
     std::vector<bool> featureDeclared_;
-    size_t firstLitFeature_ = 0;   // renderFeatures_ from here: over the lit frame
-    size_t firstPostFeature_ = 0;  // renderFeatures_ from here: after the scene's passes
+    std::vector<FeatureRun> featureRuns_;          // each feature's run
     AutoExposureFeature* autoExposure_ = nullptr;  // one of them: the frame's exposure
     std::unique_ptr<FrameBlackboard> board_;
     std::unique_ptr<TonemapPass> tonemapPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<SkyOcclusionPass> skyOcclusionPass_;
-    std::unique_ptr<SkinningPass> skinningPass_;    // made on the first frame with animation
     std::unique_ptr<DebugTextPass> debugTextPass_;  // made on the first frame with text
     std::unique_ptr<ShadingTables>
         shadingTables_;  // LUT, LTC table, rect textures, sky placeholders
