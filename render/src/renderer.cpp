@@ -594,7 +594,8 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     g.clear();
     ResourceHandle hdr = g.importImage("hdr", &hdr_, kDiscardAfterCopies, kReadyToCopy);
     ResourceHandle ldr = g.importImage("ldr", &ldr_, kDiscardAfterCopies, kReadyToCopy);
-    if (inputs.testTriangleRadiance || !resources) {
+    const bool sceneFrame = !inputs.testTriangleRadiance && resources;
+    if (!sceneFrame) {
         const std::array<float, 4> clear = inputs.clearRadiance;
         const std::array<float, 4> radiance = inputs.testTriangleRadiance.value_or(clear);
         auto p =
@@ -608,7 +609,6 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
         if (options_.captureMotionVectors) declareMotionCapture(board_->get<SceneTargets>().motion);
     }
     // Auto exposure reads the histogram of the previous frame, which begin() waited for.
-    const bool sceneFrame = features_[0] != "test_triangle";
     float ev100 = inputs.scene.camera.ev100;
     stats_.exposureEv100 = ev100;
     stats_.adaptedEv100 = ev100;
@@ -705,7 +705,7 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     if (nonFinite_->declareProbes(g)) features_.push_back("nonfinite_probes");
     const double recordMs = millisecondsSince(start);
     executor_->execute(g, submitter, cmd);
-    frameRecorded_ = true;
+    recorded_ = sceneFrame ? RecordedFrame::Scene : RecordedFrame::TestTriangle;
     stats_.frameGraph = executor_->stats();
     stats_.frameGraph.recordMs = recordMs;
     const GpuContext::PipelineStatistics pipelines = context_.pipelineStatistics();

@@ -34,7 +34,7 @@ void Renderer::declareMotionCapture(ResourceHandle motion) {
 
 std::vector<glm::vec2> Renderer::motionVectors() const {
     std::vector<glm::vec2> motion;
-    if (motionReadback_.size() == 0 || !frameRecorded_) return motion;
+    if (motionReadback_.size() == 0 || recorded_ == RecordedFrame::None) return motion;
     const auto* halves = static_cast<const uint16_t*>(motionReadback_.mapped());
     motion.resize(size_t(width_) * height_);
     for (size_t i = 0; i < motion.size(); ++i)

@@ -42,6 +42,16 @@ enum class FeatureRun : uint8_t {
     AfterScene,      // on the scene's HDR target: antialiasing, exposure, bloom
 };
 
+// The GPU time of the last frame's passes whose names start with `prefix` (stats.passMs): what a
+// feature reports for the passes it names.
+inline double passMilliseconds(const RendererStats& stats, std::string_view prefix) {
+    double ms = 0.0;
+    for (const auto& [name, passMs] : stats.passMs) {
+        if (name.starts_with(prefix)) ms += passMs;
+    }
+    return ms;
+}
+
 class RenderFeature {
 public:
     virtual ~RenderFeature() = default;

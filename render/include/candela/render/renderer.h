@@ -184,8 +184,9 @@ private:
     GpuBuffer motionReadback_;  // captureMotionVectors: RG16F texels, host-visible
     std::unique_ptr<FxaaPass> fxaaPass_;
     std::unique_ptr<UpscalePass> upscalePass_;  // renderScale below 1
-    bool frameRecorded_ = false;
-    std::unique_ptr<NonFiniteGuard> nonFinite_;  // NaN/Inf count, diagnosis probes
+    enum class RecordedFrame : uint8_t { None, TestTriangle, Scene };
+    RecordedFrame recorded_ = RecordedFrame::None;  // what the last recordFrame drew
+    std::unique_ptr<NonFiniteGuard> nonFinite_;     // NaN/Inf count, diagnosis probes
     std::unique_ptr<TrianglePass> trianglePass_;
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<LightingPass> lightingPass_;

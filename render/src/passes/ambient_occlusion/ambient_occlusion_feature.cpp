@@ -163,4 +163,8 @@ void AmbientOcclusionFeature::restartHistory() {
     frame_ = 0;
 }
 
+void AmbientOcclusionFeature::collectStats(RendererStats& stats, bool) const {
+    stats.aoMs = passMilliseconds(stats, "ambient_occlusion_");
+}
+
 }  // namespace candela::render

@@ -20,6 +20,8 @@ public:
     ~AmbientOcclusionFeature() override;
     bool active(const FeatureFrame& frame) const override;
     void declare(FeatureFrame& frame) override;
+    // ao_ms.
+    void collectStats(RendererStats& stats, bool declared) const override;
     void restartHistory() override;
 
     // Whether GTAO accumulates over frames with these options (AoTemporal: with TAA, always or

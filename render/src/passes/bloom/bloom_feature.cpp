@@ -53,4 +53,8 @@ void BloomFeature::declare(FeatureFrame& frame) {
     targets.hdr = p.write(hdr, Use::StorageReadWrite);
 }
 
+void BloomFeature::collectStats(RendererStats& stats, bool) const {
+    stats.bloomMs = passMilliseconds(stats, "bloom_");
+}
+
 }  // namespace candela::render

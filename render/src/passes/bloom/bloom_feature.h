@@ -16,6 +16,8 @@ public:
     ~BloomFeature() override;
     bool active(const FeatureFrame& frame) const override;
     void declare(FeatureFrame& frame) override;
+    // bloom_ms.
+    void collectStats(RendererStats& stats, bool declared) const override;
 
 private:
     GpuContext& context_;

@@ -139,8 +139,10 @@ void HairFeature::collectStats(RendererStats& stats, bool declared) const {
     stats.hairNodes = 0;
     stats.hairNodesDropped = 0;
     stats.hairNodeCapacity = 0;
+    stats.work.hairFragments = 0;
     if (!declared || !drawn_) return;
     stats.hairNodes = pass_->requestedNodes();
+    stats.work.hairFragments = stats.hairNodes;
     stats.hairNodeCapacity = nodeCapacity_;
     stats.hairNodesDropped = stats.hairNodes > nodeCapacity_ ? stats.hairNodes - nodeCapacity_ : 0;
 }

@@ -18,7 +18,8 @@ public:
     ~HairFeature() override;
     bool active(const FeatureFrame& frame) const override;
     void declare(FeatureFrame& frame) override;
-    // hair_nodes (the fragments the fill asked for), hair_node_capacity, hair_nodes_dropped.
+    // hair_nodes (the fragments the fill asked for, also work.hair_fragments),
+    // hair_node_capacity, hair_nodes_dropped.
     void collectStats(RendererStats& stats, bool declared) const override;
 
 private:

@@ -173,12 +173,16 @@ void ScatteringFeature::declare(FeatureFrame& frame) {
 }
 
 void ScatteringFeature::collectStats(RendererStats& stats, bool declared) const {
+    stats.scatteringMs = passMilliseconds(stats, "scattering_");
+    stats.aerialPerspectiveMs = passMilliseconds(stats, "aerial_perspective");
     stats.scatteringSamples = 0;
     stats.scatteringSteps = 0;
+    stats.work.scatteringSteps = 0;
     if (!declared || !marched_) return;
     const ScatteringPass::Counts c = pass_->readCounters();
     stats.scatteringSamples = c.rays;
     stats.scatteringSteps = c.steps;
+    stats.work.scatteringSteps = c.steps;
 }
 
 }  // namespace candela::render

@@ -20,7 +20,7 @@ public:
     ~ScatteringFeature() override;
     bool active(const FeatureFrame& frame) const override;
     void declare(FeatureFrame& frame) override;
-    // scattering_samples and scattering_steps (the march's counters).
+    // scattering_ms, aerial_perspective_ms, scattering_samples and scattering_steps.
     void collectStats(RendererStats& stats, bool declared) const override;
 
 private:

@@ -33,4 +33,8 @@ void SkinningFeature::declare(FeatureFrame& frame) {
     frame.board.put(DeformedVertices{p.write(deformed, Use::StorageWrite)});
 }
 
+void SkinningFeature::collectStats(RendererStats& stats, bool) const {
+    stats.skinningMs = passMilliseconds(stats, "skinning");
+}
+
 }  // namespace candela::render

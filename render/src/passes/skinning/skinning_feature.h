@@ -23,6 +23,8 @@ public:
     ~SkinningFeature() override;
     bool active(const FeatureFrame& frame) const override;
     void declare(FeatureFrame& frame) override;
+    // skinning_ms.
+    void collectStats(RendererStats& stats, bool declared) const override;
 
 private:
     GpuContext& context_;

@@ -172,6 +172,7 @@ void SsrFeature::declare(FeatureFrame& frame) {
 }
 
 void SsrFeature::collectStats(RendererStats& stats, bool declared) const {
+    stats.ssrMs = passMilliseconds(stats, "ssr_");
     stats.ssrStepsMean = 0.0;
     stats.ssrStepsMax = 0;
     stats.ssrHitRate = 0.0;

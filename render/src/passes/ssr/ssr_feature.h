@@ -18,7 +18,7 @@ public:
     ~SsrFeature() override;
     bool active(const FeatureFrame& frame) const override;
     void declare(FeatureFrame& frame) override;
-    // ssr_steps_mean, ssr_steps_max, ssr_hit_rate, the rays and the work counter's steps.
+    // ssr_ms, ssr_steps_mean, ssr_steps_max, ssr_hit_rate, the rays and the work counter's steps.
     void collectStats(RendererStats& stats, bool declared) const override;
     void restartHistory() override;
 

@@ -56,4 +56,8 @@ void TaaFeature::restartHistory() {
     history_->invalidate();
 }
 
+void TaaFeature::collectStats(RendererStats& stats, bool) const {
+    stats.taaMs = passMilliseconds(stats, "taa");
+}
+
 }  // namespace candela::render

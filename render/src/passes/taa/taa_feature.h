@@ -18,6 +18,8 @@ public:
     ~TaaFeature() override;
     bool active(const FeatureFrame& frame) const override;
     void declare(FeatureFrame& frame) override;
+    // taa_ms (the resolve and its copy back).
+    void collectStats(RendererStats& stats, bool declared) const override;
     void restartHistory() override;
 
 private:

@@ -36,40 +36,36 @@ struct MediumDeclaration {
             p.read(shadows->lights, Use::StorageRead, stages);
         }
     }
+    // The reference: every light marched per pixel through the medium.
+    void declareReference();
+    // The fog's grid: lit per froxel, then integrated front to back into froxels.buffer.
+    void declareFroxelLight(bool volumes);
+    // The integrated grid over the lit frame, by depth.
+    void declareFroxelComposite();
+    // Per-light volumes (Vos, GPU Pro 5), or the sun marched over the froxels: marched at half
+    // resolution (or rasterised as proxy meshes), blurred and composited.
+    void declareVolumes(bool volumes, bool volumeProxies);
 };
 
-// The reference: every light marched per pixel through the medium.
-void declareReference(MediumDeclaration& m) {
-    FeatureFrame& frame = m.frame;
-    VolumetricsPass* pass = m.pass;
-    FrameGraph& graph = m.frame.graph;
-    SceneTargets& targets = m.targets;
-    const VolumetricsPass::Inputs& volume = m.volume;
-    const ShadowDescriptors& shadowDescriptors = m.shadowDescriptors;
+void MediumDeclaration::declareReference() {
+    FrameGraph& graph = frame.graph;
     frame.features.push_back("volumetrics_reference");
     auto p = graph.addPass("volumetrics_reference", PassKind::Device,
-                           [pass, hdr = targets.hdr, depth = targets.depth, volume,
-                            shadowDescriptors](PassContext& ctx) {
+                           [pass = pass, hdr = targets.hdr, depth = targets.depth, volume = volume,
+                            shadowDescriptors = shadowDescriptors](PassContext& ctx) {
                                VolumetricsPass::Inputs in = volume;
                                in.depth = ctx.image(depth);
                                in.hdr = ctx.image(hdr);
                                in.shadows = &shadowDescriptors;
                                pass->recordReference(ctx.cmd(), in);
                            });
-    m.readLights(p);
+    readLights(p);
     p.read(targets.depth, Use::Sampled);
     targets.hdr = p.write(targets.hdr, Use::StorageReadWrite);
 }
 
-// The fog's grid: lit per froxel, then integrated front to back into froxels.buffer.
-void declareFroxelLight(MediumDeclaration& m, bool volumes) {
-    FeatureFrame& frame = m.frame;
-    VolumetricsPass* pass = m.pass;
-    FrameGraph& graph = m.frame.graph;
-    SceneTargets& targets = m.targets;
-    IntegratedFroxels& froxels = m.froxels;
-    const VolumetricsPass::Inputs& volume = m.volume;
-    const ShadowDescriptors& shadowDescriptors = m.shadowDescriptors;
+void MediumDeclaration::declareFroxelLight(bool volumes) {
+    FrameGraph& graph = frame.graph;
     if (!volumes) frame.features.push_back("volumetrics_froxels");
     if (froxels.sunChannel) frame.features.push_back("volumetrics_froxel_sun");
     const VkDeviceSize bytes =
@@ -78,18 +74,19 @@ void declareFroxelLight(MediumDeclaration& m, bool volumes) {
         graph.createBuffer("volumetrics.froxel_medium", bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     const ResourceHandle integrated = *froxels.buffer;
     auto light = graph.addPass("volumetrics_froxel_light", PassKind::Device,
-                               [pass, medium, volume, shadowDescriptors](PassContext& ctx) {
+                               [pass = pass, medium, volume = volume,
+                                shadowDescriptors = shadowDescriptors](PassContext& ctx) {
                                    VolumetricsPass::Inputs in = volume;
                                    in.shadows = &shadowDescriptors;
                                    pass->recordFroxelLight(ctx.cmd(), in, ctx.buffer(medium));
                                });
-    m.readLights(light);
+    readLights(light);
     light.read(graph.importBuffer("volumetrics.froxel_bins", &pass->froxelBins()),
                Use::StorageRead);
     medium = light.write(medium, Use::StorageWrite);
     auto integrate =
         graph.addPass("volumetrics_froxel_integrate", PassKind::Device,
-                      [pass, medium, integrated, volume](PassContext& ctx) {
+                      [pass = pass, medium, integrated, volume = volume](PassContext& ctx) {
                           pass->recordFroxelIntegrate(ctx.cmd(), volume, ctx.buffer(medium),
                                                       ctx.buffer(integrated));
                       });
@@ -98,38 +95,27 @@ void declareFroxelLight(MediumDeclaration& m, bool volumes) {
     froxels.buffer = integrate.write(integrated, Use::StorageWrite);
 }
 
-// The integrated grid over the lit frame, by depth.
-void declareFroxelComposite(MediumDeclaration& m) {
-    VolumetricsPass* pass = m.pass;
-    FrameGraph& graph = m.frame.graph;
-    SceneTargets& targets = m.targets;
-    IntegratedFroxels& froxels = m.froxels;
-    const VolumetricsPass::Inputs& volume = m.volume;
-    auto composite = graph.addPass("volumetrics_composite", PassKind::Device,
-                                   [pass, hdr = targets.hdr, depth = targets.depth,
-                                    integrated = *froxels.buffer, volume](PassContext& ctx) {
-                                       VolumetricsPass::Inputs in = volume;
-                                       in.depth = ctx.image(depth);
-                                       in.hdr = ctx.image(hdr);
-                                       pass->recordComposite(ctx.cmd(), in, ctx.buffer(integrated));
-                                   });
+void MediumDeclaration::declareFroxelComposite() {
+    FrameGraph& graph = frame.graph;
+    auto composite =
+        graph.addPass("volumetrics_composite", PassKind::Device,
+                      [pass = pass, hdr = targets.hdr, depth = targets.depth,
+                       integrated = *froxels.buffer, volume = volume](PassContext& ctx) {
+                          VolumetricsPass::Inputs in = volume;
+                          in.depth = ctx.image(depth);
+                          in.hdr = ctx.image(hdr);
+                          pass->recordComposite(ctx.cmd(), in, ctx.buffer(integrated));
+                      });
     composite.read(targets.camera, Use::Uniform);
     composite.read(targets.depth, Use::Sampled);
     composite.read(*froxels.buffer, Use::StorageRead);
     targets.hdr = composite.write(targets.hdr, Use::StorageReadWrite);
 }
 
-// Per-light volumes (Vos, GPU Pro 5), or the sun marched over the froxels: marched at half
-// resolution (or rasterised as proxy meshes), blurred and composited.
-void declareVolumes(MediumDeclaration& m, bool volumes, bool volumeProxies) {
-    FeatureFrame& frame = m.frame;
-    VolumetricsPass* pass = m.pass;
-    FrameGraph& graph = m.frame.graph;
-    SceneTargets& targets = m.targets;
-    const VolumetricsPass::Inputs& volume = m.volume;
-    const ShadowDescriptors& shadowDescriptors = m.shadowDescriptors;
-    const uint32_t width = m.frame.width;
-    const uint32_t height = m.frame.height;
+void MediumDeclaration::declareVolumes(bool volumes, bool volumeProxies) {
+    FrameGraph& graph = frame.graph;
+    const uint32_t width = frame.width;
+    const uint32_t height = frame.height;
     frame.features.push_back(volumes ? "volumetrics_volumes" : "volumetrics_sun_march");
     ResourceHandle marched = graph.createImage(
         "volumetrics.volumes_marched", VolumetricsPass::volumesDesc(width, height, volumeProxies));
@@ -141,37 +127,37 @@ void declareVolumes(MediumDeclaration& m, bool volumes, bool volumeProxies) {
             "volumetrics.volumes_depth", VolumetricsPass::volumesDepthDesc(width, height));
         auto proxies =
             graph.addPass("volumetrics_volumes_proxies", PassKind::Device,
-                          [pass, depth = targets.depth, marched, proxyDepth, volume,
-                           shadowDescriptors](PassContext& ctx) {
+                          [pass = pass, depth = targets.depth, marched, proxyDepth, volume = volume,
+                           shadowDescriptors = shadowDescriptors](PassContext& ctx) {
                               VolumetricsPass::Inputs in = volume;
                               in.depth = ctx.image(depth);
                               in.shadows = &shadowDescriptors;
                               pass->recordVolumesProxies(ctx.cmd(), in, ctx.image(marched),
                                                          ctx.image(proxyDepth));
                           });
-        m.readLights(proxies, kRasterStages);
+        readLights(proxies, kRasterStages);
         proxies.read(graph.importBuffer("volumetrics.proxy_instances", &pass->proxyInstances()),
                      Use::StorageRead, kRasterStages);
         proxies.read(targets.depth, Use::Sampled, kFragmentStage);
         marched = proxies.write(marched, Use::ColorAttachment);
         proxies.write(proxyDepth, Use::DepthWrite);
     } else {
-        auto march = graph.addPass(
-            "volumetrics_volumes_march", PassKind::Device,
-            [pass, depth = targets.depth, marched, volume, shadowDescriptors](PassContext& ctx) {
-                VolumetricsPass::Inputs in = volume;
-                in.depth = ctx.image(depth);
-                in.shadows = &shadowDescriptors;
-                pass->recordVolumesMarch(ctx.cmd(), in, ctx.image(marched));
-            });
-        m.readLights(march);
+        auto march = graph.addPass("volumetrics_volumes_march", PassKind::Device,
+                                   [pass = pass, depth = targets.depth, marched, volume = volume,
+                                    shadowDescriptors = shadowDescriptors](PassContext& ctx) {
+                                       VolumetricsPass::Inputs in = volume;
+                                       in.depth = ctx.image(depth);
+                                       in.shadows = &shadowDescriptors;
+                                       pass->recordVolumesMarch(ctx.cmd(), in, ctx.image(marched));
+                                   });
+        readLights(march);
         march.read(graph.importBuffer("volumetrics.volume_bins", &pass->volumeBins()),
                    Use::StorageRead);
         march.read(targets.depth, Use::Sampled);
         marched = march.write(marched, Use::StorageWrite);
     }
     auto blur = graph.addPass("volumetrics_volumes_blur", PassKind::Device,
-                              [pass, marched, blurred, volume](PassContext& ctx) {
+                              [pass = pass, marched, blurred, volume = volume](PassContext& ctx) {
                                   pass->recordVolumesBlur(ctx.cmd(), volume, ctx.image(marched),
                                                           ctx.image(blurred));
                               });
@@ -180,8 +166,8 @@ void declareVolumes(MediumDeclaration& m, bool volumes, bool volumeProxies) {
     blurred = blur.write(blurred, Use::StorageWrite);
     auto composite =
         graph.addPass("volumetrics_volumes_composite", PassKind::Device,
-                      [pass, hdr = targets.hdr, depth = targets.depth, blurred, volume,
-                       volumes](PassContext& ctx) {
+                      [pass = pass, hdr = targets.hdr, depth = targets.depth, blurred,
+                       volume = volume, volumes](PassContext& ctx) {
                           VolumetricsPass::Inputs in = volume;
                           in.depth = ctx.image(depth);
                           in.hdr = ctx.image(hdr);
@@ -249,16 +235,20 @@ void VolumetricsFeature::declare(FeatureFrame& frame) {
     MediumDeclaration m{frame,   pass,   targets,           lit,   shadows,
                         froxels, volume, shadowDescriptors, scales};
     if (options.volumetrics == VolumetricsMode::Reference) {
-        declareReference(m);
+        m.declareReference();
         return;
     }
     // Per-light volumes light only opaque surfaces; blended ones and wires read the froxel grid,
     // made for them in frames that have them.
     const bool volumes = options.volumetrics == VolumetricsMode::Volumes;
-    if (froxels.fogFroxels) declareFroxelLight(m, volumes);
+    if (froxels.fogFroxels) m.declareFroxelLight(volumes);
     // The froxels' composite first: the sun marched over them only adds its light.
-    if (!volumes) declareFroxelComposite(m);
-    if (volumes || froxels.sunMarched) declareVolumes(m, volumes, volumeProxies);
+    if (!volumes) m.declareFroxelComposite();
+    if (volumes || froxels.sunMarched) m.declareVolumes(volumes, volumeProxies);
+}
+
+void VolumetricsFeature::collectStats(RendererStats& stats, bool) const {
+    stats.volumetricsMs = passMilliseconds(stats, "volumetrics_");
 }
 
 }  // namespace candela::render

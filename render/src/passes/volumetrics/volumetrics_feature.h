@@ -18,6 +18,8 @@ public:
     ~VolumetricsFeature() override;
     bool active(const FeatureFrame& frame) const override;
     void declare(FeatureFrame& frame) override;
+    // volumetrics_ms.
+    void collectStats(RendererStats& stats, bool declared) const override;
 
 private:
     GpuContext& context_;
