@@ -6,8 +6,10 @@
 
 #include "candela/render/renderer.h"
 #include "clustered/cluster_light_lists.h"
-#include "features/render_feature.h"
+#include "features/declared_frame.h"
+#include "features/feature_list.h"
 #include "frame_graph/frame_graph_executor.h"
+#include "lit_scene.h"
 #include "passes/lighting/lighting_pass.h"
 #include "passes/nonfinite/nonfinite_guard.h"
 
@@ -18,14 +20,15 @@ const RendererStats& Renderer::collectStats() {
     stats_.skyMs = 0.0;
     stats_.shadowMs = 0.0;
     stats_.passMs.clear();
-    if (recorded_ == RecordedFrame::None) {
-        for (const std::unique_ptr<RenderFeature>& feature : renderFeatures_)
-            feature->collectStats(stats_, false);
+    const DeclaredFrame& declared = *frame_;
+    if (declared.recorded == RecordedFrame::None) {
+        features_->collectStats(stats_, false);
         return stats_;
     }
     nonFinite_->collect(executor_->compiled().order, stats_);
-    const bool onDevice = clusters_->assignedOnDevice();
-    clusters_->collectStats(stats_);
+    ClusterLightLists& clusters = lit_->clusters();
+    const bool onDevice = clusters.assignedOnDevice();
+    clusters.collectStats(stats_);
     if (onDevice) stats_.lightAssignMs = 0.0;
     stats_.passMs = executor_->passTimes();
     for (const auto& [name, ms] : stats_.passMs) {
@@ -37,15 +40,15 @@ const RendererStats& Renderer::collectStats() {
     }
     // Work the frame's declaration fixed (froxel pairs, AO samples), then the passes' counters:
     // the features' (SSR steps...), then the lighting pass's.
-    stats_.work = declaredWork_;
-    for (size_t i = 0; i < renderFeatures_.size(); ++i)
-        renderFeatures_[i]->collectStats(stats_, featureDeclared_[i]);
+    stats_.work = declared.work;
+    features_->collectStats(stats_, true);
     stats_.lightEvaluations = 0;
     stats_.litPairs = 0;
-    if (options_.countLightPairs && recorded_ == RecordedFrame::Scene) {
-        const auto* counts = static_cast<const uint32_t*>(pairCounts_.mapped());
+    if (options_.countLightPairs && declared.recorded == RecordedFrame::Scene) {
+        const auto* counts = static_cast<const uint32_t*>(targets_.pairCounts.mapped());
         const uint32_t n = LightingPass::kCountsPerWorkgroup;
-        for (uint32_t g = 0; g < LightingPass::workgroupCount(width_, height_); ++g) {
+        for (uint32_t g = 0; g < LightingPass::workgroupCount(targets_.width, targets_.height);
+             ++g) {
             const uint32_t* c = counts + size_t(g) * n;
             stats_.lightEvaluations += c[0];
             stats_.litPairs += c[1];

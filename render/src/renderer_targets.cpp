@@ -11,12 +11,12 @@
 #include "candela/render/gpu_context.h"
 #include "candela/render/renderer.h"
 #include "clustered/cluster_light_lists.h"
-#include "features/render_feature.h"
-#include "frame_camera.h"
+#include "features/feature_list.h"
+#include "lit_scene.h"
 #include "passes/ambient_occlusion/ambient_occlusion_pass.h"
 #include "passes/lighting/lighting_pass.h"
+#include "passes/output/output_stage.h"
 #include "passes/ssr/ssr_pass.h"
-#include "passes/upscale/upscale_pass.h"
 #include "vk/image_transfer.h"
 
 namespace candela::render {
@@ -63,55 +63,51 @@ std::string Renderer::outputSizeProblem(const GpuContext& context, uint32_t widt
 }
 
 void Renderer::resize(uint32_t width, uint32_t height) {
-    outputWidth_ = width;
-    outputHeight_ = height;
-    width_ = scaledSize(width, options_.renderScale);
-    height_ = scaledSize(height, options_.renderScale);
+    targets_.outputWidth = width;
+    targets_.outputHeight = height;
+    targets_.width = scaledSize(width, options_.renderScale);
+    targets_.height = scaledSize(height, options_.renderScale);
     createTargets();
 }
 
 void Renderer::createTargets() {
+    Targets& t = targets_;
     // The upscale pass and its target exist exactly while the sizes differ (a 1-pixel side
     // may round to 1).
-    if (width_ == outputWidth_ && height_ == outputHeight_) {
-        upscalePass_.reset();
-        outputHdr_ = GpuImage();
-    } else if (!upscalePass_) {
-        upscalePass_ = std::make_unique<UpscalePass>(context_);
-    }
+    output_->setUpscales(t.width != t.outputWidth || t.height != t.outputHeight);
+    if (!output_->upscales()) t.outputHdr = GpuImage();
     // RGBA32F, not 16F: captures are compared at 1e-4..1e-5 relative, below half precision.
     // Transfer destination: TAA copies its resolve back into it.
     // Sampled: forward MSAA copies it into its multisampled target; the upscale pass filters it.
-    hdr_ =
-        GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, width_, height_, 1, false,
+    t.hdr =
+        GpuImage(context_, {VK_FORMAT_R32G32B32A32_SFLOAT, t.width, t.height, 1, false,
                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                (options_.msaaSamples > 1 || upscalePass_
+                                (options_.msaaSamples > 1 || output_->upscales()
                                      ? VkImageUsageFlags(VK_IMAGE_USAGE_SAMPLED_BIT)
                                      : 0u)});
-    camera_->restart();
+    lit_->restart();
     // Colour attachment too: UI overlays (candela::ui) draw onto the tonemapped image.
-    if (upscalePass_) {
+    if (output_->upscales()) {
         // Written by the upscale pass, read by tonemapping, copied by captures.
-        outputHdr_ = GpuImage(context_,
-                              {VK_FORMAT_R32G32B32A32_SFLOAT, outputWidth_, outputHeight_, 1, false,
-                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+        t.outputHdr = GpuImage(
+            context_, {VK_FORMAT_R32G32B32A32_SFLOAT, t.outputWidth, t.outputHeight, 1, false,
+                       VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                           VK_IMAGE_USAGE_TRANSFER_DST_BIT});
     }
-    ldr_ = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, outputWidth_, outputHeight_, 1, false,
-                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
+    t.ldr = GpuImage(context_, {VK_FORMAT_R8G8B8A8_UNORM, t.outputWidth, t.outputHeight, 1, false,
+                                VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT});
     // Cleared on the device each frame (lighting_counts_clear) before the atomics add to it.
-    ensureHostBuffer(context_, pairCounts_,
-                     VkDeviceSize(LightingPass::workgroupCount(width_, height_)) *
+    ensureHostBuffer(context_, t.pairCounts,
+                     VkDeviceSize(LightingPass::workgroupCount(t.width, t.height)) *
                          LightingPass::kCountsPerWorkgroup * sizeof(uint32_t),
                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
 }
 
 void Renderer::restartTemporalHistory() {
-    for (const std::unique_ptr<RenderFeature>& feature : renderFeatures_)
-        feature->restartHistory();
-    camera_->restart();
+    features_->restartHistories();
+    lit_->restart();
 }
 
 }  // namespace candela::render

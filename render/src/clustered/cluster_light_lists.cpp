@@ -19,6 +19,18 @@
 
 namespace candela::render {
 
+namespace {
+
+// List entries keep the light index in 28 bits (common/light_list_entry.h).
+void checkLightIndexRange(size_t lightCount) {
+    if (lightCount > size_t(LIGHT_ENTRY_INDEX_MASK) + 1) {
+        throw std::length_error("clustered lighting: " + std::to_string(lightCount) +
+                                " lights, over the 2^28 a light list entry can index");
+    }
+}
+
+}  // namespace
+
 bool ensureHostBuffer(GpuContext& context, GpuBuffer& buffer, VkDeviceSize bytes,
                       VkBufferUsageFlags extraUsage) {
     bytes = std::max<VkDeviceSize>(bytes, 16);
@@ -170,37 +182,50 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
                                                     RendererStats& stats) {
     const bool onDevice = device_ == LightAssignmentDevice::Gpu;
     assignedOnDevice_ = false;
-    ensureHostBuffer(context_, occupancy_, VkDeviceSize(grid_->tileCount()) * 8);
-    ensureHostBuffer(context_, clusterBounds_,
-                     VkDeviceSize(grid_->clusterCount()) * CLUSTER_BOUNDS_FLOATS * sizeof(float));
-    // List entries keep the light index in 28 bits (common/light_list_entry.h).
-    if (in.frame->scene.lights.size() > size_t(LIGHT_ENTRY_INDEX_MASK) + 1) {
-        throw std::length_error(
-            "clustered lighting: " + std::to_string(in.frame->scene.lights.size()) +
-            " lights, over the 2^28 a light list entry can index");
-    }
+    ensureOccupancyBuffers();
+    checkLightIndexRange(in.frame->scene.lights.size());
     // Read on the CPU: by the host assignment pass, or (device path) for the stats.
-    ResourceHandle tileMasks = g.importBuffer("cluster.tile_masks", &occupancy_, onDevice);
-    ResourceHandle clusterBounds = g.importBuffer("cluster.bounds", &clusterBounds_);
+    OccupancyHandles occupancy;
+    occupancy.tileMasks = g.importBuffer("cluster.tile_masks", &occupancy_, onDevice);
+    occupancy.clusterBounds = g.importBuffer("cluster.bounds", &clusterBounds_);
     Lists lists;
     lists.depthRange = g.importBuffer("cluster.depth_range", &depthRange_);
     // The device path's overflowed clusters are counted on the CPU after the frame.
     lists.ranges = g.importBuffer("cluster.ranges", &clusterRanges_, onDevice);
     lists.indices = g.importBuffer("cluster.light_indices", &lightIndices_);
-    const ResourceHandle depth = in.depth;
+    declareDepthOccupancy(g, in.depth, lists.depthRange, occupancy);
+    if (in.blended) declareBlendedOccupancy(g, in, lists.depthRange, occupancy);
+    if (!onDevice) {
+        declareHostAssignment(g, in.frame, occupancy, lists, stats);
+        return lists;
+    }
+    declareDeviceAssignment(g, in, occupancy, lists, stats);
+    assignedOnDevice_ = true;
+    return lists;
+}
+
+void ClusterLightLists::ensureOccupancyBuffers() {
+    ensureHostBuffer(context_, occupancy_, VkDeviceSize(grid_->tileCount()) * 8);
+    ensureHostBuffer(context_, clusterBounds_,
+                     VkDeviceSize(grid_->clusterCount()) * CLUSTER_BOUNDS_FLOATS * sizeof(float));
+}
+
+void ClusterLightLists::declareDepthOccupancy(FrameGraph& g, ResourceHandle depth,
+                                              ResourceHandle& depthRange,
+                                              OccupancyHandles& occupancy) {
     const glm::vec2 projectionScale = projectionScale_;
     {
         auto p = g.addPass("depth_range_clear", PassKind::Device, [this](PassContext& ctx) {
             occupancyPass_->recordClearRange(ctx.cmd(), depthRange_);
         });
-        lists.depthRange = p.write(lists.depthRange, Use::TransferDst);
+        depthRange = p.write(depthRange, Use::TransferDst);
     }
     {
         auto p = g.addPass("depth_range", PassKind::Device, [this, depth](PassContext& ctx) {
             occupancyPass_->recordMeasureRange(ctx.cmd(), ctx.image(depth), *grid_, depthRange_);
         });
         p.read(depth, Use::Sampled);
-        lists.depthRange = p.write(lists.depthRange, Use::StorageReadWrite);
+        depthRange = p.write(depthRange, Use::StorageReadWrite);
     }
     {
         auto p = g.addPass(
@@ -210,63 +235,71 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
                                                     {&occupancy_, &clusterBounds_, &depthRange_});
             });
         p.read(depth, Use::Sampled);
-        lists.depthRange = p.write(lists.depthRange, Use::StorageReadWrite);
-        tileMasks = p.write(tileMasks, Use::StorageWrite);
-        clusterBounds = p.write(clusterBounds, Use::StorageWrite);
+        depthRange = p.write(depthRange, Use::StorageReadWrite);
+        occupancy.tileMasks = p.write(occupancy.tileMasks, Use::StorageWrite);
+        occupancy.clusterBounds = p.write(occupancy.clusterBounds, Use::StorageWrite);
     }
-    if (in.blended) {
-        ForwardTransparentPass* blended = in.blended;
-        SceneResources* resources = in.resources;
-        ResourceHandle bounds =
-            g.createBuffer("transparent.bounds", ForwardTransparentPass::boundsBytes(*grid_),
-                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-        const GpuBuffer* camera = in.cameraBuffer;
-        auto occupancyInputs = [this, depth, bounds, camera, projectionScale](PassContext& ctx) {
-            return ForwardTransparentPass::OccupancyInputs{
-                ctx.image(depth),   camera,      &depthRange_,   &occupancy_, &clusterBounds_,
-                ctx.buffer(bounds), grid_.get(), projectionScale};
-        };
-        auto clear = g.addPass("transparent_bounds_clear", PassKind::Device,
-                               [blended, occupancyInputs](PassContext& ctx) {
-                                   blended->recordClearBounds(ctx.cmd(), occupancyInputs(ctx));
-                               });
-        bounds = clear.write(bounds, Use::TransferDst);
-        auto mark =
-            g.addPass("transparent_occupancy", PassKind::Device,
-                      [blended, resources, occupancyInputs](PassContext& ctx) {
-                          blended->recordMarkOccupancy(ctx.cmd(), *resources, occupancyInputs(ctx));
-                      });
-        mark.read(depth, Use::Sampled, kFragmentStage);
-        mark.read(in.camera, Use::Uniform, kRasterStages);
-        mark.read(lists.depthRange, Use::StorageRead, kFragmentStage);
-        if (in.deformed.valid()) mark.read(in.deformed, Use::VertexInput);
-        bounds = mark.write(bounds, Use::StorageReadWrite, kFragmentStage);
-        auto merge = g.addPass("transparent_occupancy_merge", PassKind::Device,
-                               [blended, occupancyInputs](PassContext& ctx) {
-                                   blended->recordMergeOccupancy(ctx.cmd(), occupancyInputs(ctx));
-                               });
-        merge.read(bounds, Use::StorageRead);
-        tileMasks = merge.write(tileMasks, Use::StorageReadWrite);
-        clusterBounds = merge.write(clusterBounds, Use::StorageReadWrite);
-    }
+}
 
-    if (!onDevice) {
-        // The frame splits here: the occupancy must be on the CPU before lights are assigned.
-        const FrameInputs* frame = in.frame;
-        auto p =
-            g.addPass("light_assignment_cpu", PassKind::Host, [this, frame, &stats](PassContext&) {
-                const CpuClock::time_point start = CpuClock::now();
-                assignOnCpu(*frame, stats);
-                stats.lightAssignMs = millisecondsSince(start);
-            });
-        p.read(tileMasks, Use::HostRead);
-        p.read(clusterBounds, Use::HostRead);
-        p.read(lists.depthRange, Use::HostRead);
-        lists.ranges = p.write(lists.ranges, Use::HostWrite);
-        lists.indices = p.write(lists.indices, Use::HostWrite);
-        return lists;
-    }
+void ClusterLightLists::declareBlendedOccupancy(FrameGraph& g, const Inputs& in,
+                                                ResourceHandle depthRange,
+                                                OccupancyHandles& occupancy) {
+    ForwardTransparentPass* blended = in.blended;
+    SceneResources* resources = in.resources;
+    const ResourceHandle depth = in.depth;
+    const glm::vec2 projectionScale = projectionScale_;
+    ResourceHandle bounds =
+        g.createBuffer("transparent.bounds", ForwardTransparentPass::boundsBytes(*grid_),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    const GpuBuffer* camera = in.cameraBuffer;
+    auto occupancyInputs = [this, depth, bounds, camera, projectionScale](PassContext& ctx) {
+        return ForwardTransparentPass::OccupancyInputs{
+            ctx.image(depth),   camera,      &depthRange_,   &occupancy_, &clusterBounds_,
+            ctx.buffer(bounds), grid_.get(), projectionScale};
+    };
+    auto clear = g.addPass("transparent_bounds_clear", PassKind::Device,
+                           [blended, occupancyInputs](PassContext& ctx) {
+                               blended->recordClearBounds(ctx.cmd(), occupancyInputs(ctx));
+                           });
+    bounds = clear.write(bounds, Use::TransferDst);
+    auto mark =
+        g.addPass("transparent_occupancy", PassKind::Device,
+                  [blended, resources, occupancyInputs](PassContext& ctx) {
+                      blended->recordMarkOccupancy(ctx.cmd(), *resources, occupancyInputs(ctx));
+                  });
+    mark.read(depth, Use::Sampled, kFragmentStage);
+    mark.read(in.camera, Use::Uniform, kRasterStages);
+    mark.read(depthRange, Use::StorageRead, kFragmentStage);
+    if (in.deformed.valid()) mark.read(in.deformed, Use::VertexInput);
+    bounds = mark.write(bounds, Use::StorageReadWrite, kFragmentStage);
+    auto merge = g.addPass("transparent_occupancy_merge", PassKind::Device,
+                           [blended, occupancyInputs](PassContext& ctx) {
+                               blended->recordMergeOccupancy(ctx.cmd(), occupancyInputs(ctx));
+                           });
+    merge.read(bounds, Use::StorageRead);
+    occupancy.tileMasks = merge.write(occupancy.tileMasks, Use::StorageReadWrite);
+    occupancy.clusterBounds = merge.write(occupancy.clusterBounds, Use::StorageReadWrite);
+}
 
+void ClusterLightLists::declareHostAssignment(FrameGraph& g, const FrameInputs* frame,
+                                              const OccupancyHandles& occupancy, Lists& lists,
+                                              RendererStats& stats) {
+    // The frame splits here: the occupancy must be on the CPU before lights are assigned.
+    auto p = g.addPass("light_assignment_cpu", PassKind::Host, [this, frame, &stats](PassContext&) {
+        const CpuClock::time_point start = CpuClock::now();
+        assignOnCpu(*frame, stats);
+        stats.lightAssignMs = millisecondsSince(start);
+    });
+    p.read(occupancy.tileMasks, Use::HostRead);
+    p.read(occupancy.clusterBounds, Use::HostRead);
+    p.read(lists.depthRange, Use::HostRead);
+    lists.ranges = p.write(lists.ranges, Use::HostWrite);
+    lists.indices = p.write(lists.indices, Use::HostWrite);
+}
+
+void ClusterLightLists::declareDeviceAssignment(FrameGraph& g, const Inputs& in,
+                                                const OccupancyHandles& occupancy, Lists& lists,
+                                                RendererStats& stats) {
     prepareDeviceAssignment(*in.frame, stats);
     const LightAssignmentPass::Inputs assign{in.lightBuffer,
                                              in.lightCount,
@@ -275,7 +308,7 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
                                              grid_.get(),
                                              width_,
                                              height_,
-                                             projectionScale,
+                                             projectionScale_,
                                              &occupancy_,
                                              &clusterBounds_,
                                              &depthRange_,
@@ -289,11 +322,10 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
     ResourceHandle usage = g.importBuffer("light_assign.usage", &assignmentPass_->usage(), true);
     ResourceHandle previous =
         g.importBuffer("light_assign.previous_masks", &assignmentPass_->previousMasks());
-    const ResourceHandle lightsHandle = in.lights;
     auto readOccupancy = [&](FrameGraph::PassBuilder& p) {
-        p.read(lightsHandle, Use::StorageRead);
-        p.read(tileMasks, Use::StorageRead);
-        p.read(clusterBounds, Use::StorageRead);
+        p.read(in.lights, Use::StorageRead);
+        p.read(occupancy.tileMasks, Use::StorageRead);
+        p.read(occupancy.clusterBounds, Use::StorageRead);
         p.read(lists.depthRange, Use::StorageRead);
     };
     LightAssignmentPass* pass = assignmentPass_.get();
@@ -308,7 +340,7 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
         auto p = g.addPass(
             "light_assign_allocate", PassKind::Device,
             [pass, assign](PassContext& ctx) { pass->recordAllocate(ctx.cmd(), assign); });
-        p.read(tileMasks, Use::StorageRead);
+        p.read(occupancy.tileMasks, Use::StorageRead);
         counts = p.write(counts, Use::StorageReadWrite);
         lists.ranges = p.write(lists.ranges, Use::StorageReadWrite);
         usage = p.write(usage, Use::StorageReadWrite);
@@ -327,13 +359,11 @@ ClusterLightLists::Lists ClusterLightLists::declare(FrameGraph& g, const Inputs&
         auto p = g.addPass("light_assign_sort", PassKind::Device, [pass, assign](PassContext& ctx) {
             pass->recordSort(ctx.cmd(), assign);
         });
-        p.read(tileMasks, Use::StorageRead);
+        p.read(occupancy.tileMasks, Use::StorageRead);
         lists.ranges = p.write(lists.ranges, Use::StorageReadWrite);
         lists.indices = p.write(lists.indices, Use::StorageReadWrite);
         counts = p.write(counts, Use::StorageReadWrite);
     }
-    assignedOnDevice_ = true;
-    return lists;
 }
 
 }  // namespace candela::render

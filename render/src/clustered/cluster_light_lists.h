@@ -73,6 +73,26 @@ public:
     bool assignedOnDevice() const { return assignedOnDevice_; }
 
 private:
+    // The occupancy buffers' handles, as each pass of declare() leaves them.
+    struct OccupancyHandles {
+        ResourceHandle tileMasks;
+        ResourceHandle clusterBounds;
+    };
+
+    // declare()'s steps, in order: the buffers the occupancy passes write, the depth range and
+    // occupancy passes, the blended surfaces' marks (when there are any), then assignment on
+    // the host or on the device. Each advances the handles it writes.
+    void ensureOccupancyBuffers();
+    void declareDepthOccupancy(FrameGraph& graph, ResourceHandle depth, ResourceHandle& depthRange,
+                               OccupancyHandles& occupancy);
+    void declareBlendedOccupancy(FrameGraph& graph, const Inputs& inputs, ResourceHandle depthRange,
+                                 OccupancyHandles& occupancy);
+    void declareHostAssignment(FrameGraph& graph, const FrameInputs* frame,
+                               const OccupancyHandles& occupancy, Lists& lists,
+                               RendererStats& stats);
+    void declareDeviceAssignment(FrameGraph& graph, const Inputs& inputs,
+                                 const OccupancyHandles& occupancy, Lists& lists,
+                                 RendererStats& stats);
     void assignOnCpu(const FrameInputs& inputs, RendererStats& stats);
     void prepareDeviceAssignment(const FrameInputs& inputs, RendererStats& stats);
     void absorbDeviceListUsage(RendererStats& stats);

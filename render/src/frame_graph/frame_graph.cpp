@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <queue>
+#include <span>
 #include <utility>
 
 #include "frame_graph/transient_placement.h"
@@ -181,17 +182,16 @@ std::string describeCycle(const FrameGraph& graph, const std::vector<std::vector
     return text + quoted(graph.passes()[p].name);
 }
 
-}  // namespace
-
-CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
-    const auto passes = graph.passes();
-    const auto resources = graph.resources();
-    const uint32_t passCount = uint32_t(passes.size());
-    CompiledFrameGraph out;
-
-    // Who produced each version, and who reads it.
+// Who produced each version, and who reads it.
+struct VersionIndex {
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> producer;  // (resource, version) -> pass
     std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> readers;
+};
+
+VersionIndex indexVersions(std::span<const PassDecl> passes,
+                           std::span<const ResourceDecl> resources) {
+    const uint32_t passCount = uint32_t(passes.size());
+    VersionIndex index;
     for (uint32_t p = 0; p < passCount; ++p) {
         for (const UseDecl& u : passes[p].uses) {
             if (u.resource >= resources.size()) {
@@ -200,10 +200,10 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
             }
             const UseInfo info = useInfo(u.use, u.shaderStages);
             if (!info.writes) {
-                readers[{u.resource, u.version}].push_back(p);
+                index.readers[{u.resource, u.version}].push_back(p);
                 continue;
             }
-            auto [it, inserted] = producer.emplace(std::pair{u.resource, u.version + 1}, p);
+            auto [it, inserted] = index.producer.emplace(std::pair{u.resource, u.version + 1}, p);
             if (!inserted && it->second != p) {
                 throw FrameGraphError(
                     "frame graph: passes " + quoted(passes[it->second].name) + " and " +
@@ -213,15 +213,23 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
             }
         }
     }
+    return index;
+}
 
+// Read after write (data edges from a version's producer to its readers) and write after read
+// (order-only edges from a version's readers to the pass that overwrites it).
+std::vector<Edge> dependencyEdges(std::span<const PassDecl> passes,
+                                  std::span<const ResourceDecl> resources,
+                                  const VersionIndex& index) {
+    const uint32_t passCount = uint32_t(passes.size());
     std::vector<Edge> edges;
     for (uint32_t p = 0; p < passCount; ++p) {
         for (const UseDecl& u : passes[p].uses) {
             const ResourceDecl& r = resources[u.resource];
             const UseInfo info = useInfo(u.use, u.shaderStages);
             if (u.version > 0) {
-                auto it = producer.find({u.resource, u.version});
-                if (it == producer.end()) {
+                auto it = index.producer.find({u.resource, u.version});
+                if (it == index.producer.end()) {
                     throw FrameGraphError("frame graph: pass " + quoted(passes[p].name) +
                                           " reads version " + std::to_string(u.version) + " of " +
                                           quoted(r.name) + " but no pass writes it");
@@ -233,17 +241,22 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
             }
             if (info.writes) {
                 // Write after read: the readers of the version this pass overwrites go first.
-                auto it = readers.find({u.resource, u.version});
-                if (it == readers.end()) continue;
+                auto it = index.readers.find({u.resource, u.version});
+                if (it == index.readers.end()) continue;
                 for (uint32_t q : it->second) {
                     if (q != p) edges.push_back({q, p, false});
                 }
             }
         }
     }
+    return edges;
+}
 
-    // Culling: keep passes with side effects or writes to imported resources, then whatever
-    // produced what a kept pass reads.
+// Culling: keep passes with side effects or writes to imported resources, then whatever
+// produced what a kept pass reads.
+std::vector<bool> livePasses(std::span<const PassDecl> passes,
+                             std::span<const ResourceDecl> resources, std::span<const Edge> edges) {
+    const uint32_t passCount = uint32_t(passes.size());
     std::vector<bool> live(passCount, false);
     std::vector<std::vector<uint32_t>> producersOf(passCount);
     for (const Edge& e : edges) {
@@ -270,11 +283,13 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
             }
         }
     }
-    out.culled.resize(passCount);
-    for (uint32_t p = 0; p < passCount; ++p)
-        out.culled[p] = !live[p];
+    return live;
+}
 
-    // Order: Kahn's algorithm over the live passes, ties broken by declaration order.
+// Order: Kahn's algorithm over the live passes, ties broken by declaration order.
+std::vector<uint32_t> orderLivePasses(const FrameGraph& graph, std::span<const Edge> edges,
+                                      const std::vector<bool>& live) {
+    const uint32_t passCount = uint32_t(live.size());
     std::vector<std::vector<uint32_t>> next(passCount);
     std::vector<uint32_t> inDegree(passCount, 0);
     for (const Edge& e : edges) {
@@ -286,64 +301,84 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
     for (uint32_t p = 0; p < passCount; ++p) {
         if (live[p] && inDegree[p] == 0) ready.push(p);
     }
+    std::vector<uint32_t> order;
     while (!ready.empty()) {
         const uint32_t p = ready.top();
         ready.pop();
-        out.order.push_back(p);
+        order.push_back(p);
         for (uint32_t s : next[p]) {
             if (--inDegree[s] == 0) ready.push(s);
         }
     }
     const size_t liveCount = size_t(std::count(live.begin(), live.end(), true));
-    if (out.order.size() != liveCount) {
+    if (order.size() != liveCount) {
         std::vector<bool> remaining(passCount, false);
         for (uint32_t p = 0; p < passCount; ++p)
             remaining[p] = live[p] && inDegree[p] > 0;
         throw FrameGraphError("frame graph: cycle between passes " +
                               describeCycle(graph, next, remaining));
     }
+    return order;
+}
 
-    // Lifetimes.
-    out.lifetimes.assign(resources.size(), {});
-    for (size_t i = 0; i < out.order.size(); ++i) {
-        for (const UseDecl& u : passes[out.order[i]].uses) {
-            ResourceLifetime& l = out.lifetimes[u.resource];
+std::vector<ResourceLifetime> resourceLifetimes(std::span<const PassDecl> passes,
+                                                std::span<const uint32_t> order,
+                                                size_t resourceCount) {
+    std::vector<ResourceLifetime> lifetimes(resourceCount);
+    for (size_t i = 0; i < order.size(); ++i) {
+        for (const UseDecl& u : passes[order[i]].uses) {
+            ResourceLifetime& l = lifetimes[u.resource];
             if (l.first < 0) l.first = int32_t(i);
             l.last = int32_t(i);
         }
     }
+    return lifetimes;
+}
 
-    // Transient placement in one pool of the memory types every transient accepts.
-    std::vector<uint32_t> transients;
-    std::vector<TransientInterval> intervals;
+// The transients the frame uses, in declaration order, with their lifetimes and placement.
+struct Transients {
+    std::vector<uint32_t> resources;
+    std::vector<TransientInterval> intervals;  // per entry of `resources`
+    TransientPlacement placement;
+};
+
+// Transient placement in one pool of the memory types every transient accepts.
+Transients placeTransientResources(std::span<const ResourceDecl> resources,
+                                   CompiledFrameGraph& out) {
+    Transients t;
     for (uint32_t r = 0; r < resources.size(); ++r) {
         if (resources[r].imported || out.lifetimes[r].first < 0) continue;
-        transients.push_back(r);
+        t.resources.push_back(r);
         const MemoryNeeds& needs = resources[r].needs;
-        intervals.push_back({needs.size, std::max<VkDeviceSize>(needs.alignment, 1),
-                             out.lifetimes[r].first, out.lifetimes[r].last});
+        t.intervals.push_back({needs.size, std::max<VkDeviceSize>(needs.alignment, 1),
+                               out.lifetimes[r].first, out.lifetimes[r].last});
         out.poolMemoryTypeBits &= needs.memoryTypeBits;
     }
-    const TransientPlacement placement = placeTransients(intervals);
+    t.placement = placeTransients(t.intervals);
     out.poolOffset.assign(resources.size(), 0);
     out.poolSize.assign(resources.size(), 0);
-    for (uint32_t r : transients)
+    for (uint32_t r : t.resources)
         out.poolSize[r] = resources[r].needs.size;
-    for (size_t i = 0; i < transients.size(); ++i)
-        out.poolOffset[transients[i]] = placement.offsets[i];
-    out.poolBytes = placement.poolBytes;
-    out.unaliasedBytes = placement.unaliasedBytes;
+    for (size_t i = 0; i < t.resources.size(); ++i)
+        out.poolOffset[t.resources[i]] = t.placement.offsets[i];
+    out.poolBytes = t.placement.poolBytes;
+    out.unaliasedBytes = t.placement.unaliasedBytes;
+    return t;
+}
 
-    // Barriers: walk the passes in order with each resource's state.
-    struct State {
-        VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
-        VkPipelineStageFlags2 writeStages = 0;  // last write (or layout transition)
-        VkAccessFlags2 writeAccess = 0;
-        VkPipelineStageFlags2 readStages = 0;     // reads since then
-        VkPipelineStageFlags2 visibleStages = 0;  // made visible to since the last write
-        VkAccessFlags2 visibleAccess = 0;
-    };
-    std::vector<State> state(resources.size());
+// A resource's state during the barrier walk.
+struct ResourceState {
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkPipelineStageFlags2 writeStages = 0;  // last write (or layout transition)
+    VkAccessFlags2 writeAccess = 0;
+    VkPipelineStageFlags2 readStages = 0;     // reads since then
+    VkPipelineStageFlags2 visibleStages = 0;  // made visible to since the last write
+    VkAccessFlags2 visibleAccess = 0;
+};
+
+// Imported resources start in their declared state, transients in none.
+std::vector<ResourceState> initialStates(std::span<const ResourceDecl> resources) {
+    std::vector<ResourceState> state(resources.size());
     for (uint32_t r = 0; r < resources.size(); ++r) {
         if (resources[r].imported) {
             state[r].layout = resources[r].initial.layout;
@@ -351,99 +386,129 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
             state[r].writeAccess = resources[r].initial.access;
         }
     }
-    // A transient that reuses another's bytes waits for that one's last use.
-    for (size_t i = 0; i < transients.size(); ++i) {
-        for (size_t j = 0; j < transients.size(); ++j) {
-            const TransientInterval& a = intervals[i];
-            const TransientInterval& b = intervals[j];
-            const bool sharesBytes = placement.offsets[i] < placement.offsets[j] + b.size &&
-                                     placement.offsets[j] < placement.offsets[i] + a.size;
+    return state;
+}
+
+// A transient that reuses another's bytes waits for that one's last use.
+void waitForAliasedTransients(std::vector<ResourceState>& state, std::span<const PassDecl> passes,
+                              std::span<const uint32_t> order, const Transients& transients) {
+    const std::vector<uint64_t>& offsets = transients.placement.offsets;
+    for (size_t i = 0; i < transients.resources.size(); ++i) {
+        for (size_t j = 0; j < transients.resources.size(); ++j) {
+            const TransientInterval& a = transients.intervals[i];
+            const TransientInterval& b = transients.intervals[j];
+            const bool sharesBytes =
+                offsets[i] < offsets[j] + b.size && offsets[j] < offsets[i] + a.size;
             if (i == j || !sharesBytes || b.last >= a.first) continue;
-            for (const UseDecl& u : passes[out.order[size_t(b.last)]].uses) {
-                if (u.resource != transients[j]) continue;
+            for (const UseDecl& u : passes[order[size_t(b.last)]].uses) {
+                if (u.resource != transients.resources[j]) continue;
                 const UseInfo info = useInfo(u.use, u.shaderStages);
-                state[transients[i]].writeStages |= info.stages;
-                state[transients[i]].writeAccess |= writeAccessOf(info.access);
+                state[transients.resources[i]].writeStages |= info.stages;
+                state[transients.resources[i]].writeAccess |= writeAccessOf(info.access);
             }
         }
     }
+}
 
+void addMemory(BarrierBatch& b, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
+               VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess) {
+    b.memorySrcStages |= srcStages;
+    b.memorySrcAccess |= writeAccessOf(srcAccess);
+    b.memoryDstStages |= dstStages;
+    b.memoryDstAccess |= dstAccess;
+}
+
+// Moves image `r` from its state `s` to `newLayout`, waiting for every use since the last
+// write and making that write available.
+ImageBarrier layoutTransition(uint32_t r, const ResourceState& s, VkImageLayout newLayout,
+                              VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess) {
+    ImageBarrier b;
+    b.resource = r;
+    b.oldLayout = s.layout;
+    b.newLayout = newLayout;
+    b.srcStages = s.writeStages | s.readStages;
+    b.srcAccess = writeAccessOf(s.writeAccess);
+    b.dstStages = dstStages;
+    b.dstAccess = dstAccess;
+    return b;
+}
+
+// Merge a pass's uses of one resource (e.g. sampled and storage read in one pass).
+std::map<uint32_t, UseInfo> mergeUses(const PassDecl& pass,
+                                      std::span<const ResourceDecl> resources) {
+    std::map<uint32_t, UseInfo> merged;
+    for (const UseDecl& u : pass.uses) {
+        const UseInfo info = useInfo(u.use, u.shaderStages);
+        auto [it, inserted] = merged.emplace(u.resource, info);
+        if (inserted) continue;
+        it->second.stages |= info.stages;
+        it->second.access |= info.access;
+        it->second.writes |= info.writes;
+        it->second.reads |= info.reads;
+        // Buffers have no layout: a uniform and a storage read of one buffer may share a pass.
+        if (resources[u.resource].image && it->second.layout != info.layout) {
+            throw FrameGraphError("frame graph: pass " + quoted(pass.name) + " uses " +
+                                  quoted(resources[u.resource].name) +
+                                  " in two image layouts at once");
+        }
+    }
+    return merged;
+}
+
+// Adds to `batch` what resource `r` (in state `s`) needs before `use`, and updates `s`.
+void synchronizeUse(BarrierBatch& batch, ResourceState& s, uint32_t r, bool image,
+                    const UseInfo& use) {
+    const bool layoutChange = image && s.layout != use.layout;
+    if (layoutChange) {
+        batch.images.push_back(layoutTransition(r, s, use.layout, use.stages, use.access));
+        s.layout = use.layout;
+        // The transition is a write made visible to this use; a writing use's own
+        // writes are visible to nobody yet.
+        s.writeStages = use.stages;
+        s.writeAccess = writeAccessOf(use.access);
+        s.readStages = use.writes ? 0 : use.stages;
+        s.visibleStages = use.writes ? 0 : use.stages;
+        s.visibleAccess = use.writes ? 0 : use.access;
+        return;
+    }
+    if (use.writes) {
+        // Write after write / read: wait for both; make the earlier writes available.
+        if (s.writeStages | s.readStages) {
+            addMemory(batch, s.writeStages | s.readStages, s.writeAccess, use.stages, use.access);
+        }
+        s.writeStages = use.stages;
+        s.writeAccess = writeAccessOf(use.access);
+        s.readStages = 0;
+        s.visibleStages = 0;  // until a barrier makes these writes visible
+        s.visibleAccess = 0;
+        return;
+    }
+    const bool visible =
+        (use.stages & ~s.visibleStages) == 0 && (use.access & ~s.visibleAccess) == 0;
+    if (!visible && (s.writeStages != 0)) {
+        addMemory(batch, s.writeStages, s.writeAccess, use.stages, use.access);
+        s.visibleStages |= use.stages;
+        s.visibleAccess |= use.access;
+    }
+    s.readStages |= use.stages;
+}
+
+// Barriers: walk the passes in order with each resource's state.
+void computePassBarriers(std::span<const PassDecl> passes, std::span<const ResourceDecl> resources,
+                         std::vector<ResourceState>& state, CompiledFrameGraph& out) {
     out.before.resize(out.order.size());
-    auto addMemory = [](BarrierBatch& b, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
-                        VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess) {
-        b.memorySrcStages |= srcStages;
-        b.memorySrcAccess |= writeAccessOf(srcAccess);
-        b.memoryDstStages |= dstStages;
-        b.memoryDstAccess |= dstAccess;
-    };
     for (size_t i = 0; i < out.order.size(); ++i) {
         BarrierBatch& batch = out.before[i];
         const PassDecl& pass = passes[out.order[i]];
-        // Merge a pass's uses of one resource (e.g. sampled and storage read in one pass).
-        std::map<uint32_t, UseInfo> merged;
-        for (const UseDecl& u : pass.uses) {
-            const UseInfo info = useInfo(u.use, u.shaderStages);
-            auto [it, inserted] = merged.emplace(u.resource, info);
-            if (inserted) continue;
-            it->second.stages |= info.stages;
-            it->second.access |= info.access;
-            it->second.writes |= info.writes;
-            it->second.reads |= info.reads;
-            // Buffers have no layout: a uniform and a storage read of one buffer may share a pass.
-            if (resources[u.resource].image && it->second.layout != info.layout) {
-                throw FrameGraphError("frame graph: pass " + quoted(pass.name) + " uses " +
-                                      quoted(resources[u.resource].name) +
-                                      " in two image layouts at once");
-            }
-        }
-        for (const auto& [r, use] : merged) {
-            State& s = state[r];
-            const bool image = resources[r].image;
-            const bool layoutChange = image && s.layout != use.layout;
-            if (layoutChange) {
-                ImageBarrier b;
-                b.resource = r;
-                b.oldLayout = s.layout;
-                b.newLayout = use.layout;
-                b.srcStages = s.writeStages | s.readStages;
-                b.srcAccess = writeAccessOf(s.writeAccess);
-                b.dstStages = use.stages;
-                b.dstAccess = use.access;
-                batch.images.push_back(b);
-                s.layout = use.layout;
-                // The transition is a write made visible to this use; a writing use's own
-                // writes are visible to nobody yet.
-                s.writeStages = use.stages;
-                s.writeAccess = writeAccessOf(use.access);
-                s.readStages = use.writes ? 0 : use.stages;
-                s.visibleStages = use.writes ? 0 : use.stages;
-                s.visibleAccess = use.writes ? 0 : use.access;
-                continue;
-            }
-            if (use.writes) {
-                // Write after write / read: wait for both; make the earlier writes available.
-                if (s.writeStages | s.readStages) {
-                    addMemory(batch, s.writeStages | s.readStages, s.writeAccess, use.stages,
-                              use.access);
-                }
-                s.writeStages = use.stages;
-                s.writeAccess = writeAccessOf(use.access);
-                s.readStages = 0;
-                s.visibleStages = 0;  // until a barrier makes these writes visible
-                s.visibleAccess = 0;
-                continue;
-            }
-            const bool visible =
-                (use.stages & ~s.visibleStages) == 0 && (use.access & ~s.visibleAccess) == 0;
-            if (!visible && (s.writeStages != 0)) {
-                addMemory(batch, s.writeStages, s.writeAccess, use.stages, use.access);
-                s.visibleStages |= use.stages;
-                s.visibleAccess |= use.access;
-            }
-            s.readStages |= use.stages;
-        }
+        for (const auto& [r, use] : mergeUses(pass, resources))
+            synchronizeUse(batch, state[r], r, resources[r].image, use);
         out.barrierCount += batch.count();
     }
+}
+
+// After the last pass: host reads of imported buffers, imported images to their final state.
+void computeEndOfFrameBarriers(std::span<const ResourceDecl> resources,
+                               std::span<const ResourceState> state, CompiledFrameGraph& out) {
     for (uint32_t r = 0; r < resources.size(); ++r) {
         const ResourceDecl& decl = resources[r];
         if (decl.hostReadsAfterFrame && state[r].writeAccess) {
@@ -452,19 +517,38 @@ CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
         }
         if (!decl.imported || !decl.image || decl.final.layout == VK_IMAGE_LAYOUT_UNDEFINED)
             continue;
-        const State& s = state[r];
+        const ResourceState& s = state[r];
         if (s.layout == decl.final.layout && s.writeStages == 0) continue;
-        ImageBarrier b;
-        b.resource = r;
-        b.oldLayout = s.layout;
-        b.newLayout = decl.final.layout;
-        b.srcStages = s.writeStages | s.readStages;
-        b.srcAccess = writeAccessOf(s.writeAccess);
-        b.dstStages = decl.final.stages;
-        b.dstAccess = decl.final.access;
-        out.atEnd.images.push_back(b);
+        out.atEnd.images.push_back(
+            layoutTransition(r, s, decl.final.layout, decl.final.stages, decl.final.access));
     }
     out.barrierCount += out.atEnd.count();
+}
+
+}  // namespace
+
+CompiledFrameGraph compileFrameGraph(const FrameGraph& graph) {
+    const auto passes = graph.passes();
+    const auto resources = graph.resources();
+    const uint32_t passCount = uint32_t(passes.size());
+    CompiledFrameGraph out;
+
+    const VersionIndex versions = indexVersions(passes, resources);
+    const std::vector<Edge> edges = dependencyEdges(passes, resources, versions);
+
+    const std::vector<bool> live = livePasses(passes, resources, edges);
+    out.culled.resize(passCount);
+    for (uint32_t p = 0; p < passCount; ++p)
+        out.culled[p] = !live[p];
+
+    out.order = orderLivePasses(graph, edges, live);
+    out.lifetimes = resourceLifetimes(passes, out.order, resources.size());
+    const Transients transients = placeTransientResources(resources, out);
+
+    std::vector<ResourceState> state = initialStates(resources);
+    waitForAliasedTransients(state, passes, out.order, transients);
+    computePassBarriers(passes, resources, state, out);
+    computeEndOfFrameBarriers(resources, state, out);
     return out;
 }
 

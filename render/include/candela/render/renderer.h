@@ -23,43 +23,24 @@
 
 namespace candela::render {
 
-class ClusterLightLists;
+struct DeclaredFrame;
+class FeatureList;
 class ForwardTransparentPass;
-class AutoExposureFeature;
-class FrameBlackboard;
-class FrameCamera;
-struct FeatureFrame;
-enum class FeatureRun : uint8_t;
-class RenderFeature;
-class EnvironmentBrdfLut;
 class FrameGraph;
 class FrameGraphExecutor;
-struct ResourceHandle;
 class FrameSubmitter;
-class ShadingTables;
+class EnvironmentBrdfLut;
 class GBufferPass;
 class GpuContext;
-class GpuLightBuffer;
 class LightingPass;
-class AmbientOcclusionPass;
-class AtmospherePass;
-class SsrPass;
-struct EnvironmentDescriptors;
-class VolumetricsPass;
-class ScatteringPass;
-class SceneResources;
-class TonemapPass;
-class TaaPass;
-class FxaaPass;
-class UpscalePass;
-class GbaaPass;
-class BloomPass;
-class ExposureHistogramPass;
-class ShadowPass;
-class SkyOcclusionPass;
-class DebugTextPass;
-class TrianglePass;
+class LitScene;
 class NonFiniteGuard;
+class OutputStage;
+class SceneResources;
+class TrianglePass;
+struct ResourceHandle;
+struct SceneHandles;  // renderer.cpp
+struct WorldBounds;
 
 // A pass recorded after tonemapping by someone outside the renderer (runtime FrameLayers: the
 // editor's UI, the stats overlay). The graph orders it after the passes that wrote what it
@@ -82,10 +63,10 @@ public:
     // Output size: the targets read after the frame (hdrTarget, ldrTarget, captures, the
     // swapchain blit). The scene renders at renderWidth x renderHeight (options().renderScale).
     void resize(uint32_t width, uint32_t height);
-    uint32_t width() const { return outputWidth_; }
-    uint32_t height() const { return outputHeight_; }
-    uint32_t renderWidth() const { return width_; }
-    uint32_t renderHeight() const { return height_; }
+    uint32_t width() const { return targets_.outputWidth; }
+    uint32_t height() const { return targets_.outputHeight; }
+    uint32_t renderWidth() const { return targets_.width; }
+    uint32_t renderHeight() const { return targets_.height; }
     // The size a scene renders at for an output size and scale: each side rounded, at least 1.
     static uint32_t scaledSize(uint32_t outputSize, float scale);
     // Why this device cannot hold a frame of this output size (empty when it can): a side past
@@ -128,8 +109,8 @@ public:
     void diagnoseNonFiniteNextFrame();
 
     // RGBA32F scene radiance at the output size (upscaled when the render scale is below 1).
-    const GpuImage& hdrTarget() const { return upscalePass_ ? outputHdr_ : hdr_; }
-    const GpuImage& ldrTarget() const { return ldr_; }  // RGBA8, sRGB-encoded values
+    const GpuImage& hdrTarget() const;
+    const GpuImage& ldrTarget() const { return targets_.ldr; }  // RGBA8, sRGB-encoded values
     // With RendererOptions::captureMotionVectors: the last frame's motion vectors, one per pixel
     // row by row (texture-space offset current - previous, motion_vectors.glsl); call once
     // its submission completed. Empty otherwise.
@@ -139,7 +120,7 @@ public:
     const EnvironmentBrdfLut* environmentBrdfLut() const;
 
     // What this renderer enabled for the last recorded frame, for --stats.
-    std::vector<std::string> features() const { return features_; }
+    std::vector<std::string> features() const;
 
     // The last frame's compiled graph as Graphviz (--frame-graph FILE.dot).
     std::string frameGraphDot() const;
@@ -149,68 +130,45 @@ public:
                                                         const GpuContext& context);
 
 private:
+    // The frame-persistent targets (renderer_targets.cpp).
+    struct Targets {
+        uint32_t outputWidth = 0, outputHeight = 0;  // hdrTarget, ldrTarget, captures
+        uint32_t width = 0, height = 0;              // the render size: every scene pass's
+        GpuImage hdr;                                // at the render size
+        GpuImage outputHdr;        // at the output size, when the render size differs (else empty)
+        GpuImage ldr;              // at the output size
+        GpuBuffer pairCounts;      // uvec2 per lighting workgroup (the counting variant)
+        GpuBuffer motionReadback;  // captureMotionVectors: RG16F texels, host-visible
+    };
     void createTargets();
-    struct SceneHandles;
     // Declare the frame's passes; return the HDR target's last version.
     uint32_t declareScene(const FrameInputs& inputs, SceneResources& resources, uint32_t hdr);
-    // Features are declared in runs (FeatureRun), in the order they were added; in a run the
-    // active ones declare their passes, the others restart their history.
-    void addFeature(FeatureRun run, std::unique_ptr<RenderFeature> feature);
-    void declareRun(FeatureFrame& frame, FeatureRun run);
-    void uploadFrameData(const FrameInputs& inputs);
-    // captureMotionVectors: copies the frame's final motion vectors into motionReadback_.
+    // The draws the camera sees, each at its level of detail (kDrawCulled: none).
+    std::vector<uint8_t> visibleDraws(const FrameInputs& inputs, const SceneResources& resources,
+                                      std::span<const WorldBounds> drawBounds);
+    SceneHandles createGBufferTargets(FrameGraph& g, bool extended, uint32_t hdr);
+    void declareGBuffer(SceneHandles& h, const FrameInputs& inputs, SceneResources& resources,
+                        ResourceHandle deformed);
+    void declareLighting(SceneHandles& h, const FrameInputs& inputs, ResourceHandle pairCounts);
+    void declareTransparency(SceneHandles& h, SceneResources& resources, ResourceHandle deformed);
+    // captureMotionVectors: copies the frame's final motion vectors into motionReadback.
     void declareMotionCapture(ResourceHandle motion);
 
     GpuContext& context_;
     RendererOptions options_;
-    uint32_t outputWidth_;
-    uint32_t outputHeight_;
-    uint32_t width_;  // the render size: every scene pass's
-    uint32_t height_;
-    LightAssignmentDevice lightAssignment_;  // options_.lightAssignment resolved
-    GpuImage hdr_;                           // at the render size
-    GpuImage outputHdr_;                     // at the output size, when upscalePass_ (else empty)
-    GpuImage ldr_;                           // at the output size
+    Targets targets_;
     std::unique_ptr<FrameGraph> graph_;
     std::unique_ptr<FrameGraphExecutor> executor_;
-    std::unique_ptr<FrameCamera> camera_;  // the camera block and last frame's matrices
-    std::unique_ptr<GpuLightBuffer> lights_;
-    std::unique_ptr<ClusterLightLists> clusters_;  // grid, cluster buffers, assignment
-    GpuBuffer pairCounts_;                         // uvec2 per lighting workgroup
-    // Motion vectors: each draw's previous world matrix, the previous unjittered
-    // view-projection and jitter; TAA: the two history images (read one, write the other).
-    // GTAO's temporal accumulation (ao_temporal.comp): two RGBA32UI histories like TAA's, made
-    // only when the options accumulate, and the frame count that rotates GTAO's slices.
-    GpuBuffer motionReadback_;  // captureMotionVectors: RG16F texels, host-visible
-    std::unique_ptr<FxaaPass> fxaaPass_;
-    std::unique_ptr<UpscalePass> upscalePass_;  // renderScale below 1
-    enum class RecordedFrame : uint8_t { None, TestTriangle, Scene };
-    RecordedFrame recorded_ = RecordedFrame::None;  // what the last recordFrame drew
-    std::unique_ptr<NonFiniteGuard> nonFinite_;     // NaN/Inf count, diagnosis probes
-    std::unique_ptr<TrianglePass> trianglePass_;
+    std::unique_ptr<LitScene> lit_;  // camera, lights, clusters, shadows, sky: the lit inputs
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<LightingPass> lightingPass_;
-    // Work the frame's declaration fixed (froxel and volume pairs, AO samples): collectStats
-    // adds the passes' counters to it.
-    WorkCounters declaredWork_;
-    // SSR's temporal filter: two reflection histories like TAA's (made when the options ask
-    // for it), the one written last frame and whether it holds a frame.
-    std::unique_ptr<AtmospherePass> atmospherePass_;  // made on the first frame with a sky
     std::unique_ptr<ForwardTransparentPass> transparentPass_;
-    // The techniques that own themselves (features/render_feature.h), in frame order, and
-    // which of them the last declared frame declared.
-    std::vector<std::unique_ptr<RenderFeature>> renderFeatures_;
-    std::vector<bool> featureDeclared_;
-    std::vector<FeatureRun> featureRuns_;          // each feature's run
-    AutoExposureFeature* autoExposure_ = nullptr;  // one of them: the frame's exposure
-    std::unique_ptr<FrameBlackboard> board_;
-    std::unique_ptr<TonemapPass> tonemapPass_;
-    std::unique_ptr<ShadowPass> shadowPass_;
-    std::unique_ptr<SkyOcclusionPass> skyOcclusionPass_;
-    std::unique_ptr<DebugTextPass> debugTextPass_;  // made on the first frame with text
-    std::unique_ptr<ShadingTables>
-        shadingTables_;  // LUT, LTC table, rect textures, sky placeholders
-    std::vector<std::string> features_;
+    // The techniques that own themselves (features/render_feature.h), in frame order.
+    std::unique_ptr<FeatureList> features_;
+    std::unique_ptr<OutputStage> output_;  // upscale, tonemap, FXAA, debug text
+    std::unique_ptr<TrianglePass> trianglePass_;
+    std::unique_ptr<NonFiniteGuard> nonFinite_;  // NaN/Inf count, diagnosis probes
+    std::unique_ptr<DeclaredFrame> frame_;       // what the last frame declared and drew
     RendererStats stats_;
 };
 

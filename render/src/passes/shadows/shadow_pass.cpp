@@ -75,6 +75,61 @@ uint32_t powerOfTwoAtLeast(float v) {
     return std::bit_ceil(uint32_t(std::clamp(v, 1.0f, 65536.0f)));
 }
 
+// Casters: every drawn opaque or masked surface (blended ones let light through).
+std::vector<uint32_t> shadowCasters(const FrameScene& scene, const SceneResources& resources) {
+    std::vector<uint32_t> casters;
+    for (uint32_t d = 0; d < scene.draws.size(); ++d) {
+        const DrawItem& draw = scene.draws[d];
+        const GpuMesh& mesh = resources.mesh(draw.mesh);
+        if (mesh.indexCount == 0) continue;
+        if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
+        casters.push_back(d);
+    }
+    return casters;
+}
+
+// A directional light's cascades: fixed size, never shrunk.
+ShadowTileRequest cascadeTileRequest(uint32_t cascades, const RendererOptions& options) {
+    ShadowTileRequest r;
+    r.tiles = cascades;
+    r.size = powerOfTwoAtLeast(float(options.shadowCascadeSize));
+    r.shrinkable = false;
+    return r;
+}
+
+// A spot view or cube faces. Projected size: the falloff sphere's diameter in pixels;
+// importance: its intensity.
+ShadowTileRequest localTileRequest(const LightInstance& instance, const CameraView& camera,
+                                   const RendererOptions& options, uint32_t width,
+                                   uint32_t height) {
+    const content::Light& l = instance.light;
+    const float projectionScale = std::abs(camera.projection[1][1]);  // 1 / tan(fov / 2)
+    const float reach = std::max(l.attenuationRadius, 1e-3f) + 0.5f * l.sourceLength;
+    const float distance = glm::length(instance.position - camera.position);
+    const float pixels = distance > reach * 1.05f
+                             ? 0.5f * float(height) * projectionScale * reach /
+                                   std::sqrt(distance * distance - reach * reach)
+                             : 0.5f * float(std::max(width, height)) * projectionScale;
+    ShadowTileRequest r;
+    r.tiles = singleViewSpot(l) ? 1u : SHADOW_CUBE_FACES;
+    r.size = std::min(powerOfTwoAtLeast(2.0f * pixels),
+                      powerOfTwoAtLeast(float(options.shadowMaxTileSize)));
+    r.size = std::max(r.size, 16u);
+    r.priority = pixels * std::sqrt(std::max(l.lumens, 0.0f) + 1.0f);
+    return r;
+}
+
+// The smallest power-of-two atlas (up to `maxSize`) that holds every map at full size.
+uint32_t atlasSizeFor(std::span<const ShadowTileRequest> tiles, uint32_t maxSize) {
+    uint64_t wanted = 0;
+    for (const ShadowTileRequest& r : tiles)
+        wanted += uint64_t(r.size) * r.size * r.tiles;
+    uint32_t atlasSize = 256;
+    while (atlasSize < maxSize && uint64_t(atlasSize) * atlasSize < wanted)
+        atlasSize *= 2;
+    return atlasSize;
+}
+
 }  // namespace
 
 ShadowPass::ShadowPass(GpuContext& context)
@@ -129,63 +184,13 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
     ++frameCounter_;
     if (!options.shadows) return false;
 
-    // Casters: every drawn opaque or masked surface (blended ones let light through).
-    std::vector<uint32_t> casters;
-    for (uint32_t d = 0; d < scene.draws.size(); ++d) {
-        const DrawItem& draw = scene.draws[d];
-        const GpuMesh& mesh = resources.mesh(draw.mesh);
-        if (mesh.indexCount == 0) continue;
-        if (resources.material(draw.material).alphaMode == content::AlphaMode::Blend) continue;
-        casters.push_back(d);
-    }
-
-    struct Request {
-        uint32_t light;
-        uint32_t views;
-        bool cascade;
-    };
-    std::vector<Request> requests;
+    const std::vector<uint32_t> casters = shadowCasters(scene, resources);
+    std::vector<MapRequest> requests;
     std::vector<ShadowTileRequest> tiles;
-    const CameraView& camera = scene.camera;
-    const float projectionScale = std::abs(camera.projection[1][1]);  // 1 / tan(fov / 2)
-    const uint32_t cascades = std::clamp(options.shadowCascades, 1u, SHADOW_MAX_CASCADES);
-    for (uint32_t i = 0; i < scene.lights.size(); ++i) {
-        const content::Light& l = scene.lights[i].light;
-        if (!l.castShadows) continue;
-        if (inEveryCluster(l)) {
-            requests.push_back({i, cascades, true});
-            ShadowTileRequest r;
-            r.tiles = cascades;
-            r.size = powerOfTwoAtLeast(float(options.shadowCascadeSize));
-            r.shrinkable = false;
-            tiles.push_back(r);
-            continue;
-        }
-        // Projected size: the falloff sphere's diameter in pixels; importance: its intensity.
-        const float reach = std::max(l.attenuationRadius, 1e-3f) + 0.5f * l.sourceLength;
-        const float distance = glm::length(scene.lights[i].position - camera.position);
-        const float pixels = distance > reach * 1.05f
-                                 ? 0.5f * float(height) * projectionScale * reach /
-                                       std::sqrt(distance * distance - reach * reach)
-                                 : 0.5f * float(std::max(width, height)) * projectionScale;
-        ShadowTileRequest r;
-        r.tiles = singleViewSpot(l) ? 1u : SHADOW_CUBE_FACES;
-        r.size = std::min(powerOfTwoAtLeast(2.0f * pixels),
-                          powerOfTwoAtLeast(float(options.shadowMaxTileSize)));
-        r.size = std::max(r.size, 16u);
-        r.priority = pixels * std::sqrt(std::max(l.lumens, 0.0f) + 1.0f);
-        requests.push_back({i, r.tiles, false});
-        tiles.push_back(r);
-    }
+    requestMaps(scene, options, width, height, requests, tiles);
     if (requests.empty()) return false;
 
-    // The smallest power-of-two atlas (up to the option's) that holds every map at full size.
-    uint64_t wanted = 0;
-    for (const ShadowTileRequest& r : tiles)
-        wanted += uint64_t(r.size) * r.size * r.tiles;
-    uint32_t atlasSize = 256;
-    while (atlasSize < options.shadowAtlasSize && uint64_t(atlasSize) * atlasSize < wanted)
-        atlasSize *= 2;
+    const uint32_t atlasSize = atlasSizeFor(tiles, options.shadowAtlasSize);
     ensureAtlas(atlasSize);
     const ShadowAtlasPlan plan = planShadowAtlas(tiles, atlasSize);
     stats_.atlasUsed = double(plan.usedTexels) / (double(atlasSize) * atlasSize);
@@ -197,132 +202,186 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
     framesWaiting_.resize(scene.lights.size(), 0);
     std::vector<uint64_t> keys(requests.size(), 0);
     std::vector<ShadowRenderCandidate> candidates(requests.size());
+    const ViewInputs viewInputs{scene, resources, bounds, options, casters};
     for (size_t q = 0; q < requests.size(); ++q) {
-        const Request& request = requests[q];
-        const LightInstance& instance = scene.lights[request.light];
-        const content::Light& l = instance.light;
+        const MapRequest& request = requests[q];
         if (plan.tiles[q].size() != request.views) continue;  // never: the atlas floor is 8 px
-        LightPlan lp{request.light, uint32_t(planned_.size()), request.views, true};
-        // What the maps are rendered from: views (light placement, tiles) and casters.
-        uint64_t key = kFnv1aOffset;
-        for (uint32_t v = 0; v < request.views; ++v) {
-            const ShadowTile& tile = plan.tiles[q][v];
-            PlannedView pv;
-            pv.gpu = {glm::mat4(1.0f), glm::vec4(0.0f), glm::vec4(0.0f), glm::vec4(0.0f)};
-            pv.light = request.light;
-            pv.gpu.tile = glm::vec4(float(tile.x), float(tile.y), float(tile.size), 0.0f);
-            if (request.cascade) {
-                const glm::vec3 direction = glm::normalize(instance.direction);
-                float casterNear = 0.0f;
-                for (uint32_t d : casters) {
-                    casterNear = std::min(casterNear,
-                                          glm::dot(bounds[d].centre, direction) - bounds[d].radius);
-                }
-                const float farDistance = std::min(options.shadowDistance, camera.farPlane);
-                const std::vector<float> splits = practicalSplits(
-                    camera.nearPlane, farDistance, request.views, kPracticalSplitLambda);
-                const CascadeView c =
-                    fitCascade(camera, splits[v], splits[v + 1], direction, tile.size, casterNear);
-                pv.gpu.worldToClip = c.worldToClip;
-                pv.gpu.params = glm::vec4(c.texelWorld, float(SHADOW_KIND_ORTHOGRAPHIC),
-                                          c.nearDepth, c.farDepth);
-                pv.gpu.sphere = c.sphere;
-                const glm::mat3 basis = lightBasis(direction);
-                const glm::vec3 centre = glm::transpose(basis) * glm::vec3(c.sphere);
-                // Levels of detail by the cascade's texels (orthographic: one size everywhere).
-                LodView lod;
-                lod.pixelsPerMetre = 1.0f / std::max(c.texelWorld, 1e-6f);
-                lod.perspective = false;
-                lod.pixelError = options.lodPixelError;
-                for (uint32_t d : casters) {
-                    const glm::vec3 p = glm::transpose(basis) * bounds[d].centre;
-                    const float reach = c.sphere.w + bounds[d].radius + c.texelWorld;
-                    if (std::abs(p.x - centre.x) <= reach && std::abs(p.y - centre.y) <= reach &&
-                        p.z - bounds[d].radius <= c.farDepth) {
-                        pv.casters.push_back(d);
-                        pv.lods.push_back(uint8_t(selectLod(resources.mesh(scene.draws[d].mesh),
-                                                            scene.draws[d].world, bounds[d], lod)));
-                    }
-                }
-            } else {
-                const bool spot = singleViewSpot(l);
-                const float border = 1.0f + 2.0f * kBorderTexels / float(tile.size);
-                const float tanHalf =
-                    spot ? std::tan(std::clamp(l.outerConeAngle, 0.01f,
-                                               float(SHADOW_MAX_SPOT_HALF_ANGLE))) *
-                               border
-                         : border;
-                const glm::vec3 forward =
-                    spot ? glm::normalize(instance.direction) : kFaceForward[v];
-                const glm::vec3 up = spot ? anyPerpendicular(forward) : kFaceUp[v];
-                pv.gpu.worldToClip = perspectiveView(instance.position, forward, up, tanHalf);
-                pv.gpu.params = glm::vec4(2.0f * tanHalf / float(tile.size),
-                                          float(SHADOW_KIND_PERSPECTIVE), kLocalNear, 0.0f);
-                const float reach = std::max(l.attenuationRadius, 0.0f) + 0.5f * l.sourceLength;
-                // A caster outside this face's (or the spot's) frustum draws nothing in its
-                // tile: each face gets the sixth of the light's casters it sees.
-                const ViewFrustum frustum = viewFrustumOf(pv.gpu.worldToClip);
-                // Levels of detail by the face's texels: tile.size across 2 tanHalf at 1 m.
-                LodView lod;
-                lod.eye = instance.position;
-                lod.pixelsPerMetre = float(tile.size) / (2.0f * tanHalf);
-                lod.pixelError = options.lodPixelError;
-                for (uint32_t d : casters) {
-                    const WorldBounds& b = bounds[d];
-                    if (glm::length(b.centre - instance.position) > reach + b.radius) continue;
-                    if (options.culling && !intersects(frustum, b)) continue;
-                    // The light's own fixture (a bulb or tube mesh around it) casts nothing.
-                    if (glm::all(glm::lessThanEqual(glm::abs(instance.position - b.centre),
-                                                    b.extent + 1e-4f))) {
-                        continue;
-                    }
-                    pv.casters.push_back(d);
-                    pv.lods.push_back(uint8_t(selectLod(resources.mesh(scene.draws[d].mesh),
-                                                        scene.draws[d].world, b, lod)));
-                }
-            }
-            key = fnv1a64(&pv.gpu, sizeof(pv.gpu), key);
-            for (size_t c = 0; c < pv.casters.size(); ++c) {
-                // Field by field: DrawItem has padding bytes.
-                const DrawItem& draw = scene.draws[pv.casters[c]];
-                key = fnv1a64(&draw.mesh, sizeof(draw.mesh), key);
-                key = fnv1a64(&draw.material, sizeof(draw.material), key);
-                key = fnv1a64(&draw.world, sizeof(draw.world), key);
-                key = fnv1a64(&pv.lods[c], sizeof(pv.lods[c]), key);
-                // An animated caster changes shape under the same draw: never cached.
-                if (draw.deformedVertices)
-                    key = fnv1a64(&frameCounter_, sizeof(frameCounter_), key);
-            }
-            planned_.push_back(std::move(pv));
-        }
-        keys[q] = key;
-        ShadowRenderCandidate& c = candidates[q];
-        const std::vector<GpuShadowView>& previous = previousViews_[request.light];
-        c.changed = !options.shadowCache || !atlasHoldsMaps_ || previousKeys_[request.light] != key;
-        // Last frame's maps can stand in only where they still are: same tiles (no other
-        // light renders into them this frame, as tiles never overlap). Cascades follow the
-        // camera and always render.
-        c.keepable = options.shadowCache && atlasHoldsMaps_ && !request.cascade &&
-                     previous.size() == request.views;
-        for (uint32_t v = 0; v < request.views; ++v) {
-            const ShadowTile& tile = plan.tiles[q][v];
-            c.texels += uint64_t(tile.size) * tile.size;
-            if (c.keepable && previous[v].tile != planned_[lp.firstView + v].gpu.tile)
-                c.keepable = false;
-        }
-        c.priority = tiles[q].priority;
-        c.framesWaiting = framesWaiting_[request.light];
+        const LightPlan lp{request.light, uint32_t(planned_.size()), request.views, true};
+        keys[q] = planLightViews(viewInputs, request, plan.tiles[q]);
+        candidates[q] = renderCandidate(request, plan.tiles[q], lp.firstView, keys[q],
+                                        tiles[q].priority, options);
         lightTable[request.light] = glm::uvec2(lp.firstView, lp.viewCount);
         lightPlans_.push_back(lp);
     }
 
     const std::vector<ShadowRenderChoice> choices =
         planShadowRenders(candidates, options.shadowCache ? options.shadowRenderBudget : 0);
-    std::vector<bool> requested(scene.lights.size(), false);
+    applyRenderChoices(choices, keys, scene, resources);
+    releaseUnplannedLights(scene.lights.size());
+    uploadTables(lightTable);
+    return true;
+}
+
+void ShadowPass::requestMaps(const FrameScene& scene, const RendererOptions& options,
+                             uint32_t width, uint32_t height, std::vector<MapRequest>& requests,
+                             std::vector<ShadowTileRequest>& tiles) {
+    const uint32_t cascades = std::clamp(options.shadowCascades, 1u, SHADOW_MAX_CASCADES);
+    for (uint32_t i = 0; i < scene.lights.size(); ++i) {
+        const content::Light& l = scene.lights[i].light;
+        if (!l.castShadows) continue;
+        if (inEveryCluster(l)) {
+            requests.push_back({i, cascades, true});
+            tiles.push_back(cascadeTileRequest(cascades, options));
+            continue;
+        }
+        const ShadowTileRequest r =
+            localTileRequest(scene.lights[i], scene.camera, options, width, height);
+        requests.push_back({i, r.tiles, false});
+        tiles.push_back(r);
+    }
+}
+
+uint64_t ShadowPass::planLightViews(const ViewInputs& in, const MapRequest& request,
+                                    std::span<const ShadowTile> tiles) {
+    const LightInstance& instance = in.scene.lights[request.light];
+    // What the maps are rendered from: views (light placement, tiles) and casters.
+    uint64_t key = kFnv1aOffset;
+    for (uint32_t v = 0; v < request.views; ++v) {
+        const ShadowTile& tile = tiles[v];
+        PlannedView pv;
+        pv.gpu = {glm::mat4(1.0f), glm::vec4(0.0f), glm::vec4(0.0f), glm::vec4(0.0f)};
+        pv.light = request.light;
+        pv.gpu.tile = glm::vec4(float(tile.x), float(tile.y), float(tile.size), 0.0f);
+        if (request.cascade) {
+            planCascadeView(in, instance, request.views, v, tile, pv);
+        } else {
+            planLocalView(in, instance, v, tile, pv);
+        }
+        key = viewKey(pv, in.scene, key);
+        planned_.push_back(std::move(pv));
+    }
+    return key;
+}
+
+void ShadowPass::planCascadeView(const ViewInputs& in, const LightInstance& instance,
+                                 uint32_t cascades, uint32_t cascade, const ShadowTile& tile,
+                                 PlannedView& pv) {
+    const CameraView& camera = in.scene.camera;
+    const glm::vec3 direction = glm::normalize(instance.direction);
+    float casterNear = 0.0f;
+    for (uint32_t d : in.casters) {
+        casterNear =
+            std::min(casterNear, glm::dot(in.bounds[d].centre, direction) - in.bounds[d].radius);
+    }
+    const float farDistance = std::min(in.options.shadowDistance, camera.farPlane);
+    const std::vector<float> splits =
+        practicalSplits(camera.nearPlane, farDistance, cascades, kPracticalSplitLambda);
+    const CascadeView c =
+        fitCascade(camera, splits[cascade], splits[cascade + 1], direction, tile.size, casterNear);
+    pv.gpu.worldToClip = c.worldToClip;
+    pv.gpu.params =
+        glm::vec4(c.texelWorld, float(SHADOW_KIND_ORTHOGRAPHIC), c.nearDepth, c.farDepth);
+    pv.gpu.sphere = c.sphere;
+    const glm::mat3 basis = lightBasis(direction);
+    const glm::vec3 centre = glm::transpose(basis) * glm::vec3(c.sphere);
+    // Levels of detail by the cascade's texels (orthographic: one size everywhere).
+    LodView lod;
+    lod.pixelsPerMetre = 1.0f / std::max(c.texelWorld, 1e-6f);
+    lod.perspective = false;
+    lod.pixelError = in.options.lodPixelError;
+    for (uint32_t d : in.casters) {
+        const glm::vec3 p = glm::transpose(basis) * in.bounds[d].centre;
+        const float reach = c.sphere.w + in.bounds[d].radius + c.texelWorld;
+        if (std::abs(p.x - centre.x) <= reach && std::abs(p.y - centre.y) <= reach &&
+            p.z - in.bounds[d].radius <= c.farDepth) {
+            pv.casters.push_back(d);
+            pv.lods.push_back(uint8_t(selectLod(in.resources.mesh(in.scene.draws[d].mesh),
+                                                in.scene.draws[d].world, in.bounds[d], lod)));
+        }
+    }
+}
+
+void ShadowPass::planLocalView(const ViewInputs& in, const LightInstance& instance, uint32_t view,
+                               const ShadowTile& tile, PlannedView& pv) {
+    const content::Light& l = instance.light;
+    const bool spot = singleViewSpot(l);
+    const float border = 1.0f + 2.0f * kBorderTexels / float(tile.size);
+    const float tanHalf =
+        spot ? std::tan(std::clamp(l.outerConeAngle, 0.01f, float(SHADOW_MAX_SPOT_HALF_ANGLE))) *
+                   border
+             : border;
+    const glm::vec3 forward = spot ? glm::normalize(instance.direction) : kFaceForward[view];
+    const glm::vec3 up = spot ? anyPerpendicular(forward) : kFaceUp[view];
+    pv.gpu.worldToClip = perspectiveView(instance.position, forward, up, tanHalf);
+    pv.gpu.params = glm::vec4(2.0f * tanHalf / float(tile.size), float(SHADOW_KIND_PERSPECTIVE),
+                              kLocalNear, 0.0f);
+    const float reach = std::max(l.attenuationRadius, 0.0f) + 0.5f * l.sourceLength;
+    // A caster outside this face's (or the spot's) frustum draws nothing in its tile: each face
+    // gets the sixth of the light's casters it sees.
+    const ViewFrustum frustum = viewFrustumOf(pv.gpu.worldToClip);
+    // Levels of detail by the face's texels: tile.size across 2 tanHalf at 1 m.
+    LodView lod;
+    lod.eye = instance.position;
+    lod.pixelsPerMetre = float(tile.size) / (2.0f * tanHalf);
+    lod.pixelError = in.options.lodPixelError;
+    for (uint32_t d : in.casters) {
+        const WorldBounds& b = in.bounds[d];
+        if (glm::length(b.centre - instance.position) > reach + b.radius) continue;
+        if (in.options.culling && !intersects(frustum, b)) continue;
+        // The light's own fixture (a bulb or tube mesh around it) casts nothing.
+        if (glm::all(
+                glm::lessThanEqual(glm::abs(instance.position - b.centre), b.extent + 1e-4f))) {
+            continue;
+        }
+        pv.casters.push_back(d);
+        pv.lods.push_back(uint8_t(
+            selectLod(in.resources.mesh(in.scene.draws[d].mesh), in.scene.draws[d].world, b, lod)));
+    }
+}
+
+uint64_t ShadowPass::viewKey(const PlannedView& pv, const FrameScene& scene, uint64_t key) const {
+    key = fnv1a64(&pv.gpu, sizeof(pv.gpu), key);
+    for (size_t c = 0; c < pv.casters.size(); ++c) {
+        // Field by field: DrawItem has padding bytes.
+        const DrawItem& draw = scene.draws[pv.casters[c]];
+        key = fnv1a64(&draw.mesh, sizeof(draw.mesh), key);
+        key = fnv1a64(&draw.material, sizeof(draw.material), key);
+        key = fnv1a64(&draw.world, sizeof(draw.world), key);
+        key = fnv1a64(&pv.lods[c], sizeof(pv.lods[c]), key);
+        // An animated caster changes shape under the same draw: never cached.
+        if (draw.deformedVertices) key = fnv1a64(&frameCounter_, sizeof(frameCounter_), key);
+    }
+    return key;
+}
+
+ShadowRenderCandidate ShadowPass::renderCandidate(const MapRequest& request,
+                                                  std::span<const ShadowTile> tiles,
+                                                  uint32_t firstView, uint64_t key, float priority,
+                                                  const RendererOptions& options) const {
+    ShadowRenderCandidate c;
+    const std::vector<GpuShadowView>& previous = previousViews_[request.light];
+    c.changed = !options.shadowCache || !atlasHoldsMaps_ || previousKeys_[request.light] != key;
+    // Last frame's maps can stand in only where they still are: same tiles (no other light
+    // renders into them this frame, as tiles never overlap). Cascades follow the camera and
+    // always render.
+    c.keepable = options.shadowCache && atlasHoldsMaps_ && !request.cascade &&
+                 previous.size() == request.views;
+    for (uint32_t v = 0; v < request.views; ++v) {
+        const ShadowTile& tile = tiles[v];
+        c.texels += uint64_t(tile.size) * tile.size;
+        if (c.keepable && previous[v].tile != planned_[firstView + v].gpu.tile) c.keepable = false;
+    }
+    c.priority = priority;
+    c.framesWaiting = framesWaiting_[request.light];
+    return c;
+}
+
+void ShadowPass::applyRenderChoices(std::span<const ShadowRenderChoice> choices,
+                                    std::span<const uint64_t> keys, const FrameScene& scene,
+                                    const SceneResources& resources) {
     for (size_t q = 0; q < lightPlans_.size(); ++q) {
         LightPlan& lp = lightPlans_[q];
         const uint32_t light = lp.light;
-        requested[light] = true;
         lp.render = choices[q] == ShadowRenderChoice::Render;
         ++stats_.shadowedLights;
         if (choices[q] == ShadowRenderChoice::Keep) {
@@ -335,39 +394,53 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
             continue;
         }
         framesWaiting_[light] = 0;
-        if (lp.render) {
-            previousKeys_[light] = keys[q];
-            previousViews_[light].clear();
-            for (uint32_t v = 0; v < lp.viewCount; ++v)
-                previousViews_[light].push_back(planned_[lp.firstView + v].gpu);
-        }
+        if (lp.render) rememberViews(lp, keys[q]);
         rendersThisFrame_ |= lp.render;
-        for (uint32_t v = 0; lp.render && v < lp.viewCount; ++v) {
-            const PlannedView& pv = planned_[lp.firstView + v];
-            stats_.casterDraws += uint32_t(pv.casters.size());
-            for (size_t c = 0; c < pv.casters.size(); ++c) {
-                stats_.casterTriangles +=
-                    resources.mesh(scene.draws[pv.casters[c]].mesh).lods[pv.lods[c]].indexCount / 3;
-            }
-        }
+        if (lp.render) countCasters(lp, scene, resources);
         (lp.render ? stats_.mapsRendered : stats_.mapsCached) += 1;
     }
+}
+
+void ShadowPass::rememberViews(const LightPlan& lp, uint64_t key) {
+    previousKeys_[lp.light] = key;
+    previousViews_[lp.light].clear();
+    for (uint32_t v = 0; v < lp.viewCount; ++v)
+        previousViews_[lp.light].push_back(planned_[lp.firstView + v].gpu);
+}
+
+void ShadowPass::countCasters(const LightPlan& lp, const FrameScene& scene,
+                              const SceneResources& resources) {
+    for (uint32_t v = 0; v < lp.viewCount; ++v) {
+        const PlannedView& pv = planned_[lp.firstView + v];
+        stats_.casterDraws += uint32_t(pv.casters.size());
+        for (size_t c = 0; c < pv.casters.size(); ++c) {
+            stats_.casterTriangles +=
+                resources.mesh(scene.draws[pv.casters[c]].mesh).lods[pv.lods[c]].indexCount / 3;
+        }
+    }
+}
+
+void ShadowPass::releaseUnplannedLights(size_t lightCount) {
+    std::vector<bool> requested(lightCount, false);
+    for (const LightPlan& lp : lightPlans_)
+        requested[lp.light] = true;
     // A light that casts no shadow this frame loses its claim on the atlas: another light may
     // render into its tiles.
-    for (size_t i = 0; i < scene.lights.size(); ++i) {
+    for (size_t i = 0; i < lightCount; ++i) {
         if (requested[i]) continue;
         previousKeys_[i] = 0;
         previousViews_[i].clear();
         framesWaiting_[i] = 0;
     }
+}
 
+void ShadowPass::uploadTables(std::span<const glm::uvec2> lightTable) {
     ensureHostBuffer(context_, views_, planned_.size() * sizeof(GpuShadowView));
     auto* out = static_cast<GpuShadowView*>(views_.mapped());
     for (size_t v = 0; v < planned_.size(); ++v)
         out[v] = planned_[v].gpu;
     ensureHostBuffer(context_, lightTable_, lightTable.size() * sizeof(glm::uvec2));
     std::memcpy(lightTable_.mapped(), lightTable.data(), lightTable.size() * sizeof(glm::uvec2));
-    return true;
 }
 
 void ShadowPass::record(VkCommandBuffer cmd, const FrameScene& scene,

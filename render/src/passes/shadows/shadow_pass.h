@@ -23,6 +23,10 @@ namespace candela::render {
 
 class GpuContext;
 class SceneResources;
+struct ShadowRenderCandidate;
+struct ShadowTile;
+struct ShadowTileRequest;
+enum class ShadowRenderChoice;
 
 // std430 record of one view (ShadowView in common/shadows.glsl).
 struct GpuShadowView {
@@ -87,7 +91,57 @@ private:
         bool render;
     };
 
+    // One light's maps this frame.
+    struct MapRequest {
+        uint32_t light;  // slot in the frame's lights
+        uint32_t views;
+        bool cascade;  // a directional light's cascades (else a spot view or cube faces)
+    };
+    // What every view of a frame is planned from.
+    struct ViewInputs {
+        const FrameScene& scene;
+        const SceneResources& resources;
+        std::span<const WorldBounds> bounds;
+        const RendererOptions& options;
+        std::span<const uint32_t> casters;  // draw indices that cast
+    };
+
     void ensureAtlas(uint32_t size);
+
+    // prepare()'s steps, in order. Every shadow-casting light's request and its tiles.
+    static void requestMaps(const FrameScene& scene, const RendererOptions& options, uint32_t width,
+                            uint32_t height, std::vector<MapRequest>& requests,
+                            std::vector<ShadowTileRequest>& tiles);
+    // Appends the light's views to planned_ and returns the key of what they render.
+    uint64_t planLightViews(const ViewInputs& in, const MapRequest& request,
+                            std::span<const ShadowTile> tiles);
+    // Fill in a view whose tile is set: its projection, casters and their levels of detail
+    // (a directional light's cascade; a spot view or cube face).
+    static void planCascadeView(const ViewInputs& in, const LightInstance& instance,
+                                uint32_t cascades, uint32_t cascade, const ShadowTile& tile,
+                                PlannedView& pv);
+    static void planLocalView(const ViewInputs& in, const LightInstance& instance, uint32_t view,
+                              const ShadowTile& tile, PlannedView& pv);
+    // `key` extended by what the view's map is rendered from (its record and casters).
+    uint64_t viewKey(const PlannedView& pv, const FrameScene& scene, uint64_t key) const;
+    // What the render budget weighs for a light whose views were just planned.
+    ShadowRenderCandidate renderCandidate(const MapRequest& request,
+                                          std::span<const ShadowTile> tiles, uint32_t firstView,
+                                          uint64_t key, float priority,
+                                          const RendererOptions& options) const;
+    // Per light plan (choices indexed like lightPlans_): render, cache or keep stale maps.
+    void applyRenderChoices(std::span<const ShadowRenderChoice> choices,
+                            std::span<const uint64_t> keys, const FrameScene& scene,
+                            const SceneResources& resources);
+    // A rendered light's key and views, which later frames compare against and keep.
+    void rememberViews(const LightPlan& lp, uint64_t key);
+    // Adds a rendered light's caster draws and triangles to stats_.
+    void countCasters(const LightPlan& lp, const FrameScene& scene,
+                      const SceneResources& resources);
+    // Forgets the maps of light slots without a plan this frame.
+    void releaseUnplannedLights(size_t lightCount);
+    // Writes planned_'s records to views_ and the per-light table to lightTable_.
+    void uploadTables(std::span<const glm::uvec2> lightTable);
 
     GpuContext& context_;
     Pipeline pipeline_;
