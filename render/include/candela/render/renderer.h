@@ -1,8 +1,9 @@
 #pragma once
-// Assembles each frame as a frame graph from the scene's features and runs it:
-//   G-buffer (+ emissive) -> depth occupancy -> light assignment (CPU or compute) ->
-//   clustered deferred lighting -> forward transparency (blended draws only) -> exposure +
-//   tonemap. The graph orders the passes and places every barrier (render/README.md).
+// Assembles each frame as a frame graph of only the passes its scene needs and runs it: the lit
+// scene's maps and cluster lists, the G-buffer, deferred lighting, the features that own
+// themselves (AO, SSR, media, hair, wires, TAA, bloom...), blended surfaces and the output
+// stage (tonemap, FXAA, text). The graph orders the passes and places every barrier; the
+// frame's full order is in render/README.md, "Frame".
 #include <vulkan/vulkan.h>
 
 #include <array>
