@@ -52,7 +52,7 @@ vec2 areaPlaneHit(AreaShape s, vec3 P, vec3 dir, vec2 fallback, out bool hit, ou
 }
 
 // Irradiance per unit luminance from the whole shape, sampled at one point of it: the
-// seed's area x cos(surface) x cos(light) / d^2, with d^2 + A / pi in the denominator so a disk
+// Drobot's area x cos(surface) x cos(light) / d^2, with d^2 + A / pi in the denominator so a disk
 // seen along its axis gets the exact form factor pi r^2 / (d^2 + r^2) and a large light does
 // not blow up at small distances.
 float areaPointIrradiance(AreaShape s, vec3 P, vec3 N, vec3 samplePoint, float area, out vec3 L) {

@@ -172,11 +172,11 @@ void addAreaLightShapeRows(ReportContext& context) {
         bool factors = false;
     };
     const Variant variants[] = {
-        {"Rect light: representative point (seed 004 section 1)", false, kRepresentative},
+        {"Rect light: representative point (Drobot 2014, GPU Pro 5)", false, kRepresentative},
         {"Rect light: representative, unclamped p' / p'' (diffuse)", false,
          kRepresentativeUnclamped},
         {"Rect light: LTC (polygon integral, fitted specular)", false, kLtc},
-        {"Disk light: representative point (seed 004 section 1)", true, kRepresentative},
+        {"Disk light: representative point (Drobot 2014, GPU Pro 5)", true, kRepresentative},
         {"Disk light: representative, unclamped p' / p'' (diffuse)", true,
          kRepresentativeUnclamped},
         {"Disk light: LTC (Heitz-Hill disk integral, fitted specular)", true, kLtc},
@@ -184,15 +184,15 @@ void addAreaLightShapeRows(ReportContext& context) {
          1},
         {"Textured rect light: LTC, exact integral per image cell (8 x 8 specular, 4 x 4 diffuse)",
          false, kLtc, 1},
-        {"Constant-intensity rect light: representative point x pre-integrated factors (seed 004 "
-         "section 1)",
+        {"Constant-intensity rect light: representative point x pre-integrated factors (Drobot "
+         "2014, GPU Pro 5)",
          false, kRepresentative, 0, true, true},
         {"Constant-intensity rect light: LTC x pre-integrated factors", false, kLtc, 0, true, true},
         {"Constant-intensity rect light: representative point without the factors (luminance "
          "I_A)",
          false, kRepresentative, 0, true, false},
-        {"Constant-intensity disk light: representative point x pre-integrated factors (seed 004 "
-         "section 1)",
+        {"Constant-intensity disk light: representative point x pre-integrated factors (Drobot "
+         "2014, GPU Pro 5)",
          true, kRepresentative, 0, true, true},
         {"Constant-intensity disk light: LTC x pre-integrated factors", true, kLtc, 0, true, true},
         // The textured rows again on an image whose edges fall off the halves, where the mip
@@ -280,11 +280,11 @@ void addAreaLightShapeRows(ReportContext& context) {
         "integrated times the BRDF over the light; the approximations read it pre-filtered over "
         "the lobe's footprint as the renderer's 256-texel mip chain holds it (aligned 2 x 2 box "
         "levels, bilinear, trilinear between levels; in closed form here). Constant-intensity "
-        "lights (seed 004 section 1's "
-        "variant, `emission` \"constantIntensity\"): every element radiates intensity I_A in "
+        "lights (the variant in Drobot 2014, GPU Pro 5, \"Physically Based Area Lights\"; "
+        "`emission` \"constantIntensity\"): every element radiates intensity I_A in "
         "every direction in front, so the luminance towards the point is I_A / cos theta_o; the "
         "reference integrates that, the approximations multiply the constant-luminance results "
-        "by the seed's pre-integrated factors (the mean of |x - P| / h over the light for "
+        "by Drobot's pre-integrated factors (the mean of |x - P| / h over the light for "
         "diffuse, over the specular cone's intersection with it for specular, in closed form).";
     table.header = {"variant", "roughness"};
     for (double size : kSizes) {

@@ -88,7 +88,8 @@ void addBrdfEnergyRows(ReportContext& context) {
     table.intro =
         "A white metal sphere (F0 = 1) in a uniform sky of radiance 1, rendered by the whole "
         "renderer; mean of the centre 16x16 pixels (NoV 0.87..1), energy lost = 1 - mean. "
-        "`ue4`: seed 000's single-scattering GGX with Schlick-Smith; `energy-conserving`: "
+        "`ue4`: Karis 2013's (\"Real Shading in Unreal Engine 4\") single-scattering GGX with "
+        "Schlick-Smith; `energy-conserving`: "
         "height-correlated Smith, multiple scattering by Fdez-Aguera 2019 (E_ss from the LUT; on "
         "the mobile path from EnvBRDFApprox's own scale + bias, the analytic equivalent). The "
         "reference mode integrates single scattering per pixel and adds the same multiple-"

@@ -92,9 +92,10 @@ void addEnvironmentBrdfRows(ReportContext& context, const std::vector<float>& lu
                   "max abs of F0 A + B (roughness 0..1 x NoV 0.02..1, %d x %d points, F0 {0.04, "
                   "1}); reference: eq. 8 in double, %d^2 stratified visible-normal samples",
                   steps + 1, steps + 1, referenceGrid);
-    context.report.rows.push_back({"EnvBRDFApprox (seed 001, mobile)", "eq. 8 integrated (double)",
-                                   grid, approxWorst.error, "abs", approxWorst.where,
-                                   "vs LUT: " + formatShaderCost(ns[0], ns[1]), plottedNs(ns[0])});
+    context.report.rows.push_back({"EnvBRDFApprox (Karis 2014, Physically Based Shading on Mobile)",
+                                   "eq. 8 integrated (double)", grid, approxWorst.error, "abs",
+                                   approxWorst.where, "vs LUT: " + formatShaderCost(ns[0], ns[1]),
+                                   plottedNs(ns[0])});
     char lutName[96];
     std::snprintf(lutName, sizeof(lutName), "eq. 8 LUT, %ux%u R16G16 UNORM, bilinear (split sum)",
                   lutSize, lutSize);

@@ -132,7 +132,7 @@ void addHairRows(ReportContext& context) {
                       formatNumber(big.shadowDepthMs).c_str());
         std::snprintf(name, sizeof(name),
                       "Hair self-shadowing: hair depth map, (1 - 0.35)^(depth range / (%g x "
-                      "radius)) (seed 004 section 5), %u strands",
+                      "radius)) (Martin et al. 2014, GPU Pro 5), %u strands",
                       double(HAIR_FIBRE_SPACING), strands);
         context.report.rows.push_back(
             {name, referenceName, metric, 100.0 * mapError.mean, "% mean", worst, cost});

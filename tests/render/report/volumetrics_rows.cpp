@@ -137,8 +137,8 @@ std::string crossoverNote(const std::string& what, const std::vector<Costs>& cos
             crossover = &c;
         }
     }
-    return "Volumetrics cross-over (per-light volumes of seed 004 §3 against froxels, GPU time of "
-           "the volumetrics passes on this device, " +
+    return "Volumetrics cross-over (per-light volumes of Vos 2014, GPU Pro 5, against froxels, "
+           "GPU time of the volumetrics passes on this device, " +
            what + "): " +
            (crossover ? "froxels cost less from " + std::to_string(crossover->count) + " lights on"
                       : std::string("froxels do not stay cheaper from any count measured")) +

@@ -118,7 +118,7 @@ void addWireRows(ReportContext& context) {
     context.report.rows.push_back(
         {"Wires: Persson's clamp to a pixel's radius, alpha x real / "
          "clamped radius, coverage from the centre-line distance "
-         "(seed 004 section 6)",
+         "(Persson 2014, GPU Pro 5)",
          "width x radiance (the wire's energy)", metric, 100.0 * coverage.energyError, "% energy",
          worst, cost});
     std::snprintf(worst, sizeof(worst),

@@ -178,8 +178,8 @@ TEST(BrdfAccuracy, EnvBrdfApproxWithin1e5Absolute) {
         nonmetal.add(std::fabs(v.envBrdfNonmetal - ref::envBrdfApproxNonmetal(s.roughness, s.NoV)),
                      where);
     }
-    env.print("envBrdfApprox (seed 001)", "absolute");
-    nonmetal.print("envBrdfApproxNonmetal (seed 001)", "absolute");
+    env.print("envBrdfApprox (Karis 2014)", "absolute");
+    nonmetal.print("envBrdfApproxNonmetal (Karis 2014)", "absolute");
     EXPECT_LE(env.error, 1e-5);
     EXPECT_LE(nonmetal.error, 1e-5);
 }

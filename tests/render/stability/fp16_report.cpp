@@ -217,9 +217,10 @@ Fp16Section fresnelSection() {
 }
 
 Fp16Section envBrdfSection() {
-    Fp16Section s{"envBrdfApprox (seed 001)",
+    Fp16Section s{"envBrdfApprox (Karis 2014)",
                   "EnvBRDFApprox(F0 = 0.04, roughness, NoV), clamped at 0 as brdf.glsl does, "
-                  "every operation in half (seed 001 declares it half); error relative to "
+                  "every operation in half (Karis 2014, \"Physically Based Shading on Mobile\", "
+                  "declares it half); error relative to "
                   "max(|value|, 0.01): reflectances under 1% are compared absolutely.",
                   "roughness",
                   "NoV",

@@ -31,7 +31,8 @@ const char* iblModeName(IblMode mode);  // "split_sum", "mobile", "reference"
 
 // The specular BRDF (`--brdf`, the scene file's "brdf"; render/README.md "BRDF").
 enum class BrdfModel {
-    // Seed 000 exactly: GGX, Schlick-Smith visibility (k = alpha / 2), single scattering.
+    // Karis 2013, "Real Shading in Unreal Engine 4", exactly: GGX, Schlick-Smith visibility
+    // (k = alpha / 2), single scattering.
     Ue4,
     // GGX with height-correlated Smith visibility and multiple-scattering energy compensation
     // (rough metals keep their energy): the default.
