@@ -15,6 +15,28 @@
 
 namespace candela::render {
 
+namespace {
+
+// A mip chain written one level per pass (`name` + level), each after the level below it: the
+// pass for level i reads the camera, what `reads(p, i)` adds and the image as the level before
+// left it, and `record(ctx, image, i)` writes level i. Returns the image's last version.
+template <class Reads, class Record>
+ResourceHandle declareLevels(FrameGraph& g, const std::string& name, ResourceHandle image,
+                             uint32_t levels, Reads reads, Record record, ResourceHandle camera) {
+    for (uint32_t level = 0; level < levels; ++level) {
+        const ResourceHandle source = image;
+        auto p =
+            g.addPass(name + std::to_string(level), PassKind::Device,
+                      [record, source, level](PassContext& ctx) { record(ctx, source, level); });
+        p.read(camera, Use::Uniform);
+        reads(p, level);
+        image = p.write(image, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
+    }
+    return image;
+}
+
+}  // namespace
+
 SsrFeature::SsrFeature(GpuContext& context)
     : context_(context), history_(std::make_unique<TemporalHistory>()) {}
 
@@ -47,52 +69,42 @@ void SsrFeature::declare(FeatureFrame& frame) {
                            [pass](PassContext& ctx) { pass->recordClearCounters(ctx.cmd()); });
         counters = p.write(counters, Use::TransferDst);
     }
-    // The pyramid: one pass per level (each reads the level below, which the graph orders).
-    ResourceHandle pyramid = g.createImage("ssr.hiz", SsrPass::pyramidDesc(width, height));
+    // The pyramid: the depth's min/max chain.
     const uint32_t levels = SsrPass::levelCount(width, height);
-    for (uint32_t level = 0; level < levels; ++level) {
-        const ResourceHandle source = pyramid;
-        auto p =
-            g.addPass("ssr_hiz" + std::to_string(level), PassKind::Device,
-                      [pass, cameraBuffer, depth, source, level, width, height](PassContext& ctx) {
-                          pass->recordHiz(ctx.cmd(), *cameraBuffer, ctx.image(depth),
-                                          ctx.image(source), level, width, height);
-                      });
-        p.read(camera, Use::Uniform);
-        p.read(depth, Use::Sampled);
-        pyramid = p.write(pyramid, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
-    }
+    const ResourceHandle pyramid = declareLevels(
+        g, "ssr_hiz", g.createImage("ssr.hiz", SsrPass::pyramidDesc(width, height)), levels,
+        [depth](FrameGraph::PassBuilder& p, uint32_t) { p.read(depth, Use::Sampled); },
+        [pass, cameraBuffer, depth, width, height](PassContext& ctx, ResourceHandle image,
+                                                   uint32_t index) {
+            pass->recordHiz(ctx.cmd(), *cameraBuffer, ctx.image(depth), ctx.image(image), index,
+                            width, height);
+        },
+        camera);
     // The pre-integrated visibility: level 0 is 100%, each coarser level from the pyramid's
     // depth ranges and the level below it.
-    ResourceHandle visibility =
-        g.createImage("ssr.visibility", SsrPass::visibilityDesc(width, height));
-    for (uint32_t level = 0; level < levels; ++level) {
-        const ResourceHandle source = pyramid, target = visibility;
-        auto p =
-            g.addPass("ssr_visibility" + std::to_string(level), PassKind::Device,
-                      [pass, cameraBuffer, source, target, level, width, height](PassContext& ctx) {
-                          pass->recordVisibility(ctx.cmd(), *cameraBuffer, ctx.image(source),
-                                                 ctx.image(target), level, width, height);
-                      });
-        p.read(camera, Use::Uniform);
-        p.read(pyramid, Use::StorageRead);
-        visibility = p.write(visibility, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
-    }
+    const ResourceHandle visibility = declareLevels(
+        g, "ssr_visibility",
+        g.createImage("ssr.visibility", SsrPass::visibilityDesc(width, height)), levels,
+        [pyramid](FrameGraph::PassBuilder& p, uint32_t) { p.read(pyramid, Use::StorageRead); },
+        [pass, cameraBuffer, pyramid, width, height](PassContext& ctx, ResourceHandle image,
+                                                     uint32_t index) {
+            pass->recordVisibility(ctx.cmd(), *cameraBuffer, ctx.image(pyramid), ctx.image(image),
+                                   index, width, height);
+        },
+        camera);
     // The pre-convolved scene: the lit HDR radiance and its blurred levels.
     ResourceHandle hdr = targets.hdr;
-    ResourceHandle colors = g.createImage("ssr.colors", SsrPass::colorDesc(width, height));
-    for (uint32_t level = 0; level < levels; ++level) {
-        const ResourceHandle source = colors;
-        auto p =
-            g.addPass("ssr_color" + std::to_string(level), PassKind::Device,
-                      [pass, cameraBuffer, hdr, source, level, width, height](PassContext& ctx) {
-                          pass->recordColor(ctx.cmd(), *cameraBuffer, ctx.image(hdr),
-                                            ctx.image(source), level, width, height);
-                      });
-        p.read(camera, Use::Uniform);
-        if (level == 0) p.read(hdr, Use::StorageRead);
-        colors = p.write(colors, level == 0 ? Use::StorageWrite : Use::StorageReadWrite);
-    }
+    const ResourceHandle colors = declareLevels(
+        g, "ssr_color", g.createImage("ssr.colors", SsrPass::colorDesc(width, height)), levels,
+        [hdr](FrameGraph::PassBuilder& p, uint32_t index) {
+            if (index == 0) p.read(hdr, Use::StorageRead);
+        },
+        [pass, cameraBuffer, hdr, width, height](PassContext& ctx, ResourceHandle image,
+                                                 uint32_t index) {
+            pass->recordColor(ctx.cmd(), *cameraBuffer, ctx.image(hdr), ctx.image(image), index,
+                              width, height);
+        },
+        camera);
     ResourceHandle reflection =
         g.createImage("ssr.reflection", SsrPass::reflectionDesc(width, height));
     SsrPass::TraceInputs in;
