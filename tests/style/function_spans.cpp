@@ -1,7 +1,7 @@
 #include "function_spans.h"
 
 #include <cctype>
-#include <regex>
+#include <string>
 
 namespace candela::style {
 namespace {
@@ -58,17 +58,43 @@ std::string codeOnly(std::string_view source) {
 
 enum class Scope { Namespace, Class, Function, Block };
 
-Scope scopeOf(const std::string& head, Scope enclosing) {
+bool isWordChar(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+std::string trimmed(const std::string& text) {
+    const size_t first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos) return "";
+    return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+// Where the whole word `word` last stands in `text`, or npos.
+size_t lastWord(const std::string& text, std::string_view word) {
+    for (size_t at = text.rfind(word); at != std::string::npos;
+         at = at == 0 ? std::string::npos : text.rfind(word, at - 1)) {
+        const size_t end = at + word.size();
+        if ((at == 0 || !isWordChar(text[at - 1])) &&
+            (end == text.size() || !isWordChar(text[end])))
+            return at;
+    }
+    return std::string::npos;
+}
+
+// (No std::regex: GCC 12's <regex> trips -Wmaybe-uninitialized in sanitizer builds.)
+Scope scopeOf(const std::string& rawHead, Scope enclosing) {
     if (enclosing == Scope::Function || enclosing == Scope::Block) return Scope::Block;
-    static const std::regex kNamespace(R"(^\s*(inline\s+)?namespace\b)");
-    static const std::regex kExternC(R"(^\s*extern\s*$)");
-    if (std::regex_search(head, kNamespace) || std::regex_search(head, kExternC)) {
+    const std::string head = trimmed(rawHead);
+    if (head.starts_with("namespace") || head.starts_with("inline namespace") || head == "extern") {
         return Scope::Namespace;
     }
     // `struct X : Base {`, `enum class E : uint8_t {`: a type keyword and no parentheses after
     // it (`template <class T> T f(T x) {` has them).
-    static const std::regex kTypeHead(R"(\b(class|struct|union|enum)\b[^()]*$)");
-    if (std::regex_search(head, kTypeHead)) return Scope::Class;
+    for (std::string_view keyword : {"class", "struct", "union", "enum"}) {
+        const size_t at = lastWord(head, keyword);
+        if (at != std::string::npos && head.find_first_of("()", at) == std::string::npos) {
+            return Scope::Class;
+        }
+    }
     const size_t paren = head.find('(');
     if (head.find(')') == std::string::npos) return Scope::Block;  // `T x{...}`, `= {`
     if (head.find("operator") != std::string::npos) return Scope::Function;
