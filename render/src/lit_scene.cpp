@@ -119,28 +119,28 @@ LitScene::Buffers LitScene::importBuffers(FrameGraph& g) const {
             g.importBuffer("lights", &lights_->buffer())};
 }
 
-void LitScene::declareMaps(FrameGraph& g, const FrameInputs& inputs, SceneResources& resources,
-                           const LightingFeatures& features, ResourceHandle deformed,
-                           RendererStats& stats) {
+LitScene::Maps LitScene::declareMaps(FrameGraph& g, const FrameInputs& inputs,
+                                     SceneResources& resources, const LightingFeatures& features,
+                                     ResourceHandle deformed, RendererStats& stats) {
     // Shadows: the atlas keeps its maps between frames (cached tiles), read-only between uses.
-    shadowAtlas_ = shadowViews_ = shadowLights_ = skyOcclusionAtlas_ = ResourceHandle{};
+    Maps maps;
     if (features.shadows) {
         constexpr ImageState kShadowRead{
             VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
             VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
-        shadowAtlas_ =
+        maps.shadowAtlas =
             g.importImage("shadow_atlas", &shadows_->atlas(),
                           shadows_->atlasHoldsMaps() ? kShadowRead : ImageState{}, kShadowRead);
-        shadowViews_ = g.importBuffer("shadow_views", &shadows_->viewBuffer());
-        shadowLights_ = g.importBuffer("shadow_lights", &shadows_->lightBuffer());
+        maps.shadowViews = g.importBuffer("shadow_views", &shadows_->viewBuffer());
+        maps.shadowLights = g.importBuffer("shadow_lights", &shadows_->lightBuffer());
         if (shadows_->rendersThisFrame()) {
             auto p = g.addPass("shadows", PassKind::Device,
                                [this, &inputs, &resources](PassContext& ctx) {
                                    shadows_->record(ctx.cmd(), inputs.scene, resources);
                                });
             if (deformed.valid()) p.read(deformed, Use::VertexInput);
-            shadowAtlas_ = p.write(shadowAtlas_, Use::DepthWrite);
+            maps.shadowAtlas = p.write(maps.shadowAtlas, Use::DepthWrite);
         }
     }
     stats.skyOcclusionRebuilt = false;
@@ -148,7 +148,7 @@ void LitScene::declareMaps(FrameGraph& g, const FrameInputs& inputs, SceneResour
         constexpr ImageState kSkyRead{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                       VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
-        skyOcclusionAtlas_ =
+        maps.skyOcclusionAtlas =
             g.importImage("sky_occlusion_atlas", &skyOcclusion_->atlas(),
                           skyOcclusion_->atlasHoldsMaps() ? kSkyRead : ImageState{}, kSkyRead);
         if (skyOcclusion_->rendersThisFrame()) {
@@ -157,17 +157,17 @@ void LitScene::declareMaps(FrameGraph& g, const FrameInputs& inputs, SceneResour
                                [this, &inputs, &resources](PassContext& ctx) {
                                    skyOcclusion_->record(ctx.cmd(), inputs.scene, resources);
                                });
-            skyOcclusionAtlas_ = p.write(skyOcclusionAtlas_, Use::DepthWrite);
+            maps.skyOcclusionAtlas = p.write(maps.skyOcclusionAtlas, Use::DepthWrite);
         }
     }
+    return maps;
 }
 
-const LitFrame& LitScene::declareClusters(FrameGraph& g, const FrameInputs& inputs,
-                                          SceneResources& resources,
-                                          const LightingFeatures& features, Buffers buffers,
-                                          ResourceHandle depth, ForwardTransparentPass* blended,
-                                          ResourceHandle deformed, FrameBlackboard& board,
-                                          RendererStats& stats) {
+void LitScene::declareClusters(FrameGraph& g, const FrameInputs& inputs, SceneResources& resources,
+                               const LightingFeatures& features, Buffers buffers, const Maps& maps,
+                               ResourceHandle depth, ForwardTransparentPass* blended,
+                               ResourceHandle deformed, FrameBlackboard& board,
+                               RendererStats& stats) {
     ClusterLightLists::Lists clusters;
     if (features.clustered) {
         clusters = clusters_->declare(
@@ -178,10 +178,10 @@ const LitFrame& LitScene::declareClusters(FrameGraph& g, const FrameInputs& inpu
     }
     // What every lit pass reads beside its own inputs (the lighting pass in its compute stage,
     // hair, wires and blended surfaces in their fragment stage).
-    const LitInputHandles reads{buffers.camera,    buffers.lights,   features.clustered,
-                                clusters,          features.shadows, shadowAtlas_,
-                                shadowViews_,      shadowLights_,    features.skyOcclusion,
-                                skyOcclusionAtlas_};
+    const LitInputHandles reads{
+        buffers.camera,        buffers.lights,        features.clustered, clusters,
+        features.shadows,      maps.shadowAtlas,      maps.shadowViews,   maps.shadowLights,
+        features.skyOcclusion, maps.skyOcclusionAtlas};
     const LitInputs lit{&camera_->buffer(),
                         &lights_->buffer(),
                         clusters_.get(),
@@ -190,9 +190,10 @@ const LitFrame& LitScene::declareClusters(FrameGraph& g, const FrameInputs& inpu
                         shadows_->descriptors(features.shadows),
                         skyOcclusion_->descriptor(features.skyOcclusion)};
     if (features.shadows) {
-        board.put(ShadowFrame{shadows_.get(), shadowAtlas_, shadowViews_, shadowLights_});
+        board.put(
+            ShadowFrame{shadows_.get(), maps.shadowAtlas, maps.shadowViews, maps.shadowLights});
     }
-    return board.put(
+    board.put(
         LitFrame{lit, reads, lights_->count(), lights_->capacity(), tables_->brdfLut() != nullptr});
 }
 

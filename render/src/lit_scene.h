@@ -55,17 +55,20 @@ public:
         ResourceHandle camera, lights;
     };
     Buffers importBuffers(FrameGraph& g) const;
+    // The shadow atlas and its tables, and sky occlusion's atlas, in this frame's graph.
+    struct Maps {
+        ResourceHandle shadowAtlas, shadowViews, shadowLights, skyOcclusionAtlas;
+    };
     // The shadow maps' and sky occlusion's passes (kept maps: only imported).
-    void declareMaps(FrameGraph& g, const FrameInputs& inputs, SceneResources& resources,
+    Maps declareMaps(FrameGraph& g, const FrameInputs& inputs, SceneResources& resources,
                      const LightingFeatures& features, ResourceHandle deformed,
                      RendererStats& stats);
     // The cluster lists from the G-buffer's depth (and the blended draws' occupancy), then the
-    // lit inputs published for the lit passes; returns them.
-    const LitFrame& declareClusters(FrameGraph& g, const FrameInputs& inputs,
-                                    SceneResources& resources, const LightingFeatures& features,
-                                    Buffers buffers, ResourceHandle depth,
-                                    ForwardTransparentPass* blended, ResourceHandle deformed,
-                                    FrameBlackboard& board, RendererStats& stats);
+    // lit inputs published for the lit passes (LitFrame, and ShadowFrame with shadows).
+    void declareClusters(FrameGraph& g, const FrameInputs& inputs, SceneResources& resources,
+                         const LightingFeatures& features, Buffers buffers, const Maps& maps,
+                         ResourceHandle depth, ForwardTransparentPass* blended,
+                         ResourceHandle deformed, FrameBlackboard& board, RendererStats& stats);
     // The sky behind the lit frame (scenes with an atmosphere); returns hdr's new version.
     ResourceHandle declareSky(FrameGraph& g, const FrameInputs& inputs, ResourceHandle camera,
                               ResourceHandle depth, ResourceHandle hdr,
@@ -84,7 +87,6 @@ private:
     std::unique_ptr<SkyOcclusionPass> skyOcclusion_;
     std::unique_ptr<AtmospherePass> atmosphere_;  // made on the first frame with a sky
     std::unique_ptr<ShadingTables> tables_;       // LUT, LTC table, rect textures, placeholders
-    ResourceHandle shadowAtlas_, shadowViews_, shadowLights_, skyOcclusionAtlas_;  // this frame's
 };
 
 }  // namespace candela::render

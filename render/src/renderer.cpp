@@ -218,9 +218,9 @@ uint32_t Renderer::declareScene(const FrameInputs& inputs, SceneResources& resou
     features_->declareRun(frame, FeatureRun::BeforeGeometry);
     const DeformedVertices* deformedVertices = board.find<DeformedVertices>();
     const ResourceHandle deformed = deformedVertices ? deformedVertices->buffers : ResourceHandle{};
-    lit_->declareMaps(g, inputs, resources, features, deformed, stats_);
+    const LitScene::Maps maps = lit_->declareMaps(g, inputs, resources, features, deformed, stats_);
     declareGBuffer(h, inputs, resources, deformed);
-    lit_->declareClusters(g, inputs, resources, features, buffers, h.depth,
+    lit_->declareClusters(g, inputs, resources, features, buffers, maps, h.depth,
                           blended ? transparentPass_.get() : nullptr, deformed, board, stats_);
     // Ambient occlusion between the G-buffer and lighting; then SSR, volumetrics, light shafts,
     // hair and wires over the lit frame and its medium, under the blended surfaces (which then

@@ -21,10 +21,9 @@ void FeatureList::declareRun(FeatureFrame& frame, FeatureRun run) {
 }
 
 void FeatureList::sitOut() {
-    for (Entry& e : entries_) {
+    for (Entry& e : entries_)
         e.declared = false;
-        e.feature->restartHistory();
-    }
+    restartHistories();
 }
 
 void FeatureList::restartHistories() {

@@ -1,7 +1,6 @@
 #include "passes/output/output_stage.h"
 
 #include "candela/render/gpu_context.h"
-#include "candela/render/gpu_image.h"
 #include "frame_graph/frame_graph_executor.h"
 #include "passes/debug_text/debug_text_pass.h"
 #include "passes/fxaa/fxaa_pass.h"

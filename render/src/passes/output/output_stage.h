@@ -16,7 +16,6 @@ namespace candela::render {
 class DebugTextPass;
 class FxaaPass;
 class GpuContext;
-class GpuImage;
 class TonemapPass;
 class UpscalePass;
 
