@@ -29,14 +29,13 @@ const RendererStats& Renderer::collectStats() {
     ClusterLightLists& clusters = lit_->clusters();
     const bool onDevice = clusters.assignedOnDevice();
     clusters.collectStats(stats_);
-    if (onDevice) stats_.lightAssignMs = 0.0;
     stats_.passMs = executor_->passTimes();
+    if (onDevice) stats_.lightAssignMs = passMilliseconds(stats_, "light_assign_");
+    stats_.skyMs = passMilliseconds(stats_, "atmosphere_");
     for (const auto& [name, ms] : stats_.passMs) {
         if (name == "lighting") stats_.lightingMs = ms;
-        if (name.starts_with("atmosphere_")) stats_.skyMs += ms;
         if (name == "shadows") stats_.shadowMs = ms;
         if (name == "sky_occlusion") stats_.skyOcclusionMs = ms;  // kept until the next build
-        if (onDevice && name.starts_with("light_assign_")) stats_.lightAssignMs += ms;
     }
     // Work the frame's declaration fixed (froxel pairs, AO samples), then the passes' counters:
     // the features' (SSR steps...), then the lighting pass's.
