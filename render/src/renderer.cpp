@@ -516,8 +516,9 @@ VkCommandBuffer Renderer::recordFrame(FrameSubmitter& submitter, const FrameInpu
     stats_.exposureEv100 = ev100;
     stats_.adaptedEv100 = ev100;
     if (options_.exposure == ExposureMode::Auto && sceneFrame) {
-        ev100 =
-            features_->find<AutoExposureFeature>()->ev100(inputs, options_.autoExposure, stats_);
+        AutoExposureSettings exposureSettings = options_.autoExposure;
+        exposureSettings.compensation = options_.exposureCompensation;
+        ev100 = features_->find<AutoExposureFeature>()->ev100(inputs, exposureSettings, stats_);
     }
     const float exposure = exposureFromEv100(ev100);
     if (sceneFrame) {

@@ -436,6 +436,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         stats.quality = content::qualityLevelName(quality.level);
         stats.qualitySource = content::qualitySourceName(quality.source);
         render::RendererOptions rendererOptions = rendererOptionsFor(options, world.get(), quality);
+        stats.settings = rendererOptions;
         // A headless run or one that writes stats is checked for non-finite radiance.
         rendererOptions.checkNonFinite = headless || options.stats.has_value();
         s.renderer = std::make_unique<render::Renderer>(*s.context, options.width, options.height,

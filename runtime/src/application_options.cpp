@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "candela/content/component_validation.h"
+#include "candela/content/render_setting_table.h"
 #include "candela/runtime/exit_code.h"
 
 namespace candela::runtime {
@@ -26,12 +27,6 @@ bool parseSize(const std::string& text, std::uint32_t& width, std::uint32_t& hei
     if (x == std::string::npos) return false;
     return parseUint(text.substr(0, x), width) && parseUint(text.substr(x + 1), height) &&
            width > 0 && height > 0 && width <= kMaxDimension && height <= kMaxDimension;
-}
-
-bool parseFraction(const std::string& text, float& value) {
-    const char* end = text.data() + text.size();
-    auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    return ec == std::errc() && ptr == end && value >= 0.0f && value <= 1.0f;
 }
 
 bool parseFloat(const std::string& text, float& value) {
@@ -75,49 +70,6 @@ constexpr std::pair<const char*, render::IblMode> kIbls[] = {
     {"mobile", render::IblMode::Mobile},
     {"reference", render::IblMode::Reference}};
 
-constexpr std::pair<const char*, render::AntiAliasing> kAntiAliasing[] = {
-    {"off", render::AntiAliasing::Off},
-    {"fxaa", render::AntiAliasing::Fxaa},
-    {"taa", render::AntiAliasing::Taa},
-    {"gbaa", render::AntiAliasing::Gbaa}};
-
-constexpr std::pair<const char*, render::ExposureMode> kExposures[] = {
-    {"manual", render::ExposureMode::Manual}, {"auto", render::ExposureMode::Auto}};
-
-constexpr std::pair<const char*, render::BrdfModel> kBrdfs[] = {
-    {"ue4", render::BrdfModel::Ue4}, {"energy-conserving", render::BrdfModel::EnergyConserving}};
-
-constexpr std::pair<const char*, render::AreaLightMode> kAreaLightModes[] = {
-    {"representative", render::AreaLightMode::Representative}, {"ltc", render::AreaLightMode::Ltc}};
-
-constexpr std::pair<const char*, render::HairSelfShadow> kHairSelfShadowModes[] = {
-    {"off", render::HairSelfShadow::Off},
-    {"map", render::HairSelfShadow::DepthMap},
-    {"reference", render::HairSelfShadow::Reference}};
-
-constexpr std::pair<const char*, render::AoMode> kAoModes[] = {
-    {"off", render::AoMode::Off},
-    {"gtao", render::AoMode::Gtao},
-    {"reference", render::AoMode::Reference}};
-
-constexpr std::pair<const char*, render::SsrMode> kSsrModes[] = {
-    {"off", render::SsrMode::Off},
-    {"hiz", render::SsrMode::Hiz},
-    {"reference", render::SsrMode::Reference}};
-constexpr std::pair<const char*, render::SkyOcclusionMode> kSkyOcclusionModes[] = {
-    {"off", render::SkyOcclusionMode::Off},
-    {"on", render::SkyOcclusionMode::On},
-    {"reference", render::SkyOcclusionMode::Reference}};
-constexpr std::pair<const char*, render::ScatteringMode> kScatteringModes[] = {
-    {"off", render::ScatteringMode::Off},
-    {"epipolar", render::ScatteringMode::Epipolar},
-    {"brute-force", render::ScatteringMode::BruteForce}};
-constexpr std::pair<const char*, render::VolumetricsMode> kVolumetricsModes[] = {
-    {"off", render::VolumetricsMode::Off},
-    {"volumes", render::VolumetricsMode::Volumes},
-    {"froxels", render::VolumetricsMode::Froxels},
-    {"reference", render::VolumetricsMode::Reference}};
-
 // SIGMA_S[,SIGMA_A[,G]]: 1, 2 or 3 numbers by the Fog component's rules (validateFog); an
 // empty string when they hold, else what is wrong.
 // `clamps` gets "FIELD MESSAGE" for each value the fog rules clamped (component_validation.h).
@@ -146,6 +98,61 @@ std::string parseFog(const std::string& text, content::Fog& fog, std::vector<std
     return {};
 }
 
+// When `arg` is a render setting's flag (content/render_setting_table.h): reads its value with
+// `next` into `choices` and returns "" when the row allows it, else the problem. Nothing when
+// `arg` is no setting's flag.
+template <typename NextValue>
+std::optional<std::string> renderSettingFlag(const std::string& arg, NextValue&& next,
+                                             content::RenderSettingChoices& choices) {
+    std::optional<std::string> result;
+    content::forEachRenderSetting([&](const auto& row) {
+        if (result || arg != row.flag) return;
+        std::string text;
+        const auto value = next(text) ? content::parseRenderSetting(row, text) : std::nullopt;
+        if (!value) {
+            result = arg + " needs " + content::renderSettingExpects(row) + ", got '" + text + "'";
+            return;
+        }
+        choices.*row.choice = *value;
+        result = std::string();
+    });
+    return result;
+}
+
+// A row's value in each quality preset: "default X" when the presets agree.
+template <typename T>
+std::string presetValuesText(const content::RenderSettingRow<T>& row) {
+    bool same = true;
+    for (const T& value : row.presets)
+        same = same && value == row.presets[0];
+    if (same) return "default " + content::renderSettingText(row, row.presets[0]);
+    std::string values;
+    for (const T& value : row.presets)
+        values += (values.empty() ? "" : "/") + content::renderSettingText(row, value);
+    return "low/medium/high/ultra: " + values;
+}
+
+// A usage line per render setting: its flag and values, what it does and its preset values
+// (unless its help names its own default).
+std::string renderSettingsUsage() {
+    constexpr std::size_t kHelpColumn = 28;
+    std::string usage;
+    content::forEachRenderSetting([&](const auto& row) {
+        std::string line =
+            "  " + std::string(row.flag) + " " + content::renderSettingNames(row, "|");
+        if (line.size() < kHelpColumn) {
+            line.resize(kHelpColumn, ' ');
+        } else {
+            line += "\n" + std::string(kHelpColumn, ' ');
+        }
+        line += row.help;
+        if (row.help.find("default") == std::string_view::npos)
+            line += " (" + presetValuesText(row) + ")";
+        usage += line + "\n";
+    });
+    return usage;
+}
+
 }  // namespace
 
 std::string ApplicationOptions::standardFlagsUsage() {
@@ -164,50 +171,17 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --frame-graph FILE.dot    write the last frame's graph as Graphviz\n"
            "  --env SKY.exr             light the scene with this sky\n"
            "  --ibl split-sum|mobile|reference\n"
-           "  --brdf ue4|energy-conserving   (default: the scene file's, else energy-conserving)\n"
-           "  --area-lights representative|ltc   sphere and tube lights' integration "
-           "(default: ltc)\n"
-           "  --aa off|fxaa|taa|gbaa    antialiasing (default: the scene file's, else taa)\n"
-           "  --msaa 1|2|4|8            samples per pixel of the forward (blended) pass, with\n"
-           "                            --aa (default: the scene file's, else 1 = off)\n"
-           "  --bloom FRACTION          radiance scattered into glare, 0 (off) to 1\n"
-           "                            (default: the scene file's, else 0.04)\n"
-           "  --render-scale FRACTION   width and height the scene renders at, 0.25 to 1,\n"
-           "                            upscaled to the output (default: the preset's)\n"
-           "  --culling on|off          frustum culling of draws (off: the reference)\n"
-           "  --lod-error PIXELS        levels of detail: a coarser mesh strays at most this\n"
-           "                            far, 0 to 8 (0: full meshes; default: the preset's)\n"
-           "  --area-texture-cells N    textured rect lights by LTC: cells per side of the\n"
-           "                            image, 1, 2, 4, 8 or 16 (default: the preset's)\n"
-           "  --froxel-light-cap N      most plain lights per froxel cluster lighting the\n"
-           "                            medium, 0 (all) to 4096 (default: the preset's)\n"
-           "  --exposure manual|auto    the camera's EV100, or metered and adapted\n"
-           "                            (default: the scene file's, else manual)\n"
-           "  --exposure-compensation EV   auto exposure's bias (+ brightens)\n"
-           "  --ao off|gtao|reference   sky light occlusion (default: the scene file's, else "
-           "gtao)\n"
-           "  --hair-self-shadow off|map|reference   hair's shadow on itself: none, the hair\n"
-           "                            depth map's estimate (default) or every fibre counted\n"
            "  --quality low|medium|high|ultra   every technique's settings in one preset\n"
            "                            (default: the scene file's, else medium on a CPU\n"
-           "                            device, high on a GPU; a flag below wins over it)\n"
-           "  --ssr off|hiz|reference   screen-space reflections on glossy surfaces\n"
-           "                            (default: the scene file's, else hiz)\n"
-           "  --sky-occlusion off|on|reference  the scene's geometry blocking the sky's light\n"
-           "  --volumetrics off|volumes|froxels|reference   light scattered in the medium\n"
-           "                            (default: volumes when the scene has fog, else off)\n"
-           "  --volume-proxies off|on   volumes: each light's proxy mesh rasterised, or tile\n"
-           "                            lists (default: the scene file's, else off)\n"
+           "                            device, high on a GPU; a flag below wins over it)\n" +
+           renderSettingsUsage() +
+           "  --culling on|off          frustum culling of draws (off: the reference)\n"
            "  --fog SIGMA_S[,SIGMA_A[,G]]   a uniform medium (1/m, Henyey-Greenstein g),\n"
            "                            replacing the scene's fog\n"
            "  --atmosphere              a physically based sky (Earth's) instead of the EXR sky\n"
            "  --atmosphere off          no atmosphere, even where the scene has one\n"
            "  --sun-elevation DEG       the atmosphere's sun this high, keeping its azimuth\n"
            "  --time-of-day HH:MM       the atmosphere's sun where it stands then (solar time)\n"
-           "  --scattering off|epipolar|brute-force   light shafts in the atmosphere's air\n"
-           "                            (default: epipolar when the scene has an atmosphere)\n"
-           "  --scattering-slices N     epipolar slices (default 512)\n"
-           "  --scattering-samples N    samples per epipolar slice (default 256)\n"
            "  --scattering-initial-step N   every N-th sample marched first (default 16)\n"
            "  --scattering-threshold X  relative change that refines an interval (default 0.2)\n"
            "  --scattering-density X    the air's density for the shafts, times Earth's at the\n"
@@ -229,6 +203,11 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
         auto value = [&]() {
             if (i + 1 >= args.size()) return false;
             v = args[++i];
+            return true;
+        };
+        auto nextValue = [&](std::string& text) {
+            if (!value()) return false;
+            text = v;
             return true;
         };
         if (arg == "--help" || arg == "-h") {
@@ -293,125 +272,15 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
             if (!value() || !parseChoice(v, kIbls, options.ibl)) {
                 return fail("--ibl needs split-sum, mobile or reference, got '" + v + "'");
             }
-        } else if (arg == "--brdf") {
-            render::BrdfModel brdf{};
-            if (!value() || !parseChoice(v, kBrdfs, brdf)) {
-                return fail("--brdf needs ue4 or energy-conserving, got '" + v + "'");
-            }
-            options.brdf = brdf;
-        } else if (arg == "--area-lights") {
-            render::AreaLightMode mode{};
-            if (!value() || !parseChoice(v, kAreaLightModes, mode)) {
-                return fail("--area-lights needs representative or ltc, got '" + v + "'");
-            }
-            options.areaLights = mode;
-        } else if (arg == "--hair-self-shadow") {
-            render::HairSelfShadow mode{};
-            if (!value() || !parseChoice(v, kHairSelfShadowModes, mode)) {
-                return fail("--hair-self-shadow needs off, map or reference, got '" + v + "'");
-            }
-            options.hairSelfShadow = mode;
-        } else if (arg == "--aa") {
-            render::AntiAliasing aa{};
-            if (!value() || !parseChoice(v, kAntiAliasing, aa)) {
-                return fail("--aa needs off, fxaa, taa or gbaa, got '" + v + "'");
-            }
-            options.aa = aa;
-        } else if (arg == "--msaa") {
-            if (!value() || (v != "1" && v != "2" && v != "4" && v != "8")) {
-                return fail("--msaa needs 1, 2, 4 or 8 samples per pixel, got '" + v + "'");
-            }
-            options.msaa = uint32_t(std::stoul(v));
-        } else if (arg == "--render-scale") {
-            float scale = 0.0f;
-            if (!value() || !parseFloat(v, scale) || !(scale >= 0.25f && scale <= 1.0f)) {
-                return fail(
-                    "--render-scale needs a fraction of the output's size from 0.25 to "
-                    "1, got '" +
-                    v + "'");
-            }
-            options.renderScale = scale;
-        } else if (arg == "--lod-error") {
-            float pixels = 0.0f;
-            if (!value() || !parseFloat(v, pixels) || !(pixels >= 0.0f && pixels <= 8.0f)) {
-                return fail("--lod-error needs pixels from 0 (full meshes) to 8, got '" + v + "'");
-            }
-            options.lodPixelError = pixels;
-        } else if (arg == "--area-texture-cells") {
-            uint32_t cells = 0;
-            if (!value() || !parseUint(v, cells) || cells == 0 || cells > 16 ||
-                (cells & (cells - 1)) != 0) {
-                return fail("--area-texture-cells needs 1, 2, 4, 8 or 16, got '" + v + "'");
-            }
-            options.areaTextureCells = cells;
-        } else if (arg == "--froxel-light-cap") {
-            uint32_t cap = 0;
-            if (!value() || !parseUint(v, cap) || cap > 4096) {
-                return fail("--froxel-light-cap needs a count from 0 (every light) to 4096, got '" +
-                            v + "'");
-            }
-            options.froxelLightCap = cap;
         } else if (arg == "--culling") {
             if (!value() || (v != "on" && v != "off"))
                 return fail("--culling needs on or off, got '" + v + "'");
             options.culling = v == "on";
-        } else if (arg == "--bloom") {
-            float bloom = 0.0f;
-            if (!value() || !parseFraction(v, bloom)) {
-                return fail("--bloom needs a fraction from 0 (off) to 1, got '" + v + "'");
-            }
-            options.bloom = bloom;
-        } else if (arg == "--exposure") {
-            render::ExposureMode exposure{};
-            if (!value() || !parseChoice(v, kExposures, exposure)) {
-                return fail("--exposure needs manual or auto, got '" + v + "'");
-            }
-            options.exposure = exposure;
-        } else if (arg == "--exposure-compensation") {
-            float compensation = 0.0f;
-            if (!value()) return fail("--exposure-compensation needs a number of EV");
-            const char* end = v.data() + v.size();
-            auto [ptr, ec] = std::from_chars(v.data(), end, compensation);
-            // Written so NaN fails too (from_chars reads "nan").
-            if (ec != std::errc() || ptr != end || !(std::abs(compensation) <= 16.0f)) {
-                return fail("--exposure-compensation needs EV from -16 to 16, got '" + v + "'");
-            }
-            options.exposureCompensation = compensation;
-        } else if (arg == "--ao") {
-            render::AoMode ao{};
-            if (!value() || !parseChoice(v, kAoModes, ao)) {
-                return fail("--ao needs off, gtao or reference, got '" + v + "'");
-            }
-            options.ao = ao;
         } else if (arg == "--quality") {
             const std::optional<content::QualityLevel> level =
                 value() ? content::parseQualityLevel(v) : std::nullopt;
             if (!level) return fail("--quality needs low, medium, high or ultra, got '" + v + "'");
             options.quality = level;
-        } else if (arg == "--ssr") {
-            render::SsrMode ssr{};
-            if (!value() || !parseChoice(v, kSsrModes, ssr)) {
-                return fail("--ssr needs off, hiz or reference, got '" + v + "'");
-            }
-            options.ssr = ssr;
-        } else if (arg == "--sky-occlusion") {
-            render::SkyOcclusionMode mode{};
-            if (!value() || !parseChoice(v, kSkyOcclusionModes, mode)) {
-                return fail("--sky-occlusion needs off, on or reference, got '" + v + "'");
-            }
-            options.skyOcclusion = mode;
-        } else if (arg == "--volumetrics") {
-            render::VolumetricsMode mode{};
-            if (!value() || !parseChoice(v, kVolumetricsModes, mode)) {
-                return fail("--volumetrics needs off, volumes, froxels or reference, got '" + v +
-                            "'");
-            }
-            options.volumetrics = mode;
-        } else if (arg == "--volume-proxies") {
-            if (!value() || (v != "off" && v != "on")) {
-                return fail("--volume-proxies needs off or on, got '" + v + "'");
-            }
-            options.volumeProxies = v == "on";
         } else if (arg == "--fog") {
             if (!value()) return fail("--fog needs SIGMA_S[,SIGMA_A[,G]] (per metre)");
             content::Fog fog;
@@ -431,26 +300,11 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
             } else {
                 options.atmosphere = true;
             }
-        } else if (arg == "--scattering") {
-            render::ScatteringMode mode{};
-            if (!value() || !parseChoice(v, kScatteringModes, mode)) {
-                return fail("--scattering needs off, epipolar or brute-force, got '" + v + "'");
-            }
-            options.scattering = mode;
-        } else if (arg == "--scattering-slices" || arg == "--scattering-samples" ||
-                   arg == "--scattering-initial-step") {
-            std::uint32_t n = 0;
-            const std::uint32_t least = arg == "--scattering-samples" ? 2u : 1u;
-            if (!value() || !parseUint(v, n) || n < least || n > 4096) {
-                return fail(arg + " needs a count from " + std::to_string(least) +
-                            " to 4096, got '" + v + "'");
-            }
-            if (arg == "--scattering-slices") {
-                options.scatteringSlices = n;
-            } else if (arg == "--scattering-samples") {
-                options.scatteringSamples = n;
-            } else {
-                options.scatteringSettings.initialStep = n;
+        } else if (arg == "--scattering-initial-step") {
+            if (!value() || !parseUint(v, options.scatteringSettings.initialStep) ||
+                options.scatteringSettings.initialStep == 0 ||
+                options.scatteringSettings.initialStep > 4096) {
+                return fail(arg + " needs a count from 1 to 4096, got '" + v + "'");
             }
         } else if (arg == "--scattering-density") {
             float scale = 0.0f;
@@ -483,6 +337,9 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--time-of-day needs HH:MM between 00:00 and 24:00, got '" + v + "'");
             }
             options.timeOfDayHours = float(hours) + float(minutes) / 60.0f;
+        } else if (const std::optional<std::string> problem =
+                       renderSettingFlag(arg, nextValue, options.settings)) {
+            if (!problem->empty()) return fail(*problem);
         } else if (others == OtherArguments::Keep) {
             result.arguments.push_back(arg);
         } else if (!arg.empty() && arg[0] == '-') {
@@ -494,9 +351,10 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
     // A work estimate bounds the light shafts: each slice marches up to its samples, and 4096
     // x 4096 took 38 s for one 64x64 frame. 2^20 samples (8x ultra's 512 x 256) stay near a
     // second on lavapipe. The side not given is the largest any preset uses.
-    if (options.scatteringSlices || options.scatteringSamples) {
-        const std::uint64_t slices = options.scatteringSlices.value_or(512);
-        const std::uint64_t samples = options.scatteringSamples.value_or(256);
+    const content::RenderSettingChoices& chosen = options.settings;
+    if (chosen.scatteringSlices || chosen.scatteringSamples) {
+        const std::uint64_t slices = chosen.scatteringSlices.value_or(512);
+        const std::uint64_t samples = chosen.scatteringSamples.value_or(256);
         if (slices * samples > ApplicationOptions::kMaxScatteringSamples) {
             return fail("--scattering-slices " + std::to_string(slices) +
                         " x --scattering-samples " + std::to_string(samples) + " = " +

@@ -234,7 +234,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     // and the columns, which the demo asks for as a scene file's "ssr": "hiz" would.
     const int32_t floor =
         meshes->add(content::makePlane(12.0f, 12), material({0.16f, 0.15f, 0.14f}, 0.0f, 0.15f));
-    world.setSceneSsr(content::SceneSsrMode::Hiz);
+    world.sceneSettings().ssr = content::SsrMode::Hiz;
     const int32_t runner = meshes->add(content::makeBox({1.0f, 0.01f, 8.0f}),
                                        material({0.75f, 0.75f, 0.78f}, 1.0f, 0.12f));
     const content::Material stone = material({0.72f, 0.68f, 0.62f}, 0.0f, 0.8f);

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "candela/content/atomic_file_write.h"
+#include "candela/content/render_setting_table.h"
 
 namespace candela::runtime {
 
@@ -44,6 +45,17 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["device"] = stats.device;
     json["quality"] = stats.quality;
     json["quality_source"] = stats.qualitySource;
+    // Each render setting's value: its name, or its number.
+    nlohmann::json settings = nlohmann::json::object();
+    content::forEachRenderSetting([&](const auto& row) {
+        const auto& value = stats.settings.*row.value;
+        if (row.names.empty()) {
+            settings[std::string(row.statsName)] = value;
+        } else {
+            settings[std::string(row.statsName)] = content::renderSettingText(row, value);
+        }
+    });
+    json["settings"] = std::move(settings);
     json["render_width"] = stats.renderWidth;
     json["render_height"] = stats.renderHeight;
     json["frame_ms_median"] = stats.frameMsMedian();

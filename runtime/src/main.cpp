@@ -34,8 +34,8 @@ int main(int argc, char** argv) {
     RunOptions options = *parsed.options;
     if (command == "demo" && options.scene.empty()) options.scene = "builtin:demo";
     // The demo adapts its exposure to what the camera sees (issue 24); --exposure overrides.
-    if (command == "demo" && !options.app.exposure)
-        options.app.exposure = candela::render::ExposureMode::Auto;
+    if (command == "demo" && !options.app.settings.exposure)
+        options.app.settings.exposure = candela::content::FrameExposure::Auto;
     // The stats overlay: on in the demo's window; --overlay also draws it headless and on
     // `run` (the figures change run to run, so captures with it are not reproducible).
     std::vector<std::shared_ptr<FrameLayer>> layers;

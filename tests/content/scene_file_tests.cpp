@@ -301,7 +301,7 @@ TEST(SceneFile, CavityRoundTripsOnlyWhenSetAndOutOfRangeIsClampedWithAWarning) {
 // the file and /brdf, and the scene still loads with the engine's default.
 TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {
     SceneDocument scene = exampleScene();
-    scene.brdf = SceneBrdf::Ue4;
+    scene.settings.brdf = BrdfModel::Ue4;
     std::string error;
     const std::string text = sceneToJson(scene, error);
     ASSERT_EQ(error, "");
@@ -309,8 +309,8 @@ TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {
     Diagnostics diagnostics;
     auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "ue4.scene.json", diagnostics);
     ASSERT_TRUE(loaded) << diagnostics.toString();
-    EXPECT_EQ(loaded->brdf, SceneBrdf::Ue4);
-    EXPECT_FALSE(exampleScene().brdf.has_value());
+    EXPECT_EQ(loaded->settings.brdf, BrdfModel::Ue4);
+    EXPECT_FALSE(exampleScene().settings.brdf.has_value());
 
     const std::string bad =
         R"({"format": "candela.scene", "version": 1, "brdf": "phong", "entities": []})";
@@ -318,7 +318,7 @@ TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {
     auto fallback =
         parseSceneJson(std::as_bytes(std::span(bad)), "phong.scene.json", badDiagnostics);
     ASSERT_TRUE(fallback);
-    EXPECT_FALSE(fallback->brdf.has_value());
+    EXPECT_FALSE(fallback->settings.brdf.has_value());
     EXPECT_TRUE(badDiagnostics.hasErrors());
     EXPECT_TRUE(badDiagnostics.mentions("phong.scene.json")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/brdf")) << badDiagnostics.toString();
@@ -329,30 +329,30 @@ TEST(SceneFile, BrdfSettingRoundTripsAndABadValueIsNamed) {
 // 18), "scattering" (16) and "volumetrics" (17); bad values are named.
 TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     SceneDocument scene = exampleScene();
-    scene.aa = SceneAntiAliasing::Fxaa;
-    scene.msaa = 4u;
-    scene.bloom = 0.0f;  // the scene turns bloom off
-    scene.exposure = SceneExposure::Auto;
-    scene.exposureCompensation = -0.5f;
-    scene.ssr = SceneSsrMode::Hiz;  // issue 18
-    scene.scattering = SceneScatteringMode::BruteForce;
-    scene.volumetrics = SceneVolumetricsMode::Froxels;
-    scene.volumeProxies = true;
+    scene.settings.aa = AntiAliasing::Fxaa;
+    scene.settings.msaaSamples = 4u;
+    scene.settings.bloomStrength = 0.0f;  // the scene turns bloom off
+    scene.settings.exposure = FrameExposure::Auto;
+    scene.settings.exposureCompensation = -0.5f;
+    scene.settings.ssr = SsrMode::Hiz;  // issue 18
+    scene.settings.scattering = ScatteringMode::BruteForce;
+    scene.settings.volumetrics = VolumetricsMode::Froxels;
+    scene.settings.volumeProxies = true;
     std::string error;
     const std::string text = sceneToJson(scene, error);
     ASSERT_EQ(error, "");
     Diagnostics diagnostics;
     auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "aa.scene.json", diagnostics);
     ASSERT_TRUE(loaded) << diagnostics.toString();
-    EXPECT_EQ(loaded->aa, SceneAntiAliasing::Fxaa);
-    EXPECT_EQ(loaded->msaa, 4u);
-    EXPECT_EQ(loaded->bloom, 0.0f);
-    EXPECT_EQ(loaded->exposure, SceneExposure::Auto);
-    EXPECT_EQ(loaded->exposureCompensation, -0.5f);
-    EXPECT_EQ(loaded->ssr, SceneSsrMode::Hiz);
-    EXPECT_EQ(loaded->scattering, SceneScatteringMode::BruteForce);
-    EXPECT_EQ(loaded->volumetrics, SceneVolumetricsMode::Froxels);
-    EXPECT_EQ(loaded->volumeProxies, true);
+    EXPECT_EQ(loaded->settings.aa, AntiAliasing::Fxaa);
+    EXPECT_EQ(loaded->settings.msaaSamples, 4u);
+    EXPECT_EQ(loaded->settings.bloomStrength, 0.0f);
+    EXPECT_EQ(loaded->settings.exposure, FrameExposure::Auto);
+    EXPECT_EQ(loaded->settings.exposureCompensation, -0.5f);
+    EXPECT_EQ(loaded->settings.ssr, SsrMode::Hiz);
+    EXPECT_EQ(loaded->settings.scattering, ScatteringMode::BruteForce);
+    EXPECT_EQ(loaded->settings.volumetrics, VolumetricsMode::Froxels);
+    EXPECT_EQ(loaded->settings.volumeProxies, true);
     EXPECT_NE(text.find("\"scattering\": \"brute-force\""), std::string::npos) << text;
     EXPECT_NE(text.find("\"volume_proxies\": \"on\""), std::string::npos) << text;
     // Either spelling reads: JSON's booleans and the command line's words.
@@ -364,7 +364,7 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
         auto read = parseSceneJson(std::as_bytes(std::span(spelt)), "p.scene.json", spelling);
         ASSERT_TRUE(read) << spelling.toString();
         EXPECT_TRUE(spelling.messages.empty()) << spelling.toString();
-        EXPECT_EQ(read->volumeProxies, proxies) << value;
+        EXPECT_EQ(read->settings.volumeProxies, proxies) << value;
     }
 
     const std::string bad = R"({"format": "candela.scene", "version": 1, "aa": "msaa8",
@@ -374,21 +374,21 @@ TEST(SceneFile, AntiAliasingAndBloomSettingsRoundTripAndBadValuesAreNamed) {
     Diagnostics badDiagnostics;
     auto fallback = parseSceneJson(std::as_bytes(std::span(bad)), "bad.scene.json", badDiagnostics);
     ASSERT_TRUE(fallback);
-    EXPECT_FALSE(fallback->aa.has_value());
-    EXPECT_FALSE(fallback->msaa.has_value());
-    EXPECT_FALSE(fallback->bloom.has_value());
+    EXPECT_FALSE(fallback->settings.aa.has_value());
+    EXPECT_FALSE(fallback->settings.msaaSamples.has_value());
+    EXPECT_FALSE(fallback->settings.bloomStrength.has_value());
     EXPECT_TRUE(badDiagnostics.mentions("bad.scene.json")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/aa")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/msaa")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/bloom")) << badDiagnostics.toString();
-    EXPECT_FALSE(fallback->ssr.has_value());
+    EXPECT_FALSE(fallback->settings.ssr.has_value());
     EXPECT_TRUE(badDiagnostics.mentions("/ssr")) << badDiagnostics.toString();
-    EXPECT_FALSE(fallback->scattering.has_value());
-    EXPECT_FALSE(fallback->volumetrics.has_value());
+    EXPECT_FALSE(fallback->settings.scattering.has_value());
+    EXPECT_FALSE(fallback->settings.volumetrics.has_value());
     EXPECT_TRUE(badDiagnostics.mentions("/scattering")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("brute-force")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/volumetrics")) << badDiagnostics.toString();
-    EXPECT_FALSE(fallback->volumeProxies.has_value());
+    EXPECT_FALSE(fallback->settings.volumeProxies.has_value());
     EXPECT_TRUE(badDiagnostics.mentions("/volume_proxies")) << badDiagnostics.toString();
 }
 
@@ -425,7 +425,7 @@ TEST(SceneFile, ExposureCompensationOutsideSixteenEvIsNamed) {
         Diagnostics diagnostics;
         auto scene = parseSceneJson(std::as_bytes(std::span(bad)), "e.scene.json", diagnostics);
         ASSERT_TRUE(scene) << value;
-        EXPECT_FALSE(scene->exposureCompensation.has_value()) << value;
+        EXPECT_FALSE(scene->settings.exposureCompensation.has_value()) << value;
         EXPECT_TRUE(
             diagnostics.mentions("/exposure_compensation: error: expected EV from -16 to 16"))
             << diagnostics.toString();
@@ -435,7 +435,7 @@ TEST(SceneFile, ExposureCompensationOutsideSixteenEvIsNamed) {
     Diagnostics diagnostics;
     auto scene = parseSceneJson(std::as_bytes(std::span(fine)), "e.scene.json", diagnostics);
     ASSERT_TRUE(scene);
-    EXPECT_EQ(scene->exposureCompensation, -16.0f);
+    EXPECT_EQ(scene->settings.exposureCompensation, -16.0f);
 }
 
 // Issue 44: unknown keys were ignored without a word. Each is a warning naming its JSON
@@ -516,21 +516,21 @@ TEST(SceneFile, OverflowingQuaternionIsNamedAsSuch) {
 // and the scene loads with the engine's default.
 TEST(SceneFile, SkyOcclusionSettingRoundTripsAndBadValuesAreNamed) {
     SceneDocument scene = exampleScene();
-    scene.skyOcclusion = SceneSkyOcclusionMode::Reference;
+    scene.settings.skyOcclusion = SkyOcclusionMode::Reference;
     std::string error;
     const std::string text = sceneToJson(scene, error);
     ASSERT_EQ(error, "");
     Diagnostics diagnostics;
     auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "sky.scene.json", diagnostics);
     ASSERT_TRUE(loaded) << diagnostics.toString();
-    EXPECT_EQ(loaded->skyOcclusion, SceneSkyOcclusionMode::Reference);
+    EXPECT_EQ(loaded->settings.skyOcclusion, SkyOcclusionMode::Reference);
 
     const std::string bad = R"({"format": "candela.scene", "version": 1,
                                "sky_occlusion": "always", "entities": []})";
     Diagnostics badDiagnostics;
     auto fallback = parseSceneJson(std::as_bytes(std::span(bad)), "bad.scene.json", badDiagnostics);
     ASSERT_TRUE(fallback);
-    EXPECT_FALSE(fallback->skyOcclusion.has_value());
+    EXPECT_FALSE(fallback->settings.skyOcclusion.has_value());
     EXPECT_TRUE(badDiagnostics.mentions("bad.scene.json")) << badDiagnostics.toString();
     EXPECT_TRUE(badDiagnostics.mentions("/sky_occlusion")) << badDiagnostics.toString();
 }
@@ -540,7 +540,8 @@ TEST(SceneFile, SkyOcclusionSettingRoundTripsAndBadValuesAreNamed) {
 // the defaults for them.
 TEST(SceneFile, AmbientOcclusionSettingRoundTripsAndBadValuesAreNamed) {
     SceneDocument scene = exampleScene();
-    scene.ambientOcclusion = SceneAmbientOcclusion{SceneAoMode::Reference, 2.5f, 0.75f};
+    scene.settings.ao = AoMode::Reference;
+    scene.ambientOcclusion = SceneAmbientOcclusion{2.5f, 0.75f};
     std::string error;
     const std::string text = sceneToJson(scene, error);
     ASSERT_EQ(error, "");
@@ -549,6 +550,7 @@ TEST(SceneFile, AmbientOcclusionSettingRoundTripsAndBadValuesAreNamed) {
     auto loaded = parseSceneJson(std::as_bytes(std::span(text)), "ao.scene.json", diagnostics);
     ASSERT_TRUE(loaded) << diagnostics.toString();
     EXPECT_EQ(loaded->ambientOcclusion, scene.ambientOcclusion);
+    EXPECT_EQ(loaded->settings.ao, AoMode::Reference);
     EXPECT_FALSE(exampleScene().ambientOcclusion.has_value());
 
     const std::string bad = R"({"format": "candela.scene", "version": 1, "entities": [],
@@ -558,7 +560,7 @@ TEST(SceneFile, AmbientOcclusionSettingRoundTripsAndBadValuesAreNamed) {
         parseSceneJson(std::as_bytes(std::span(bad)), "bad_ao.scene.json", badDiagnostics);
     ASSERT_TRUE(fallback);
     ASSERT_TRUE(fallback->ambientOcclusion.has_value());
-    EXPECT_FALSE(fallback->ambientOcclusion->mode.has_value());
+    EXPECT_FALSE(fallback->settings.ao.has_value());
     EXPECT_EQ(fallback->ambientOcclusion->radius, SceneAmbientOcclusion{}.radius);
     EXPECT_EQ(fallback->ambientOcclusion->intensity, SceneAmbientOcclusion{}.intensity);
     EXPECT_TRUE(badDiagnostics.mentions("bad_ao.scene.json")) << badDiagnostics.toString();

@@ -15,6 +15,7 @@
 #include "candela/content/light_texture.h"
 #include "candela/content/model.h"
 #include "candela/content/png_writer.h"
+#include "candela/content/render_setting_table.h"
 #include "candela/content/scene_instantiation.h"
 #include "candela/ecs/hierarchy.h"
 #include "candela/ui/imgui_layer.h"
@@ -74,6 +75,21 @@ protected:
     ImVec2 row(const std::string& name) {
         return rows.at(scene->idOf(scene->findByName(name))).center();
     }
+    // Opens a combo's list and clicks its row `index` (0: the first).
+    void chooseFromList(InspectorWidget combo, int index) {  // a copy: frames redo the layout
+        frame(combo.center(), true);
+        frame(combo.center(), false);
+        frame(ImVec2(-1, -1), false);  // the list is open below the field
+        // Its rows: one text line and the item spacing each, after the popup's padding.
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const float rowHeight = ImGui::GetTextLineHeight() + style.ItemSpacing.y;
+        const ImVec2 at(combo.center().x, combo.max.y + style.WindowPadding.y +
+                                              (float(index) + 0.5f) * rowHeight -
+                                              0.5f * style.ItemSpacing.y);
+        frame(at, true);
+        frame(at, false);
+        frame(ImVec2(-1, -1), false);
+    }
     // Clicks the entity's row; after the frame that follows, the inspector shows it.
     void select(const std::string& name) {
         frame(row(name), true);
@@ -115,19 +131,22 @@ TEST_F(EditorPanels, TheQualityPresetIsChosenFromTheScenesSettings) {
     ASSERT_EQ(scene->selected(), ecs::kNullEntity);
     ASSERT_TRUE(inspectorLayout.count("Quality preset"));
     EXPECT_FALSE(scene->sceneQuality().has_value());
-    const InspectorWidget combo = inspectorLayout.at("Quality preset");
-    frame(combo.center(), true);
-    frame(combo.center(), false);
-    frame(ImVec2(-1, -1), false);  // the list is open below the field
-    // Its rows: one text line and the item spacing each, after the popup's padding.
-    const ImGuiStyle& style = ImGui::GetStyle();
-    const float rowHeight = ImGui::GetTextLineHeight() + style.ItemSpacing.y;
-    const ImVec2 ultra(combo.center().x, combo.max.y + style.WindowPadding.y + 4.5f * rowHeight -
-                                             0.5f * style.ItemSpacing.y);
-    frame(ultra, true);
-    frame(ultra, false);
-    frame(ImVec2(-1, -1), false);
+    chooseFromList(inspectorLayout.at("Quality preset"), 4);  // device's, low ... ultra
     EXPECT_EQ(scene->sceneQuality(), content::QualityLevel::Ultra);
+    EXPECT_TRUE(scene->modified());
+}
+
+// Every render setting has its widget under its stats name; choosing "gbaa" in the "aa" list
+// sets the scene file's "aa" and marks the scene modified; the others stay the preset's.
+TEST_F(EditorPanels, RenderSettingsAreChosenFromTheScenesSettings) {
+    ASSERT_EQ(scene->selected(), ecs::kNullEntity);
+    content::forEachRenderSetting([&](const auto& row) {
+        EXPECT_TRUE(inspectorLayout.count(std::string(row.statsName))) << row.statsName;
+    });
+    chooseFromList(inspectorLayout.at("aa"), 4);  // preset's, off, fxaa, taa, gbaa
+    content::RenderSettingChoices expected;
+    expected.aa = content::AntiAliasing::Gbaa;
+    EXPECT_EQ(scene->sceneRenderSettings(), expected);
     EXPECT_TRUE(scene->modified());
 }
 

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "ambient_occlusion_scene.h"
+#include "candela/content/render_setting_table.h"
 
 using namespace candela::render;
 using namespace candela::render::test;
@@ -24,12 +25,12 @@ TEST(AmbientOcclusion, GtaoMatchesRayTracedSkyVisibilityAroundABoxOnAFloor) {
         std::printf(
             "%-9s occluded floor (true < 0.9): %u px, mean |error| %.4f, mean signed %.4f;"
             " open floor (true > 0.97): %u px, mean darkening %.4f, max %.4f\n",
-            aoModeName(mode), e.occludedPixels, e.occludedMeanAbs, e.occludedMeanSigned,
-            e.openPixels, e.openMeanDarkening, e.openMaxDarkening);
+            candela::content::renderSettingName(mode).c_str(), e.occludedPixels, e.occludedMeanAbs,
+            e.occludedMeanSigned, e.openPixels, e.openMeanDarkening, e.openMaxDarkening);
         ASSERT_GT(e.occludedPixels, 50u) << "the box must occlude part of the visible floor";
         ASSERT_GT(e.openPixels, 200u);
-        EXPECT_LE(e.occludedMeanAbs, 0.07) << aoModeName(mode);
-        EXPECT_LE(e.openMeanDarkening, 0.05) << aoModeName(mode);
+        EXPECT_LE(e.occludedMeanAbs, 0.07) << candela::content::renderSettingName(mode).c_str();
+        EXPECT_LE(e.openMeanDarkening, 0.05) << candela::content::renderSettingName(mode).c_str();
     }
     // Off: the floor is as bright as open floor everywhere, so the error is large (this also
     // proves the comparison can fail).
@@ -67,12 +68,14 @@ TEST(AmbientOcclusion, WhiteFurnaceWithoutOccludersIsUnchanged) {
                 }
             }
         }
-        std::printf("%-9s furnace sphere: radiance %.5f .. %.5f\n", aoModeName(mode), lo, hi);
+        std::printf("%-9s furnace sphere: radiance %.5f .. %.5f\n",
+                    candela::content::renderSettingName(mode).c_str(), lo, hi);
         // The reference marches rays in screen space: a grazing ray that passes behind the
         // sphere's nearer bulge counts as blocked (1% at the rim with 64 rays).
         const float tolerance = mode == AoMode::Reference ? 0.02f : 0.01f;
-        EXPECT_NEAR(lo, 1.0f, tolerance) << aoModeName(mode);
-        EXPECT_LE(hi, 1.0f + 0.002f) << aoModeName(mode);  // never brighter than no AO
+        EXPECT_NEAR(lo, 1.0f, tolerance) << candela::content::renderSettingName(mode).c_str();
+        EXPECT_LE(hi, 1.0f + 0.002f)
+            << candela::content::renderSettingName(mode).c_str();  // never brighter than no AO
     }
     EXPECT_EQ(sharedContext().validationMessages(), 0u);
 }

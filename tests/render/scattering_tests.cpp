@@ -21,14 +21,13 @@ struct Shafts {
     RendererStats stats;
 };
 
+// `options` gives the sampling (scatteringSlices, scatteringSamples, scatteringSettings).
 Shafts renderShafts(GpuContext& context, TestScene& scene, ScatteringMode mode,
-                    const ScatteringSettings& settings) {
+                    RendererOptions options) {
     SceneResources resources(context);
     FrameInputs inputs = scene.prepare(resources);
     inputs.scene.atmosphere = content::Atmosphere{};
-    RendererOptions options;
     options.scattering = mode;
-    options.scatteringSettings = settings;
     options.scatteringSettings.inscatteringOnly = true;
     options.shadowCascadeSize = 512;
     Shafts s;
@@ -55,9 +54,9 @@ double meanRelativeError(const CapturedFrame& a, const CapturedFrame& b) {
 TEST(LightShafts, EpipolarMatchesBruteForceThroughAColonnade) {
     GpuContext context(requiredValidation());
     TestScene scene = colonnadeScene(160, 96);
-    ScatteringSettings settings;
-    settings.slices = 128;
-    settings.samplesPerSlice = 128;
+    RendererOptions settings;
+    settings.scatteringSlices = 128;
+    settings.scatteringSamples = 128;
     const Shafts reference = renderShafts(context, scene, ScatteringMode::BruteForce, settings);
     const Shafts epipolar = renderShafts(context, scene, ScatteringMode::Epipolar, settings);
     std::vector<float> green;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "candela/content/render_setting_table.h"
 #include "passes/sky_occlusion/sky_occlusion_directions.h"
 #include "passes/sky_occlusion/sky_occlusion_pass.h"
 #include "sky_occlusion_scene.h"
@@ -25,8 +26,8 @@ TEST(SkyOcclusion, ClosedRoomSeesTheSkyOnlyThroughItsSkylight) {
         const SkyRoomError e = room.compareInside(room.render(mode, &stats));
         std::printf(
             "%-9s floor %u px: ray traced %.4f, rendered %.4f, mean |error| %.4f, %.2f ms\n",
-            skyOcclusionModeName(mode), e.pixels, e.meanTruth, e.meanRendered, e.meanAbs,
-            stats.skyOcclusionMs);
+            candela::content::renderSettingName(mode).c_str(), e.pixels, e.meanTruth,
+            e.meanRendered, e.meanAbs, stats.skyOcclusionMs);
         ASSERT_GT(e.pixels, 300u);
         ASSERT_LT(e.meanTruth, 0.2) << "the room must be nearly closed";
         if (mode == SkyOcclusionMode::Off) {

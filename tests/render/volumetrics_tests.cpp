@@ -22,6 +22,7 @@
 #include <utility>
 
 #include "candela/content/hair.h"
+#include "candela/content/render_setting_table.h"
 #include "candela/render/gpu_context.h"
 #include "test_scene.h"
 
@@ -139,7 +140,7 @@ TEST_F(Volumetrics, UniformMediumWithoutLightsAttenuatesTheWallByItsTransmittanc
     fog.scattering = 0.08f;
     fog.absorption = 0.04f;
     for (VolumetricsMode mode : {VolumetricsMode::Reference, VolumetricsMode::Froxels}) {
-        SCOPED_TRACE(volumetricsModeName(mode));
+        SCOPED_TRACE(candela::content::renderSettingName(mode).c_str());
         const CapturedFrame frame = renderWithFog(context, scene, fog, mode);
         double worst = 0.0;
         for (uint32_t y = 0; y < scene.height; y += 3) {
@@ -178,11 +179,11 @@ TEST_F(Volumetrics, PointLightInFogMatchesTheSingleScatteringIntegral) {
             const CapturedFrame frame = frames.render(inputs, resources);
             ASSERT_EQ(frame.nonFiniteHdrValues(), 0u);
             const double error = relativeMeanError(frame, scene, light, fog, 0.25f);
-            std::printf("%s, g %+.1f: %.3f%% mean absolute error\n", volumetricsModeName(mode), g,
-                        100.0 * error);
+            std::printf("%s, g %+.1f: %.3f%% mean absolute error\n",
+                        candela::content::renderSettingName(mode).c_str(), g, 100.0 * error);
             // The bounds: the reference within 2%, volumes and froxels within 10%.
             EXPECT_LT(error, mode == VolumetricsMode::Reference ? 0.02 : 0.10)
-                << volumetricsModeName(mode) << ", g " << g;
+                << candela::content::renderSettingName(mode).c_str() << ", g " << g;
         }
     }
 }
@@ -353,7 +354,7 @@ TEST_F(Volumetrics, ShadowsCarveTheMediumBehindABox) {
     };
     for (VolumetricsMode mode :
          {VolumetricsMode::Reference, VolumetricsMode::Volumes, VolumetricsMode::Froxels}) {
-        SCOPED_TRACE(volumetricsModeName(mode));
+        SCOPED_TRACE(candela::content::renderSettingName(mode).c_str());
         RendererOptions options;
         options.volumetrics = mode;
         FrameSequence frames(context, scene.width, scene.height, options);
@@ -364,7 +365,7 @@ TEST_F(Volumetrics, ShadowsCarveTheMediumBehindABox) {
         const double wedge = block(shadowed, 60) / block(lit, 60);
         const double above = block(shadowed, 20) / block(lit, 20);
         std::printf("%s: fog behind the box %.3f of unshadowed, above it %.3f\n",
-                    volumetricsModeName(mode), wedge, above);
+                    candela::content::renderSettingName(mode).c_str(), wedge, above);
         EXPECT_LT(wedge, 0.85);
         EXPECT_NEAR(above, 1.0, 0.03);
     }
@@ -424,7 +425,7 @@ TEST_F(Volumetrics, ARectLightScattersAsAnAreaLight) {
     FrameInputs inputs = scene.prepare(resources);
     inputs.scene.fog = fog;
     for (VolumetricsMode mode : {VolumetricsMode::Reference, VolumetricsMode::Volumes}) {
-        SCOPED_TRACE(volumetricsModeName(mode));
+        SCOPED_TRACE(candela::content::renderSettingName(mode).c_str());
         RendererOptions options;
         options.volumetrics = mode;
         const CapturedFrame frame =
@@ -459,7 +460,8 @@ TEST_F(Volumetrics, ARectLightScattersAsAnAreaLight) {
             }
         }
         std::printf("%s: rect light %.3f%% mean absolute error, behind it at most %g\n",
-                    volumetricsModeName(mode), 100.0 * error / total, behind);
+                    candela::content::renderSettingName(mode).c_str(), 100.0 * error / total,
+                    behind);
         EXPECT_LT(error / total, mode == VolumetricsMode::Reference ? 0.02 : 0.10);
         EXPECT_LT(behind, 1e-3 * total / counted) << "the medium behind the emitter is unlit";
     }
@@ -501,7 +503,7 @@ TEST_F(Volumetrics, TheSunsCascadesCarveItsShaftsInTheMedium) {
     // march would give twice as much.
     double rightSide[2] = {0.0, 0.0};
     for (const VolumetricsMode mode : {VolumetricsMode::Volumes, VolumetricsMode::Froxels}) {
-        SCOPED_TRACE(volumetricsModeName(mode));
+        SCOPED_TRACE(candela::content::renderSettingName(mode).c_str());
         RendererOptions options;
         options.volumetrics = mode;
         FrameSequence frames(context, scene.width, scene.height, options);
@@ -514,7 +516,7 @@ TEST_F(Volumetrics, TheSunsCascadesCarveItsShaftsInTheMedium) {
             for (uint32_t x = 40; x < 60; ++x)
                 rightSide[mode == VolumetricsMode::Froxels] += hdrPixel(unshadowed, x, y)[1];
         std::printf("%s: sunlit fog left / right %.3f, with the slab's shadow %.3f\n",
-                    volumetricsModeName(mode), lit, shadowed);
+                    candela::content::renderSettingName(mode).c_str(), lit, shadowed);
         EXPECT_NEAR(lit, 1.0, 0.03);
         EXPECT_LT(shadowed, 0.2);
     }
@@ -631,7 +633,8 @@ TEST_F(Volumetrics, AStaticCameraSeesAStableMediumOverEightFrames) {
         {VolumetricsMode::Volumes, AntiAliasing::Taa},
         {VolumetricsMode::Froxels, AntiAliasing::Taa}};
     for (const auto& [mode, aa] : cases) {
-        SCOPED_TRACE(std::string(volumetricsModeName(mode)) + ", --aa " + antiAliasingName(aa));
+        SCOPED_TRACE(std::string(candela::content::renderSettingName(mode).c_str()) + ", --aa " +
+                     candela::content::renderSettingName(aa).c_str());
         RendererOptions options;
         options.volumetrics = mode;
         options.aa = aa;
@@ -648,7 +651,8 @@ TEST_F(Volumetrics, AStaticCameraSeesAStableMediumOverEightFrames) {
             previous = next;
         }
         std::printf("%s, --aa %s: largest change from one frame to the next %.3f%%\n",
-                    volumetricsModeName(mode), antiAliasingName(aa), 100.0 * worst);
+                    candela::content::renderSettingName(mode).c_str(),
+                    candela::content::renderSettingName(aa).c_str(), 100.0 * worst);
         EXPECT_LT(worst, 0.02);
     }
 }
@@ -669,7 +673,7 @@ TEST_F(Volumetrics, AMediumBoundedToABoxScattersAndAttenuatesNothingOutsideIt) {
         renderWithFog(context, scene, std::nullopt, VolumetricsMode::Reference);
     for (VolumetricsMode mode :
          {VolumetricsMode::Reference, VolumetricsMode::Volumes, VolumetricsMode::Froxels}) {
-        SCOPED_TRACE(volumetricsModeName(mode));
+        SCOPED_TRACE(candela::content::renderSettingName(mode).c_str());
         const CapturedFrame foggy = renderWithFog(context, scene, fog, mode);
         double outside = 0.0;  // the largest relative change where rays miss the box
         double inside = 1.0;   // the smallest where rays cross 3 m of it or more
@@ -688,7 +692,7 @@ TEST_F(Volumetrics, AMediumBoundedToABoxScattersAndAttenuatesNothingOutsideIt) {
         std::printf(
             "%s: bounded fog changes pixels outside its box by at most %.5f%%, those "
             "through it by at least %.1f%%\n",
-            volumetricsModeName(mode), 100.0 * outside, 100.0 * inside);
+            candela::content::renderSettingName(mode).c_str(), 100.0 * outside, 100.0 * inside);
         EXPECT_LT(outside, 1e-4);
         EXPECT_GT(inside, 0.05);
     }
@@ -747,7 +751,7 @@ TEST_F(Volumetrics, ProxyMeshesAddWhatTheTileListsAdd) {
     auto render = [&](bool proxies, size_t lights) {
         RendererOptions options;
         options.volumetrics = VolumetricsMode::Volumes;
-        options.volumetricsSettings.volumeProxies = proxies;
+        options.volumeProxies = proxies;
         FrameInputs subset = inputs;
         subset.scene.lights = inputs.scene.lights.subspan(0, lights);
         CapturedFrame frame =
@@ -790,7 +794,7 @@ TEST_F(Volumetrics, TheCameraInsideALightsSphereStillGetsItsScattering) {
     inputs.scene.fog = fog;
     RendererOptions options;
     options.volumetrics = VolumetricsMode::Volumes;
-    options.volumetricsSettings.volumeProxies = true;
+    options.volumeProxies = true;
     const CapturedFrame frame =
         renderOffscreen(context, inputs, scene.width, scene.height, 1, &resources, options);
     ASSERT_EQ(frame.nonFiniteHdrValues(), 0u);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/content/render_setting_table.h"
 #include "candela/runtime/application_options.h"
 #include "candela/runtime/exit_code.h"
 
@@ -89,8 +90,8 @@ TEST(ApplicationOptions, BadValuesNameTheFlagAndTheValue) {
 TEST(ApplicationOptions, ExposureFlags) {
     CommandLine result = parseCommandLine({"--exposure", "auto", "--exposure-compensation", "1.5"});
     ASSERT_TRUE(result) << result.error;
-    EXPECT_EQ(result.options->exposure, candela::render::ExposureMode::Auto);
-    EXPECT_EQ(result.options->exposureCompensation, 1.5f);
+    EXPECT_EQ(result.options->settings.exposure, candela::render::ExposureMode::Auto);
+    EXPECT_EQ(result.options->settings.exposureCompensation, 1.5f);
     EXPECT_NE(parseError({"--exposure", "fast"}).find("--exposure needs manual or auto"),
               std::string::npos);
     EXPECT_NE(parseError({"--exposure-compensation", "x"}).find("got 'x'"), std::string::npos);
@@ -105,17 +106,17 @@ TEST(ApplicationOptions, ExposureFlags) {
 TEST(ApplicationOptions, AntiAliasingAndBloomFlags) {
     CommandLine result = parseCommandLine({"--aa", "fxaa", "--msaa", "4", "--bloom", "0.1"});
     ASSERT_TRUE(result) << result.error;
-    EXPECT_EQ(result.options->aa, candela::render::AntiAliasing::Fxaa);
-    EXPECT_EQ(result.options->msaa, 4u);
-    EXPECT_EQ(result.options->bloom, 0.1f);
+    EXPECT_EQ(result.options->settings.aa, candela::render::AntiAliasing::Fxaa);
+    EXPECT_EQ(result.options->settings.msaaSamples, 4u);
+    EXPECT_EQ(result.options->settings.bloomStrength, 0.1f);
     CommandLine none = parseCommandLine({});
     ASSERT_TRUE(none);
-    EXPECT_FALSE(none.options->aa.has_value());    // the scene file's, else TAA
-    EXPECT_FALSE(none.options->msaa.has_value());  // the scene file's, else 1 (off)
-    EXPECT_FALSE(none.options->bloom.has_value());
+    EXPECT_FALSE(none.options->settings.aa.has_value());           // the scene file's, else TAA
+    EXPECT_FALSE(none.options->settings.msaaSamples.has_value());  // the scene file's, else 1 (off)
+    EXPECT_FALSE(none.options->settings.bloomStrength.has_value());
     CommandLine gbaa = parseCommandLine({"--aa", "gbaa"});
     ASSERT_TRUE(gbaa) << gbaa.error;
-    EXPECT_EQ(gbaa.options->aa, candela::render::AntiAliasing::Gbaa);
+    EXPECT_EQ(gbaa.options->settings.aa, candela::render::AntiAliasing::Gbaa);
     EXPECT_NE(parseError({"--aa", "smaa"}).find("--aa needs off, fxaa, taa or gbaa, got 'smaa'"),
               std::string::npos);
     EXPECT_NE(
@@ -129,13 +130,13 @@ TEST(ApplicationOptions, AntiAliasingAndBloomFlags) {
 TEST(ApplicationOptions, AreaLightsFlag) {
     CommandLine result = parseCommandLine({"--area-lights", "representative"});
     ASSERT_TRUE(result) << result.error;
-    EXPECT_EQ(result.options->areaLights, candela::render::AreaLightMode::Representative);
+    EXPECT_EQ(result.options->settings.areaLights, candela::render::AreaLightMode::Representative);
     CommandLine ltc = parseCommandLine({"--area-lights", "ltc"});
     ASSERT_TRUE(ltc) << ltc.error;
-    EXPECT_EQ(ltc.options->areaLights, candela::render::AreaLightMode::Ltc);
+    EXPECT_EQ(ltc.options->settings.areaLights, candela::render::AreaLightMode::Ltc);
     CommandLine none = parseCommandLine({});
     ASSERT_TRUE(none);
-    EXPECT_FALSE(none.options->areaLights);  // the quality preset's
+    EXPECT_FALSE(none.options->settings.areaLights);  // the quality preset's
     EXPECT_NE(parseError({"--area-lights", "exact"})
                   .find("--area-lights needs representative or ltc, got 'exact'"),
               std::string::npos);
@@ -149,8 +150,8 @@ TEST(ApplicationOptions, AreaLightsFlag) {
 TEST(ApplicationOptions, AreaTextureCellsFlag) {
     CommandLine result = parseCommandLine({"--area-texture-cells", "4"});
     ASSERT_TRUE(result) << result.error;
-    EXPECT_EQ(result.options->areaTextureCells, 4u);
-    EXPECT_FALSE(parseCommandLine({}).options->areaTextureCells);  // the quality preset's
+    EXPECT_EQ(result.options->settings.areaTextureCells, 4u);
+    EXPECT_FALSE(parseCommandLine({}).options->settings.areaTextureCells);  // the quality preset's
     for (const char* bad : {"0", "3", "32", "x"}) {
         EXPECT_NE(parseError({"--area-texture-cells", bad})
                       .find(std::string("--area-texture-cells needs 1, 2, 4, 8 or 16, got '") +
@@ -164,8 +165,8 @@ TEST(ApplicationOptions, AreaTextureCellsFlag) {
 TEST(ApplicationOptions, FroxelLightCapFlag) {
     CommandLine result = parseCommandLine({"--froxel-light-cap", "0"});
     ASSERT_TRUE(result) << result.error;
-    EXPECT_EQ(result.options->froxelLightCap, 0u);
-    EXPECT_FALSE(parseCommandLine({}).options->froxelLightCap);  // the quality preset's
+    EXPECT_EQ(result.options->settings.froxelLightCap, 0u);
+    EXPECT_FALSE(parseCommandLine({}).options->settings.froxelLightCap);  // the quality preset's
     for (const char* bad : {"-1", "4097", "x"}) {
         EXPECT_NE(parseError({"--froxel-light-cap", bad})
                       .find(std::string("--froxel-light-cap needs a count from 0 (every light) "
@@ -229,13 +230,13 @@ TEST(ApplicationOptions, ScatteringFlags) {
                           "--scattering-samples", "32", "--scattering-initial-step", "4",
                           "--scattering-threshold", "0.1", "--scattering-density", "200"});
     ASSERT_TRUE(result) << result.error;
-    EXPECT_EQ(result.options->scattering, candela::render::ScatteringMode::BruteForce);
-    EXPECT_EQ(result.options->scatteringSlices, 64u);
-    EXPECT_EQ(result.options->scatteringSamples, 32u);
+    EXPECT_EQ(result.options->settings.scattering, candela::render::ScatteringMode::BruteForce);
+    EXPECT_EQ(result.options->settings.scatteringSlices, 64u);
+    EXPECT_EQ(result.options->settings.scatteringSamples, 32u);
     EXPECT_EQ(result.options->scatteringSettings.initialStep, 4u);
     EXPECT_EQ(result.options->scatteringSettings.refinementThreshold, 0.1f);
     EXPECT_EQ(result.options->scatteringSettings.densityScale, 200.0f);
-    EXPECT_FALSE(parseCommandLine({}).options->scattering);
+    EXPECT_FALSE(parseCommandLine({}).options->settings.scattering);
     EXPECT_NE(parseError({"--scattering", "fast"}).find("got 'fast'"), std::string::npos);
     EXPECT_NE(parseError({"--scattering-samples", "1"}).find("from 2 to 4096"), std::string::npos);
     EXPECT_NE(parseError({"--scattering-slices", "x"}).find("got 'x'"), std::string::npos);
@@ -264,7 +265,7 @@ TEST(ApplicationOptions, ScatteringFlags) {
 TEST(ApplicationOptions, VolumetricsAndFogFlags) {
     CommandLine result = parseCommandLine({"--volumetrics", "reference", "--fog", "0.1,0.02,-0.6"});
     ASSERT_TRUE(result) << result.error;
-    EXPECT_EQ(result.options->volumetrics, candela::render::VolumetricsMode::Reference);
+    EXPECT_EQ(result.options->settings.volumetrics, candela::render::VolumetricsMode::Reference);
     ASSERT_TRUE(result.options->fog);
     EXPECT_EQ(result.options->fog->scattering, 0.1f);
     EXPECT_EQ(result.options->fog->absorption, 0.02f);
@@ -287,10 +288,10 @@ TEST(ApplicationOptions, VolumetricsAndFogFlags) {
             << clamped.warnings[0];
     }
     EXPECT_FALSE(parseCommandLine({}).options->fog);
-    EXPECT_FALSE(parseCommandLine({}).options->volumetrics);
-    EXPECT_FALSE(parseCommandLine({}).options->volumeProxies);
-    EXPECT_EQ(parseCommandLine({"--volume-proxies", "on"}).options->volumeProxies, true);
-    EXPECT_EQ(parseCommandLine({"--volume-proxies", "off"}).options->volumeProxies, false);
+    EXPECT_FALSE(parseCommandLine({}).options->settings.volumetrics);
+    EXPECT_FALSE(parseCommandLine({}).options->settings.volumeProxies);
+    EXPECT_EQ(parseCommandLine({"--volume-proxies", "on"}).options->settings.volumeProxies, true);
+    EXPECT_EQ(parseCommandLine({"--volume-proxies", "off"}).options->settings.volumeProxies, false);
     EXPECT_NE(parseError({"--volume-proxies", "yes"}).find("--volume-proxies needs off or on"),
               std::string::npos);
     EXPECT_NE(parseError({"--volume-proxies"}).find("--volume-proxies needs"), std::string::npos);
@@ -333,4 +334,31 @@ TEST(ApplicationOptions, QualityFlag) {
               std::string::npos);
     EXPECT_NE(ApplicationOptions::standardFlagsUsage().find("--quality low|medium|high|ultra"),
               std::string::npos);
+}
+
+// Every row of the render settings table is a flag: each value the row names (or its least
+// and its ultra value) reaches ApplicationOptions::settings, a value it does not take is refused
+// naming the flag, and the usage lists the flag with its values.
+TEST(ApplicationOptions, EveryRenderSettingIsAFlag) {
+    candela::content::forEachRenderSetting([&](const auto& row) {
+        const std::string flag(row.flag);
+        SCOPED_TRACE(flag);
+        using T = std::decay_t<decltype(row.presets[0])>;
+        std::vector<T> values;
+        for (const auto& named : row.names)
+            values.push_back(named.value);
+        if (row.names.empty()) values = {row.least, row.presets[3]};
+        for (const T value : values) {
+            const std::string text = candela::content::renderSettingText(row, value);
+            const CommandLine result = parseCommandLine({flag, text});
+            ASSERT_TRUE(result.options) << result.error;
+            EXPECT_EQ(result.options->settings.*row.choice, value) << text;
+        }
+        EXPECT_NE(parseError({flag, "sideways"}).find(flag + " needs "), std::string::npos);
+        EXPECT_NE(parseError({flag}).find(flag + " needs "), std::string::npos);
+        EXPECT_FALSE((parseCommandLine({}).options->settings.*row.choice).has_value());
+        EXPECT_NE(ApplicationOptions::standardFlagsUsage().find(
+                      "  " + flag + " " + candela::content::renderSettingNames(row, "|")),
+                  std::string::npos);
+    });
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "candela/content/diagnostics.h"
+#include "candela/content/render_setting_table.h"
 #include "frame_settings.h"
 
 using namespace candela;
@@ -46,14 +47,14 @@ TEST(FrameSettings, WithoutFlagsOrSceneTheDefaultsHold) {
     EXPECT_EQ(r.brdf, render::BrdfModel::EnergyConserving);
     EXPECT_EQ(r.aa, render::AntiAliasing::Taa);
     EXPECT_EQ(r.msaaSamples, 1u);
-    EXPECT_EQ(r.bloomStrength, ApplicationOptions::kDefaultBloom);
+    EXPECT_EQ(r.bloomStrength, 0.04f);
     EXPECT_EQ(r.exposure, render::ExposureMode::Manual);
-    EXPECT_EQ(r.autoExposure.compensation, 0.0f);
+    EXPECT_EQ(r.exposureCompensation, 0.0f);
     EXPECT_EQ(r.ao, render::AoMode::Gtao);
     EXPECT_EQ(r.ssr, render::SsrMode::Hiz);
     EXPECT_TRUE(r.skyOcclusionWithAtmosphere);
     EXPECT_EQ(r.volumetrics, render::VolumetricsMode::Volumes);
-    EXPECT_FALSE(r.volumetricsSettings.volumeProxies);
+    EXPECT_FALSE(r.volumeProxies);
     EXPECT_EQ(r.scattering, render::ScatteringMode::Epipolar);
 }
 
@@ -65,44 +66,44 @@ TEST(FrameSettings, SceneFileFieldsReachTheRenderer) {
     EXPECT_EQ(r.msaaSamples, 4u);
     EXPECT_EQ(r.bloomStrength, 0.25f);
     EXPECT_EQ(r.exposure, render::ExposureMode::Auto);
-    EXPECT_EQ(r.autoExposure.compensation, -1.5f);
+    EXPECT_EQ(r.exposureCompensation, -1.5f);
     EXPECT_EQ(r.ao, render::AoMode::Reference);
     EXPECT_EQ(r.ssr, render::SsrMode::Reference);
     EXPECT_FALSE(r.skyOcclusionWithAtmosphere);
     EXPECT_EQ(r.skyOcclusion, render::SkyOcclusionMode::Reference);
     EXPECT_EQ(r.volumetrics, render::VolumetricsMode::Froxels);
-    EXPECT_TRUE(r.volumetricsSettings.volumeProxies);
+    EXPECT_TRUE(r.volumeProxies);
     EXPECT_EQ(r.scattering, render::ScatteringMode::BruteForce);
 }
 
 TEST(FrameSettings, FlagsOverrideTheSceneFile) {
     auto world = worldWith(kEverySetting);
     ApplicationOptions options;
-    options.brdf = render::BrdfModel::EnergyConserving;
-    options.aa = render::AntiAliasing::Off;
-    options.msaa = 2u;
-    options.bloom = 0.0f;
-    options.exposure = render::ExposureMode::Manual;
-    options.exposureCompensation = 2.0f;
-    options.ao = render::AoMode::Off;
-    options.ssr = render::SsrMode::Off;
-    options.skyOcclusion = render::SkyOcclusionMode::Off;
-    options.volumetrics = render::VolumetricsMode::Off;
-    options.volumeProxies = false;
-    options.scattering = render::ScatteringMode::Off;
+    options.settings.brdf = render::BrdfModel::EnergyConserving;
+    options.settings.aa = render::AntiAliasing::Off;
+    options.settings.msaaSamples = 2u;
+    options.settings.bloomStrength = 0.0f;
+    options.settings.exposure = render::ExposureMode::Manual;
+    options.settings.exposureCompensation = 2.0f;
+    options.settings.ao = render::AoMode::Off;
+    options.settings.ssr = render::SsrMode::Off;
+    options.settings.skyOcclusion = render::SkyOcclusionMode::Off;
+    options.settings.volumetrics = render::VolumetricsMode::Off;
+    options.settings.volumeProxies = false;
+    options.settings.scattering = render::ScatteringMode::Off;
     const render::RendererOptions r = rendererOptionsFor(options, world.get());
     EXPECT_EQ(r.brdf, render::BrdfModel::EnergyConserving);
     EXPECT_EQ(r.aa, render::AntiAliasing::Off);
     EXPECT_EQ(r.msaaSamples, 2u);
     EXPECT_EQ(r.bloomStrength, 0.0f);
     EXPECT_EQ(r.exposure, render::ExposureMode::Manual);
-    EXPECT_EQ(r.autoExposure.compensation, 2.0f);
+    EXPECT_EQ(r.exposureCompensation, 2.0f);
     EXPECT_EQ(r.ao, render::AoMode::Off);
     EXPECT_EQ(r.ssr, render::SsrMode::Off);
     EXPECT_FALSE(r.skyOcclusionWithAtmosphere);
     EXPECT_EQ(r.skyOcclusion, render::SkyOcclusionMode::Off);
     EXPECT_EQ(r.volumetrics, render::VolumetricsMode::Off);
-    EXPECT_FALSE(r.volumetricsSettings.volumeProxies);
+    EXPECT_FALSE(r.volumeProxies);
     EXPECT_EQ(r.scattering, render::ScatteringMode::Off);
 }
 
@@ -139,15 +140,20 @@ TEST(FrameSettings, UltraIsTheEngineBeforePresets) {
     EXPECT_EQ(r.atmosphere.skyViewWidth, engine.atmosphere.skyViewWidth);
     EXPECT_EQ(r.atmosphere.skyViewHeight, engine.atmosphere.skyViewHeight);
     EXPECT_EQ(r.atmosphere.cubeFaceSize, engine.atmosphere.cubeFaceSize);
-    EXPECT_EQ(r.scatteringSettings.slices, engine.scatteringSettings.slices);
-    EXPECT_EQ(r.scatteringSettings.samplesPerSlice, engine.scatteringSettings.samplesPerSlice);
+    EXPECT_EQ(r.scatteringSlices, engine.scatteringSlices);
+    EXPECT_EQ(r.scatteringSamples, engine.scatteringSamples);
+    EXPECT_EQ(r.renderScale, engine.renderScale);
+    EXPECT_EQ(r.lodPixelError, engine.lodPixelError);
+    EXPECT_EQ(r.areaTextureCells, engine.areaTextureCells);
+    EXPECT_EQ(r.froxelLightCap, engine.froxelLightCap);
     EXPECT_EQ(r.aa, render::AntiAliasing::Taa);
-    EXPECT_EQ(r.bloomStrength, ApplicationOptions::kDefaultBloom);
+    EXPECT_EQ(r.bloomStrength, 0.04f);
     EXPECT_EQ(r.ao, render::AoMode::Gtao);
     EXPECT_EQ(r.ssr, render::SsrMode::Hiz);
 }
 
-// Each lower preset does no more of any counted thing than the one above it.
+// Each lower preset does no more of any counted thing than the one above it: the parameters
+// no flag names (content/quality.h) and the settings' preset columns (render_setting_table.h).
 TEST(FrameSettings, LowerPresetsNeverCostMore) {
     for (size_t i = 1; i < std::size(content::kQualityLevels); ++i) {
         const content::QualityPreset& lower =
@@ -159,26 +165,35 @@ TEST(FrameSettings, LowerPresetsNeverCostMore) {
         EXPECT_LE(lower.shadowMaxTileSize, higher.shadowMaxTileSize) << name;
         EXPECT_LE(lower.softShadows, higher.softShadows) << name;
         EXPECT_LE(lower.shadowHardTapsPerAxis, higher.shadowHardTapsPerAxis) << name;
-        EXPECT_LE(lower.ambientOcclusion, higher.ambientOcclusion) << name;
         EXPECT_LE(lower.aoSlices * lower.aoSteps, higher.aoSlices * higher.aoSteps) << name;
-        EXPECT_LE(lower.ssr, higher.ssr) << name;
         EXPECT_LE(lower.ssrMaxIterations, higher.ssrMaxIterations) << name;
         EXPECT_LE(lower.froxelsX * lower.froxelsY * lower.froxelSlices,
                   higher.froxelsX * higher.froxelsY * higher.froxelSlices)
             << name;
-        EXPECT_LE(lower.scatteringSlices * lower.scatteringSamples,
-                  higher.scatteringSlices * higher.scatteringSamples)
-            << name;
         EXPECT_LE(lower.aerialGrid * lower.aerialStepsPerSlice,
                   higher.aerialGrid * higher.aerialStepsPerSlice)
             << name;
+
+        const content::RenderSettings low =
+            content::resolveRenderSettings(content::kQualityLevels[i - 1], {});
+        const content::RenderSettings high =
+            content::resolveRenderSettings(content::kQualityLevels[i], {});
+        // Modes in the order off, the technique, its reference.
+        EXPECT_LE(low.ao, high.ao) << name;
+        EXPECT_LE(low.ssr, high.ssr) << name;
+        EXPECT_LE(low.areaLights, high.areaLights) << name;
+        EXPECT_LE(low.hairSelfShadow, high.hairSelfShadow) << name;
+        EXPECT_LE(low.bloomStrength > 0, high.bloomStrength > 0) << name;
+        EXPECT_LE(low.scatteringSlices * low.scatteringSamples,
+                  high.scatteringSlices * high.scatteringSamples)
+            << name;
         // Levels of detail: a higher preset strays no further from the full meshes (0: full).
-        EXPECT_GE(lower.lodPixelError, higher.lodPixelError) << name;
-        EXPECT_LE(lower.renderScale, higher.renderScale) << name;
-        EXPECT_LE(lower.areaTextureCells, higher.areaTextureCells) << name;
+        EXPECT_GE(low.lodPixelError, high.lodPixelError) << name;
+        EXPECT_LE(low.renderScale, high.renderScale) << name;
+        EXPECT_LE(low.areaTextureCells, high.areaTextureCells) << name;
         // The froxel light cap: 0 is none, the most.
-        EXPECT_TRUE(higher.froxelLightCap == 0 ||
-                    (lower.froxelLightCap != 0 && lower.froxelLightCap <= higher.froxelLightCap))
+        EXPECT_TRUE(high.froxelLightCap == 0 ||
+                    (low.froxelLightCap != 0 && low.froxelLightCap <= high.froxelLightCap))
             << name;
     }
 }
@@ -198,7 +213,7 @@ TEST(FrameSettings, QualityComesFromFlagSceneOrDevice) {
     EXPECT_EQ(low.areaLights, render::AreaLightMode::Representative);
 
     options.quality = content::QualityLevel::High;
-    options.areaLights = render::AreaLightMode::Representative;
+    options.settings.areaLights = render::AreaLightMode::Representative;
     q = qualityFor(options, world.get(), true);
     EXPECT_EQ(q.level, content::QualityLevel::High);
     EXPECT_EQ(q.source, content::QualitySource::Flag);
@@ -206,11 +221,11 @@ TEST(FrameSettings, QualityComesFromFlagSceneOrDevice) {
     EXPECT_EQ(high.areaLights, render::AreaLightMode::Representative);  // the flag wins
     EXPECT_TRUE(high.softShadows);
     EXPECT_EQ(high.areaTextureCells, 8u);
-    options.areaTextureCells = 2;
+    options.settings.areaTextureCells = 2;
     EXPECT_EQ(rendererOptionsFor(options, world.get(), q).areaTextureCells, 2u);
-    EXPECT_EQ(high.volumetricsSettings.froxelLightCap, 0u);  // high: every light
-    options.froxelLightCap = 12;
-    EXPECT_EQ(rendererOptionsFor(options, world.get(), q).volumetricsSettings.froxelLightCap, 12u);
+    EXPECT_EQ(high.froxelLightCap, 0u);  // high: every light
+    options.settings.froxelLightCap = 12;
+    EXPECT_EQ(rendererOptionsFor(options, world.get(), q).froxelLightCap, 12u);
 
     const QualityChoice cpu = qualityFor({}, nullptr, true);
     EXPECT_EQ(cpu.level, content::QualityLevel::Medium);

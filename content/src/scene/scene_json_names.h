@@ -48,41 +48,10 @@ inline constexpr EnumNames<LayerMaskSource, 2> kLayerMaskSources{
 inline constexpr EnumNames<ColorSpace, 2> kColorSpaces{
     {{ColorSpace::Srgb, "srgb"}, {ColorSpace::Linear, "linear"}}};
 
-inline constexpr EnumNames<SceneBrdf, 2> kSceneBrdfs{
-    {{SceneBrdf::Ue4, "ue4"}, {SceneBrdf::EnergyConserving, "energy-conserving"}}};
-inline constexpr EnumNames<SceneExposure, 2> kSceneExposures{
-    {{SceneExposure::Manual, "manual"}, {SceneExposure::Auto, "auto"}}};
-inline constexpr EnumNames<SceneAntiAliasing, 4> kSceneAntiAliasing{
-    {{SceneAntiAliasing::Off, "off"},
-     {SceneAntiAliasing::Fxaa, "fxaa"},
-     {SceneAntiAliasing::Taa, "taa"},
-     {SceneAntiAliasing::Gbaa, "gbaa"}}};
-
 inline constexpr EnumNames<QualityLevel, 4> kQualityLevelNames{{{QualityLevel::Low, "low"},
                                                                 {QualityLevel::Medium, "medium"},
                                                                 {QualityLevel::High, "high"},
                                                                 {QualityLevel::Ultra, "ultra"}}};
-
-inline constexpr EnumNames<SceneSsrMode, 3> kSceneSsrModes{
-    {{SceneSsrMode::Off, "off"},
-     {SceneSsrMode::Hiz, "hiz"},
-     {SceneSsrMode::Reference, "reference"}}};
-inline constexpr EnumNames<SceneScatteringMode, 3> kSceneScatteringModes{
-    {{SceneScatteringMode::Off, "off"},
-     {SceneScatteringMode::Epipolar, "epipolar"},
-     {SceneScatteringMode::BruteForce, "brute-force"}}};
-inline constexpr EnumNames<SceneVolumetricsMode, 4> kSceneVolumetricsModes{
-    {{SceneVolumetricsMode::Off, "off"},
-     {SceneVolumetricsMode::Volumes, "volumes"},
-     {SceneVolumetricsMode::Froxels, "froxels"},
-     {SceneVolumetricsMode::Reference, "reference"}}};
-inline constexpr EnumNames<SceneSkyOcclusionMode, 3> kSceneSkyOcclusionModes{
-    {{SceneSkyOcclusionMode::Off, "off"},
-     {SceneSkyOcclusionMode::On, "on"},
-     {SceneSkyOcclusionMode::Reference, "reference"}}};
-inline constexpr EnumNames<SceneAoMode, 3> kSceneAoModes{{{SceneAoMode::Off, "off"},
-                                                          {SceneAoMode::Gtao, "gtao"},
-                                                          {SceneAoMode::Reference, "reference"}}};
 
 template <typename E, std::size_t N>
 std::string_view nameOf(const EnumNames<E, N>& names, E value) {

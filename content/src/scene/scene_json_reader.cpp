@@ -14,6 +14,7 @@
 #include "candela/content/builtin_meshes.h"
 #include "candela/content/component_validation.h"
 #include "candela/content/light_texture.h"
+#include "candela/content/render_setting_table.h"
 #include "candela/content/scene_file.h"
 #include "scene_json_names.h"
 
@@ -230,6 +231,46 @@ public:
             error(q + "/primaryExponent", "an exponent must be above 0");
         if (!(style.secondaryExponent > 0.0f))
             error(q + "/secondaryExponent", "an exponent must be above 0");
+    }
+    // A render setting's value under its row's key ("ssr", or "ambient_occlusion/mode" inside
+    // an object another reading checks): a value name (a switch also as true or false), or a
+    // number in the row's range. Unset when absent; reported and unset when wrong.
+    template <typename T>
+    void renderSetting(const json& root, const RenderSettingRow<T>& row, std::optional<T>& out) {
+        const json* object = &root;
+        std::string p;
+        std::string key(row.sceneKey);
+        if (const std::size_t slash = key.find('/'); slash != std::string::npos) {
+            auto parent = root.find(key.substr(0, slash));
+            p = "/" + key.substr(0, slash);
+            key = key.substr(slash + 1);
+            if (parent == root.end() || !parent->is_object()) return;
+            object = &*parent;
+        }
+        known(*object, p, key.c_str());
+        auto it = object->find(key);
+        if (it == object->end()) return;
+        const std::string pointer = p + "/" + key;
+        std::optional<T> value;
+        if (!row.names.empty()) {
+            if (it->is_string()) {
+                value = parseRenderSetting(row, it->get<std::string>());
+            } else if constexpr (std::is_same_v<T, bool>) {
+                if (it->is_boolean()) value = it->get<bool>();
+            }
+        } else if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+            // The range first, so the conversion below is defined (NaN fails it too).
+            const double number = it->is_number() ? it->get<double>() : std::nan("");
+            if (number >= double(row.least) && number <= double(row.most)) {
+                const T candidate = static_cast<T>(number);
+                const bool exact = std::is_floating_point_v<T> || double(candidate) == number;
+                if (exact && renderSettingAllows(row, candidate)) value = candidate;
+            }
+        }
+        if (!value) {
+            return error(pointer, "expected " + renderSettingExpects(row) + ", got " + it->dump());
+        }
+        out = value;
     }
     bool object(const json& parent, const std::string& p, const char* key, const json*& out) {
         known(parent, p, key);
@@ -825,69 +866,15 @@ std::optional<SceneDocument> parseSceneJson(std::span<const std::byte> bytes,
         typename std::remove_reference_t<decltype(field)>::value_type value{};
         if (reader.clean([&] { reader.enumeration(root, "", key, names, value); })) field = value;
     };
-    // A misspelt value is reported and the default kept: the scene still loads.
-    optionalEnumeration("brdf", kSceneBrdfs, scene.brdf);
-    if (reader.has(root, "", "bloom")) {
-        float bloom = 0.0f;
-        if (reader.clean([&] { reader.number(root, "", "bloom", bloom); })) {
-            if (bloom >= 0.0f && bloom <= 1.0f) {
-                scene.bloom = bloom;
-            } else {
-                reader.clean([&] { reader.error("/bloom", "expected a fraction from 0 to 1"); });
-            }
-        }
-    }
-    optionalEnumeration("exposure", kSceneExposures, scene.exposure);
-    if (reader.has(root, "", "exposure_compensation")) {
-        float compensation = 0.0f;
-        // The range --exposure-compensation takes (issue 44: +-3e38 was accepted).
-        if (reader.clean([&] {
-                reader.number(root, "", "exposure_compensation", compensation);
-                if (!(std::abs(compensation) <= 16.0f)) {
-                    reader.error("/exposure_compensation", "expected EV from -16 to 16");
-                }
-            })) {
-            scene.exposureCompensation = compensation;
-        }
-    }
-    optionalEnumeration("aa", kSceneAntiAliasing, scene.aa);
-    if (reader.has(root, "", "msaa")) {
-        uint32_t msaa = 1;
-        if (reader.clean([&] { reader.integer(root, "", "msaa", msaa, 1, 8); })) {
-            if (msaa == 1 || msaa == 2 || msaa == 4 || msaa == 8) {
-                scene.msaa = msaa;
-            } else {
-                reader.error("/msaa", "must be 1, 2, 4 or 8 samples per pixel");
-            }
-        }
-    }
-    optionalEnumeration("ssr", kSceneSsrModes, scene.ssr);
+    // Every render setting under its key (render_setting_table.h). A bad value is reported and
+    // the setting left unset (the preset's): the scene still loads.
+    forEachRenderSetting(
+        [&](const auto& row) { reader.renderSetting(root, row, scene.settings.*row.choice); });
     optionalEnumeration("quality", kQualityLevelNames, scene.quality);
-    optionalEnumeration("scattering", kSceneScatteringModes, scene.scattering);
-    optionalEnumeration("volumetrics", kSceneVolumetricsModes, scene.volumetrics);
-    reader.known(root, "", "volume_proxies");
-    if (auto proxies = root.find("volume_proxies"); proxies != root.end()) {
-        // As the command line spells it ("off", "on") or as JSON does (false, true).
-        if (proxies->is_boolean()) {
-            scene.volumeProxies = proxies->get<bool>();
-        } else if (proxies->is_string() && (*proxies == "on" || *proxies == "off")) {
-            scene.volumeProxies = *proxies == "on";
-        } else {
-            reader.error("/volume_proxies",
-                         "expected true, false, \"on\" or \"off\", got " + proxies->dump());
-        }
-    }
-    optionalEnumeration("sky_occlusion", kSceneSkyOcclusionModes, scene.skyOcclusion);
     const json* ao = nullptr;
     if (reader.object(root, "", "ambient_occlusion", ao)) {
-        // Like "brdf": a bad value is reported and its default kept; the scene still loads.
+        // Like the settings: a bad value is reported and its default kept.
         SceneAmbientOcclusion settings;
-        SceneAoMode mode = SceneAoMode::Gtao;
-        if (reader.has(*ao, "/ambient_occlusion", "mode") && reader.clean([&] {
-                reader.enumeration(*ao, "/ambient_occlusion", "mode", kSceneAoModes, mode);
-            })) {
-            settings.mode = mode;
-        }
         float radius = settings.radius;
         if (reader.clean([&] { reader.number(*ao, "/ambient_occlusion", "radius", radius); })) {
             if (radius > 0.0f) {

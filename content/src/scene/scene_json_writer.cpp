@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "candela/content/light_texture.h"
+#include "candela/content/render_setting_table.h"
 #include "candela/content/scene_file.h"
 #include "scene_json_names.h"
 
@@ -301,36 +302,45 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
         }
         document["materialLayers"] = std::move(library);
     }
-    if (scene.brdf) document["brdf"] = std::string(nameOf(kSceneBrdfs, *scene.brdf));
-    if (scene.aa) document["aa"] = std::string(nameOf(kSceneAntiAliasing, *scene.aa));
-    if (scene.msaa) document["msaa"] = *scene.msaa;
-    if (scene.bloom) document["bloom"] = *scene.bloom;
-    if (scene.ssr) document["ssr"] = std::string(nameOf(kSceneSsrModes, *scene.ssr));
     if (scene.quality)
         document["quality"] = std::string(nameOf(kQualityLevelNames, *scene.quality));
-    if (scene.scattering)
-        document["scattering"] = std::string(nameOf(kSceneScatteringModes, *scene.scattering));
-    if (scene.volumetrics)
-        document["volumetrics"] = std::string(nameOf(kSceneVolumetricsModes, *scene.volumetrics));
-    if (scene.volumeProxies) document["volume_proxies"] = *scene.volumeProxies ? "on" : "off";
-    if (scene.skyOcclusion) {
-        document["sky_occlusion"] =
-            std::string(nameOf(kSceneSkyOcclusionModes, *scene.skyOcclusion));
-    }
-    if (scene.exposure)
-        document["exposure"] = std::string(nameOf(kSceneExposures, *scene.exposure));
-    if (scene.exposureCompensation) document["exposure_compensation"] = *scene.exposureCompensation;
     if (scene.ambientOcclusion) {
         const SceneAmbientOcclusion& ao = *scene.ambientOcclusion;
-        json settings = {
+        document["ambient_occlusion"] = {
             {"radius", writer.number(ao.radius, "/ambient_occlusion/radius")},
             {"intensity", writer.number(ao.intensity, "/ambient_occlusion/intensity")}};
-        if (ao.mode) settings["mode"] = std::string(nameOf(kSceneAoModes, *ao.mode));
-        document["ambient_occlusion"] = std::move(settings);
-        if (!writer.error.empty()) {
-            error = writer.error;
-            return {};
+    }
+    // Every chosen render setting under its row's key (render_setting_table.h): a name, or a
+    // number the reader reads back bit for bit.
+    forEachRenderSetting([&](const auto& row) {
+        const auto& choice = scene.settings.*row.choice;
+        if (!choice) return;
+        const std::string pointer = "/" + std::string(row.sceneKey);
+        json value;
+        if (!row.names.empty()) {
+            value = renderSettingText(row, *choice);
+        } else if constexpr (std::is_floating_point_v<std::remove_cvref_t<decltype(*choice)>>) {
+            value = writer.number(*choice, pointer);
+        } else {
+            value = *choice;
         }
+        if (!renderSettingAllows(row, *choice)) {
+            if (writer.error.empty()) {
+                writer.error = pointer + ": " + renderSettingText(row, *choice) + " is not " +
+                               renderSettingExpects(row);
+            }
+            return;
+        }
+        const std::string key(row.sceneKey);
+        if (const std::size_t slash = key.find('/'); slash != std::string::npos) {
+            document[key.substr(0, slash)][key.substr(slash + 1)] = std::move(value);
+        } else {
+            document[key] = std::move(value);
+        }
+    });
+    if (!writer.error.empty()) {
+        error = writer.error;
+        return {};
     }
     try {
         return document.dump(2) + "\n";

@@ -10,6 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <string>
 
+#include "app/render_settings_panel.h"
 #include "candela/content/components/animation.h"
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
@@ -480,28 +481,19 @@ void drawSceneQuality(EditorScene& scene) {
     ImGui::TextDisabled("Applies when the scene is next opened");
 }
 
-// Ambient occlusion of the sky's light (the scene file's "ambient_occlusion").
+// Ambient occlusion of the sky's light (the scene file's "ambient_occlusion": its mode is a
+// render setting, the "ambient_occlusion" row of the render settings).
 void drawSceneAmbientOcclusion(EditorScene& scene) {
     if (!ImGui::CollapsingHeader("Ambient occlusion", ImGuiTreeNodeFlags_DefaultOpen)) return;
     content::SceneAmbientOcclusion ao =
         scene.sceneAmbientOcclusion().value_or(content::SceneAmbientOcclusion{});
-    bool changed = false;
-    static constexpr const char* kModes[] = {"default", "off", "gtao", "reference"};
-    int mode = ao.mode ? int(*ao.mode) + 1 : 0;
-    if (ImGui::Combo("Mode", &mode, kModes, 4)) {
-        ao.mode = mode == 0 ? std::nullopt
-                            : std::optional<content::SceneAoMode>(content::SceneAoMode(mode - 1));
-        changed = true;
-    }
-    record("AO mode");
-    changed |= ImGui::DragFloat("Radius (m)", &ao.radius, 0.01f, 0.05f, 10.0f);
+    bool changed = ImGui::DragFloat("Radius (m)", &ao.radius, 0.01f, 0.05f, 10.0f);
     record("AO radius");
     changed |= ImGui::SliderFloat("Intensity", &ao.intensity, 0.0f, 1.0f);
     record("AO intensity");
     ao.radius = std::clamp(ao.radius, 0.05f, 10.0f);  // the same rules as the scene loader
     ao.intensity = std::clamp(ao.intensity, 0.0f, 1.0f);
     if (changed) scene.setSceneAmbientOcclusion(ao, true);
-    ImGui::TextDisabled("Mode applies when the scene is next opened");
 }
 
 }  // namespace
@@ -510,6 +502,7 @@ void drawSceneAmbientOcclusion(EditorScene& scene) {
 void drawSceneSettings(EditorScene& scene) {
     drawSceneQuality(scene);
     drawSceneAmbientOcclusion(scene);
+    drawSceneRenderSettings(scene, recording);
 }
 
 void drawInspectorPanel(EditorScene& scene, InspectorState& state) {

@@ -48,20 +48,8 @@ std::optional<OpenedScene> openScene(const std::filesystem::path& path, std::str
     }
     opened.world->updateTransforms();
     opened.scene = std::make_unique<EditorScene>(opened.world->registry, path);
-    opened.scene->setSceneBrdf(opened.world->sceneBrdf());
-    content::SceneDocument frameSettings;
-    frameSettings.aa = opened.world->sceneAntiAliasing();
-    frameSettings.msaa = opened.world->sceneMsaa();
-    frameSettings.bloom = opened.world->sceneBloom();
-    frameSettings.exposure = opened.world->sceneExposure();
-    frameSettings.exposureCompensation = opened.world->sceneExposureCompensation();
-    frameSettings.ssr = opened.world->sceneSsr();
-    frameSettings.scattering = opened.world->sceneScattering();
-    frameSettings.volumetrics = opened.world->sceneVolumetrics();
-    frameSettings.volumeProxies = opened.world->sceneVolumeProxies();
-    frameSettings.skyOcclusion = opened.world->sceneSkyOcclusion();
-    frameSettings.quality = opened.world->sceneQuality();
-    opened.scene->setSceneFrameSettings(frameSettings);
+    opened.scene->setSceneRenderSettings(opened.world->sceneSettings());
+    opened.scene->setSceneQuality(opened.world->sceneQuality());
     opened.scene->setSceneAmbientOcclusion(opened.world->sceneAmbientOcclusion());
     opened.scene->setSceneMaterialLayers(opened.world->sceneMaterialLayers());
     return opened;

@@ -27,28 +27,21 @@ public:
 
     ecs::Registry& registry() { return registry_; }
     const std::filesystem::path& sourcePath() const { return sourcePath_; }
-    // The opened file's scene-wide "brdf" (unset: none), written back by save().
-    void setSceneBrdf(std::optional<content::SceneBrdf> brdf) { sceneSettings_.brdf = brdf; }
-    // The opened file's scene-wide "aa", "msaa", "bloom", "exposure", "exposure_compensation"
-    // "ssr", "scattering", "volumetrics", "volume_proxies", "sky_occlusion" and "quality" (the
-    // other fields of `settings` are ignored), written back by save().
-    void setSceneFrameSettings(const content::SceneDocument& settings) {
-        sceneSettings_.aa = settings.aa;
-        sceneSettings_.msaa = settings.msaa;
-        sceneSettings_.bloom = settings.bloom;
-        sceneSettings_.exposure = settings.exposure;
-        sceneSettings_.exposureCompensation = settings.exposureCompensation;
-        sceneSettings_.ssr = settings.ssr;
-        sceneSettings_.scattering = settings.scattering;
-        sceneSettings_.volumetrics = settings.volumetrics;
-        sceneSettings_.volumeProxies = settings.volumeProxies;
-        sceneSettings_.skyOcclusion = settings.skyOcclusion;
-        sceneSettings_.quality = settings.quality;
+    // The render settings the scene file chooses ("aa", "ssr", "bloom"...: a key per row of
+    // content/render_setting_table.h; unset: the preset's), edited in the inspector when
+    // nothing is selected and written back by save(). They apply when the scene is next opened
+    // (a setting chooses the renderer's passes, targets and shader variants).
+    const content::RenderSettingChoices& sceneRenderSettings() const {
+        return sceneSettings_.settings;
     }
-    // The scene-wide "ambient_occlusion" (unset: none), edited in the inspector when nothing is
-    // selected, sent to the renderer every frame and written back by save(). Radius and
-    // intensity show at once; a mode change applies when the scene is next opened (the mode
-    // chooses the renderer's passes and shader variant).
+    void setSceneRenderSettings(const content::RenderSettingChoices& settings,
+                                bool edited = false) {
+        sceneSettings_.settings = settings;
+        if (edited) settingsEdited_ = true;
+    }
+    // The scene-wide "ambient_occlusion" radius and intensity (unset: none), edited in the
+    // inspector when nothing is selected, sent to the renderer every frame (they show at once)
+    // and written back by save().
     const std::optional<content::SceneAmbientOcclusion>& sceneAmbientOcclusion() const {
         return sceneSettings_.ambientOcclusion;
     }

@@ -47,17 +47,7 @@ std::string saveEditedScene(ecs::Registry& registry, const std::filesystem::path
                             const content::SceneDocument& settings,
                             content::AtomicWriteOptions options) {
     content::SceneDocument document = documentForSaving(registry, source, target);
-    document.brdf = settings.brdf;
-    document.aa = settings.aa;
-    document.msaa = settings.msaa;
-    document.bloom = settings.bloom;
-    document.exposure = settings.exposure;
-    document.exposureCompensation = settings.exposureCompensation;
-    document.ssr = settings.ssr;
-    document.scattering = settings.scattering;
-    document.volumetrics = settings.volumetrics;
-    document.volumeProxies = settings.volumeProxies;
-    document.skyOcclusion = settings.skyOcclusion;
+    document.settings = settings.settings;
     document.quality = settings.quality;
     document.ambientOcclusion = settings.ambientOcclusion;
     document.materialLayers = settings.materialLayers;

@@ -10,6 +10,7 @@
 
 #include "../test_scene.h"
 #include "candela/content/procedural_mesh.h"
+#include "candela/content/render_setting_table.h"
 #include "candela/render/environment.h"
 #include "ibl/environment_brdf_lut.h"
 #include "median.h"
@@ -106,7 +107,8 @@ void addBrdfEnergyRows(ReportContext& context) {
             options.ibl = mode;
             options.brdf = brdf;
             options.referenceSamples = quick ? 64 : 1024;
-            std::vector<std::string> row = {iblModeName(mode), brdfModelName(brdf)};
+            std::vector<std::string> row = {iblModeName(mode),
+                                            candela::content::renderSettingName(brdf).c_str()};
             for (size_t i = 0; i < std::size(roughnesses); ++i) {
                 const double mean = furnaceMean(gpu, sky, roughnesses[i], options);
                 row.push_back(formatNumber(100.0 * (1.0 - mean), 3) + " %");

@@ -30,14 +30,13 @@ struct Rendered {
     uint64_t rays = 0, steps = 0;
 };
 
+// `options` gives the sampling (scatteringSlices, scatteringSamples, scatteringSettings).
 Rendered renderShafts(GpuContext& gpu, TestScene& scene, ScatteringMode mode,
-                      const ScatteringSettings& settings, uint32_t repetitions) {
+                      RendererOptions options, uint32_t repetitions) {
     SceneResources resources(gpu);
     FrameInputs inputs = scene.prepare(resources);
     inputs.scene.atmosphere = content::Atmosphere{};
-    RendererOptions options;
     options.scattering = mode;
-    options.scatteringSettings = settings;
     options.scatteringSettings.inscatteringOnly = true;
     Rendered r;
     std::vector<double> ms;
@@ -93,8 +92,8 @@ void addScatteringRows(ReportContext& context) {
     const bool quick = context.budget.quick;
     GpuContext& gpu = context.harness.context();
     // Quick (the smoke test): the unit test's size and slices, a fraction of a minute.
-    ScatteringSettings settings;
-    if (quick) settings.slices = settings.samplesPerSlice = 128;
+    RendererOptions settings;
+    if (quick) settings.scatteringSlices = settings.scatteringSamples = 128;
     const std::vector<glm::uvec2> sizes = quick ? std::vector<glm::uvec2>{{160, 96}}
                                                 : std::vector<glm::uvec2>{{640, 360}, {1280, 720}};
     for (const glm::uvec2& size : sizes) {
@@ -112,8 +111,9 @@ void addScatteringRows(ReportContext& context) {
                       "mean |L - L_ref| / mean L_ref of the in-scattered radiance (colonnade, "
                       "sun 14 deg up behind the columns; %u slices x %u samples, initial step "
                       "%u, threshold %s)",
-                      settings.slices, settings.samplesPerSlice, settings.initialStep,
-                      formatNumber(settings.refinementThreshold).c_str());
+                      settings.scatteringSlices, settings.scatteringSamples,
+                      settings.scatteringSettings.initialStep,
+                      formatNumber(settings.scatteringSettings.refinementThreshold).c_str());
         std::snprintf(worst, sizeof(worst),
                       "99th percentile %s of the mean; worst pixel %s of the mean at (%u, %u)",
                       formatNumber(e.p99).c_str(), formatNumber(e.worst).c_str(), e.worstX,
@@ -122,14 +122,15 @@ void addScatteringRows(ReportContext& context) {
                       (unsigned long long)epipolar.rays, (unsigned long long)reference.rays,
                       ratio(double(epipolar.rays), double(reference.rays)).c_str(),
                       formatCost(epipolar.ms, reference.ms, "ms").c_str());
-        context.report.rows.push_back({name,
-                                       "brute force: every pixel, " +
-                                           std::to_string(settings.bruteForceSteps) +
-                                           " steps through every cascade",
-                                       metric, e.mean, "rel", worst, cost});
+        context.report.rows.push_back(
+            {name,
+             "brute force: every pixel, " +
+                 std::to_string(settings.scatteringSettings.bruteForceSteps) +
+                 " steps through every cascade",
+             metric, e.mean, "rel", worst, cost});
         // The tree's own gain: the same samples, the march leaf by leaf.
-        ScatteringSettings flat = settings;
-        flat.minMaxTree = false;
+        RendererOptions flat = settings;
+        flat.scatteringSettings.minMaxTree = false;
         const Rendered leaves =
             renderShafts(gpu, scene, ScatteringMode::Epipolar, flat, repetitions);
         const Error same = compare(epipolar.frame, leaves.frame);

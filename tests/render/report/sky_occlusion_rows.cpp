@@ -6,6 +6,7 @@
 #include <string>
 
 #include "../sky_occlusion_scene.h"
+#include "candela/content/render_setting_table.h"
 #include "report_context.h"
 
 namespace candela::report {
@@ -27,7 +28,8 @@ void addSkyOcclusionRows(ReportContext& context) {
         const SkyRoomError e = room.compareInside(frame, 2, &reference);
         const SkyRoomError truth = room.compareInside(frame, 2);
         char name[96], metric[240], where[160], cost[160];
-        std::snprintf(name, sizeof(name), "Sky occlusion %s%s", skyOcclusionModeName(mode),
+        std::snprintf(name, sizeof(name), "Sky occlusion %s%s",
+                      candela::content::renderSettingName(mode).c_str(),
                       mode == SkyOcclusionMode::On ? " (32 directions, 256-texel maps)" : "");
         std::snprintf(metric, sizeof(metric),
                       "mean |floor sky visibility - reference| (%u px of a closed room's floor, "

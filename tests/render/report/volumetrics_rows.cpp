@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "../test_scene.h"
+#include "candela/content/render_setting_table.h"
 #include "median.h"
 #include "passes/volumetrics/light_bins.h"
 #include "passes/volumetrics/volumetrics_pass.h"
@@ -74,7 +75,7 @@ Rendered renderMode(GpuContext& gpu, TestScene& scene, const content::Fog& fog,
     RendererOptions options;
     options.volumetrics = mode;
     options.volumetricsSettings.referenceSteps = 128;
-    options.volumetricsSettings.volumeProxies = proxies;
+    options.volumeProxies = proxies;
     std::vector<double> ms;
     std::vector<std::pair<std::string, std::vector<double>>> passMs;
     Rendered r;
@@ -186,8 +187,8 @@ void addVolumetricsRows(ReportContext& context) {
             std::snprintf(range, sizeof(range), "lights' range %s m",
                           formatNumber(lightRange(count)).c_str());
             std::snprintf(name, sizeof(name), "Volumetrics: %s%s, %u point light%s",
-                          volumetricsModeName(mode), proxies ? " (proxy meshes)" : "", count,
-                          count == 1 ? "" : "s");
+                          candela::content::renderSettingName(mode).c_str(),
+                          proxies ? " (proxy meshes)" : "", count, count == 1 ? "" : "s");
             if (mode == VolumetricsMode::Volumes) {
                 std::snprintf(metric, sizeof(metric),
                               "mean |L - L_ref| / mean L_ref of the in-scattered radiance "

@@ -33,6 +33,7 @@
 #include "candela/content/material.h"
 #include "candela/content/model.h"
 #include "candela/content/quality.h"
+#include "candela/content/render_settings.h"
 
 namespace candela::content {
 
@@ -108,71 +109,26 @@ struct SceneEntity {
     std::string gameDataJson;
 };
 
-// The specular BRDF a scene asks for (top-level "brdf": "ue4" or "energy-conserving"); the
-// command line's --brdf overrides it. Mirrors render::BrdfModel (content does not see render).
-enum class SceneBrdf { Ue4, EnergyConserving };
-
-// The antialiasing a scene asks for (top-level "aa": "off", "fxaa", "taa" or "gbaa"); the
-// command line's --aa overrides it. Mirrors render::AntiAliasing.
-enum class SceneAntiAliasing { Off, Fxaa, Taa, Gbaa };
-
-// Where the exposure comes from (top-level "exposure": "manual", the camera's EV100, or "auto",
-// metered and adapted); --exposure overrides it. Mirrors render::ExposureMode.
-enum class SceneExposure { Manual, Auto };
-
-// Occlusion of the sky's light (top-level "ambient_occlusion": {"mode", "radius",
-// "intensity"}); the command line's --ao overrides the mode. Mirrors render::AoMode.
-enum class SceneAoMode { Off, Gtao, Reference };
-
-// Screen-space reflections (top-level "ssr": "off", "hiz" or "reference"); the command line's
-// --ssr overrides it. Mirrors render::SsrMode.
-enum class SceneSsrMode { Off, Hiz, Reference };
-// Sky occlusion (top-level "sky_occlusion": "off", "on" or "reference"); the command line's
-// --sky-occlusion overrides it. Mirrors render::SkyOcclusionMode.
-enum class SceneSkyOcclusionMode { Off, On, Reference };
-
-// Light shafts in the air of an atmosphere (top-level "scattering": "off", "epipolar" or
-// "brute-force"); the command line's --scattering overrides it. Mirrors render::ScatteringMode.
-enum class SceneScatteringMode { Off, Epipolar, BruteForce };
-
-// Light scattered by a medium (top-level "volumetrics": "off", "volumes", "froxels" or
-// "reference"); the command line's --volumetrics overrides it. Mirrors
-// render::VolumetricsMode.
-enum class SceneVolumetricsMode { Off, Volumes, Froxels, Reference };
-
+// The scene file's "ambient_occlusion": {"mode", "radius", "intensity"}. The mode is a render
+// setting (SceneDocument::settings.ao, the command line's --ao overrides it); radius and
+// intensity are the scene's own, sent to the renderer every frame.
 struct SceneAmbientOcclusion {
-    std::optional<SceneAoMode> mode;  // unset: the engine's default
-    float radius = 1.5f;              // metres, > 0
-    float intensity = 1.0f;           // 0..1
+    float radius = 1.5f;     // metres, > 0
+    float intensity = 1.0f;  // 0..1
 
     bool operator==(const SceneAmbientOcclusion&) const = default;
 };
 
 struct SceneDocument {
     std::vector<SceneEntity> entities;
-    std::optional<SceneBrdf> brdf;        // unset: the engine's default (energy-conserving)
-    std::optional<SceneAntiAliasing> aa;  // unset: the engine's default (taa)
-    // Top-level "msaa": samples per pixel of the forward (blended) pass, 1, 2, 4 or 8; it
-    // composes with "aa". The command line's --msaa overrides it. Unset: 1 (off).
-    std::optional<uint32_t> msaa;
-    // Top-level "bloom": the fraction of radiance the lens scatters into glare, 0 to 1; 0
-    // turns bloom off. Unset: the engine's default.
-    std::optional<float> bloom;
-    std::optional<SceneExposure> exposure;      // unset: manual
-    std::optional<float> exposureCompensation;  // "exposure_compensation", EV (auto only)
-    std::optional<SceneAmbientOcclusion> ambientOcclusion;  // unset: defaults
-    std::optional<SceneSsrMode> ssr;                        // unset: the engine's default (hiz)
+    // The render settings the scene chooses, each under its key (render_setting_table.h:
+    // "aa", "ssr", "bloom", ...); the command line's flags override them, and an unset one
+    // takes the quality preset's value.
+    RenderSettingChoices settings;
     // Top-level "quality": "low", "medium", "high" or "ultra" (quality.h), every technique's
     // preset; the command line's --quality overrides it. Unset: the device's level.
     std::optional<QualityLevel> quality;
-    std::optional<SceneScatteringMode> scattering;    // unset: the engine's default (epipolar)
-    std::optional<SceneVolumetricsMode> volumetrics;  // unset: the engine's default (volumes)
-    // Top-level "volume_proxies": true or "on", false or "off": how the per-light volumes find
-    // the lights a pixel meets (rasterised proxy meshes, or tile lists). The command line's
-    // --volume-proxies overrides it. Unset: the engine's default (off, the tile lists).
-    std::optional<bool> volumeProxies;
-    // Unset: the engine's default (on with an atmosphere, render/README.md "Sky occlusion").
-    std::optional<SceneSkyOcclusionMode> skyOcclusion;
+    std::optional<SceneAmbientOcclusion> ambientOcclusion;  // radius and intensity; unset: defaults
     // Top-level "materialLayers": the shared layer library, by unique name. A material's
     // "layers" (at most kMaxMaterialLayers) name library layers; each copy starts as the
     // library's and may change any of its parameters, and is written back in full.

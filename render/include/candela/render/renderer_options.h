@@ -5,9 +5,15 @@
 #include <utility>
 #include <vector>
 
+#include "candela/content/render_settings.h"
 #include "candela/render/auto_exposure.h"
 
 namespace candela::render {
+
+// The user-facing settings' enums are content's (render_settings.h), one type shared by the
+// command line, scene files and the renderer.
+using namespace content::setting_enums;
+using ExposureMode = content::FrameExposure;
 
 enum class LightCulling {
     Clustered,   // per-cluster light lists (the default)
@@ -29,53 +35,6 @@ enum class IblMode {
 };
 const char* iblModeName(IblMode mode);  // "split_sum", "mobile", "reference"
 
-// The specular BRDF (`--brdf`, the scene file's "brdf"; render/README.md "BRDF").
-enum class BrdfModel {
-    // Karis 2013, "Real Shading in Unreal Engine 4", exactly: GGX, Schlick-Smith visibility
-    // (k = alpha / 2), single scattering.
-    Ue4,
-    // GGX with height-correlated Smith visibility and multiple-scattering energy compensation
-    // (rough metals keep their energy): the default.
-    EnergyConserving,
-};
-const char* brdfModelName(BrdfModel model);  // "ue4", "energy-conserving"
-
-// Antialiasing (`--aa`, the scene file's "aa"; render/README.md "Antialiasing").
-enum class AntiAliasing {
-    Off,   // one sample per pixel
-    Fxaa,  // post-process, after tonemapping: no history, no jitter
-    Taa,   // temporal: jittered projection, history reprojected with the motion vectors
-    // Geometry buffer AA (Persson 2011): the G-buffer pass also writes each pixel's offset to
-    // the nearest triangle edge, a post-process blends across it by the covered fraction; no
-    // history, no jitter.
-    Gbaa,
-};
-const char* antiAliasingName(AntiAliasing aa);  // "off", "fxaa", "taa", "gbaa"
-
-// How sphere and tube lights (and the area shapes of issue 15) are integrated (`--area-lights`;
-// render/README.md "Area lights by linearly transformed cosines").
-//   Representative: Karis 2013's representative point (sphere, tube) and Drobot's (GPU Pro 5) most
-//                   important point: one direction per light, cheap, wrong for glossy surfaces
-//                   near large lights (docs/speed-vs-error.md).
-//   Ltc:            linearly transformed cosines (Heitz et al. 2016, Heitz and Hill 2017).
-enum class AreaLightMode : uint8_t { Representative, Ltc };
-const char* areaLightModeName(AreaLightMode mode);  // "representative", "ltc"
-
-// Where a frame's exposure comes from (`--exposure`, the scene file's "exposure").
-enum class ExposureMode {
-    Manual,  // the camera's EV100 (aperture, shutter, ISO): the default, and the goldens'
-    Auto,    // metered from the frame's luminance histogram and adapted over time
-};
-
-// Occlusion of the sky's light (`--ao`, the scene file's "ambient_occlusion"; render/README.md
-// "Ambient occlusion"). Only with image-based lighting: analytic lights have their own shadows.
-enum class AoMode {
-    Off,        // no pass in the graph, no AO code in the lighting variant
-    Gtao,       // ground-truth-based AO (Jimenez et al. 2016) with bent normals and a denoise
-    Reference,  // many rays per pixel marched against the depth buffer: for measurement only
-};
-const char* aoModeName(AoMode mode);  // "off", "gtao", "reference"
-
 // GTAO's temporal accumulation (render/README.md "Ambient occlusion"): last frame's result
 // reprojected with the motion vectors and blended with this frame's, whose slice directions
 // and step offsets rotate every frame, so a still view converges to many more slices.
@@ -91,33 +50,10 @@ enum class AoSpecular {
     HorizonSlice,    // the horizons of one more slice, the one that holds the reflection vector
 };
 
-// What the AO passes do. radius and intensity come from the scene (FrameScene) each frame.
-// Volumetric lighting in a participating medium (render/README.md "Volumetric lighting"; only
-// in frames whose scene has a FogMedium).
-enum class VolumetricsMode {
-    Off,        // no medium is drawn even if the scene has one
-    Volumes,    // Vos, GPU Pro 5, "Volumetric Light Effects in Killzone: Shadow Fall": each light's
-                // volume marched at half resolution
-    Froxels,    // a view-aligned grid lit from the cluster lists, integrated front to back
-    Reference,  // every light, many steps per pixel at full resolution: for measurement only
-};
-const char* volumetricsModeName(VolumetricsMode mode);  // "off", "volumes", "froxels", ...
-
-// Light shafts: the sun's light scattered by the atmosphere's air between the camera and the
-// surfaces, shadowed by the sun's cascades (render/README.md "Light shafts"; issue 16, Yusov, GPU
-// Pro 5; only in frames whose scene has an atmosphere).
-enum class ScatteringMode {
-    Off,
-    Epipolar,    // Yusov 2013: epipolar samples, 1D min/max trees per slice, unwarped to pixels
-    BruteForce,  // every pixel marched in equal steps through every cascade: the reference
-};
-const char* scatteringModeName(ScatteringMode mode);  // "off", "epipolar", "brute-force"
-
 // Epipolar sampling's parameters (render/README.md "Light shafts" gives why each default).
 struct ScatteringSettings {
-    uint32_t slices = 512;           // epipolar lines from the sun to the screen border
-    uint32_t samplesPerSlice = 256;  // samples along each line
-    uint32_t initialStep = 16;       // every N-th sample is ray-marched first
+    // Slices and samples per slice: RenderSettings::scatteringSlices, scatteringSamples.
+    uint32_t initialStep = 16;  // every N-th sample is ray-marched first
     // A sample between two initial ones is marched itself when their in-scattering differs by
     // more than this fraction of the larger, or two neighbours' view distances do.
     float refinementThreshold = 0.2f;
@@ -149,33 +85,15 @@ enum class WireMode { Coverage, Naive };
 // are its width in pixels).
 enum class HairShading { Lit, Coverage };
 
-// Hair self-shadowing (Martin et al., GPU Pro 5, TressFX; render/README.md "Hair"): off; from a
-// hair depth map per shadow view, the fibres in front estimated from the depth range behind the
-// first hair; or the reference that counts the fibres between each shaded fragment and the light
-// exactly (every segment tested: small scenes only, lavapipe's loop limit).
-enum class HairSelfShadow { Off, DepthMap, Reference };
-
 struct VolumetricsSettings {
     // Froxel grid at 1280x720 (scaled with the image, at least 8x8), exponential depth slices
     // from the near plane to `froxelFar` metres.
     uint32_t froxelsX = 160, froxelsY = 90, froxelSlices = 64;
     float froxelFar = 100.0f;
-    // The most plain lights (unshadowed points, spots, spheres, tubes) each 4x4x4 cluster of
-    // froxels lights the medium with, the strongest at the cluster kept (light_bins.h
-    // capPlainLights); shadowed, area and directional lights are never dropped. 0: every light
-    // that reaches it (the reference; --froxel-light-cap).
-    uint32_t froxelLightCap = 0;
     uint32_t referenceSteps = 256;  // per pixel, uniformly over the ray up to referenceFar
     // Per-light volumes: steps per light along each half-resolution pixel's segment inside
     // the light's volume (the 4x4 dither and the blur make 16 sets of offsets of them).
     uint32_t volumeSteps = 16;
-    // How `volumes` finds the lights a pixel's ray meets: true, each light's proxy mesh (a
-    // sphere, a cone) rasterised into the half-resolution target with additive blending, the
-    // fragment marching its light (Vos, GPU Pro 5); false, a compute march over CPU light lists
-    // per 8x8 tile (light_bins.h). The same sums (to 1e-7); the lists cost 1.5-3.5x less on
-    // lavapipe at 1 to 4,096 lights (render/README.md "Volumetric lighting"), so they are the
-    // default.
-    bool volumeProxies = false;
     float referenceFar = 100.0f;  // metres; past it the medium is not drawn (both modes)
 };
 
@@ -194,27 +112,6 @@ struct AmbientOcclusionSettings {
     AoSpecular specular = AoSpecular::FromVisibility;
     uint32_t temporalFrames = 16;  // most frames the accumulation averages (1 / n lowest blend)
 };
-
-// Screen-space reflections (`--ssr`, the scene file's "ssr"; render/README.md "Screen-space
-// reflections"). They replace the environment's split-sum specular where a ray finds the
-// reflected surface on screen, in proportion to its confidence.
-enum class SsrMode {
-    Off,  // no pass in the graph
-    Hiz,  // Hi-Z tracing against a nearest-depth pyramid (Uludag, GPU Pro 5, "Hi-Z Screen-Space
-          // Cone-Traced Reflections")
-    Reference,  // a linear march in small steps at full resolution: for measurement only
-};
-const char* ssrModeName(SsrMode mode);  // "off", "hiz", "reference"
-
-// Sky occlusion (`--sky-occlusion`, the scene file's "sky_occlusion"; render/README.md "Sky
-// occlusion"): how much of the sky each surface sees past the scene's static geometry, for
-// the sky's diffuse and specular light. Screen-space AO adds the small-scale corners on top.
-enum class SkyOcclusionMode {
-    Off,        // the sky reaches every surface (images as before sky occlusion)
-    On,         // 32 depth maps over the sky hemisphere, rendered when the casters change
-    Reference,  // 256 directions: for measurement only
-};
-const char* skyOcclusionModeName(SkyOcclusionMode mode);  // "off", "on", "reference"
 
 struct SsrSettings {
     // Surfaces at least this rough get no ray (and the confidence fades to 0 from 3/4 of it);
@@ -251,7 +148,12 @@ struct AtmosphereSettings {
     float iblUpdateDegrees = 0.1f;
 };
 
-struct RendererOptions {
+// The user-facing settings (content::RenderSettings: antialiasing, AO, SSR, media, render
+// scale...; each a row of content/render_setting_table.h) and below them the renderer's own
+// parameters. RenderSettings' defaults render a plain image (no post effects, no medium), so
+// a renderer made by a test draws only what it asks for; an application's come from the
+// quality presets.
+struct RendererOptions : content::RenderSettings {
     // Count the scene radiance's non-finite pixels each frame (RendererStats::nonFinitePixels;
     // one pass over the image before tonemapping). Headless runs and --stats turn it on.
     bool checkNonFinite = false;
@@ -268,41 +170,17 @@ struct RendererOptions {
     // --stats turns it on).
     bool countLightPairs = false;
     IblMode ibl = IblMode::SplitSum;
-    BrdfModel brdf = BrdfModel::EnergyConserving;
-    AreaLightMode areaLights = AreaLightMode::Ltc;
-    uint32_t referenceSamples = 2048;  // per pixel, for each of specular and diffuse
-    // Off here so a renderer made by a test renders one plain sample per pixel; the
-    // application's default is ApplicationOptions' (TAA).
-    AntiAliasing aa = AntiAliasing::Off;
-    // Samples per pixel of the forward (blended) pass (`--msaa`, the scene file's "msaa"): 1
-    // (off), 2, 4 or 8 where the device supports it; composes with `aa`. Frames with blended
-    // draws get multisampled HDR, motion and depth targets for that pass only.
-    uint32_t msaaSamples = 1;
+    uint32_t referenceSamples = 2048;      // per pixel, for each of specular and diffuse
     float taaMinimumBlend = 1.0f / 16.0f;  // lowest weight of a new sample (taa.comp)
     float taaSharpness = 0.0f;             // 0: no sharpening
     // Tests: copy each frame's motion vectors (gbuffer.motion) to the host, for
     // Renderer::motionVectors().
     bool captureMotionVectors = false;
-    // Bloom: the fraction of each pixel's radiance spread over a wide glare kernel (energy-
-    // conserving: the frame's total is unchanged). 0: off (here, so tests render without it;
-    // the application's default is ApplicationOptions').
-    float bloomStrength = 0.0f;
-    // The fraction of the output's width and height the scene is rendered at (`--render-scale`,
-    // the quality presets' first lever on a CPU device): every pass up to bloom runs at the
-    // render size, then upscale.comp filters the radiance up to the output for tonemapping,
-    // antialiasing after it and the overlays, so text and UI stay sharp. 1: no upscale pass.
-    float renderScale = 1.0f;
-    ExposureMode exposure = ExposureMode::Manual;
+    // Auto exposure's adaptation; its compensation is RenderSettings::exposureCompensation.
     AutoExposureSettings autoExposure;
-    AoMode ao = AoMode::Off;
-    // Off here so tests render without a medium unless they ask; the application's default
-    // (a medium in the scene turns it on) is ApplicationOptions'.
-    VolumetricsMode volumetrics = VolumetricsMode::Off;
     VolumetricsSettings volumetricsSettings;
     WireMode wires = WireMode::Coverage;
     HairShading hairShading = HairShading::Lit;
-    // Only lights with a shadow map (shadows on, castShadows) get a hair depth map.
-    HairSelfShadow hairSelfShadow = HairSelfShadow::DepthMap;
     // The hair A-buffer's node pool: this many nodes per pixel of the target. Fragments beyond
     // it are dropped (the nearest few of a pixel then may be missing) and counted
     // (RendererStats::hairNodesDropped).
@@ -321,15 +199,6 @@ struct RendererOptions {
     // view only the casters in its own. Off (--culling off), every view records every draw:
     // the reference a culled frame must match pixel for pixel.
     bool culling = true;
-    // Levels of detail (content/mesh_lods.h): each view draws a mesh at the coarsest level whose
-    // error stays within this many of its pixels (shadow maps: texels). 0: every mesh in full,
-    // the reference (--lod-error 0; the quality presets' lodPixelError otherwise).
-    float lodPixelError = 0.0f;
-    // A textured rect light by LTC: cells per side of its image the specular lobe is integrated
-    // over, each an exact polygon integral (its diffuse takes half as many); 1, 2, 4, 8 or 16.
-    // 8 is the reference's error (1.9 % on the worst cell against the fit's own 1.0 %); each
-    // halving quarters the cost (area_lights.glsl; --area-texture-cells).
-    uint32_t areaTextureCells = 8;
     // Penumbrae of sphere and tube lights by blocker search (percentage-closer soft shadows);
     // off, every local light's map is filtered as a hard shadow (the quality presets' switch).
     bool softShadows = true;
@@ -339,18 +208,11 @@ struct RendererOptions {
     // Texels of local-light maps re-rendered per frame (0: no limit). Past it, a changed light
     // whose last maps are still in the atlas keeps them for the frame (shadow_maps_kept).
     uint64_t shadowRenderBudget = uint64_t(4) << 20;
-    SsrMode ssr = SsrMode::Off;
-    // Off here so tests render without it unless they ask; the application turns it on for
-    // scenes with an atmosphere (ApplicationOptions).
-    SkyOcclusionMode skyOcclusion = SkyOcclusionMode::Off;
     // With skyOcclusion Off: On in frames whose scene has an atmosphere (the default when
     // neither the command line nor the scene file chooses).
     bool skyOcclusionWithAtmosphere = false;
     SsrSettings ssrSettings;
     AtmosphereSettings atmosphere;
-    // Off here so tests render without shafts unless they ask; the application's default
-    // (epipolar when the scene has an atmosphere) is ApplicationOptions'.
-    ScatteringMode scattering = ScatteringMode::Off;
     ScatteringSettings scatteringSettings;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "candela/content/render_setting_table.h"
 #include "candela/render/gpu_buffer.h"
 #include "candela/render/gpu_context.h"
 #include "clustered/gpu_cluster_params.h"
@@ -65,7 +66,7 @@ std::vector<std::string> LightingFeatures::names() const {
     out.push_back(brdf == BrdfModel::Ue4 ? "brdf_ue4" : "brdf_energy_conserving");
     if (anisotropy) out.push_back("material_anisotropy");
     if (clearCoat) out.push_back("material_clear_coat");
-    if (ao != AoMode::Off) out.push_back(std::string("ao_") + aoModeName(ao));
+    if (ao != AoMode::Off) out.push_back("ao_" + content::renderSettingName(ao));
     return out;
 }
 

@@ -14,6 +14,29 @@
 
 namespace candela::render {
 
+namespace {
+
+// What the passes read besides the graph's resources: the frame's sun and air, the lit inputs'
+// buffers and the sampling the settings choose.
+ScatteringPass::Inputs inputsFor(const FeatureFrame& frame, const LitFrame& lit, bool shadows) {
+    const RendererOptions& options = frame.options;
+    ScatteringPass::Inputs in;
+    in.frame = ScatteringPass::frameOf(frame.inputs.scene, options.scatteringSettings, frame.width,
+                                       frame.height);
+    in.camera = lit.inputs.camera;
+    in.lights = lit.inputs.lights;
+    in.lightCapacity = lit.lightCapacity;
+    in.shadowMaps = shadows;
+    in.settings = options.scatteringSettings;
+    in.slices = options.scatteringSlices;
+    in.samplesPerSlice = options.scatteringSamples;
+    in.cascadeSize = options.shadowCascadeSize;
+    in.nearPlane = frame.inputs.scene.camera.nearPlane;
+    return in;
+}
+
+}  // namespace
+
 ScatteringFeature::ScatteringFeature(GpuContext& context) : context_(context) {}
 
 ScatteringFeature::~ScatteringFeature() = default;
@@ -30,21 +53,12 @@ void ScatteringFeature::declare(FeatureFrame& frame) {
     const ShadowFrame* shadowFrame = frame.board.find<ShadowFrame>();
     const bool shadows = shadowFrame != nullptr;
     IntegratedFroxels& froxels = frame.board.get<IntegratedFroxels>();
-    ScatteringPass::Inputs in;
-    in.frame = ScatteringPass::frameOf(frame.inputs.scene, options.scatteringSettings, frame.width,
-                                       frame.height);
+    const ScatteringPass::Inputs in = inputsFor(frame, lit, shadows);
     FrameGraph& g = frame.graph;
     if (!pass_) pass_ = std::make_unique<ScatteringPass>(context_);
     ScatteringPass* pass = pass_.get();
     pass->prepare(options.scattering, shadows, froxels.airFroxels);
     marched_ = true;
-    in.camera = lit.inputs.camera;
-    in.lights = lit.inputs.lights;
-    in.lightCapacity = lit.lightCapacity;
-    in.shadowMaps = shadows;
-    in.settings = options.scatteringSettings;
-    in.cascadeSize = options.shadowCascadeSize;
-    in.nearPlane = frame.inputs.scene.camera.nearPlane;
     const bool epipolar = options.scattering == ScatteringMode::Epipolar;
     frame.features.push_back(epipolar ? "scattering_epipolar" : "scattering_brute_force");
     const ResourceHandle hdr = targets.hdr;
@@ -98,14 +112,14 @@ void ScatteringFeature::declare(FeatureFrame& frame) {
         targets.hdr = p.write(targets.hdr, Use::StorageReadWrite);
         return;
     }
-    ResourceHandle coordinates =
-        g.createImage("scattering.coordinates", ScatteringPass::samplesDesc(in.settings));
-    ResourceHandle inscatter =
-        g.createImage("scattering.inscatter", ScatteringPass::samplesDesc(in.settings));
+    ResourceHandle coordinates = g.createImage(
+        "scattering.coordinates", ScatteringPass::samplesDesc(in.slices, in.samplesPerSlice));
+    ResourceHandle inscatter = g.createImage(
+        "scattering.inscatter", ScatteringPass::samplesDesc(in.slices, in.samplesPerSlice));
     ResourceHandle tree =
-        g.createImage("scattering.tree", ScatteringPass::treeDesc(in.settings, in.cascadeSize));
+        g.createImage("scattering.tree", ScatteringPass::treeDesc(in.slices, in.cascadeSize));
     ResourceHandle slices =
-        g.createBuffer("scattering.slices", ScatteringPass::slicesBytes(in.settings),
+        g.createBuffer("scattering.slices", ScatteringPass::slicesBytes(in.slices),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     {
         auto p =

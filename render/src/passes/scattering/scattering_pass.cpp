@@ -96,7 +96,7 @@ ScatteringPush pushFor(const ScatteringPass::Inputs& in) {
             glm::vec4(f.mie, std::max(in.nearPlane, 1e-4f)),
             glm::vec4(f.extinction, s.maxDistance),
             glm::vec4(f.sunPixel, s.refinementThreshold, std::max(s.aerialFar, 1e-3f)),
-            glm::uvec4(std::max(s.slices, 1u), std::max(s.samplesPerSlice, 2u),
+            glm::uvec4(std::max(in.slices, 1u), std::max(in.samplesPerSlice, 2u),
                        std::max(s.initialStep, 1u), leaves),
             glm::uvec4(uint32_t(std::max(f.sunIndex, 0)), in.lightCapacity, levels,
                        in.shadowMaps ? 1u : 0u),
@@ -113,27 +113,27 @@ ScatteringPass::ScatteringPass(GpuContext& context)
                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                 MemoryLocation::HostVisible) {}
 
-ImageDesc ScatteringPass::samplesDesc(const ScatteringSettings& settings) {
+ImageDesc ScatteringPass::samplesDesc(uint32_t slices, uint32_t samplesPerSlice) {
     return {VK_FORMAT_R32G32B32A32_SFLOAT,
-            std::max(settings.samplesPerSlice, 2u),
-            std::max(settings.slices, 1u),
+            std::max(samplesPerSlice, 2u),
+            std::max(slices, 1u),
             1,
             false,
             VK_IMAGE_USAGE_STORAGE_BIT};
 }
 
-ImageDesc ScatteringPass::treeDesc(const ScatteringSettings& settings, uint32_t cascadeSize) {
+ImageDesc ScatteringPass::treeDesc(uint32_t slices, uint32_t cascadeSize) {
     return {VK_FORMAT_R32G32_SFLOAT,
             2 * treeLeaves(cascadeSize),
-            std::max(settings.slices, 1u) * kCascadeRows,
+            std::max(slices, 1u) * kCascadeRows,
             1,
             false,
             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT};
 }
 
-VkDeviceSize ScatteringPass::slicesBytes(const ScatteringSettings& settings) {
+VkDeviceSize ScatteringPass::slicesBytes(uint32_t slices) {
     // SliceInfo: end points, flags and a line per cascade (vec4 each).
-    return VkDeviceSize(std::max(settings.slices, 1u)) * (2 + kCascadeRows) * sizeof(glm::vec4);
+    return VkDeviceSize(std::max(slices, 1u)) * (2 + kCascadeRows) * sizeof(glm::vec4);
 }
 
 glm::uvec3 ScatteringPass::aerialGrid(const ScatteringSettings& settings) {

@@ -33,10 +33,10 @@ public:
     explicit ScatteringPass(GpuContext& context);
 
     // The epipolar samples (x: sample, y: slice): coordinates, then in-scattering.
-    static ImageDesc samplesDesc(const ScatteringSettings& settings);
+    static ImageDesc samplesDesc(uint32_t slices, uint32_t samplesPerSlice);
     // The trees: a row per slice and cascade, 2 M texels (M leaves, then the levels above).
-    static ImageDesc treeDesc(const ScatteringSettings& settings, uint32_t cascadeSize);
-    static VkDeviceSize slicesBytes(const ScatteringSettings& settings);
+    static ImageDesc treeDesc(uint32_t slices, uint32_t cascadeSize);
+    static VkDeviceSize slicesBytes(uint32_t slices);
     // Leaves per tree: one per texel along the longest line through a cascade (its diagonal),
     // rounded up to a power of two.
     static uint32_t treeLeaves(uint32_t cascadeSize);
@@ -71,6 +71,8 @@ public:
         bool shadowMaps = false;
         Frame frame;
         ScatteringSettings settings;
+        // Epipolar lines and samples per line (RenderSettings::scatteringSlices, ...Samples).
+        uint32_t slices = 512, samplesPerSlice = 256;
         uint32_t cascadeSize = 1024;
         float nearPlane = 0.05f;
     };

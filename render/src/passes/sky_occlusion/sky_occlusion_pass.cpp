@@ -34,18 +34,6 @@ uint64_t mix(uint64_t h, const void* data, size_t bytes) {
 
 }  // namespace
 
-const char* skyOcclusionModeName(SkyOcclusionMode mode) {
-    switch (mode) {
-        case SkyOcclusionMode::Off:
-            return "off";
-        case SkyOcclusionMode::On:
-            return "on";
-        case SkyOcclusionMode::Reference:
-            return "reference";
-    }
-    return "off";
-}
-
 uint32_t skyOcclusionDirectionCount(SkyOcclusionMode mode) {
     return mode == SkyOcclusionMode::Reference ? 256u : mode == SkyOcclusionMode::On ? 32u : 0u;
 }

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "candela/content/render_setting_table.h"
 #include "candela/render/frame_inputs.h"
 #include "features/gbuffer_frame.h"
 #include "features/scene_targets.h"
@@ -57,7 +58,7 @@ void SsrFeature::declare(FeatureFrame& frame) {
     const GBufferFrame& gbuffer = frame.board.get<GBufferFrame>();
     const LitFrame& lit = frame.board.get<LitFrame>();
     const AmbientOcclusionFrame& ao = frame.board.get<AmbientOcclusionFrame>();
-    frame.features.push_back(std::string("ssr_") + ssrModeName(options.ssr));
+    frame.features.push_back("ssr_" + content::renderSettingName(options.ssr));
     if (!pass_) pass_ = std::make_unique<SsrPass>(context_);
     SsrPass* pass = pass_.get();
     const GpuBuffer* cameraBuffer = lit.inputs.camera;

@@ -202,7 +202,7 @@ void VolumetricsFeature::declare(FeatureFrame& frame) {
     IntegratedFroxels& froxels = frame.board.get<IntegratedFroxels>();
     const ShadowDescriptors shadowDescriptors = lit.inputs.shadows;
     const bool marchVolumes = options.volumetrics == VolumetricsMode::Volumes;
-    const bool volumeProxies = marchVolumes && options.volumetricsSettings.volumeProxies;
+    const bool volumeProxies = marchVolumes && options.volumeProxies;
     const bool lightFroxels = froxels.fogFroxels;  // the mode, or blended surfaces to light
     VolumetricsPass::Uses uses;
     uses.reference = options.volumetrics == VolumetricsMode::Reference;
@@ -218,6 +218,7 @@ void VolumetricsFeature::declare(FeatureFrame& frame) {
     volume.fog = *frame.inputs.scene.fog;
     volume.nearPlane = frame.inputs.scene.camera.nearPlane;
     volume.settings = options.volumetricsSettings;
+    volume.froxelLightCap = options.froxelLightCap;
     volume.grid = VolumetricsPass::froxelGrid(width, height, volume.settings);
     if (froxels.fogFroxels) volume.grid = froxels.fogGrid;
     volume.froxelSunChannel = froxels.sunChannel;

@@ -331,7 +331,7 @@ void VolumetricsPass::binLights(std::span<const LightInstance> lights, const Cam
             froxelsListTheSun ? scaleSpan : std::span<const float>(localScales);
         const std::vector<uint32_t> bins =
             capPlainLights(render::binLights(lights, froxelScales, camera, layout), lights,
-                           froxelScales, camera, layout, in.settings.froxelLightCap);
+                           froxelScales, camera, layout, in.froxelLightCap);
         binnedWork_.froxelLightEvaluations = binnedPairs(bins, layout);
         upload(context_, froxelBins_, bins);
     }

@@ -71,6 +71,7 @@ public:
         content::Fog fog;
         float nearPlane = 0.05f;
         VolumetricsSettings settings;
+        uint32_t froxelLightCap = 0;  // RenderSettings::froxelLightCap (0: every light)
         glm::uvec3 grid{1u};
         // Froxels whose sun is marched per pixel (binLights' sunMarched) in a frame with
         // blended surfaces, wires or hair: the froxels light the sun too, into a channel of its

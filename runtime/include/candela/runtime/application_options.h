@@ -12,6 +12,7 @@
 
 #include "candela/content/components/fog.h"
 #include "candela/content/quality.h"
+#include "candela/content/render_settings.h"
 #include "candela/render/renderer_options.h"
 #include "candela/render/validation_mode.h"
 #include "candela/runtime/input_script.h"
@@ -54,54 +55,15 @@ struct ApplicationOptions {
     // component; a file that cannot be used gives a message and a neutral sky.
     std::optional<std::filesystem::path> environment;
     render::IblMode ibl = render::IblMode::SplitSum;
-    // --brdf; unset: the world's scene-file "brdf", else energy-conserving.
-    std::optional<render::BrdfModel> brdf;
     // --quality low|medium|high|ultra; unset: the world's scene-file "quality", else the
-    // device's level (content/quality.h: medium on a CPU device, high on a GPU). Every setting
-    // below that is unset takes its value from the preset.
+    // device's level (content/quality.h: medium on a CPU device, high on a GPU). Every render
+    // setting that neither `settings` nor the scene file chooses takes the preset's value.
     std::optional<content::QualityLevel> quality;
-    // --area-lights: how sphere and tube lights integrate (render::AreaLightMode); unset: the
-    // quality preset's.
-    std::optional<render::AreaLightMode> areaLights;
-    // --hair-self-shadow: hair's shadow on itself (render::HairSelfShadow); unset: the preset's.
-    std::optional<render::HairSelfShadow> hairSelfShadow;
-    // --aa; unset: the world's scene-file "aa", else TAA (render/README.md "Antialiasing").
-    std::optional<render::AntiAliasing> aa;
-    // --msaa; unset: the world's scene-file "msaa", else 1 (off). The forward pass's samples
-    // per pixel, on top of --aa; the renderer checks them against the device.
-    std::optional<uint32_t> msaa;
-    // --bloom; unset: the world's scene-file "bloom", else the quality preset's (kDefaultBloom
-    // from medium up).
-    std::optional<float> bloom;
-    // --render-scale; unset: the quality preset's (RendererOptions::renderScale).
-    std::optional<float> renderScale;
-    // --lod-error PIXELS; unset: the quality preset's (RendererOptions::lodPixelError).
-    std::optional<float> lodPixelError;
-    // --area-texture-cells N; unset: the quality preset's (RendererOptions::areaTextureCells).
-    std::optional<uint32_t> areaTextureCells;
-    // --froxel-light-cap N; unset: the quality preset's (VolumetricsSettings::froxelLightCap).
-    std::optional<uint32_t> froxelLightCap;
+    // The render settings the command line chose (--aa, --ssr, --bloom...: one flag per row of
+    // content/render_setting_table.h); they win over the scene file's.
+    content::RenderSettingChoices settings;
     // --culling off: every view records every draw (RendererOptions::culling's reference).
     bool culling = true;
-    static constexpr float kDefaultBloom = 0.04f;
-    // --exposure, --exposure-compensation; unset: the scene file's, else manual and 0 EV.
-    std::optional<render::ExposureMode> exposure;
-    std::optional<float> exposureCompensation;
-    // --ao; unset: the world's scene-file "ambient_occlusion" mode, else gtao.
-    std::optional<render::AoMode> ao;
-    // --ssr; unset: the world's scene-file "ssr", else hiz (render/README.md "Screen-space
-    // reflections" gives the cost; frames without a glossy surface declare no pass).
-    std::optional<render::SsrMode> ssr;
-    // --sky-occlusion; unset: the world's scene-file "sky_occlusion", else on for frames whose
-    // scene has an atmosphere (render/README.md "Sky occlusion").
-    std::optional<render::SkyOcclusionMode> skyOcclusion;
-    // --volumetrics; unset: volumes when the scene has a medium (render/README.md
-    // "Volumetric lighting"), which is the only way a frame draws one.
-    std::optional<render::VolumetricsMode> volumetrics;
-    // --volume-proxies off|on; unset: the world's scene-file "volume_proxies", else off. How
-    // `volumes` finds the lights a pixel meets: each light's proxy mesh rasterised (on) or CPU
-    // tile lists (off; render/README.md "Volumetric lighting" gives the costs of both).
-    std::optional<bool> volumeProxies;
     // --fog SIGMA_S[,SIGMA_A[,G]]: a uniform medium replacing the scene's Fog (or adding one).
     std::optional<content::Fog> fog;
     // --atmosphere: the default Earth atmosphere for a scene without an Atmosphere component
@@ -109,17 +71,12 @@ struct ApplicationOptions {
     // elevation keeping its azimuth; --time-of-day HH:MM places it by the atmosphere's latitude
     // and day of the year (render/README.md "Atmosphere"). Either gives the scene an atmosphere.
     bool atmosphere = false;
-    // --scattering; unset: epipolar (it draws only in frames with an atmosphere).
-    // --scattering-slices, --scattering-samples, --scattering-initial-step,
-    // --scattering-threshold: epipolar sampling's parameters; --scattering-density: the air's
-    // density scale (render/README.md "Light shafts").
-    std::optional<render::ScatteringMode> scattering;
+    // --scattering-initial-step, --scattering-threshold: epipolar sampling's parameters;
+    // --scattering-density: the air's density scale (render/README.md "Light shafts").
     render::ScatteringSettings scatteringSettings;
-    // --scattering-slices, --scattering-samples; unset: the quality preset's. Their product
-    // (the samples a frame may march) is at most kMaxScatteringSamples.
+    // --scattering-slices x --scattering-samples (the samples a frame may march) is at most
+    // this.
     static constexpr uint64_t kMaxScatteringSamples = uint64_t(1) << 20;
-    std::optional<uint32_t> scatteringSlices;
-    std::optional<uint32_t> scatteringSamples;
     // --atmosphere off: none, even where the scene has an Atmosphere component.
     bool atmosphereOff = false;
     std::optional<float> sunElevationDegrees;
@@ -131,9 +88,9 @@ struct ApplicationOptions {
     // The standard flags every game gets (see standardFlagsUsage()): --headless, --frames N,
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
-    // --brdf, --aa, --bloom, --exposure, --exposure-compensation.
-    // --brdf, --ao, --area-lights, --ssr, --volumetrics, --volume-proxies, --fog, --atmosphere,
-    // --sun-elevation, --time-of-day, --scattering and its parameters.
+    // --quality, a flag per render setting (content/render_setting_table.h: --aa, --ssr...),
+    // --culling, --fog, --atmosphere, --sun-elevation, --time-of-day and the light shafts'
+    // parameters.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

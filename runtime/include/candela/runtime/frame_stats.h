@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/content/render_settings.h"
 #include "candela/render/environment_stats.h"
 #include "candela/render/renderer_options.h"
 
@@ -18,6 +19,9 @@ struct FrameStats {
     // The quality preset the run used and where it came from ("flag", "scene", "device").
     std::string quality;
     std::string qualitySource;
+    // The render settings the run used (--stats "settings": each row's value under its stats
+    // name, content/render_setting_table.h).
+    content::RenderSettings settings;
     // The size the scene rendered at (RendererOptions::renderScale of width x height).
     uint32_t renderWidth = 0;
     uint32_t renderHeight = 0;

@@ -47,39 +47,14 @@ public:
     // Where an asset path stored in a component (a Sky's file) points: relative to the last
     // scene file loaded, else as it is.
     std::filesystem::path resolveAssetPath(const std::string& stored) const;
-    // The BRDF the last scene file loaded asks for ("brdf"), if it names one.
-    std::optional<content::SceneBrdf> sceneBrdf() const { return sceneBrdf_; }
-    // The antialiasing the last scene file loaded asks for ("aa"), if it names one.
-    std::optional<content::SceneAntiAliasing> sceneAntiAliasing() const {
-        return sceneAntiAliasing_;
-    }
-    // The forward pass's MSAA samples the last scene file asks for ("msaa"), if it sets them.
-    std::optional<uint32_t> sceneMsaa() const { return sceneMsaa_; }
-    // The screen-space reflections the last scene file asks for ("ssr"), if it names them.
-    std::optional<content::SceneSsrMode> sceneSsr() const { return sceneSsr_; }
+    // The render settings the last scene file chooses ("aa", "ssr", "bloom"...; unset where
+    // it says nothing). Built-in scenes (the demo) choose theirs here, as a scene file would.
+    const content::RenderSettingChoices& sceneSettings() const { return sceneSettings_; }
+    content::RenderSettingChoices& sceneSettings() { return sceneSettings_; }
     // The quality preset the last scene file asks for ("quality"), if it names one.
     std::optional<content::QualityLevel> sceneQuality() const { return sceneQuality_; }
-    std::optional<content::SceneSkyOcclusionMode> sceneSkyOcclusion() const {
-        return sceneSkyOcclusion_;
-    }
-    // Built-in scenes (the demo) ask for reflections as a scene file would.
-    void setSceneSsr(std::optional<content::SceneSsrMode> mode) { sceneSsr_ = mode; }
-    // The light shafts and volumetrics the last scene file asks for ("scattering",
-    // "volumetrics"), if it names them.
-    std::optional<content::SceneScatteringMode> sceneScattering() const { return sceneScattering_; }
-    std::optional<content::SceneVolumetricsMode> sceneVolumetrics() const {
-        return sceneVolumetrics_;
-    }
-    // Whether the last scene file asks for the per-light volumes' proxy meshes
-    // ("volume_proxies"), if it says.
-    std::optional<bool> sceneVolumeProxies() const { return sceneVolumeProxies_; }
-    // The bloom strength the last scene file asks for ("bloom"; 0: off), if it sets one.
-    std::optional<float> sceneBloom() const { return sceneBloom_; }
-    // The exposure mode and compensation the last scene file asks for, if it sets them.
-    std::optional<content::SceneExposure> sceneExposure() const { return sceneExposure_; }
-    std::optional<float> sceneExposureCompensation() const { return sceneExposureCompensation_; }
-    // The scene file's "ambient_occlusion" (mode, radius, intensity), if it has one; the
-    // renderer reads radius and intensity every frame, so an editor's change shows at once.
+    // The scene file's "ambient_occlusion" radius and intensity, if it has them; the renderer
+    // reads them every frame, so an editor's change shows at once.
     const std::optional<content::SceneAmbientOcclusion>& sceneAmbientOcclusion() const {
         return sceneAmbientOcclusion_;
     }
@@ -121,19 +96,9 @@ private:
     std::vector<std::unique_ptr<content::Model>> models_;
     content::AssetCache cache_;
     std::filesystem::path sceneFile_;
-    std::optional<content::SceneBrdf> sceneBrdf_;
-    std::vector<content::MaterialLayer> sceneMaterialLayers_;
-    std::optional<content::SceneAntiAliasing> sceneAntiAliasing_;
-    std::optional<uint32_t> sceneMsaa_;
-    std::optional<content::SceneSsrMode> sceneSsr_;
+    content::RenderSettingChoices sceneSettings_;
     std::optional<content::QualityLevel> sceneQuality_;
-    std::optional<content::SceneScatteringMode> sceneScattering_;
-    std::optional<content::SceneVolumetricsMode> sceneVolumetrics_;
-    std::optional<bool> sceneVolumeProxies_;
-    std::optional<content::SceneSkyOcclusionMode> sceneSkyOcclusion_;
-    std::optional<float> sceneBloom_;
-    std::optional<content::SceneExposure> sceneExposure_;
-    std::optional<float> sceneExposureCompensation_;
+    std::vector<content::MaterialLayer> sceneMaterialLayers_;
     std::optional<content::SceneAmbientOcclusion> sceneAmbientOcclusion_;
 };
 
