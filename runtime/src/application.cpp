@@ -550,6 +550,12 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                     (options.atmosphere || options.sunElevationDegrees || options.timeOfDayHours)) {
                     frame.scene.atmosphere = content::Atmosphere{};
                 }
+                // Unchosen, sky occlusion follows the atmosphere: --stats says what ran.
+                if (s.renderer->options().skyOcclusionWithAtmosphere) {
+                    stats.settings.skyOcclusion = frame.scene.atmosphere
+                                                      ? content::SkyOcclusionMode::On
+                                                      : content::SkyOcclusionMode::Off;
+                }
                 if (frame.scene.atmosphere) {
                     frame.scene.skyIntensity = 1.0f;  // the sky is physical, in cd/m^2
                     s.sun.apply({options.sunElevationDegrees, options.timeOfDayHours}, frame.scene);

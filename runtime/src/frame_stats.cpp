@@ -49,10 +49,12 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     nlohmann::json settings = nlohmann::json::object();
     content::forEachRenderSetting([&](const auto& row) {
         const auto& value = stats.settings.*row.value;
-        if (row.names.empty()) {
-            settings[std::string(row.statsName)] = value;
+        const std::string text = content::renderSettingText(row, value);
+        if (!row.names.empty()) {
+            settings[std::string(row.statsName)] = text;
         } else {
-            settings[std::string(row.statsName)] = content::renderSettingText(row, value);
+            // The number as the command line writes it (0.04, not the float's 0.0399999991).
+            settings[std::string(row.statsName)] = nlohmann::json::parse(text);
         }
     });
     json["settings"] = std::move(settings);

@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "candela/content/exr_image.h"
+#include "candela/content/render_setting_table.h"
 #include "full_filesystem.h"
 #include "image_files.h"
 #include "run_command.h"
@@ -125,6 +126,30 @@ TEST(Cli, HeadlessRunWritesCaptureAndStats) {
     EXPECT_EQ(stats["validation_messages"], 0);
     EXPECT_TRUE(stats["features"].is_array());
     EXPECT_FALSE(stats["features"].empty());
+}
+
+// --stats "settings": every render setting's value for the run under its stats name, a flag's
+// choice over the preset's (here --quality low, whose SSR is off and bloom 0).
+TEST(Cli, StatsReportEveryRenderSettingAndTheQualityItCameFrom) {
+    auto dir = tempDir();
+    const std::string scene =
+        std::string(CANDELA_SOURCE_DIR) + "/tests/scenes/spot_light.scene.json";
+    RunResult r = runCandela("run " + scene +
+                             " --headless --size 32x32 --frames 1 --quality low --ssr reference "
+                             "--render-scale 0.75 --stats " +
+                             (dir / "s.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json stats = nlohmann::json::parse(readBytes(dir / "s.json"));
+    EXPECT_EQ(stats["quality"], "low");
+    EXPECT_EQ(stats["quality_source"], "flag");
+    const nlohmann::json& settings = stats["settings"];
+    candela::content::forEachRenderSetting([&](const auto& row) {
+        EXPECT_TRUE(settings.contains(std::string(row.statsName))) << row.statsName;
+    });
+    EXPECT_EQ(settings["ssr"], "reference");
+    EXPECT_EQ(settings["render_scale"], 0.75);
+    EXPECT_EQ(settings["bloom"], 0);
+    EXPECT_EQ(settings["area_lights"], "representative");
 }
 
 // Passes build their pipelines when a frame first uses them: the triangle's frame has no
