@@ -206,7 +206,8 @@ bool ShadowPass::prepare(const FrameScene& scene, const SceneResources& resource
     for (size_t q = 0; q < requests.size(); ++q) {
         const MapRequest& request = requests[q];
         if (plan.tiles[q].size() != request.views) continue;  // never: the atlas floor is 8 px
-        const LightPlan lp{request.light, uint32_t(planned_.size()), request.views, true};
+        const LightPlan lp{request.light, uint32_t(planned_.size()), request.views, true,
+                           uint32_t(q)};
         keys[q] = planLightViews(viewInputs, request, plan.tiles[q]);
         candidates[q] = renderCandidate(request, plan.tiles[q], lp.firstView, keys[q],
                                         tiles[q].priority, options);
@@ -379,12 +380,12 @@ ShadowRenderCandidate ShadowPass::renderCandidate(const MapRequest& request,
 void ShadowPass::applyRenderChoices(std::span<const ShadowRenderChoice> choices,
                                     std::span<const uint64_t> keys, const FrameScene& scene,
                                     const SceneResources& resources) {
-    for (size_t q = 0; q < lightPlans_.size(); ++q) {
-        LightPlan& lp = lightPlans_[q];
+    for (LightPlan& lp : lightPlans_) {
         const uint32_t light = lp.light;
-        lp.render = choices[q] == ShadowRenderChoice::Render;
+        const ShadowRenderChoice choice = choices[lp.request];
+        lp.render = choice == ShadowRenderChoice::Render;
         ++stats_.shadowedLights;
-        if (choices[q] == ShadowRenderChoice::Keep) {
+        if (choice == ShadowRenderChoice::Keep) {
             // Sample the maps with the views they were rendered from; the key stays, so the
             // light asks again next frame.
             for (uint32_t v = 0; v < lp.viewCount; ++v)
@@ -394,7 +395,7 @@ void ShadowPass::applyRenderChoices(std::span<const ShadowRenderChoice> choices,
             continue;
         }
         framesWaiting_[light] = 0;
-        if (lp.render) rememberViews(lp, keys[q]);
+        if (lp.render) rememberViews(lp, keys[lp.request]);
         rendersThisFrame_ |= lp.render;
         if (lp.render) countCasters(lp, scene, resources);
         (lp.render ? stats_.mapsRendered : stats_.mapsCached) += 1;

@@ -89,6 +89,7 @@ private:
         uint32_t firstView;
         uint32_t viewCount;
         bool render;
+        uint32_t request;  // index of its MapRequest (and of its render choice and key)
     };
 
     // One light's maps this frame.
@@ -129,7 +130,7 @@ private:
                                           std::span<const ShadowTile> tiles, uint32_t firstView,
                                           uint64_t key, float priority,
                                           const RendererOptions& options) const;
-    // Per light plan (choices indexed like lightPlans_): render, cache or keep stale maps.
+    // Per light plan (choices and keys indexed by its request): render, cache or keep stale maps.
     void applyRenderChoices(std::span<const ShadowRenderChoice> choices,
                             std::span<const uint64_t> keys, const FrameScene& scene,
                             const SceneResources& resources);
