@@ -173,7 +173,9 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --ibl split-sum|mobile|reference\n"
            "  --quality low|medium|high|ultra   every technique's settings in one preset\n"
            "                            (default: the scene file's, else medium on a CPU\n"
-           "                            device, high on a GPU; a flag below wins over it)\n" +
+           "                            device, high on a GPU; a flag below wins over it)\n"
+           "  render settings: each flag wins over the scene file's key of the same name,\n"
+           "  which wins over the quality preset's value\n" +
            renderSettingsUsage() +
            "  --culling on|off          frustum culling of draws (off: the reference)\n"
            "  --fog SIGMA_S[,SIGMA_A[,G]]   a uniform medium (1/m, Henyey-Greenstein g),\n"
