@@ -83,6 +83,8 @@ std::vector<T> offeredValues(const content::RenderSettingRow<T>& row) {
 
 void drawSceneRenderSettings(EditorScene& scene, InspectorLayout* layout) {
     if (!ImGui::CollapsingHeader("Render settings", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    // The preset values shown beside unchosen numbers: the scene's level, else the CPU
+    // device's (the editor does not know which device will run the game).
     const content::QualityLevel level =
         scene.sceneQuality().value_or(content::qualityForDevice(true));
     content::RenderSettingChoices settings = scene.sceneRenderSettings();
@@ -97,13 +99,14 @@ void drawSceneRenderSettings(EditorScene& scene, InspectorLayout* layout) {
                 changed |= drawChoice(row, label.c_str(), offeredValues(row), choice);
                 break;
             case content::SettingWidget::Slider:
-            case content::SettingWidget::Count:
+            case content::SettingWidget::Count: {
                 using T = std::remove_cvref_t<decltype(*choice)>;
                 if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
                     changed |= drawNumber(row, label.c_str(),
                                           row.presets[static_cast<std::size_t>(level)], choice);
                 }
                 break;
+            }
         }
         if (layout) (*layout)[label] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
     });
