@@ -76,7 +76,7 @@ TEST(RenderSettingTable, EveryRowRoundTripsThroughASceneFileUnderItsKey) {
     const std::string text = sceneToJson(scene, error);
     ASSERT_EQ(error, "");
     forEachRenderSetting([&](const auto& row) {
-        const std::string key(row.sceneKey.substr(row.sceneKey.rfind('/') + 1));
+        const std::string key(sceneKeyPath(row.sceneKey).member);
         EXPECT_NE(text.find("\"" + key + "\""), std::string::npos) << row.sceneKey << "\n" << text;
     });
     Diagnostics diagnostics;
@@ -92,12 +92,11 @@ TEST(RenderSettingTable, EveryRowNamesItsBadValueAndLoadsWithoutIt) {
         // A name no row has, or a number past the row's range.
         std::string value = "\"sideways\"";
         if (row.names.empty()) value = std::to_string(double(row.most) * 4 + 3);
-        std::string key(row.sceneKey), json;
-        if (const std::size_t slash = key.find('/'); slash != std::string::npos) {
-            json = "{\"" + key.substr(0, slash) + "\": {\"" + key.substr(slash + 1) +
-                   "\": " + value + "}, ";
-        } else {
-            json = "{\"" + key + "\": " + value + ", ";
+        const SceneKeyPath path = sceneKeyPath(row.sceneKey);
+        const std::string key(row.sceneKey), member(path.member);
+        std::string json = "{\"" + member + "\": " + value + ", ";
+        if (!path.object.empty()) {
+            json = "{\"" + std::string(path.object) + "\": {\"" + member + "\": " + value + "}, ";
         }
         json += R"("format": "candela.scene", "version": 1, "entities": []})";
         Diagnostics diagnostics;

@@ -237,15 +237,15 @@ public:
     // number in the row's range. Unset when absent; reported and unset when wrong.
     template <typename T>
     void renderSetting(const json& root, const RenderSettingRow<T>& row, std::optional<T>& out) {
+        const SceneKeyPath path = sceneKeyPath(row.sceneKey);
         const json* object = &root;
         std::string p;
-        std::string key(row.sceneKey);
-        if (const std::size_t slash = key.find('/'); slash != std::string::npos) {
-            auto parent = root.find(key.substr(0, slash));
-            p = "/" + key.substr(0, slash);
-            key = key.substr(slash + 1);
+        const std::string key(path.member);
+        if (!path.object.empty()) {
+            auto parent = root.find(path.object);
             if (parent == root.end() || !parent->is_object()) return;
             object = &*parent;
+            p = "/" + std::string(path.object);
         }
         known(*object, p, key.c_str());
         auto it = object->find(key);

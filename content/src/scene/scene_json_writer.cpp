@@ -331,12 +331,9 @@ std::string sceneToJson(const SceneDocument& scene, std::string& error) {
             }
             return;
         }
-        const std::string key(row.sceneKey);
-        if (const std::size_t slash = key.find('/'); slash != std::string::npos) {
-            document[key.substr(0, slash)][key.substr(slash + 1)] = std::move(value);
-        } else {
-            document[key] = std::move(value);
-        }
+        const SceneKeyPath path = sceneKeyPath(row.sceneKey);
+        json& object = path.object.empty() ? document : document[std::string(path.object)];
+        object[std::string(path.member)] = std::move(value);
     });
     if (!writer.error.empty()) {
         error = writer.error;

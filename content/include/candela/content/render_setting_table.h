@@ -334,6 +334,18 @@ constexpr void forEachRenderSetting(Visit&& visit) {
     std::apply([&](const auto&... row) { (visit(row), ...); }, kRenderSettingTable);
 }
 
+// Where a row's scene key points: a top-level key ("ssr": object empty), or a member of a
+// top-level object ("ambient_occlusion/mode").
+struct SceneKeyPath {
+    std::string_view object;
+    std::string_view member;
+};
+constexpr SceneKeyPath sceneKeyPath(std::string_view key) {
+    const std::size_t slash = key.find('/');
+    if (slash == std::string_view::npos) return {{}, key};
+    return {key.substr(0, slash), key.substr(slash + 1)};
+}
+
 // Whether `value` is one the row allows: a named value, or a number in its range (a power of
 // two for SettingWidget::Counts; NaN never).
 template <typename T>
