@@ -390,6 +390,80 @@ ValueProblems validateEmission(Material& material) {
     return problems;
 }
 
+ValueProblems validateRigidBody(RigidBody& body) {
+    ValueProblems problems;
+    const auto clampTo = [&](const char* field, float& value, float lo, float hi,
+                             const char* unit) {
+        if (value >= lo && value <= hi) return;
+        const float used = std::isnan(value) ? lo : std::clamp(value, lo, hi);
+        problems.push_back({field,
+                            text(value) + unit + " is outside " + text(lo) + ".." + text(hi) +
+                                unit + "; using " + text(used) + unit,
+                            true});
+        value = used;
+    };
+    if (body.type == BodyType::Dynamic && !(body.mass > 0 && finite(body.mass))) {
+        problems.push_back(
+            {"mass", "must be positive and finite (kg), got " + text(body.mass) + "; using 1 kg",
+             true});
+        body.mass = 1.0f;
+    }
+    clampAbove(problems, "mass", body.mass, kMaxBodyMass, " kg");
+    clampTo("friction", body.friction, 0.0f, 1e3f, "");
+    clampTo("restitution", body.restitution, 0.0f, 1.0f, "");
+    clampTo("linearDamping", body.linearDamping, 0.0f, 1.0f, "");
+    clampTo("angularDamping", body.angularDamping, 0.0f, 1.0f, "");
+    if (!finite(body.gravityScale)) {
+        problems.push_back(
+            {"gravityScale", "must be finite, got " + text(body.gravityScale) + "; using 1", true});
+        body.gravityScale = 1.0f;
+    }
+    const auto velocity = [&](const char* field, ecs::Vec3& v, float limit, const char* unit) {
+        if (!finite(v.x) || !finite(v.y) || !finite(v.z)) {
+            problems.push_back({field, "must be finite; using 0", true});
+            v = {};
+            return;
+        }
+        for (float* c : {&v.x, &v.y, &v.z})
+            clampTo(field, *c, -limit, limit, unit);
+    };
+    velocity("linearVelocity", body.linearVelocity, kMaxBodySpeed, " m/s");
+    velocity("angularVelocity", body.angularVelocity, kMaxBodyAngularSpeed, " rad/s");
+    return problems;
+}
+
+ValueProblems validateCollider(Collider& collider) {
+    ValueProblems problems;
+    const auto size = [&](const char* field, float& value) {
+        if (!(value > 0) || !finite(value)) {
+            reject(problems, field, "must be positive and finite (metres), got " + text(value));
+            return;
+        }
+        clampBelow(problems, field, value, kMinColliderSize, " m");
+        clampAbove(problems, field, value, kMaxColliderSize, " m");
+    };
+    if (collider.radius) size("radius", *collider.radius);
+    if (collider.halfExtents) {
+        for (float* c :
+             {&collider.halfExtents->x, &collider.halfExtents->y, &collider.halfExtents->z}) {
+            size("halfExtents", *c);
+        }
+    }
+    if (collider.height) size("height", *collider.height);
+    if (collider.shape == ColliderShape::Capsule && !anyRejected(problems)) {
+        const float radius = collider.radius.value_or(kDefaultColliderRadius);
+        const float height = collider.height.value_or(kDefaultCapsuleHeight);
+        if (height < 2 * radius) {
+            problems.push_back({"height",
+                                text(height) + " m is less than the two hemispheres (" +
+                                    text(2 * radius) + " m); using " + text(2 * radius) + " m",
+                                true});
+            collider.height = 2 * radius;
+        }
+    }
+    return problems;
+}
+
 ValueProblems validateMaterialTextures(const Material& material, std::size_t textureCount) {
     ValueProblems problems;
     auto check = [&](const std::string& field, const TextureRef& ref) {

@@ -18,8 +18,10 @@
 
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
+#include "candela/content/components/rigid_body.h"
 #include "candela/content/components/sky.h"
 #include "candela/content/material.h"
 
@@ -47,6 +49,14 @@ inline constexpr float kMinVerticalFov = 1e-3f;             // radians
 inline constexpr float kMinNearPlane = 1e-5f;               // metres
 inline constexpr float kMinOrthographicHalfHeight = 1e-6f;  // metres
 inline constexpr float kMaxVolumetricScale = 1e3f;          // multiplies a light's in-scattering
+// Rigid bodies: past these a 32-bit float step loses the contact solver (an aircraft carrier
+// is 1e8 kg; a rifle bullet flies at 1e3 m/s), and a collider finer than a tenth of a
+// millimetre or wider than 100 km is beyond what a game's metre-scale world resolves.
+inline constexpr float kMaxBodyMass = 1e9f;          // kg
+inline constexpr float kMaxBodySpeed = 1e4f;         // m/s, each velocity component
+inline constexpr float kMaxBodyAngularSpeed = 1e3f;  // rad/s, each component
+inline constexpr float kMinColliderSize = 1e-4f;     // metres, a radius or half extent
+inline constexpr float kMaxColliderSize = 1e5f;      // metres
 
 struct ValueProblem {
     std::string field;     // as the scene file names it: "lumens", "verticalFov", "exr"
@@ -77,6 +87,14 @@ ValueProblems validateEmission(Material& material);
 // with a warning; NaN refused. Scene files and editor edits share it (issue 44: a cavity of
 // 3e38 was clamped by the editor without a word).
 ValueProblems validateMaterialFactors(Material& material);
+// A dynamic body's mass that is not positive and finite becomes 1 kg; friction below 0,
+// restitution and damping outside [0, 1], a non-finite gravity scale and non-finite velocities
+// are clamped (velocities to 0), each with a warning naming the field.
+ValueProblems validateRigidBody(RigidBody& body);
+// A radius, half extent or height that is zero, negative or not finite is rejected (the
+// collider has no size); sizes beyond kMinColliderSize..kMaxColliderSize are clamped, and a
+// capsule shorter than its two hemispheres becomes a sphere's height (2 radius).
+ValueProblems validateCollider(Collider& collider);
 // Texture references against the model's `textureCount` textures: an index past them (a scene
 // file's material override naming texture 99) is a warning per slot, named by its key; the
 // renderer binds the slot's fallback (white, or a flat normal).

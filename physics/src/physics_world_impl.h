@@ -1,0 +1,101 @@
+#pragma once
+// PhysicsWorld's Bullet side, shared by the world's files and the queries.
+#include <btBulletDynamicsCommon.h>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "candela/content/components/collider.h"
+#include "candela/content/components/rigid_body.h"
+#include "candela/content/diagnostics.h"
+#include "candela/physics/physics_world.h"
+#include "collider_shapes.h"
+#include "contact_tracking.h"
+#include "world_pose.h"
+
+namespace candela::physics {
+
+// One entity's Bullet object and what it was made from. The collision object's user pointer
+// points here, so a hit names its entity.
+struct BodyRecord {
+    ecs::Entity entity;
+    ShapeData shape;
+    std::unique_ptr<btRigidBody> body;
+    // What the body was made from; a change to any of them makes it again.
+    content::Collider collider;
+    std::optional<content::RigidBody> rigidBody;  // the settings part (velocities ignored)
+    ecs::Vec3 scale{1, 1, 1};
+    const content::Mesh* mesh = nullptr;
+    // The pose physics last put on the entity, and the velocities it last wrote: the entity
+    // differing from them means game code moved it or set a velocity.
+    WorldPose placed;
+    ecs::Vec3 writtenPosition{};
+    ecs::Quat writtenRotation{};
+    ecs::Vec3 writtenLinearVelocity{};
+    ecs::Vec3 writtenAngularVelocity{};
+    bool written = false;
+    // The pose at the start and end of the last step (interpolation).
+    btTransform previous = btTransform::getIdentity();
+    btTransform current = btTransform::getIdentity();
+
+    content::BodyType type() const {
+        return rigidBody ? rigidBody->type : content::BodyType::Static;
+    }
+    bool trigger() const { return collider.trigger; }
+};
+
+inline BodyRecord* recordOf(const btCollisionObject* object) {
+    return object ? static_cast<BodyRecord*>(object->getUserPointer()) : nullptr;
+}
+
+struct PhysicsWorld::Impl {
+    explicit Impl(ecs::Registry& r, PhysicsSettings s);
+    ~Impl();
+
+    ecs::Registry& registry;
+    PhysicsSettings settings;
+    btDefaultCollisionConfiguration configuration;
+    btCollisionDispatcher dispatcher{&configuration};
+    btDbvtBroadphase broadphase;
+    btSequentialImpulseConstraintSolver solver;
+    btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+
+    // Records in creation order (what keeps stepping deterministic), found by entity.
+    std::vector<std::unique_ptr<BodyRecord>> records;
+    std::unordered_map<std::uint64_t, BodyRecord*> byEntity;
+
+    ContactTracker contacts;
+    ContactTracker triggers;
+    PhysicsEvents events;
+    content::Diagnostics diagnostics;
+    std::set<std::pair<std::uint64_t, std::string>> reported;  // (entity, message) said once
+    double leftover = 0.0;
+    std::uint64_t steps = 0;
+
+    void sync();  // body_sync.cpp
+    void step();
+    void writeBack(float alpha);  // body_write_back.cpp
+    void beginEvents();
+    void endEvents();
+    void observeContacts();  // contact_observation.cpp
+    void observeTriggers();
+    void applyGravity(BodyRecord& record);
+
+    // Says a problem once per entity and message, naming the entity.
+    void report(ecs::Entity entity, const std::string& message, bool error);
+    void destroy(BodyRecord& record);
+    void removeStale();
+    void syncEntity(ecs::Entity entity, const content::Collider& collider);
+    std::unique_ptr<BodyRecord> make(ecs::Entity entity, const content::Collider& collider,
+                                     const content::RigidBody* rigidBody, const WorldPose& pose);
+    void applyGameWrites(BodyRecord& record, const content::RigidBody* rigidBody,
+                         const WorldPose& pose);
+};
+
+}  // namespace candela::physics
