@@ -156,6 +156,12 @@ void Application::Impl::rebuildScheduler() {
     schedulerStale = false;
     if (!world) return;
     scheduler = std::make_unique<ecs::Scheduler>(world->registry, jobs);
+    // Physics steps after the game's Update systems wrote kinematic targets and velocities,
+    // and before propagation carries the bodies' new poses to their children.
+    scheduler
+        ->addSystem("physics", ecs::Phase::PostUpdate,
+                    [this](ecs::SystemContext&) { world->stepPhysics(current.deltaSeconds); })
+        .exclusive();
     scheduler
         ->addSystem("propagate transforms", ecs::Phase::PostUpdate,
                     [this](ecs::SystemContext&) { world->updateTransforms(); })

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "candela/content/components/camera.h"
+#include "candela/content/components/collider.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
@@ -134,6 +136,21 @@ void collectUnplaced(ecs::Registry& registry, std::vector<ecs::Entity>& out) {
 }
 
 }  // namespace
+
+physics::PhysicsWorld& SceneWorld::physics() {
+    if (!physics_) physics_ = std::make_unique<physics::PhysicsWorld>(registry, physicsSettings);
+    return *physics_;
+}
+
+void SceneWorld::stepPhysics(double deltaSeconds) {
+    if (!physics_ && registry.view<content::Collider>().empty()) return;
+    physics::PhysicsWorld& world = physics();
+    world.update(deltaSeconds);
+    content::Diagnostics& said = world.diagnostics();
+    for (const content::Diagnostic& d : said.messages)
+        std::fprintf(stderr, "%s\n", content::formatDiagnostic(d).c_str());
+    said.messages.clear();
+}
 
 void SceneWorld::updateTransforms() {
     std::vector<ecs::Entity> unplaced;

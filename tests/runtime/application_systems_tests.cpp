@@ -81,6 +81,7 @@ TEST(ApplicationSystems, ConflictingSetsRunInTheOrderAdded) {
     const std::string plan = app.describeSystems();
     EXPECT_NE(plan.find("PreUpdate: early\n(sync)\nUpdate: writer\nUpdate: reader\nUpdate: "
                         "rewriter\n(sync)\nUpdate exclusive: anything\n(sync)\n(sync)\n"
+                        "PostUpdate exclusive: physics\n(sync)\n"
                         "PostUpdate exclusive: propagate transforms\n"),
               std::string::npos)
         << plan;

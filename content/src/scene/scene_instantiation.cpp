@@ -138,6 +138,8 @@ std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDo
         if (source.sky) registry.emplace<Sky>(e, *source.sky);
         if (source.fog) registry.emplace<Fog>(e, *source.fog);
         if (source.hair) registry.emplace<HairGrowth>(e, *source.hair);
+        if (source.rigidBody) registry.emplace<RigidBody>(e, *source.rigidBody);
+        if (source.collider) registry.emplace<Collider>(e, *source.collider);
         if (source.atmosphere) registry.emplace<Atmosphere>(e, *source.atmosphere);
         if (!source.gameDataJson.empty())
             registry.emplace<GameData>(e, GameData{source.gameDataJson});
@@ -196,6 +198,11 @@ SceneDocument captureScene(ecs::Registry& registry) {
         if (const auto* sky = registry.tryGet<Sky>(e)) out.sky = *sky;
         if (const auto* fog = registry.tryGet<Fog>(e)) out.fog = *fog;
         if (const auto* hair = registry.tryGet<HairGrowth>(e)) out.hair = *hair;
+        if (const auto* body = registry.tryGet<RigidBody>(e)) {
+            out.rigidBody = *body;
+            out.rigidBody->sleeping = false;  // the simulation's state, not the scene's
+        }
+        if (const auto* collider = registry.tryGet<Collider>(e)) out.collider = *collider;
         if (const auto* atmosphere = registry.tryGet<Atmosphere>(e)) out.atmosphere = *atmosphere;
         if (const auto* data = registry.tryGet<GameData>(e)) out.gameDataJson = data->json;
     }

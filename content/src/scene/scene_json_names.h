@@ -48,6 +48,17 @@ inline constexpr EnumNames<LayerMaskSource, 2> kLayerMaskSources{
 inline constexpr EnumNames<ColorSpace, 2> kColorSpaces{
     {{ColorSpace::Srgb, "srgb"}, {ColorSpace::Linear, "linear"}}};
 
+inline constexpr EnumNames<BodyType, 3> kBodyTypes{{{BodyType::Static, "static"},
+                                                    {BodyType::Dynamic, "dynamic"},
+                                                    {BodyType::Kinematic, "kinematic"}}};
+inline constexpr EnumNames<ColliderShape, 6> kColliderShapes{
+    {{ColliderShape::Sphere, "sphere"},
+     {ColliderShape::Box, "box"},
+     {ColliderShape::Capsule, "capsule"},
+     {ColliderShape::Cylinder, "cylinder"},
+     {ColliderShape::ConvexHull, "convexHull"},
+     {ColliderShape::TriangleMesh, "triangleMesh"}}};
+
 inline constexpr EnumNames<QualityLevel, 4> kQualityLevelNames{{{QualityLevel::Low, "low"},
                                                                 {QualityLevel::Medium, "medium"},
                                                                 {QualityLevel::High, "high"},

@@ -496,6 +496,48 @@ public:
         report(p, validateLight(l));
     }
 
+    // "rigidBody" (components/rigid_body.h); values outside their domain are clamped.
+    void rigidBody(const json& j, const std::string& p, RigidBody& b) {
+        enumeration(j, p, "type", kBodyTypes, b.type);
+        number(j, p, "mass", b.mass);
+        number(j, p, "friction", b.friction);
+        number(j, p, "restitution", b.restitution);
+        number(j, p, "linearDamping", b.linearDamping);
+        number(j, p, "angularDamping", b.angularDamping);
+        number(j, p, "gravityScale", b.gravityScale);
+        vector(j, p, "linearVelocity", b.linearVelocity);
+        vector(j, p, "angularVelocity", b.angularVelocity);
+        boolean(j, p, "canSleep", b.canSleep);
+        boolean(j, p, "continuousCollision", b.continuousCollision);
+        report(p, validateRigidBody(b));
+    }
+    // "collider" (components/collider.h): "shape" is required; sizes are optional.
+    void collider(const json& j, const std::string& p, Collider& c) {
+        if (!has(j, p, "shape")) error(p + "/shape", "expected the collider's shape");
+        enumeration(j, p, "shape", kColliderShapes, c.shape);
+        const auto optionalNumber = [&](const char* key, std::optional<float>& out) {
+            if (!has(j, p, key)) return;
+            float value = 0;
+            number(j, p, key, value);
+            out = value;
+        };
+        optionalNumber("radius", c.radius);
+        optionalNumber("height", c.height);
+        if (has(j, p, "halfExtents")) {
+            ecs::Vec3 half;
+            vector(j, p, "halfExtents", half);
+            c.halfExtents = half;
+        }
+        boolean(j, p, "trigger", c.trigger);
+        integer(j, p, "layer", c.layer, 0, std::numeric_limits<std::uint32_t>::max());
+        integer(j, p, "mask", c.mask, 0, std::numeric_limits<std::uint32_t>::max());
+        report(p, validateCollider(c));
+    }
+    void vector(const json& j, const std::string& p, const char* key, ecs::Vec3& out) {
+        std::array<float, 3> values{out.x, out.y, out.z};
+        numbers(j, p, key, values);
+        out = {values[0], values[1], values[2]};
+    }
     void atmosphere(const json& j, const std::string& p, Atmosphere& a) {
         numbers(j, p, "rayleighScattering", a.rayleighScattering);
         number(j, p, "rayleighScaleHeight", a.rayleighScaleHeight);
@@ -709,6 +751,17 @@ public:
         if (const json* a = nullptr; object(j, p, "atmosphere", a)) {
             Atmosphere value;
             if (clean([&] { atmosphere(*a, p + "/atmosphere", value); })) e.atmosphere = value;
+        }
+        if (const json* b = nullptr; object(j, p, "rigidBody", b)) {
+            RigidBody value;
+            if (clean([&] { rigidBody(*b, p + "/rigidBody", value); })) e.rigidBody = value;
+        }
+        if (const json* c = nullptr; object(j, p, "collider", c)) {
+            Collider value;
+            if (clean([&] { collider(*c, p + "/collider", value); })) e.collider = value;
+        }
+        if (e.rigidBody && !e.collider) {
+            warning(p + "/rigidBody", "a rigid body without a \"collider\" does not move");
         }
         known(j, p, "gameData");  // the game's own: its keys are not the engine's to check
         if (auto it = j.find("gameData"); it != j.end()) e.gameDataJson = it->dump();

@@ -155,6 +155,37 @@ struct Writer {
         return out;
     }
 
+    json vector(ecs::Vec3 v, const std::string& pointer) {
+        return numbers(std::array<float, 3>{v.x, v.y, v.z}, pointer);
+    }
+
+    // Every field, so a saved body reads back the same whatever the defaults become.
+    json rigidBody(const RigidBody& b, const std::string& q) {
+        return {{"type", nameOf(kBodyTypes, b.type)},
+                {"mass", number(b.mass, q + "mass")},
+                {"friction", number(b.friction, q + "friction")},
+                {"restitution", number(b.restitution, q + "restitution")},
+                {"linearDamping", number(b.linearDamping, q + "linearDamping")},
+                {"angularDamping", number(b.angularDamping, q + "angularDamping")},
+                {"gravityScale", number(b.gravityScale, q + "gravityScale")},
+                {"linearVelocity", vector(b.linearVelocity, q + "linearVelocity")},
+                {"angularVelocity", vector(b.angularVelocity, q + "angularVelocity")},
+                {"canSleep", b.canSleep},
+                {"continuousCollision", b.continuousCollision}};
+    }
+
+    // Sizes only where the scene gave them (unset ones fit the entity's mesh).
+    json collider(const Collider& c, const std::string& q) {
+        json out = {{"shape", nameOf(kColliderShapes, c.shape)}};
+        if (c.radius) out["radius"] = number(*c.radius, q + "radius");
+        if (c.halfExtents) out["halfExtents"] = vector(*c.halfExtents, q + "halfExtents");
+        if (c.height) out["height"] = number(*c.height, q + "height");
+        if (c.trigger) out["trigger"] = true;
+        if (c.layer != kDefaultCollisionLayer) out["layer"] = c.layer;
+        if (c.mask != kAllCollisionLayers) out["mask"] = c.mask;
+        return out;
+    }
+
     json camera(const Camera& c, const std::string& p) {
         return {
             {"projection", nameOf(kProjections, c.projection)},
@@ -228,6 +259,8 @@ struct Writer {
                                         {"max", numbers(e.fog->bounds->max, q + "bounds/max")}};
             }
         }
+        if (e.rigidBody) out["rigidBody"] = rigidBody(*e.rigidBody, p + "/rigidBody/");
+        if (e.collider) out["collider"] = collider(*e.collider, p + "/collider/");
         if (e.hair) {
             const std::string q = p + "/hair/";
             const HairStyle& s = e.hair->style;

@@ -33,6 +33,8 @@ EntitySnapshot snapshotEntity(EditorScene& scene, ecs::Entity e) {
     s.camera = copyOf<content::Camera>(registry, e);
     s.sky = copyOf<content::Sky>(registry, e);
     s.fog = copyOf<content::Fog>(registry, e);
+    s.rigidBody = copyOf<content::RigidBody>(registry, e);
+    s.collider = copyOf<content::Collider>(registry, e);
     s.atmosphere = copyOf<content::Atmosphere>(registry, e);
     s.gameData = copyOf<content::GameData>(registry, e);
     if (const auto* member = registry.tryGet<content::SceneMember>(e)) s.sceneOrder = member->order;
@@ -61,6 +63,8 @@ ecs::Entity restoreEntity(EditorScene& scene, const EntitySnapshot& s) {
     emplaceIf(registry, e, s.camera);
     emplaceIf(registry, e, s.sky);
     emplaceIf(registry, e, s.fog);
+    emplaceIf(registry, e, s.rigidBody);
+    emplaceIf(registry, e, s.collider);
     emplaceIf(registry, e, s.atmosphere);
     emplaceIf(registry, e, s.gameData);
     registry.emplace<content::SceneMember>(e, content::SceneMember{s.sceneOrder});

@@ -7,7 +7,9 @@
 
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
+#include "candela/content/components/rigid_body.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
@@ -31,6 +33,8 @@ struct EntitySnapshot {
     std::optional<content::Camera> camera;
     std::optional<content::Sky> sky;
     std::optional<content::Fog> fog;
+    std::optional<content::RigidBody> rigidBody;
+    std::optional<content::Collider> collider;
     std::optional<content::Atmosphere> atmosphere;
     std::optional<content::GameData> gameData;
     uint32_t sceneOrder = 0;

@@ -24,9 +24,11 @@
 #include "candela/content/atomic_file_write.h"
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/hair_growth.h"
 #include "candela/content/components/light.h"
+#include "candela/content/components/rigid_body.h"
 #include "candela/content/components/scene_components.h"
 #include "candela/content/components/sky.h"
 #include "candela/content/diagnostics.h"
@@ -104,6 +106,12 @@ struct SceneEntity {
     // "hair": {"count", "length", "seed", "style": {the glTF extras.hair keys}}, only with a
     // "mesh": fur grown on it (components/hair_growth.h).
     std::optional<HairGrowth> hair;
+    // "rigidBody": {"type": "dynamic"|"kinematic"|"static", "mass", "friction", "restitution",
+    // ...} and "collider": {"shape": "sphere"|"box"|"capsule"|"cylinder"|"convexHull"|
+    // "triangleMesh", "radius", "halfExtents", "height", "trigger", "layer", "mask"}
+    // (physics/README.md); a collider without a rigid body is static.
+    std::optional<RigidBody> rigidBody;
+    std::optional<Collider> collider;
     // Free-form game data as JSON text; empty when none. Loading gives the canonical form
     // (compact, object keys sorted), which saving and loading again preserves exactly.
     std::string gameDataJson;

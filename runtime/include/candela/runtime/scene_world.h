@@ -13,6 +13,7 @@
 #include "candela/content/scene_file.h"
 #include "candela/ecs/registry.h"
 #include "candela/ecs/transform.h"
+#include "candela/physics/physics_world.h"
 
 namespace candela::runtime {
 
@@ -90,6 +91,15 @@ public:
     void updateTransforms();
     bool checkUnmarkedChanges = true;
 
+    // The world's rigid bodies (physics/README.md), made on first use with physicsSettings.
+    // Games ask it queries (physics_queries.h) and read its events.
+    physics::PhysicsWorld& physics();
+    bool hasPhysics() const { return physics_ != nullptr; }
+    physics::PhysicsSettings physicsSettings;
+    // Application runs this every frame before transform propagation: once any entity has a
+    // Collider, the physics world steps for `deltaSeconds` and its problems go to stderr.
+    void stepPhysics(double deltaSeconds);
+
 private:
     struct FrameChecks;
     std::unique_ptr<FrameChecks> checks_;
@@ -100,6 +110,7 @@ private:
     std::optional<content::QualityLevel> sceneQuality_;
     std::vector<content::MaterialLayer> sceneMaterialLayers_;
     std::optional<content::SceneAmbientOcclusion> sceneAmbientOcclusion_;
+    std::unique_ptr<physics::PhysicsWorld> physics_;  // before the registry goes
 };
 
 }  // namespace candela::runtime
