@@ -91,6 +91,17 @@ struct SweepResult final : btCollisionWorld::ClosestConvexResultCallback {
     bool needsCollision(btBroadphaseProxy* proxy) const override {
         return passes(filter, static_cast<const btCollisionObject*>(proxy->m_clientObject));
     }
+    // A surface the shape touches but moves away from (or along) does not stop it: a capsule
+    // standing on a floor can walk.
+    btScalar addSingleResult(btCollisionWorld::LocalConvexResult& result,
+                             bool normalInWorldSpace) override {
+        const btVector3 normal = normalInWorldSpace
+                                     ? result.m_hitNormalLocal
+                                     : result.m_hitCollisionObject->getWorldTransform().getBasis() *
+                                           result.m_hitNormalLocal;
+        if (normal.dot(m_convexToWorld - m_convexFromWorld) >= 0) return m_closestHitFraction;
+        return ClosestConvexResultCallback::addSingleResult(result, normalInWorldSpace);
+    }
 };
 
 struct OverlapResult final : btCollisionWorld::ContactResultCallback {

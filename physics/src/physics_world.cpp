@@ -55,6 +55,7 @@ void PhysicsWorld::Impl::step() {
         }
     }
     const auto h = static_cast<btScalar>(settings.stepSeconds);
+    moveCharacters(h);
     world.stepSimulation(h, 0, h);  // no substeps: exactly one step of h
     ++steps;
     for (auto& record : records) {
@@ -80,6 +81,7 @@ void PhysicsWorld::Impl::endEvents() {
 
 PhysicsWorld::PhysicsWorld(ecs::Registry& registry, PhysicsSettings settings)
     : impl_(std::make_unique<Impl>(registry, settings)) {
+    impl_->owner = this;
     setSettings(settings);
 }
 

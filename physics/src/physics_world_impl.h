@@ -59,6 +59,7 @@ struct PhysicsWorld::Impl {
     ~Impl();
 
     ecs::Registry& registry;
+    const PhysicsWorld* owner = nullptr;  // what the queries take
     PhysicsSettings settings;
     btDefaultCollisionConfiguration configuration;
     btCollisionDispatcher dispatcher{&configuration};
@@ -86,6 +87,7 @@ struct PhysicsWorld::Impl {
     void observeContacts();  // contact_observation.cpp
     void observeTriggers();
     void applyGravity(BodyRecord& record);
+    void moveCharacters(float h);  // character_motion.cpp
 
     // Says a problem once per entity and message, naming the entity.
     void report(ecs::Entity entity, const std::string& message, bool error);
