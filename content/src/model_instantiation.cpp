@@ -85,6 +85,8 @@ std::vector<ecs::Entity> instantiateModel(ecs::Registry& registry, const Model& 
         if (node.camera >= 0 && size_t(node.camera) < model.cameras.size()) {
             registry.emplace<Camera>(e, model.cameras[node.camera].camera);
         }
+        if (node.rigidBody) registry.emplace<RigidBody>(e, *node.rigidBody);
+        if (node.collider) registry.emplace<Collider>(e, *node.collider);
         created.push_back(e);
         nodeEntities[static_cast<std::size_t>(nodeIndex)] = e;
         for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {

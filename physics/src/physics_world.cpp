@@ -1,6 +1,7 @@
 #include "candela/physics/physics_world.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "bullet_math.h"
@@ -56,7 +57,11 @@ void PhysicsWorld::Impl::step() {
     }
     const auto h = static_cast<btScalar>(settings.stepSeconds);
     moveCharacters(h);
+    const auto start = std::chrono::steady_clock::now();
     world.stepSimulation(h, 0, h);  // no substeps: exactly one step of h
+    timings.simulate +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++timings.steps;
     ++steps;
     for (auto& record : records) {
         if (record->type() == content::BodyType::Dynamic) {
@@ -68,6 +73,8 @@ void PhysicsWorld::Impl::step() {
 }
 
 void PhysicsWorld::Impl::beginEvents() {
+    timings = {};
+    updateStart = std::chrono::steady_clock::now();
     events.contacts.clear();
     events.triggers.clear();
     contacts.beginUpdate();
@@ -77,6 +84,9 @@ void PhysicsWorld::Impl::beginEvents() {
 void PhysicsWorld::Impl::endEvents() {
     contacts.emitContacts(events.contacts);
     triggers.emitTriggers(events.triggers);
+    const double total =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - updateStart).count();
+    timings.integration = total - timings.simulate;
 }
 
 PhysicsWorld::PhysicsWorld(ecs::Registry& registry, PhysicsSettings settings)
@@ -174,6 +184,10 @@ PhysicsCounts PhysicsWorld::counts() const {
     }
     counts.steps = impl_->steps;
     return counts;
+}
+
+PhysicsTimings PhysicsWorld::lastTimings() const {
+    return impl_->timings;
 }
 
 double PhysicsWorld::leftoverSeconds() const {

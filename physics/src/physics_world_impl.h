@@ -2,6 +2,7 @@
 // PhysicsWorld's Bullet side, shared by the world's files and the queries.
 #include <btBulletDynamicsCommon.h>
 
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -77,6 +78,8 @@ struct PhysicsWorld::Impl {
     content::Diagnostics diagnostics;
     std::set<std::pair<std::uint64_t, std::string>> reported;  // (entity, message) said once
     double leftover = 0.0;
+    PhysicsTimings timings;
+    std::chrono::steady_clock::time_point updateStart;
     std::uint64_t steps = 0;
 
     void sync();  // body_sync.cpp

@@ -10,8 +10,10 @@
 #include "candela/content/hair.h"
 #include "candela/content/light_texture.h"
 #include "candela/content/light_units.h"
+#include "candela/content/model_instantiation.h"
 #include "candela/content/png_writer.h"
 #include "candela/content/procedural_mesh.h"
+#include "candela/ecs/registry.h"
 #include "gltf_test_documents.h"
 #include "test_paths.h"
 
@@ -628,6 +630,57 @@ TEST(GltfFeatures, GeneratedHairIsDeterministicAndRootedOnTheSurface) {
         EXPECT_FLOAT_EQ(a.rootToTip[4 * s], 0.0f);
         EXPECT_FLOAT_EQ(a.rootToTip[4 * s + 3], 1.0f);
     }
+}
+
+}  // namespace
+}  // namespace candela::content
+
+namespace candela::content {
+namespace {
+
+// Issue 46: a node's extras.rigidBody and extras.collider read as a scene file spells them,
+// and become components when the model is instantiated.
+TEST(GltfFeatures, NodeExtrasDescribeRigidBodiesAndColliders) {
+    json doc = testing::quadDocument();
+    doc["nodes"][0]["extras"] = {
+        {"rigidBody", {{"type", "dynamic"}, {"mass", 2.0}, {"restitution", 0.5}}},
+        {"collider", {{"shape", "convexHull"}}}};
+    doc["nodes"].push_back(
+        {{"name", "ground"},
+         {"extras", {{"collider", {{"shape", "box"}, {"halfExtents", {5, 0.1, 5}}}}}}});
+    doc["scenes"][0]["nodes"] = {0, 1};
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    EXPECT_TRUE(diagnostics.messages.empty()) << diagnostics.toString();
+    ASSERT_TRUE(m->nodes[0].rigidBody && m->nodes[0].collider);
+    EXPECT_EQ(m->nodes[0].rigidBody->mass, 2.0f);
+    EXPECT_EQ(m->nodes[0].collider->shape, ColliderShape::ConvexHull);
+    EXPECT_FALSE(m->nodes[1].rigidBody);
+    ASSERT_TRUE(m->nodes[1].collider && m->nodes[1].collider->halfExtents);
+    EXPECT_EQ(m->nodes[1].collider->halfExtents->x, 5.0f);
+    ecs::Registry registry;
+    const std::vector<ecs::Entity> made = instantiateModel(registry, *m);
+    ASSERT_EQ(made.size(), 2u);
+    EXPECT_TRUE(registry.has<RigidBody>(made[0]));
+    EXPECT_TRUE(registry.has<Collider>(made[0]));
+    EXPECT_TRUE(registry.has<Collider>(made[1]));
+    EXPECT_FALSE(registry.has<RigidBody>(made[1]));
+}
+
+TEST(GltfFeatures, BadPhysicsExtrasNameTheNodeAndKey) {
+    json doc = testing::quadDocument();
+    doc["nodes"][0]["extras"] = {{"collider", {{"shape", "sphere"}, {"radius", -1}}},
+                                 {"rigidBody", {{"mass", -5}}}};
+    Diagnostics diagnostics;
+    auto m = loadJson(doc, diagnostics);
+    ASSERT_TRUE(m) << diagnostics.toString();
+    const std::string text = diagnostics.toString();
+    EXPECT_NE(text.find("nodes[0].extras/collider/radius"), std::string::npos) << text;
+    EXPECT_NE(text.find("nodes[0].extras/rigidBody/mass"), std::string::npos) << text;
+    EXPECT_FALSE(m->nodes[0].collider) << "a shapeless collider is left out";
+    ASSERT_TRUE(m->nodes[0].rigidBody);
+    EXPECT_EQ(m->nodes[0].rigidBody->mass, 1.0f) << "clamped";
 }
 
 }  // namespace

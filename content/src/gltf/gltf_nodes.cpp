@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gltf_context.h"
+#include "gltf_physics_extras.h"
 #include "gltf_values.h"
 
 namespace candela::content::gltf {
@@ -226,6 +227,10 @@ void convertNodes(Context& context) {
                                            " does not exist");
         }
         node.weights = readMorphWeights(context, element, from.weights);
+        PhysicsExtras physics =
+            readPhysicsExtras(from.extras_json_string, context.file, element, context.diagnostics);
+        node.rigidBody = physics.rigidBody;
+        node.collider = physics.collider;
     }
     buildHierarchy(context);
     chooseRoots(context);

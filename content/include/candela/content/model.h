@@ -5,12 +5,15 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "candela/content/animation.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/collider.h"
 #include "candela/content/components/light.h"
+#include "candela/content/components/rigid_body.h"
 #include "candela/content/hair.h"
 #include "candela/content/image.h"
 #include "candela/content/material.h"
@@ -91,6 +94,9 @@ struct Node {
     std::int32_t light = kNoIndex;   // into Model::lights
     std::int32_t skin = kNoIndex;    // into Model::skins; set only when the mesh can use it
     std::vector<float> weights;      // the node's morph weights; empty: the mesh's defaults
+    // extras.rigidBody and extras.collider, as a scene file spells them (physics/README.md).
+    std::optional<RigidBody> rigidBody;
+    std::optional<Collider> collider;
 };
 
 struct NamedCamera {

@@ -54,6 +54,15 @@ struct PhysicsCounts {
     std::uint64_t steps = 0;         // fixed steps taken since the world was made
 };
 
+// Where the last update()'s time went, in seconds (steady clock): Bullet's own steps, and what
+// the ECS integration adds (bodies synced from components, poses and velocities written back,
+// events and character moves).
+struct PhysicsTimings {
+    double simulate = 0;
+    double integration = 0;
+    std::uint32_t steps = 0;  // fixed steps the update took
+};
+
 class PhysicsWorld {
 public:
     explicit PhysicsWorld(ecs::Registry& registry, PhysicsSettings settings = {});
@@ -83,6 +92,7 @@ public:
 
     std::optional<BodyState> bodyState(ecs::Entity entity) const;
     PhysicsCounts counts() const;
+    PhysicsTimings lastTimings() const;
     // Seconds of simulated time not yet stepped (0 <= leftover < stepSeconds).
     double leftoverSeconds() const;
 
