@@ -20,27 +20,15 @@ btScalar combinedFriction(const btCollisionObject* a, const btCollisionObject* b
     return std::sqrt(a->getFriction() * b->getFriction());
 }
 
-// Bullet's 10 let a stack of ten unit boxes lean 4 cm in 5 s, and twelve heavy planks 8 cm at
-// 20; at 50 every stack the tests build stays within 7 mm (motion_test.cpp).
-constexpr int kSolverIterations = 50;
-constexpr btScalar kSplitImpulseDepth = -0.005f;  // metres (negative: penetrating)
-
 }  // namespace
 
 PhysicsWorld::Impl::Impl(ecs::Registry& r, PhysicsSettings s) : registry(r), settings(s) {
     gCalculateCombinedRestitutionCallback = &combinedRestitution;
     gCalculateCombinedFrictionCallback = &combinedFriction;
     world.setGravity(toBullet(settings.gravity));
-    btContactSolverInfo& solverInfo = world.getSolverInfo();
-    // Penetrations deeper than 5 mm are pushed out by a separate position pass (split
-    // impulse), not by extra velocity. Bullet's default does so only past 4 cm: a ball landing
-    // 1-4 cm deep at 60 Hz bounced 15-20% higher than its restitution allows. Shallower
-    // (resting) contacts keep Baumgarte's velocity term, which is what holds a stack still.
-    solverInfo.m_splitImpulse = 1;
-    solverInfo.m_splitImpulsePenetrationThreshold = kSplitImpulseDepth;
-    solverInfo.m_numIterations = kSolverIterations;
     // Two friction directions per contact: a stack of ten boxes leaned 2.4 cm in 5 s with one.
-    solverInfo.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+    world.getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+    world.getSolverInfo().m_splitImpulse = 1;
 }
 
 // Bullet's world walks its objects when it goes: they leave it first.
@@ -115,7 +103,15 @@ void PhysicsWorld::setSettings(const PhysicsSettings& settings) {
         w.settings.gravity = {0.0f, -9.81f, 0.0f};
     }
     w.settings.maxStepsPerUpdate = std::max<std::uint32_t>(1, w.settings.maxStepsPerUpdate);
+    w.settings.solverIterations = std::clamp(w.settings.solverIterations, 1, 1000);
+    if (!(w.settings.splitImpulseDepth >= 0) || !std::isfinite(w.settings.splitImpulseDepth)) {
+        w.settings.splitImpulseDepth = PhysicsSettings{}.splitImpulseDepth;
+    }
     w.world.setGravity(toBullet(w.settings.gravity));
+    btContactSolverInfo& solver = w.world.getSolverInfo();
+    solver.m_numIterations = w.settings.solverIterations;
+    // Bullet compares the signed distance (negative: penetrating) with it.
+    solver.m_splitImpulsePenetrationThreshold = -w.settings.splitImpulseDepth;
     for (auto& record : w.records)
         w.applyGravity(*record);
 }

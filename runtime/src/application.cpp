@@ -28,6 +28,7 @@
 #include "candela/runtime/sky_loader.h"
 #include "candela/runtime/window.h"
 #include "frame_settings.h"
+#include "physics_debug_view.h"
 #include "window_surface.h"
 
 namespace candela::runtime {
@@ -102,7 +103,8 @@ struct Session {
     std::vector<std::filesystem::path> capturesMissed;
     int exitCode = kExitOk;
     SkyLoader sky;
-    AtmosphereSun sun;  // the atmosphere's sun among the frame's lights
+    AtmosphereSun sun;              // the atmosphere's sun among the frame's lights
+    PhysicsDebugView physicsDebug;  // --physics-debug's wires
 };
 
 struct SystemEntry {
@@ -529,6 +531,10 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                 float aspect = float(s.renderer->width()) / float(s.renderer->height());
                 if (!s.lightTable) s.lightTable = std::make_unique<LightTable>(world->registry);
                 extractFrame(world->registry, *s.lightTable, *s.resources, aspect, s.extracted);
+                if (options.physicsDebug && world->hasPhysics()) {
+                    s.physicsDebug.appendTo(world->physics(), s.extracted.camera.ev100,
+                                            s.extracted.wires);
+                }
                 frame.scene.camera = s.extracted.camera;
                 frame.scene.draws = s.extracted.draws;
                 frame.scene.wires = s.extracted.wires;

@@ -178,6 +178,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  which wins over the quality preset's value\n" +
            renderSettingsUsage() +
            "  --culling on|off          frustum culling of draws (off: the reference)\n"
+           "  --physics-debug           draw every collider and contact point as wires\n"
            "  --fog SIGMA_S[,SIGMA_A[,G]]   a uniform medium (1/m, Henyey-Greenstein g),\n"
            "                            replacing the scene's fog\n"
            "  --atmosphere              a physically based sky (Earth's) instead of the EXR sky\n"
@@ -274,6 +275,8 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
             if (!value() || !parseChoice(v, kIbls, options.ibl)) {
                 return fail("--ibl needs split-sum, mobile or reference, got '" + v + "'");
             }
+        } else if (arg == "--physics-debug") {
+            options.physicsDebug = true;
         } else if (arg == "--culling") {
             if (!value() || (v != "on" && v != "off"))
                 return fail("--culling needs on or off, got '" + v + "'");

@@ -145,7 +145,11 @@ physics::PhysicsWorld& SceneWorld::physics() {
 void SceneWorld::stepPhysics(double deltaSeconds) {
     if (!physics_ && registry.view<content::Collider>().empty()) return;
     physics::PhysicsWorld& world = physics();
-    world.update(deltaSeconds);
+    if (simulatePhysics) {
+        world.update(deltaSeconds);
+    } else {
+        world.sync();
+    }
     content::Diagnostics& said = world.diagnostics();
     for (const content::Diagnostic& d : said.messages)
         std::fprintf(stderr, "%s\n", content::formatDiagnostic(d).c_str());

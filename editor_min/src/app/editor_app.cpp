@@ -77,6 +77,7 @@ private:
     // edits it is replaced here, before the old world goes.
     void show(OpenedScene opened) {
         app_.setClearRadiance(opened.background);
+        opened.world->simulatePhysics = false;  // edited, not played: bodies stay put
         app_.setWorld(std::move(opened.world));
         scene_ = std::move(opened.scene);
         savePath_ = std::move(opened.savePath);
@@ -185,6 +186,7 @@ int runEditor(const EditorOptions& options) {
     appOptions.height = options.height;
     appOptions.frames = options.frames;
     appOptions.validation = options.validation;
+    appOptions.physicsDebug = options.physicsDebug;
     // Declared first: the application (and the world it owns) outlives the editor's model.
     runtime::Application app(std::move(appOptions));
     Editor editor(app, std::move(*initial), std::move(script));

@@ -22,7 +22,7 @@ bool parseUnsigned(std::string_view text, uint32_t& out) {
 
 std::string editorUsage() {
     return "usage: candela-editor [<scene.json|.gltf|.glb>] [--script FILE] [--size WxH]\n"
-           "                      [--frames N] [--validation off|on|require]\n";
+           "                      [--frames N] [--validation off|on|require] [--physics-debug]\n";
 }
 
 std::optional<EditorOptions> parseEditorOptions(int argc, const char* const* argv,
@@ -71,6 +71,8 @@ std::optional<EditorOptions> parseEditorOptions(int argc, const char* const* arg
             }
             options.width = w;
             options.height = h;
+        } else if (arg == "--physics-debug") {
+            options.physicsDebug = true;
         } else if (arg == "--validation") {
             const char* v = value(arg);
             if (!v) return std::nullopt;

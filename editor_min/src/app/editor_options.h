@@ -18,6 +18,7 @@ struct EditorOptions {
     uint32_t height = 720;
     uint32_t frames = 0;  // 0: until the window closes (or the script quits)
     render::ValidationMode validation = render::ValidationMode::IfPresent;
+    bool physicsDebug = false;  // --physics-debug: colliders drawn as wires (the runtime's flag)
 };
 
 // Parses argv; nullopt with `error` set on bad arguments, or when --help was asked (`error`

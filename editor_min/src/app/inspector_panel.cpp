@@ -14,10 +14,12 @@
 #include "candela/content/components/animation.h"
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/content/components/rigid_body.h"
 #include "candela/content/light_texture.h"
 #include "candela/content/light_types.h"
 #include "candela/content/model.h"
@@ -255,6 +257,101 @@ void drawFog(EditorScene& scene, ecs::Entity e) {
     }
 }
 
+// Opens a component's section with a context menu to remove it; false when closed or removed.
+template <class T>
+bool componentHeader(EditorScene& scene, ecs::Entity e, const char* title, const char* remove) {
+    const bool open = ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen);
+    if (ImGui::BeginPopupContextItem(title)) {
+        if (ImGui::MenuItem(remove)) scene.execute(removeComponent<T>(scene, e, remove));
+        ImGui::EndPopup();
+        return false;
+    }
+    return open;
+}
+
+// How the entity moves under physics (issue 46); values past the loader's rules are refused
+// or clamped by commit(). The simulation's own state (velocities, sleeping) is not edited.
+void drawRigidBody(EditorScene& scene, ecs::Entity e) {
+    const auto* current = scene.registry().tryGet<content::RigidBody>(e);
+    if (!current ||
+        !componentHeader<content::RigidBody>(scene, e, "Rigid body", "Remove Rigid Body")) {
+        return;
+    }
+    content::RigidBody b = *current;
+    const char* types[] = {"Static", "Dynamic", "Kinematic"};
+    int type = int(b.type);
+    const bool typeChanged = ImGui::Combo("Type", &type, types, 3);
+    b.type = content::BodyType(type);
+    commit(scene, e, typeChanged, b, "Set Body Type");
+    commit(scene, e, ImGui::DragFloat("Mass", &b.mass, 0.05f, 0.001f, 1.0e6f, "%.3f kg"), b,
+           "Set Mass");
+    commit(scene, e, ImGui::DragFloat("Friction", &b.friction, 0.01f, 0.0f, 2.0f), b,
+           "Set Friction");
+    commit(scene, e, ImGui::SliderFloat("Restitution", &b.restitution, 0.0f, 1.0f), b,
+           "Set Restitution");
+    commit(scene, e, ImGui::SliderFloat("Linear damping", &b.linearDamping, 0.0f, 1.0f), b,
+           "Set Linear Damping");
+    commit(scene, e, ImGui::SliderFloat("Angular damping", &b.angularDamping, 0.0f, 1.0f), b,
+           "Set Angular Damping");
+    commit(scene, e, ImGui::DragFloat("Gravity scale", &b.gravityScale, 0.01f, -10.0f, 10.0f), b,
+           "Set Gravity Scale");
+    commit(scene, e, ImGui::Checkbox("Can sleep", &b.canSleep), b, "Set Can Sleep");
+    commit(scene, e, ImGui::Checkbox("Continuous collision", &b.continuousCollision), b,
+           "Set Continuous Collision");
+}
+
+// The shape the entity collides with: sizes left unset fit the builtin mesh of the shape's
+// name; a check box sets one explicitly.
+void drawCollider(EditorScene& scene, ecs::Entity e) {
+    const auto* current = scene.registry().tryGet<content::Collider>(e);
+    if (!current || !componentHeader<content::Collider>(scene, e, "Collider", "Remove Collider")) {
+        return;
+    }
+    content::Collider c = *current;
+    const char* shapes[] = {"Sphere", "Box", "Capsule", "Cylinder", "Convex hull", "Triangle mesh"};
+    int shape = int(c.shape);
+    const bool shapeChanged = ImGui::Combo("Shape", &shape, shapes, 6);
+    c.shape = content::ColliderShape(shape);
+    commit(scene, e, shapeChanged, c, "Set Collider Shape");
+    const auto optionalSize = [&](const char* label, std::optional<float>& size, float fallback) {
+        bool set = size.has_value();
+        if (ImGui::Checkbox(label, &set)) {
+            size = set ? std::optional(fallback) : std::nullopt;
+            commit(scene, e, true, c, "Set Collider Size");
+        }
+        if (size) {
+            ImGui::SameLine();
+            ImGui::PushID(label);
+            commit(scene, e, ImGui::DragFloat("##size", &*size, 0.01f, 1e-3f, 1e4f, "%.3f m"), c,
+                   "Set Collider Size");
+            ImGui::PopID();
+        }
+    };
+    using content::ColliderShape;
+    if (c.shape == ColliderShape::Box) {
+        bool set = c.halfExtents.has_value();
+        if (ImGui::Checkbox("Half extents", &set)) {
+            c.halfExtents =
+                set ? std::optional(content::kDefaultColliderHalfExtents) : std::nullopt;
+            commit(scene, e, true, c, "Set Collider Size");
+        }
+        if (c.halfExtents) {
+            commit(scene, e,
+                   ImGui::DragFloat3("##half extents", &c.halfExtents->x, 0.01f, 1e-3f, 1e4f,
+                                     "%.3f m"),
+                   c, "Set Collider Size");
+        }
+    } else if (c.shape != ColliderShape::ConvexHull && c.shape != ColliderShape::TriangleMesh) {
+        optionalSize("Radius", c.radius, content::kDefaultColliderRadius);
+        if (c.shape != ColliderShape::Sphere) {
+            optionalSize("Height", c.height,
+                         c.shape == ColliderShape::Capsule ? content::kDefaultCapsuleHeight
+                                                           : content::kDefaultCylinderHeight);
+        }
+    }
+    commit(scene, e, ImGui::Checkbox("Trigger", &c.trigger), c, "Set Trigger");
+}
+
 // The physically based sky (issue 16): the sun's time of day and place, the ground albedo and
 // the aerosol haze; the rest (Earth's coefficients) is left to the scene file. Values past the
 // loader's rules are refused or clamped by commit().
@@ -457,6 +554,12 @@ void drawAddComponent(EditorScene& scene, ecs::Entity e) {
         if (!scene.registry().has<content::Atmosphere>(e) && ImGui::MenuItem("Atmosphere")) {
             scene.execute(setComponent(scene, e, content::Atmosphere{}, "Add Atmosphere"));
         }
+        if (!scene.registry().has<content::Collider>(e) && ImGui::MenuItem("Collider")) {
+            scene.execute(setComponent(scene, e, content::Collider{}, "Add Collider"));
+        }
+        if (!scene.registry().has<content::RigidBody>(e) && ImGui::MenuItem("Rigid body")) {
+            scene.execute(setComponent(scene, e, content::RigidBody{}, "Add Rigid Body"));
+        }
         ImGui::EndPopup();
     }
 }
@@ -528,6 +631,8 @@ void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
     if (scene.registry().valid(e)) drawCamera(scene, e);
     if (scene.registry().valid(e)) drawFog(scene, e);
     if (scene.registry().valid(e)) drawAtmosphere(scene, e);
+    if (scene.registry().valid(e)) drawRigidBody(scene, e);
+    if (scene.registry().valid(e)) drawCollider(scene, e);
     if (scene.registry().valid(e)) drawMaterials(scene, e);
     if (scene.registry().valid(e)) drawAnimation(scene, e);
     if (scene.registry().valid(e)) drawAddComponent(scene, e);

@@ -40,6 +40,14 @@ EditCheck checkEdit(content::Atmosphere& value) {
     return fromProblems(content::validateAtmosphere(value));
 }
 
+EditCheck checkEdit(content::RigidBody& value) {
+    return fromProblems(content::validateRigidBody(value));
+}
+
+EditCheck checkEdit(content::Collider& value) {
+    return fromProblems(content::validateCollider(value));
+}
+
 EditCheck checkEdit(ecs::LocalTransform& value) {
     const ecs::Quat& q = value.rotation;
     return fromProblems(content::validateRotation(std::array<float, 4>{q.x, q.y, q.z, q.w}));

@@ -6,8 +6,10 @@
 
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/light.h"
+#include "candela/content/components/rigid_body.h"
 #include "candela/content/material.h"
 #include "candela/ecs/transform.h"
 
@@ -25,6 +27,8 @@ EditCheck checkEdit(content::Fog& value);
 EditCheck checkEdit(content::Atmosphere& value);
 EditCheck checkEdit(ecs::LocalTransform& value);
 EditCheck checkEdit(content::Material& value);
+EditCheck checkEdit(content::RigidBody& value);
+EditCheck checkEdit(content::Collider& value);
 
 // Components without rules (names, ...) are always accepted.
 template <class T>

@@ -98,6 +98,9 @@ std::string toMarkdown(const Report& report) {
         for (const std::string& note : report.notes)
             out << "- " << note << "\n";
     }
+    out << "\n## Beyond the renderer\n\n- Physics: the Bullet solver's settings against stack "
+           "drift, bounce height and step cost, and the ECS integration beside plain Bullet: "
+           "[physics-speed-vs-error.md](physics-speed-vs-error.md) (`scripts/physics-report`).\n";
     return out.str();
 }
 

@@ -64,6 +64,9 @@ struct ApplicationOptions {
     content::RenderSettingChoices settings;
     // --culling off: every view records every draw (RendererOptions::culling's reference).
     bool culling = true;
+    // --physics-debug: every collider (green, triggers yellow) and contact point (red) drawn
+    // as wires over the scene (runtime/src/physics_debug_view.h).
+    bool physicsDebug = false;
     // --fog SIGMA_S[,SIGMA_A[,G]]: a uniform medium replacing the scene's Fog (or adding one).
     std::optional<content::Fog> fog;
     // --atmosphere: the default Earth atmosphere for a scene without an Atmosphere component
@@ -89,8 +92,8 @@ struct ApplicationOptions {
     // --size WxH, --input SCRIPT, --capture FILE.png|.exr (repeats), --stats FILE.json,
     // --step SECONDS, --validation, --lights, --light-assign, --frame-graph, --env, --ibl,
     // --quality, a flag per render setting (content/render_setting_table.h: --aa, --ssr...),
-    // --culling, --fog, --atmosphere, --sun-elevation, --time-of-day and the light shafts'
-    // parameters.
+    // --culling, --physics-debug, --fog, --atmosphere, --sun-elevation, --time-of-day and the light
+    // shafts' parameters.
     // --help prints the usage to stdout; a bad flag prints "<program>: <problem>" and the
     // usage to stderr. Either way the result holds no options and the exit code to return:
     //

@@ -95,7 +95,15 @@ public:
     // Games ask it queries (physics_queries.h) and read its events.
     physics::PhysicsWorld& physics();
     bool hasPhysics() const { return physics_ != nullptr; }
+    // The last physics update's contacts and trigger overlaps; null before the first. Safe
+    // from systems that run side by side (physics() may make the world; this never does).
+    const physics::PhysicsEvents* physicsEvents() const {
+        return physics_ ? &physics_->events() : nullptr;
+    }
     physics::PhysicsSettings physicsSettings;
+    // False (the editor): bodies follow their components, for queries and --physics-debug,
+    // but nothing moves on its own.
+    bool simulatePhysics = true;
     // Application runs this every frame before transform propagation: once any entity has a
     // Collider, the physics world steps for `deltaSeconds` and its problems go to stderr.
     void stepPhysics(double deltaSeconds);
