@@ -1,6 +1,7 @@
 // minimal-game: steer the white ball with WASD and touch the four orbiting lights; each touch
 // scores a point and knocks that light ahead along its orbit. The whole game is this file, the
-// level (level.scene.json) and a CMakeLists.txt of find_package(Candela).
+// level (level.scene.json: walls, and lights that are trigger colliders) and a CMakeLists.txt
+// of find_package(Candela).
 //
 //   minimal-game                                  # a window (headless without a display)
 //   minimal-game --headless --frames 150 --input replays/collect.input --capture shot.png
@@ -13,6 +14,7 @@
 #include "candela/content/components/name.h"
 #include "candela/content/game_data.h"
 #include "candela/ecs/transform.h"
+#include "candela/physics/character_controller.h"
 #include "candela/runtime/application.h"
 #include "candela/runtime/debug_text.h"
 #include "candela/runtime/exit_code.h"
@@ -53,6 +55,11 @@ int main(int argc, char** argv) {
         });
     for (auto& [e, orbit] : orbiters)
         registry.emplace<Orbit>(e, orbit);
+    if (ball.isNull()) return runtime::kExitBadArguments;
+    physics::CharacterController walker;  // walks the ball; the level's walls stop it
+    walker.radius = 0.5f;
+    walker.height = 1.0f;
+    registry.emplace<physics::CharacterController>(ball, walker);
 
     app.addSystem("orbit", [](runtime::SceneWorld& world, const runtime::FrameContext& frame) {
         world.registry.view<ecs::LocalTransform, Orbit>().each([&](ecs::Entity e,
@@ -69,24 +76,15 @@ int main(int argc, char** argv) {
         const runtime::InputState& keys = frame.keys();
         const ecs::Vec3 direction{float(keys.down(Key::D)) - float(keys.down(Key::A)), 0.0f,
                                   float(keys.down(Key::S)) - float(keys.down(Key::W))};
-        const ecs::Vec3 at =
-            world.registry
-                .patch<ecs::LocalTransform>(
-                    ball,
-                    [&](ecs::LocalTransform& t) {  // patch: edit and mark changed in one
-                        t.position += direction * (5.0f * float(frame.deltaSeconds));
-                        t.position.x = std::fmax(-6.5f, std::fmin(6.5f, t.position.x));
-                        t.position.z = std::fmax(-6.5f, std::fmin(6.5f, t.position.z));
-                    })
-                .position;
-        world.registry.view<const ecs::LocalTransform, Orbit>().each(
-            [&](const ecs::LocalTransform& t, Orbit& o) {
-                const ecs::Vec3 d = t.position - at;
-                if (std::hypot(d.x, d.z) < 0.8f) {
-                    ++score;
-                    o.angle += 2.0f;  // knocked ahead along its orbit
-                }
-            });
+        world.registry.get<physics::CharacterController>(ball).desiredVelocity = direction * 5.0f;
+        // A light's trigger collider touched by the ball (physics, last frame).
+        for (const physics::TriggerEvent& touch : world.physics().events().triggers) {
+            if (touch.other != ball || touch.phase != physics::ContactPhase::Begin) continue;
+            if (Orbit* orbit = world.registry.tryGet<Orbit>(touch.trigger)) {
+                ++score;
+                orbit->angle += 2.0f;  // knocked ahead along its orbit
+            }
+        }
         runtime::debugText(world).print(16, 16, "SCORE " + std::to_string(score), {1, 0.9f, 0.3f});
     });
 

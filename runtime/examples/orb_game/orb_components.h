@@ -9,16 +9,16 @@
 
 namespace orb {
 
-// The glowing orb the player steers (a sphere light with an emissive sphere).
+// The glowing orb the player steers (a sphere light with an emissive sphere): a floating
+// physics body whose velocity the steering turns, bouncing off walls (restitution 0.5).
 struct Orb {
     float acceleration = 14.0f;  // m/s^2 while a direction key is held
     float maxSpeed = 5.0f;       // m/s
-    float radius = 0.3f;         // m, for collisions and pickups
-    candela::ecs::Vec3 velocity{};
+    float radius = 0.3f;         // m, its sphere collider
     candela::ecs::Vec3 start{};  // where a restart puts it
 };
 
-// A small light to collect.
+// A small light to collect: a trigger sphere the orb flies through.
 struct Pickup {
     std::int32_t points = 10;
     bool collected = false;
@@ -26,16 +26,11 @@ struct Pickup {
     float lumens = 150.0f;  // restored on restart (collected pickups go dark)
 };
 
-// A red sentinel patrolling between two points; touching it loses the game.
+// A red sentinel patrolling between two points, a trigger sphere; touching it loses the game.
 struct Hazard {
     candela::ecs::Vec3 from{}, to{};
     float speed = 1.0f;  // m/s along the patrol
     float radius = 0.3f;
-};
-
-// An axis-aligned block the orb bounces off (from the entity's transform: a unit box scaled).
-struct Wall {
-    candela::ecs::Vec3 min{}, max{};
 };
 
 enum class Status : std::uint8_t { Playing, Won, Lost };

@@ -5,8 +5,10 @@
 #include <vector>
 
 #include "candela/content/components/animation.h"
+#include "candela/content/components/collider.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
+#include "candela/content/components/rigid_body.h"
 #include "candela/content/components/scene_components.h"
 #include "candela/content/procedural_mesh.h"
 #include "candela/ecs/hierarchy.h"
@@ -48,6 +50,26 @@ float number(const json& j, const char* key, float fallback) {
     return it != j.end() && it->is_number() ? it->get<float>() : fallback;
 }
 
+candela::content::Collider sphere(float radius, bool trigger) {
+    candela::content::Collider collider;
+    collider.shape = candela::content::ColliderShape::Sphere;
+    collider.radius = radius;
+    collider.trigger = trigger;
+    return collider;
+}
+
+// Floating (no gravity), frictionless against the walls, keeping half its speed into a wall
+// when it bounces (the pair takes the larger restitution: the walls have none).
+candela::content::RigidBody floatingBody() {
+    candela::content::RigidBody body;
+    body.friction = 0.0f;
+    body.restitution = 0.5f;
+    body.gravityScale = 0.0f;
+    body.angularDamping = 0.0f;
+    body.canSleep = false;
+    return body;
+}
+
 bool point(const json& j, const char* key, Vec3& out) {
     auto it = j.find(key);
     if (it == j.end() || !it->is_array() || it->size() != 3) return false;
@@ -56,6 +78,9 @@ bool point(const json& j, const char* key, Vec3& out) {
     out = {(*it)[0].get<float>(), (*it)[1].get<float>(), (*it)[2].get<float>()};
     return true;
 }
+
+// A spark is collected when the orb's sphere touches this sphere around it.
+constexpr float kPickupReach = 0.15f;
 
 }  // namespace
 
@@ -110,6 +135,8 @@ std::string spawnLevel(candela::runtime::SceneWorld& world, const std::string& l
             orb.radius = number(t.data, "radius", orb.radius);
             orb.start = local->position;
             registry.emplace<Orb>(t.entity, orb);
+            registry.emplace<candela::content::Collider>(t.entity, sphere(orb.radius, false));
+            registry.emplace<candela::content::RigidBody>(t.entity, floatingBody());
             draws.emplace_back(t.entity, orbMesh);
             ++orbs;
         } else if (role == "pickup") {
@@ -120,6 +147,7 @@ std::string spawnLevel(candela::runtime::SceneWorld& world, const std::string& l
             if (!light) return levelName + ": a pickup needs a light (it is the thing to see)";
             pickup.lumens = light->lumens;
             registry.emplace<Pickup>(t.entity, pickup);
+            registry.emplace<candela::content::Collider>(t.entity, sphere(kPickupReach, true));
             // Each spark glows in its light's colour.
             const std::array<float, 3>& c = light->color;
             draws.emplace_back(t.entity,
@@ -132,11 +160,11 @@ std::string spawnLevel(candela::runtime::SceneWorld& world, const std::string& l
             hazard.speed = number(t.data, "speed", hazard.speed);
             hazard.radius = number(t.data, "radius", hazard.radius);
             registry.emplace<Hazard>(t.entity, hazard);
+            registry.emplace<candela::content::Collider>(t.entity, sphere(hazard.radius, true));
             draws.emplace_back(t.entity, hazardMesh);
         } else if (role == "wall") {
-            // The level draws walls with the unit glTF box, so the scale is the size.
-            Vec3 half = local->scale * 0.5f;
-            registry.emplace<Wall>(t.entity, Wall{local->position - half, local->position + half});
+            // The level draws walls with the unit box, which a box collider fits by itself.
+            registry.emplace<candela::content::Collider>(t.entity);
         } else if (role == "rules") {
             GameState state;
             state.timeLimitSeconds = number(t.data, "timeLimitSeconds", state.timeLimitSeconds);

@@ -6,13 +6,16 @@
 
 #include "candela/content/components/animation.h"
 #include "candela/content/components/light.h"
+#include "candela/content/components/rigid_body.h"
 #include "candela/ecs/transform.h"
+#include "candela/physics/physics_events.h"
 #include "orb_components.h"
 
 namespace orb {
 
 namespace {
 
+using candela::content::RigidBody;
 using candela::ecs::LocalTransform;
 using candela::ecs::Vec3;
 using candela::runtime::FrameContext;
@@ -61,11 +64,12 @@ void restartSystem(SceneWorld& world, const FrameContext& f) {
     *state =
         GameState{state->timeLimitSeconds, 0.0, 0, 0, state->total, restarts, Status::Playing, {}};
     auto& registry = world.registry;
-    registry.view<Orb, LocalTransform>().each(
-        [&](candela::ecs::Entity e, Orb& orb, LocalTransform& local) {
-            orb.velocity = {};
-            local.position = orb.start;
+    registry.view<const Orb, LocalTransform, RigidBody>().each(
+        [&](candela::ecs::Entity e, const Orb& orb, LocalTransform& local, RigidBody& body) {
+            body.linearVelocity = {};
+            local.position = orb.start;  // physics takes it as a teleport
             registry.markChanged<LocalTransform>(e);
+            registry.markChanged<RigidBody>(e);
         });
     registry.view<Pickup, LocalTransform>().each(
         [&](candela::ecs::Entity e, Pickup& pickup, LocalTransform& local) {
@@ -87,59 +91,24 @@ void steerSystem(SceneWorld& world, const FrameContext& f) {
     if (in.down(Key::S) || in.down(Key::Down)) push.z += 1.0f;
     if (in.down(Key::A) || in.down(Key::Left)) push.x -= 1.0f;
     if (in.down(Key::D) || in.down(Key::Right)) push.x += 1.0f;
-    const float dt = float(std::min(f.deltaSeconds, 0.1));  // a hitch must not tunnel walls
-    std::vector<Wall> walls;
-    world.registry.view<const Wall>().each([&](const Wall& w) { walls.push_back(w); });
-    world.registry.view<Orb, LocalTransform>().each(
-        [&](candela::ecs::Entity e, Orb& orb, LocalTransform& local) {
-            // Arcade steering: the velocity turns toward the wanted one (full speed along the
-            // held direction, or rest) by at most `acceleration` per second.
+    const float dt = float(std::min(f.deltaSeconds, 0.1));
+    world.registry.view<const Orb, RigidBody>().each(
+        [&](candela::ecs::Entity e, const Orb& orb, RigidBody& body) {
+            // Arcade steering: the velocity physics left (after any bounce off a wall) turns
+            // toward the wanted one (full speed along the held direction, or rest) by at most
+            // `acceleration` per second; physics moves the orb and bounces it.
             Vec3 wanted{};
             if (float len = candela::ecs::length(push); len > 0.0f) {
                 wanted = push * (orb.maxSpeed / len);
             }
-            Vec3 change = wanted - orb.velocity;
+            Vec3 velocity{body.linearVelocity.x, 0.0f, body.linearVelocity.z};
+            Vec3 change = wanted - velocity;
             const float maxChange = orb.acceleration * dt;
             if (float len = candela::ecs::length(change); len > maxChange) {
                 change *= maxChange / len;
             }
-            orb.velocity += change;
-            Vec3 p = local.position + orb.velocity * dt;
-            // Circle against boxes on the floor plane: push out along the shallower axis and
-            // bounce (half the speed kept).
-            for (const Wall& w : walls) {
-                const float cx = std::clamp(p.x, w.min.x, w.max.x);
-                const float cz = std::clamp(p.z, w.min.z, w.max.z);
-                const float dx = p.x - cx, dz = p.z - cz;
-                const float d2 = dx * dx + dz * dz;
-                if (d2 >= orb.radius * orb.radius) continue;
-                if (d2 > 1e-12f) {
-                    const float d = std::sqrt(d2);
-                    const float nx = dx / d, nz = dz / d;
-                    p.x = cx + nx * orb.radius;
-                    p.z = cz + nz * orb.radius;
-                    const float vn = orb.velocity.x * nx + orb.velocity.z * nz;
-                    if (vn < 0.0f) {
-                        orb.velocity.x -= 1.5f * vn * nx;
-                        orb.velocity.z -= 1.5f * vn * nz;
-                    }
-                } else {
-                    // Centre inside the box: leave by the nearest face.
-                    const float left = p.x - w.min.x, right = w.max.x - p.x;
-                    const float back = p.z - w.min.z, front = w.max.z - p.z;
-                    const float m = std::min({left, right, back, front});
-                    if (m == left)
-                        p.x = w.min.x - orb.radius, orb.velocity.x = 0.0f;
-                    else if (m == right)
-                        p.x = w.max.x + orb.radius, orb.velocity.x = 0.0f;
-                    else if (m == back)
-                        p.z = w.min.z - orb.radius, orb.velocity.z = 0.0f;
-                    else
-                        p.z = w.max.z + orb.radius, orb.velocity.z = 0.0f;
-                }
-            }
-            local.position = p;
-            world.registry.markChanged<LocalTransform>(e);
+            body.linearVelocity = velocity + change;
+            world.registry.markChanged<RigidBody>(e);
         });
 }
 
@@ -153,50 +122,44 @@ void patrolSystem(SceneWorld& world, const FrameContext&) {
         });
 }
 
+// The orb's trigger overlaps of the last physics update: with sparks (collected) and with
+// sentinels (caught).
+template <class F>
+void eachOrbTouch(SceneWorld& world, F&& touched) {
+    const candela::physics::PhysicsEvents* events = world.physicsEvents();
+    if (!events) return;
+    for (const candela::physics::TriggerEvent& e : events->triggers) {
+        if (e.phase != candela::physics::ContactPhase::End && world.registry.valid(e.other) &&
+            world.registry.has<Orb>(e.other)) {
+            touched(e.trigger);
+        }
+    }
+}
+
 void collectSystem(SceneWorld& world, const FrameContext&) {
     GameState* state = gameState(world);
     if (!state || state->status != Status::Playing) return;
-    Vec3 orbAt{};
-    float reach = 0.0f;
-    world.registry.view<const Orb, const LocalTransform>().each(
-        [&](const Orb& orb, const LocalTransform& local) {
-            orbAt = local.position;
-            reach = orb.radius + 0.15f;
+    eachOrbTouch(world, [&](candela::ecs::Entity e) {
+        Pickup* pickup = world.registry.tryGet<Pickup>(e);
+        if (!pickup || pickup->collected) return;
+        pickup->collected = true;
+        state->score += pickup->points;
+        state->collected += 1;
+        // Gone dark and out of sight below the floor (kept, so a restart brings it back).
+        world.registry.patch<LocalTransform>(e, [&](LocalTransform& local) {
+            local.position = pickup->home - Vec3{0.0f, 10.0f, 0.0f};
         });
-    world.registry.view<Pickup, LocalTransform>().each(
-        [&](candela::ecs::Entity e, Pickup& pickup, LocalTransform& local) {
-            if (pickup.collected) return;
-            Vec3 d = pickup.home - orbAt;
-            d.y = 0.0f;
-            if (candela::ecs::length(d) > reach) return;
-            pickup.collected = true;
-            state->score += pickup.points;
-            state->collected += 1;
-            // Gone dark and out of sight below the floor (kept, so a restart brings it back).
-            local.position = pickup.home - Vec3{0.0f, 10.0f, 0.0f};
-            world.registry.markChanged<LocalTransform>(e);
-            setLightLumens(world, e, 0.0f);
-        });
+        setLightLumens(world, e, 0.0f);
+    });
 }
 
 void refereeSystem(SceneWorld& world, const FrameContext& f) {
     GameState* state = gameState(world);
     if (!state || state->status != Status::Playing) return;
     state->elapsedSeconds += f.deltaSeconds;
-    Vec3 orbAt{};
-    float orbRadius = 0.0f;
-    world.registry.view<const Orb, const LocalTransform>().each(
-        [&](const Orb& orb, const LocalTransform& local) {
-            orbAt = local.position;
-            orbRadius = orb.radius;
-        });
     bool caught = false;
-    world.registry.view<const Hazard, const LocalTransform>().each(
-        [&](const Hazard& h, const LocalTransform& local) {
-            Vec3 d = local.position - orbAt;
-            d.y = 0.0f;
-            caught = caught || candela::ecs::length(d) < h.radius + orbRadius;
-        });
+    eachOrbTouch(world,
+                 [&](candela::ecs::Entity e) { caught = caught || world.registry.has<Hazard>(e); });
     if (state->collected == state->total) {
         state->status = Status::Won;
         state->reason = "all sparks collected";
@@ -264,18 +227,17 @@ void addOrbSystems(candela::runtime::Application& app) {
     // Each declares what it touches: the scheduler keeps the order below between systems that
     // share something one of them writes, and runs the rest side by side (animate and hud).
     app.addSystem("restart", Phase::Update, restartSystem)
-        .writes<GameState, Orb, Pickup, LocalTransform, Light>();
-    app.addSystem("steer", Phase::Update, steerSystem)
-        .reads<GameState, Wall>()
-        .writes<Orb, LocalTransform>();
+        .writes<GameState, Orb, Pickup, LocalTransform, Light, RigidBody>();
+    app.addSystem("steer", Phase::Update, steerSystem).reads<GameState, Orb>().writes<RigidBody>();
     app.addSystem("patrol", Phase::Update, patrolSystem)
         .reads<GameState, Hazard>()
         .writes<LocalTransform>();
+    // Both read the physics events of the last frame (physics runs alone in PostUpdate).
     app.addSystem("collect", Phase::Update, collectSystem)
         .reads<Orb>()
         .writes<GameState, Pickup, LocalTransform, Light>();
     app.addSystem("referee", Phase::Update, refereeSystem)
-        .reads<Orb, Hazard, LocalTransform>()
+        .reads<Orb, Hazard>()
         .writes<GameState, Light>();
     app.addSystem("mascot", Phase::Update, mascotSystem)
         .reads<GameState>()
