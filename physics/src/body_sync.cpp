@@ -2,11 +2,14 @@
 // components (PhysicsWorld::sync).
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "bullet_math.h"
 #include "candela/content/component_validation.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/ecs/hierarchy.h"
 #include "candela/ecs/transform.h"
 #include "physics_world_impl.h"
 
@@ -76,25 +79,72 @@ void PhysicsWorld::Impl::destroy(BodyRecord& record) {
     byEntity.erase(record.entity.bits());
 }
 
-void PhysicsWorld::Impl::removeStale() {
+void PhysicsWorld::Impl::removeStale(const std::set<std::uint64_t>& bodies) {
     const auto stale = [&](const std::unique_ptr<BodyRecord>& record) {
-        const bool gone =
-            !registry.valid(record->entity) || !registry.has<content::Collider>(record->entity);
+        const bool gone = !bodies.contains(record->entity.bits());
         if (gone) destroy(*record);
         return gone;
     };
     records.erase(std::remove_if(records.begin(), records.end(), stale), records.end());
 }
 
-void PhysicsWorld::Impl::sync() {
-    removeStale();
-    registry.view<const content::Collider>().each(
-        [&](ecs::Entity entity, const content::Collider& collider) {
-            syncEntity(entity, collider);
-        });
+ecs::Entity PhysicsWorld::Impl::bodyOwnerOf(ecs::Entity entity) const {
+    for (ecs::Entity up = ecs::parentOf(registry, entity); !up.isNull();
+         up = ecs::parentOf(registry, up)) {
+        if (registry.has<content::RigidBody>(up)) return up;
+    }
+    return ecs::kNullEntity;
 }
 
-void PhysicsWorld::Impl::syncEntity(ecs::Entity entity, const content::Collider& given) {
+// Every Collider is a body of its own, or a part of the body of its nearest ancestor with a
+// RigidBody (when it has none itself); a RigidBody without a Collider is a body of its parts.
+void PhysicsWorld::Impl::sync() {
+    std::vector<ecs::Entity> roots;
+    std::map<std::uint64_t, std::vector<BodyPart>> parts;  // by owner, in view order
+    registry.view<const content::Collider>().each([&](ecs::Entity entity,
+                                                      const content::Collider& collider) {
+        const ecs::Entity owner =
+            registry.has<content::RigidBody>(entity) ? ecs::kNullEntity : bodyOwnerOf(entity);
+        if (owner.isNull()) {
+            roots.push_back(entity);
+            return;
+        }
+        const std::optional<WorldPose> relative = poseRelativeTo(registry, entity, owner);
+        if (!relative || !finitePose(*relative)) {
+            report(entity,
+                   "transform: a collider part needs finite LocalTransforms up to "
+                   "its body; left out",
+                   true);
+            return;
+        }
+        content::Collider checked = collider;
+        bool rejected = false;
+        for (const content::ValueProblem& p : content::validateCollider(checked)) {
+            report(entity, "collider." + p.field + ": " + p.message, !p.clamped);
+            rejected = rejected || !p.clamped;
+        }
+        if (!rejected) {
+            parts[owner.bits()].push_back({entity, checked, *relative, meshOf(registry, entity)});
+        }
+    });
+    for (const auto& [owner, list] : parts) {
+        if (!registry.has<content::Collider>(ecs::Entity::fromBits(owner))) {
+            roots.push_back(ecs::Entity::fromBits(owner));
+        }
+    }
+    std::set<std::uint64_t> bodies;
+    for (const ecs::Entity root : roots)
+        bodies.insert(root.bits());
+    removeStale(bodies);
+    for (const ecs::Entity root : roots) {
+        auto found = parts.find(root.bits());
+        syncEntity(root, registry.tryGet<content::Collider>(root),
+                   found == parts.end() ? std::vector<BodyPart>{} : std::move(found->second));
+    }
+}
+
+void PhysicsWorld::Impl::syncEntity(ecs::Entity entity, const content::Collider* own,
+                                    std::vector<BodyPart> parts) {
     const auto found = byEntity.find(entity.bits());
     BodyRecord* existing = found == byEntity.end() ? nullptr : found->second;
     const auto drop = [&] {
@@ -113,13 +163,17 @@ void PhysicsWorld::Impl::syncEntity(ecs::Entity entity, const content::Collider&
         report(entity, "transform: not finite; the body stays where it was", true);
         return;
     }
-    content::Collider collider = given;
-    bool rejected = false;
-    for (const content::ValueProblem& p : content::validateCollider(collider)) {
-        report(entity, "collider." + p.field + ": " + p.message, !p.clamped);
-        rejected = rejected || !p.clamped;
+    std::optional<content::Collider> collider;
+    if (own) {
+        collider = *own;
+        bool rejected = false;
+        for (const content::ValueProblem& p : content::validateCollider(*collider)) {
+            report(entity, "collider." + p.field + ": " + p.message, !p.clamped);
+            rejected = rejected || !p.clamped;
+        }
+        if (rejected) collider.reset();
     }
-    if (rejected) {
+    if (!collider && parts.empty()) {
         drop();
         return;
     }
@@ -131,12 +185,15 @@ void PhysicsWorld::Impl::syncEntity(ecs::Entity entity, const content::Collider&
         }
     }
     const content::Mesh* mesh = meshOf(registry, entity);
-    if (existing && existing->collider == collider && sameSettings(existing->rigidBody, body) &&
+    const content::Collider& flags = collider ? *collider : parts.front().collider;
+    if (existing && existing->collider == flags && existing->ownCollider == collider.has_value() &&
+        existing->parts == parts && sameSettings(existing->rigidBody, body) &&
         sameScale(existing->scale, pose->scale) && existing->mesh == mesh) {
         applyGameWrites(*existing, body ? &*body : nullptr, *pose);
         return;
     }
-    std::unique_ptr<BodyRecord> made = make(entity, collider, body ? &*body : nullptr, *pose);
+    std::unique_ptr<BodyRecord> made = make(entity, collider ? &*collider : nullptr,
+                                            std::move(parts), body ? &*body : nullptr, *pose);
     if (!made) {
         drop();
         return;
@@ -154,21 +211,22 @@ void PhysicsWorld::Impl::syncEntity(ecs::Entity entity, const content::Collider&
 }
 
 std::unique_ptr<BodyRecord> PhysicsWorld::Impl::make(ecs::Entity entity,
-                                                     const content::Collider& collider,
+                                                     const content::Collider* own,
+                                                     std::vector<BodyPart> parts,
                                                      const content::RigidBody* rigidBody,
                                                      const WorldPose& pose) {
     auto record = std::make_unique<BodyRecord>();
     record->entity = entity;
-    record->collider = collider;
+    record->collider = own ? *own : parts.front().collider;
+    record->ownCollider = own != nullptr;
+    record->parts = std::move(parts);
     if (rigidBody) record->rigidBody = *rigidBody;
     record->scale = pose.scale;
     record->mesh = meshOf(registry, entity);
     const BodyType type = record->type();
-    std::string problem;
-    record->shape =
-        makeColliderShape(collider, pose.scale, record->mesh, type == BodyType::Dynamic, problem);
-    if (!problem.empty()) report(entity, "collider." + problem, !record->shape.shape);
+    record->shape = makeShape(*record, own, pose);
     if (!record->shape.shape) return nullptr;
+    const content::Collider& collider = record->collider;
 
     btCollisionShape* shape = record->shape.shape.get();
     const float mass = type == BodyType::Dynamic ? rigidBody->mass : 0.0f;
@@ -210,6 +268,48 @@ std::unique_ptr<BodyRecord> PhysicsWorld::Impl::make(ecs::Entity entity,
     record->previous = record->current = body.getWorldTransform();
     record->placed = pose;
     return record;
+}
+
+// The entity's own collider's shape, or a compound of it and its parts' shapes placed where the
+// parts are relative to the entity (its scale applied to their offsets and sizes).
+ShapeData PhysicsWorld::Impl::makeShape(BodyRecord& record, const content::Collider* own,
+                                        const WorldPose& pose) {
+    const bool dynamic = record.type() == BodyType::Dynamic;
+    std::string problem;
+    if (record.parts.empty()) {
+        ShapeData shape = makeColliderShape(*own, pose.scale, record.mesh, dynamic, problem);
+        if (!problem.empty()) report(record.entity, "collider." + problem, !shape.shape);
+        return shape;
+    }
+    ShapeData compound;
+    auto shape = std::make_unique<btCompoundShape>();
+    if (own) {
+        ShapeData itself = makeColliderShape(*own, pose.scale, record.mesh, dynamic, problem);
+        if (!problem.empty()) report(record.entity, "collider." + problem, !itself.shape);
+        if (itself.shape) {
+            shape->addChildShape(btTransform::getIdentity(), itself.shape.get());
+            record.childEntities.push_back(record.entity);
+            compound.children.push_back(std::move(itself));
+        }
+    }
+    const auto times = [](ecs::Vec3 a, ecs::Vec3 b) {
+        return ecs::Vec3{a.x * b.x, a.y * b.y, a.z * b.z};
+    };
+    for (const BodyPart& part : record.parts) {
+        problem.clear();
+        ShapeData piece = makeColliderShape(part.collider, times(pose.scale, part.relative.scale),
+                                            part.mesh, dynamic, problem);
+        if (!problem.empty()) report(part.entity, "collider." + problem, !piece.shape);
+        if (!piece.shape) continue;
+        shape->addChildShape(
+            toBullet(times(pose.scale, part.relative.position), part.relative.rotation),
+            piece.shape.get());
+        record.childEntities.push_back(part.entity);
+        compound.children.push_back(std::move(piece));
+    }
+    if (compound.children.empty()) return {};
+    compound.shape = std::move(shape);
+    return compound;
 }
 
 void PhysicsWorld::Impl::applyGravity(BodyRecord& record) {

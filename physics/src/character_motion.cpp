@@ -122,7 +122,7 @@ void PhysicsWorld::Impl::moveCharacters(float h) {
             }
             const float radius = std::clamp(c.radius, content::kMinColliderSize, 1e3f);
             const float height = std::max(c.height, 2 * radius);
-            Walker walker{*owner, {}, {}, std::clamp(c.skinWidth, 1e-4f, radius)};
+            Walker walker{*self, {}, {}, std::clamp(c.skinWidth, 1e-4f, radius)};
             walker.capsule.shape = content::ColliderShape::Capsule;
             walker.capsule.radius = radius;
             walker.capsule.height = height;

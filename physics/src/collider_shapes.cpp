@@ -56,7 +56,7 @@ ShapeData hullOf(const content::Mesh& mesh, ecs::Vec3 scale, std::string& proble
     hull->optimizeConvexHull();
     // Its faces: exact ray tests (ray_shape_intersection.h) and better contacts.
     hull->initializePolyhedralFeatures();
-    return {nullptr, std::move(hull)};
+    return {nullptr, std::move(hull), {}};
 }
 
 ShapeData triangleMeshOf(const content::Mesh& mesh, ecs::Vec3 scale, std::string& problem) {
@@ -83,7 +83,7 @@ ShapeData triangleMeshOf(const content::Mesh& mesh, ecs::Vec3 scale, std::string
             "shape: " + std::to_string(skipped) + " triangles with non-finite vertices skipped";
     }
     auto shape = std::make_unique<btBvhTriangleMeshShape>(triangles.get(), true);
-    return {std::move(triangles), std::move(shape)};
+    return {std::move(triangles), std::move(shape), {}};
 }
 
 }  // namespace
@@ -101,7 +101,7 @@ ShapeData makeColliderShape(const content::Collider& collider, ecs::Vec3 scale,
         case ColliderShape::Sphere: {
             const float r = radius * std::max(largest(scale.x, scale.y), std::fabs(scale.z));
             if (!positiveFinite(r)) break;
-            return {nullptr, std::make_unique<btSphereShape>(r)};
+            return {nullptr, std::make_unique<btSphereShape>(r), {}};
         }
         case ColliderShape::Box: {
             const ecs::Vec3 h = collider.halfExtents.value_or(content::kDefaultColliderHalfExtents);
@@ -117,7 +117,7 @@ ShapeData makeColliderShape(const content::Collider& collider, ecs::Vec3 scale,
                                                                  : half.z());
             auto box = std::make_unique<btBoxShape>(half);
             box->setMargin(margin);  // keeps the outer size (btBoxShape::setMargin)
-            return {nullptr, std::move(box)};
+            return {nullptr, std::move(box), {}};
         }
         case ColliderShape::Capsule:
         case ColliderShape::Cylinder: {
@@ -135,11 +135,12 @@ ShapeData makeColliderShape(const content::Collider& collider, ecs::Vec3 scale,
             if (capsule) {
                 // Bullet's height is between the two hemisphere centres.
                 return {nullptr,
-                        std::make_unique<btCapsuleShape>(r, std::max(0.0f, height - 2 * r))};
+                        std::make_unique<btCapsuleShape>(r, std::max(0.0f, height - 2 * r)),
+                        {}};
             }
             auto cylinder = std::make_unique<btCylinderShape>(btVector3(r, 0.5f * height, r));
             cylinder->setMargin(marginFor(std::min(r, 0.5f * height)));
-            return {nullptr, std::move(cylinder)};
+            return {nullptr, std::move(cylinder), {}};
         }
         case ColliderShape::ConvexHull:
         case ColliderShape::TriangleMesh:

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "candela/content/components/collider.h"
 #include "candela/content/model.h"
@@ -11,10 +12,12 @@
 
 namespace candela::physics {
 
-// A shape and what it points into (a triangle mesh's vertices), freed together.
+// A shape and what it points into (a triangle mesh's vertices, a compound's children), freed
+// together.
 struct ShapeData {
     std::unique_ptr<btTriangleMesh> triangles;
     std::unique_ptr<btCollisionShape> shape;
+    std::vector<ShapeData> children;
 };
 
 // The shape's size in metres once `scale` is applied: sizes that are zero, negative or not

@@ -39,24 +39,49 @@ struct RayCandidates final : btBroadphaseRayCallback {
     }
 };
 
-// Where the segment from..to enters `object`, as a fraction of its length: exact for the
-// primitives, Bullet's ray test for hulls and triangle meshes.
-std::optional<std::pair<btScalar, btVector3>> enterFraction(const btCollisionObject& object,
-                                                            const btVector3& from,
-                                                            const btVector3& to) {
-    const btTransform& pose = object.getWorldTransform();
+struct Entry {
+    btScalar fraction = 0;
+    btVector3 normal;
+    int child = -1;  // which child of a compound shape; -1: not a compound
+};
+
+// Where the segment from..to enters `shape` at `pose`, as a fraction of its length: exact for
+// the primitives and hulls, Bullet's ray test for triangle meshes.
+std::optional<Entry> enterShape(const btCollisionObject& object, const btCollisionShape& shape,
+                                const btTransform& pose, const btVector3& from,
+                                const btVector3& to) {
     const btTransform inverse = pose.inverse();
-    if (auto local = intersectPrimitive(*object.getCollisionShape(), inverse(from), inverse(to))) {
-        return std::pair{local->fraction, pose.getBasis() * local->normal};
+    if (auto local = intersectPrimitive(shape, inverse(from), inverse(to))) {
+        return Entry{local->fraction, pose.getBasis() * local->normal};
     }
-    if (isPrimitive(*object.getCollisionShape())) return std::nullopt;
+    if (isPrimitive(shape)) return std::nullopt;
     btCollisionWorld::ClosestRayResultCallback result(from, to);
     btCollisionWorld::rayTestSingle(btTransform(btQuaternion::getIdentity(), from),
                                     btTransform(btQuaternion::getIdentity(), to),
                                     const_cast<btCollisionObject*>(&object),
-                                    object.getCollisionShape(), pose, result);
+                                    const_cast<btCollisionShape*>(&shape), pose, result);
     if (!result.hasHit()) return std::nullopt;
-    return std::pair{result.m_closestHitFraction, result.m_hitNormalWorld.normalized()};
+    return Entry{result.m_closestHitFraction, result.m_hitNormalWorld.normalized()};
+}
+
+// A compound's nearest child entered, so a hit names the part's entity.
+std::optional<Entry> enterFraction(const btCollisionObject& object, const btVector3& from,
+                                   const btVector3& to) {
+    const btCollisionShape& shape = *object.getCollisionShape();
+    if (shape.getShapeType() != COMPOUND_SHAPE_PROXYTYPE) {
+        return enterShape(object, shape, object.getWorldTransform(), from, to);
+    }
+    const auto& compound = static_cast<const btCompoundShape&>(shape);
+    std::optional<Entry> nearest;
+    for (int i = 0; i < compound.getNumChildShapes(); ++i) {
+        const btTransform pose = object.getWorldTransform() * compound.getChildTransform(i);
+        auto entry = enterShape(object, *compound.getChildShape(i), pose, from, to);
+        if (entry && (!nearest || entry->fraction < nearest->fraction)) {
+            nearest = entry;
+            nearest->child = i;
+        }
+    }
+    return nearest;
 }
 
 std::vector<Hit> castRay(const PhysicsWorld& world, ecs::Vec3 origin, ecs::Vec3 direction,
@@ -73,9 +98,12 @@ std::vector<Hit> castRay(const PhysicsWorld& world, ecs::Vec3 origin, ecs::Vec3 
         if (!passes(filter, object)) continue;
         const auto entered = enterFraction(*object, from, to);
         if (!entered) continue;
-        const btVector3 point = from.lerp(to, entered->first);
-        hits.push_back({recordOf(object)->entity, fromBullet(point), fromBullet(entered->second),
-                        entered->first * span});
+        const btVector3 point = from.lerp(to, entered->fraction);
+        const BodyRecord& record = *recordOf(object);
+        const ecs::Entity entity =
+            entered->child >= 0 ? record.childEntities[std::size_t(entered->child)] : record.entity;
+        hits.push_back(
+            {entity, fromBullet(point), fromBullet(entered->normal), entered->fraction * span});
     }
     std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
         return a.distance != b.distance ? a.distance < b.distance : a.entity < b.entity;

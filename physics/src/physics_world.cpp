@@ -79,7 +79,7 @@ void PhysicsWorld::Impl::endEvents() {
 
 PhysicsWorld::PhysicsWorld(ecs::Registry& registry, PhysicsSettings settings)
     : impl_(std::make_unique<Impl>(registry, settings)) {
-    impl_->owner = this;
+    impl_->self = this;
     setSettings(settings);
 }
 

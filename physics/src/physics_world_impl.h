@@ -22,14 +22,34 @@
 
 namespace candela::physics {
 
+// A Collider on an entity without a RigidBody, below an ancestor that has one: a piece of
+// that ancestor's body (a compound shape).
+struct BodyPart {
+    ecs::Entity entity;
+    content::Collider collider;
+    WorldPose relative;  // to the body's entity (poseRelativeTo)
+    const content::Mesh* mesh = nullptr;
+
+    bool operator==(const BodyPart& o) const {
+        return entity == o.entity && collider == o.collider && mesh == o.mesh &&
+               relative.position == o.relative.position &&
+               relative.rotation == o.relative.rotation && relative.scale == o.relative.scale;
+    }
+};
+
 // One entity's Bullet object and what it was made from. The collision object's user pointer
 // points here, so a hit names its entity.
 struct BodyRecord {
     ecs::Entity entity;
     ShapeData shape;
     std::unique_ptr<btRigidBody> body;
-    // What the body was made from; a change to any of them makes it again.
+    // What the body was made from; a change to any of them makes it again. `collider` is the
+    // entity's own, or (a body of parts alone) its first part's, for the layer and trigger.
     content::Collider collider;
+    bool ownCollider = true;
+    std::vector<BodyPart> parts;
+    // Per child of a compound shape, the entity whose collider it is.
+    std::vector<ecs::Entity> childEntities;
     std::optional<content::RigidBody> rigidBody;  // the settings part (velocities ignored)
     ecs::Vec3 scale{1, 1, 1};
     const content::Mesh* mesh = nullptr;
@@ -60,7 +80,7 @@ struct PhysicsWorld::Impl {
     ~Impl();
 
     ecs::Registry& registry;
-    const PhysicsWorld* owner = nullptr;  // what the queries take
+    const PhysicsWorld* self = nullptr;  // what the queries take
     PhysicsSettings settings;
     btDefaultCollisionConfiguration configuration;
     btCollisionDispatcher dispatcher{&configuration};
@@ -95,10 +115,13 @@ struct PhysicsWorld::Impl {
     // Says a problem once per entity and message, naming the entity.
     void report(ecs::Entity entity, const std::string& message, bool error);
     void destroy(BodyRecord& record);
-    void removeStale();
-    void syncEntity(ecs::Entity entity, const content::Collider& collider);
-    std::unique_ptr<BodyRecord> make(ecs::Entity entity, const content::Collider& collider,
+    void removeStale(const std::set<std::uint64_t>& bodies);
+    void syncEntity(ecs::Entity entity, const content::Collider* own, std::vector<BodyPart> parts);
+    std::unique_ptr<BodyRecord> make(ecs::Entity entity, const content::Collider* own,
+                                     std::vector<BodyPart> parts,
                                      const content::RigidBody* rigidBody, const WorldPose& pose);
+    ShapeData makeShape(BodyRecord& record, const content::Collider* own, const WorldPose& pose);
+    ecs::Entity bodyOwnerOf(ecs::Entity entity) const;
     void applyGameWrites(BodyRecord& record, const content::RigidBody* rigidBody,
                          const WorldPose& pose);
 };

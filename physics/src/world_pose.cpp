@@ -10,10 +10,7 @@
 #include "candela/ecs/transform.h"
 
 namespace candela::physics {
-namespace {
 
-// Translation, rotation and per-axis scale of an affine matrix (shear, which only a
-// non-uniformly scaled parent of a rotated child has, is dropped).
 WorldPose decompose(const ecs::Mat4& m) {
     WorldPose pose;
     pose.position = m.translationPart();
@@ -34,7 +31,22 @@ WorldPose decompose(const ecs::Mat4& m) {
     return pose;
 }
 
-}  // namespace
+std::optional<WorldPose> poseRelativeTo(const ecs::Registry& registry, ecs::Entity entity,
+                                        ecs::Entity owner) {
+    const auto* local = registry.tryGet<ecs::LocalTransform>(entity);
+    if (!local) return std::nullopt;
+    ecs::Mat4 relative = local->matrix();
+    for (ecs::Entity link = ecs::parentOf(registry, entity); link != owner;
+         link = ecs::parentOf(registry, link)) {
+        const auto* linkLocal =
+            link.isNull() ? nullptr : registry.tryGet<ecs::LocalTransform>(link);
+        if (!linkLocal) return std::nullopt;
+        ecs::Mat4 composed;
+        ecs::multiplyByAffine(linkLocal->matrix(), relative, composed);
+        relative = composed;
+    }
+    return decompose(relative);
+}
 
 std::optional<WorldPose> worldPoseOf(const ecs::Registry& registry, ecs::Entity entity) {
     const auto* local = registry.tryGet<ecs::LocalTransform>(entity);

@@ -14,6 +14,15 @@ struct WorldPose {
     ecs::Vec3 scale{1.0f, 1.0f, 1.0f};
 };
 
+// Translation, rotation and per-axis scale of an affine matrix (shear, which only a
+// non-uniformly scaled parent of a rotated child has, is dropped).
+WorldPose decompose(const ecs::Mat4& m);
+
+// `entity`'s pose relative to its ancestor `owner`, from the LocalTransforms in between (which,
+// unlike world transforms, do not change as the owner moves). Nullopt when a link has none.
+std::optional<WorldPose> poseRelativeTo(const ecs::Registry& registry, ecs::Entity entity,
+                                        ecs::Entity owner);
+
 // A root entity's pose comes from its LocalTransform (what game code wrote this frame); a
 // child's from its parent's WorldTransform and its own LocalTransform. Nullopt when the
 // entity has no transform at all.

@@ -23,6 +23,7 @@ struct QueryFilter {
 };
 
 struct Hit {
+    // The collider's entity (a raycast names a compound body's part; a sweep names the body).
     ecs::Entity entity = ecs::kNullEntity;
     ecs::Vec3 point{};   // world space, on the surface hit
     ecs::Vec3 normal{};  // world space, unit, facing the ray or the moving shape
