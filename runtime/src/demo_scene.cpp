@@ -10,11 +10,13 @@
 #include "candela/content/components/animation.h"
 #include "candela/content/components/atmosphere.h"
 #include "candela/content/components/camera.h"
+#include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
 #include "candela/content/components/hair_growth.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/name.h"
+#include "candela/content/components/rigid_body.h"
 #include "candela/content/diagnostics.h"
 #include "candela/content/light_texture.h"
 #include "candela/content/procedural_mesh.h"
@@ -182,6 +184,48 @@ constexpr float kDoorHalfWidth = 2.0f, kDoorHeight = 3.6f;
 constexpr float kPowerLineZ = 22.0f;
 
 }  // namespace
+
+// Issue 46: three crates dropped askew onto one another (they tumble into a heap), a rubber
+// ball that bounces off them and a steel ball that rolls across the floor, with the floor as
+// their static collider. They come to rest in a few seconds and then sleep (no cost).
+template <class Draw>
+void addDemoProps(ecs::Registry& registry, Draw&& draw, int32_t crate, int32_t rubberBall,
+                  int32_t steelBall) {
+    content::Collider ground;
+    ground.halfExtents = ecs::Vec3{6.5f, 0.5f, 9.0f};
+    registry.emplace<content::Collider>(place(registry, "floor collider", {0.0f, -0.5f, -1.0f}),
+                                        ground);
+    content::RigidBody wood;
+    wood.mass = 8.0f;
+    wood.friction = 0.7f;
+    for (int i = 0; i < 3; ++i) {
+        const ecs::Entity e =
+            draw(place(registry, "crate", {2.6f + 0.12f * float(i), 0.4f + 0.7f * float(i), 4.6f},
+                       ecs::Quat::fromAxisAngle({0.3f, 1.0f, 0.2f}, 0.5f * float(i))),
+                 crate);
+        content::Collider box;
+        box.halfExtents = ecs::Vec3{0.25f, 0.25f, 0.25f};
+        registry.emplace<content::Collider>(e, box);
+        registry.emplace<content::RigidBody>(e, wood);
+    }
+    content::Collider ball;
+    ball.shape = content::ColliderShape::Sphere;
+    content::RigidBody rubber;
+    rubber.mass = 0.4f;
+    rubber.restitution = 0.75f;
+    ball.radius = 0.18f;
+    const ecs::Entity bouncy = draw(place(registry, "rubber ball", {2.9f, 3.2f, 4.7f}), rubberBall);
+    registry.emplace<content::Collider>(bouncy, ball);
+    registry.emplace<content::RigidBody>(bouncy, rubber);
+    content::RigidBody steel;
+    steel.mass = 7.0f;
+    steel.restitution = 0.1f;
+    steel.linearVelocity = {-1.2f, 0.0f, 0.4f};
+    ball.radius = 0.15f;
+    const ecs::Entity rolling = draw(place(registry, "steel ball", {3.6f, 0.15f, 5.6f}), steelBall);
+    registry.emplace<content::Collider>(rolling, ball);
+    registry.emplace<content::RigidBody>(rolling, steel);
+}
 
 const CameraPath& demoCameraPath() {
     // A tour: in through the door, the toon figures, the helmet, the sphere grid and neon, the
@@ -372,6 +416,14 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
     const int32_t furryBody =
         meshes->add(content::makeSphere(0.25f, 24, 12), material({0.18f, 0.1f, 0.05f}, 0.0f, 0.9f));
 
+    // Issue 46: things that fall, tumble, bounce and roll (physics/), just inside the door.
+    const int32_t crate = meshes->add(content::makeBox({0.25f, 0.25f, 0.25f}),
+                                      material({0.55f, 0.38f, 0.2f}, 0.0f, 0.75f));
+    const int32_t rubberBall = meshes->add(content::makeSphere(0.18f, 24, 12),
+                                           material({0.85f, 0.12f, 0.08f}, 0.0f, 0.4f));
+    const int32_t steelBall =
+        meshes->add(content::makeSphere(0.15f, 24, 12), material({0.9f, 0.9f, 0.92f}, 1.0f, 0.2f));
+
     const content::Model& model = world.adoptModel(
         std::unique_ptr<content::Model>(new content::Model(std::move(meshes->model))));
     auto draw = [&](ecs::Entity e, int32_t mesh) {
@@ -381,6 +433,7 @@ void buildDemoScene(SceneWorld& world, content::Diagnostics& diagnostics) {
 
     // Architecture.
     draw(place(registry, "floor", {0.0f, 0.0f, -1.0f}), floor);
+    addDemoProps(registry, draw, crate, rubberBall, steelBall);
     draw(place(registry, "runner", {0.0f, 0.01f, -0.5f}), runner);
     draw(place(registry, "back wall", {0.0f, 3.2f, -9.75f}), backWall);
     for (float side : {-1.0f, 1.0f}) {
