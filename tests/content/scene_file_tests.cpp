@@ -444,7 +444,7 @@ TEST(SceneFile, ExposureCompensationOutsideSixteenEvIsNamed) {
 TEST(SceneFile, UnknownKeysAreNamedWithTheClosestKnownKey) {
     const std::string text = R"({"format": "candela.scene", "version": 1, "qualty": "low",
       "entities": [
-        {"name": "a", "transform": {"translaton": [1, 2, 3]}, "rigidBody": {"mass": 1},
+        {"name": "a", "transform": {"translaton": [1, 2, 3]}, "script": {"file": "a.lua"},
          "light": {"type": "point", "lumen": 5}, "gameData": {"anything": 1}}]})";
     Diagnostics diagnostics;
     auto scene = parseSceneJson(std::as_bytes(std::span(text)), "k.scene.json", diagnostics);
@@ -458,7 +458,7 @@ TEST(SceneFile, UnknownKeysAreNamedWithTheClosestKnownKey) {
           "you mean 'translation'?)",
           "/entities/0/light/lumen: warning: unknown key 'lumen', ignored (did you mean "
           "'lumens'?)",
-          "/entities/0/rigidBody: warning: unknown key 'rigidBody', ignored"}) {
+          "/entities/0/script: warning: unknown key 'script', ignored"}) {
         EXPECT_TRUE(diagnostics.mentions(expected)) << expected << "\n" << diagnostics.toString();
     }
     EXPECT_FALSE(diagnostics.mentions("anything")) << diagnostics.toString();
