@@ -97,9 +97,9 @@ TEST(Motion, PyramidOfFifteenBoxesStaysWithinACentimetreForFiveSeconds) {
     }
 }
 
-// A column of eight upright cylinders does not: Bullet finds flat cylinder caps one GJK point
-// at a time, and the top drum wanders 1.9 cm in 5 s (docs/speed-vs-error.md). What holds is
-// that the column stands.
+// A column of eight upright cylinders holds less well: Bullet finds flat cylinder caps one GJK
+// point at a time, and the drums wander 1-2 cm in 5 s (1.0 cm alone, docs/physics-speed-vs-
+// error.md; 1.9 cm with the pyramid's bodies in the same world). What holds is that it stands.
 TEST(Motion, ColumnOfEightCylindersStandsForFiveSeconds) {
     ecs::Registry registry;
     addFloor(registry);
