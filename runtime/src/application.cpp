@@ -614,6 +614,12 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             }
             s.submitter->waitIdle();
             stats.frameMs.push_back(millisecondsSince(start));
+            if (world && world->hasPhysics()) {
+                const physics::PhysicsTimings t = world->physics().lastTimings();
+                const physics::PhysicsCounts c = world->physics().counts();
+                stats.physics.push_back(
+                    {1e3 * t.simulate, 1e3 * t.integration, t.steps, c.bodies, c.activeBodies});
+            }
             const render::RendererStats& frameStats = s.renderer->collectStats();
             stats.addRendererStats(frameStats);
             if (frameStats.nonFinitePixels > 0 && !nonFiniteReported) {

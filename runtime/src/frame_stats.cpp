@@ -63,6 +63,23 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
     json["frame_ms_median"] = stats.frameMsMedian();
     json["validation_messages"] = stats.validationMessages;
     json["features"] = stats.features;
+    if (!stats.physics.empty()) {
+        std::vector<double> simulate, integration;
+        std::uint32_t bodies = 0, active = 0, steps = 0;
+        for (const FrameStats::PhysicsFrame& f : stats.physics) {
+            simulate.push_back(f.simulateMs);
+            integration.push_back(f.integrationMs);
+            bodies = std::max(bodies, f.bodies);
+            active = std::max(active, f.activeBodies);
+            steps += f.steps;
+        }
+        json["physics"] = {{"frames", stats.physics.size()},
+                           {"steps", steps},
+                           {"bodies_max", bodies},
+                           {"active_bodies_max", active},
+                           {"simulate_ms_median", median(simulate)},
+                           {"integration_ms_median", median(integration)}};
+    }
     // Non-finite radiance: the most pixels of one frame with a NaN or Inf channel (0 in a sound
     // run), and the first pass a diagnosis frame found writing one (empty when none ran).
     uint64_t nonFinite = 0;

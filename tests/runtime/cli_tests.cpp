@@ -1360,3 +1360,34 @@ TEST(Cli, IblReferenceUnderAnAtmosphereStartsOnTheSecondFrame) {
     ASSERT_GT(splitSumSum, 0.0);
     EXPECT_NEAR(referenceSum / splitSumSum, 1.0, 0.1);
 }
+
+// Issue 46: --stats "physics" (present once a scene has colliders: the frames' physics time
+// and what the world held) and --physics-debug (colliders drawn as wires, validation clean).
+TEST(Cli, PhysicsStatsAndDebugWires) {
+    auto dir = tempDir();
+    const std::filesystem::path scene = dir / "drop.scene.json";
+    std::ofstream(scene) << R"({"format": "candela.scene", "version": 1, "entities": [
+        {"name": "camera", "transform": {"translation": [0, 2, 6], "lookAt": [0, 0.5, 0]},
+         "camera": {"exposureMode": "manual", "manualEv100": 0}},
+        {"name": "floor", "transform": {"translation": [0, -0.5, 0]},
+         "collider": {"shape": "box", "halfExtents": [3, 0.5, 3]}},
+        {"name": "ball", "transform": {"translation": [0, 2, 0]},
+         "rigidBody": {"type": "dynamic"}, "collider": {"shape": "sphere"}}]})";
+    const std::string flags = scene.string() + " --size 64x48 --frames 30 --aa off --bloom 0";
+    CapturedRun plain = captureRun(dir, "plain", flags);
+    CapturedRun debug = captureRun(dir, "debug", flags + " --physics-debug");
+    ASSERT_TRUE(plain.stats.contains("physics")) << plain.stats.dump();
+    const nlohmann::json& physics = plain.stats["physics"];
+    EXPECT_EQ(physics["frames"], 30);
+    // Two 1/60 s steps per 1/30 s frame; the first frame advances no time.
+    EXPECT_EQ(physics["steps"], 58);
+    EXPECT_EQ(physics["bodies_max"], 2);
+    EXPECT_GT(physics["simulate_ms_median"].get<double>(), 0.0);
+    EXPECT_EQ(debug.stats["validation_messages"], 0);
+    ASSERT_TRUE(plain.capture && debug.capture);
+    const LuminanceSums sums = luminanceSums(debug.capture->image, plain.capture->image);
+    EXPECT_GT(sums.image, sums.reference) << "the wires glow over the black scene";
+    const RunResult triangle = runCandela(kTriangle + "--stats " + (dir / "t.json").string());
+    ASSERT_EQ(triangle.exitCode, 0) << triangle.output;
+    EXPECT_FALSE(nlohmann::json::parse(readBytes(dir / "t.json")).contains("physics"));
+}

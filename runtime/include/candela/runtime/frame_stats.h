@@ -28,7 +28,17 @@ struct FrameStats {
     std::vector<double> frameMs;  // CPU wall time per frame, including the wait for the GPU
     uint32_t validationMessages = 0;
     std::vector<std::string> features;
-    std::vector<render::RendererStats> frames;                 // one per rendered frame
+    std::vector<render::RendererStats> frames;  // one per rendered frame
+    // Physics per frame, once the world has any (--stats "physics"): the time of its update
+    // (Bullet's steps and the ECS integration) and what it held.
+    struct PhysicsFrame {
+        double simulateMs = 0;
+        double integrationMs = 0;
+        std::uint32_t steps = 0;
+        std::uint32_t bodies = 0;
+        std::uint32_t activeBodies = 0;
+    };
+    std::vector<PhysicsFrame> physics;
     std::optional<render::EnvironmentBuildStats> environment;  // when the scene has a sky
 
     void addRendererStats(const render::RendererStats& frame) { frames.push_back(frame); }
