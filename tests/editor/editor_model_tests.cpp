@@ -18,6 +18,7 @@
 #include "candela/content/scene_instantiation.h"
 #include "candela/ecs/hierarchy.h"
 #include "candela/ecs/transform.h"
+#include "model/edit_validation.h"
 #include "model/editor_scene.h"
 #include "model/material_editing.h"
 #include "model/property_edits.h"
@@ -510,6 +511,45 @@ TEST_F(EditorModel, MaterialEditsWriteOverridesAndKeepTheModelMaterial) {
     ASSERT_TRUE(scene->undo());
     ASSERT_TRUE(scene->undo());
     EXPECT_EQ(effectiveMaterial(*scene, floor, 0).cavity, 1.0f);
+}
+
+}  // namespace
+}  // namespace candela::editor
+
+namespace candela::editor {
+namespace {
+
+// Issue 46: the inspector's physics sections edit RigidBody and Collider through the loader's
+// rules, deleting and undoing keeps them, and the save writes them as the scene file spells them.
+TEST_F(EditorModel, RigidBodyAndColliderEditsFollowTheLoadersRulesAndSave) {
+    const ecs::Entity lamp = named("lamp");
+    content::Collider sphere;
+    sphere.shape = content::ColliderShape::Sphere;
+    sphere.radius = 0.0f;
+    EXPECT_FALSE(checkEdit(sphere).accepted) << "a collider of no size";
+    sphere.radius = 0.25f;
+    content::RigidBody body;
+    body.mass = -2.0f;
+    const EditCheck clamped = checkEdit(body);
+    EXPECT_TRUE(clamped.accepted);
+    EXPECT_EQ(body.mass, 1.0f);
+    EXPECT_NE(clamped.notice.find("mass"), std::string::npos) << clamped.notice;
+    ASSERT_TRUE(scene->execute(setComponent(*scene, lamp, sphere, "Add Collider")));
+    ASSERT_TRUE(scene->execute(setComponent(*scene, lamp, body, "Add Rigid Body")));
+
+    // Deleting the lamp and undoing brings both back (the editor's entity snapshots).
+    ASSERT_TRUE(scene->execute(deleteEntity(*scene, lamp)));
+    ASSERT_TRUE(scene->undo());
+    const ecs::Entity restored = named("lamp");
+    ASSERT_TRUE(registry.has<content::Collider>(restored));
+    EXPECT_EQ(registry.get<content::Collider>(restored), sphere);
+    EXPECT_EQ(registry.get<content::RigidBody>(restored), body);
+
+    const content::SceneDocument saved = saveAndLoad(dir / "saved" / "bodies.scene.json");
+    const content::SceneEntity* entity = entityNamed(saved, "lamp");
+    ASSERT_TRUE(entity && entity->collider && entity->rigidBody);
+    EXPECT_EQ(*entity->collider, sphere);
+    EXPECT_EQ(*entity->rigidBody, body);
 }
 
 }  // namespace
