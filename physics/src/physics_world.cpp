@@ -72,6 +72,8 @@ void PhysicsWorld::Impl::beginEvents() {
 void PhysicsWorld::Impl::endEvents() {
     contacts.emitContacts(events.contacts);
     triggers.emitTriggers(events.triggers);
+    // The same events as the registry's resource, for systems that declare what they read.
+    if (auto* shared = registry.resources().tryGet<PhysicsEvents>()) *shared = events;
     const double total =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - updateStart).count();
     timings.integration = total - timings.simulate;
@@ -80,10 +82,13 @@ void PhysicsWorld::Impl::endEvents() {
 PhysicsWorld::PhysicsWorld(ecs::Registry& registry, PhysicsSettings settings)
     : impl_(std::make_unique<Impl>(registry, settings)) {
     impl_->self = this;
+    registry.resources().emplace<PhysicsEvents>();
     setSettings(settings);
 }
 
-PhysicsWorld::~PhysicsWorld() = default;
+PhysicsWorld::~PhysicsWorld() {
+    impl_->registry.resources().remove<PhysicsEvents>();
+}
 
 const PhysicsSettings& PhysicsWorld::settings() const {
     return impl_->settings;

@@ -84,6 +84,11 @@ TEST(ContactEvents, LandingBoxBeginsThenStaysWithUpwardNormalAndImpulse) {
     EXPECT_EQ(counts.begin, 1);
     EXPECT_EQ(counts.end, 0);
     EXPECT_GT(counts.stay, 50);
+    // The registry's resource holds the same events.
+    const auto* shared = registry.resources().tryGet<PhysicsEvents>();
+    ASSERT_NE(shared, nullptr);
+    ASSERT_EQ(shared->contacts.size(), physics.events().contacts.size());
+    EXPECT_EQ(shared->contacts[0].b, box);
     EXPECT_EQ(first.a, floor);  // made first
     EXPECT_EQ(first.b, box);
     // From b (the box) towards a (the floor): down.

@@ -126,7 +126,9 @@ void patrolSystem(SceneWorld& world, const FrameContext&) {
 // sentinels (caught).
 template <class F>
 void eachOrbTouch(SceneWorld& world, F&& touched) {
-    const candela::physics::PhysicsEvents* events = world.physicsEvents();
+    // The registry's copy: systems that declare readsResource<PhysicsEvents>() may read it
+    // side by side.
+    const auto* events = world.registry.resources().tryGet<candela::physics::PhysicsEvents>();
     if (!events) return;
     for (const candela::physics::TriggerEvent& e : events->triggers) {
         if (e.phase != candela::physics::ContactPhase::End && world.registry.valid(e.other) &&
@@ -235,9 +237,11 @@ void addOrbSystems(candela::runtime::Application& app) {
     // Both read the physics events of the last frame (physics runs alone in PostUpdate).
     app.addSystem("collect", Phase::Update, collectSystem)
         .reads<Orb>()
+        .readsResource<candela::physics::PhysicsEvents>()
         .writes<GameState, Pickup, LocalTransform, Light>();
     app.addSystem("referee", Phase::Update, refereeSystem)
         .reads<Orb, Hazard>()
+        .readsResource<candela::physics::PhysicsEvents>()
         .writes<GameState, Light>();
     app.addSystem("mascot", Phase::Update, mascotSystem)
         .reads<GameState>()

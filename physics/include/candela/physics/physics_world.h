@@ -92,7 +92,9 @@ public:
     void sync();
 
     // The events of the last update(): contacts and trigger overlaps that began, stayed or
-    // ended during its steps.
+    // ended during its steps. The registry holds a copy as a resource while this world lives
+    // (registry.resources().get<PhysicsEvents>()), for systems that declare
+    // readsResource<PhysicsEvents>().
     const PhysicsEvents& events() const;
     // Problems found while syncing bodies; the caller prints or forwards them.
     content::Diagnostics& diagnostics();

@@ -95,11 +95,6 @@ public:
     // Games ask it queries (physics_queries.h) and read its events.
     physics::PhysicsWorld& physics();
     bool hasPhysics() const { return physics_ != nullptr; }
-    // The last physics update's contacts and trigger overlaps; null before the first. Safe
-    // from systems that run side by side (physics() may make the world; this never does).
-    const physics::PhysicsEvents* physicsEvents() const {
-        return physics_ ? &physics_->events() : nullptr;
-    }
     physics::PhysicsSettings physicsSettings;
     // False (the editor): bodies follow their components, for queries and --physics-debug,
     // but nothing moves on its own.
