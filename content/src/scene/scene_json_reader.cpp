@@ -16,6 +16,7 @@
 #include "candela/content/light_texture.h"
 #include "candela/content/render_setting_table.h"
 #include "candela/content/scene_file.h"
+#include "candela/ecs/rotation.h"
 #include "scene_json_names.h"
 
 namespace candela::content {
@@ -39,24 +40,6 @@ std::size_t nestingDepth(const json& root) {
         }
     }
     return deepest;
-}
-
-// The rotation that turns -Z (where cameras look and lights shine) towards `target`, +Y up:
-// yaw about +Y, then pitch about the rotated +X. False when the target is the position.
-bool lookAtRotation(const std::array<float, 3>& position, const std::array<float, 3>& target,
-                    std::array<float, 4>& rotation) {
-    const double dx = double(target[0]) - position[0];
-    const double dy = double(target[1]) - position[1];
-    const double dz = double(target[2]) - position[2];
-    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
-    if (!(length > 1e-6)) return false;
-    const double yaw = std::atan2(-dx, -dz);
-    const double pitch = std::asin(std::clamp(dy / length, -1.0, 1.0));
-    // q = yaw(Y) * pitch(X), with half angles.
-    const double cy = std::cos(yaw / 2), sy = std::sin(yaw / 2);
-    const double cp = std::cos(pitch / 2), sp = std::sin(pitch / 2);
-    rotation = {float(cy * sp), float(sy * cp), float(-sy * sp), float(cy * cp)};
-    return true;
 }
 
 class Reader {
@@ -319,7 +302,12 @@ public:
             }
             std::array<float, 3> target{};
             if (!clean([&] { numbers(j, p, "lookAt", target); })) return;
-            if (!lookAtRotation(t.translation, target, t.rotation)) {
+            const std::optional<ecs::Quat> facing =
+                ecs::lookAtRotation({t.translation[0], t.translation[1], t.translation[2]},
+                                    {target[0], target[1], target[2]});
+            if (facing) {
+                t.rotation = {facing->x, facing->y, facing->z, facing->w};
+            } else {
                 error(p + "/lookAt", "the target is the entity's own position");
             }
         }

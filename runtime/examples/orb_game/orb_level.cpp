@@ -10,8 +10,8 @@
 #include "candela/content/components/mesh_instance.h"
 #include "candela/content/components/rigid_body.h"
 #include "candela/content/components/scene_components.h"
+#include "candela/content/model_lookup.h"
 #include "candela/content/procedural_mesh.h"
-#include "candela/ecs/hierarchy.h"
 #include "candela/ecs/transform.h"
 #include "orb_components.h"
 
@@ -200,8 +200,7 @@ std::string spawnMascot(candela::runtime::SceneWorld& world, const std::string& 
     if (!world.loadGltf(modelPath, diagnostics, root))
         return modelPath + ": cannot load the mascot";
     Mascot mascot;
-    for (Entity e : candela::ecs::descendantsOf(world.registry, root))
-        if (world.registry.has<AnimationPlayer>(e)) mascot.player = e;
+    mascot.player = candela::content::findAnimationPlayer(world.registry, root);
     if (mascot.player == candela::ecs::kNullEntity)
         return modelPath + ": the mascot has no animation clips";
     // The Fox's clips by name; any other model: its first, last and second clip.
