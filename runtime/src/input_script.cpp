@@ -112,13 +112,40 @@ std::optional<InputScript> InputScript::parse(std::string_view text, const std::
             event.type = w[2] == "down" ? InputEvent::Type::ButtonDown : InputEvent::Type::ButtonUp;
             event.button = *b;
             script.events_.push_back(event);
+        } else if (action == "pad") {
+            if (!expectWords(4, "down|up and a gamepad button")) return std::nullopt;
+            if (w[2] != "down" && w[2] != "up") {
+                return fail("'pad' needs down or up, got '" + w[2] + "'");
+            }
+            std::optional<GamepadButton> b = gamepadButtonFromName(w[3]);
+            if (!b) {
+                return fail("unknown gamepad button '" + w[3] +
+                            "' (A, B, X, Y, LeftBumper, RightBumper, Back, Start, Guide, "
+                            "LeftThumb, RightThumb, DpadUp, DpadRight, DpadDown, DpadLeft)");
+            }
+            event.type = w[2] == "down" ? InputEvent::Type::PadDown : InputEvent::Type::PadUp;
+            event.padButton = *b;
+            script.events_.push_back(event);
+        } else if (action == "stick") {
+            if (!expectWords(4, "a gamepad axis and a value in [-1, 1]")) return std::nullopt;
+            std::optional<GamepadAxis> a = gamepadAxisFromName(w[2]);
+            if (!a) {
+                return fail("unknown gamepad axis '" + w[2] +
+                            "' (LeftX, LeftY, RightX, RightY, LeftTrigger, RightTrigger)");
+            }
+            if (!parseFloat(w[3], event.dx) || event.dx < -1.0f || event.dx > 1.0f) {
+                return fail("'stick' needs a value in [-1, 1], got '" + w[3] + "'");
+            }
+            event.type = InputEvent::Type::PadAxis;
+            event.padAxis = *a;
+            script.events_.push_back(event);
         } else if (action == "quit") {
             if (!expectWords(2, "nothing")) return std::nullopt;
             event.type = InputEvent::Type::Quit;
             script.events_.push_back(event);
         } else {
             return fail("unknown action '" + action +
-                        "' (down, up, tap, hold, mouse, button, quit)");
+                        "' (down, up, tap, hold, mouse, button, pad, stick, quit)");
         }
     }
     // Stable: events of one frame apply in file order (a down then an up is a tap).
@@ -161,6 +188,15 @@ void InputScript::apply(std::uint32_t frame, InputState& state) const {
                 break;
             case InputEvent::Type::ButtonUp:
                 state.setButton(it->button, false);
+                break;
+            case InputEvent::Type::PadDown:
+                state.setButton(it->padButton, true);
+                break;
+            case InputEvent::Type::PadUp:
+                state.setButton(it->padButton, false);
+                break;
+            case InputEvent::Type::PadAxis:
+                state.setAxis(it->padAxis, it->dx);
                 break;
             case InputEvent::Type::Quit:
                 state.closeRequested = true;

@@ -21,11 +21,26 @@ constexpr std::array<std::string_view, kKeyCount> kKeyNames = {
 constexpr std::array<std::string_view, kMouseButtonCount> kButtonNames = {"left", "right",
                                                                           "middle"};
 
+constexpr std::array<std::string_view, kGamepadButtonCount> kPadButtonNames = {
+    "A",     "B",         "X",          "Y",      "LeftBumper", "RightBumper", "Back",    "Start",
+    "Guide", "LeftThumb", "RightThumb", "DpadUp", "DpadRight",  "DpadDown",    "DpadLeft"};
+
+constexpr std::array<std::string_view, kGamepadAxisCount> kPadAxisNames = {
+    "LeftX", "LeftY", "RightX", "RightY", "LeftTrigger", "RightTrigger"};
+
 bool equalsIgnoringCase(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
                return std::tolower(static_cast<unsigned char>(x)) ==
                       std::tolower(static_cast<unsigned char>(y));
            });
+}
+
+template <class E, std::size_t N>
+std::optional<E> fromName(const std::array<std::string_view, N>& names, std::string_view name) {
+    for (std::size_t i = 0; i < N; ++i) {
+        if (equalsIgnoringCase(names[i], name)) return E(i);
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -35,10 +50,7 @@ std::string_view keyName(Key key) {
 }
 
 std::optional<Key> keyFromName(std::string_view name) {
-    for (std::size_t i = 0; i < kKeyCount; ++i) {
-        if (equalsIgnoringCase(kKeyNames[i], name)) return Key(i);
-    }
-    return std::nullopt;
+    return fromName<Key>(kKeyNames, name);
 }
 
 std::string_view mouseButtonName(MouseButton button) {
@@ -46,10 +58,23 @@ std::string_view mouseButtonName(MouseButton button) {
 }
 
 std::optional<MouseButton> mouseButtonFromName(std::string_view name) {
-    for (std::size_t i = 0; i < kMouseButtonCount; ++i) {
-        if (equalsIgnoringCase(kButtonNames[i], name)) return MouseButton(i);
-    }
-    return std::nullopt;
+    return fromName<MouseButton>(kButtonNames, name);
+}
+
+std::string_view gamepadButtonName(GamepadButton button) {
+    return std::size_t(button) < kGamepadButtonCount ? kPadButtonNames[std::size_t(button)] : "?";
+}
+
+std::optional<GamepadButton> gamepadButtonFromName(std::string_view name) {
+    return fromName<GamepadButton>(kPadButtonNames, name);
+}
+
+std::string_view gamepadAxisName(GamepadAxis axis) {
+    return std::size_t(axis) < kGamepadAxisCount ? kPadAxisNames[std::size_t(axis)] : "?";
+}
+
+std::optional<GamepadAxis> gamepadAxisFromName(std::string_view name) {
+    return fromName<GamepadAxis>(kPadAxisNames, name);
 }
 
 }  // namespace candela::runtime

@@ -48,7 +48,19 @@ bool Window::shouldClose() const {
 
 void Window::pollEvents() const {
     glfwPollEvents();
-    if (input_ && glfwWindowShouldClose(window_)) input_->closeRequested = true;
+    if (!input_) return;
+    if (glfwWindowShouldClose(window_)) input_->closeRequested = true;
+    static_assert(kGamepadButtonCount == GLFW_GAMEPAD_BUTTON_LAST + 1);
+    static_assert(kGamepadAxisCount == GLFW_GAMEPAD_AXIS_LAST + 1);
+    // The first joystick GLFW's mapping database knows as a gamepad; GLFW polls joysticks
+    // rather than sending events for them.
+    GLFWgamepadstate pad;
+    if (glfwJoystickIsGamepad(GLFW_JOYSTICK_1) && glfwGetGamepadState(GLFW_JOYSTICK_1, &pad)) {
+        for (std::size_t b = 0; b < kGamepadButtonCount; ++b)
+            input_->setButton(GamepadButton(b), pad.buttons[b] == GLFW_PRESS);
+        for (std::size_t a = 0; a < kGamepadAxisCount; ++a)
+            input_->setAxis(GamepadAxis(a), pad.axes[a]);
+    }
 }
 
 void Window::setInputTarget(InputState* input) {

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -144,4 +145,58 @@ TEST(InputScript, KeyNamesRoundTrip) {
         ASSERT_TRUE(k.has_value()) << keyName(Key(i));
         EXPECT_EQ(size_t(*k), i);
     }
+}
+
+// Issue 47: scripts replay a gamepad as they replay keys: buttons go down and up on their
+// frames (pressed once), axes move and stay, and bad names or values name the line.
+TEST(InputScript, GamepadButtonsAndAxesReplay) {
+    const InputScript script = parseOk(
+        "0 pad down A\n"
+        "0 stick LeftX -0.75\n"
+        "2 pad up a\n"
+        "2 stick lefttrigger 1\n"
+        "3 stick LeftX 0\n");
+    InputState state;
+    EXPECT_EQ(state.axis(GamepadAxis::LeftTrigger), -1.0f) << "a released trigger";
+    script.apply(0, state);
+    EXPECT_TRUE(state.down(GamepadButton::A));
+    EXPECT_TRUE(state.pressed(GamepadButton::A));
+    EXPECT_EQ(state.axis(GamepadAxis::LeftX), -0.75f);
+    state.beginFrame();
+    script.apply(1, state);
+    EXPECT_TRUE(state.down(GamepadButton::A));
+    EXPECT_FALSE(state.pressed(GamepadButton::A));
+    EXPECT_EQ(state.axis(GamepadAxis::LeftX), -0.75f) << "an axis stays where it was moved";
+    state.beginFrame();
+    script.apply(2, state);
+    EXPECT_FALSE(state.down(GamepadButton::A));
+    EXPECT_EQ(state.axis(GamepadAxis::LeftTrigger), 1.0f);
+    state.beginFrame();
+    script.apply(3, state);
+    EXPECT_EQ(state.axis(GamepadAxis::LeftX), 0.0f);
+
+    EXPECT_NE(parseError("1 pad down Z").find("bad.input:1: unknown gamepad button 'Z'"),
+              std::string::npos);
+    EXPECT_NE(parseError("1 pad push A").find("'pad' needs down or up"), std::string::npos);
+    EXPECT_NE(parseError("1 stick Wheel 0").find("unknown gamepad axis 'Wheel'"),
+              std::string::npos);
+    EXPECT_NE(parseError("1 stick LeftX 1.5").find("a value in [-1, 1]"), std::string::npos);
+    EXPECT_NE(parseError("1 stick LeftX nan").find("a value in [-1, 1]"), std::string::npos);
+    // Axis values a device reports out of range are clamped; a NaN reads as rest.
+    state.setAxis(GamepadAxis::RightY, 7.0f);
+    EXPECT_EQ(state.axis(GamepadAxis::RightY), 1.0f);
+    state.setAxis(GamepadAxis::RightTrigger, std::numeric_limits<float>::quiet_NaN());
+    EXPECT_EQ(state.axis(GamepadAxis::RightTrigger), -1.0f);
+}
+
+TEST(InputScript, GamepadNamesRoundTrip) {
+    for (std::size_t i = 0; i < kGamepadButtonCount; ++i) {
+        const auto button = GamepadButton(i);
+        EXPECT_EQ(gamepadButtonFromName(gamepadButtonName(button)), button);
+    }
+    for (std::size_t i = 0; i < kGamepadAxisCount; ++i) {
+        const auto axis = GamepadAxis(i);
+        EXPECT_EQ(gamepadAxisFromName(gamepadAxisName(axis)), axis);
+    }
+    EXPECT_FALSE(gamepadButtonFromName("Select").has_value());
 }

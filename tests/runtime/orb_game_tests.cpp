@@ -76,6 +76,16 @@ TEST(OrbGame, CollectingEverySparkWins) {
     EXPECT_NEAR(s["elapsed_seconds"].get<double>(), 343.0 / 30.0, 1e-6);
 }
 
+// Issue 47: the left stick steers as the keys do: the gamepad replay of win.input wins the same.
+TEST(OrbGame, AGamepadReplayPlaysAsTheKeyboardReplay) {
+    nlohmann::json keys = play("win.input", 400, "keys");
+    nlohmann::json pad = play("win_gamepad.input", 400, "pad");
+    ASSERT_TRUE(keys.is_object() && pad.is_object());
+    EXPECT_EQ(pad["status"], "won");
+    for (const char* field : {"status", "score", "collected", "elapsed_seconds"})
+        EXPECT_EQ(pad[field], keys[field]) << field;
+}
+
 TEST(OrbGame, TouchingASentinelLosesAndRRestarts) {
     nlohmann::json lost = play("lose_restart.input", 140, "lost");
     ASSERT_TRUE(lost.is_object());

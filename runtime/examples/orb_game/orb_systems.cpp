@@ -53,11 +53,15 @@ void setOrbColor(SceneWorld& world, std::array<float, 3> color) {
 }
 
 constexpr std::array<float, 3> kOrbColor = {1.0f, 0.85f, 0.6f};
+// A worn stick rests a little off centre: tilts below this steer nothing.
+constexpr float kStickDeadZone = 0.2f;
 
 }  // namespace
 
 void restartSystem(SceneWorld& world, const FrameContext& f) {
-    if (!f.keys().pressed(Key::R)) return;
+    if (!f.keys().pressed(Key::R) && !f.keys().pressed(candela::runtime::GamepadButton::Start)) {
+        return;
+    }
     GameState* state = gameState(world);
     if (!state) return;
     const int32_t restarts = state->restarts + 1;
@@ -86,20 +90,28 @@ void steerSystem(SceneWorld& world, const FrameContext& f) {
     const GameState* state = gameState(world);
     if (!state || state->status != Status::Playing) return;
     const auto& in = f.keys();
+    using candela::runtime::GamepadAxis;
+    using candela::runtime::GamepadButton;
     Vec3 push{};
-    if (in.down(Key::W) || in.down(Key::Up)) push.z -= 1.0f;
-    if (in.down(Key::S) || in.down(Key::Down)) push.z += 1.0f;
-    if (in.down(Key::A) || in.down(Key::Left)) push.x -= 1.0f;
-    if (in.down(Key::D) || in.down(Key::Right)) push.x += 1.0f;
+    if (in.down(Key::W) || in.down(Key::Up) || in.down(GamepadButton::DpadUp)) push.z -= 1.0f;
+    if (in.down(Key::S) || in.down(Key::Down) || in.down(GamepadButton::DpadDown)) push.z += 1.0f;
+    if (in.down(Key::A) || in.down(Key::Left) || in.down(GamepadButton::DpadLeft)) push.x -= 1.0f;
+    if (in.down(Key::D) || in.down(Key::Right) || in.down(GamepadButton::DpadRight)) push.x += 1.0f;
+    // The left stick, past a radial dead zone rescaled to start from 0; keys and the pad add.
+    const Vec3 stick{in.axis(GamepadAxis::LeftX), 0.0f, in.axis(GamepadAxis::LeftY)};
+    if (const float tilt = candela::ecs::length(stick); tilt > kStickDeadZone) {
+        push += stick * ((std::min(tilt, 1.0f) - kStickDeadZone) / (1.0f - kStickDeadZone) / tilt);
+    }
     const float dt = float(std::min(f.deltaSeconds, 0.1));
     world.registry.view<const Orb, RigidBody>().each(
         [&](candela::ecs::Entity e, const Orb& orb, RigidBody& body) {
             // Arcade steering: the velocity physics left (after any bounce off a wall) turns
             // toward the wanted one (full speed along the held direction, or rest) by at most
             // `acceleration` per second; physics moves the orb and bounces it.
+            // Full speed along held keys; a stick part way gives part of it.
             Vec3 wanted{};
             if (float len = candela::ecs::length(push); len > 0.0f) {
-                wanted = push * (orb.maxSpeed / len);
+                wanted = push * (orb.maxSpeed / std::max(len, 1.0f));
             }
             Vec3 velocity{body.linearVelocity.x, 0.0f, body.linearVelocity.z};
             Vec3 change = wanted - velocity;

@@ -9,6 +9,9 @@
 //   <frame> hold <key> <frames>   down at <frame>, up at <frame>+<frames>
 //   <frame> mouse <dx> <dy>       mouse moves by (dx, dy) pixels during <frame>
 //   <frame> button down|up left|right|middle
+//   <frame> pad down|up <button>  a gamepad button (gamepadButtonName: A, B, X, Y, DpadUp, ...)
+//   <frame> stick <axis> <value>  a gamepad axis (LeftX, LeftY, ..., RightTrigger) moves to
+//                                 <value> in [-1, 1] and stays there
 //   <frame> quit                  the run ends before <frame> renders
 //
 // Keys are named as keyName() spells them (case-insensitive). Frames count from 0.
@@ -24,12 +27,24 @@
 namespace candela::runtime {
 
 struct InputEvent {
-    enum class Type : std::uint8_t { KeyDown, KeyUp, MouseMove, ButtonDown, ButtonUp, Quit };
+    enum class Type : std::uint8_t {
+        KeyDown,
+        KeyUp,
+        MouseMove,
+        ButtonDown,
+        ButtonUp,
+        PadDown,
+        PadUp,
+        PadAxis,
+        Quit
+    };
     std::uint32_t frame = 0;
     Type type = Type::KeyDown;
     Key key = Key::A;
     MouseButton button = MouseButton::Left;
-    float dx = 0.0f, dy = 0.0f;
+    GamepadButton padButton = GamepadButton::A;
+    GamepadAxis padAxis = GamepadAxis::LeftX;
+    float dx = 0.0f, dy = 0.0f;  // a mouse move; dx: a pad axis's value
 };
 
 class InputScript {
