@@ -86,6 +86,31 @@ TEST(OrbGame, AGamepadReplayPlaysAsTheKeyboardReplay) {
         EXPECT_EQ(pad[field], keys[field]) << field;
 }
 
+// A bindings file the player edited rebinds the controls; a bad one is named and the default
+// controls stand.
+TEST(OrbGame, ABindingsFileRebindsTheControlsAndABadOneIsNamed) {
+    const auto dir = tempDir();
+    std::ofstream(dir / "keys.json") << R"({"axes": {"steer_x": {"positive": ["key:L"]}}})";
+    std::ofstream(dir / "east.input") << "0 hold L 95\n";
+    std::ofstream(dir / "typo.json") << R"({"axes": {"steer_x": {"positive": ["key:Elle"]}}})";
+    const auto state = dir / "l.json";
+    RunResult r =
+        runGame("--headless --size 32x24 --frames 95 --input " + (dir / "east.input").string() +
+                " --state " + state.string() + " --bindings " + (dir / "keys.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(state);
+    const nlohmann::json east = nlohmann::json::parse(in, nullptr, false);
+    EXPECT_EQ(east["score"], 20) << "L steers east as D did: the two sparks on the south wall";
+    const RunResult typo = runGame("--headless --size 32x24 --frames 95 --input " + kReplays +
+                                   "win.input --bindings " + (dir / "typo.json").string());
+    EXPECT_EQ(typo.exitCode, 0) << typo.output;
+    EXPECT_NE(typo.output.find((dir / "typo.json").string() +
+                               ": axes/steer_x/positive: 'key:Elle' is not a binding"),
+              std::string::npos)
+        << typo.output;
+    EXPECT_NE(typo.output.find("the default controls stand"), std::string::npos) << typo.output;
+}
+
 TEST(OrbGame, TouchingASentinelLosesAndRRestarts) {
     nlohmann::json lost = play("lose_restart.input", 140, "lost");
     ASSERT_TRUE(lost.is_object());

@@ -32,7 +32,8 @@ namespace {
 using namespace candela::runtime;
 
 constexpr const char* kGameUsage =
-    "[run] [LEVEL.scene.json | REPLAY.input] [--state FILE.json] [--mascot MODEL.glb]";
+    "[run] [LEVEL.scene.json | REPLAY.input] [--state FILE.json] [--mascot MODEL.glb]\n"
+    "                 [--bindings FILE.json]  (steer_x, steer_z, restart: see orb_systems.cpp)";
 
 // The mascot's clips and its animation state each frame: [frame, clip, time, next clip (-1:
 // none), crossfade weight, score, status].
@@ -82,7 +83,7 @@ int main(int argc, char** argv) {
     ApplicationOptions options = *command.options;
     options.title = "Orb";
     std::string level = ORB_GAME_DIR "/level.scene.json";
-    std::string inputPath, statePath, mascotPath;
+    std::string inputPath, statePath, mascotPath, bindingsPath;
     const std::vector<std::string>& args = command.arguments;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -90,6 +91,8 @@ int main(int argc, char** argv) {
             statePath = args[++i];
         } else if (a == "--mascot" && i + 1 < args.size()) {
             mascotPath = args[++i];
+        } else if (a == "--bindings" && i + 1 < args.size()) {
+            bindingsPath = args[++i];
         } else if (!a.empty() && a[0] != '-' && a.ends_with(".input")) {
             inputPath = a;  // a replay: the same as --input
         } else if (!a.empty() && a[0] != '-') {
@@ -130,6 +133,13 @@ int main(int argc, char** argv) {
         }
     }
     app.setClearRadiance({0.002f, 0.002f, 0.004f, 1.0f});  // a dark night
+    // A bindings file the player edited: its problems are named and the defaults stand.
+    candela::runtime::InputActions& actions = orb::addOrbControls(app.world());
+    if (!bindingsPath.empty()) {
+        if (std::string error = actions.loadBindings(bindingsPath); !error.empty()) {
+            std::fprintf(stderr, "orb: %s; the default controls stand\n", error.c_str());
+        }
+    }
     orb::addOrbSystems(app);
 
     const int exitCode = app.run();

@@ -19,7 +19,6 @@ using candela::content::RigidBody;
 using candela::ecs::LocalTransform;
 using candela::ecs::Vec3;
 using candela::runtime::FrameContext;
-using candela::runtime::Key;
 using candela::runtime::SceneWorld;
 
 GameState* gameState(SceneWorld& world) {
@@ -58,10 +57,22 @@ constexpr float kStickDeadZone = 0.2f;
 
 }  // namespace
 
+candela::runtime::InputActions& addOrbControls(SceneWorld& world) {
+    candela::runtime::InputActions actions;
+    actions.bindAxis("steer_x", {"key:A", "key:Left", "pad:DpadLeft"},
+                     {"key:D", "key:Right", "pad:DpadRight"}, "pad:LeftX", kStickDeadZone);
+    // +Z is toward the player (south): W and up steer north.
+    actions.bindAxis("steer_z", {"key:W", "key:Up", "pad:DpadUp"},
+                     {"key:S", "key:Down", "pad:DpadDown"}, "pad:LeftY", kStickDeadZone);
+    actions.bindButton("restart", {"key:R", "pad:Start"});
+    return world.registry.resources().emplace<candela::runtime::InputActions>(std::move(actions));
+}
+
+namespace {}  // namespace
+
 void restartSystem(SceneWorld& world, const FrameContext& f) {
-    if (!f.keys().pressed(Key::R) && !f.keys().pressed(candela::runtime::GamepadButton::Start)) {
-        return;
-    }
+    const auto* controls = world.registry.resources().tryGet<candela::runtime::InputActions>();
+    if (!controls || !controls->pressed("restart", f.keys())) return;
     GameState* state = gameState(world);
     if (!state) return;
     const int32_t restarts = state->restarts + 1;
@@ -89,19 +100,10 @@ void restartSystem(SceneWorld& world, const FrameContext& f) {
 void steerSystem(SceneWorld& world, const FrameContext& f) {
     const GameState* state = gameState(world);
     if (!state || state->status != Status::Playing) return;
-    const auto& in = f.keys();
-    using candela::runtime::GamepadAxis;
-    using candela::runtime::GamepadButton;
-    Vec3 push{};
-    if (in.down(Key::W) || in.down(Key::Up) || in.down(GamepadButton::DpadUp)) push.z -= 1.0f;
-    if (in.down(Key::S) || in.down(Key::Down) || in.down(GamepadButton::DpadDown)) push.z += 1.0f;
-    if (in.down(Key::A) || in.down(Key::Left) || in.down(GamepadButton::DpadLeft)) push.x -= 1.0f;
-    if (in.down(Key::D) || in.down(Key::Right) || in.down(GamepadButton::DpadRight)) push.x += 1.0f;
-    // The left stick, past a radial dead zone rescaled to start from 0; keys and the pad add.
-    const Vec3 stick{in.axis(GamepadAxis::LeftX), 0.0f, in.axis(GamepadAxis::LeftY)};
-    if (const float tilt = candela::ecs::length(stick); tilt > kStickDeadZone) {
-        push += stick * ((std::min(tilt, 1.0f) - kStickDeadZone) / (1.0f - kStickDeadZone) / tilt);
-    }
+    const auto* controls = world.registry.resources().tryGet<candela::runtime::InputActions>();
+    if (!controls) return;
+    // Keys give -1 / +1, the stick past its dead zone a part of it: full speed along held keys.
+    const Vec3 push{controls->axis("steer_x", f.keys()), 0.0f, controls->axis("steer_z", f.keys())};
     const float dt = float(std::min(f.deltaSeconds, 0.1));
     world.registry.view<const Orb, RigidBody>().each(
         [&](candela::ecs::Entity e, const Orb& orb, RigidBody& body) {
