@@ -29,6 +29,11 @@ std::vector<InputBinding> parseAll(const std::vector<std::string_view>& spelling
     return out;
 }
 
+bool anyDown(const std::vector<InputBinding>& bindings, const InputState& input) {
+    return std::any_of(bindings.begin(), bindings.end(),
+                       [&](const InputBinding& b) { return b.down(input); });
+}
+
 std::optional<GamepadAxis> parseStick(std::string_view spelling) {
     if (!spelling.starts_with("pad:")) return std::nullopt;
     return gamepadAxisFromName(spelling.substr(4));
@@ -214,8 +219,7 @@ const InputActions::Axis* InputActions::findAxis(std::string_view name) const {
 
 bool InputActions::down(std::string_view button, const InputState& input) const {
     const Button* b = findButton(button);
-    return b && std::any_of(b->bindings.begin(), b->bindings.end(),
-                            [&](const InputBinding& binding) { return binding.down(input); });
+    return b && anyDown(b->bindings, input);
 }
 
 bool InputActions::pressed(std::string_view button, const InputState& input) const {
@@ -227,11 +231,7 @@ bool InputActions::pressed(std::string_view button, const InputState& input) con
 float InputActions::axis(std::string_view name, const InputState& input) const {
     const Axis* a = findAxis(name);
     if (!a) return 0.0f;
-    const auto any = [&](const std::vector<InputBinding>& bindings) {
-        return std::any_of(bindings.begin(), bindings.end(),
-                           [&](const InputBinding& b) { return b.down(input); });
-    };
-    float value = float(any(a->positive)) - float(any(a->negative));
+    float value = float(anyDown(a->positive, input)) - float(anyDown(a->negative, input));
     if (a->stick) {
         const float raw = input.axis(*a->stick);
         const float tilt = std::fabs(raw);
