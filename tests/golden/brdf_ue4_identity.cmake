@@ -15,6 +15,9 @@
 # (issue 41): with `--area-lights representative` the sphere lights' LTC branch is compiled out,
 # and lavapipe's rounding moves back by the same max relative 3.5e-7 (checked: with the branch
 # forced in, the old hash came back); its .png stayed byte-identical.
+# orb_game.exr and .png again when the orb began to move by Bullet (issue 46): the orb is drawn
+# where physics puts it, interpolated between 60 Hz steps, a few pixels from where the old
+# per-frame integration drew it; the game changed, not the BRDF path.
 #
 #   cmake -DBUILD_DIR=<build> -DHASHES=brdf_ue4_karis2013.sha256 -DOUT=<dir> -P brdf_ue4_identity.cmake
 cmake_minimum_required(VERSION 3.25)
