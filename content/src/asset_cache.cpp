@@ -100,6 +100,14 @@ std::shared_ptr<const EnvironmentMap> AssetCache::environment(const std::filesys
                       [&] { return loadEnvironmentExr(key, diagnostics); });
 }
 
+std::shared_ptr<const AudioClip> AssetCache::audioClip(const std::filesystem::path& path,
+                                                       Diagnostics& diagnostics) {
+    const std::filesystem::path key = canonicalKey(path);
+    std::lock_guard lock(mutex_);
+    return cachedLoad(audioClips_, key, stats_.hits, stats_.audioClipLoads,
+                      [&] { return loadAudioClip(key, diagnostics); });
+}
+
 AssetCache::Stats AssetCache::stats() const {
     std::lock_guard lock(mutex_);
     return stats_;
@@ -110,6 +118,7 @@ void AssetCache::clear() {
     models_.clear();
     textures_.clear();
     environments_.clear();
+    audioClips_.clear();
 }
 
 }  // namespace candela::content

@@ -464,6 +464,41 @@ ValueProblems validateCollider(Collider& collider) {
     return problems;
 }
 
+namespace {
+
+// Clamps `value` into [lo, hi] with a warning naming the field; NaN takes `fallback`.
+void clampAudio(ValueProblems& problems, const char* field, float& value, float lo, float hi,
+                float fallback, const char* unit) {
+    if (value >= lo && value <= hi) return;
+    const float used = std::isnan(value) ? fallback : std::clamp(value, lo, hi);
+    problems.push_back({field,
+                        text(value) + unit + " is outside " + text(lo) + ".." + text(hi) + unit +
+                            "; using " + text(used) + unit,
+                        true});
+    value = used;
+}
+
+}  // namespace
+
+ValueProblems validateAudioSource(AudioSource& source) {
+    ValueProblems problems;
+    if (source.clip.empty()) reject(problems, "clip", "is empty: a source needs a WAV or Ogg file");
+    clampAudio(problems, "gain", source.gain, 0.0f, kMaxAudioGain, 1.0f, "");
+    clampAudio(problems, "pitch", source.pitch, kMinAudioPitch, kMaxAudioPitch, 1.0f, "");
+    clampAudio(problems, "minDistance", source.minDistance, kMinAudioDistance, kMaxAudioDistance,
+               1.0f, " m");
+    clampAudio(problems, "maxDistance", source.maxDistance, source.minDistance, kMaxAudioDistance,
+               std::max(source.minDistance, 100.0f), " m");
+    clampAudio(problems, "rolloff", source.rolloff, 0.0f, 1e3f, 1.0f, "");
+    return problems;
+}
+
+ValueProblems validateAudioListener(AudioListener& listener) {
+    ValueProblems problems;
+    clampAudio(problems, "gain", listener.gain, 0.0f, kMaxAudioGain, 1.0f, "");
+    return problems;
+}
+
 ValueProblems validateMaterialTextures(const Material& material, std::size_t textureCount) {
     ValueProblems problems;
     auto check = [&](const std::string& field, const TextureRef& ref) {

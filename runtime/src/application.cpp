@@ -28,6 +28,7 @@
 #include "candela/runtime/sky_loader.h"
 #include "candela/runtime/window.h"
 #include "frame_settings.h"
+#include "game_audio.h"
 #include "physics_debug_view.h"
 #include "window_surface.h"
 
@@ -105,6 +106,7 @@ struct Session {
     SkyLoader sky;
     AtmosphereSun sun;              // the atmosphere's sun among the frame's lights
     PhysicsDebugView physicsDebug;  // --physics-debug's wires
+    std::unique_ptr<GameAudio> audio;
 };
 
 struct SystemEntry {
@@ -206,6 +208,7 @@ void Application::Impl::swapWorld() {
     s.renderer->restartTemporalHistory();  // nothing of the old world's frames carries over
     s.sky = SkyLoader(options.environment);
     s.resources = std::make_unique<render::SceneResources>(*s.context);
+    s.audio->clear();  // the old world's sounds stop with it
     scheduler.reset();
     world = std::move(pendingWorld);
     schedulerStale = true;
@@ -417,6 +420,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
     const bool fixedRenderSize = !s.captures.empty();
     // A script (or a headless run) uses the fixed step, so its frames repeat exactly.
     const bool fixedStep = headless || options.inputScript.has_value();
+    s.audio = std::make_unique<GameAudio>(headless, options.audioCapture);
     try {
         render::GpuContextOptions gpuOptions;
         gpuOptions.validation = options.validation;
@@ -528,6 +532,8 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             render::SceneResources* resources = nullptr;
             if (world) {
                 runSystems(frameContext);
+                s.audio->update(*world, frameContext, fixedStep ? options.fixedStepSeconds : 0.0,
+                                stats);
                 float aspect = float(s.renderer->width()) / float(s.renderer->height());
                 if (!s.lightTable) s.lightTable = std::make_unique<LightTable>(world->registry);
                 extractFrame(world->registry, *s.lightTable, *s.resources, aspect, s.extracted);
@@ -686,6 +692,7 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
                      std::uint32_t(stats.frameMs.size()), s.capturesMissed.front().c_str());
         s.exitCode = kExitFailure;
     }
+    if (!s.audio->finish()) s.exitCode = kExitFailure;
     if (options.frameGraph) {
         if (std::string e = content::writeFileAtomically(*options.frameGraph, frameGraphDot);
             !e.empty()) {

@@ -161,6 +161,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --frames N                stop after N frames (headless default: 1)\n"
            "  --input SCRIPT            replay recorded input (see input_script.h)\n"
            "  --capture FILE.png|.exr   write the last frame (may repeat)\n"
+           "  --audio-capture FILE.wav  write what a player hears (headless, 48 kHz stereo)\n"
            "  --stats FILE.json         write per-run measurements\n"
            "  --stats-work every|last   frames whose lighting work --stats counts (default\n"
            "                            every; last: the others timed without counting)\n"
@@ -235,6 +236,12 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--capture file must end in .exr or .png: '" + v + "'");
             }
             options.captures.push_back({FrameCapture::kLastFrame, v});
+        } else if (arg == "--audio-capture") {
+            if (!value()) return fail("--audio-capture needs a file name ending in .wav");
+            if (std::filesystem::path(v).extension() != ".wav") {
+                return fail("--audio-capture file must end in .wav: '" + v + "'");
+            }
+            options.audioCapture = v;
         } else if (arg == "--stats") {
             if (!value()) return fail("--stats needs a file name");
             options.stats = v;

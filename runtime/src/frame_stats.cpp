@@ -80,6 +80,21 @@ std::string writeStatsJson(const std::filesystem::path& path, const FrameStats& 
                            {"simulate_ms_median", median(simulate)},
                            {"integration_ms_median", median(integration)}};
     }
+    if (!stats.audio.empty()) {
+        std::vector<double> update, mix;
+        std::uint32_t voices = 0, playing = 0;
+        for (const FrameStats::AudioFrame& f : stats.audio) {
+            update.push_back(f.updateMs);
+            mix.push_back(f.mixMs);
+            voices = std::max(voices, f.voices);
+            playing = std::max(playing, f.playing);
+        }
+        json["audio"] = {{"frames", stats.audio.size()},
+                         {"voices_max", voices},
+                         {"playing_max", playing},
+                         {"update_ms_median", median(update)},
+                         {"mix_ms_median", median(mix)}};
+    }
     // Non-finite radiance: the most pixels of one frame with a NaN or Inf channel (0 in a sound
     // run), and the first pass a diagnosis frame found writing one (empty when none ran).
     uint64_t nonFinite = 0;

@@ -554,3 +554,43 @@ TEST_F(EditorModel, RigidBodyAndColliderEditsFollowTheLoadersRulesAndSave) {
 
 }  // namespace
 }  // namespace candela::editor
+
+namespace candela::editor {
+namespace {
+
+// Issue 47: the inspector's audio sections edit AudioSource and AudioListener through the
+// loader's rules; deleting and undoing keeps them, and the save writes the clip relative to the
+// saved scene file.
+TEST_F(EditorModel, AudioEditsFollowTheLoadersRulesAndSaveTheClipRelative) {
+    const ecs::Entity lamp = named("lamp");
+    content::AudioSource sound;
+    EXPECT_FALSE(checkEdit(sound).accepted) << "a source without a clip";
+    sound.clip = (dir / "sounds" / "hum.wav").string();
+    sound.gain = -1.0f;
+    const EditCheck clamped = checkEdit(sound);
+    EXPECT_TRUE(clamped.accepted);
+    EXPECT_EQ(sound.gain, 0.0f);
+    EXPECT_NE(clamped.notice.find("gain"), std::string::npos) << clamped.notice;
+    sound.gain = 0.5f;
+    sound.loop = true;
+    ASSERT_TRUE(scene->execute(setComponent(*scene, lamp, sound, "Add Audio Source")));
+    ASSERT_TRUE(
+        scene->execute(setComponent(*scene, lamp, content::AudioListener{}, "Add Listener")));
+
+    ASSERT_TRUE(scene->execute(deleteEntity(*scene, lamp)));
+    ASSERT_TRUE(scene->undo());
+    const ecs::Entity restored = named("lamp");
+    ASSERT_TRUE(registry.has<content::AudioSource>(restored));
+    EXPECT_EQ(registry.get<content::AudioSource>(restored), sound);
+    EXPECT_TRUE(registry.has<content::AudioListener>(restored));
+
+    const content::SceneDocument saved = saveAndLoad(dir / "saved" / "sounds.scene.json");
+    const content::SceneEntity* entity = entityNamed(saved, "lamp");
+    ASSERT_TRUE(entity && entity->audioSource && entity->audioListener);
+    EXPECT_EQ(entity->audioSource->clip, "../sounds/hum.wav");
+    EXPECT_EQ(entity->audioSource->gain, 0.5f);
+    EXPECT_TRUE(entity->audioSource->loop);
+}
+
+}  // namespace
+}  // namespace candela::editor

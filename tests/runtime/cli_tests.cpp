@@ -15,10 +15,13 @@
 #include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "candela/audio/wav_encoding.h"
+#include "candela/content/atomic_file_write.h"
 #include "candela/content/exr_image.h"
 #include "candela/content/render_setting_table.h"
 #include "full_filesystem.h"
@@ -877,7 +880,8 @@ TEST(Cli, EveryOutputFileOnAFullDiskFailsNamingThePathAndTheError) {
     const std::filesystem::path dir = disk->dir();
     for (const std::string& output :
          {"--stats " + (dir / "s.json").string(), "--summary " + (dir / "s.md").string(),
-          "--capture " + (dir / "c.exr").string(), "--capture " + (dir / "c.png").string()}) {
+          "--capture " + (dir / "c.exr").string(), "--capture " + (dir / "c.png").string(),
+          "--audio-capture " + (dir / "a.wav").string()}) {
         const std::string path = output.substr(output.find(' ') + 1);
         RunResult r = runCandela(kTriangle + "--frames 1 " + output);
         EXPECT_EQ(r.exitCode, 1) << output << "\n" << r.output;
@@ -1363,6 +1367,74 @@ TEST(Cli, IblReferenceUnderAnAtmosphereStartsOnTheSecondFrame) {
 
 // Issue 46: --stats "physics" (present once a scene has colliders: the frames' physics time
 // and what the world held) and --physics-debug (colliders drawn as wires, validation clean).
+// Issue 47: --audio-capture writes the loopback mix in step with the headless frames, the
+// same bytes run after run; a bad clip is an error naming it, and the run goes on.
+TEST(Cli, AudioCaptureWritesWhatThePlayerHears) {
+    auto dir = tempDir();
+    std::filesystem::create_directories(dir / "sounds");
+    std::vector<float> tone(4800);  // 0.1 s of 1 kHz at 0.5: whole periods, looped
+    for (std::size_t i = 0; i < tone.size(); ++i)
+        tone[i] = 0.5f * float(std::sin(2 * std::numbers::pi * 1000.0 * double(i) / 48000.0));
+    ASSERT_EQ(candela::content::writeFileAtomically(dir / "sounds" / "tone.wav",
+                                                    candela::audio::encodeWav16(tone, 48000, 1)),
+              "");
+    std::ofstream(dir / "sounds" / "noise.wav") << "not a sound";
+    const std::filesystem::path scene = dir / "beep.scene.json";
+    std::ofstream(scene) << R"({"format": "candela.scene", "version": 1, "entities": [
+        {"name": "camera", "transform": {"translation": [0, 0, 0]}, "camera": {}},
+        {"name": "beep", "transform": {"translation": [-4, 0, 0]},
+         "audioSource": {"clip": "sounds/tone.wav", "loop": true, "gain": 1.0, "spatial": true}},
+        {"name": "bad", "audioSource": {"clip": "sounds/noise.wav"}}]})";
+    const auto run = [&](const std::string& name) {
+        return runCandela("run " + scene.string() + " --headless --size 32x32 --frames 12 " +
+                          "--audio-capture " + (dir / name).string() + " --stats " +
+                          (dir / (name + ".json")).string());
+    };
+    const RunResult first = run("a.wav");
+    ASSERT_EQ(first.exitCode, 0) << first.output;
+    EXPECT_NE(first.output.find("noise.wav: error: not an audio clip"), std::string::npos)
+        << first.output;
+    const std::string bytes = readBytes(dir / "a.wav");
+    // 12 frames of 1/30 s: 19,200 stereo 16-bit frames after the 44-byte header.
+    ASSERT_EQ(bytes.size(), 44u + 12u * 1600u * 4u);
+    EXPECT_EQ(bytes.substr(0, 4), "RIFF");
+    std::vector<float> left, right;
+    for (std::size_t at = 44; at + 4 <= bytes.size(); at += 4) {
+        const auto sample = [&](std::size_t i) {
+            return float(std::int16_t(std::uint16_t(std::uint8_t(bytes[i])) |
+                                      std::uint16_t(std::uint8_t(bytes[i + 1])) << 8)) /
+                   32767.0f;
+        };
+        left.push_back(sample(at));
+        right.push_back(sample(at + 2));
+    }
+    const auto rms = [](const std::vector<float>& v) {
+        double sum = 0;
+        for (float x : v)
+            sum += double(x) * x;
+        return std::sqrt(sum / double(v.size()));
+    };
+    // 4 m to the camera's left: a quarter of the clip's RMS, all in the left channel.
+    EXPECT_NEAR(rms(left), 0.5 / std::sqrt(2.0) / 4.0, 0.002);
+    EXPECT_LT(rms(right), 1e-4);
+    const nlohmann::json stats = nlohmann::json::parse(readBytes(dir / "a.wav.json"));
+    ASSERT_TRUE(stats.contains("audio")) << stats.dump();
+    EXPECT_EQ(stats["audio"]["voices_max"], 1);
+    EXPECT_EQ(stats["audio"]["frames"], 12);
+
+    const RunResult second = run("b.wav");
+    ASSERT_EQ(second.exitCode, 0) << second.output;
+    EXPECT_EQ(readBytes(dir / "b.wav"), bytes) << "the same run mixes the same bytes";
+
+    const RunResult notWav = runCandela(kTriangle + "--audio-capture " + (dir / "a.mp3").string());
+    EXPECT_EQ(notWav.exitCode, 2);
+    EXPECT_NE(notWav.output.find("must end in .wav"), std::string::npos) << notWav.output;
+    // A scene without sounds opens no audio device and has no "audio" stats.
+    const RunResult silent = runCandela(kTriangle + "--stats " + (dir / "t.json").string());
+    ASSERT_EQ(silent.exitCode, 0) << silent.output;
+    EXPECT_FALSE(nlohmann::json::parse(readBytes(dir / "t.json")).contains("audio"));
+}
+
 TEST(Cli, PhysicsStatsAndDebugWires) {
     auto dir = tempDir();
     const std::filesystem::path scene = dir / "drop.scene.json";

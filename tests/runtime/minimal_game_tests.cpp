@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -114,6 +116,38 @@ TEST(MinimalGame, ReplaysAreDeterministic) {
     ASSERT_EQ(a.exitCode, 0) << a.output;
     EXPECT_GE(scoreOf(a, 120), 1) << a.output;
     EXPECT_EQ(scoreOf(a, 120), scoreOf(b, 120));
+}
+
+// Issue 47: the template's one sound. Each touch chimes: as many chimes start in the captured
+// mix as the game scores, and between them it is silent (the level has no other sound).
+TEST(MinimalGame, EveryTouchChimes) {
+    const std::filesystem::path wav =
+        std::filesystem::temp_directory_path() / "candela-minimal-chimes.wav";
+    RunResult r = runGame("--headless --size 32x24 --frames 150 --input " + kReplay +
+                          " --audio-capture " + wav.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const int score = scoreOf(r, 150);
+    ASSERT_GE(score, 1) << r.output;
+    std::FILE* file = std::fopen(wav.c_str(), "rb");
+    ASSERT_TRUE(file);
+    std::vector<unsigned char> bytes(44 + 150 * 1600 * 4);
+    const std::size_t read = std::fread(bytes.data(), 1, bytes.size() + 1, file);
+    std::fclose(file);
+    ASSERT_EQ(read, bytes.size());
+    int onsets = 0;
+    bool sounding = false;
+    for (std::size_t frame = 0; frame < 150; ++frame) {
+        double sum = 0;
+        for (std::size_t i = 0; i < 2 * 1600; ++i) {
+            const std::size_t at = 44 + 2 * (frame * 2 * 1600 + i);
+            const double v = std::int16_t(bytes[at] | bytes[at + 1] << 8) / 32767.0;
+            sum += v * v;
+        }
+        const bool loud = std::sqrt(sum / (2 * 1600)) > 0.05;  // a chime's first frames
+        onsets += loud && !sounding;
+        sounding = loud;
+    }
+    EXPECT_EQ(onsets, score);
 }
 
 TEST(MinimalGame, StandardFlagsAreCheckedAndListed) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -126,6 +127,51 @@ TEST(OrbGame, ReplaysAreDeterministic) {
     nlohmann::json b = play("win.input", 200, "det_b");
     ASSERT_TRUE(a.is_object());
     EXPECT_EQ(a.dump(), b.dump());
+}
+
+// Issue 47: the orb game's sounds. The replay mixes the same WAV bytes twice; the ambience
+// loops under everything from the first frame, and each collected spark adds its chime (the
+// two sparks win.input takes by frame 95 stand out of the ambience; the orb grazing a wall may
+// thud).
+TEST(OrbGame, AReplayMixesTheSameSoundTwice) {
+    const auto capture = [](const std::string& name) {
+        const std::filesystem::path wav = tempDir() / (name + ".wav");
+        const std::filesystem::path stats = tempDir() / (name + ".stats.json");
+        nlohmann::json s = play("win.input", 100, name,
+                                " --audio-capture " + wav.string() + " --stats " + stats.string());
+        EXPECT_EQ(s["collected"], 2) << s.dump();
+        std::ifstream in(wav, std::ios::binary);
+        return std::pair{std::string{std::istreambuf_iterator<char>(in), {}},
+                         nlohmann::json::parse(std::ifstream(stats), nullptr, false)};
+    };
+    const auto [a, statsA] = capture("sound_a");
+    const auto [b, statsB] = capture("sound_b");
+    ASSERT_EQ(a.size(), 44u + 100u * 1600u * 4u);
+    EXPECT_TRUE(a == b) << "the same replay must mix the same bytes";
+    ASSERT_TRUE(statsA.contains("audio")) << statsA.dump();
+    EXPECT_EQ(statsA["audio"]["voices_max"], 3);  // ambience, collect and hit
+    // Loudness per frame (left + right): the ambience alone, then the chimes on top.
+    std::vector<double> frameRms;
+    for (std::size_t f = 0; f < 100; ++f) {
+        double sum = 0;
+        for (std::size_t i = 0; i < 2 * 1600; ++i) {
+            const std::size_t at = 44 + 2 * (f * 2 * 1600 + i);
+            const auto v = std::int16_t(std::uint16_t(std::uint8_t(a[at])) |
+                                        std::uint16_t(std::uint8_t(a[at + 1])) << 8);
+            sum += double(v) * v;
+        }
+        frameRms.push_back(std::sqrt(sum / (2 * 1600)) / 32767.0);
+    }
+    std::vector<double> sorted = frameRms;
+    std::sort(sorted.begin(), sorted.end());
+    const double ambience = sorted[sorted.size() / 2];
+    EXPECT_GT(ambience, 0.01) << "the ambience plays from the start";
+    // A sound starts where a frame is three times the ambience and the one before is not.
+    int onsets = 0;
+    for (std::size_t f = 1; f < frameRms.size(); ++f)
+        onsets += frameRms[f] > 3.0 * ambience && frameRms[f - 1] <= 3.0 * ambience;
+    EXPECT_GE(onsets, 2) << "the two chimes over the ambience";
+    EXPECT_LE(onsets, 4) << "and at most a bump or two besides";
 }
 
 // The mascot (the shared Fox, --mascot; the game's test passes the shared asset's path) idles

@@ -22,7 +22,17 @@ std::optional<SceneDocument> loadSceneFile(const std::filesystem::path& path,
 std::string saveSceneFile(const std::filesystem::path& path, const SceneDocument& scene,
                           AtomicWriteOptions options) {
     std::string error;
-    const std::string text = sceneToJson(scene, error);
+    // Clips resolved when the scene was instantiated (absolute) go back relative to the file.
+    SceneDocument relative = scene;
+    const std::filesystem::path directory =
+        std::filesystem::absolute(path).parent_path().lexically_normal();
+    for (SceneEntity& e : relative.entities) {
+        if (!e.audioSource) continue;
+        const std::filesystem::path clip(e.audioSource->clip);
+        if (clip.is_absolute())
+            e.audioSource->clip = clip.lexically_normal().lexically_relative(directory).string();
+    }
+    const std::string text = sceneToJson(relative, error);
     if (!error.empty()) return path.string() + ": " + error;
     return writeFileAtomically(path, text, options);
 }

@@ -141,6 +141,16 @@ std::vector<ecs::Entity> instantiateScene(ecs::Registry& registry, const SceneDo
         if (source.rigidBody) registry.emplace<RigidBody>(e, *source.rigidBody);
         if (source.collider) registry.emplace<Collider>(e, *source.collider);
         if (source.atmosphere) registry.emplace<Atmosphere>(e, *source.atmosphere);
+        if (source.audioSource) {
+            // Resolved and absolute: the audio system has no scene file to be relative to, and
+            // saveSceneFile writes it back relative to wherever the scene is saved.
+            AudioSource audio = *source.audioSource;
+            audio.clip = std::filesystem::absolute(resolveScenePath(sceneFile, audio.clip))
+                             .lexically_normal()
+                             .string();
+            registry.emplace<AudioSource>(e, audio);
+        }
+        if (source.audioListener) registry.emplace<AudioListener>(e, *source.audioListener);
         if (!source.gameDataJson.empty())
             registry.emplace<GameData>(e, GameData{source.gameDataJson});
         entities.push_back(e);
@@ -204,6 +214,8 @@ SceneDocument captureScene(ecs::Registry& registry) {
         }
         if (const auto* collider = registry.tryGet<Collider>(e)) out.collider = *collider;
         if (const auto* atmosphere = registry.tryGet<Atmosphere>(e)) out.atmosphere = *atmosphere;
+        if (const auto* audio = registry.tryGet<AudioSource>(e)) out.audioSource = *audio;
+        if (const auto* listener = registry.tryGet<AudioListener>(e)) out.audioListener = *listener;
         if (const auto* data = registry.tryGet<GameData>(e)) out.gameDataJson = data->json;
     }
     return scene;

@@ -521,6 +521,22 @@ public:
         integer(j, p, "mask", c.mask, 0, std::numeric_limits<std::uint32_t>::max());
         report(p, validateCollider(c));
     }
+    // "audioSource" (components/audio_source.h): "clip" is required, relative to the scene file.
+    void audioSource(const json& j, const std::string& p, AudioSource& a) {
+        if (!has(j, p, "clip")) error(p + "/clip", "expected the clip's path (WAV or Ogg Vorbis)");
+        string(j, p, "clip", a.clip);
+        number(j, p, "gain", a.gain);
+        number(j, p, "pitch", a.pitch);
+        boolean(j, p, "loop", a.loop);
+        boolean(j, p, "spatial", a.spatial);
+        number(j, p, "minDistance", a.minDistance);
+        number(j, p, "maxDistance", a.maxDistance);
+        number(j, p, "rolloff", a.rolloff);
+        bool playing = true;
+        boolean(j, p, "playing", playing);
+        a.state = playing ? PlaybackState::Playing : PlaybackState::Stopped;
+        report(p, validateAudioSource(a));
+    }
     void vector(const json& j, const std::string& p, const char* key, ecs::Vec3& out) {
         std::array<float, 3> values{out.x, out.y, out.z};
         numbers(j, p, key, values);
@@ -747,6 +763,19 @@ public:
         if (const json* c = nullptr; object(j, p, "collider", c)) {
             Collider value;
             if (clean([&] { collider(*c, p + "/collider", value); })) e.collider = value;
+        }
+        if (const json* a = nullptr; object(j, p, "audioSource", a)) {
+            AudioSource value;
+            if (clean([&] { audioSource(*a, p + "/audioSource", value); })) e.audioSource = value;
+        }
+        if (const json* l = nullptr; object(j, p, "audioListener", l)) {
+            AudioListener value;
+            if (clean([&] {
+                    number(*l, p + "/audioListener", "gain", value.gain);
+                    report(p + "/audioListener", validateAudioListener(value));
+                })) {
+                e.audioListener = value;
+            }
         }
         if (e.rigidBody && !e.collider) {
             warning(p + "/rigidBody", "a rigid body without a \"collider\" does not move");

@@ -186,6 +186,19 @@ struct Writer {
         return out;
     }
 
+    json audioSource(const AudioSource& a, const std::string& q) {
+        json out = {{"clip", a.clip},
+                    {"gain", number(a.gain, q + "gain")},
+                    {"pitch", number(a.pitch, q + "pitch")},
+                    {"loop", a.loop},
+                    {"spatial", a.spatial},
+                    {"minDistance", number(a.minDistance, q + "minDistance")},
+                    {"maxDistance", number(a.maxDistance, q + "maxDistance")},
+                    {"rolloff", number(a.rolloff, q + "rolloff")}};
+        if (a.state == PlaybackState::Stopped) out["playing"] = false;
+        return out;
+    }
+
     json camera(const Camera& c, const std::string& p) {
         return {
             {"projection", nameOf(kProjections, c.projection)},
@@ -261,6 +274,11 @@ struct Writer {
         }
         if (e.rigidBody) out["rigidBody"] = rigidBody(*e.rigidBody, p + "/rigidBody/");
         if (e.collider) out["collider"] = collider(*e.collider, p + "/collider/");
+        if (e.audioSource) out["audioSource"] = audioSource(*e.audioSource, p + "/audioSource/");
+        if (e.audioListener) {
+            out["audioListener"] =
+                json{{"gain", number(e.audioListener->gain, p + "/audioListener/gain")}};
+        }
         if (e.hair) {
             const std::string q = p + "/hair/";
             const HairStyle& s = e.hair->style;

@@ -13,6 +13,8 @@
 #include "app/render_settings_panel.h"
 #include "candela/content/components/animation.h"
 #include "candela/content/components/atmosphere.h"
+#include "candela/content/components/audio_listener.h"
+#include "candela/content/components/audio_source.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
@@ -539,6 +541,49 @@ void drawAnimation(EditorScene& scene, ecs::Entity e) {
     ImGui::Checkbox("Loop", &player->loop);
 }
 
+// A sound the entity plays (issue 47). The clip is a path as the scene loaded it (absolute;
+// saving writes it relative to the scene file); the editor does not play sounds.
+void drawAudioSource(EditorScene& scene, ecs::Entity e) {
+    const auto* current = scene.registry().tryGet<content::AudioSource>(e);
+    if (!current ||
+        !componentHeader<content::AudioSource>(scene, e, "Audio source", "Remove Audio Source")) {
+        return;
+    }
+    content::AudioSource a = *current;
+    if (ImGui::InputText("Clip", &a.clip, ImGuiInputTextFlags_EnterReturnsTrue))
+        commit(scene, e, true, a, "Set Audio Clip");
+    commit(scene, e, ImGui::DragFloat("Gain", &a.gain, 0.01f, 0.0f, 10.0f), a, "Set Audio Gain");
+    commit(scene, e, ImGui::DragFloat("Pitch", &a.pitch, 0.01f, 0.05f, 4.0f), a, "Set Audio Pitch");
+    commit(scene, e, ImGui::Checkbox("Loop", &a.loop), a, "Set Audio Loop");
+    commit(scene, e, ImGui::Checkbox("Spatial", &a.spatial), a, "Set Audio Spatial");
+    bool playing = a.state != content::PlaybackState::Stopped;
+    if (ImGui::Checkbox("Plays on start", &playing)) {
+        a.state = playing ? content::PlaybackState::Playing : content::PlaybackState::Stopped;
+        commit(scene, e, true, a, "Set Audio Plays On Start");
+    }
+    if (a.spatial) {
+        commit(scene, e,
+               ImGui::DragFloat("Min distance", &a.minDistance, 0.05f, 0.01f, 1.0e4f, "%.2f m"), a,
+               "Set Audio Distance");
+        commit(scene, e,
+               ImGui::DragFloat("Max distance", &a.maxDistance, 0.5f, 0.01f, 1.0e5f, "%.1f m"), a,
+               "Set Audio Distance");
+        commit(scene, e, ImGui::DragFloat("Rolloff", &a.rolloff, 0.01f, 0.0f, 10.0f), a,
+               "Set Audio Rolloff");
+    }
+}
+
+void drawAudioListener(EditorScene& scene, ecs::Entity e) {
+    const auto* current = scene.registry().tryGet<content::AudioListener>(e);
+    if (!current || !componentHeader<content::AudioListener>(scene, e, "Audio listener",
+                                                             "Remove Audio Listener")) {
+        return;
+    }
+    content::AudioListener l = *current;
+    commit(scene, e, ImGui::DragFloat("Master gain", &l.gain, 0.01f, 0.0f, 10.0f), l,
+           "Set Listener Gain");
+}
+
 void drawAddComponent(EditorScene& scene, ecs::Entity e) {
     if (ImGui::Button("Add component")) ImGui::OpenPopup("add component");
     if (ImGui::BeginPopup("add component")) {
@@ -559,6 +604,13 @@ void drawAddComponent(EditorScene& scene, ecs::Entity e) {
         }
         if (!scene.registry().has<content::RigidBody>(e) && ImGui::MenuItem("Rigid body")) {
             scene.execute(setComponent(scene, e, content::RigidBody{}, "Add Rigid Body"));
+        }
+        if (!scene.registry().has<content::AudioSource>(e) && ImGui::MenuItem("Audio source")) {
+            scene.execute(setComponent(scene, e, content::AudioSource{.clip = "sounds/sound.wav"},
+                                       "Add Audio Source"));
+        }
+        if (!scene.registry().has<content::AudioListener>(e) && ImGui::MenuItem("Audio listener")) {
+            scene.execute(setComponent(scene, e, content::AudioListener{}, "Add Audio Listener"));
         }
         ImGui::EndPopup();
     }
@@ -633,6 +685,8 @@ void drawInspectorPanel(EditorScene& scene, InspectorState& state) {
     if (scene.registry().valid(e)) drawAtmosphere(scene, e);
     if (scene.registry().valid(e)) drawRigidBody(scene, e);
     if (scene.registry().valid(e)) drawCollider(scene, e);
+    if (scene.registry().valid(e)) drawAudioSource(scene, e);
+    if (scene.registry().valid(e)) drawAudioListener(scene, e);
     if (scene.registry().valid(e)) drawMaterials(scene, e);
     if (scene.registry().valid(e)) drawAnimation(scene, e);
     if (scene.registry().valid(e)) drawAddComponent(scene, e);

@@ -48,6 +48,14 @@ EditCheck checkEdit(content::Collider& value) {
     return fromProblems(content::validateCollider(value));
 }
 
+EditCheck checkEdit(content::AudioSource& value) {
+    return fromProblems(content::validateAudioSource(value));
+}
+
+EditCheck checkEdit(content::AudioListener& value) {
+    return fromProblems(content::validateAudioListener(value));
+}
+
 EditCheck checkEdit(ecs::LocalTransform& value) {
     const ecs::Quat& q = value.rotation;
     return fromProblems(content::validateRotation(std::array<float, 4>{q.x, q.y, q.z, q.w}));

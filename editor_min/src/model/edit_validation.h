@@ -5,6 +5,8 @@
 #include <string>
 
 #include "candela/content/components/atmosphere.h"
+#include "candela/content/components/audio_listener.h"
+#include "candela/content/components/audio_source.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
@@ -29,6 +31,8 @@ EditCheck checkEdit(ecs::LocalTransform& value);
 EditCheck checkEdit(content::Material& value);
 EditCheck checkEdit(content::RigidBody& value);
 EditCheck checkEdit(content::Collider& value);
+EditCheck checkEdit(content::AudioSource& value);
+EditCheck checkEdit(content::AudioListener& value);
 
 // Components without rules (names, ...) are always accepted.
 template <class T>

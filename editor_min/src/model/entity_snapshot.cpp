@@ -35,6 +35,8 @@ EntitySnapshot snapshotEntity(EditorScene& scene, ecs::Entity e) {
     s.fog = copyOf<content::Fog>(registry, e);
     s.rigidBody = copyOf<content::RigidBody>(registry, e);
     s.collider = copyOf<content::Collider>(registry, e);
+    s.audioSource = copyOf<content::AudioSource>(registry, e);
+    s.audioListener = copyOf<content::AudioListener>(registry, e);
     s.atmosphere = copyOf<content::Atmosphere>(registry, e);
     s.gameData = copyOf<content::GameData>(registry, e);
     if (const auto* member = registry.tryGet<content::SceneMember>(e)) s.sceneOrder = member->order;
@@ -65,6 +67,8 @@ ecs::Entity restoreEntity(EditorScene& scene, const EntitySnapshot& s) {
     emplaceIf(registry, e, s.fog);
     emplaceIf(registry, e, s.rigidBody);
     emplaceIf(registry, e, s.collider);
+    emplaceIf(registry, e, s.audioSource);
+    emplaceIf(registry, e, s.audioListener);
     emplaceIf(registry, e, s.atmosphere);
     emplaceIf(registry, e, s.gameData);
     registry.emplace<content::SceneMember>(e, content::SceneMember{s.sceneOrder});

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "candela/content/components/atmosphere.h"
+#include "candela/content/components/audio_listener.h"
+#include "candela/content/components/audio_source.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
@@ -35,6 +37,8 @@ struct EntitySnapshot {
     std::optional<content::Fog> fog;
     std::optional<content::RigidBody> rigidBody;
     std::optional<content::Collider> collider;
+    std::optional<content::AudioSource> audioSource;
+    std::optional<content::AudioListener> audioListener;
     std::optional<content::Atmosphere> atmosphere;
     std::optional<content::GameData> gameData;
     uint32_t sceneOrder = 0;

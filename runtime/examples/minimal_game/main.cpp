@@ -1,7 +1,7 @@
 // minimal-game: steer the white ball with WASD and touch the four orbiting lights; each touch
-// scores a point and knocks that light ahead along its orbit. The whole game is this file, the
-// level (level.scene.json: walls, and lights that are trigger colliders) and a CMakeLists.txt
-// of find_package(Candela).
+// scores a point, chimes and knocks that light ahead along its orbit. The whole game is this
+// file, the level (level.scene.json: walls, lights that are trigger colliders, the chime's
+// sound) and a CMakeLists.txt of find_package(Candela).
 //
 //   minimal-game                                  # a window (headless without a display)
 //   minimal-game --headless --frames 150 --input replays/collect.input --capture shot.png
@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "candela/content/components/audio_source.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/name.h"
 #include "candela/content/game_data.h"
@@ -41,11 +42,12 @@ int main(int argc, char** argv) {
 
     // Find the ball and the lights first: adding components inside view().each is refused.
     ecs::Registry& registry = app.world().registry;
-    ecs::Entity ball = ecs::kNullEntity;
+    ecs::Entity ball = ecs::kNullEntity, chime = ecs::kNullEntity;
     std::vector<std::pair<ecs::Entity, Orbit>> orbiters;
     registry.view<const content::Name, const ecs::LocalTransform>().each(
         [&](ecs::Entity e, const content::Name& name, const ecs::LocalTransform& t) {
             if (name.value == "ball") ball = e;
+            if (name.value == "chime") chime = e;  // a sound that follows the ball
             if (const auto* data = registry.tryGet<content::GameData>(e)) {  // the level's
                 const float speed = content::GameDataReader(*data).value("orbitSpeed", 0.0f);
                 orbiters.push_back({e,
@@ -55,7 +57,7 @@ int main(int argc, char** argv) {
         });
     for (auto& [e, orbit] : orbiters)
         registry.emplace<Orbit>(e, orbit);
-    if (ball.isNull()) return runtime::kExitBadArguments;
+    if (ball.isNull() || chime.isNull()) return runtime::kExitBadArguments;
     physics::CharacterController walker;  // walks the ball; the level's walls stop it
     walker.radius = 0.5f;
     walker.height = 1.0f;
@@ -83,6 +85,7 @@ int main(int argc, char** argv) {
             if (Orbit* orbit = world.registry.tryGet<Orbit>(touch.trigger)) {
                 ++score;
                 orbit->angle += 2.0f;  // knocked ahead along its orbit
+                world.registry.patch<content::AudioSource>(chime, [](auto& s) { s.play(); });
             }
         }
         runtime::debugText(world).print(16, 16, "SCORE " + std::to_string(score), {1, 0.9f, 0.3f});

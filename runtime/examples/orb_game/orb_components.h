@@ -33,6 +33,13 @@ struct Hazard {
     float radius = 0.3f;
 };
 
+// An entity whose AudioSource the game plays when `plays` happens ("collect": a spark is
+// taken; "hit": the orb bumps into a wall or a sentinel catches it). The level places them
+// (children of the orb, so the sound comes from where it is).
+struct SoundCue {
+    std::string plays;
+};
+
 enum class Status : std::uint8_t { Playing, Won, Lost };
 
 // One per level (on the "rules" entity).

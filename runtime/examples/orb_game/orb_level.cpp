@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "candela/content/components/animation.h"
+#include "candela/content/components/audio_source.h"
 #include "candela/content/components/collider.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/mesh_instance.h"
@@ -170,6 +171,12 @@ std::string spawnLevel(candela::runtime::SceneWorld& world, const std::string& l
             state.timeLimitSeconds = number(t.data, "timeLimitSeconds", state.timeLimitSeconds);
             registry.emplace<GameState>(t.entity, state);
             ++rules;
+        } else if (role == "sound") {
+            if (!t.data["plays"].is_string() ||
+                !registry.has<candela::content::AudioSource>(t.entity)) {
+                return levelName + ": a sound needs \"plays\" and an audioSource";
+            }
+            registry.emplace<SoundCue>(t.entity, SoundCue{t.data["plays"].get<std::string>()});
         } else {
             return levelName + ": unknown gameData role '" + role + "'";
         }

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "candela/content/components/animation.h"
+#include "candela/content/components/audio_source.h"
 #include "candela/content/components/light.h"
 #include "candela/content/components/rigid_body.h"
 #include "candela/ecs/transform.h"
@@ -152,6 +153,19 @@ void eachOrbTouch(SceneWorld& world, F&& touched) {
     }
 }
 
+// Starts the sounds the level cued for `event` from their beginning, at `gain`.
+void playSound(SceneWorld& world, const std::string& event, float gain = 1.0f) {
+    using candela::content::AudioSource;
+    world.registry.view<const SoundCue, AudioSource>().each(
+        [&](candela::ecs::Entity e, const SoundCue& cue, const AudioSource&) {
+            if (cue.plays != event) return;
+            world.registry.patch<AudioSource>(e, [&](AudioSource& source) {
+                source.gain = gain;
+                source.play();
+            });
+        });
+}
+
 void collectSystem(SceneWorld& world, const FrameContext&) {
     GameState* state = gameState(world);
     if (!state || state->status != Status::Playing) return;
@@ -166,7 +180,23 @@ void collectSystem(SceneWorld& world, const FrameContext&) {
             local.position = pickup->home - Vec3{0.0f, 10.0f, 0.0f};
         });
         setLightLumens(world, e, 0.0f);
+        playSound(world, "collect");
     });
+}
+
+// The orb bumping into a wall: a thud as loud as the bump. A head-on hit at the top speed gives
+// the 1 kg orb m v (1 + restitution) = 7.5 N s; a graze is quieter, a touch silent.
+void bumpSystem(SceneWorld& world, const FrameContext&) {
+    const auto* events = world.registry.resources().tryGet<candela::physics::PhysicsEvents>();
+    if (!events) return;
+    float strongest = 0.0f;
+    for (const candela::physics::ContactEvent& c : events->contacts) {
+        if (c.phase != candela::physics::ContactPhase::Begin) continue;
+        const bool orb = (world.registry.valid(c.a) && world.registry.has<Orb>(c.a)) ||
+                         (world.registry.valid(c.b) && world.registry.has<Orb>(c.b));
+        if (orb) strongest = std::max(strongest, c.impulse);
+    }
+    if (strongest > 0.3f) playSound(world, "hit", std::min(1.0f, strongest / 7.5f));
 }
 
 void refereeSystem(SceneWorld& world, const FrameContext& f) {
@@ -184,6 +214,7 @@ void refereeSystem(SceneWorld& world, const FrameContext& f) {
         state->status = Status::Lost;
         state->reason = "caught by a sentinel";
         setOrbColor(world, {1.0f, 0.1f, 0.05f});
+        playSound(world, "hit");
     } else if (state->elapsedSeconds >= state->timeLimitSeconds) {
         state->status = Status::Lost;
         state->reason = "out of time";
@@ -249,14 +280,19 @@ void addOrbSystems(candela::runtime::Application& app) {
         .reads<GameState, Hazard>()
         .writes<LocalTransform>();
     // Both read the physics events of the last frame (physics runs alone in PostUpdate).
+    using candela::content::AudioSource;
     app.addSystem("collect", Phase::Update, collectSystem)
-        .reads<Orb>()
+        .reads<Orb, SoundCue>()
         .readsResource<candela::physics::PhysicsEvents>()
-        .writes<GameState, Pickup, LocalTransform, Light>();
+        .writes<GameState, Pickup, LocalTransform, Light, AudioSource>();
     app.addSystem("referee", Phase::Update, refereeSystem)
-        .reads<Orb, Hazard>()
+        .reads<Orb, Hazard, SoundCue>()
         .readsResource<candela::physics::PhysicsEvents>()
-        .writes<GameState, Light>();
+        .writes<GameState, Light, AudioSource>();
+    app.addSystem("bump", Phase::Update, bumpSystem)
+        .reads<Orb, SoundCue>()
+        .readsResource<candela::physics::PhysicsEvents>()
+        .writes<AudioSource>();
     app.addSystem("mascot", Phase::Update, mascotSystem)
         .reads<GameState>()
         .writes<Mascot, candela::content::AnimationPlayer>();

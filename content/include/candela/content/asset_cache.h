@@ -1,8 +1,8 @@
 #pragma once
-// CPU-side asset cache: each glTF, mesh, texture (with its mips, per colour space) and EXR
-// environment is loaded or built once, however many entities refer to it, keyed by canonical
-// file path plus index. The renderer uploads what it gets from here and keys its GPU copies
-// by the same pointer, so an asset used twice is also uploaded once.
+// CPU-side asset cache: each glTF, mesh, texture (with its mips, per colour space), EXR
+// environment and audio clip is loaded or built once, however many entities refer to it, keyed by
+// canonical file path plus index. The renderer uploads what it gets from here and keys its GPU
+// copies by the same pointer, so an asset used twice is also uploaded once.
 //
 //   AssetCache cache;
 //   Diagnostics diagnostics;
@@ -21,6 +21,7 @@
 #include <tuple>
 #include <vector>
 
+#include "candela/content/audio_clip.h"
 #include "candela/content/diagnostics.h"
 #include "candela/content/environment_map.h"
 #include "candela/content/gltf_loader.h"
@@ -41,6 +42,7 @@ public:
         std::uint64_t modelLoads = 0;        // glTF files read from disk
         std::uint64_t textureBuilds = 0;     // mip chains built
         std::uint64_t environmentLoads = 0;  // EXR files read
+        std::uint64_t audioClipLoads = 0;    // WAV and Ogg Vorbis files read
         std::uint64_t hits = 0;              // requests answered from the cache
     };
 
@@ -55,6 +57,9 @@ public:
                                                    Diagnostics& diagnostics);
     std::shared_ptr<const EnvironmentMap> environment(const std::filesystem::path& path,
                                                       Diagnostics& diagnostics);
+    // A WAV or Ogg Vorbis clip (audio_clip.h); null (silence) when the file is bad.
+    std::shared_ptr<const AudioClip> audioClip(const std::filesystem::path& path,
+                                               Diagnostics& diagnostics);
 
     Stats stats() const;
     void clear();
@@ -74,6 +79,7 @@ private:
              std::shared_ptr<const PreparedTexture>>
         textures_;
     std::map<std::filesystem::path, std::shared_ptr<const EnvironmentMap>> environments_;
+    std::map<std::filesystem::path, std::shared_ptr<const AudioClip>> audioClips_;
     Stats stats_;
 };
 

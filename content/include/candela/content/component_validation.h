@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "candela/content/components/atmosphere.h"
+#include "candela/content/components/audio_listener.h"
+#include "candela/content/components/audio_source.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
@@ -57,6 +59,13 @@ inline constexpr float kMaxBodySpeed = 1e4f;         // m/s, each velocity compo
 inline constexpr float kMaxBodyAngularSpeed = 1e3f;  // rad/s, each component
 inline constexpr float kMinColliderSize = 1e-4f;     // metres, a radius or half extent
 inline constexpr float kMaxColliderSize = 1e5f;      // metres
+// Audio: a gain over 1e3 (+60 dB) only clips; a pitch outside 1/64..64 is past what the mixer
+// resamples (OpenAL Soft's own limit is 255, its quality gone long before).
+inline constexpr float kMaxAudioGain = 1e3f;
+inline constexpr float kMinAudioPitch = 1.0f / 64.0f;
+inline constexpr float kMaxAudioPitch = 64.0f;
+inline constexpr float kMinAudioDistance = 1e-3f;  // metres
+inline constexpr float kMaxAudioDistance = 1e6f;   // metres
 
 struct ValueProblem {
     std::string field;     // as the scene file names it: "lumens", "verticalFov", "exr"
@@ -95,6 +104,12 @@ ValueProblems validateRigidBody(RigidBody& body);
 // collider has no size); sizes beyond kMinColliderSize..kMaxColliderSize are clamped, and a
 // capsule shorter than its two hemispheres becomes a sphere's height (2 radius).
 ValueProblems validateCollider(Collider& collider);
+// An empty clip path is rejected (there is nothing to play). Gain, pitch, distances and
+// rolloff outside their ranges (audio_source.h) are clamped with a warning; NaN takes the
+// default; a maxDistance below minDistance becomes minDistance.
+ValueProblems validateAudioSource(AudioSource& source);
+// A negative or non-finite gain is clamped.
+ValueProblems validateAudioListener(AudioListener& listener);
 // Texture references against the model's `textureCount` textures: an index past them (a scene
 // file's material override naming texture 99) is a warning per slot, named by its key; the
 // renderer binds the slot's fallback (white, or a flat normal).

@@ -23,6 +23,8 @@
 
 #include "candela/content/atomic_file_write.h"
 #include "candela/content/components/atmosphere.h"
+#include "candela/content/components/audio_listener.h"
+#include "candela/content/components/audio_source.h"
 #include "candela/content/components/camera.h"
 #include "candela/content/components/collider.h"
 #include "candela/content/components/fog.h"
@@ -112,6 +114,11 @@ struct SceneEntity {
     // (physics/README.md); a collider without a rigid body is static.
     std::optional<RigidBody> rigidBody;
     std::optional<Collider> collider;
+    // "audioSource": {"clip" (relative to the scene file), "gain", "pitch", "loop", "spatial",
+    // "minDistance", "maxDistance", "rolloff", "playing"} and "audioListener": {"gain"}
+    // (audio/README.md).
+    std::optional<AudioSource> audioSource;
+    std::optional<AudioListener> audioListener;
     // Free-form game data as JSON text; empty when none. Loading gives the canonical form
     // (compact, object keys sorted), which saving and loading again preserves exactly.
     std::string gameDataJson;

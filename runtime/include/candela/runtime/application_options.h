@@ -67,6 +67,10 @@ struct ApplicationOptions {
     // --physics-debug: every collider (green, triggers yellow) and contact point (red) drawn
     // as wires over the scene (runtime/src/physics_debug_view.h).
     bool physicsDebug = false;
+    // --audio-capture FILE.wav: the mix a player would hear, 48 kHz 16-bit stereo, rendered
+    // in step with the frames (headless only: a window plays to the sound device). The same
+    // run gives the same bytes (audio/README.md).
+    std::optional<std::filesystem::path> audioCapture;
     // --fog SIGMA_S[,SIGMA_A[,G]]: a uniform medium replacing the scene's Fog (or adding one).
     std::optional<content::Fog> fog;
     // --atmosphere: the default Earth atmosphere for a scene without an Atmosphere component

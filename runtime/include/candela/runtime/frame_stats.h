@@ -39,6 +39,15 @@ struct FrameStats {
         std::uint32_t activeBodies = 0;
     };
     std::vector<PhysicsFrame> physics;
+    // Audio per frame, once the run has a sound device (--stats "audio"): the time to sync the
+    // sources and, on a loopback device, to mix the frame's samples.
+    struct AudioFrame {
+        double updateMs = 0;
+        double mixMs = 0;
+        std::uint32_t voices = 0;
+        std::uint32_t playing = 0;
+    };
+    std::vector<AudioFrame> audio;
     std::optional<render::EnvironmentBuildStats> environment;  // when the scene has a sky
 
     void addRendererStats(const render::RendererStats& frame) { frames.push_back(frame); }

@@ -68,6 +68,9 @@ public:
         return sceneMaterialLayers_;
     }
 
+    // Where the world's models, textures, skies and audio clips are loaded once.
+    content::AssetCache& assetCache() { return cache_; }
+
     // Keeps a model alive for the lifetime of the world and returns it.
     const content::Model& adoptModel(std::unique_ptr<content::Model> model);
 

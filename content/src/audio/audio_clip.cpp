@@ -1,0 +1,87 @@
+#include "candela/content/audio_clip.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "candela/content/file_bytes.h"
+#include "vorbis_file.h"
+#include "wav_decoding.h"
+
+namespace candela::content {
+
+std::shared_ptr<const AudioClip> decodeAudioClip(std::span<const std::byte> bytes,
+                                                 const std::filesystem::path& path,
+                                                 Diagnostics& diagnostics) {
+    auto clip = std::make_shared<AudioClip>();
+    std::string problem;
+    if (bytes.size() >= 4 && std::memcmp(bytes.data(), "RIFF", 4) == 0)
+        problem = decodeWav(bytes, *clip);
+    else if (bytes.size() >= 4 && std::memcmp(bytes.data(), "OggS", 4) == 0)
+        problem = decodeVorbis(bytes, *clip);
+    else
+        problem = "not an audio clip (neither a WAV nor an Ogg Vorbis file)";
+    if (!problem.empty()) {
+        diagnostics.error(path.string(), "", problem + "; it plays as silence");
+        return nullptr;
+    }
+    return clip;
+}
+
+std::shared_ptr<const AudioClip> loadAudioClip(const std::filesystem::path& path,
+                                               Diagnostics& diagnostics) {
+    const FileBytes file = readFileBytes(path, kMaxAudioFileBytes);
+    if (!file.error.empty()) {
+        diagnostics.error(path.string(), "",
+                          "cannot read audio clip: " + file.error + "; it plays as silence");
+        return nullptr;
+    }
+    return decodeAudioClip(file.bytes, path, diagnostics);
+}
+
+struct AudioClipStream::Decoder {
+    stb_vorbis* vorbis = nullptr;
+    ~Decoder() {
+        if (vorbis) stb_vorbis_close(vorbis);
+    }
+};
+
+AudioClipStream::AudioClipStream(std::shared_ptr<const AudioClip> clip) : clip_(std::move(clip)) {
+    if (!clip_->streamed()) return;
+    decoder_ = std::make_unique<Decoder>();
+    int error = 0;
+    decoder_->vorbis =
+        stb_vorbis_open_memory(reinterpret_cast<const unsigned char*>(clip_->encoded.data()),
+                               static_cast<int>(clip_->encoded.size()), &error, nullptr);
+}
+
+AudioClipStream::~AudioClipStream() = default;
+
+std::size_t AudioClipStream::read(std::span<float> out) {
+    const std::size_t channels = clip_->channels;
+    const std::size_t wanted = out.size() / channels;
+    if (!decoder_) {
+        const std::size_t frames = std::min<std::uint64_t>(wanted, clip_->frames - position_);
+        std::copy_n(clip_->samples.begin() + static_cast<std::ptrdiff_t>(position_ * channels),
+                    frames * channels, out.begin());
+        position_ += frames;
+        return frames;
+    }
+    // The stream opened when the clip was decoded; it can only fail here on memory exhaustion.
+    if (!decoder_->vorbis) return 0;
+    std::size_t frames = 0;
+    while (frames < wanted) {
+        const int got = stb_vorbis_get_samples_float_interleaved(
+            decoder_->vorbis, static_cast<int>(channels), out.data() + frames * channels,
+            static_cast<int>((wanted - frames) * channels));
+        if (got <= 0) break;
+        frames += static_cast<std::size_t>(got);
+    }
+    return frames;
+}
+
+void AudioClipStream::rewind() {
+    position_ = 0;
+    if (decoder_ && decoder_->vorbis) stb_vorbis_seek_start(decoder_->vorbis);
+}
+
+}  // namespace candela::content
