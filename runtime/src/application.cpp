@@ -23,6 +23,7 @@
 #include "candela/runtime/atmosphere_sun.h"
 #include "candela/runtime/exit_code.h"
 #include "candela/runtime/frame_extraction.h"
+#include "candela/runtime/input_recorder.h"
 #include "candela/runtime/layer_pass_context.h"
 #include "candela/runtime/light_table.h"
 #include "candela/runtime/sky_loader.h"
@@ -107,6 +108,7 @@ struct Session {
     AtmosphereSun sun;              // the atmosphere's sun among the frame's lights
     PhysicsDebugView physicsDebug;  // --physics-debug's wires
     std::unique_ptr<GameAudio> audio;
+    std::unique_ptr<InputRecorder> recorder;  // --record-input
 };
 
 struct SystemEntry {
@@ -418,8 +420,10 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
     }
     // Without captures asked for up front the render follows the window's size.
     const bool fixedRenderSize = !s.captures.empty();
-    // A script (or a headless run) uses the fixed step, so its frames repeat exactly.
-    const bool fixedStep = headless || options.inputScript.has_value();
+    // A script (or a headless or recorded run) uses the fixed step, so its frames repeat exactly.
+    const bool fixedStep =
+        headless || options.inputScript.has_value() || options.recordInput.has_value();
+    if (options.recordInput) s.recorder = std::make_unique<InputRecorder>();
     s.audio = std::make_unique<GameAudio>(headless, options.audioCapture);
     try {
         render::GpuContextOptions gpuOptions;
@@ -483,8 +487,10 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
             input.beginFrame();
             if (s.window) s.window->pollEvents();
             if (options.inputScript) options.inputScript->apply(i, input);
-            if (input.closeRequested || quitRequested) break;
-            if (s.window && s.window->shouldClose()) break;
+            const bool closing =
+                input.closeRequested || quitRequested || (s.window && s.window->shouldClose());
+            if (s.recorder) closing ? s.recorder->recordQuit(i) : s.recorder->record(i, input);
+            if (closing) break;
             if (s.window) {
                 const std::lock_guard lock(titleMutex);
                 if (!windowTitle.empty()) {
@@ -693,6 +699,12 @@ int Application::Impl::runSession(bool headless, std::uint32_t frames) {
         s.exitCode = kExitFailure;
     }
     if (!s.audio->finish()) s.exitCode = kExitFailure;
+    if (s.recorder) {
+        if (std::string e = s.recorder->write(*options.recordInput); !e.empty()) {
+            std::fprintf(stderr, "candela: %s\n", e.c_str());
+            s.exitCode = kExitFailure;
+        }
+    }
     if (options.frameGraph) {
         if (std::string e = content::writeFileAtomically(*options.frameGraph, frameGraphDot);
             !e.empty()) {

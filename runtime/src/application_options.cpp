@@ -162,6 +162,7 @@ std::string ApplicationOptions::standardFlagsUsage() {
            "  --input SCRIPT            replay recorded input (see input_script.h)\n"
            "  --capture FILE.png|.exr   write the last frame (may repeat)\n"
            "  --audio-capture FILE.wav  write what a player hears (headless, 48 kHz stereo)\n"
+           "  --record-input FILE       write the session's input as a script --input replays\n"
            "  --stats FILE.json         write per-run measurements\n"
            "  --stats-work every|last   frames whose lighting work --stats counts (default\n"
            "                            every; last: the others timed without counting)\n"
@@ -236,6 +237,9 @@ CommandLine parseCommandLine(const std::vector<std::string>& args, OtherArgument
                 return fail("--capture file must end in .exr or .png: '" + v + "'");
             }
             options.captures.push_back({FrameCapture::kLastFrame, v});
+        } else if (arg == "--record-input") {
+            if (!value()) return fail("--record-input needs a file name");
+            options.recordInput = v;
         } else if (arg == "--audio-capture") {
             if (!value()) return fail("--audio-capture needs a file name ending in .wav");
             if (std::filesystem::path(v).extension() != ".wav") {

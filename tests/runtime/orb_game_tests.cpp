@@ -129,6 +129,24 @@ TEST(OrbGame, ReplaysAreDeterministic) {
     EXPECT_EQ(a.dump(), b.dump());
 }
 
+// Issue 47: --record-input writes the run's input as a script; replaying the recording plays
+// the same game (here the recorded run itself replays win_gamepad.input, stick and all).
+TEST(OrbGame, ARecordedRunReplaysTheSameGame) {
+    const std::filesystem::path recorded = tempDir() / "recorded.input";
+    std::filesystem::remove(recorded);
+    nlohmann::json original =
+        play("win_gamepad.input", 200, "recording", " --record-input " + recorded.string());
+    ASSERT_TRUE(std::filesystem::exists(recorded));
+    auto state = tempDir() / "replayed.json";
+    RunResult r = runGame("--headless --size 32x24 --frames 200 --input " + recorded.string() +
+                          " --state " + state.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    nlohmann::json replayed = nlohmann::json::parse(std::ifstream(state), nullptr, false);
+    ASSERT_TRUE(original.is_object() && replayed.is_object());
+    EXPECT_GT(original["collected"].get<int>(), 0);
+    EXPECT_EQ(replayed.dump(), original.dump());
+}
+
 // Issue 47: the orb game's sounds. The replay mixes the same WAV bytes twice; the ambience
 // loops under everything from the first frame, and each collected spark adds its chime (the
 // two sparks win.input takes by frame 95 stand out of the ambience; the orb grazing a wall may

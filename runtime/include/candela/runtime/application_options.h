@@ -90,6 +90,9 @@ struct ApplicationOptions {
     std::optional<float> timeOfDayHours;
     // Replayed instead of window input; with it, windowed runs use the fixed step too.
     std::optional<InputScript> inputScript;
+    // --record-input FILE.input: the run's input written as a script --input replays
+    // (input_recorder.h); such a run takes the fixed step, so the replay sees the same frames.
+    std::optional<std::filesystem::path> recordInput;
     bool captureCursor = false;  // window: hide the cursor and report raw motion (mouse look)
 
     // The standard flags every game gets (see standardFlagsUsage()): --headless, --frames N,
