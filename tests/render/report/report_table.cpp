@@ -100,7 +100,10 @@ std::string toMarkdown(const Report& report) {
     }
     out << "\n## Beyond the renderer\n\n- Physics: the Bullet solver's settings against stack "
            "drift, bounce height and step cost, and the ECS integration beside plain Bullet: "
-           "[physics-speed-vs-error.md](physics-speed-vs-error.md) (`scripts/physics-report`).\n";
+           "[physics-speed-vs-error.md](physics-speed-vs-error.md) (`scripts/physics-report`).\n"
+           "- Audio: OpenAL Soft's resamplers against the ideal sine and their cost, each "
+           "voice's cost per frame, and streaming against decoding whole: "
+           "[audio-speed-vs-error.md](audio-speed-vs-error.md) (`scripts/audio-report`).\n";
     return out.str();
 }
 
