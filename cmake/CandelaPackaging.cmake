@@ -4,8 +4,8 @@
 #   target_link_libraries(game PRIVATE Candela::runtime)
 #
 # The static libraries, their public headers and the `candela` executable are installed with
-# an export set (Candela::ecs, ::content, ::physics, ::audio, ::render, ::ui, ::runtime) and a
-# CandelaConfig.cmake that finds what the libraries link (Vulkan, GLFW, OpenEXR, ...). Shaders need no install:
+# an export set (Candela::ecs, ::content, ::physics, ::audio, ::gameui, ::render, ::ui, ::runtime)
+# and a CandelaConfig.cmake that finds what the libraries link (Vulkan, GLFW, OpenEXR, ...). Shaders need no install:
 # they are SPIR-V embedded in the library at build time (README, "Shaders").
 include(CMakePackageConfigHelpers)
 
@@ -16,7 +16,7 @@ set(candela_exported candela_ecs)
 set_target_properties(candela_ecs PROPERTIES EXPORT_NAME ecs)
 add_library(Candela::ecs ALIAS candela_ecs)
 if(CANDELA_BUILD_GRAPHICS)
-  foreach(name content physics audio render ui runtime)
+  foreach(name content physics audio gameui render ui runtime)
     set_target_properties(candela_${name} PROPERTIES EXPORT_NAME ${name})
     add_library(Candela::${name} ALIAS candela_${name})
     list(APPEND candela_exported candela_${name})
@@ -30,7 +30,7 @@ endif()
 install(TARGETS ${candela_exported} EXPORT CandelaTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(dir ecs content physics audio render ui runtime)
+foreach(dir ecs content physics audio gameui render ui runtime)
   if(dir STREQUAL "ecs" OR CANDELA_BUILD_GRAPHICS)
     install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   endif()
