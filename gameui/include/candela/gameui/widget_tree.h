@@ -1,6 +1,6 @@
 #pragma once
-// A small retained widget set for game menus and HUDs: panels, labels, images, buttons, sliders
-// and lists, anchored in their parents (anchors.h), navigated by pointer, keyboard or gamepad
+// A small retained widget set for game menus and HUDs: panels, labels, buttons, sliders and
+// lists, anchored in their parents (anchors.h), navigated by pointer, keyboard or gamepad
 // through UiInput (the application fills it from its input actions). The tree lays itself out
 // for the window's size and reports what the player did as events; drawing is the UI pass's.
 //
@@ -24,16 +24,18 @@ inline constexpr WidgetId kNoWidget = ~0u;
 // UI units are pixels of a window this tall: the UI scale is the window's height over it.
 inline constexpr float kReferenceHeight = 720.0f;
 
-enum class WidgetKind : std::uint8_t { Panel, Label, Image, Button, Slider, List };
+enum class WidgetKind : std::uint8_t { Panel, Label, Button, Slider, List };
 
 struct Widget {
     WidgetKind kind = WidgetKind::Panel;
     Anchors anchors;
     Offsets offsets;
-    std::string text;                        // a label's or button's
-    TextStyle style{.pixelSize = 24.0f};     // the size in UI units
-    std::array<float, 4> color{1, 1, 1, 1};  // display-encoded RGBA: fill, or text for labels
-    std::string image;                       // an image widget's file
+    std::string text;                     // a label's or button's
+    TextStyle style{.pixelSize = 24.0f};  // the size in UI units
+    // Display-encoded RGBA (the LDR target holds sRGB-encoded values): the fill (a label has
+    // none) and the text.
+    std::array<float, 4> color{0, 0, 0, 0};
+    std::array<float, 4> textColor{1, 1, 1, 1};
     float value = 0, minimum = 0, maximum = 1, step = 0.1f;  // a slider's
     std::vector<std::string> items;                          // a list's
     std::int32_t selected = 0;                               // the list's chosen item
@@ -75,6 +77,8 @@ public:
     // Places every widget for a window of `width` x `height` pixels.
     void layout(float width, float height);
     const Rect& rect(WidgetId id) const { return nodes_.at(id).rect; }
+    // It and every ancestor visible.
+    bool shown(WidgetId id) const;
     float scale() const { return scale_; }
 
     // Pointer: a button clicks when pressed and released over it; a slider follows the pointer
@@ -93,7 +97,6 @@ private:
         WidgetId parent = kNoWidget;
         Rect rect;
     };
-    bool shown(WidgetId id) const;  // it and every ancestor visible
     bool focusable(WidgetId id) const;
     WidgetId hit(float x, float y) const;
     void moveFocus(int direction);

@@ -1,0 +1,79 @@
+// What the UI pass is given: glyphs rasterised once, on whole pixels at one texel per pixel
+// (crisp at every window size), fills sampling the atlas's covered corner, and the atlas
+// starting again when full without a glyph placed before the reset.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "candela/gameui/ui_draw_list.h"
+
+namespace candela::gameui {
+namespace {
+
+const Font& font() {
+    static const std::shared_ptr<const Font> f = [] {
+        content::Diagnostics diagnostics;
+        return Font::fallback(diagnostics);
+    }();
+    return *f;
+}
+
+TEST(UiDrawList, GlyphsSitOnWholePixelsOneTexelPerPixelAtEveryWindowSize) {
+    WidgetTree ui;
+    const WidgetId play =
+        ui.add(button("Play again", {0.5f, 0.5f, 0.5f, 0.5f}, {-120, -30, 120, 30}));
+    GlyphAtlas atlas(512);
+    for (float height : {360.0f, 720.0f, 1080.0f}) {
+        SCOPED_TRACE(height);
+        ui.layout(height * 16 / 9, height);
+        UiDrawList list;
+        buildDrawList(ui, font(), atlas, list);
+        // One fill, then a quad per visible glyph ("Play again": nine).
+        ASSERT_EQ(list.indices.size(), 6u * 10u);
+        const Rect& r = ui.rect(play);
+        for (std::size_t q = 1; q < list.vertices.size() / 4; ++q) {
+            const UiVertex& a = list.vertices[4 * q];
+            const UiVertex& c = list.vertices[4 * q + 2];
+            EXPECT_EQ(a.x, std::round(a.x));
+            EXPECT_EQ(a.y, std::round(a.y));
+            EXPECT_NEAR((c.x - a.x), (c.u - a.u) * 512.0f, 1e-3) << "one texel per pixel";
+            EXPECT_NEAR((c.y - a.y), (c.v - a.v) * 512.0f, 1e-3);
+            EXPECT_GE(a.x, r.x);
+            EXPECT_LE(c.x, r.x + r.width);
+        }
+    }
+    EXPECT_EQ(atlas.resets(), 0u);
+}
+
+TEST(UiDrawList, AFullAtlasStartsAgainAndTheListIsBuiltFromTheNewOne) {
+    GlyphAtlas atlas(64);  // room for a few large glyphs only
+    WidgetTree ui;
+    ui.add(label("abcdefghijklmnopqrstuvwxyz", {0, 0, 1, 1}, {}));
+    ui.layout(1280, 720);
+    ui.widget(0).style.pixelSize = 30;
+    UiDrawList list;
+    buildDrawList(ui, font(), atlas, list);
+    EXPECT_GE(atlas.resets(), 1u);
+    // Every quad that was kept samples texels the atlas holds now.
+    for (const UiVertex& v : list.vertices) {
+        EXPECT_GE(v.u, 0.0f);
+        EXPECT_LE(v.u, 1.0f);
+    }
+}
+
+TEST(UiDrawList, HiddenWidgetsAndTransparentFillsDrawNothing) {
+    WidgetTree ui;
+    const WidgetId menu = ui.add(panel({0, 0, 1, 1}, {}));
+    ui.add(button("Quit", {0, 0, 1, 1}, {10, 10, -10, -10}), menu);
+    ui.layout(640, 360);
+    GlyphAtlas atlas;
+    UiDrawList shown, hidden;
+    buildDrawList(ui, font(), atlas, shown);
+    EXPECT_GT(shown.indices.size(), 12u);
+    ui.widget(menu).visible = false;
+    buildDrawList(ui, font(), atlas, hidden);
+    EXPECT_TRUE(hidden.indices.empty());
+}
+
+}  // namespace
+}  // namespace candela::gameui
