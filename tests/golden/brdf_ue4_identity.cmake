@@ -18,6 +18,8 @@
 # orb_game.exr and .png again when the orb began to move by Bullet (issue 46): the orb is drawn
 # where physics puts it, interpolated between 60 Hz steps, a few pixels from where the old
 # per-frame integration drew it; the game changed, not the BRDF path.
+# orb_game.png again when the game drew its score panel with the game UI pass (issue 47): the
+# panel is over the tonemapped image, the .exr (scene radiance) stayed byte-identical.
 #
 #   cmake -DBUILD_DIR=<build> -DHASHES=brdf_ue4_karis2013.sha256 -DOUT=<dir> -P brdf_ue4_identity.cmake
 cmake_minimum_required(VERSION 3.25)

@@ -147,6 +147,37 @@ TEST(OrbGame, ARecordedRunReplaysTheSameGame) {
     EXPECT_EQ(replayed.dump(), original.dump());
 }
 
+// Issue 47: the title menu (--title) holds the clock until Play is pressed, by a replayed mouse
+// click or by the gamepad on the focused button, and each press starts the game exactly once:
+// the clock runs from the frame after the event (frame 5 for the click released at frame 4,
+// frame 3 for A pressed at frame 2).
+TEST(OrbGame, TheTitleMenusPlayButtonStartsTheGameByMouseOrGamepad) {
+    const auto run = [](const std::string& replay, const std::string& name) {
+        auto state = tempDir() / (name + ".json");
+        std::filesystem::remove(state);
+        RunResult r = runGame("--headless --title --size 320x180 --frames 30 --input " + kReplays +
+                              replay + " --state " + state.string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return std::pair{r, nlohmann::json::parse(std::ifstream(state), nullptr, false)};
+    };
+    const auto [click, clicked] = run("title_click.input", "title_click");
+    ASSERT_TRUE(clicked.is_object()) << click.output;
+    EXPECT_EQ(clicked["status"], "playing");
+    EXPECT_NEAR(clicked["elapsed_seconds"].get<double>(), 25.0 / 30.0, 1e-9);
+    const auto [pad, padded] = run("title_gamepad.input", "title_pad");
+    ASSERT_TRUE(padded.is_object()) << pad.output;
+    EXPECT_NEAR(padded["elapsed_seconds"].get<double>(), 27.0 / 30.0, 1e-9);
+    for (const RunResult* r : {&click, &pad}) {
+        const std::size_t first = r->output.find("play\n");
+        ASSERT_NE(first, std::string::npos) << r->output;
+        EXPECT_EQ(r->output.find("play\n", first + 1), std::string::npos) << "fired once";
+    }
+    // Without a press the menu stays and the clock waits; replays without --title never see it.
+    const auto [idle, waiting] = run("lose_restart.input", "title_idle");
+    EXPECT_EQ(waiting["status"], "title");
+    EXPECT_EQ(waiting["elapsed_seconds"], 0.0);
+}
+
 // Issue 47: the orb game's sounds. The replay mixes the same WAV bytes twice; the ambience
 // loops under everything from the first frame, and each collected spark adds its chime (the
 // two sparks win.input takes by frame 95 stand out of the ambience; the orb grazing a wall may

@@ -13,6 +13,7 @@
 // scores and sulks when the game is lost; --state then logs its animation every frame.
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@
 #include "orb_components.h"
 #include "orb_level.h"
 #include "orb_systems.h"
+#include "orb_ui.h"
 
 namespace {
 
@@ -33,7 +35,8 @@ using namespace candela::runtime;
 
 constexpr const char* kGameUsage =
     "[run] [LEVEL.scene.json | REPLAY.input] [--state FILE.json] [--mascot MODEL.glb]\n"
-    "                 [--bindings FILE.json]  (steer_x, steer_z, restart: see orb_systems.cpp)";
+    "                 [--bindings FILE.json]  (steer_x, steer_z, restart: see orb_systems.cpp)\n"
+    "                 [--title]  (start on the title menu, as a window without --input does)";
 
 // The mascot's clips and its animation state each frame: [frame, clip, time, next clip (-1:
 // none), crossfade weight, score, status].
@@ -84,6 +87,9 @@ int main(int argc, char** argv) {
     options.title = "Orb";
     std::string level = ORB_GAME_DIR "/level.scene.json";
     std::string inputPath, statePath, mascotPath, bindingsPath;
+    // The title menu: a player's window starts on it; replays and headless runs start playing
+    // unless --title asks for it (a replay that clicks Play, a recording made on the title).
+    std::optional<bool> title;
     const std::vector<std::string>& args = command.arguments;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -93,6 +99,8 @@ int main(int argc, char** argv) {
             mascotPath = args[++i];
         } else if (a == "--bindings" && i + 1 < args.size()) {
             bindingsPath = args[++i];
+        } else if (a == "--title") {
+            title = true;
         } else if (!a.empty() && a[0] != '-' && a.ends_with(".input")) {
             inputPath = a;  // a replay: the same as --input
         } else if (!a.empty() && a[0] != '-') {
@@ -140,6 +148,7 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "orb: %s; the default controls stand\n", error.c_str());
         }
     }
+    orb::addOrbUi(app, title.value_or(!options.headless && !options.inputScript));
     orb::addOrbSystems(app);
 
     const int exitCode = app.run();

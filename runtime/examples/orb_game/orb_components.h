@@ -40,7 +40,8 @@ struct SoundCue {
     std::string plays;
 };
 
-enum class Status : std::uint8_t { Playing, Won, Lost };
+// Title: the title menu is up and the clock waits (orb_ui.h).
+enum class Status : std::uint8_t { Playing, Won, Lost, Title };
 
 // One per level (on the "rules" entity).
 struct GameState {

@@ -93,6 +93,8 @@ const char* statusName(Status status) {
             return "won";
         case Status::Lost:
             return "lost";
+        case Status::Title:
+            return "title";
     }
     return "?";
 }

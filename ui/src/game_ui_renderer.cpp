@@ -1,0 +1,142 @@
+#include "candela/ui/game_ui_renderer.h"
+
+#include <cstddef>
+#include <cstring>
+#include <stdexcept>
+
+#include "candela/render/gpu_context.h"
+#include "shaders/game_ui.frag.spv.h"
+#include "shaders/game_ui.vert.spv.h"
+
+namespace candela::ui {
+namespace {
+
+constexpr render::DescriptorBinding kBindings[] = {
+    {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+
+struct PushConstants {
+    float scale[2];
+    float translate[2];
+};
+
+}  // namespace
+
+GameUiRenderer::GameUiRenderer(render::GpuContext& context, VkFormat targetFormat)
+    : context_(context) {
+    using gameui::UiVertex;
+    render::GraphicsPipelineDesc desc;
+    desc.vertexSpirv = game_ui_vert_spv;
+    desc.fragmentSpirv = game_ui_frag_spv;
+    desc.vertexBindings = {{0, sizeof(UiVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32_SFLOAT, uint32_t(offsetof(UiVertex, x))},
+                             {1, 0, VK_FORMAT_R32G32_SFLOAT, uint32_t(offsetof(UiVertex, u))},
+                             {2, 0, VK_FORMAT_R8G8B8A8_UNORM, uint32_t(offsetof(UiVertex, rgba))}};
+    desc.colorFormats = {targetFormat};
+    desc.alphaBlend = true;
+    pipeline_ = render::Pipeline::graphics(context_, desc, kBindings, sizeof(PushConstants));
+    // Nearest: glyphs are drawn one texel per pixel, so nothing is filtered (or blurred).
+    VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    samplerInfo.magFilter = VK_FILTER_NEAREST;
+    samplerInfo.minFilter = VK_FILTER_NEAREST;
+    samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    if (vkCreateSampler(context_.device(), &samplerInfo, nullptr, &sampler_) != VK_SUCCESS)
+        throw std::runtime_error("GameUiRenderer: vkCreateSampler failed");
+}
+
+GameUiRenderer::~GameUiRenderer() {
+    if (sampler_) vkDestroySampler(context_.device(), sampler_, nullptr);
+}
+
+void GameUiRenderer::uploadAtlas(const gameui::GlyphAtlas& atlas) {
+    const std::uint32_t size = atlas.size();
+    const bool fresh = atlas_.handle() == VK_NULL_HANDLE || atlas_.desc().width != size;
+    if (fresh) {
+        atlas_ = render::GpuImage(context_,
+                                  {VK_FORMAT_R8_UNORM, size, size, 1, false,
+                                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
+    }
+    const VkDeviceSize bytes = VkDeviceSize(size) * size;
+    render::GpuBuffer staging(context_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                              render::MemoryLocation::HostVisible);
+    std::memcpy(staging.mapped(), atlas.pixels().data(), bytes);
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+        render::transitionImage(
+            cmd, atlas_,
+            fresh ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0,
+            VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {size, size, 1};
+        vkCmdCopyBufferToImage(cmd, staging.handle(), atlas_.handle(),
+                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        render::transitionImage(cmd, atlas_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    });
+}
+
+void GameUiRenderer::ensureCapacity(render::GpuBuffer& buffer, VkDeviceSize bytes,
+                                    VkBufferUsageFlags usage) {
+    if (buffer.handle() != VK_NULL_HANDLE && buffer.size() >= bytes) return;
+    VkDeviceSize size = 16 * 1024;
+    while (size < bytes)
+        size *= 2;
+    buffer = render::GpuBuffer(context_, size, usage, render::MemoryLocation::HostVisible);
+}
+
+void GameUiRenderer::prepare(gameui::GlyphAtlas& atlas, const gameui::UiDrawList& list) {
+    indexCount_ = std::uint32_t(list.indices.size());
+    if (indexCount_ == 0) return;
+    if (atlas.dirty() || atlas_.handle() == VK_NULL_HANDLE) {
+        uploadAtlas(atlas);
+        atlas.markUploaded();
+    }
+    ensureCapacity(vertices_, list.vertices.size() * sizeof(gameui::UiVertex),
+                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    ensureCapacity(indices_, list.indices.size() * sizeof(std::uint32_t),
+                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    std::memcpy(vertices_.mapped(), list.vertices.data(),
+                list.vertices.size() * sizeof(gameui::UiVertex));
+    std::memcpy(indices_.mapped(), list.indices.data(),
+                list.indices.size() * sizeof(std::uint32_t));
+}
+
+void GameUiRenderer::recordInPass(VkCommandBuffer cmd, const render::GpuImage& target) {
+    if (indexCount_ == 0) return;
+    const uint32_t width = target.desc().width, height = target.desc().height;
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = target.view();
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {width, height}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &color;
+    vkCmdBeginRendering(cmd, &rendering);
+    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    VkRect2D scissor{{0, 0}, {width, height}};
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    pipeline_.bind(cmd);
+    VkDescriptorImageInfo image{sampler_, atlas_.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet write = render::sampledImageWrite(0, &image);
+    pipeline_.pushDescriptors(cmd, {&write, 1});
+    PushConstants pc{{2.0f / float(width), 2.0f / float(height)}, {-1.0f, -1.0f}};
+    pipeline_.pushConstants(cmd, &pc, sizeof(pc));
+    VkDeviceSize offset = 0;
+    VkBuffer vertexBuffer = vertices_.handle();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
+    vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, indexCount_, 1, 0, 0, 0);
+    vkCmdEndRendering(cmd);
+}
+
+}  // namespace candela::ui
