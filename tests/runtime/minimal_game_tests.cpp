@@ -150,6 +150,18 @@ TEST(MinimalGame, EveryTouchChimes) {
     EXPECT_EQ(onsets, score);
 }
 
+// Issue 47: the template's one button. Two touches score 2; the replayed click on Reset (pressed
+// at frame 100, released at 101) sets the score to 0 the frame after; before it, it is 2.
+TEST(MinimalGame, TheResetButtonClearsTheScoreOnce) {
+    const std::string replay = std::string(MINIMAL_GAME_DIR) + "/replays/reset.input";
+    const RunResult before = runGame("--headless --size 320x180 --frames 102 --input " + replay);
+    const RunResult after = runGame("--headless --size 320x180 --frames 104 --input " + replay);
+    ASSERT_EQ(before.exitCode, 0) << before.output;
+    ASSERT_EQ(after.exitCode, 0) << after.output;
+    EXPECT_EQ(scoreOf(before, 102), 2) << before.output;
+    EXPECT_EQ(scoreOf(after, 104), 0) << after.output;
+}
+
 TEST(MinimalGame, StandardFlagsAreCheckedAndListed) {
     RunResult bad = runGame("--frames zero");
     EXPECT_EQ(bad.exitCode, 2) << bad.output;

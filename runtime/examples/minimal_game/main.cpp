@@ -1,8 +1,7 @@
 // minimal-game: steer the white ball with WASD and touch the four orbiting lights; each touch
-// scores a point, chimes and knocks that light ahead along its orbit. The whole game is this
-// file, the level (level.scene.json: walls, lights that are trigger colliders, the chime's
-// sound) and a CMakeLists.txt of find_package(Candela).
-//
+// scores a point, chimes and knocks that light ahead along its orbit; a button resets the
+// score. The whole game is this file, the level (level.scene.json: walls, lights that are
+// trigger colliders, the chime's sound) and a CMakeLists.txt of find_package(Candela).
 //   minimal-game                                  # a window (headless without a display)
 //   minimal-game --headless --frames 150 --input replays/collect.input --capture shot.png
 #include <cmath>
@@ -19,6 +18,7 @@
 #include "candela/runtime/application.h"
 #include "candela/runtime/debug_text.h"
 #include "candela/runtime/exit_code.h"
+#include "candela/runtime/game_ui.h"
 
 using namespace candela;
 using runtime::Key;
@@ -58,10 +58,8 @@ int main(int argc, char** argv) {
     for (auto& [e, orbit] : orbiters)
         registry.emplace<Orbit>(e, orbit);
     if (ball.isNull() || chime.isNull()) return runtime::kExitBadArguments;
-    physics::CharacterController walker;  // walks the ball; the level's walls stop it
-    walker.radius = 0.5f;
-    walker.height = 1.0f;
-    registry.emplace<physics::CharacterController>(ball, walker);
+    registry.emplace<physics::CharacterController>(
+        ball, physics::CharacterController{.radius = 0.5f, .height = 1.0f});
 
     app.addSystem("orbit", [](runtime::SceneWorld& world, const runtime::FrameContext& frame) {
         world.registry.view<ecs::LocalTransform, Orbit>().each([&](ecs::Entity e,
@@ -73,8 +71,13 @@ int main(int argc, char** argv) {
         });
     });
 
+    auto ui = std::make_shared<runtime::GameUi>();  // a Reset button, bottom left
+    app.addLayer(ui);
+    const auto reset = ui->tree().add(gameui::button("Reset", {0, 1, 0, 1}, {16, -56, 136, -16}));
     int score = 0;
     app.addSystem("player", [&](runtime::SceneWorld& world, const runtime::FrameContext& frame) {
+        for (const gameui::UiEvent& e : ui->events())
+            score = e.widget == reset ? 0 : score;
         const runtime::InputState& keys = frame.keys();
         const ecs::Vec3 direction{float(keys.down(Key::D)) - float(keys.down(Key::A)), 0.0f,
                                   float(keys.down(Key::S)) - float(keys.down(Key::W))};
