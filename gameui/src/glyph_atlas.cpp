@@ -1,6 +1,11 @@
 #include "candela/gameui/glyph_atlas.h"
 
 #include <algorithm>
+#include <array>
+#include <optional>
+#include <utility>
+
+#include "candela/content/image_file.h"
 
 namespace candela::gameui {
 namespace {
@@ -15,11 +20,14 @@ GlyphAtlas::GlyphAtlas(std::uint32_t size) : size_(std::max(size, 64u)) {
 }
 
 void GlyphAtlas::clear() {
-    pixels_.assign(std::size_t(size_) * size_, 0);
+    pixels_.assign(std::size_t(size_) * size_ * 4, 0);
     for (std::uint32_t y = 0; y < 2; ++y)
         for (std::uint32_t x = 0; x < 2; ++x)
-            pixels_[y * size_ + x] = 255;  // the solid texels
+            std::fill_n(pixels_.begin() + std::ptrdiff_t((y * size_ + x) * 4), 4, 255);  // solid
     glyphs_.clear();
+    for (auto& [path, image] : images_) {
+        if (image.advance >= 0) image = {};  // placed again when next drawn; failures stay
+    }
     shelfX_ = 2 + kPadding;
     shelfY_ = 0;
     shelfHeight_ = 2;
@@ -42,6 +50,28 @@ bool GlyphAtlas::reserve(std::uint32_t width, std::uint32_t height, std::uint32_
     return true;
 }
 
+template <class Texel>
+bool GlyphAtlas::place(AtlasGlyph& g, std::uint32_t width, std::uint32_t height, Texel texel) {
+    // Full: start again empty; an entry larger than the whole atlas has no texels.
+    bool placed = reserve(width, height, g.x, g.y);
+    if (!placed) {
+        clear();
+        placed = reserve(width, height, g.x, g.y);
+    }
+    if (!placed) return false;
+    g.width = width;
+    g.height = height;
+    for (std::uint32_t row = 0; row < height; ++row) {
+        for (std::uint32_t column = 0; column < width; ++column) {
+            const std::array<std::uint8_t, 4> rgba = texel(column, row);
+            std::copy(rgba.begin(), rgba.end(),
+                      pixels_.begin() + std::ptrdiff_t(((g.y + row) * size_ + g.x + column) * 4));
+        }
+    }
+    dirty_ = true;
+    return true;
+}
+
 AtlasGlyph GlyphAtlas::glyph(const Font& font, std::uint32_t glyphIndex, std::uint32_t pixelSize) {
     const auto key = std::tuple{&font, glyphIndex, pixelSize};
     if (auto it = glyphs_.find(key); it != glyphs_.end()) return it->second;
@@ -51,25 +81,48 @@ AtlasGlyph GlyphAtlas::glyph(const Font& font, std::uint32_t glyphIndex, std::ui
     g.top = bitmap.top;
     g.advance = bitmap.advance;
     if (bitmap.width > 0 && bitmap.height > 0) {
-        // Full: start again empty; a glyph larger than the whole atlas draws as nothing.
-        bool placed = reserve(bitmap.width, bitmap.height, g.x, g.y);
-        if (!placed) {
-            clear();
-            placed = reserve(bitmap.width, bitmap.height, g.x, g.y);
-        }
-        if (placed) {
-            g.width = bitmap.width;
-            g.height = bitmap.height;
-            for (std::uint32_t row = 0; row < bitmap.height; ++row) {
-                std::copy_n(bitmap.coverage.begin() + std::ptrdiff_t(row * bitmap.width),
-                            bitmap.width,
-                            pixels_.begin() + std::ptrdiff_t((g.y + row) * size_ + g.x));
-            }
-            dirty_ = true;
-        }
+        place(g, bitmap.width, bitmap.height, [&](std::uint32_t x, std::uint32_t y) {
+            const std::uint8_t coverage = bitmap.coverage[y * bitmap.width + x];
+            return std::array<std::uint8_t, 4>{255, 255, 255, coverage};
+        });
     }
     glyphs_.emplace(key, g);
     return g;
+}
+
+AtlasGlyph GlyphAtlas::image(const std::string& path) {
+    if (auto it = images_.find(path); it != images_.end() && it->second.width > 0)
+        return it->second;
+    else if (it != images_.end() && it->second.advance < 0)
+        return {};  // failed before: reported once
+    AtlasGlyph failed;
+    failed.advance = -1;  // marks the failure, reported once
+    std::optional<content::Rgba8Image> loaded = content::loadImageFile(path, diagnostics_);
+    if (!loaded) {
+        images_[path] = failed;
+        return {};
+    }
+    const content::Rgba8Image pixels = std::move(*loaded);
+    if (pixels.width > kMaxImageSize || pixels.height > kMaxImageSize) {
+        diagnostics_.error(path, "",
+                           std::to_string(pixels.width) + "x" + std::to_string(pixels.height) +
+                               " is larger than a UI image may be (" +
+                               std::to_string(kMaxImageSize) + " on a side); it is not drawn");
+        images_[path] = failed;
+        return {};
+    }
+    AtlasGlyph g;
+    place(g, pixels.width, pixels.height, [&](std::uint32_t x, std::uint32_t y) {
+        const std::size_t at = (std::size_t(y) * pixels.width + x) * 4;
+        return std::array<std::uint8_t, 4>{pixels.rgba[at], pixels.rgba[at + 1],
+                                           pixels.rgba[at + 2], pixels.rgba[at + 3]};
+    });
+    images_[path] = g;
+    return g;
+}
+
+content::Diagnostics GlyphAtlas::takeDiagnostics() {
+    return std::exchange(diagnostics_, {});
 }
 
 }  // namespace candela::gameui

@@ -79,6 +79,15 @@ void widget(UiDrawList& out, const WidgetTree& tree, WidgetId id, const Font& fo
             out.rect(r, w.color, size);
             text(out, w.text, w.style, r, scale, textColor, font, atlas);
             break;
+        case WidgetKind::Image: {
+            const AtlasGlyph a = atlas.image(w.image);
+            if (a.width == 0) break;
+            // Half a texel in from each edge: linear filtering never reaches the neighbours.
+            quad(out, r.x, r.y, r.x + r.width, r.y + r.height, (float(a.x) + 0.5f) / size,
+                 (float(a.y) + 0.5f) / size, (float(a.x + a.width) - 0.5f) / size,
+                 (float(a.y + a.height) - 0.5f) / size, packed(w.color));
+            break;
+        }
         case WidgetKind::Button: {
             const float shade = tree.pressed() == id ? 0.8f : tree.hovered() == id ? 1.25f : 1.0f;
             out.rect(r, scaled(w.color, shade), size);

@@ -31,6 +31,13 @@ Widget label(std::string text, Anchors anchors, Offsets offsets) {
     return w;
 }
 
+Widget image(std::string path, Anchors anchors, Offsets offsets) {
+    Widget w = make(WidgetKind::Image, anchors, offsets);
+    w.image = std::move(path);
+    w.color = {1, 1, 1, 1};
+    return w;
+}
+
 Widget button(std::string text, Anchors anchors, Offsets offsets) {
     Widget w = make(WidgetKind::Button, anchors, offsets);
     w.text = std::move(text);

@@ -69,6 +69,8 @@ void GameUi::prepare(const FrameContext& frame, const FrameStats&) {
     gpu_->pointerWasDown = frame.input && frame.input->down(MouseButton::Left);
     gpu_->list.clear();
     if (font_) gameui::buildDrawList(tree_, *font_, gpu_->atlas, gpu_->list);
+    for (const content::Diagnostic& d : gpu_->atlas.takeDiagnostics().messages)
+        std::fprintf(stderr, "%s\n", content::formatDiagnostic(d).c_str());  // bad images, once
     gpu_->renderer->prepare(gpu_->atlas, gpu_->list);
 }
 

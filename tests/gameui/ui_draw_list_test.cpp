@@ -5,6 +5,10 @@
 
 #include <cmath>
 
+#include <filesystem>
+#include <fstream>
+
+#include "candela/content/png_writer.h"
 #include "candela/gameui/ui_draw_list.h"
 
 namespace candela::gameui {
@@ -73,6 +77,52 @@ TEST(UiDrawList, HiddenWidgetsAndTransparentFillsDrawNothing) {
     ui.widget(menu).visible = false;
     buildDrawList(ui, font(), atlas, hidden);
     EXPECT_TRUE(hidden.indices.empty());
+}
+
+}  // namespace
+}  // namespace candela::gameui
+
+namespace candela::gameui {
+namespace {
+
+// An image widget draws its PNG stretched over its rect from the atlas; a file that is not an
+// image, or one too large for the atlas, is an error naming it, once, and draws nothing.
+TEST(UiDrawList, ImagesDrawFromTheAtlasAndBadOnesAreNamedOnce) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "candela-ui-images";
+    std::filesystem::create_directories(dir);
+    std::vector<std::uint8_t> rgba(16 * 8 * 4);
+    for (std::size_t i = 0; i < rgba.size(); i += 4) {
+        rgba[i] = 200, rgba[i + 1] = 40, rgba[i + 2] = 10, rgba[i + 3] = 255;
+    }
+    ASSERT_EQ(content::writePng(dir / "icon.png", 16, 8, 4, rgba.data()), "");
+    std::ofstream(dir / "notes.png") << "not an image";
+    const std::vector<std::uint8_t> wide(600 * 2 * 4);
+    ASSERT_EQ(content::writePng(dir / "huge.png", 600, 2, 4, wide.data()), "");
+    WidgetTree ui;
+    const WidgetId icon =
+        ui.add(image((dir / "icon.png").string(), {0, 0, 0, 0}, {10, 10, 74, 42}));
+    ui.add(image((dir / "notes.png").string(), {0, 0, 0, 0}, {100, 10, 164, 42}));
+    ui.add(image((dir / "huge.png").string(), {0, 0, 0, 0}, {200, 10, 264, 42}));
+    ui.layout(1280, 720);
+    GlyphAtlas atlas(256);
+    UiDrawList list;
+    buildDrawList(ui, font(), atlas, list);
+    ASSERT_EQ(list.vertices.size(), 4u) << "only the readable image";
+    EXPECT_EQ(list.vertices[0].x, ui.rect(icon).x);
+    EXPECT_EQ(list.vertices[2].x, ui.rect(icon).x + ui.rect(icon).width);
+    // Its texels in the atlas are the image's (RGBA, row by row).
+    const std::uint32_t u = std::uint32_t(list.vertices[0].u * 256.0f);
+    const std::uint32_t v = std::uint32_t(list.vertices[0].v * 256.0f);
+    EXPECT_EQ(atlas.pixels()[(v * 256 + u) * 4], 200);
+    EXPECT_EQ(atlas.pixels()[(v * 256 + u) * 4 + 1], 40);
+    content::Diagnostics first = atlas.takeDiagnostics();
+    EXPECT_EQ(first.messages.size(), 2u) << first.toString();
+    EXPECT_TRUE(first.mentions("cannot decode image")) << first.toString();
+    EXPECT_TRUE(first.mentions("larger than a UI image")) << first.toString();
+    list.clear();
+    buildDrawList(ui, font(), atlas, list);
+    EXPECT_TRUE(atlas.takeDiagnostics().messages.empty()) << "reported once";
+    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -34,10 +34,11 @@ GameUiRenderer::GameUiRenderer(render::GpuContext& context, VkFormat targetForma
     desc.colorFormats = {targetFormat};
     desc.alphaBlend = true;
     pipeline_ = render::Pipeline::graphics(context_, desc, kBindings, sizeof(PushConstants));
-    // Nearest: glyphs are drawn one texel per pixel, so nothing is filtered (or blurred).
+    // Linear for images drawn at another size; glyphs are one texel per pixel with fragment
+    // centres on texel centres, where linear filtering returns the texel itself.
     VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    samplerInfo.magFilter = VK_FILTER_NEAREST;
-    samplerInfo.minFilter = VK_FILTER_NEAREST;
+    samplerInfo.magFilter = VK_FILTER_LINEAR;
+    samplerInfo.minFilter = VK_FILTER_LINEAR;
     samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
@@ -55,10 +56,10 @@ void GameUiRenderer::uploadAtlas(const gameui::GlyphAtlas& atlas) {
     const bool fresh = atlas_.handle() == VK_NULL_HANDLE || atlas_.desc().width != size;
     if (fresh) {
         atlas_ = render::GpuImage(context_,
-                                  {VK_FORMAT_R8_UNORM, size, size, 1, false,
+                                  {VK_FORMAT_R8G8B8A8_UNORM, size, size, 1, false,
                                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
     }
-    const VkDeviceSize bytes = VkDeviceSize(size) * size;
+    const VkDeviceSize bytes = VkDeviceSize(size) * size * 4;
     render::GpuBuffer staging(context_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                               render::MemoryLocation::HostVisible);
     std::memcpy(staging.mapped(), atlas.pixels().data(), bytes);

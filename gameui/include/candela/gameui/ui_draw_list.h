@@ -1,8 +1,8 @@
 #pragma once
 // What the UI pass draws for a laid-out WidgetTree: textured, coloured triangles in window
-// pixels, in the order widgets were added (children over parents), sampling the glyph atlas
-// (solid fills sample its covered corner). Text is placed on whole pixels at whole pixel
-// sizes, so glyphs keep FreeType's coverage exactly.
+// pixels, in the order widgets were added (children over parents), sampling the atlas (glyphs,
+// images, and its white corner for solid fills) and multiplying by the vertex colour. Text is
+// placed on whole pixels at whole pixel sizes, so glyphs keep FreeType's coverage exactly.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -29,7 +29,8 @@ struct UiDrawList {
     }
 };
 
-// Appends the tree's visible widgets: fills, text, slider knobs, list rows, the focus outline.
+// Appends the tree's visible widgets: fills, images, text, slider knobs, list rows, the focus
+// outline.
 void buildDrawList(const WidgetTree& tree, const Font& font, GlyphAtlas& atlas, UiDrawList& out);
 
 }  // namespace candela::gameui

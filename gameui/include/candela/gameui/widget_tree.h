@@ -1,8 +1,8 @@
 #pragma once
-// A small retained widget set for game menus and HUDs: panels, labels, buttons, sliders and
-// lists, anchored in their parents (anchors.h), navigated by pointer, keyboard or gamepad
-// through UiInput (the application fills it from its input actions). The tree lays itself out
-// for the window's size and reports what the player did as events; drawing is the UI pass's.
+// A small retained widget set for game menus and HUDs: panels, labels, images, buttons,
+// sliders and lists, anchored in their parents (anchors.h), navigated by pointer, keyboard or
+// gamepad through UiInput (the application fills it from its input actions). The tree lays itself
+// out for the window's size and reports what the player did as events; drawing is the UI pass's.
 //
 //   WidgetTree ui;
 //   WidgetId menu = ui.add(panel({0.5f, 0.5f, 0.5f, 0.5f}, {-160, -120, 160, 120}));
@@ -24,7 +24,7 @@ inline constexpr WidgetId kNoWidget = ~0u;
 // UI units are pixels of a window this tall: the UI scale is the window's height over it.
 inline constexpr float kReferenceHeight = 720.0f;
 
-enum class WidgetKind : std::uint8_t { Panel, Label, Button, Slider, List };
+enum class WidgetKind : std::uint8_t { Panel, Label, Image, Button, Slider, List };
 
 struct Widget {
     WidgetKind kind = WidgetKind::Panel;
@@ -36,6 +36,7 @@ struct Widget {
     // none) and the text.
     std::array<float, 4> color{0, 0, 0, 0};
     std::array<float, 4> textColor{1, 1, 1, 1};
+    std::string image;  // an image widget's PNG or JPEG, stretched over its rect, tinted by color
     float value = 0, minimum = 0, maximum = 1, step = 0.1f;  // a slider's
     std::vector<std::string> items;                          // a list's
     std::int32_t selected = 0;                               // the list's chosen item
@@ -45,6 +46,7 @@ struct Widget {
 
 Widget panel(Anchors anchors, Offsets offsets);
 Widget label(std::string text, Anchors anchors, Offsets offsets);
+Widget image(std::string path, Anchors anchors, Offsets offsets);
 Widget button(std::string text, Anchors anchors, Offsets offsets);
 Widget slider(float value, float minimum, float maximum, Anchors anchors, Offsets offsets);
 Widget list(std::vector<std::string> items, Anchors anchors, Offsets offsets);

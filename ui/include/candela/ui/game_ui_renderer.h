@@ -1,8 +1,8 @@
 #pragma once
-// Draws a gameui::UiDrawList (the game's widgets and text) onto the LDR target inside a
+// Draws a gameui::UiDrawList (the game's widgets, images and text) onto the LDR target inside a
 // frame-graph pass: one pipeline (dynamic rendering, push descriptors, alpha blending in
-// display-encoded space, as the target holds sRGB-encoded values) sampling the glyph atlas, an
-// R8 image uploaded again only when new glyphs were rasterised.
+// display-encoded space, as the target holds sRGB-encoded values) sampling the atlas, an RGBA8
+// image uploaded again only when new glyphs or images were placed in it.
 #include <vulkan/vulkan.h>
 
 #include "candela/gameui/glyph_atlas.h"
