@@ -14,7 +14,7 @@ here=$repo/tests/content
 
 CC=clang CXX=clang++ cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCANDELA_SANITIZE=address,undefined,fuzzer-no-link -DCANDELA_SHARED_ASSETS="$assets" >/dev/null
-ninja -C "$build" fuzz_gltf_loader fuzz_scene_file fuzz_exr_image
+ninja -C "$build" fuzz_gltf_loader fuzz_scene_file fuzz_exr_image fuzz_audio_clip
 
 # Seed corpora: the repo's seeds and regressions plus small real assets (the large models
 # would only slow each iteration down). Working corpora live in the build folder.
@@ -31,10 +31,12 @@ seed fuzz_gltf_loader "$here"/fuzz/seeds/gltf/* "$here"/regressions/gltf/* \
   "$assets"/models/TextureSettingsTest/TextureSettingsTest.glb
 seed fuzz_scene_file "$here"/fuzz/seeds/scene/* "$here"/regressions/scene/*
 seed fuzz_exr_image "$here"/regressions/exr/* "$assets"/bad/exr/*.exr
+seed fuzz_audio_clip "$repo"/tests/audio/sounds/tone_1khz.ogg "$repo"/runtime/examples/*/sounds/*.wav \
+  "$repo"/runtime/examples/orb_game/sounds/*.ogg
 
 status=0
 mkdir -p "$build/fuzz-artifacts"
-for target in fuzz_gltf_loader fuzz_scene_file fuzz_exr_image; do
+for target in fuzz_gltf_loader fuzz_scene_file fuzz_exr_image fuzz_audio_clip; do
   echo "== $target for ${seconds}s"
   if ! "$build/bin/$target" "$build/fuzz-corpus/$target" -max_total_time="$seconds" \
       -timeout=20 -rss_limit_mb=2560 -max_len=65536 -print_final_stats=1 \

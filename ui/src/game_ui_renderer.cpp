@@ -2,9 +2,9 @@
 
 #include <cstddef>
 #include <cstring>
-#include <stdexcept>
 
 #include "candela/render/gpu_context.h"
+#include "overlay_pass_support.h"
 #include "shaders/game_ui.frag.spv.h"
 #include "shaders/game_ui.vert.spv.h"
 
@@ -36,15 +36,7 @@ GameUiRenderer::GameUiRenderer(render::GpuContext& context, VkFormat targetForma
     pipeline_ = render::Pipeline::graphics(context_, desc, kBindings, sizeof(PushConstants));
     // Linear for images drawn at another size; glyphs are one texel per pixel with fragment
     // centres on texel centres, where linear filtering returns the texel itself.
-    VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    samplerInfo.magFilter = VK_FILTER_LINEAR;
-    samplerInfo.minFilter = VK_FILTER_LINEAR;
-    samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    if (vkCreateSampler(context_.device(), &samplerInfo, nullptr, &sampler_) != VK_SUCCESS)
-        throw std::runtime_error("GameUiRenderer: vkCreateSampler failed");
+    sampler_ = makeClampedLinearSampler(context_);
 }
 
 GameUiRenderer::~GameUiRenderer() {
@@ -59,36 +51,7 @@ void GameUiRenderer::uploadAtlas(const gameui::GlyphAtlas& atlas) {
                                   {VK_FORMAT_R8G8B8A8_UNORM, size, size, 1, false,
                                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
     }
-    const VkDeviceSize bytes = VkDeviceSize(size) * size * 4;
-    render::GpuBuffer staging(context_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                              render::MemoryLocation::HostVisible);
-    std::memcpy(staging.mapped(), atlas.pixels().data(), bytes);
-    context_.submitAndWait([&](VkCommandBuffer cmd) {
-        render::transitionImage(
-            cmd, atlas_,
-            fresh ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0,
-            VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {size, size, 1};
-        vkCmdCopyBufferToImage(cmd, staging.handle(), atlas_.handle(),
-                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        render::transitionImage(cmd, atlas_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    });
-}
-
-void GameUiRenderer::ensureCapacity(render::GpuBuffer& buffer, VkDeviceSize bytes,
-                                    VkBufferUsageFlags usage) {
-    if (buffer.handle() != VK_NULL_HANDLE && buffer.size() >= bytes) return;
-    VkDeviceSize size = 16 * 1024;
-    while (size < bytes)
-        size *= 2;
-    buffer = render::GpuBuffer(context_, size, usage, render::MemoryLocation::HostVisible);
+    uploadTexture(context_, atlas_, atlas.pixels().data(), VkDeviceSize(size) * size * 4, fresh);
 }
 
 void GameUiRenderer::prepare(gameui::GlyphAtlas& atlas, const gameui::UiDrawList& list) {
@@ -98,10 +61,10 @@ void GameUiRenderer::prepare(gameui::GlyphAtlas& atlas, const gameui::UiDrawList
         uploadAtlas(atlas);
         atlas.markUploaded();
     }
-    ensureCapacity(vertices_, list.vertices.size() * sizeof(gameui::UiVertex),
-                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    ensureCapacity(indices_, list.indices.size() * sizeof(std::uint32_t),
-                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    growHostBuffer(context_, vertices_, list.vertices.size() * sizeof(gameui::UiVertex),
+                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, 16 * 1024);
+    growHostBuffer(context_, indices_, list.indices.size() * sizeof(std::uint32_t),
+                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT, 16 * 1024);
     std::memcpy(vertices_.mapped(), list.vertices.data(),
                 list.vertices.size() * sizeof(gameui::UiVertex));
     std::memcpy(indices_.mapped(), list.indices.data(),
@@ -111,19 +74,7 @@ void GameUiRenderer::prepare(gameui::GlyphAtlas& atlas, const gameui::UiDrawList
 void GameUiRenderer::recordInPass(VkCommandBuffer cmd, const render::GpuImage& target) {
     if (indexCount_ == 0) return;
     const uint32_t width = target.desc().width, height = target.desc().height;
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = target.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
-    vkCmdBeginRendering(cmd, &rendering);
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    beginOverlayRendering(cmd, target);
     VkRect2D scissor{{0, 0}, {width, height}};
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     pipeline_.bind(cmd);

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
-#include <stdexcept>
 
 #include "candela/render/gpu_context.h"
+#include "overlay_pass_support.h"
 #include "shaders/imgui.frag.spv.h"
 #include "shaders/imgui.vert.spv.h"
 
@@ -38,17 +38,7 @@ ImGuiRenderer::ImGuiRenderer(render::GpuContext& context, VkFormat targetFormat)
     desc.alphaBlend = true;
     pipeline_ = render::Pipeline::graphics(context_, desc, kBindings, sizeof(PushConstants));
 
-    VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    samplerInfo.magFilter = VK_FILTER_LINEAR;
-    samplerInfo.minFilter = VK_FILTER_LINEAR;
-    samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    samplerInfo.maxLod = 0.0f;
-    if (vkCreateSampler(context_.device(), &samplerInfo, nullptr, &sampler_) != VK_SUCCESS) {
-        throw std::runtime_error("ImGuiRenderer: vkCreateSampler failed");
-    }
+    sampler_ = makeClampedLinearSampler(context_);
     uploadFontAtlas();
 }
 
@@ -62,38 +52,12 @@ void ImGuiRenderer::uploadFontAtlas() {
     int width = 0;
     int height = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-    const VkDeviceSize bytes = VkDeviceSize(width) * VkDeviceSize(height) * 4;
-    render::GpuBuffer staging(context_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                              render::MemoryLocation::HostVisible);
-    std::memcpy(staging.mapped(), pixels, bytes);
     fontAtlas_ = render::GpuImage(
         context_, {VK_FORMAT_R8G8B8A8_UNORM, uint32_t(width), uint32_t(height), 1, false,
                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT});
-    context_.submitAndWait([&](VkCommandBuffer cmd) {
-        render::transitionImage(cmd, fontAtlas_, VK_IMAGE_LAYOUT_UNDEFINED,
-                                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE, 0,
-                                VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {uint32_t(width), uint32_t(height), 1};
-        vkCmdCopyBufferToImage(cmd, staging.handle(), fontAtlas_.handle(),
-                               VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-        render::transitionImage(cmd, fontAtlas_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                                VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    });
+    uploadTexture(context_, fontAtlas_, pixels, VkDeviceSize(width) * VkDeviceSize(height) * 4,
+                  true);
     io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(&fontAtlas_));
-}
-
-void ImGuiRenderer::ensureCapacity(render::GpuBuffer& buffer, VkDeviceSize bytes,
-                                   VkBufferUsageFlags usage) {
-    if (buffer.handle() != VK_NULL_HANDLE && buffer.size() >= bytes) return;
-    VkDeviceSize size = 64 * 1024;
-    while (size < bytes)
-        size *= 2;
-    buffer = render::GpuBuffer(context_, size, usage, render::MemoryLocation::HostVisible);
 }
 
 void ImGuiRenderer::record(VkCommandBuffer cmd, const ImDrawData& data,
@@ -120,10 +84,10 @@ void ImGuiRenderer::recordInPass(VkCommandBuffer cmd, const ImDrawData& data,
     const uint32_t width = target.desc().width;
     const uint32_t height = target.desc().height;
 
-    ensureCapacity(vertices_, VkDeviceSize(data.TotalVtxCount) * sizeof(ImDrawVert),
-                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    ensureCapacity(indices_, VkDeviceSize(data.TotalIdxCount) * sizeof(ImDrawIdx),
-                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    growHostBuffer(context_, vertices_, VkDeviceSize(data.TotalVtxCount) * sizeof(ImDrawVert),
+                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, 64 * 1024);
+    growHostBuffer(context_, indices_, VkDeviceSize(data.TotalIdxCount) * sizeof(ImDrawIdx),
+                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT, 64 * 1024);
     auto* vertexOut = static_cast<ImDrawVert*>(vertices_.mapped());
     auto* indexOut = static_cast<ImDrawIdx*>(indices_.mapped());
     for (int n = 0; n < data.CmdListsCount; ++n) {
@@ -136,17 +100,7 @@ void ImGuiRenderer::recordInPass(VkCommandBuffer cmd, const ImDrawData& data,
         indexOut += list->IdxBuffer.Size;
     }
 
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = target.view();
-    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, height}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &color;
-    vkCmdBeginRendering(cmd, &rendering);
+    beginOverlayRendering(cmd, target);
 
     // ImGui positions are in display units; the target may differ from the display size
     // (a window blitted to a larger swapchain), so stretch the display rectangle over it.
@@ -154,9 +108,6 @@ void ImGuiRenderer::recordInPass(VkCommandBuffer cmd, const ImDrawData& data,
     const ImVec2 displaySize = data.DisplaySize;
     const float toTargetX = displaySize.x > 0.0f ? float(width) / displaySize.x : 1.0f;
     const float toTargetY = displaySize.y > 0.0f ? float(height) / displaySize.y : 1.0f;
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-
     auto bindState = [&] {
         pipeline_.bind(cmd);
         VkDescriptorImageInfo font{sampler_, fontAtlas_.view(),

@@ -35,7 +35,6 @@ public:
 
 private:
     void uploadAtlas(const gameui::GlyphAtlas& atlas);
-    void ensureCapacity(render::GpuBuffer& buffer, VkDeviceSize bytes, VkBufferUsageFlags usage);
 
     render::GpuContext& context_;
     render::Pipeline pipeline_;

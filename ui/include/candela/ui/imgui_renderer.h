@@ -41,7 +41,6 @@ public:
 
 private:
     void uploadFontAtlas();
-    void ensureCapacity(render::GpuBuffer& buffer, VkDeviceSize bytes, VkBufferUsageFlags usage);
 
     render::GpuContext& context_;
     render::Pipeline pipeline_;
