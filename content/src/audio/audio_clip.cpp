@@ -39,19 +39,13 @@ std::shared_ptr<const AudioClip> loadAudioClip(const std::filesystem::path& path
 }
 
 struct AudioClipStream::Decoder {
-    stb_vorbis* vorbis = nullptr;
-    ~Decoder() {
-        if (vorbis) stb_vorbis_close(vorbis);
-    }
+    explicit Decoder(std::span<const std::byte> bytes) : stream(bytes) {}
+    VorbisStream stream;
 };
 
 AudioClipStream::AudioClipStream(std::shared_ptr<const AudioClip> clip) : clip_(std::move(clip)) {
     if (!clip_->streamed()) return;
-    decoder_ = std::make_unique<Decoder>();
-    int error = 0;
-    decoder_->vorbis =
-        stb_vorbis_open_memory(reinterpret_cast<const unsigned char*>(clip_->encoded.data()),
-                               static_cast<int>(clip_->encoded.size()), &error, nullptr);
+    decoder_ = std::make_unique<Decoder>(clip_->encoded);
 }
 
 AudioClipStream::~AudioClipStream() = default;
@@ -66,22 +60,13 @@ std::size_t AudioClipStream::read(std::span<float> out) {
         position_ += frames;
         return frames;
     }
-    // The stream opened when the clip was decoded; it can only fail here on memory exhaustion.
-    if (!decoder_->vorbis) return 0;
-    std::size_t frames = 0;
-    while (frames < wanted) {
-        const int got = stb_vorbis_get_samples_float_interleaved(
-            decoder_->vorbis, static_cast<int>(channels), out.data() + frames * channels,
-            static_cast<int>((wanted - frames) * channels));
-        if (got <= 0) break;
-        frames += static_cast<std::size_t>(got);
-    }
-    return frames;
+    // The stream opened when the clip was decoded; reading stops early only at damage.
+    return decoder_->stream.read(out.data(), wanted);
 }
 
 void AudioClipStream::rewind() {
     position_ = 0;
-    if (decoder_ && decoder_->vorbis) stb_vorbis_seek_start(decoder_->vorbis);
+    if (decoder_) decoder_->stream.rewind();
 }
 
 }  // namespace candela::content
