@@ -25,9 +25,7 @@ void GlyphAtlas::clear() {
         for (std::uint32_t x = 0; x < 2; ++x)
             std::fill_n(pixels_.begin() + std::ptrdiff_t((y * size_ + x) * 4), 4, 255);  // solid
     glyphs_.clear();
-    for (auto& [path, image] : images_) {
-        if (image.advance >= 0) image = {};  // placed again when next drawn; failures stay
-    }
+    images_.clear();  // placed again when next drawn
     shelfX_ = 2 + kPadding;
     shelfY_ = 0;
     shelfHeight_ = 2;
@@ -91,15 +89,11 @@ AtlasGlyph GlyphAtlas::glyph(const Font& font, std::uint32_t glyphIndex, std::ui
 }
 
 AtlasGlyph GlyphAtlas::image(const std::string& path) {
-    if (auto it = images_.find(path); it != images_.end() && it->second.width > 0)
-        return it->second;
-    else if (it != images_.end() && it->second.advance < 0)
-        return {};  // failed before: reported once
-    AtlasGlyph failed;
-    failed.advance = -1;  // marks the failure, reported once
+    if (auto it = images_.find(path); it != images_.end()) return it->second;
+    if (failedImages_.contains(path)) return {};
     std::optional<content::Rgba8Image> loaded = content::loadImageFile(path, diagnostics_);
     if (!loaded) {
-        images_[path] = failed;
+        failedImages_.insert(path);
         return {};
     }
     const content::Rgba8Image pixels = std::move(*loaded);
@@ -108,7 +102,7 @@ AtlasGlyph GlyphAtlas::image(const std::string& path) {
                            std::to_string(pixels.width) + "x" + std::to_string(pixels.height) +
                                " is larger than a UI image may be (" +
                                std::to_string(kMaxImageSize) + " on a side); it is not drawn");
-        images_[path] = failed;
+        failedImages_.insert(path);
         return {};
     }
     AtlasGlyph g;

@@ -7,7 +7,6 @@ namespace candela::gameui {
 namespace {
 
 constexpr std::array<float, 4> kFocusColor{1.0f, 0.82f, 0.3f, 1.0f};
-constexpr float kRowHeight = 1.5f;  // a list row, in text sizes (as WidgetTree's hit test)
 
 std::uint32_t packed(const std::array<float, 4>& c) {
     std::uint32_t out = 0;
@@ -108,7 +107,7 @@ void widget(UiDrawList& out, const WidgetTree& tree, WidgetId id, const Font& fo
         }
         case WidgetKind::List: {
             out.rect(r, w.color, size);
-            const float row = kRowHeight * w.style.pixelSize * scale;
+            const float row = listRowHeight(w, scale);
             const float pad = 0.5f * w.style.pixelSize * scale;
             for (std::size_t i = 0; i < w.items.size(); ++i) {
                 const Rect line{r.x + pad, r.y + row * float(i), r.width - 2 * pad, row};

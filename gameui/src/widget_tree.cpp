@@ -6,9 +6,6 @@
 namespace candela::gameui {
 namespace {
 
-// A list's rows: this many times its text size tall.
-constexpr float kRowHeight = 1.5f;
-
 Widget make(WidgetKind kind, Anchors anchors, Offsets offsets) {
     Widget w;
     w.kind = kind;
@@ -128,7 +125,7 @@ std::vector<UiEvent> WidgetTree::update(const UiInput& in) {
         pressed_ = focus_ = hover_;
         Node& n = nodes_[hover_];
         if (n.widget.kind == WidgetKind::List && !n.widget.items.empty()) {
-            const float row = kRowHeight * n.widget.style.pixelSize * scale_;
+            const float row = listRowHeight(n.widget, scale_);
             const auto item = std::int32_t((in.pointerY - n.rect.y) / row);
             if (item >= 0 && item < std::int32_t(n.widget.items.size())) {
                 n.widget.selected = item;

@@ -11,6 +11,7 @@
 //   if (atlas.dirty()) upload(atlas.pixels()), atlas.markUploaded();
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -59,6 +60,7 @@ private:
     std::vector<std::uint8_t> pixels_;
     std::map<std::tuple<const Font*, std::uint32_t, std::uint32_t>, AtlasGlyph> glyphs_;
     std::map<std::string, AtlasGlyph> images_;
+    std::set<std::string> failedImages_;  // reported once, never loaded again
     content::Diagnostics diagnostics_;
     std::uint32_t shelfX_ = 0, shelfY_ = 0, shelfHeight_ = 0;
     bool dirty_ = true;

@@ -44,6 +44,12 @@ struct Widget {
     bool enabled = true;
 };
 
+// A list's row height in pixels: one and a half times its text size, at the UI scale. The hit
+// test and the draw list both place rows by it.
+inline float listRowHeight(const Widget& list, float scale) {
+    return 1.5f * list.style.pixelSize * scale;
+}
+
 Widget panel(Anchors anchors, Offsets offsets);
 Widget label(std::string text, Anchors anchors, Offsets offsets);
 Widget image(std::string path, Anchors anchors, Offsets offsets);
