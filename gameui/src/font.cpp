@@ -4,6 +4,7 @@
 #include FT_FREETYPE_H
 
 #include <algorithm>
+#include <map>
 #include <mutex>
 #include <string>
 
@@ -17,6 +18,9 @@ struct Font::Impl {
     FT_Face face = nullptr;
     std::vector<std::byte> bytes;  // FreeType reads the face from here, so it lives as long
     mutable std::mutex mutex;
+    // Advances by (glyph, size in 26.6): every frame's layout asks for the same few, and each
+    // uncached one loads the glyph's outline.
+    mutable std::map<std::pair<std::uint32_t, FT_F26Dot6>, float> advances;
 
     ~Impl() {
         if (face) FT_Done_Face(face);
@@ -97,11 +101,15 @@ float Font::kerning(std::uint32_t left, std::uint32_t right, float pixelSize) co
 
 float Font::advance(std::uint32_t glyph, float pixelSize) const {
     const std::lock_guard lock(impl_->mutex);
-    if (!impl_->setSize(pixelSize) ||
-        FT_Load_Glyph(impl_->face, glyph, FT_LOAD_DEFAULT | FT_LOAD_TARGET_LIGHT) != 0) {
-        return 0.0f;
+    const auto key = std::pair{glyph, static_cast<FT_F26Dot6>(pixelSize * 64.0f + 0.5f)};
+    if (auto it = impl_->advances.find(key); it != impl_->advances.end()) return it->second;
+    float advance = 0.0f;
+    if (impl_->setSize(pixelSize) &&
+        FT_Load_Glyph(impl_->face, glyph, FT_LOAD_DEFAULT | FT_LOAD_TARGET_LIGHT) == 0) {
+        advance = float(impl_->face->glyph->advance.x) / 64.0f;
     }
-    return float(impl_->face->glyph->advance.x) / 64.0f;
+    impl_->advances.emplace(key, advance);
+    return advance;
 }
 
 GlyphBitmap Font::rasterize(std::uint32_t glyph, float pixelSize) const {
