@@ -177,15 +177,17 @@ void AudioSystem::update(ecs::Registry& registry, content::AssetCache& cache, do
     s.updateListener(registry, deltaSeconds);
     // Entities in creation order (the pool's order), so the same scene starts its sources in
     // the same order every run.
-    std::vector<std::pair<ecs::Entity, AudioSource>> sources;
-    registry.view<const AudioSource>().each([&](ecs::Entity e, const AudioSource& source) {
-        sources.push_back({e, source});
-    });
-    for (const auto& [e, source] : sources) {
+    // The entities first: updating a voice may patch its component (a clip that ended), which
+    // a view being iterated refuses.
+    std::vector<ecs::Entity> sources;
+    registry.view<const AudioSource>().each(
+        [&](ecs::Entity e, const AudioSource&) { sources.push_back(e); });
+    for (ecs::Entity e : sources) {
         auto& slot = s.voices[e.bits()];
         if (!slot) slot = std::make_unique<Voice>();
         slot->seen = generation;
-        s.updateVoice(registry, e, source, *slot, cache, deltaSeconds, diagnostics);
+        s.updateVoice(registry, e, registry.get<AudioSource>(e), *slot, cache, deltaSeconds,
+                      diagnostics);
     }
     std::erase_if(s.voices, [&](const auto& entry) { return entry.second->seen != generation; });
 }

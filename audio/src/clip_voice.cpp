@@ -73,7 +73,8 @@ void ClipVoice::apply(const content::AudioSource& s, ecs::Vec3 position, ecs::Ve
 
 bool ClipVoice::fill(ALuint buffer, bool loop) {
     const std::uint32_t channels = clip_->channels;
-    std::vector<float> samples(kStreamBufferFrames * channels);
+    std::vector<float>& samples = scratch_;  // kept: a refill every 0.17 s allocates nothing
+    samples.resize(kStreamBufferFrames * channels);
     std::size_t frames = 0;
     while (frames < kStreamBufferFrames) {
         const std::size_t got = stream_->read(std::span<float>(samples).subspan(frames * channels));

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "candela/content/audio_clip.h"
 #include "candela/content/components/audio_source.h"
@@ -50,6 +51,7 @@ private:
     ALuint sharedBuffer_ = 0;
     std::unique_ptr<content::AudioClipStream> stream_;
     std::array<ALuint, 4> streamBuffers_{};
+    std::vector<float> scratch_;  // one stream buffer's samples, decoded before upload
     bool streamEnded_ = false;
     bool started_ = false;
     bool paused_ = false;

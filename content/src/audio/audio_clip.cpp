@@ -4,8 +4,8 @@
 #include <cstring>
 
 #include "candela/content/file_bytes.h"
-#include "vorbis_file.h"
-#include "wav_decoding.h"
+#include "clip_decoding.h"
+#include "vorbis_stream.h"
 
 namespace candela::content {
 

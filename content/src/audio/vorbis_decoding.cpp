@@ -2,8 +2,8 @@
 // streamed (AudioClipStream).
 #include <cstdint>
 
-#include "vorbis_file.h"
-#include "wav_decoding.h"
+#include "clip_decoding.h"
+#include "vorbis_stream.h"
 
 namespace candela::content {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "vorbis_file.h"
+#include "vorbis_stream.h"
 
 namespace candela::content {
 namespace {

@@ -1,6 +1,6 @@
 // RIFF WAVE: a "fmt " chunk (PCM, IEEE float, or WAVE_FORMAT_EXTENSIBLE holding either) and a
 // "data" chunk; other chunks are skipped. Every size is checked against the file before use.
-#include "wav_decoding.h"
+#include "clip_decoding.h"
 
 #include <cstdint>
 #include <cstring>
