@@ -6,16 +6,13 @@
 
 #include "candela/gameui/text_layout.h"
 #include "candela/gameui/utf8.h"
+#include "fallback_font.h"
 
 namespace candela::gameui {
 namespace {
 
 const Font& font() {
-    static const std::shared_ptr<const Font> f = [] {
-        content::Diagnostics diagnostics;
-        return Font::fallback(diagnostics);
-    }();
-    return *f;
+    return test::fallbackFont();
 }
 
 int lineCount(const TextLayout& layout) {

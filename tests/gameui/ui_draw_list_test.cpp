@@ -10,16 +10,13 @@
 
 #include "candela/content/png_writer.h"
 #include "candela/gameui/ui_draw_list.h"
+#include "fallback_font.h"
 
 namespace candela::gameui {
 namespace {
 
 const Font& font() {
-    static const std::shared_ptr<const Font> f = [] {
-        content::Diagnostics diagnostics;
-        return Font::fallback(diagnostics);
-    }();
-    return *f;
+    return test::fallbackFont();
 }
 
 TEST(UiDrawList, GlyphsSitOnWholePixelsOneTexelPerPixelAtEveryWindowSize) {
